@@ -1,0 +1,299 @@
+#include "kinematics.h"
+
+#include <cassert>
+#include <cmath>
+#include <cstdio>
+
+namespace linkage {
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+std::string deg(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g deg", std::abs(v) < 5e-10 ? 0.0 : v);
+  return buf;
+}
+
+}  // namespace
+
+double Kinematics::crankDeg() const { return (cur_.phi - sys_.startRad) / kDeg; }
+
+double Kinematics::omega() const { return sys_.rpm * 2 * M_PI / 60; }
+
+std::string Kinematics::bodyList(const std::vector<int>& bodies) const {
+  std::string s;
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    const Body* b = mech_.body(sys_.bodyIds[bodies[i]]);
+    s += (i ? ", '" : "'") + (b ? b->name : std::string("?")) + "'";
+  }
+  return s;
+}
+
+Status Kinematics::load(const Mechanism& m) { return prepare(m, nullptr); }
+
+Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
+  const double warmPhi = cur_.phi;
+  valid_ = false;
+  notes_.clear();
+  assembly_ = {};
+  Status s;
+  std::optional<System> compiled = compile(m, s);
+  if (!compiled) return s;
+  mech_ = m;
+  sys_ = std::move(*compiled);
+
+  Eigen::VectorXd q = warm ? *warm : sketchCoordinates(sys_);
+  const double phi = warm ? warmPhi : 0.0;
+  structure_ = analyzeStructure(sys_, q);
+  if (sys_.hasDriver && !structure_.driverMoves) {
+    const JointId dj = mech_.driver->joint;
+    s = Status::failure(StatusCode::Locked, "");
+    s.joints.push_back(dj);
+    s.message = "the driver at " + mech_.jointLabel(dj) + " cannot turn: " +
+                (structure_.mobility == 0
+                     ? "the mechanism has no degree of freedom (it is a structure)"
+                     : "the other joints hold the two bodies it joins rigidly together");
+    return s;
+  }
+  if (!structure_.redundantJoints.empty()) {
+    std::string names;
+    for (int j : structure_.redundantJoints)
+      names += (names.empty() ? "" : ", ") + mech_.jointLabel(mech_.joints[j].id);
+    notes_.push_back("redundant joint(s): " + names +
+                     " repeat constraints of the others; checked, not needed by the solve");
+  }
+  std::vector<int> active = structure_.activeRows;
+  for (int col : structure_.holdCoordinates) {
+    addHold(sys_, col, q[col]);
+    active.push_back(sys_.nRows - 1);
+  }
+  if (structure_.freeAfterDriver > 0) {
+    notes_.push_back(std::to_string(structure_.freeAfterDriver) +
+                     (sys_.hasDriver ? " degree(s) of freedom the driver does not determine"
+                                     : " degree(s) of freedom and no driver") +
+                     " (bodies " + bodyList(structure_.freeBodies) +
+                     "): held where they are drawn");
+  }
+  newton_.reset(sys_, active);
+
+  const Eigen::VectorXd start = q;
+  s = assemble(mech_, sys_, structure_, newton_, q, phi, assembly_);
+  if (!s.ok()) return s;
+  if (!warm && assembly_.moved(sys_)) {
+    const Body* b = mech_.body(assembly_.body);
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "the drawing does not close exactly: assembled by moving body '%s' by up to "
+                  "%.6g mm (bodies keep their shape)",
+                  b ? b->name.c_str() : "?", assembly_.maxMove);
+    notes_.push_back(buf);
+  }
+  s = checkRedundant(mech_, sys_, structure_, q, phi);
+  if (!s.ok()) return s;
+
+  Snapshot snap;
+  snap.phi = phi;
+  snap.q = q;
+  if (!newton_.derivatives(q, snap.dq, snap.ddq)) {
+    s = Status::failure(StatusCode::Singular,
+                        "the mechanism is drawn in a singular position (a dead point): velocities "
+                        "are not determined there; draw it a little away from it");
+    s.crankDeg = (phi - sys_.startRad) / kDeg;
+    return s;
+  }
+  snap.regular = true;
+  cur_ = reg_ = snap;
+  regSign_ = newton_.detSign();
+  valid_ = true;
+  if (!warm && sys_.hasDriver && sys_.startRad != 0) {
+    s = moveToPhi(sys_.startRad);
+    if (!s.ok()) {
+      valid_ = false;
+      s.message = "cannot turn the crank to its start angle (start_deg): " + s.message;
+      return s;
+    }
+  }
+  return Status::success();
+}
+
+Status Kinematics::edit(const Mechanism& m) {
+  if (!valid_) return load(m);
+  // Carry each surviving body's rigid displacement (rotation, translation) over to its new frame.
+  const System old = sys_;
+  const Eigen::VectorXd oldQ = cur_.q;
+  const double phi = cur_.phi;
+  Status s;
+  std::optional<System> next = compile(m, s);
+  if (!next) return s;
+  Eigen::VectorXd warm = sketchCoordinates(*next);
+  for (int k = 0; k < next->nBodies; ++k) {
+    const int o = old.bodyIndex(next->bodyIds[k]);
+    if (o < 0) continue;
+    const double th = oldQ[3 * o + 2];
+    const Rot R{std::cos(th), std::sin(th)};
+    const Vec2 t = Vec2(oldQ[3 * o], oldQ[3 * o + 1]) - R * old.frameOrigin[o];
+    const Vec2 r = R * next->frameOrigin[k] + t;
+    warm.segment<3>(3 * k) << r.x(), r.y(), th;
+  }
+  cur_.phi = phi;
+  s = prepare(m, &warm);
+  if (s.ok()) return s;
+  // The edit moved things too far for a warm start: assemble the drawing and turn the crank.
+  const Status cold = load(m);
+  if (!cold.ok()) return cold;
+  return moveToPhi(phi);
+}
+
+Kinematics::StepResult Kinematics::tryStep(double phiNext, Snapshot& out) {
+  const double h = phiNext - reg_.phi;
+  out.phi = phiNext;
+  out.q = reg_.q + h * reg_.dq + (0.5 * h * h) * reg_.ddq;
+  if (!newton_.solve(out.q, phiNext, opt_.newton).converged) return StepResult::Refused;
+  if (!newton_.derivatives(out.q, out.dq, out.ddq)) {
+    out.regular = false;
+    return StepResult::Singular;
+  }
+  if (newton_.detSign() != regSign_) return StepResult::Refused;
+  out.regular = true;
+  return StepResult::Accepted;
+}
+
+Status Kinematics::moveTo(double crankDeg) {
+  if (!valid_) return Status::failure(StatusCode::BadModel, "no mechanism is loaded");
+  if (!sys_.hasDriver)
+    return Status::failure(StatusCode::BadModel, "the mechanism has no driver to turn");
+  if (!std::isfinite(crankDeg))
+    return Status::failure(StatusCode::BadModel, "the crank angle is not a finite number");
+  return moveToPhi(sys_.startRad + crankDeg * kDeg);
+}
+
+Status Kinematics::moveToPhi(double target) {
+  const double hMax = opt_.maxStepDeg * kDeg;
+  const double hMin = opt_.minStepDeg * kDeg;
+  double hTry = hMax;
+  for (;;) {
+    const double remaining = target - reg_.phi;
+    if (remaining == 0) {
+      cur_ = reg_;
+      return Status::success();
+    }
+    const bool last = std::abs(remaining) <= hTry;
+    const double phiNext = last ? target : reg_.phi + std::copysign(hTry, remaining);
+    Snapshot next;
+    switch (tryStep(phiNext, next)) {
+      case StepResult::Accepted:
+        reg_ = std::move(next);
+        cur_ = reg_;
+        regSign_ = newton_.detSign();
+        hTry = std::min(hMax, 2 * hTry);
+        continue;
+      case StepResult::Singular:
+        if (last) {
+          cur_ = std::move(next);
+          Status s = Status::failure(
+              StatusCode::Singular,
+              "singular position at crank angle " + deg((target - sys_.startRad) / kDeg) +
+                  ": positions are solved but velocities are not determined by the driver there");
+          s.crankDeg = (target - sys_.startRad) / kDeg;
+          return s;
+        }
+        [[fallthrough]];
+      case StepResult::Refused:
+        hTry = std::abs(phiNext - reg_.phi) / 4;
+        break;
+    }
+    if (hTry < hMin) {
+      cur_ = reg_;
+      return explainFailure(target);
+    }
+  }
+}
+
+Status Kinematics::explainFailure(double phiFailed) const {
+  const double reached = (reg_.phi - sys_.startRad) / kDeg;
+  const double wanted = (phiFailed - sys_.startRad) / kDeg;
+  // Near a dead point q' grows without bound (like 1 / sqrt of the distance to it).
+  double speed = 0;
+  std::vector<double> perBody(sys_.nBodies, 0.0);
+  for (int k = 0; k < sys_.nBodies; ++k) {
+    perBody[k] = std::max({std::abs(reg_.dq[3 * k]), std::abs(reg_.dq[3 * k + 1]),
+                           std::abs(reg_.dq[3 * k + 2]) * sys_.size});
+    speed = std::max(speed, perBody[k]);
+  }
+  Status s;
+  s.crankDeg = wanted;
+  s.lastReachedDeg = reached;
+  if (speed > 1e2 * sys_.size) {
+    std::vector<int> involved;
+    for (int k = 0; k < sys_.nBodies; ++k)
+      if (perBody[k] > 0.1 * speed) {
+        involved.push_back(k);
+        s.bodies.push_back(sys_.bodyIds[k]);
+      }
+    s.code = StatusCode::Unreachable;
+    s.message = "cannot reach crank angle " + deg(wanted) + ": the mechanism locks at crank angle " +
+                deg(reached) + " (limit position: " + bodyList(involved) +
+                " reach a dead point, where no motion of the crank can pass)";
+  } else {
+    s.code = StatusCode::NotConverged;
+    s.message = "cannot follow the motion past crank angle " + deg(reached) + " towards " +
+                deg(wanted) +
+                ": the position solve does not converge there (a jump to another assembly "
+                "branch or a singular crossing was refused)";
+  }
+  return s;
+}
+
+const PointLocation& Kinematics::locate(PointId p) const {
+  const PointLocation* loc = sys_.point(p);
+  assert(loc && "Kinematics: unknown point id; ids must come from this mechanism");
+  return *loc;
+}
+
+Vec2 Kinematics::position(PointId p) const { return pointPosition(sys_, cur_.q, locate(p)); }
+
+Vec2 Kinematics::velocity(PointId p) const {
+  return omega() * pointVelocity(sys_, cur_.q, cur_.dq, locate(p));
+}
+
+Vec2 Kinematics::acceleration(PointId p) const {
+  const double w = omega();
+  return w * w * pointAcceleration(sys_, cur_.q, cur_.dq, cur_.ddq, locate(p));
+}
+
+double Kinematics::bodyAngle(BodyId b) const {
+  const int k = sys_.bodyIndex(b);
+  return k < 0 ? 0.0 : cur_.q[3 * k + 2];
+}
+
+double Kinematics::bodyOmega(BodyId b) const {
+  const int k = sys_.bodyIndex(b);
+  return k < 0 ? 0.0 : omega() * cur_.dq[3 * k + 2];
+}
+
+double Kinematics::bodyAlpha(BodyId b) const {
+  const int k = sys_.bodyIndex(b);
+  return k < 0 ? 0.0 : omega() * omega() * cur_.ddq[3 * k + 2];
+}
+
+Status Kinematics::checkDetermined(const std::vector<PointId>& points) const {
+  for (PointId p : points) {
+    const PointLocation* loc = sys_.point(p);
+    if (!loc) return Status::failure(StatusCode::BadModel, "unknown output point");
+    if (!structure_.pointDetermined(sys_, cur_.q, *loc)) {
+      Status s = Status::failure(
+          StatusCode::Underconstrained,
+          "the motion of " + mech_.pointLabel(p) + " is not determined by the driver: " +
+              std::to_string(structure_.freeAfterDriver) +
+              " degree(s) of freedom remain (bodies " + bodyList(structure_.freeBodies) +
+              " can move with the crank held)");
+      for (int k : structure_.freeBodies) s.bodies.push_back(sys_.bodyIds[k]);
+      return s;
+    }
+  }
+  return Status::success();
+}
+
+}  // namespace linkage

@@ -1,0 +1,109 @@
+// The kinematic model of one mechanism at one crank angle, and the way to move it: the API the
+// command line and the editor drive. It owns its state (no global state); every failure comes
+// back as a Status naming the joint, body and crank angle.
+//
+// Moving to a crank angle tracks the motion continuously from the current one, in steps of at
+// most `maxStepDeg`: a predictor (second-order Taylor from the last regular position) and Newton
+// on the independent equations. A step is refused, and halved, when Newton does not contract
+// from the predictor, when its first correction is far (another branch), or when the sign of
+// det J changes (the path crossed a singular position, where the other branch can be picked
+// up). Refused down to `minStepDeg`, the reason is reported: a limit position (the mechanism
+// locks), a singular crossing, or a position solve that fails.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "assembly.h"
+#include "model.h"
+#include "newton.h"
+#include "status.h"
+#include "structure.h"
+#include "system.h"
+
+namespace linkage {
+
+struct KinematicsOptions {
+  double maxStepDeg = 2.0;
+  double minStepDeg = 1e-7;
+  NewtonOptions newton;
+};
+
+class Kinematics {
+ public:
+  explicit Kinematics(KinematicsOptions opt = {}) : opt_(opt) {}
+
+  // Compiles, analyses and assembles the mechanism, then moves to crank angle 0 (the drawing
+  // turned by the driver's start offset). On failure nothing usable is kept (valid() is false).
+  Status load(const Mechanism& m);
+
+  // Replaces the mechanism by an edited version of it and re-solves at the current crank angle,
+  // starting from the current pose of every body that is still there (matched by id).
+  Status edit(const Mechanism& m);
+
+  // Tracks the motion to the given crank angle (degrees, from the start, in the driving
+  // direction). On failure the state stays at the last position reached.
+  Status moveTo(double crankDeg);
+
+  bool valid() const { return valid_; }
+  double crankDeg() const;
+  double rpm() const { return sys_.rpm; }
+  void setRpm(double rpm) { sys_.rpm = rpm; }
+  double omega() const;  // rad/s of the driver
+
+  const Mechanism& mechanism() const { return mech_; }
+  const System& system() const { return sys_; }
+  const Structure& structure() const { return structure_; }
+  const AssemblyReport& assembly() const { return assembly_; }
+  // Things a user should know that are not failures (assembly moves, idle freedoms held).
+  const std::vector<std::string>& notes() const { return notes_; }
+
+  // False at a singular position, where positions are known but velocities are not.
+  bool derivativesValid() const { return cur_.regular; }
+
+  // mm, mm/s, mm/s^2 at the driver's speed.
+  Vec2 position(PointId p) const;
+  Vec2 velocity(PointId p) const;
+  Vec2 acceleration(PointId p) const;
+  // Body angle (rad, relative to the drawing), angular velocity and acceleration.
+  double bodyAngle(BodyId b) const;
+  double bodyOmega(BodyId b) const;
+  double bodyAlpha(BodyId b) const;
+
+  // BadModel or Underconstrained naming the first point whose motion the driver does not fix.
+  Status checkDetermined(const std::vector<PointId>& points) const;
+
+  // Raw state: q and its derivatives with respect to the driver angle (rad).
+  const Eigen::VectorXd& q() const { return cur_.q; }
+  const Eigen::VectorXd& dq() const { return cur_.dq; }
+  const Eigen::VectorXd& ddq() const { return cur_.ddq; }
+
+ private:
+  struct Snapshot {
+    double phi = 0;
+    Eigen::VectorXd q, dq, ddq;
+    bool regular = false;
+  };
+
+  Status prepare(const Mechanism& m, const Eigen::VectorXd* warm);
+  Status moveToPhi(double phi);
+  enum class StepResult { Accepted, Refused, Singular };
+  StepResult tryStep(double phiNext, Snapshot& out);
+  Status explainFailure(double phiFailed) const;
+  std::string bodyList(const std::vector<int>& bodies) const;
+  const PointLocation& locate(PointId p) const;
+
+  KinematicsOptions opt_;
+  Mechanism mech_;
+  System sys_;
+  Structure structure_;
+  AssemblyReport assembly_;
+  NewtonSolver newton_;
+  std::vector<std::string> notes_;
+  Snapshot cur_, reg_;  // current position and last regular one (the predictor's base)
+  int regSign_ = 0;     // det J sign at reg_
+  bool valid_ = false;
+};
+
+}  // namespace linkage

@@ -1,0 +1,147 @@
+#include "model.h"
+
+#include <algorithm>
+
+namespace linkage {
+
+namespace {
+template <class T, class IdT>
+T* findById(std::vector<T>& v, IdT id) {
+  auto it = std::find_if(v.begin(), v.end(), [&](const T& e) { return e.id == id; });
+  return it == v.end() ? nullptr : &*it;
+}
+}  // namespace
+
+BodyId Mechanism::addBody(std::string name, bool isGround) {
+  Body b;
+  b.id = BodyId{nextId_++};
+  b.name = std::move(name);
+  b.ground = isGround;
+  bodies.push_back(std::move(b));
+  return bodies.back().id;
+}
+
+PointId Mechanism::addPoint(BodyId bodyId, std::string name, Vec2 pos) {
+  points.push_back(Point{PointId{nextId_++}, bodyId, std::move(name), pos});
+  return points.back().id;
+}
+
+SlotId Mechanism::addSlot(BodyId bodyId, std::string name, Vec2 p0, Vec2 p1) {
+  slots.push_back(Slot{SlotId{nextId_++}, bodyId, std::move(name), p0, p1});
+  return slots.back().id;
+}
+
+JointId Mechanism::addPin(PointId a, PointId b) {
+  Joint j;
+  j.id = JointId{nextId_++};
+  j.type = JointType::Pin;
+  j.a = a;
+  j.b = b;
+  joints.push_back(std::move(j));
+  return joints.back().id;
+}
+
+JointId Mechanism::addSlider(PointId a, SlotId s) {
+  Joint j;
+  j.id = JointId{nextId_++};
+  j.type = JointType::Slider;
+  j.a = a;
+  j.slot = s;
+  joints.push_back(std::move(j));
+  return joints.back().id;
+}
+
+JointId Mechanism::addPinInSlot(PointId a, SlotId s) {
+  JointId id = addSlider(a, s);
+  joints.back().type = JointType::PinInSlot;
+  return id;
+}
+
+const Body* Mechanism::body(BodyId id) const { return const_cast<Mechanism*>(this)->body(id); }
+const Point* Mechanism::point(PointId id) const { return const_cast<Mechanism*>(this)->point(id); }
+const Slot* Mechanism::slot(SlotId id) const { return const_cast<Mechanism*>(this)->slot(id); }
+const Joint* Mechanism::joint(JointId id) const { return const_cast<Mechanism*>(this)->joint(id); }
+Body* Mechanism::body(BodyId id) { return findById(bodies, id); }
+Point* Mechanism::point(PointId id) { return findById(points, id); }
+Slot* Mechanism::slot(SlotId id) { return findById(slots, id); }
+Joint* Mechanism::joint(JointId id) { return findById(joints, id); }
+
+const Body* Mechanism::bodyNamed(const std::string& n) const {
+  for (const Body& b : bodies)
+    if (b.name == n) return &b;
+  return nullptr;
+}
+
+const Point* Mechanism::pointNamed(BodyId b, const std::string& n) const {
+  for (const Point& p : points)
+    if (p.body == b && p.name == n) return &p;
+  return nullptr;
+}
+
+const Slot* Mechanism::slotNamed(BodyId b, const std::string& n) const {
+  for (const Slot& s : slots)
+    if (s.body == b && s.name == n) return &s;
+  return nullptr;
+}
+
+const Body* Mechanism::ground() const {
+  for (const Body& b : bodies)
+    if (b.ground) return &b;
+  return nullptr;
+}
+
+std::string Mechanism::pointLabel(PointId id) const {
+  const Point* p = point(id);
+  if (!p) return "?";
+  const Body* b = body(p->body);
+  return (b ? b->name : std::string("?")) + "." + p->name;
+}
+
+std::string Mechanism::slotLabel(SlotId id) const {
+  const Slot* s = slot(id);
+  if (!s) return "?";
+  const Body* b = body(s->body);
+  return (b ? b->name : std::string("?")) + "." + s->name;
+}
+
+int Mechanism::jointIndex(JointId id) const {
+  for (size_t i = 0; i < joints.size(); ++i)
+    if (joints[i].id == id) return static_cast<int>(i);
+  return -1;
+}
+
+std::string Mechanism::jointLabel(JointId id) const {
+  const Joint* j = joint(id);
+  if (!j) return "unknown joint";
+  std::string s = "joints[" + std::to_string(jointIndex(id)) + "] (" + toString(j->type) + " ";
+  if (j->type == JointType::Pin)
+    s += pointLabel(j->a) + " - " + pointLabel(j->b);
+  else
+    s += pointLabel(j->a) + " in " + slotLabel(j->slot);
+  return s + ")";
+}
+
+std::optional<PointId> Mechanism::findPoint(const std::string& dotted) const {
+  // Body names may themselves contain dots; the point name is what follows the last one.
+  size_t dot = dotted.rfind('.');
+  if (dot == std::string::npos) return std::nullopt;
+  const Body* b = bodyNamed(dotted.substr(0, dot));
+  if (!b) return std::nullopt;
+  const Point* p = pointNamed(b->id, dotted.substr(dot + 1));
+  if (!p) return std::nullopt;
+  return p->id;
+}
+
+const char* toString(JointType t) {
+  switch (t) {
+    case JointType::Pin:
+      return "pin";
+    case JointType::Slider:
+      return "slider";
+    case JointType::PinInSlot:
+      return "pin-in-slot";
+  }
+  return "?";
+}
+
+}  // namespace linkage

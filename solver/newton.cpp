@@ -1,0 +1,161 @@
+#include "newton.h"
+
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace linkage {
+
+namespace {
+// Pivot ratio below which J counts as singular: rounding in an O(1)-scaled J is ~1e-16, and a
+// mechanism one part in 1e12 from a dead point has velocities 1e12 times the crank's.
+constexpr double kSingularPivot = 1e-12;
+}  // namespace
+
+void NewtonSolver::reset(const System& sys, const std::vector<int>& activeRows) {
+  sys_ = &sys;
+  const int n = sys.nCoords();
+  assert(static_cast<int>(activeRows.size()) == n &&
+         "NewtonSolver needs a square system: add holds for free coordinates first");
+  rowMap_.assign(sys.nRows, -1);
+  for (int i = 0; i < static_cast<int>(activeRows.size()); ++i) rowMap_[activeRows[i]] = i;
+  J_.resize(n, n);
+  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  phi_.resize(n);
+  delta_.resize(n);
+  rhs_.resize(n);
+  visited_.assign(n, 0);
+}
+
+double NewtonSolver::tolerance(const Eigen::VectorXd& q) const {
+  // Rounding in a residual grows with the coordinates' magnitude, not only with L.
+  double scale = sys_->size;
+  for (int k = 0; k < sys_->nBodies; ++k)
+    scale = std::max(scale, std::max(std::abs(q[3 * k]), std::abs(q[3 * k + 1])));
+  return 1e-13 * scale;
+}
+
+bool NewtonSolver::factor(const Eigen::VectorXd& q) {
+  makeViews(*sys_, q, nullptr, views_);
+  evalJacobian(*sys_, views_, rowMap_, J_);
+  const double invL = 1.0 / sys_->size;
+  for (int k = 0; k < sys_->nBodies; ++k) J_.col(3 * k + 2) *= invL;
+  lu_.compute(J_);
+  const auto d = lu_.matrixLU().diagonal().cwiseAbs();
+  const double hi = d.size() ? d.maxCoeff() : 1.0;
+  const double lo = d.size() ? d.minCoeff() : 1.0;
+  pivotRatio_ = hi > 0 ? lo / hi : 0;
+  return std::isfinite(pivotRatio_) && pivotRatio_ > kSingularPivot;
+}
+
+int NewtonSolver::detSign() const {
+  int sign = 1;
+  const auto& d = lu_.matrixLU();
+  for (int i = 0; i < d.rows(); ++i)
+    if (d(i, i) < 0) sign = -sign;
+  // Permutation parity: n minus the number of cycles.
+  const auto& idx = lu_.permutationP().indices();
+  std::vector<char>& seen = const_cast<std::vector<char>&>(visited_);
+  std::fill(seen.begin(), seen.end(), 0);
+  for (int i = 0; i < idx.size(); ++i) {
+    if (seen[i]) continue;
+    int len = 0;
+    for (int j = i; !seen[j]; j = idx[j]) {
+      seen[j] = 1;
+      ++len;
+    }
+    if (len % 2 == 0) sign = -sign;
+  }
+  return sign;
+}
+
+double NewtonSolver::residualNorm(const Eigen::VectorXd& q, double phi) {
+  makeViews(*sys_, q, nullptr, views_);
+  evalResidual(*sys_, views_, phi, rowMap_, phi_);
+  return phi_.size() ? phi_.cwiseAbs().maxCoeff() : 0.0;
+}
+
+NewtonResult NewtonSolver::solve(Eigen::VectorXd& q, double phi, const NewtonOptions& opt) {
+  NewtonResult res;
+  const double L = sys_->size;
+  const double invL = 1.0 / L;
+  bool fresh = false;  // is the factorisation from the current iterate?
+  bool haveLU = false;
+  double prevStep = std::numeric_limits<double>::infinity();
+  for (int it = 0; it <= opt.maxIterations; ++it) {
+    makeViews(*sys_, q, nullptr, views_);
+    evalResidual(*sys_, views_, phi, rowMap_, phi_);
+    res.residual = phi_.size() ? phi_.cwiseAbs().maxCoeff() : 0.0;
+    if (!std::isfinite(res.residual)) {
+      res.failure = NewtonFailure::Diverged;
+      return res;
+    }
+    if (res.residual <= tolerance(q)) {
+      res.converged = true;
+      return res;
+    }
+    if (it == opt.maxIterations) break;
+    if (!haveLU) {
+      ++res.factorizations;
+      if (!factor(q)) {
+        res.failure = NewtonFailure::Singular;
+        return res;
+      }
+      haveLU = fresh = true;
+    }
+    delta_ = lu_.solve(phi_);
+    double step = 0;
+    for (int k = 0; k < sys_->nBodies; ++k) {
+      delta_[3 * k + 2] *= invL;
+      step = std::max({step, std::abs(delta_[3 * k]), std::abs(delta_[3 * k + 1]),
+                       std::abs(delta_[3 * k + 2]) * L});
+    }
+    if (it == 0 && step > opt.maxFirstStep * L) {
+      res.failure = NewtonFailure::TooFar;
+      return res;
+    }
+    if (step > 0.25 * prevStep) {
+      if (fresh) {
+        res.failure = NewtonFailure::Diverged;
+        return res;
+      }
+      // A stale factorisation contracts too slowly: refactor here and retry this iteration.
+      haveLU = false;
+      --it;
+      continue;
+    }
+    q -= delta_;
+    ++res.iterations;
+    prevStep = step;
+    fresh = false;
+  }
+  res.failure = NewtonFailure::MaxIterations;
+  return res;
+}
+
+bool NewtonSolver::correction(const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta) {
+  makeViews(*sys_, q, nullptr, views_);
+  evalResidual(*sys_, views_, phi, rowMap_, phi_);
+  if (!factor(q)) return false;
+  delta = lu_.solve(phi_);
+  for (int k = 0; k < sys_->nBodies; ++k) delta[3 * k + 2] /= sys_->size;
+  return delta.allFinite();
+}
+
+bool NewtonSolver::derivatives(const Eigen::VectorXd& q, Eigen::VectorXd& dq,
+                               Eigen::VectorXd& ddq) {
+  if (!factor(q)) return false;
+  const double invL = 1.0 / sys_->size;
+  rhs_.setZero();
+  if (sys_->driverRow >= 0 && rowMap_[sys_->driverRow] >= 0)
+    rhs_[rowMap_[sys_->driverRow]] = sys_->size * sys_->sigma;  // -Phi_phi
+  dq = lu_.solve(rhs_);
+  for (int k = 0; k < sys_->nBodies; ++k) dq[3 * k + 2] *= invL;
+  makeViews(*sys_, q, &dq, views_);
+  evalGamma(*sys_, views_, rowMap_, rhs_);
+  ddq = lu_.solve(rhs_);
+  for (int k = 0; k < sys_->nBodies; ++k) ddq[3 * k + 2] *= invL;
+  return dq.allFinite() && ddq.allFinite();
+}
+
+}  // namespace linkage

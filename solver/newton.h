@@ -1,0 +1,72 @@
+// The position solve (Newton-Raphson on the independent equations, analytic Jacobian) and the
+// exact velocity and acceleration solves with the same Jacobian. Kinematics are in the crank
+// angle phi: J q' = -Phi_phi and J q'' = gamma(q'), so q' and q'' do not depend on the speed.
+//
+// J is factored with its theta columns divided by the mechanism size L (every entry O(1)), so
+// that the pivot ratio used to detect singular positions means the same at any scale.
+// Newton reuses the factorisation of its first iterate (chord steps) while the corrections
+// shrink at least fourfold; a poorer contraction refactors once, and a second one fails: near a
+// solution Newton contracts far faster, so a slow contraction means the start was not close.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <vector>
+
+#include "system.h"
+
+namespace linkage {
+
+struct NewtonOptions {
+  int maxIterations = 12;
+  // Tracking: a first correction larger than this fraction of L means the predictor is not near
+  // this branch; the step is refused rather than let Newton wander to another branch.
+  double maxFirstStep = 0.1;
+};
+
+enum class NewtonFailure { None, Singular, Diverged, TooFar, MaxIterations };
+
+struct NewtonResult {
+  bool converged = false;
+  NewtonFailure failure = NewtonFailure::None;
+  int iterations = 0;
+  int factorizations = 0;
+  double residual = 0;  // max |Phi| at the end, mm
+};
+
+class NewtonSolver {
+ public:
+  // Prepares for the given rows (they must be independent and as many as coordinates).
+  void reset(const System& sys, const std::vector<int>& activeRows);
+
+  NewtonResult solve(Eigen::VectorXd& q, double phi, const NewtonOptions& opt);
+
+  // Factors J at q and solves q' and q''. False when J is singular there.
+  bool derivatives(const Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq);
+
+  // Of the last factorisation: sign of det J and min/max pivot magnitude.
+  int detSign() const;
+  double pivotRatio() const { return pivotRatio_; }
+
+  // One full Newton correction at q (J factored there): q_next = q - delta. False if singular.
+  bool correction(const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta);
+
+  // Residual of the active rows at q (mm), for reports.
+  double residualNorm(const Eigen::VectorXd& q, double phi);
+  const std::vector<int>& rowMap() const { return rowMap_; }
+
+ private:
+  bool factor(const Eigen::VectorXd& q);
+  double tolerance(const Eigen::VectorXd& q) const;
+
+  const System* sys_ = nullptr;
+  std::vector<int> rowMap_;
+  std::vector<BodyView> views_;
+  Eigen::MatrixXd J_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::VectorXd phi_, delta_, rhs_;
+  std::vector<char> visited_;
+  double pivotRatio_ = 0;
+};
+
+}  // namespace linkage
