@@ -16,8 +16,8 @@
 namespace linkage {
 
 struct AssemblyReport {
-  double maxMove = 0;     // mm: largest displacement of any point or slot end of a body
-  BodyId body;            // the body that moved most
+  double maxMove = 0;  // mm: largest displacement of any point or slot end of a body
+  BodyId body;         // the body that moved most
   int iterations = 0;
   bool moved(const System& sys) const { return maxMove > 1e-9 * sys.size; }
 };

@@ -18,9 +18,13 @@ std::string deg(double v) {
 
 }  // namespace
 
-double Kinematics::crankDeg() const { return (cur_.phi - sys_.startRad) / kDeg; }
+double Kinematics::crankDeg() const {
+  return (cur_.phi - sys_.startRad) / kDeg;
+}
 
-double Kinematics::omega() const { return sys_.rpm * 2 * M_PI / 60; }
+double Kinematics::omega() const {
+  return sys_.rpm * 2 * M_PI / 60;
+}
 
 std::string Kinematics::bodyList(const std::vector<int>& bodies) const {
   std::string s;
@@ -31,7 +35,9 @@ std::string Kinematics::bodyList(const std::vector<int>& bodies) const {
   return s;
 }
 
-Status Kinematics::load(const Mechanism& m) { return prepare(m, nullptr); }
+Status Kinematics::load(const Mechanism& m) {
+  return prepare(m, nullptr);
+}
 
 Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
   const double warmPhi = cur_.phi;
@@ -54,7 +60,9 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
     s.message = "the driver at " + mech_.jointLabel(dj) + " cannot turn: " +
                 (structure_.mobility == 0
                      ? "the mechanism has no degree of freedom (it is a structure)"
-                     : "the other joints hold the two bodies it joins rigidly together");
+                     : "either the other joints hold the two bodies it joins rigidly together, "
+                       "or the mechanism is drawn at a dead point (a limit position of the crank, "
+                       "where links line up): draw it a little away from there");
     return s;
   }
   if (!structure_.redundantJoints.empty()) {
@@ -233,8 +241,9 @@ Status Kinematics::explainFailure(double phiFailed) const {
         s.bodies.push_back(sys_.bodyIds[k]);
       }
     s.code = StatusCode::Unreachable;
-    s.message = "cannot reach crank angle " + deg(wanted) + ": the mechanism locks at crank angle " +
-                deg(reached) + " (limit position: " + bodyList(involved) +
+    s.message = "cannot reach crank angle " + deg(wanted) +
+                ": the mechanism locks at crank angle " + deg(reached) +
+                " (limit position: " + bodyList(involved) +
                 " reach a dead point, where no motion of the crank can pass)";
   } else {
     s.code = StatusCode::NotConverged;
@@ -252,7 +261,9 @@ const PointLocation& Kinematics::locate(PointId p) const {
   return *loc;
 }
 
-Vec2 Kinematics::position(PointId p) const { return pointPosition(sys_, cur_.q, locate(p)); }
+Vec2 Kinematics::position(PointId p) const {
+  return pointPosition(sys_, cur_.q, locate(p));
+}
 
 Vec2 Kinematics::velocity(PointId p) const {
   return omega() * pointVelocity(sys_, cur_.q, cur_.dq, locate(p));
@@ -286,9 +297,8 @@ Status Kinematics::checkDetermined(const std::vector<PointId>& points) const {
       Status s = Status::failure(
           StatusCode::Underconstrained,
           "the motion of " + mech_.pointLabel(p) + " is not determined by the driver: " +
-              std::to_string(structure_.freeAfterDriver) +
-              " degree(s) of freedom remain (bodies " + bodyList(structure_.freeBodies) +
-              " can move with the crank held)");
+              std::to_string(structure_.freeAfterDriver) + " degree(s) of freedom remain (bodies " +
+              bodyList(structure_.freeBodies) + " can move with the crank held)");
       for (int k : structure_.freeBodies) s.bodies.push_back(sys_.bodyIds[k]);
       return s;
     }

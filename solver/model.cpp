@@ -57,14 +57,30 @@ JointId Mechanism::addPinInSlot(PointId a, SlotId s) {
   return id;
 }
 
-const Body* Mechanism::body(BodyId id) const { return const_cast<Mechanism*>(this)->body(id); }
-const Point* Mechanism::point(PointId id) const { return const_cast<Mechanism*>(this)->point(id); }
-const Slot* Mechanism::slot(SlotId id) const { return const_cast<Mechanism*>(this)->slot(id); }
-const Joint* Mechanism::joint(JointId id) const { return const_cast<Mechanism*>(this)->joint(id); }
-Body* Mechanism::body(BodyId id) { return findById(bodies, id); }
-Point* Mechanism::point(PointId id) { return findById(points, id); }
-Slot* Mechanism::slot(SlotId id) { return findById(slots, id); }
-Joint* Mechanism::joint(JointId id) { return findById(joints, id); }
+const Body* Mechanism::body(BodyId id) const {
+  return const_cast<Mechanism*>(this)->body(id);
+}
+const Point* Mechanism::point(PointId id) const {
+  return const_cast<Mechanism*>(this)->point(id);
+}
+const Slot* Mechanism::slot(SlotId id) const {
+  return const_cast<Mechanism*>(this)->slot(id);
+}
+const Joint* Mechanism::joint(JointId id) const {
+  return const_cast<Mechanism*>(this)->joint(id);
+}
+Body* Mechanism::body(BodyId id) {
+  return findById(bodies, id);
+}
+Point* Mechanism::point(PointId id) {
+  return findById(points, id);
+}
+Slot* Mechanism::slot(SlotId id) {
+  return findById(slots, id);
+}
+Joint* Mechanism::joint(JointId id) {
+  return findById(joints, id);
+}
 
 const Body* Mechanism::bodyNamed(const std::string& n) const {
   for (const Body& b : bodies)

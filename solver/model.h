@@ -80,7 +80,8 @@ struct Driver {
 struct Mechanism {
   std::string name;
   std::vector<Body> bodies;  // file order
-  std::vector<Point> points;  // grouped by body in no particular order; order within a body = file order
+  std::vector<Point>
+      points;  // grouped by body in no particular order; order within a body = file order
   std::vector<Slot> slots;
   std::vector<Joint> joints;  // file order: the driver's "joint" index counts in it
   std::optional<Driver> driver;

@@ -23,7 +23,9 @@ const PointLocation* System::point(PointId id) const {
 
 namespace {
 
-Status bad(std::string msg) { return Status::failure(StatusCode::BadModel, std::move(msg)); }
+Status bad(std::string msg) {
+  return Status::failure(StatusCode::BadModel, std::move(msg));
+}
 
 }  // namespace
 
@@ -225,7 +227,9 @@ void makeViews(const System& sys, const Eigen::VectorXd& q, const Eigen::VectorX
 
 namespace {
 
-double holdScale(const System& sys, int col) { return col % 3 == 2 ? sys.size : 1.0; }
+double holdScale(const System& sys, int col) {
+  return col % 3 == 2 ? sys.size : 1.0;
+}
 
 double coordinate(const std::vector<BodyView>& views, int col) {
   const BodyView& b = views[col / 3 + 1];

@@ -41,10 +41,10 @@ struct System {
   int nBodies = 0;  // moving bodies; coordinates are 3 * nBodies
   std::vector<BodyId> bodyIds;
   BodyId groundId;
-  std::vector<Vec2> frameOrigin;   // sketch position of each moving body's frame
+  std::vector<Vec2> frameOrigin;     // sketch position of each moving body's frame
   std::vector<double> bodyWeightXY;  // weights of the "move as little as possible" norm
   std::vector<double> bodyWeightTheta;
-  std::vector<Constraint> cons;  // joint rows in file order, then the driver, then holds
+  std::vector<Constraint> cons;   // joint rows in file order, then the driver, then holds
   std::vector<JointId> jointIds;  // Mechanism::joints order
   int nRows = 0;
   int nJointRows = 0;  // rows from joints only (no driver, no holds)
@@ -52,7 +52,7 @@ struct System {
   double size = 1;  // L: diagonal of the drawing's bounding box, the length scale of everything
 
   bool hasDriver = false;
-  double sigma = 1;     // +1 ccw, -1 cw
+  double sigma = 1;  // +1 ccw, -1 cw
   double rpm = 0;
   double startRad = 0;  // start offset, in the driving direction
 

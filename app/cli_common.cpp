@@ -1,0 +1,115 @@
+#include "cli_common.h"
+
+#include <charconv>
+#include <cmath>
+#include <iostream>
+
+#include "io/model_file.h"
+#include "io/model_lookup.h"
+#include "io/numbers.h"
+
+namespace linkage::cli {
+
+std::string executablePath;
+
+int exitFor(const Status& s) {
+  switch (s.code) {
+    case StatusCode::Ok:
+      return kOk;
+    case StatusCode::Unreachable:
+    case StatusCode::Singular:
+    case StatusCode::NotConverged:
+      return kUnreachable;
+    default:
+      return kBadInput;
+  }
+}
+
+void error(const std::string& message) {
+  std::cerr << "linkage-cli: " << message << "\n";
+}
+void note(const std::string& message) {
+  std::cerr << "linkage-cli: note: " << message << "\n";
+}
+
+std::optional<double> number(const std::string& option, const std::string& text) {
+  std::optional<double> v = parseNumber(text);
+  if (!v) error(option + ": \"" + text + "\" is not a number");
+  return v;
+}
+
+std::optional<long long> wholeNumber(const std::string& option, const std::string& text) {
+  long long v = 0;
+  const char* end = text.data() + text.size();
+  auto [p, ec] = std::from_chars(text.data(), end, v);
+  if (ec != std::errc() || p != end) {
+    error(option + ": \"" + text + "\" is not a whole number");
+    return std::nullopt;
+  }
+  return v;
+}
+
+std::optional<Mechanism> openModel(const std::string& nameOrPath) {
+  std::optional<std::string> path = resolveModel(nameOrPath, executablePath);
+  if (!path) {
+    std::string msg = nameOrPath + ": no such file, and no example of that name";
+    const std::vector<std::string> names = listExamples(executablePath);
+    if (!names.empty()) {
+      msg += " (examples:";
+      for (const std::string& n : names) msg += " " + n;
+      msg += ")";
+    }
+    error(msg);
+    return std::nullopt;
+  }
+  LoadResult r = loadMechanismFile(*path);
+  if (!r.mechanism) {
+    error(r.error);
+    return std::nullopt;
+  }
+  return std::move(*r.mechanism);
+}
+
+int prepare(Kinematics& k, const Mechanism& m) {
+  const Status s = k.load(m);
+  for (const std::string& n : k.notes()) note(n);
+  if (!s.ok()) {
+    error(s.message);
+    return exitFor(s);
+  }
+  return kOk;
+}
+
+std::optional<std::vector<PointId>> outputPoints(const Mechanism& m,
+                                                 const std::vector<std::string>& asked) {
+  if (asked.empty()) {
+    if (m.outputs.empty()) {
+      error("the model names no output points: give one or more --point body.point");
+      return std::nullopt;
+    }
+    return m.outputs;
+  }
+  std::vector<PointId> ids;
+  for (const std::string& a : asked) {
+    std::optional<PointId> id = m.findPoint(a);
+    if (!id) {
+      const size_t dot = a.rfind('.');
+      if (dot == std::string::npos)
+        error("--point " + a + ": expected body.point");
+      else if (!m.bodyNamed(a.substr(0, dot)))
+        error("--point " + a + ": no body \"" + a.substr(0, dot) + "\"");
+      else
+        error("--point " + a + ": no point \"" + a.substr(dot + 1) + "\" on body \"" +
+              a.substr(0, dot) + "\"");
+      return std::nullopt;
+    }
+    ids.push_back(*id);
+  }
+  return ids;
+}
+
+bool isHelp(const std::string& arg) {
+  return arg == "--help" || arg == "-h";
+}
+
+}  // namespace linkage::cli

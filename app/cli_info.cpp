@@ -1,0 +1,69 @@
+// linkage-cli info: what the program makes of a mechanism (structure, assembly) before analysis.
+#include <iostream>
+
+#include "cli_common.h"
+#include "io/model_lookup.h"
+#include "io/numbers.h"
+
+namespace linkage::cli {
+
+namespace {
+const char* kHelp = R"(usage: linkage-cli info MODEL
+
+Describes MODEL (a .linkage.json file or an example name): bodies, joints, driver, the degrees
+of freedom (Gruebler count and the rank of the joint equations), redundant joints, and how far
+the drawing had to move to close. Exit status 0, or 2 when the mechanism cannot be used (the
+message says why and where).
+)";
+}  // namespace
+
+int info(int argc, char** argv) {
+  std::string model;
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (isHelp(a)) {
+      std::cout << kHelp;
+      return kOk;
+    }
+    if (!a.empty() && a[0] == '-') {
+      error("info: unknown option " + a);
+      return kBadInput;
+    }
+    if (!model.empty()) {
+      error("info: more than one MODEL given");
+      return kBadInput;
+    }
+    model = a;
+  }
+  if (model.empty()) {
+    error("info: no MODEL given (see linkage-cli info --help)");
+    return kBadInput;
+  }
+  std::optional<Mechanism> m = openModel(model);
+  if (!m) return kBadInput;
+  std::cout << "name: " << m->name << "\n";
+  std::cout << "bodies: " << m->bodies.size() << ", joints: " << m->joints.size() << "\n";
+  for (const Joint& j : m->joints) std::cout << "  " << m->jointLabel(j.id) << "\n";
+  if (m->driver)
+    std::cout << "driver: " << m->jointLabel(m->driver->joint) << " at "
+              << formatNumber(m->driver->rpm, 6) << " rpm "
+              << (m->driver->direction == Direction::Cw ? "cw" : "ccw") << "\n";
+  else
+    std::cout << "driver: none\n";
+  Kinematics k;
+  const int e = prepare(k, *m);
+  if (k.system().nRows > 0 || e == kOk) {
+    const Structure& s = k.structure();
+    std::cout << "coordinates: " << s.coordinates << ", joint equations: " << s.jointEquations
+              << "\n";
+    std::cout << "degrees of freedom: " << s.mobility << " (Gruebler count " << s.gruebler
+              << ", rank " << s.rank << ")\n";
+    for (int j : s.redundantJoints)
+      std::cout << "redundant: " << m->jointLabel(m->joints[j].id) << "\n";
+  }
+  if (e == kOk)
+    std::cout << "assembly: moved up to " << formatNumber(k.assembly().maxMove, 6) << " mm\n";
+  return e;
+}
+
+}  // namespace linkage::cli

@@ -1,0 +1,50 @@
+// linkage-cli: the command-line front end to the kinematic core.
+#include <cstring>
+#include <iostream>
+#include <string>
+
+#include "cli_common.h"
+#include "io/model_lookup.h"
+
+namespace linkage::cli {
+int analyze(int argc, char** argv);
+int info(int argc, char** argv);
+}  // namespace linkage::cli
+
+namespace {
+
+const char* kHelp = R"(usage: linkage-cli COMMAND [ARGS]
+
+Commands:
+  analyze MODEL ...   motion table (position, velocity, acceleration of points) over crank angles
+  info MODEL          structure of a mechanism: degrees of freedom, redundant joints, assembly
+  examples            list the example mechanisms that MODEL can name
+
+MODEL is a .linkage.json file or the name of an example (e.g. wanzer-inversion-2).
+Run 'linkage-cli COMMAND --help' for a command's options. Numbers are written with '.' as the
+decimal point whatever the locale.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace linkage::cli;
+  executablePath = argc > 0 ? argv[0] : "";
+  if (argc < 2 || isHelp(argv[1])) {
+    std::cout << kHelp;
+    return argc < 2 ? kBadInput : kOk;
+  }
+  const std::string cmd = argv[1];
+  if (cmd == "analyze") return analyze(argc - 2, argv + 2);
+  if (cmd == "info") return info(argc - 2, argv + 2);
+  if (cmd == "examples") {
+    if (argc > 2 && isHelp(argv[2])) {
+      std::cout << "usage: linkage-cli examples\n\nLists the example mechanisms by name.\n";
+      return kOk;
+    }
+    for (const std::string& n : linkage::listExamples(executablePath)) std::cout << n << "\n";
+    return kOk;
+  }
+  error("unknown command \"" + cmd + "\" (see linkage-cli --help)");
+  return kBadInput;
+}

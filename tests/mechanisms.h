@@ -1,0 +1,100 @@
+// Mechanisms built in code for tests: a four-bar and a slider-crank of any dimensions.
+#pragma once
+
+#include <cmath>
+
+#include "model.h"
+
+namespace linkage::test {
+
+struct FourBar {
+  Mechanism m;
+  BodyId ground, crank, coupler, rocker;
+  PointId O2, A, B, O4, P;  // P: the coupler point
+  JointId drive, pinA, pinB, pinO4;
+};
+
+// Crank pivot O2 = (0, 0), rocker pivot O4 = (d, 0); crank r2 at `crankDeg` (from +x, ccw);
+// open branch (B above the line O2-O4 side chosen by `open`); coupler point at (px, py) in the
+// frame of A->B. Returns nullopt-like empty mechanism if it cannot close.
+inline FourBar fourBar(double d, double r2, double r3, double r4, double crankDeg, bool open = true,
+                       double px = 0, double py = 0, Direction dir = Direction::Ccw,
+                       double rpm = 60) {
+  FourBar f;
+  Mechanism& m = f.m;
+  const double t = crankDeg * M_PI / 180;
+  const Vec2 O2(0, 0), O4(d, 0), A(r2 * std::cos(t), r2 * std::sin(t));
+  // B: intersection of circle(A, r3) and circle(O4, r4).
+  const Vec2 AO = O4 - A;
+  const double e = AO.norm();
+  const double a = (r3 * r3 - r4 * r4 + e * e) / (2 * e);
+  const double h = std::sqrt(std::max(0.0, r3 * r3 - a * a));
+  const Vec2 u = AO / e, n(-u.y(), u.x());
+  const Vec2 B = A + a * u + (open ? h : -h) * n;
+  const Vec2 ab = (B - A).normalized(), abn(-ab.y(), ab.x());
+  const Vec2 P = A + px * ab + py * abn;
+  f.ground = m.addBody("ground", true);
+  f.crank = m.addBody("crank");
+  f.coupler = m.addBody("coupler");
+  f.rocker = m.addBody("rocker");
+  const PointId gO2 = m.addPoint(f.ground, "O2", O2), gO4 = m.addPoint(f.ground, "O4", O4);
+  f.O2 = m.addPoint(f.crank, "O2", O2);
+  const PointId cA = m.addPoint(f.crank, "A", A);
+  f.A = m.addPoint(f.coupler, "A", A);
+  f.B = m.addPoint(f.coupler, "B", B);
+  f.P = m.addPoint(f.coupler, "P", P);
+  const PointId rB = m.addPoint(f.rocker, "B", B);
+  f.O4 = m.addPoint(f.rocker, "O4", O4);
+  f.drive = m.addPin(gO2, f.O2);
+  f.pinA = m.addPin(cA, f.A);
+  f.pinB = m.addPin(f.B, rB);
+  f.pinO4 = m.addPin(f.O4, gO4);
+  m.driver = Driver{f.drive, rpm, dir, 0, ""};
+  m.outputs = {f.P};
+  return f;
+}
+
+struct SliderCrank {
+  Mechanism m;
+  BodyId ground, crank, rod, slider;
+  PointId A, B;
+  JointId drive;
+};
+
+// Crank pivot at the origin, slider on the vertical line x = e above it, crank at `crankDeg`
+// from +x (ccw). The slider is a block in a ground slot (slider joint) or, with pinInSlot, the
+// rod's end runs in the slot directly (no block body).
+inline SliderCrank sliderCrank(double r, double l, double e, double crankDeg,
+                               Direction dir = Direction::Ccw, double rpm = 60,
+                               bool pinInSlot = false) {
+  SliderCrank s;
+  Mechanism& m = s.m;
+  const double t = crankDeg * M_PI / 180;
+  const Vec2 A(r * std::cos(t), r * std::sin(t));
+  const Vec2 B(e, A.y() + std::sqrt(l * l - (e - A.x()) * (e - A.x())));
+  s.ground = m.addBody("ground", true);
+  s.crank = m.addBody("crank");
+  s.rod = m.addBody("rod");
+  const PointId gO = m.addPoint(s.ground, "O", Vec2(0, 0));
+  const SlotId guide = m.addSlot(s.ground, "guide", Vec2(e, 0), Vec2(e, r + l));
+  const PointId cO = m.addPoint(s.crank, "O", Vec2(0, 0));
+  const PointId cA = m.addPoint(s.crank, "A", A);
+  s.A = m.addPoint(s.rod, "A", A);
+  const PointId rB = m.addPoint(s.rod, "B", B);
+  s.drive = m.addPin(gO, cO);
+  m.addPin(cA, s.A);
+  if (pinInSlot) {
+    s.B = rB;
+    m.addPinInSlot(rB, guide);
+  } else {
+    s.slider = m.addBody("slider");
+    s.B = m.addPoint(s.slider, "B", B);
+    m.addPin(rB, s.B);
+    m.addSlider(s.B, guide);
+  }
+  m.driver = Driver{s.drive, rpm, dir, 0, ""};
+  m.outputs = {s.B};
+  return s;
+}
+
+}  // namespace linkage::test

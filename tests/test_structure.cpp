@@ -1,0 +1,234 @@
+// Structure analysis and assembly: degrees of freedom, redundant and conflicting joints, a
+// driver that cannot turn, freedoms the driver leaves, drawings that do not close.
+#include <gtest/gtest.h>
+
+#include "kinematics.h"
+#include "mechanisms.h"
+
+namespace linkage {
+namespace {
+
+using test::fourBar;
+using test::sliderCrank;
+
+TEST(Structure, FourBarHasOneFreedomAndFullRank) {
+  auto f = fourBar(60, 20, 70, 50, 60);
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  const Structure& s = k.structure();
+  EXPECT_EQ(s.coordinates, 9);
+  EXPECT_EQ(s.jointEquations, 8);
+  EXPECT_EQ(s.gruebler, 1);
+  EXPECT_EQ(s.rank, 8);
+  EXPECT_EQ(s.mobility, 1);
+  EXPECT_TRUE(s.redundantJoints.empty());
+  EXPECT_TRUE(s.driverMoves);
+  EXPECT_EQ(s.freeAfterDriver, 0);
+  EXPECT_FALSE(k.assembly().moved(k.system()));
+}
+
+TEST(Structure, DuplicatedPinIsNamedRedundantAndMotionUnchanged) {
+  auto plain = fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  auto f = fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  const Vec2 B = f.m.point(f.B)->pos;
+  const PointId b2 = f.m.addPoint(f.coupler, "B2", B);
+  const PointId r2 = f.m.addPoint(f.rocker, "B2", B);
+  const JointId dup = f.m.addPin(b2, r2);
+  Kinematics k, ref;
+  ASSERT_TRUE(k.load(f.m).ok());
+  ASSERT_TRUE(ref.load(plain.m).ok());
+  const Structure& s = k.structure();
+  EXPECT_EQ(s.gruebler, -1);
+  EXPECT_EQ(s.mobility, 1);
+  ASSERT_EQ(s.redundantJoints.size(), 1u);
+  EXPECT_EQ(f.m.joints[s.redundantJoints[0]].id, dup);
+  ASSERT_FALSE(k.notes().empty());
+  EXPECT_NE(k.notes()[0].find("joints[4]"), std::string::npos) << k.notes()[0];
+  for (double a : {37.0, 123.0, 290.0}) {
+    ASSERT_TRUE(k.moveTo(a).ok());
+    ASSERT_TRUE(ref.moveTo(a).ok());
+    // Equal to the solver's tolerance (the accuracy target is 1e-9 mm).
+    EXPECT_LT((k.position(f.P) - ref.position(plain.P)).norm(), 1e-10);
+    EXPECT_LT((k.velocity(f.P) - ref.velocity(plain.P)).norm(), 1e-9);
+  }
+}
+
+// The classic over-constrained parallelogram: a fifth link parallel to crank and rocker.
+struct Parallelogram {
+  Mechanism m;
+  PointId M;  // coupler point the extra link holds
+  JointId extra;
+};
+
+Parallelogram parallelogram(double extraOffsetMm) {
+  auto f = fourBar(100, 40, 100, 40, 60);
+  Parallelogram p;
+  p.m = f.m;
+  const BodyId link = p.m.addBody("link5");
+  const Vec2 A = p.m.point(f.A)->pos;
+  const PointId g = p.m.addPoint(p.m.ground()->id, "O5", Vec2(50, 0));
+  const PointId l0 = p.m.addPoint(link, "O5", Vec2(50, 0));
+  const PointId l1 = p.m.addPoint(link, "M", A + Vec2(50, 0));
+  p.M = p.m.addPoint(f.coupler, "M", A + Vec2(50 + extraOffsetMm, 0));
+  p.m.addPin(g, l0);
+  p.extra = p.m.addPin(l1, p.M);
+  return p;
+}
+
+TEST(Structure, ParallelogramWithFifthLinkHasMobilityOneWhereGrueblerSaysZero) {
+  Parallelogram p = parallelogram(0);
+  Kinematics k;
+  Status s = k.load(p.m);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_EQ(k.structure().gruebler, 0);
+  EXPECT_EQ(k.structure().mobility, 1);
+  ASSERT_EQ(k.structure().redundantJoints.size(), 1u);
+  EXPECT_EQ(p.m.joints[k.structure().redundantJoints[0]].id, p.extra);
+  // It moves, and the redundant link keeps up: its pin holds to rounding all the way.
+  for (double a : {10.0, 45.0, 90.0}) {
+    ASSERT_TRUE(k.moveTo(a).ok());
+    const PointId linkM = *p.m.findPoint("link5.M");
+    EXPECT_LT((k.position(linkM) - k.position(p.M)).norm(), 1e-10);
+  }
+}
+
+TEST(Structure, RedundantJointThatCannotHoldIsConflicting) {
+  Parallelogram p = parallelogram(1.0);  // the fifth link is 1 mm off its coupler point
+  Kinematics k;
+  Status s = k.load(p.m);
+  EXPECT_EQ(s.code, StatusCode::Conflicting) << s.message;
+  EXPECT_NE(s.message.find("joints[5]"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("conflicts"), std::string::npos) << s.message;
+  ASSERT_FALSE(s.joints.empty());
+  EXPECT_EQ(s.joints[0], p.extra);
+  EXPECT_FALSE(k.valid());
+}
+
+TEST(Structure, TriangleCannotBeDriven) {
+  // Three binary links pinned in a triangle to the ground: a structure.
+  Mechanism m;
+  const BodyId g = m.addBody("ground", true), a = m.addBody("a"), b = m.addBody("b");
+  const PointId g0 = m.addPoint(g, "O", {0, 0}), g1 = m.addPoint(g, "Q", {50, 0});
+  const PointId a0 = m.addPoint(a, "O", {0, 0}), a1 = m.addPoint(a, "C", {20, 30});
+  const PointId b0 = m.addPoint(b, "Q", {50, 0}), b1 = m.addPoint(b, "C", {20, 30});
+  const JointId d = m.addPin(g0, a0);
+  m.addPin(a1, b1);
+  m.addPin(b0, g1);
+  m.driver = Driver{d, 60, Direction::Ccw, 0, ""};
+  Kinematics k;
+  Status s = k.load(m);
+  EXPECT_EQ(s.code, StatusCode::Locked);
+  EXPECT_NE(s.message.find("joints[0]"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("no degree of freedom"), std::string::npos) << s.message;
+  EXPECT_EQ(k.structure().mobility, 0);
+}
+
+TEST(Structure, FiveBarWithOneDriverLeavesAFreedomAndNamesTheBodies) {
+  // Ground, crank, two links, a rocker: five bars, two freedoms, one driver.
+  Mechanism m;
+  const BodyId g = m.addBody("ground", true), c = m.addBody("crank"), l1 = m.addBody("l1"),
+               l2 = m.addBody("l2"), r = m.addBody("rocker");
+  const Vec2 O(0, 0), A(15, 0), C(40, 40), D(80, 20), Q(90, 0);
+  const PointId gO = m.addPoint(g, "O", O), gQ = m.addPoint(g, "Q", Q);
+  const PointId cO = m.addPoint(c, "O", O), cA = m.addPoint(c, "A", A);
+  const PointId l1A = m.addPoint(l1, "A", A), l1C = m.addPoint(l1, "C", C);
+  const PointId l2C = m.addPoint(l2, "C", C), l2D = m.addPoint(l2, "D", D);
+  const PointId rD = m.addPoint(r, "D", D), rQ = m.addPoint(r, "Q", Q);
+  const JointId drive = m.addPin(gO, cO);
+  m.addPin(cA, l1A);
+  m.addPin(l1C, l2C);
+  m.addPin(l2D, rD);
+  m.addPin(rQ, gQ);
+  m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  EXPECT_EQ(k.structure().mobility, 2);
+  EXPECT_EQ(k.structure().freeAfterDriver, 1);
+  Status s = k.checkDetermined({l1C});
+  EXPECT_EQ(s.code, StatusCode::Underconstrained);
+  EXPECT_NE(s.message.find("l1.C"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("'l2'"), std::string::npos) << s.message;
+  // The crank's own point is determined all the same.
+  EXPECT_TRUE(k.checkDetermined({cA}).ok());
+}
+
+TEST(Structure, IdleSpinIsHeldAndDoesNotDisturbTheRest) {
+  // A roller pinned to the slider block of a slider-crank spins freely: an idle freedom.
+  auto sc = sliderCrank(15, 45, 0, 90);
+  auto ref = sliderCrank(15, 45, 0, 90);
+  const BodyId roller = sc.m.addBody("roller");
+  const Vec2 B = sc.m.point(sc.B)->pos;
+  const PointId rc = sc.m.addPoint(roller, "C", B);
+  const PointId rim = sc.m.addPoint(roller, "rim", B + Vec2(5, 0));
+  const PointId sB = sc.m.addPoint(sc.slider, "axle", B);
+  sc.m.addPin(sB, rc);
+  Kinematics k, kr;
+  ASSERT_TRUE(k.load(sc.m).ok());
+  ASSERT_TRUE(kr.load(ref.m).ok());
+  EXPECT_EQ(k.structure().freeAfterDriver, 1);
+  ASSERT_FALSE(k.notes().empty());
+  EXPECT_NE(k.notes().back().find("'roller'"), std::string::npos) << k.notes().back();
+  EXPECT_TRUE(k.checkDetermined({rc}).ok());
+  EXPECT_EQ(k.checkDetermined({rim}).code, StatusCode::Underconstrained);
+  for (double a : {30.0, 200.0}) {
+    ASSERT_TRUE(k.moveTo(a).ok());
+    ASSERT_TRUE(kr.moveTo(a).ok());
+    EXPECT_LT((k.position(rc) - kr.position(ref.B)).norm(), 1e-12);
+    EXPECT_LT((k.acceleration(rc) - kr.acceleration(ref.B)).norm(), 1e-9);
+  }
+}
+
+TEST(Assembly, HandDrawnSketchIsClosedMovingLittleAndKeepingShapes) {
+  auto f = fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  auto exact = f;
+  // Draw the rocker's pin 0.3 mm off, as a hand would: the coupler and rocker no longer meet.
+  const BodyId rocker = f.rocker;
+  for (Point& p : f.m.points)
+    if (p.body == rocker && p.name == "B") p.pos += Vec2(0.3, -0.2);
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  EXPECT_TRUE(k.assembly().moved(k.system()));
+  EXPECT_GT(k.assembly().maxMove, 0.01);
+  EXPECT_LT(k.assembly().maxMove, 1.0);
+  ASSERT_FALSE(k.notes().empty());
+  EXPECT_NE(k.notes()[0].find("does not close"), std::string::npos) << k.notes()[0];
+  // Joints hold, the crank stays where drawn, and every body keeps its drawn shape.
+  const PointId rB = *f.m.findPoint("rocker.B");
+  EXPECT_LT((k.position(rB) - k.position(f.B)).norm(), 1e-11);
+  const PointId cA = *f.m.findPoint("crank.A");
+  EXPECT_LT((k.position(cA) - f.m.point(cA)->pos).norm(), 1e-11);
+  const double rockerDrawn = (f.m.point(rB)->pos - f.m.point(f.O4)->pos).norm();
+  EXPECT_NEAR((k.position(rB) - k.position(f.O4)).norm(), rockerDrawn, 1e-11);
+  // The drawn (open) branch is kept: B stays above the ground line.
+  EXPECT_GT(k.position(f.B).y(), 0);
+  (void)exact;
+}
+
+TEST(Assembly, LinkTooShortToCloseIsReportedWithTheJoint) {
+  auto f = fourBar(60, 20, 70, 50, 60);
+  for (Point& p : f.m.points)
+    if (p.body == f.rocker && p.name == "B") p.pos = Vec2(60, 5);  // rocker now 5 mm long
+  Kinematics k;
+  Status s = k.load(f.m);
+  EXPECT_EQ(s.code, StatusCode::AssemblyFailed);
+  EXPECT_NE(s.message.find("cannot assemble"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("joints["), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("mm open"), std::string::npos) << s.message;
+  EXPECT_FALSE(k.valid());
+}
+
+TEST(Compile, JointOnOneBodyAndMissingGroundAreBadModels) {
+  auto f = fourBar(60, 20, 70, 50, 60);
+  Mechanism m = f.m;
+  m.joints[1].b = *m.findPoint("crank.O2");
+  Kinematics k;
+  Status s = k.load(m);
+  EXPECT_EQ(s.code, StatusCode::BadModel);
+  EXPECT_NE(s.message.find("joints[1]"), std::string::npos) << s.message;
+  Mechanism n = f.m;
+  n.bodies[0].ground = false;
+  EXPECT_EQ(k.load(n).code, StatusCode::BadModel);
+}
+
+}  // namespace
+}  // namespace linkage

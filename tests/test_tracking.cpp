@@ -1,0 +1,144 @@
+// Following the motion: limit positions, branches, direction, start offset, edits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "kinematics.h"
+#include "mechanisms.h"
+
+namespace linkage {
+namespace {
+
+using test::fourBar;
+using test::sliderCrank;
+
+constexpr double kDeg = M_PI / 180;
+
+// Non-Grashof (s + l = 140 > p + q = 130): the crank, drawn at 30 degrees, locks where coupler
+// and rocker line up: |A - O4| = r3 + r4, i.e. cos(theta) = (60^2 + 100^2 - 110^2) / (2 60 100).
+TEST(Tracking, NonGrashofCrankLocksAtItsLimitAngle) {
+  auto f = fourBar(100, 60, 40, 70, 30);
+  const double limitDeg = std::acos((3600.0 + 10000 - 12100) / 12000) / kDeg - 30;  // 52.819...
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  ASSERT_TRUE(k.moveTo(50).ok());
+  Status s = k.moveTo(60);
+  EXPECT_EQ(s.code, StatusCode::Unreachable) << s.message;
+  ASSERT_TRUE(s.lastReachedDeg.has_value());
+  EXPECT_NEAR(*s.lastReachedDeg, limitDeg, 1e-3);
+  EXPECT_NEAR(*s.crankDeg, 60, 1e-12);
+  EXPECT_NE(s.message.find("locks at crank angle 52.81"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("'coupler'"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("'rocker'"), std::string::npos) << s.message;
+  // The state stays at the last position reached: finite, on the drawn branch, joints closed.
+  EXPECT_NEAR(k.crankDeg(), *s.lastReachedDeg, 1e-12);
+  EXPECT_TRUE(k.q().allFinite());
+  EXPECT_TRUE(k.dq().allFinite());
+  const PointId rB = *f.m.findPoint("rocker.B");
+  EXPECT_LT((k.position(rB) - k.position(f.B)).norm(), 1e-9);
+  // It can still be driven back.
+  ASSERT_TRUE(k.moveTo(0).ok());
+  EXPECT_LT((k.position(f.B) - f.m.point(f.B)->pos).norm(), 1e-9);
+}
+
+TEST(Tracking, CrossedBranchIsKeptThroughFullRevolutions) {
+  auto f = fourBar(60, 20, 70, 50, 60, /*open=*/false);
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  for (int a = 0; a <= 720; a += 45) {
+    ASSERT_TRUE(k.moveTo(a).ok()) << a;
+    // Crossed: B stays below the line O2-O4... for this linkage the rocker never crosses it.
+    EXPECT_LT(k.position(f.B).y(), 0) << "crank angle " << a;
+  }
+  EXPECT_LT((k.position(f.B) - f.m.point(f.B)->pos).norm(), 1e-9);
+}
+
+TEST(Tracking, OneLargeMoveEqualsManySmallOnes) {
+  auto f = fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  Kinematics big, small;
+  ASSERT_TRUE(big.load(f.m).ok());
+  ASSERT_TRUE(small.load(f.m).ok());
+  ASSERT_TRUE(big.moveTo(250).ok());
+  for (int a = 1; a <= 250; ++a) ASSERT_TRUE(small.moveTo(a).ok());
+  EXPECT_LT((big.position(f.P) - small.position(f.P)).norm(), 1e-11);
+  EXPECT_LT((big.velocity(f.P) - small.velocity(f.P)).norm(), 1e-9);
+}
+
+TEST(Tracking, ClockwiseTurnsTheOtherWayAndNegativeAnglesGoBack) {
+  auto ccw = sliderCrank(15, 45, 0, 90, Direction::Ccw);
+  auto cw = sliderCrank(15, 45, 0, 90, Direction::Cw);
+  Kinematics a, b;
+  ASSERT_TRUE(a.load(ccw.m).ok());
+  ASSERT_TRUE(b.load(cw.m).ok());
+  ASSERT_TRUE(a.moveTo(30).ok());
+  ASSERT_TRUE(b.moveTo(-30).ok());
+  EXPECT_LT((a.position(ccw.B) - b.position(cw.B)).norm(), 1e-12);
+  const double crankAngleA = a.bodyAngle(ccw.crank);
+  ASSERT_TRUE(b.moveTo(30).ok());
+  EXPECT_NEAR(b.bodyAngle(cw.crank), -crankAngleA, 1e-12);
+  EXPECT_NEAR(b.bodyOmega(cw.crank), -2 * M_PI * 60 / 60, 1e-12);
+}
+
+TEST(Tracking, StartOffsetTurnsTheDrawingBeforeCrankAngleZero) {
+  auto f = sliderCrank(15, 45, 0, 90);
+  f.m.driver->startDeg = 90;  // the crank starts pointing left, not up
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  EXPECT_NEAR(k.crankDeg(), 0, 1e-12);
+  EXPECT_NEAR(k.position(f.A).x(), -15, 1e-12);
+  EXPECT_NEAR(k.position(f.A).y(), 0, 1e-12);
+}
+
+TEST(Tracking, DrawingAtADeadPointIsReported) {
+  // A non-Grashof four-bar drawn exactly at its crank's limit: coupler and rocker in line. The
+  // crank cannot turn from there in the driving sense, and the report says so.
+  const double d = 100, r2 = 60, r3 = 40, r4 = 70;
+  const double limit = std::acos((r2 * r2 + d * d - (r3 + r4) * (r3 + r4)) / (2 * r2 * d)) / kDeg;
+  auto f = fourBar(d, r2, r3, r4, limit);
+  Kinematics k;
+  Status s = k.load(f.m);
+  EXPECT_EQ(s.code, StatusCode::Locked) << s.message;
+  EXPECT_NE(s.message.find("dead point"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("joints[0]"), std::string::npos) << s.message;
+}
+
+TEST(Edit, ChangedLinkIsResolvedFromTheCurrentPose) {
+  auto f = fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  ASSERT_TRUE(k.moveTo(100).ok());
+  // Lengthen the rocker by moving its ground pivot 2 mm right, in the drawing.
+  Mechanism edited = f.m;
+  for (Point& p : edited.points)
+    if (p.name == "O4") p.pos += Vec2(2, 0);
+  ASSERT_TRUE(k.edit(edited).ok());
+  EXPECT_NEAR(k.crankDeg(), 100, 1e-12);
+  // Same answer as loading the edited drawing and turning the crank.
+  Kinematics fresh;
+  ASSERT_TRUE(fresh.load(edited).ok());
+  ASSERT_TRUE(fresh.moveTo(100).ok());
+  EXPECT_LT((k.position(f.P) - fresh.position(f.P)).norm(), 1e-11);
+  EXPECT_LT((k.acceleration(f.P) - fresh.acceleration(f.P)).norm(), 1e-7);
+  // An edit that breaks the mechanism leaves a clear status: only the ground pivot moves far
+  // away, the rocker keeps its length and cannot reach it.
+  Mechanism broken = edited;
+  for (Point& p : broken.points)
+    if (p.name == "O4" && p.body == f.ground) p.pos += Vec2(500, 0);
+  Status s = k.edit(broken);
+  EXPECT_EQ(s.code, StatusCode::AssemblyFailed) << s.message;
+}
+
+TEST(Tracking, NotLoadedAndNoDriverAreClearStatuses) {
+  Kinematics k;
+  EXPECT_EQ(k.moveTo(10).code, StatusCode::BadModel);
+  auto f = fourBar(60, 20, 70, 50, 60);
+  f.m.driver.reset();
+  ASSERT_TRUE(k.load(f.m).ok());
+  Status s = k.moveTo(10);
+  EXPECT_EQ(s.code, StatusCode::BadModel);
+  EXPECT_NE(s.message.find("no driver"), std::string::npos);
+  EXPECT_EQ(k.moveTo(NAN).code, StatusCode::BadModel);
+}
+
+}  // namespace
+}  // namespace linkage
