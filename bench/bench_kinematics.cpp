@@ -1,0 +1,74 @@
+// Steps per second of a full kinematic step (position by Newton from the predictor, then exact
+// velocity and acceleration solves, then the output point's x, v, a), for the example
+// mechanisms at 1 degree per step, next to the closed-form slider-crank in the same run.
+//   build/bench/linkage_bench --benchmark_min_time=1
+// Results and their discussion: docs/benchmarks.md.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "io/model_file.h"
+#include "kinematics.h"
+
+namespace {
+
+using namespace linkage;
+
+Mechanism example(const std::string& name) {
+  LoadResult r =
+      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
+  if (!r.mechanism) {
+    std::fprintf(stderr, "%s\n", r.error.c_str());
+    std::abort();
+  }
+  return *r.mechanism;
+}
+
+void kinematicStep(benchmark::State& state, const std::string& name) {
+  const Mechanism m = example(name);
+  Kinematics k;
+  if (!k.load(m).ok()) std::abort();
+  const PointId out = m.outputs.at(0);
+  double angle = 0;
+  for (auto _ : state) {
+    angle += 1.0;
+    if (!k.moveTo(angle).ok()) std::abort();
+    const Vec2 x = k.position(out), v = k.velocity(out), a = k.acceleration(out);
+    benchmark::DoNotOptimize(x.x() + v.x() + a.x());
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["bodies"] = static_cast<double>(k.system().nBodies + 1);
+}
+
+// The exact closed form of the central slider-crank (r = 15, l = 30, 1000 rpm): what a
+// hand-written program for this one mechanism costs per step.
+void closedFormSliderCrank(benchmark::State& state) {
+  const double r = 15, l = 30, w = 1000 * 2 * M_PI / 60, lambda = r / l;
+  double phi = 0;
+  const double step = M_PI / 180;
+  for (auto _ : state) {
+    phi += step;
+    const double c = std::cos(phi), s = std::sin(phi);
+    const double D = std::sqrt(1 - lambda * lambda * s * s);
+    const double y = r * c + l * D;
+    const double v = -r * w * s * (1 + lambda * c / D);
+    const double a =
+        -r * w * w *
+        (c + lambda * (c * c - s * s) / D + lambda * lambda * lambda * s * s * c * c / (D * D * D));
+    benchmark::DoNotOptimize(y + v + a);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+BENCHMARK(closedFormSliderCrank)->Name("closed_form/slider_crank");
+BENCHMARK_CAPTURE(kinematicStep, slider_crank, std::string("slider-crank-22a-lambda-0.5"))
+    ->Name("step/slider_crank");
+BENCHMARK_CAPTURE(kinematicStep, four_bar, std::string("four-bar-crank-rocker"))
+    ->Name("step/four_bar");
+BENCHMARK_CAPTURE(kinematicStep, wanzer, std::string("wanzer-inversion-2"))->Name("step/wanzer");
+
+}  // namespace
+
+BENCHMARK_MAIN();
