@@ -71,4 +71,4 @@ BENCHMARK_CAPTURE(kinematicStep, wanzer, std::string("wanzer-inversion-2"))->Nam
 
 }  // namespace
 
-BENCHMARK_MAIN();
+

@@ -177,7 +177,35 @@ Status Kinematics::moveTo(double crankDeg) {
   return moveToPhi(sys_.startRad + crankDeg * kDeg);
 }
 
+Status Kinematics::skipWholeTurns(double target) {
+  const double turn = 2 * M_PI;
+  const double dir = target > reg_.phi ? 1.0 : -1.0;
+  const Snapshot start = reg_;
+  if (Status s = moveToPhi(reg_.phi + dir * turn); !s.ok()) return s;
+  // Periodic when every point is back: x, y equal and angles equal modulo whole turns.
+  Eigen::VectorXd perTurn = reg_.q - start.q;
+  for (int k = 0; k < sys_.nBodies; ++k) {
+    const double dth = perTurn[3 * k + 2];
+    const double whole = turn * std::round(dth / turn);
+    if (std::abs(perTurn[3 * k]) > 1e-9 * sys_.size ||
+        std::abs(perTurn[3 * k + 1]) > 1e-9 * sys_.size || std::abs(dth - whole) > 1e-9)
+      return Status::success();  // not periodic in one turn: tracked the whole way
+    perTurn[3 * k] = perTurn[3 * k + 1] = 0;
+    perTurn[3 * k + 2] = whole;
+  }
+  const double turns = std::floor(std::abs(target - reg_.phi) / turn);
+  reg_.phi += dir * turns * turn;
+  reg_.q += turns * perTurn;
+  cur_ = reg_;
+  return Status::success();
+}
+
 Status Kinematics::moveToPhi(double target) {
+  // Far targets: one turn shows whether the motion repeats; if it does, whole turns are skipped
+  // exactly (angles advance by whole turns), so a large angle costs no more than one turn.
+  if (std::abs(target - reg_.phi) > 4 * M_PI) {
+    if (Status s = skipWholeTurns(target); !s.ok()) return s;
+  }
   const double hMax = opt_.maxStepDeg * kDeg;
   const double hMin = opt_.minStepDeg * kDeg;
   double hTry = hMax;

@@ -88,6 +88,7 @@ class Kinematics {
 
   Status prepare(const Mechanism& m, const Eigen::VectorXd* warm);
   Status moveToPhi(double phi);
+  Status skipWholeTurns(double target);
   enum class StepResult { Accepted, Refused, Singular };
   StepResult tryStep(double phiNext, Snapshot& out);
   Status explainFailure(double phiFailed) const;

@@ -142,3 +142,28 @@ TEST(Tracking, NotLoadedAndNoDriverAreClearStatuses) {
 
 }  // namespace
 }  // namespace linkage
+
+namespace linkage {
+namespace {
+
+TEST(Tracking, FarAnglesOfAPeriodicMotionCostOneTurn) {
+  auto f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  Kinematics far, near;
+  ASSERT_TRUE(far.load(f.m).ok());
+  ASSERT_TRUE(near.load(f.m).ok());
+  // One million turns and 37 degrees: tracked step by step it would take seconds. A double
+  // carries 3.6e8 degrees to about 6e-8 degrees, which bounds the agreement (1e-6 mm here).
+  ASSERT_TRUE(far.moveTo(360e6 + 37).ok());
+  ASSERT_TRUE(near.moveTo(37).ok());
+  EXPECT_LT((far.position(f.P) - near.position(f.P)).norm(), 1e-6);
+  EXPECT_LT((far.velocity(f.P) - near.velocity(f.P)).norm(), 1e-5);
+  EXPECT_NEAR(far.crankDeg(), 360e6 + 37, 1e-6);
+  // The crank's own angle keeps counting whole turns.
+  EXPECT_NEAR(far.bodyAngle(f.crank) - near.bodyAngle(f.crank), 2 * M_PI * 1e6, 1e-6);
+  // And back, two million turns the other way.
+  ASSERT_TRUE(far.moveTo(-360e6 + 37).ok());
+  EXPECT_LT((far.position(f.P) - near.position(f.P)).norm(), 1e-6);
+}
+
+}  // namespace
+}  // namespace linkage
