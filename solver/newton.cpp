@@ -20,11 +20,17 @@ void NewtonSolver::reset(const System& sys, const std::vector<int>& activeRows) 
   rowMap_.assign(sys.nRows, -1);
   for (int i = 0; i < static_cast<int>(activeRows.size()); ++i) rowMap_[activeRows[i]] = i;
   J_.resize(n, n);
-  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  lu_.resize(n);
   phi_.resize(n);
   delta_.resize(n);
   rhs_.resize(n);
-  visited_.assign(n, 0);
+  viewsQ_.resize(0);
+}
+
+void NewtonSolver::viewsAt(const Eigen::VectorXd& q) {
+  if (viewsQ_.size() == q.size() && viewsQ_ == q) return;
+  makeViews(*sys_, q, nullptr, views_);
+  viewsQ_ = q;
 }
 
 double NewtonSolver::tolerance(const Eigen::VectorXd& q) const {
@@ -36,41 +42,16 @@ double NewtonSolver::tolerance(const Eigen::VectorXd& q) const {
 }
 
 bool NewtonSolver::factor(const Eigen::VectorXd& q) {
-  makeViews(*sys_, q, nullptr, views_);
+  viewsAt(q);
   evalJacobian(*sys_, views_, rowMap_, J_);
   const double invL = 1.0 / sys_->size;
   for (int k = 0; k < sys_->nBodies; ++k) J_.col(3 * k + 2) *= invL;
   lu_.compute(J_);
-  const auto d = lu_.matrixLU().diagonal().cwiseAbs();
-  const double hi = d.size() ? d.maxCoeff() : 1.0;
-  const double lo = d.size() ? d.minCoeff() : 1.0;
-  pivotRatio_ = hi > 0 ? lo / hi : 0;
-  return std::isfinite(pivotRatio_) && pivotRatio_ > kSingularPivot;
-}
-
-int NewtonSolver::detSign() const {
-  int sign = 1;
-  const auto& d = lu_.matrixLU();
-  for (int i = 0; i < d.rows(); ++i)
-    if (d(i, i) < 0) sign = -sign;
-  // Permutation parity: n minus the number of cycles.
-  const auto& idx = lu_.permutationP().indices();
-  std::vector<char>& seen = const_cast<std::vector<char>&>(visited_);
-  std::fill(seen.begin(), seen.end(), 0);
-  for (int i = 0; i < idx.size(); ++i) {
-    if (seen[i]) continue;
-    int len = 0;
-    for (int j = i; !seen[j]; j = idx[j]) {
-      seen[j] = 1;
-      ++len;
-    }
-    if (len % 2 == 0) sign = -sign;
-  }
-  return sign;
+  return std::isfinite(lu_.pivotRatio()) && lu_.pivotRatio() > kSingularPivot;
 }
 
 double NewtonSolver::residualNorm(const Eigen::VectorXd& q, double phi) {
-  makeViews(*sys_, q, nullptr, views_);
+  viewsAt(q);
   evalResidual(*sys_, views_, phi, rowMap_, phi_);
   return phi_.size() ? phi_.cwiseAbs().maxCoeff() : 0.0;
 }
@@ -83,7 +64,7 @@ NewtonResult NewtonSolver::solve(Eigen::VectorXd& q, double phi, const NewtonOpt
   bool haveLU = false;
   double prevStep = std::numeric_limits<double>::infinity();
   for (int it = 0; it <= opt.maxIterations; ++it) {
-    makeViews(*sys_, q, nullptr, views_);
+    viewsAt(q);
     evalResidual(*sys_, views_, phi, rowMap_, phi_);
     res.residual = phi_.size() ? phi_.cwiseAbs().maxCoeff() : 0.0;
     if (!std::isfinite(res.residual)) {
@@ -103,7 +84,8 @@ NewtonResult NewtonSolver::solve(Eigen::VectorXd& q, double phi, const NewtonOpt
       }
       haveLU = fresh = true;
     }
-    delta_ = lu_.solve(phi_);
+    delta_ = phi_;
+    lu_.solveInPlace(delta_);
     double step = 0;
     for (int k = 0; k < sys_->nBodies; ++k) {
       delta_[3 * k + 2] *= invL;
@@ -134,10 +116,11 @@ NewtonResult NewtonSolver::solve(Eigen::VectorXd& q, double phi, const NewtonOpt
 }
 
 bool NewtonSolver::correction(const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta) {
-  makeViews(*sys_, q, nullptr, views_);
+  viewsAt(q);
   evalResidual(*sys_, views_, phi, rowMap_, phi_);
   if (!factor(q)) return false;
-  delta = lu_.solve(phi_);
+  delta = phi_;
+  lu_.solveInPlace(delta);
   for (int k = 0; k < sys_->nBodies; ++k) delta[3 * k + 2] /= sys_->size;
   return delta.allFinite();
 }
@@ -149,11 +132,13 @@ bool NewtonSolver::derivatives(const Eigen::VectorXd& q, Eigen::VectorXd& dq,
   rhs_.setZero();
   if (sys_->driverRow >= 0 && rowMap_[sys_->driverRow] >= 0)
     rhs_[rowMap_[sys_->driverRow]] = sys_->size * sys_->sigma;  // -Phi_phi
-  dq = lu_.solve(rhs_);
+  dq = rhs_;
+  lu_.solveInPlace(dq);
   for (int k = 0; k < sys_->nBodies; ++k) dq[3 * k + 2] *= invL;
-  makeViews(*sys_, q, &dq, views_);
+  setVelocities(*sys_, dq, views_);
   evalGamma(*sys_, views_, rowMap_, rhs_);
-  ddq = lu_.solve(rhs_);
+  ddq = rhs_;
+  lu_.solveInPlace(ddq);
   for (int k = 0; k < sys_->nBodies; ++k) ddq[3 * k + 2] *= invL;
   return dq.allFinite() && ddq.allFinite();
 }

@@ -10,9 +10,9 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 #include <vector>
 
+#include "dense_lu.h"
 #include "system.h"
 
 namespace linkage {
@@ -45,8 +45,8 @@ class NewtonSolver {
   bool derivatives(const Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq);
 
   // Of the last factorisation: sign of det J and min/max pivot magnitude.
-  int detSign() const;
-  double pivotRatio() const { return pivotRatio_; }
+  int detSign() const { return lu_.detSign(); }
+  double pivotRatio() const { return lu_.pivotRatio(); }
 
   // One full Newton correction at q (J factored there): q_next = q - delta. False if singular.
   bool correction(const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta);
@@ -57,16 +57,16 @@ class NewtonSolver {
 
  private:
   bool factor(const Eigen::VectorXd& q);
+  // Body views at q; sin and cos are evaluated again only when q changed.
+  void viewsAt(const Eigen::VectorXd& q);
   double tolerance(const Eigen::VectorXd& q) const;
 
   const System* sys_ = nullptr;
   std::vector<int> rowMap_;
   std::vector<BodyView> views_;
   Eigen::MatrixXd J_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
-  Eigen::VectorXd phi_, delta_, rhs_;
-  std::vector<char> visited_;
-  double pivotRatio_ = 0;
+  DenseLU lu_;
+  Eigen::VectorXd phi_, delta_, rhs_, viewsQ_;
 };
 
 }  // namespace linkage

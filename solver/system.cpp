@@ -225,6 +225,13 @@ void makeViews(const System& sys, const Eigen::VectorXd& q, const Eigen::VectorX
   }
 }
 
+void setVelocities(const System& sys, const Eigen::VectorXd& v, std::vector<BodyView>& views) {
+  for (int k = 0; k < sys.nBodies; ++k) {
+    views[k + 1].v = Vec2(v[3 * k], v[3 * k + 1]);
+    views[k + 1].w = v[3 * k + 2];
+  }
+}
+
 namespace {
 
 double holdScale(const System& sys, int col) {

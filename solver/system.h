@@ -73,6 +73,9 @@ void addHold(System& sys, int col, double value);
 void makeViews(const System& sys, const Eigen::VectorXd& q, const Eigen::VectorXd* v,
                std::vector<BodyView>& views);
 
+// Sets the velocities of views made by makeViews (no sin or cos evaluated again).
+void setVelocities(const System& sys, const Eigen::VectorXd& v, std::vector<BodyView>& views);
+
 // Rows are written through `rowMap` (full row -> output row, -1 to skip), so that a solve can use
 // the independent rows only without copying. phi is the driver angle (crank angle + start).
 void evalResidual(const System& sys, const std::vector<BodyView>& views, double phi,
