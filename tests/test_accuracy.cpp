@@ -106,6 +106,59 @@ TEST(Accuracy, OffsetSliderCrankEitherDirectionBlockOrPinInSlot) {
     }
 }
 
+// Quick-return (crank and slotted lever): a block pinned to the crank pin slides in a slot of
+// a lever pivoted at O4 = (0, -d). Closed form, with theta2 the crank angle from +x:
+//   theta4 = atan2(r sin theta2 + d, r cos theta2)
+//   omega4 = w r (r + d sin theta2) / D,   D = r^2 + d^2 + 2 r d sin theta2
+//   alpha4 = w^2 r d cos theta2 (d^2 - r^2) / D^2
+TEST(Accuracy, QuickReturnSlotOnAMovingLever) {
+  const double r = 20, d = 50, rpm = 90, w = rpm * 2 * M_PI / 60, t0 = 30 * M_PI / 180;
+  for (Direction dir : {Direction::Ccw, Direction::Cw}) {
+    Mechanism m;
+    const BodyId g = m.addBody("ground", true), crank = m.addBody("crank"),
+                 block = m.addBody("block"), lever = m.addBody("lever");
+    const Vec2 O2(0, 0), O4(0, -d), A(r * std::cos(t0), r * std::sin(t0));
+    const Vec2 u = (A - O4).normalized();
+    const PointId gO2 = m.addPoint(g, "O2", O2), gO4 = m.addPoint(g, "O4", O4);
+    const PointId cO2 = m.addPoint(crank, "O2", O2), cA = m.addPoint(crank, "A", A);
+    const PointId bA = m.addPoint(block, "A", A);
+    const PointId lO4 = m.addPoint(lever, "O4", O4), tip = m.addPoint(lever, "T", O4 + 90 * u);
+    const SlotId slot = m.addSlot(lever, "slot", O4, O4 + 90 * u);
+    const JointId drive = m.addPin(gO2, cO2);
+    m.addPin(cA, bA);
+    m.addSlider(bA, slot);
+    m.addPin(lO4, gO4);
+    m.driver = Driver{drive, rpm, dir, 0, ""};
+    Kinematics k;
+    ASSERT_TRUE(k.load(m).ok());
+    const double s = dir == Direction::Ccw ? 1 : -1;
+    const double th40 = std::atan2(A.y() + d, A.x());
+    Series lev, tipY;
+    for (int i = 0; i <= 360; i += 2) {
+      ASSERT_TRUE(k.moveTo(i).ok());
+      const double th2 = t0 + s * i * M_PI / 180;
+      const double D = r * r + d * d + 2 * r * d * std::sin(th2);
+      const double th4 = std::atan2(r * std::sin(th2) + d, r * std::cos(th2));
+      const double w4 = s * w * r * (r + d * std::sin(th2)) / D;
+      const double a4 = w * w * r * d * std::cos(th2) * (d * d - r * r) / (D * D);
+      // Unwrap the closed form's angle onto the lever's continuous one (it swings, < pi).
+      double rel = th4 - th40;
+      rel -= 2 * M_PI * std::round((rel - k.bodyAngle(lever)) / (2 * M_PI));
+      lev.add(k.bodyAngle(lever), k.bodyOmega(lever), k.bodyAlpha(lever), rel, w4, a4);
+      // The tip, 90 mm from O4 along the lever: y, vy, ay from theta4 and its derivatives.
+      tipY.add(k.position(tip).y(), k.velocity(tip).y(), k.acceleration(tip).y(),
+               -d + 90 * std::sin(th4), 90 * std::cos(th4) * w4,
+               90 * (std::cos(th4) * a4 - std::sin(th4) * w4 * w4));
+      // The block keeps the lever's angle and stays on the crank pin.
+      EXPECT_NEAR(k.bodyAngle(block), k.bodyAngle(lever), 1e-12);
+      EXPECT_LT((k.position(bA) - k.position(cA)).norm(), 1e-10);
+    }
+    // The closed form is evaluated in double here: 1e-12 relative is its own rounding.
+    lev.expectWithin(1e-11, 1e-9, "quick-return lever");
+    tipY.expectWithin(1e-9, 1e-9, "quick-return lever tip");
+  }
+}
+
 linkref::FourBarParams<Q> params(double d, double r2, double r3, double r4, double crankDeg,
                                  bool open, double px, double py, Direction dir, double rpm) {
   linkref::FourBarParams<Q> p;
