@@ -62,6 +62,7 @@ NewtonResult NewtonSolver::solve(Eigen::VectorXd& q, double phi, const NewtonOpt
   const double invL = 1.0 / L;
   bool fresh = false;  // is the factorisation from the current iterate?
   bool haveLU = false;
+  bool polished = false;
   double prevStep = std::numeric_limits<double>::infinity();
   for (int it = 0; it <= opt.maxIterations; ++it) {
     viewsAt(q);
@@ -71,10 +72,14 @@ NewtonResult NewtonSolver::solve(Eigen::VectorXd& q, double phi, const NewtonOpt
       res.failure = NewtonFailure::Diverged;
       return res;
     }
-    if (res.residual <= tolerance(q)) {
+    const double tol = tolerance(q);
+    // Within tolerance but above rounding (a few eps of the coordinates): one more chord
+    // correction, nearly free with the factorisation at hand, takes it to rounding level.
+    if (res.residual <= tol && (polished || !haveLU || res.residual <= 0.05 * tol)) {
       res.converged = true;
       return res;
     }
+    if (res.residual <= tol) polished = true;
     if (it == opt.maxIterations) break;
     if (!haveLU) {
       ++res.factorizations;

@@ -1,0 +1,410 @@
+// Reading mechanism files. Two passes: json_tree builds the JSON tree (refusing duplicate keys,
+// overflowing numbers and excessive nesting by place), then a validating pass builds the Mechanism
+// and stops at the first problem.
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "io/json_tree.h"
+#include "io/model_file.h"
+
+namespace linkage {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string literal(std::string_view s) {
+  return json_tree::literal<Json>(s);
+}
+std::string member(const std::string& path, const std::string& key) {
+  return json_tree::member<Json>(path, key);
+}
+
+// Written the way the messages spell the expected shape: [x, y], [[x0, y0], [x1, y1]].
+std::string inlineArray(const Json& v, int depth) {
+  std::string text = "[";
+  for (size_t i = 0; i < v.size() && text.size() <= 60; ++i) {
+    const Json& e = v[i];
+    text += i > 0 ? ", " : "";
+    if (e.is_array())
+      text += depth < 2 ? inlineArray(e, depth + 1) : "[...]";
+    else if (e.is_object())
+      text += "{...}";
+    else
+      text += e.dump(-1, ' ', false, Json::error_handler_t::replace);
+  }
+  return text + "]";
+}
+
+// What was found instead: scalars as written, containers by kind.
+std::string describe(const Json& v) {
+  switch (v.type()) {
+    case Json::value_t::string:
+      return literal(v.get_ref<const std::string&>());
+    case Json::value_t::object:
+      return v.empty() ? "an empty object" : "an object";
+    case Json::value_t::array: {
+      if (v.empty()) return "an empty array";
+      std::string text = inlineArray(v, 0);
+      return text.size() <= 60 ? text : "an array of " + std::to_string(v.size()) + " elements";
+    }
+    default:
+      return v.dump();
+  }
+}
+
+struct Refusal {
+  std::string message;
+};
+
+[[noreturn]] void refuse(const std::string& path, const std::string& what) {
+  throw Refusal{(path.empty() ? std::string("top level") : path) + ": " + what};
+}
+
+std::string element(const std::string& path, size_t i) {
+  return path + "[" + std::to_string(i) + "]";
+}
+
+const Json* find(const Json& obj, const char* key) {
+  auto it = obj.find(key);
+  return it == obj.end() ? nullptr : &*it;
+}
+
+const Json& require(const Json& obj, const char* key, const std::string& path) {
+  const Json* v = find(obj, key);
+  if (!v) refuse(path, std::string("missing required field ") + literal(key));
+  return *v;
+}
+
+void requireObject(const Json& v, const std::string& path) {
+  if (!v.is_object()) refuse(path, "expected an object {...}, got " + describe(v));
+}
+
+const std::string& getString(const Json& v, const std::string& path) {
+  if (!v.is_string()) refuse(path, "expected a string, got " + describe(v));
+  return v.get_ref<const std::string&>();
+}
+
+double getNumber(const Json& v, const std::string& path, const char* expected = "a number") {
+  // The reader refused non-finite values already; this guards hand-made trees.
+  if (!v.is_number() || !std::isfinite(v.get<double>()))
+    refuse(path, std::string("expected ") + expected + ", got " + describe(v));
+  return v.get<double>();
+}
+
+// Integers must be written as such: 2.0 or 2e0 is refused rather than silently truncated.
+long long getInteger(const Json& v, const std::string& path, const char* expected) {
+  if (v.is_number_integer() && !v.is_number_unsigned()) return v.get<long long>();
+  if (v.is_number_unsigned()) {
+    auto u = v.get<unsigned long long>();
+    return u > static_cast<unsigned long long>(LLONG_MAX) ? LLONG_MAX : static_cast<long long>(u);
+  }
+  refuse(path, std::string("expected ") + expected + ", got " + describe(v));
+}
+
+std::optional<Vec2> asPair(const Json& v) {
+  if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number()) return {};
+  Vec2 p(v[0].get<double>(), v[1].get<double>());
+  if (!p.allFinite()) return {};
+  return p;
+}
+
+// Keys outside `known` in their original order, as compact JSON object text; "" when none.
+Extras unknownFields(const Json& obj, std::initializer_list<const char*> known) {
+  Json extras = Json::object();
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    bool isKnown = false;
+    for (const char* k : known) isKnown = isKnown || it.key() == k;
+    if (!isKnown) json_tree::appendMember(extras, it.key(), it.value());
+  }
+  return extras.empty() ? Extras() : extras.dump();
+}
+
+// References are "body.point" and names are checked to have no '.', so the first dot splits.
+void checkName(const std::string& name, const std::string& path, const char* kind) {
+  if (name.empty()) refuse(path, std::string("a ") + kind + " name may not be empty");
+  if (name.find('.') != std::string::npos)
+    refuse(path, std::string(kind) + " names may not contain '.' (references are \"body." +
+                     (std::strcmp(kind, "slot") == 0 ? "slot" : "point") + "\"): " + literal(name));
+}
+
+class Reader {
+ public:
+  Mechanism read(const Json& root) {
+    if (!root.is_object()) refuse("", "expected a JSON object {...}, got " + describe(root));
+    readHeader(root);
+    readBodies(require(root, "bodies", ""));
+    const Json& joints = require(root, "joints", "");
+    if (!joints.is_array())
+      refuse("joints", "expected an array of joints, got " + describe(joints));
+    for (size_t i = 0; i < joints.size(); ++i) readJoint(joints[i], element("joints", i));
+    if (const Json* d = find(root, "driver")) readDriver(*d);
+    if (const Json* o = find(root, "outputs")) readOutputs(*o);
+    m_.extras = unknownFields(
+        root, {"format", "version", "name", "units", "bodies", "joints", "driver", "outputs"});
+    return std::move(m_);
+  }
+
+ private:
+  struct BodyNames {
+    BodyId id;
+    std::string name;
+    std::unordered_map<std::string, PointId> points;
+    std::unordered_map<std::string, SlotId> slots;
+  };
+  Mechanism m_;
+  std::unordered_map<std::string, BodyNames> bodies_;
+
+  void readHeader(const Json& root) {
+    const Json& format = require(root, "format", "");
+    if (!format.is_string() || format.get_ref<const std::string&>() != "linkage")
+      refuse("format", "expected \"linkage\", got " + describe(format));
+    // The version is checked before anything else can fail, so a newer file says so.
+    const Json& version = require(root, "version", "");
+    long long v = getInteger(version, "version", "the integer 1");
+    if (v > 1)
+      refuse("version",
+             "this file is version " + version.dump() +
+                 ", newer than this program reads (version 1); a newer program wrote it");
+    if (v < 1) refuse("version", "expected the integer 1, got " + version.dump());
+    if (const Json* name = find(root, "name")) m_.name = getString(*name, "name");
+    if (const Json* units = find(root, "units")) {
+      requireObject(*units, "units");
+      if (const Json* length = find(*units, "length")) {
+        if (!length->is_string() || length->get_ref<const std::string&>() != "mm")
+          refuse("units.length",
+                 "expected \"mm\" (the only length unit), got " + describe(*length));
+      }
+      m_.unitsExtras = unknownFields(*units, {"length"});
+    }
+  }
+
+  void readBodies(const Json& bodies) {
+    if (!bodies.is_array() || bodies.empty())
+      refuse("bodies", "expected a non-empty array of bodies, got " + describe(bodies));
+    std::unordered_map<long long, std::string> numbers;
+    std::vector<size_t> grounds;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      const std::string path = element("bodies", i);
+      const Json& b = bodies[i];
+      requireObject(b, path);
+      const std::string& name = getString(require(b, "name", path), path + ".name");
+      checkName(name, path + ".name", "body");
+      if (bodies_.count(name)) refuse(path + ".name", "two bodies are named " + literal(name));
+      BodyId id = m_.addBody(name);
+      Body& body = m_.bodies.back();
+      BodyNames& names = bodies_[name];
+      names.id = id;
+      names.name = name;
+      if (const Json* g = find(b, "ground")) {
+        if (!g->is_boolean())
+          refuse(path + ".ground", "expected true or false, got " + describe(*g));
+        body.ground = g->get<bool>();
+        if (body.ground) grounds.push_back(i);
+      }
+      if (const Json* n = find(b, "number")) {
+        long long num = getInteger(*n, path + ".number", "an integer >= 1");
+        if (num < 1 || num > INT_MAX)
+          refuse(path + ".number", "expected an integer >= 1, got " + n->dump());
+        auto [it, fresh] = numbers.emplace(num, name);
+        if (!fresh)
+          refuse(path + ".number",
+                 n->dump() + " is already the number of body " + literal(it->second));
+        body.number = static_cast<int>(num);
+      }
+      body.extras = unknownFields(b, {"name", "ground", "number", "points", "slots"});
+
+      const Json& points = require(b, "points", path);
+      requireObject(points, path + ".points");
+      for (auto it = points.begin(); it != points.end(); ++it) {
+        const std::string ppath = member(path + ".points", it.key());
+        checkName(it.key(), ppath, "point");
+        std::optional<Vec2> p = asPair(it.value());
+        if (!p)
+          refuse(ppath, "expected [x, y] with two finite numbers, got " + describe(it.value()));
+        names.points[it.key()] = m_.addPoint(id, it.key(), *p);
+      }
+      if (const Json* slots = find(b, "slots")) {
+        requireObject(*slots, path + ".slots");
+        for (auto it = slots->begin(); it != slots->end(); ++it) {
+          const std::string spath = member(path + ".slots", it.key());
+          checkName(it.key(), spath, "slot");
+          const Json& s = it.value();
+          std::optional<Vec2> p0, p1;
+          if (s.is_array() && s.size() == 2) p0 = asPair(s[0]), p1 = asPair(s[1]);
+          if (!p0 || !p1)
+            refuse(spath, "expected [[x0, y0], [x1, y1]] with finite numbers, got " + describe(s));
+          // Relative to the coordinates' size: two ends that differ only by rounding are one point.
+          double length = std::hypot((*p1 - *p0).x(), (*p1 - *p0).y());
+          double scale = std::max(p0->cwiseAbs().maxCoeff(), p1->cwiseAbs().maxCoeff());
+          if (length == 0 || length < 1e-12 * scale) refuse(spath, "zero-length slot");
+          names.slots[it.key()] = m_.addSlot(id, it.key(), *p0, *p1);
+        }
+      }
+    }
+    if (grounds.empty()) refuse("bodies", "no body has \"ground\": true; exactly one must");
+    if (grounds.size() > 1) {
+      std::string list;
+      for (size_t k = 0; k < grounds.size(); ++k) {
+        if (k > 0) list += k + 1 == grounds.size() ? " and " : ", ";
+        list += literal(m_.bodies[grounds[k]].name) + " (" + element("bodies", grounds[k]) + ")";
+      }
+      refuse("bodies", "exactly one body may have \"ground\": true, but " + list + " do");
+    }
+  }
+
+  // "body.name" to the body and the name after the dot.
+  std::pair<const BodyNames*, std::string> splitReference(const Json& v, const std::string& path,
+                                                          const char* what) {
+    const std::string& ref = getString(v, path);
+    size_t dot = ref.find('.');
+    if (dot == std::string::npos || dot == 0 || dot + 1 == ref.size())
+      refuse(path, std::string("expected \"body.") + what + "\", got " + literal(ref));
+    std::string bodyName = ref.substr(0, dot);
+    auto it = bodies_.find(bodyName);
+    if (it == bodies_.end()) refuse(path, "no body " + literal(bodyName));
+    return {&it->second, ref.substr(dot + 1)};
+  }
+
+  // The body comes back too: Mechanism's own lookups are linear, too slow for large files.
+  std::pair<PointId, const BodyNames*> readPointRef(const Json& v, const std::string& path) {
+    auto [body, name] = splitReference(v, path, "point");
+    auto it = body->points.find(name);
+    if (it == body->points.end())
+      refuse(path, "no point " + literal(name) + " on body " + literal(body->name));
+    return {it->second, body};
+  }
+
+  std::pair<SlotId, const BodyNames*> readSlotRef(const Json& v, const std::string& path) {
+    auto [body, name] = splitReference(v, path, "slot");
+    auto it = body->slots.find(name);
+    if (it == body->slots.end())
+      refuse(path, "no slot " + literal(name) + " on body " + literal(body->name));
+    return {it->second, body};
+  }
+
+  void readJoint(const Json& j, const std::string& path) {
+    requireObject(j, path);
+    const Json& type = require(j, "type", path);
+    bool pin = type == "pin", slider = type == "slider", pinInSlot = type == "pin-in-slot";
+    if (!pin && !slider && !pinInSlot)
+      refuse(path + ".type",
+             "expected \"pin\", \"slider\" or \"pin-in-slot\", got " + describe(type));
+    auto [a, bodyA] = readPointRef(require(j, "a", path), path + ".a");
+    const BodyNames* other = nullptr;
+    if (pin) {
+      if (find(j, "slot"))
+        refuse(path + ".slot", "a pin joins points \"a\" and \"b\"; it has no slot");
+      auto [b, bodyB] = readPointRef(require(j, "b", path), path + ".b");
+      m_.addPin(a, b);
+      other = bodyB;
+    } else {
+      if (find(j, "b"))
+        refuse(path + ".b", std::string("a ") + type.get<std::string>() +
+                                " joins point \"a\" to a \"slot\"; it has no point \"b\"");
+      auto [s, bodyS] = readSlotRef(require(j, "slot", path), path + ".slot");
+      if (slider)
+        m_.addSlider(a, s);
+      else
+        m_.addPinInSlot(a, s);
+      other = bodyS;
+    }
+    if (bodyA == other) refuse(path, "both sides are on body " + literal(bodyA->name));
+    m_.joints.back().extras = unknownFields(j, {"type", "a", "b", "slot"});
+  }
+
+  void readDriver(const Json& d) {
+    requireObject(d, "driver");
+    Driver driver;
+    const Json& index = require(d, "joint", "driver");
+    long long i = getInteger(index, "driver.joint", "a joint index (an integer)");
+    if (i < 0 || static_cast<unsigned long long>(i) >= m_.joints.size()) {
+      refuse("driver.joint", index.dump() + " is not a joint index (" +
+                                 (m_.joints.empty() ? std::string("there are no joints")
+                                                    : "joints are numbered 0 to " +
+                                                          std::to_string(m_.joints.size() - 1)) +
+                                 ")");
+    }
+    const Joint& joint = m_.joints[static_cast<size_t>(i)];
+    if (joint.type != JointType::Pin)
+      refuse("driver.joint", element("joints", static_cast<size_t>(i)) + " is a " +
+                                 toString(joint.type) + ", a driver needs a pin");
+    driver.joint = joint.id;
+    const Json& rpm = require(d, "rpm", "driver");
+    driver.rpm = getNumber(rpm, "driver.rpm", "a number > 0");
+    if (!(driver.rpm > 0)) refuse("driver.rpm", "expected a number > 0, got " + rpm.dump());
+    const Json& dir = require(d, "direction", "driver");
+    if (dir != "cw" && dir != "ccw")
+      refuse("driver.direction", "expected \"cw\" or \"ccw\", got " + describe(dir));
+    driver.direction = dir == "cw" ? Direction::Cw : Direction::Ccw;
+    if (const Json* start = find(d, "start_deg"))
+      driver.startDeg = getNumber(*start, "driver.start_deg");
+    driver.extras = unknownFields(d, {"joint", "rpm", "direction", "start_deg"});
+    m_.driver = std::move(driver);
+  }
+
+  void readOutputs(const Json& o) {
+    requireObject(o, "outputs");
+    if (const Json* points = find(o, "points")) {
+      if (!points->is_array())
+        refuse("outputs.points", "expected an array of \"body.point\", got " + describe(*points));
+      std::unordered_set<std::uint32_t> listed;
+      for (size_t i = 0; i < points->size(); ++i) {
+        const std::string path = element("outputs.points", i);
+        PointId p = readPointRef((*points)[i], path).first;
+        if (!listed.insert(p.value).second)
+          refuse(path, literal((*points)[i].get<std::string>()) + " is listed twice");
+        m_.outputs.push_back(p);
+      }
+    }
+    m_.outputsExtras = unknownFields(o, {"points"});
+  }
+};
+
+}  // namespace
+
+LoadResult parseMechanism(std::string_view jsonText) {
+  Json root;
+  std::string error;
+  if (!json_tree::parse(jsonText, root, error)) return {std::nullopt, error};
+  try {
+    return {Reader().read(root), {}};
+  } catch (const Refusal& r) {
+    return {std::nullopt, r.message};
+  } catch (const std::exception& e) {
+    // A bug here, not a bad file; say so rather than blame the file.
+    return {std::nullopt, std::string("internal error while reading: ") + e.what()};
+  }
+}
+
+LoadResult loadMechanismFile(const std::string& path) {
+  constexpr long kMaxBytes = 64L << 20;  // mechanism files are kilobytes; refuse a mistaken pick
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return {std::nullopt, path + ": cannot open: " + std::strerror(errno)};
+  std::string text;
+  char buf[65536];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) {
+    text.append(buf, n);
+    if (static_cast<long>(text.size()) > kMaxBytes) {
+      std::fclose(f);
+      return {std::nullopt, path + ": too large for a mechanism file (over 64 MiB)"};
+    }
+  }
+  int err = std::ferror(f) ? errno : 0;
+  std::fclose(f);
+  if (err) return {std::nullopt, path + ": cannot read: " + std::strerror(err)};
+  LoadResult r = parseMechanism(text);
+  if (!r.mechanism) r.error = path + ": " + r.error;
+  return r;
+}
+
+}  // namespace linkage

@@ -1,0 +1,311 @@
+// Writing mechanism files, and comparing mechanisms the way a file sees them.
+#include <charconv>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <unordered_map>
+
+#include "io/json_tree.h"
+#include "io/model_file.h"
+
+namespace linkage {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Whole numbers are written without a fraction ("10", not "10.0") and -0 as 0; the rest in
+// nlohmann's shortest form that reads back to the same double.
+Json number(double v) {
+  if (v == 0) return 0;
+  if (std::trunc(v) == v && std::fabs(v) < 9007199254740992.0) return static_cast<std::int64_t>(v);
+  return v;
+}
+
+Json pair(const Vec2& p) {
+  return Json::array({number(p.x()), number(p.y())});
+}
+
+// Extras as a JSON object; an empty object when there are none, or when the text is not an object
+// the reader would accept (as can happen only when a program set it by hand).
+Json parseExtras(const Extras& text) {
+  Json parsed;
+  std::string error;
+  if (text.empty() || !json_tree::parse(text, parsed, error) || !parsed.is_object())
+    return Json::object();
+  return parsed;
+}
+
+// A key the reader would take for a known field must not come back from Extras.
+void appendExtras(Json& obj, const Extras& extras, std::initializer_list<const char*> known) {
+  Json e = parseExtras(extras);
+  for (auto it = e.begin(); it != e.end(); ++it) {
+    bool isKnown = false;
+    for (const char* k : known) isKnown = isKnown || it.key() == k;
+    if (!isKnown) json_tree::appendMember(obj, it.key(), it.value());
+  }
+}
+
+std::string scalar(const Json& v) {
+  return v.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+// Short arrays of scalars or of such arrays ([x, y], [[x0, y0], [x1, y1]]) stay on one line.
+bool inlineText(const Json& v, std::string& out) {
+  std::string text = "[";
+  for (size_t i = 0; i < v.size(); ++i) {
+    if (text.size() > 80) return false;
+    if (i > 0) text += ", ";
+    const Json& e = v[i];
+    if (e.is_array()) {
+      text += "[";
+      for (size_t k = 0; k < e.size(); ++k) {
+        if (e[k].is_structured()) return false;
+        text += (k > 0 ? ", " : "") + scalar(e[k]);
+      }
+      text += "]";
+    } else if (e.is_object()) {
+      return false;
+    } else {
+      text += scalar(e);
+    }
+  }
+  text += "]";
+  if (text.size() > 80) return false;
+  out += text;
+  return true;
+}
+
+void emit(const Json& v, size_t indent, std::string& out) {
+  const std::string pad(indent + 2, ' ');
+  if (v.is_object()) {
+    if (v.empty()) {
+      out += "{}";
+      return;
+    }
+    out += "{\n";
+    size_t i = 0;
+    for (auto it = v.begin(); it != v.end(); ++it, ++i) {
+      out += pad + scalar(Json(it.key())) + ": ";
+      emit(it.value(), indent + 2, out);
+      out += i + 1 < v.size() ? ",\n" : "\n";
+    }
+    out += std::string(indent, ' ') + "}";
+  } else if (v.is_array()) {
+    if (v.empty()) {
+      out += "[]";
+      return;
+    }
+    if (inlineText(v, out)) return;
+    out += "[\n";
+    for (size_t i = 0; i < v.size(); ++i) {
+      out += pad;
+      emit(v[i], indent + 2, out);
+      out += i + 1 < v.size() ? ",\n" : "\n";
+    }
+    out += std::string(indent, ' ') + "]";
+  } else {
+    out += scalar(v);
+  }
+}
+
+struct BodyContents {
+  std::vector<const Point*> points;
+  std::vector<const Slot*> slots;
+};
+
+Json bodyJson(const Body& b, const BodyContents& contents) {
+  Json j = Json::object();
+  j["name"] = b.name;
+  if (b.ground) j["ground"] = true;
+  if (b.number) j["number"] = *b.number;
+  Json points = Json::object();
+  for (const Point* p : contents.points) json_tree::appendMember(points, p->name, pair(p->pos));
+  j["points"] = std::move(points);
+  Json slots = Json::object();
+  for (const Slot* s : contents.slots)
+    json_tree::appendMember(slots, s->name, Json::array({pair(s->p0), pair(s->p1)}));
+  if (!slots.empty()) j["slots"] = std::move(slots);
+  appendExtras(j, b.extras, {"name", "ground", "number", "points", "slots"});
+  return j;
+}
+
+// "body.name" for every point and slot at once: Mechanism's own lookups are linear.
+struct Labels {
+  std::unordered_map<std::uint32_t, std::string> points, slots;
+  explicit Labels(const Mechanism& m) {
+    std::unordered_map<std::uint32_t, const std::string*> bodyNames;
+    for (const Body& b : m.bodies) bodyNames[b.id.value] = &b.name;
+    auto label = [&](BodyId b, const std::string& name) {
+      auto it = bodyNames.find(b.value);
+      return (it == bodyNames.end() ? std::string("?") : *it->second) + "." + name;
+    };
+    for (const Point& p : m.points) points[p.id.value] = label(p.body, p.name);
+    for (const Slot& s : m.slots) slots[s.id.value] = label(s.body, s.name);
+  }
+  // Dangling ids are written as "?" (as Mechanism::pointLabel does); such a file will not load.
+  static std::string of(const std::unordered_map<std::uint32_t, std::string>& map,
+                        std::uint32_t id) {
+    auto it = map.find(id);
+    return it == map.end() ? "?" : it->second;
+  }
+};
+
+Json jointJson(const Labels& labels, const Joint& jt) {
+  Json j = Json::object();
+  j["type"] = toString(jt.type);
+  j["a"] = Labels::of(labels.points, jt.a.value);
+  if (jt.type == JointType::Pin)
+    j["b"] = Labels::of(labels.points, jt.b.value);
+  else
+    j["slot"] = Labels::of(labels.slots, jt.slot.value);
+  appendExtras(j, jt.extras, {"type", "a", "b", "slot"});
+  return j;
+}
+
+}  // namespace
+
+std::string serializeMechanism(const Mechanism& m) {
+  Json doc = Json::object();
+  doc["format"] = "linkage";
+  doc["version"] = 1;
+  if (!m.name.empty()) doc["name"] = m.name;
+  Json units = Json::object();
+  units["length"] = "mm";
+  appendExtras(units, m.unitsExtras, {"length"});
+  doc["units"] = std::move(units);
+  std::unordered_map<std::uint32_t, BodyContents> contents;
+  for (const Point& p : m.points) contents[p.body.value].points.push_back(&p);
+  for (const Slot& s : m.slots) contents[s.body.value].slots.push_back(&s);
+  Json bodies = Json::array();
+  for (const Body& b : m.bodies) bodies.push_back(bodyJson(b, contents[b.id.value]));
+  doc["bodies"] = std::move(bodies);
+  const Labels labels(m);
+  Json joints = Json::array();
+  for (const Joint& j : m.joints) joints.push_back(jointJson(labels, j));
+  doc["joints"] = std::move(joints);
+  if (m.driver) {
+    const Driver& d = *m.driver;
+    Json driver = Json::object();
+    driver["joint"] = m.jointIndex(d.joint);
+    driver["rpm"] = number(d.rpm);
+    driver["direction"] = d.direction == Direction::Cw ? "cw" : "ccw";
+    if (d.startDeg != 0) driver["start_deg"] = number(d.startDeg);
+    appendExtras(driver, d.extras, {"joint", "rpm", "direction", "start_deg"});
+    doc["driver"] = std::move(driver);
+  }
+  Json outputs = Json::object();
+  Json points = Json::array();
+  for (PointId p : m.outputs) points.push_back(Labels::of(labels.points, p.value));
+  outputs["points"] = std::move(points);
+  appendExtras(outputs, m.outputsExtras, {"points"});
+  if (!m.outputs.empty() || outputs.size() > 1) doc["outputs"] = std::move(outputs);
+  appendExtras(doc, m.extras,
+               {"format", "version", "name", "units", "bodies", "joints", "driver", "outputs"});
+  std::string out;
+  emit(doc, 0, out);
+  out += "\n";
+  return out;
+}
+
+WriteResult saveMechanismFile(const Mechanism& m, const std::string& path) {
+  return writeFileAtomically(path, serializeMechanism(m));
+}
+
+namespace {
+
+std::string shortest(double v) {
+  char buf[64];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, end) : "?";
+}
+
+std::string compareExtras(const Extras& a, const Extras& b, const std::string& where) {
+  if (parseExtras(a) == parseExtras(b)) return {};
+  return where + ": unknown fields differ: " + (a.empty() ? "{}" : a) + " vs " +
+         (b.empty() ? "{}" : b);
+}
+
+std::string compareVec(const Vec2& a, const Vec2& b, const std::string& where) {
+  if (a.x() == b.x() && a.y() == b.y()) return {};
+  return where + ": [" + shortest(a.x()) + ", " + shortest(a.y()) + "] vs [" + shortest(b.x()) +
+         ", " + shortest(b.y()) + "]";
+}
+
+template <class T>
+std::vector<const T*> ofBody(const std::vector<T>& all, BodyId body) {
+  std::vector<const T*> out;
+  for (const T& e : all)
+    if (e.body == body) out.push_back(&e);
+  return out;
+}
+
+std::string compareBody(const Mechanism& ma, const Body& a, const Mechanism& mb, const Body& b,
+                        const std::string& where) {
+  if (a.name != b.name) return where + ".name: \"" + a.name + "\" vs \"" + b.name + "\"";
+  if (a.ground != b.ground) return where + ".ground differs";
+  if (a.number != b.number) return where + ".number differs";
+  if (auto d = compareExtras(a.extras, b.extras, where); !d.empty()) return d;
+  auto pa = ofBody(ma.points, a.id), pb = ofBody(mb.points, b.id);
+  if (pa.size() != pb.size()) return where + ".points: different number of points";
+  for (size_t i = 0; i < pa.size(); ++i) {
+    std::string w = where + ".points[" + std::to_string(i) + "]";
+    if (pa[i]->name != pb[i]->name)
+      return w + ": \"" + pa[i]->name + "\" vs \"" + pb[i]->name + "\"";
+    if (auto d = compareVec(pa[i]->pos, pb[i]->pos, w); !d.empty()) return d;
+  }
+  auto sa = ofBody(ma.slots, a.id), sb = ofBody(mb.slots, b.id);
+  if (sa.size() != sb.size()) return where + ".slots: different number of slots";
+  for (size_t i = 0; i < sa.size(); ++i) {
+    std::string w = where + ".slots[" + std::to_string(i) + "]";
+    if (sa[i]->name != sb[i]->name)
+      return w + ": \"" + sa[i]->name + "\" vs \"" + sb[i]->name + "\"";
+    if (auto d = compareVec(sa[i]->p0, sb[i]->p0, w + ".p0"); !d.empty()) return d;
+    if (auto d = compareVec(sa[i]->p1, sb[i]->p1, w + ".p1"); !d.empty()) return d;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string mechanismDifference(const Mechanism& a, const Mechanism& b) {
+  if (a.name != b.name) return "name: \"" + a.name + "\" vs \"" + b.name + "\"";
+  if (auto d = compareExtras(a.extras, b.extras, "top level"); !d.empty()) return d;
+  if (auto d = compareExtras(a.unitsExtras, b.unitsExtras, "units"); !d.empty()) return d;
+  if (a.bodies.size() != b.bodies.size())
+    return "bodies: " + std::to_string(a.bodies.size()) + " vs " + std::to_string(b.bodies.size());
+  for (size_t i = 0; i < a.bodies.size(); ++i) {
+    auto d = compareBody(a, a.bodies[i], b, b.bodies[i], "bodies[" + std::to_string(i) + "]");
+    if (!d.empty()) return d;
+  }
+  if (a.joints.size() != b.joints.size())
+    return "joints: " + std::to_string(a.joints.size()) + " vs " + std::to_string(b.joints.size());
+  for (size_t i = 0; i < a.joints.size(); ++i) {
+    const Joint &ja = a.joints[i], &jb = b.joints[i];
+    std::string w = "joints[" + std::to_string(i) + "]";
+    if (ja.type != jb.type) return w + ".type differs";
+    if (a.pointLabel(ja.a) != b.pointLabel(jb.a)) return w + ".a differs";
+    if (ja.type == JointType::Pin && a.pointLabel(ja.b) != b.pointLabel(jb.b))
+      return w + ".b differs";
+    if (ja.type != JointType::Pin && a.slotLabel(ja.slot) != b.slotLabel(jb.slot))
+      return w + ".slot differs";
+    if (auto d = compareExtras(ja.extras, jb.extras, w); !d.empty()) return d;
+  }
+  if (a.driver.has_value() != b.driver.has_value()) return "driver: present in only one";
+  if (a.driver) {
+    const Driver &da = *a.driver, &db = *b.driver;
+    if (a.jointIndex(da.joint) != b.jointIndex(db.joint)) return "driver.joint differs";
+    if (da.rpm != db.rpm) return "driver.rpm: " + shortest(da.rpm) + " vs " + shortest(db.rpm);
+    if (da.direction != db.direction) return "driver.direction differs";
+    if (da.startDeg != db.startDeg)
+      return "driver.start_deg: " + shortest(da.startDeg) + " vs " + shortest(db.startDeg);
+    if (auto d = compareExtras(da.extras, db.extras, "driver"); !d.empty()) return d;
+  }
+  if (a.outputs.size() != b.outputs.size()) return "outputs.points: different lengths";
+  for (size_t i = 0; i < a.outputs.size(); ++i)
+    if (a.pointLabel(a.outputs[i]) != b.pointLabel(b.outputs[i]))
+      return "outputs.points[" + std::to_string(i) + "] differs";
+  if (auto d = compareExtras(a.outputsExtras, b.outputsExtras, "outputs"); !d.empty()) return d;
+  return {};
+}
+
+}  // namespace linkage
