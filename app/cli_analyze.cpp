@@ -75,21 +75,13 @@ int analyze(int argc, char** argv) {
       steps = *n;
       sweepOptions = true;
     } else if (a == "--revs") {
-      std::optional<double> r = number(a, v);
+      std::optional<double> r = positiveNumber(a, v);
       if (!r) return kBadInput;
-      if (!(*r > 0)) {
-        error("--revs: must be positive");
-        return kBadInput;
-      }
       revs = *r;
       sweepOptions = true;
     } else if (a == "--rpm") {
-      std::optional<double> r = number(a, v);
+      std::optional<double> r = positiveNumber(a, v);
       if (!r) return kBadInput;
-      if (!(*r > 0)) {
-        error("--rpm: must be positive");
-        return kBadInput;
-      }
       rpm = *r;
     } else if (a == "--angle") {
       angle = number(a, v);

@@ -38,6 +38,15 @@ std::optional<double> number(const std::string& option, const std::string& text)
   return v;
 }
 
+std::optional<double> positiveNumber(const std::string& option, const std::string& text) {
+  std::optional<double> v = number(option, text);
+  if (v && !(*v > 0)) {
+    error(option + ": must be positive, got " + text);
+    return std::nullopt;
+  }
+  return v;
+}
+
 std::optional<long long> wholeNumber(const std::string& option, const std::string& text) {
   long long v = 0;
   const char* end = text.data() + text.size();

@@ -25,6 +25,7 @@ void note(const std::string& message);
 
 // Strict, locale-independent number parsing for options; prints the error itself.
 std::optional<double> number(const std::string& option, const std::string& text);
+std::optional<double> positiveNumber(const std::string& option, const std::string& text);
 std::optional<long long> wholeNumber(const std::string& option, const std::string& text);
 
 // Loads MODEL (a path or an example name); prints the error and returns nullopt on failure.
