@@ -109,18 +109,18 @@ Status assemble(const Mechanism& m, const System& sys, const Structure& st, Newt
   const double L = sys.size;
   bool closed = false;
   for (int it = 0; it < 100; ++it) {
-    const double r = newton.residualNorm(q, phi);
+    const double r = newton.residualNorm(sys, q, phi);
     if (r <= 1e-9 * L) {
       closed = true;
       break;
     }
-    if (!newton.correction(q, phi, delta)) break;
+    if (!newton.correction(sys, q, phi, delta)) break;
     // Damped: halve the step until the residual falls, so that a rough drawing is pulled in
     // gradually instead of thrown to another branch by a full step.
     double t = 1;
     for (; t > 1.0 / 4096; t /= 2) {
       trial = q - t * delta;
-      if (newton.residualNorm(trial, phi) < (1 - 0.25 * t) * r) break;
+      if (newton.residualNorm(sys, trial, phi) < (1 - 0.25 * t) * r) break;
     }
     if (t <= 1.0 / 4096) break;
     q = trial;
@@ -129,7 +129,7 @@ Status assemble(const Mechanism& m, const System& sys, const Structure& st, Newt
   if (closed) {
     NewtonOptions polish;
     polish.maxFirstStep = 1e300;
-    closed = newton.solve(q, phi, polish).converged;
+    closed = newton.solve(sys, q, phi, polish).converged;
   }
   if (!closed) {
     Eigen::VectorXd fit = start;

@@ -104,7 +104,7 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
   Snapshot snap;
   snap.phi = phi;
   snap.q = q;
-  if (!newton_.derivatives(q, snap.dq, snap.ddq)) {
+  if (!newton_.derivatives(sys_, q, snap.dq, snap.ddq)) {
     s = Status::failure(StatusCode::Singular,
                         "the mechanism is drawn in a singular position (a dead point): velocities "
                         "are not determined there; draw it a little away from it");
@@ -158,8 +158,8 @@ Kinematics::StepResult Kinematics::tryStep(double phiNext, Snapshot& out) {
   const double h = phiNext - reg_.phi;
   out.phi = phiNext;
   out.q = reg_.q + h * reg_.dq + (0.5 * h * h) * reg_.ddq;
-  if (!newton_.solve(out.q, phiNext, opt_.newton).converged) return StepResult::Refused;
-  if (!newton_.derivatives(out.q, out.dq, out.ddq)) {
+  if (!newton_.solve(sys_, out.q, phiNext, opt_.newton).converged) return StepResult::Refused;
+  if (!newton_.derivatives(sys_, out.q, out.dq, out.ddq)) {
     out.regular = false;
     return StepResult::Singular;
   }

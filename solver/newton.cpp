@@ -13,7 +13,6 @@ constexpr double kSingularPivot = 1e-12;
 }  // namespace
 
 void NewtonSolver::reset(const System& sys, const std::vector<int>& activeRows) {
-  sys_ = &sys;
   const int n = sys.nCoords();
   assert(static_cast<int>(activeRows.size()) == n &&
          "NewtonSolver needs a square system: add holds for free coordinates first");
@@ -27,52 +26,53 @@ void NewtonSolver::reset(const System& sys, const std::vector<int>& activeRows) 
   viewsQ_.resize(0);
 }
 
-void NewtonSolver::viewsAt(const Eigen::VectorXd& q) {
+void NewtonSolver::viewsAt(const System& sys, const Eigen::VectorXd& q) {
   if (viewsQ_.size() == q.size() && viewsQ_ == q) return;
-  makeViews(*sys_, q, nullptr, views_);
+  makeViews(sys, q, nullptr, views_);
   viewsQ_ = q;
 }
 
-double NewtonSolver::tolerance(const Eigen::VectorXd& q) const {
+double NewtonSolver::tolerance(const System& sys, const Eigen::VectorXd& q) const {
   // Rounding in a residual grows with the coordinates' magnitude, not only with L.
-  double scale = sys_->size;
-  for (int k = 0; k < sys_->nBodies; ++k)
+  double scale = sys.size;
+  for (int k = 0; k < sys.nBodies; ++k)
     scale = std::max(scale, std::max(std::abs(q[3 * k]), std::abs(q[3 * k + 1])));
   return 1e-13 * scale;
 }
 
-bool NewtonSolver::factor(const Eigen::VectorXd& q) {
-  viewsAt(q);
-  evalJacobian(*sys_, views_, rowMap_, J_);
-  const double invL = 1.0 / sys_->size;
-  for (int k = 0; k < sys_->nBodies; ++k) J_.col(3 * k + 2) *= invL;
+bool NewtonSolver::factor(const System& sys, const Eigen::VectorXd& q) {
+  viewsAt(sys, q);
+  evalJacobian(sys, views_, rowMap_, J_);
+  const double invL = 1.0 / sys.size;
+  for (int k = 0; k < sys.nBodies; ++k) J_.col(3 * k + 2) *= invL;
   lu_.compute(J_);
   return std::isfinite(lu_.pivotRatio()) && lu_.pivotRatio() > kSingularPivot;
 }
 
-double NewtonSolver::residualNorm(const Eigen::VectorXd& q, double phi) {
-  viewsAt(q);
-  evalResidual(*sys_, views_, phi, rowMap_, phi_);
+double NewtonSolver::residualNorm(const System& sys, const Eigen::VectorXd& q, double phi) {
+  viewsAt(sys, q);
+  evalResidual(sys, views_, phi, rowMap_, phi_);
   return phi_.size() ? phi_.cwiseAbs().maxCoeff() : 0.0;
 }
 
-NewtonResult NewtonSolver::solve(Eigen::VectorXd& q, double phi, const NewtonOptions& opt) {
+NewtonResult NewtonSolver::solve(const System& sys, Eigen::VectorXd& q, double phi,
+                                 const NewtonOptions& opt) {
   NewtonResult res;
-  const double L = sys_->size;
+  const double L = sys.size;
   const double invL = 1.0 / L;
   bool fresh = false;  // is the factorisation from the current iterate?
   bool haveLU = false;
   bool polished = false;
   double prevStep = std::numeric_limits<double>::infinity();
   for (int it = 0; it <= opt.maxIterations; ++it) {
-    viewsAt(q);
-    evalResidual(*sys_, views_, phi, rowMap_, phi_);
+    viewsAt(sys, q);
+    evalResidual(sys, views_, phi, rowMap_, phi_);
     res.residual = phi_.size() ? phi_.cwiseAbs().maxCoeff() : 0.0;
     if (!std::isfinite(res.residual)) {
       res.failure = NewtonFailure::Diverged;
       return res;
     }
-    const double tol = tolerance(q);
+    const double tol = tolerance(sys, q);
     // Within tolerance but above rounding (a few eps of the coordinates): one more chord
     // correction, nearly free with the factorisation at hand, takes it to rounding level.
     if (res.residual <= tol && (polished || !haveLU || res.residual <= 0.05 * tol)) {
@@ -83,7 +83,7 @@ NewtonResult NewtonSolver::solve(Eigen::VectorXd& q, double phi, const NewtonOpt
     if (it == opt.maxIterations) break;
     if (!haveLU) {
       ++res.factorizations;
-      if (!factor(q)) {
+      if (!factor(sys, q)) {
         res.failure = NewtonFailure::Singular;
         return res;
       }
@@ -92,7 +92,7 @@ NewtonResult NewtonSolver::solve(Eigen::VectorXd& q, double phi, const NewtonOpt
     delta_ = phi_;
     lu_.solveInPlace(delta_);
     double step = 0;
-    for (int k = 0; k < sys_->nBodies; ++k) {
+    for (int k = 0; k < sys.nBodies; ++k) {
       delta_[3 * k + 2] *= invL;
       step = std::max({step, std::abs(delta_[3 * k]), std::abs(delta_[3 * k + 1]),
                        std::abs(delta_[3 * k + 2]) * L});
@@ -120,31 +120,32 @@ NewtonResult NewtonSolver::solve(Eigen::VectorXd& q, double phi, const NewtonOpt
   return res;
 }
 
-bool NewtonSolver::correction(const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta) {
-  viewsAt(q);
-  evalResidual(*sys_, views_, phi, rowMap_, phi_);
-  if (!factor(q)) return false;
+bool NewtonSolver::correction(const System& sys, const Eigen::VectorXd& q, double phi,
+                              Eigen::VectorXd& delta) {
+  viewsAt(sys, q);
+  evalResidual(sys, views_, phi, rowMap_, phi_);
+  if (!factor(sys, q)) return false;
   delta = phi_;
   lu_.solveInPlace(delta);
-  for (int k = 0; k < sys_->nBodies; ++k) delta[3 * k + 2] /= sys_->size;
+  for (int k = 0; k < sys.nBodies; ++k) delta[3 * k + 2] /= sys.size;
   return delta.allFinite();
 }
 
-bool NewtonSolver::derivatives(const Eigen::VectorXd& q, Eigen::VectorXd& dq,
+bool NewtonSolver::derivatives(const System& sys, const Eigen::VectorXd& q, Eigen::VectorXd& dq,
                                Eigen::VectorXd& ddq) {
-  if (!factor(q)) return false;
-  const double invL = 1.0 / sys_->size;
+  if (!factor(sys, q)) return false;
+  const double invL = 1.0 / sys.size;
   rhs_.setZero();
-  if (sys_->driverRow >= 0 && rowMap_[sys_->driverRow] >= 0)
-    rhs_[rowMap_[sys_->driverRow]] = sys_->size * sys_->sigma;  // -Phi_phi
+  if (sys.driverRow >= 0 && rowMap_[sys.driverRow] >= 0)
+    rhs_[rowMap_[sys.driverRow]] = sys.size * sys.sigma;  // -Phi_phi
   dq = rhs_;
   lu_.solveInPlace(dq);
-  for (int k = 0; k < sys_->nBodies; ++k) dq[3 * k + 2] *= invL;
-  setVelocities(*sys_, dq, views_);
-  evalGamma(*sys_, views_, rowMap_, rhs_);
+  for (int k = 0; k < sys.nBodies; ++k) dq[3 * k + 2] *= invL;
+  setVelocities(sys, dq, views_);
+  evalGamma(sys, views_, rowMap_, rhs_);
   ddq = rhs_;
   lu_.solveInPlace(ddq);
-  for (int k = 0; k < sys_->nBodies; ++k) ddq[3 * k + 2] *= invL;
+  for (int k = 0; k < sys.nBodies; ++k) ddq[3 * k + 2] *= invL;
   return dq.allFinite() && ddq.allFinite();
 }
 

@@ -39,29 +39,31 @@ class NewtonSolver {
   // Prepares for the given rows (they must be independent and as many as coordinates).
   void reset(const System& sys, const std::vector<int>& activeRows);
 
-  NewtonResult solve(Eigen::VectorXd& q, double phi, const NewtonOptions& opt);
+  // Every call takes the system it was reset for: the solver keeps no pointer to it, so the
+  // objects that own both can be copied and moved freely.
+  NewtonResult solve(const System& sys, Eigen::VectorXd& q, double phi, const NewtonOptions& opt);
 
   // Factors J at q and solves q' and q''. False when J is singular there.
-  bool derivatives(const Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq);
+  bool derivatives(const System& sys, const Eigen::VectorXd& q, Eigen::VectorXd& dq,
+                   Eigen::VectorXd& ddq);
 
   // Of the last factorisation: sign of det J and min/max pivot magnitude.
   int detSign() const { return lu_.detSign(); }
   double pivotRatio() const { return lu_.pivotRatio(); }
 
   // One full Newton correction at q (J factored there): q_next = q - delta. False if singular.
-  bool correction(const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta);
+  bool correction(const System& sys, const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta);
 
   // Residual of the active rows at q (mm), for reports.
-  double residualNorm(const Eigen::VectorXd& q, double phi);
+  double residualNorm(const System& sys, const Eigen::VectorXd& q, double phi);
   const std::vector<int>& rowMap() const { return rowMap_; }
 
  private:
-  bool factor(const Eigen::VectorXd& q);
+  bool factor(const System& sys, const Eigen::VectorXd& q);
   // Body views at q; sin and cos are evaluated again only when q changed.
-  void viewsAt(const Eigen::VectorXd& q);
-  double tolerance(const Eigen::VectorXd& q) const;
+  void viewsAt(const System& sys, const Eigen::VectorXd& q);
+  double tolerance(const System& sys, const Eigen::VectorXd& q) const;
 
-  const System* sys_ = nullptr;
   std::vector<int> rowMap_;
   std::vector<BodyView> views_;
   Eigen::MatrixXd J_;

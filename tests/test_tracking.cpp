@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "kinematics.h"
 #include "mechanisms.h"
@@ -163,6 +164,29 @@ TEST(Tracking, FarAnglesOfAPeriodicMotionCostOneTurn) {
   // And back, two million turns the other way.
   ASSERT_TRUE(far.moveTo(-360e6 + 37).ok());
   EXPECT_LT((far.position(f.P) - near.position(f.P)).norm(), 1e-6);
+}
+
+}  // namespace
+}  // namespace linkage
+
+namespace linkage {
+namespace {
+
+TEST(Tracking, CopiesAndMovesAreIndependent) {
+  auto f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  Kinematics reference;
+  ASSERT_TRUE(reference.load(f.m).ok());
+  ASSERT_TRUE(reference.moveTo(200).ok());
+  std::optional<Kinematics> original(std::in_place);
+  ASSERT_TRUE(original->load(f.m).ok());
+  ASSERT_TRUE(original->moveTo(100).ok());
+  Kinematics copy = *original;
+  Kinematics moved = std::move(*original);
+  original.reset();  // nothing may point into it any more
+  ASSERT_TRUE(copy.moveTo(200).ok());
+  ASSERT_TRUE(moved.moveTo(200).ok());
+  EXPECT_LT((copy.position(f.P) - reference.position(f.P)).norm(), 1e-11);
+  EXPECT_LT((moved.velocity(f.P) - reference.velocity(f.P)).norm(), 1e-9);
 }
 
 }  // namespace
