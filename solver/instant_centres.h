@@ -136,11 +136,12 @@ class InstantCentreSolver {
   };
   struct Work {  // per pair, scaled homogeneous (unit 3-vectors)
     Eigen::Vector3d h, line, vel;
+    Eigen::Vector3d mm;  // a joint's own point or slot normal, as given (public convention)
     double err = 0, lineErr = 0;
     double velNorm = 0;  // relative motion against the fastest body's
     int found = -1;      // round found in: 0 primary, >= 1 Kennedy, -1 not (yet)
     int lineJoint = -1;
-    bool hasLine = false, rigid = false, velDetermined = false;
+    bool hasLine = false, rigid = false, velDetermined = false, exact = false;
     int firstPrimary = 0, primaryCount = 0;  // range in primaries_
   };
   struct Candidate {

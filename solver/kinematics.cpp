@@ -44,6 +44,7 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
   valid_ = false;
   notes_.clear();
   assembly_ = {};
+  plan_.reset();
   Status s;
   std::optional<System> compiled = compile(m, s);
   if (!compiled) return s;
@@ -115,6 +116,15 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
   cur_ = reg_ = snap;
   regSign_ = newton_.detSign();
   valid_ = true;
+  if (opt_.closedForm) {
+    plan_ = ClosedFormPlan::build(mech_, sys_, q);
+    // The plan must reproduce the configuration just solved, or it is not used.
+    next_ = reg_;
+    if (plan_ && !(plan_->solve(sys_, phi, next_.q, next_.dq, next_.ddq) &&
+                   (next_.q - reg_.q).cwiseAbs().maxCoeff() <= 1e-9 * sys_.size &&
+                   (next_.dq - reg_.dq).cwiseAbs().maxCoeff() <= 1e-7 * (1 + reg_.dq.norm())))
+      plan_.reset();
+  }
   if (!warm && sys_.hasDriver && sys_.startRad != 0) {
     s = moveToPhi(sys_.startRad);
     if (!s.ok()) {
@@ -206,6 +216,36 @@ Status Kinematics::moveToPhi(double target) {
   if (std::abs(target - reg_.phi) > 4 * M_PI) {
     if (Status s = skipWholeTurns(target); !s.ok()) return s;
   }
+  if (plan_ && trackClosedForm(target)) return Status::success();
+  if (plan_) {  // the general solve takes over from the last closed-form position
+    Eigen::VectorXd dq, ddq;
+    if (newton_.derivatives(sys_, reg_.q, dq, ddq)) regSign_ = newton_.detSign();
+  }
+  return trackGeneral(target);
+}
+
+bool Kinematics::trackClosedForm(double target) {
+  const double hMax = opt_.maxStepDeg * kDeg;
+  while (reg_.phi != target) {
+    // Steps no larger than the general tracker's keep angles continued correctly and make a
+    // region the mechanism cannot reach show up as a failed step, not be stepped over.
+    const double remaining = target - reg_.phi;
+    const double phiNext =
+        std::abs(remaining) <= hMax ? target : reg_.phi + std::copysign(hMax, remaining);
+    next_.q = reg_.q;
+    if (!plan_->solve(sys_, phiNext, next_.q, next_.dq, next_.ddq)) {
+      cur_ = reg_;
+      return false;
+    }
+    next_.phi = phiNext;
+    next_.regular = true;
+    std::swap(reg_, next_);
+  }
+  cur_ = reg_;
+  return true;
+}
+
+Status Kinematics::trackGeneral(double target) {
   const double hMax = opt_.maxStepDeg * kDeg;
   const double hMin = opt_.minStepDeg * kDeg;
   double hTry = hMax;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "assembly.h"
+#include "closed_form.h"
 #include "model.h"
 #include "newton.h"
 #include "status.h"
@@ -28,6 +29,9 @@ struct KinematicsOptions {
   double maxStepDeg = 2.0;
   double minStepDeg = 1e-7;
   NewtonOptions newton;
+  // Solve mechanisms made of a crank and dyads group by group in closed form (closed_form.h)
+  // instead of by Newton on all coordinates; the general solve remains the fallback.
+  bool closedForm = true;
 };
 
 class Kinematics {
@@ -74,6 +78,9 @@ class Kinematics {
   // BadModel or Underconstrained naming the first point whose motion the driver does not fix.
   Status checkDetermined(const std::vector<PointId>& points) const;
 
+  // True when the motion is computed group by group in closed form.
+  bool closedForm() const { return plan_.has_value(); }
+
   // Raw state: q and its derivatives with respect to the driver angle (rad).
   const Eigen::VectorXd& q() const { return cur_.q; }
   const Eigen::VectorXd& dq() const { return cur_.dq; }
@@ -88,6 +95,9 @@ class Kinematics {
 
   Status prepare(const Mechanism& m, const Eigen::VectorXd* warm);
   Status moveToPhi(double phi);
+  Status trackGeneral(double phi);
+  // Closed-form steps towards phi; false where the plan cannot go on (reg_ is the last good).
+  bool trackClosedForm(double phi);
   Status skipWholeTurns(double target);
   enum class StepResult { Accepted, Refused, Singular };
   StepResult tryStep(double phiNext, Snapshot& out);
@@ -103,7 +113,9 @@ class Kinematics {
   NewtonSolver newton_;
   std::vector<std::string> notes_;
   Snapshot cur_, reg_;  // current position and last regular one (the predictor's base)
-  int regSign_ = 0;     // det J sign at reg_
+  Snapshot next_;       // scratch for closed-form steps
+  std::optional<ClosedFormPlan> plan_;
+  int regSign_ = 0;  // det J sign at reg_
   bool valid_ = false;
 };
 

@@ -59,22 +59,28 @@ TEST(Accuracy, SliderCrank22aAgainstExactClosedFormAndPaper) {
     const PointId B = *m.findPoint("needlebar.B");
     const auto p = linkref::slider_crank_22a<Q>(Q(rod));
     const Q lambda = Q(15) / Q(rod);
-    Kinematics k;
-    ASSERT_TRUE(k.load(m).ok());
-    Series s, paper;
-    for (int i = 0; i <= 360; ++i) {
-      ASSERT_TRUE(k.moveTo(i).ok()) << i;
-      const Q phi = linkref::deg2rad(Q(i));
-      const auto r = linkref::slider_crank(p, phi);
-      s.add(k.position(B).y(), k.velocity(B).y(), k.acceleration(B).y(), r.y, r.vy, r.ay);
-      // The paper's exact form (2): S_B = y - (l - r) at phi_B = phi + pi (reference/README.md).
-      const auto pp = linkref::paper_slider_crank(Q(15), lambda, p.omega, phi + linkref::pi<Q>());
-      paper.add(k.position(B).y() - (rod - 15), k.velocity(B).y(), k.acceleration(B).y(), pp.S,
-                pp.v, pp.a);
-      EXPECT_EQ(k.position(B).x(), 0.0);
+    for (bool closedForm : {true, false}) {
+      KinematicsOptions opt;
+      opt.closedForm = closedForm;
+      Kinematics k(opt);
+      ASSERT_TRUE(k.load(m).ok());
+      EXPECT_EQ(k.closedForm(), closedForm);
+      Series s, paper;
+      for (int i = 0; i <= 360; ++i) {
+        ASSERT_TRUE(k.moveTo(i).ok()) << i;
+        const Q phi = linkref::deg2rad(Q(i));
+        const auto r = linkref::slider_crank(p, phi);
+        s.add(k.position(B).y(), k.velocity(B).y(), k.acceleration(B).y(), r.y, r.vy, r.ay);
+        // The paper's exact form (2): S_B = y - (l - r) at phi_B = phi + pi (reference/README.md).
+        const auto pp = linkref::paper_slider_crank(Q(15), lambda, p.omega, phi + linkref::pi<Q>());
+        paper.add(k.position(B).y() - (rod - 15), k.velocity(B).y(), k.acceleration(B).y(), pp.S,
+                  pp.v, pp.a);
+        EXPECT_EQ(k.position(B).x(), 0.0);
+      }
+      const std::string path = closedForm ? " closed form" : " general";
+      s.expectWithin(1e-9, 1e-9, name + path);
+      paper.expectWithin(1e-9, 1e-9, name + path + " (paper's exact form)");
     }
-    s.expectWithin(1e-9, 1e-9, name);
-    paper.expectWithin(1e-9, 1e-9, name + " (paper's exact form)");
   }
 }
 
@@ -87,22 +93,28 @@ TEST(Accuracy, OffsetSliderCrankEitherDirectionBlockOrPinInSlot) {
       p.a0 = linkref::deg2rad(Q(70));
       p.s = dir == Direction::Ccw ? 1 : -1;
       p.omega = linkref::rpm_to_rad_s(Q(1500));
-      Kinematics k;
-      ASSERT_TRUE(k.load(sc.m).ok());
-      Series s, rodAngle;
-      for (int i = 0; i <= 720; i += 3) {
-        ASSERT_TRUE(k.moveTo(i).ok()) << i;
-        const auto r = linkref::slider_crank(p, linkref::deg2rad(Q(i)));
-        s.add(k.position(sc.B).y(), k.velocity(sc.B).y(), k.acceleration(sc.B).y(), r.y, r.vy,
-              r.ay);
-        const double psi0 = double(linkref::slider_crank(p, Q(0)).psi);
-        rodAngle.add(k.bodyAngle(sc.rod) + psi0, k.bodyOmega(sc.rod), k.bodyAlpha(sc.rod), r.psi,
-                     r.dpsi, r.ddpsi);
+      for (bool closedForm : {true, false}) {
+        KinematicsOptions opt;
+        opt.closedForm = closedForm;
+        Kinematics k(opt);
+        ASSERT_TRUE(k.load(sc.m).ok());
+        EXPECT_EQ(k.closedForm(), closedForm);
+        Series s, rodAngle;
+        for (int i = 0; i <= 720; i += 3) {
+          ASSERT_TRUE(k.moveTo(i).ok()) << i;
+          const auto r = linkref::slider_crank(p, linkref::deg2rad(Q(i)));
+          s.add(k.position(sc.B).y(), k.velocity(sc.B).y(), k.acceleration(sc.B).y(), r.y, r.vy,
+                r.ay);
+          const double psi0 = double(linkref::slider_crank(p, Q(0)).psi);
+          rodAngle.add(k.bodyAngle(sc.rod) + psi0, k.bodyOmega(sc.rod), k.bodyAlpha(sc.rod), r.psi,
+                       r.dpsi, r.ddpsi);
+        }
+        const std::string what = std::string(dir == Direction::Cw ? "cw" : "ccw") +
+                                 (pinInSlot ? " pin-in-slot" : " slider block") +
+                                 (closedForm ? " closed form" : " general");
+        s.expectWithin(1e-9, 1e-9, what);
+        rodAngle.expectWithin(1e-11, 1e-9, what + " rod angle");
       }
-      const std::string what = std::string(dir == Direction::Cw ? "cw" : "ccw") +
-                               (pinInSlot ? " pin-in-slot" : " slider block");
-      s.expectWithin(1e-9, 1e-9, what);
-      rodAngle.expectWithin(1e-11, 1e-9, what + " rod angle");
     }
 }
 
@@ -175,21 +187,27 @@ linkref::FourBarParams<Q> params(double d, double r2, double r3, double r4, doub
 
 void checkFourBar(const Mechanism& m, PointId P, PointId B, const linkref::FourBarParams<Q>& p,
                   int revs, const std::string& what) {
-  Kinematics k;
-  ASSERT_TRUE(k.load(m).ok()) << what;
-  Series px, py, bx, by;
-  for (int i = 0; i <= 360 * revs; ++i) {
-    ASSERT_TRUE(k.moveTo(i).ok()) << what << " at " << i;
-    const auto r = linkref::four_bar(p, linkref::deg2rad(Q(i)));
-    px.add(k.position(P).x(), k.velocity(P).x(), k.acceleration(P).x(), r.P.x, r.vP.x, r.aP.x);
-    py.add(k.position(P).y(), k.velocity(P).y(), k.acceleration(P).y(), r.P.y, r.vP.y, r.aP.y);
-    bx.add(k.position(B).x(), k.velocity(B).x(), k.acceleration(B).x(), r.B.x, r.vB.x, r.aB.x);
-    by.add(k.position(B).y(), k.velocity(B).y(), k.acceleration(B).y(), r.B.y, r.vB.y, r.aB.y);
+  for (bool closedForm : {true, false}) {
+    KinematicsOptions opt;
+    opt.closedForm = closedForm;
+    Kinematics k(opt);
+    ASSERT_TRUE(k.load(m).ok()) << what;
+    EXPECT_EQ(k.closedForm(), closedForm) << what;
+    Series px, py, bx, by;
+    for (int i = 0; i <= 360 * revs; ++i) {
+      ASSERT_TRUE(k.moveTo(i).ok()) << what << " at " << i;
+      const auto r = linkref::four_bar(p, linkref::deg2rad(Q(i)));
+      px.add(k.position(P).x(), k.velocity(P).x(), k.acceleration(P).x(), r.P.x, r.vP.x, r.aP.x);
+      py.add(k.position(P).y(), k.velocity(P).y(), k.acceleration(P).y(), r.P.y, r.vP.y, r.aP.y);
+      bx.add(k.position(B).x(), k.velocity(B).x(), k.acceleration(B).x(), r.B.x, r.vB.x, r.aB.x);
+      by.add(k.position(B).y(), k.velocity(B).y(), k.acceleration(B).y(), r.B.y, r.vB.y, r.aB.y);
+    }
+    const std::string path = closedForm ? " closed form" : " general";
+    px.expectWithin(1e-9, 1e-9, what + path + " P.x");
+    py.expectWithin(1e-9, 1e-9, what + path + " P.y");
+    bx.expectWithin(1e-9, 1e-9, what + path + " B.x");
+    by.expectWithin(1e-9, 1e-9, what + path + " B.y");
   }
-  px.expectWithin(1e-9, 1e-9, what + " P.x");
-  py.expectWithin(1e-9, 1e-9, what + " P.y");
-  bx.expectWithin(1e-9, 1e-9, what + " B.x");
-  by.expectWithin(1e-9, 1e-9, what + " B.y");
 }
 
 TEST(Accuracy, FourBarExampleAgainstClosedForm) {

@@ -1,0 +1,64 @@
+// Closed-form kinematics for mechanisms built from a driven crank and dyads (Assur groups of
+// class II), solved one group after another from the ground outwards, as a designer does by
+// hand. The same equations as the general solve, ordered into a block-triangular sequence:
+//
+//   crank  body B pinned to a known body K at the driver:  theta_B = theta_K +- sigma phi,
+//          r_B from the pin.
+//   RRR    bodies B1, B2: B1 pinned to known K1 at P1, B2 to known K2 at P2, B1-B2 pinned at C.
+//          C = intersection of circles (P1, d1) and (P2, d2), on the side the drawing chose.
+//          Velocities: w1 perp(C - P1) - w2 perp(C - P2) = v_P2 - v_P1 (2 x 2), and likewise
+//          for accelerations with the centripetal terms on the right.
+//   RRP    rod B1 pinned to known K1 at P1, block B2 pinned to B1 at C and sliding in a slot of
+//          known K2 (angle of B2 = angle of K2): C = intersection of circle (P1, d1) with the
+//          slot's line shifted by the block's offset; w1 perp(C - P1) - s' dir = V0 - v_P1.
+//   RP     body B1 pinned to known K1 at P1 with a point C in a slot of known K2 (pin-in-slot):
+//          the RRP equations without a block.
+// Every group's unknowns follow from known bodies, so no Newton iteration and no factorisation
+// is needed: a step costs a few dozen flops per body. The branch (which of the two
+// intersections) is the drawn one and never changes: where a group cannot close (a negative
+// discriminant) or its 2 x 2 system is singular, the plan reports failure and the general solver
+// takes over and explains it.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "model.h"
+#include "system.h"
+
+namespace linkage {
+
+class ClosedFormPlan {
+ public:
+  // A plan when the whole mechanism decomposes into these groups (no redundant joints, no held
+  // coordinates), with branches taken from the assembled configuration q; nullopt otherwise.
+  static std::optional<ClosedFormPlan> build(const Mechanism& m, const System& sys,
+                                             const Eigen::VectorXd& q);
+
+  // Positions at driver angle phi, and d/dphi, d2/dphi2 of every coordinate. `q` holds the
+  // previous configuration on entry (angles are continued from it, not wrapped) and the new one
+  // on exit. False (q untouched) where a group cannot close or is singular.
+  bool solve(const System& sys, double phi, Eigen::VectorXd& q, Eigen::VectorXd& dq,
+             Eigen::VectorXd& ddq) const;
+
+  int groups() const { return static_cast<int>(groups_.size()); }
+
+ private:
+  enum class Kind { Crank, RRR, RRP, RP };
+  struct Group {
+    Kind kind = Kind::Crank;
+    int b1 = -1, b2 = -1;       // unknown bodies (b2 unused for Crank and RP)
+    int k1 = -1, k2 = -1;       // known bodies they attach to (-1 ground)
+    Vec2 p1k, p1;               // pin to k1: on k1, on b1
+    Vec2 c1, c2;                // the joint C: on b1 (and on b2 for RRR, RRP)
+    Vec2 p2, p2k;               // RRR: pin to k2: on b2, on k2
+    Vec2 u, n, d;               // RRP, RP: slot point, unit normal and direction on k2
+    Vec2 q2;                    // RRP: the block's point on the slot line
+    double dir1 = 0, dir2 = 0;  // local angles of (c1 - p1) and (c2 - p2) on their bodies
+    double sign = 1;            // Crank: +-sigma; RRR, RRP, RP: the drawn branch
+  };
+  std::vector<Group> groups_;
+};
+
+}  // namespace linkage
