@@ -199,6 +199,79 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
         remaining -= 2;
       }
     }
+    // A core body held by three conditions, its blocks eliminated (core_group.h).
+    for (int c = 0; c < sys.nBodies && !progress; ++c) {
+      if (known[c]) continue;
+      CoreGroup core;
+      core.core = c;
+      std::vector<int> joints, blocks;
+      int rows = 0;
+      bool usable = true;
+      for (int j = 0; j < nj && usable; ++j) {
+        if (used[j]) continue;
+        const Constraint* p = pin[j];
+        const Constraint* l = line[j];
+        if (p && (p->bi == c || p->bj == c)) {
+          const int other = otherBody(p, c);
+          CoreLink link;
+          link.s = pinOn(p, c);
+          if (isKnown(other)) {
+            link.pin = true;
+            link.known = other;
+            link.ks = pinOther(p, c);
+            rows += 2;
+            joints.push_back(j);
+          } else {
+            // A block: this pin and one slider in a known slot, nothing else.
+            std::vector<int> rest;
+            for (int j2 = 0; j2 < nj; ++j2) {
+              if (used[j2] || j2 == j) continue;
+              const Constraint* c2 = pin[j2] ? pin[j2] : line[j2];
+              if (c2 && (c2->bi == other || c2->bj == other)) rest.push_back(j2);
+            }
+            if (rest.size() != 1 || !isSlider[rest[0]] || line[rest[0]]->bi != other ||
+                !isKnown(line[rest[0]]->bj))
+              continue;  // not a block: a joint for a later group
+            const Constraint* sl = line[rest[0]];
+            link.known = sl->bj;
+            link.ks = sl->sj - (sl->si - pinOther(p, c));  // the line the pin point keeps to
+            link.n = sl->nj;
+            link.block = other;
+            link.blockPin = pinOther(p, c);
+            rows += 1;
+            joints.push_back(j);
+            joints.push_back(rest[0]);
+            blocks.push_back(other);
+          }
+          core.links.push_back(link);
+        } else if (l && l->bi == c && !isSlider[j] && isKnown(l->bj)) {
+          CoreLink link;
+          link.known = l->bj;
+          link.s = l->si;
+          link.ks = l->sj;
+          link.n = l->nj;
+          rows += 1;
+          joints.push_back(j);
+          core.links.push_back(link);
+        } else if (l && (l->bi == c || l->bj == c) && isKnown(otherBody(l, c))) {
+          usable = false;  // a slider or a slot of its own on a known body: not this kind
+        }
+      }
+      if (!usable || rows != 3) continue;
+      core.detSign = coreDetSign(core, sys, q);
+      if (core.detSign == 0) return std::nullopt;
+      Group g;
+      g.kind = Kind::Core;
+      g.b1 = c;
+      g.core = static_cast<int>(plan.cores_.size());
+      plan.cores_.push_back(core);
+      plan.groups_.push_back(g);
+      for (int j : joints) used[j] = true;
+      known[c] = true;
+      for (int b : blocks) known[b] = true;
+      remaining -= 1 + static_cast<int>(blocks.size());
+      progress = true;
+    }
     if (!progress) return std::nullopt;
   }
   for (int j = 0; j < nj; ++j)
@@ -207,7 +280,7 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
   // Local directions and the drawn branches, from the assembled configuration.
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q.size());
   for (Group& g : plan.groups_) {
-    if (g.kind == Kind::Crank) continue;
+    if (g.kind == Kind::Crank || g.kind == Kind::Core) continue;
     g.dir1 = angleOf(g.c1 - g.p1);
     const State k1 = stateOf(g.k1, q, zero, zero);
     const State b1 = stateOf(g.b1, q, zero, zero);
@@ -227,11 +300,14 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
   return plan;
 }
 
-bool ClosedFormPlan::solve(const System& sys, double phi, Eigen::VectorXd& q, Eigen::VectorXd& dq,
-                           Eigen::VectorXd& ddq) const {
-  (void)sys;
+bool ClosedFormPlan::solve(const System& sys, double prevPhi, double phi, Eigen::VectorXd& q,
+                           Eigen::VectorXd& dq, Eigen::VectorXd& ddq) const {
   Eigen::VectorXd nq = q;  // written group by group; q is kept for angle continuation
   for (const Group& g : groups_) {
+    if (g.kind == Kind::Core) {
+      if (!solveCore(cores_[g.core], sys, q, phi - prevPhi, nq, dq, ddq)) return false;
+      continue;
+    }
     const State k1 = stateOf(g.k1, nq, dq, ddq);
     const Vec2 P1 = k1.pos(g.p1k), vP1 = k1.vel(g.p1k), aP1 = k1.acc(g.p1k);
     if (g.kind == Kind::Crank) {

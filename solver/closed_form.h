@@ -13,8 +13,10 @@
 //          slot's line shifted by the block's offset; w1 perp(C - P1) - s' dir = V0 - v_P1.
 //   RP     body B1 pinned to known K1 at P1 with a point C in a slot of known K2 (pin-in-slot):
 //          the RRP equations without a block.
-// Every group's unknowns follow from known bodies, so no Newton iteration and no factorisation
-// is needed: a step costs a few dozen flops per body. The branch (which of the two
+//   core   one body held by three scalar conditions to known bodies, its slider blocks
+//          eliminated (core_group.h): a 3 x 3 Newton, the one group here that iterates.
+// Every group's unknowns follow from known bodies, so no factorisation of the whole system is
+// needed: a step costs a few dozen flops per body. The branch (which of the two
 // intersections) is the drawn one and never changes: where a group cannot close (a negative
 // discriminant) or its 2 x 2 system is singular, the plan reports failure and the general solver
 // takes over and explains it.
@@ -24,6 +26,7 @@
 #include <optional>
 #include <vector>
 
+#include "core_group.h"
 #include "model.h"
 #include "system.h"
 
@@ -36,16 +39,17 @@ class ClosedFormPlan {
   static std::optional<ClosedFormPlan> build(const Mechanism& m, const System& sys,
                                              const Eigen::VectorXd& q);
 
-  // Positions at driver angle phi, and d/dphi, d2/dphi2 of every coordinate. `q` holds the
-  // previous configuration on entry (angles are continued from it, not wrapped) and the new one
-  // on exit. False (q untouched) where a group cannot close or is singular.
-  bool solve(const System& sys, double phi, Eigen::VectorXd& q, Eigen::VectorXd& dq,
+  // Positions at driver angle phi, and d/dphi, d2/dphi2 of every coordinate. On entry q, dq,
+  // ddq hold the previous position at driver angle prevPhi (angles are continued from it, core
+  // groups start from its prediction); on exit the new one. False where a group cannot close
+  // or is singular: then q is untouched, dq and ddq are not.
+  bool solve(const System& sys, double prevPhi, double phi, Eigen::VectorXd& q, Eigen::VectorXd& dq,
              Eigen::VectorXd& ddq) const;
 
   int groups() const { return static_cast<int>(groups_.size()); }
 
  private:
-  enum class Kind { Crank, RRR, RRP, RP };
+  enum class Kind { Crank, RRR, RRP, RP, Core };
   struct Group {
     Kind kind = Kind::Crank;
     int b1 = -1, b2 = -1;       // unknown bodies (b2 unused for Crank and RP)
@@ -57,8 +61,10 @@ class ClosedFormPlan {
     Vec2 q2;                    // RRP: the block's point on the slot line
     double dir1 = 0, dir2 = 0;  // local angles of (c1 - p1) and (c2 - p2) on their bodies
     double sign = 1;            // Crank: +-sigma; RRR, RRP, RP: the drawn branch
+    int core = -1;              // Core: index into cores_
   };
   std::vector<Group> groups_;
+  std::vector<CoreGroup> cores_;
 };
 
 }  // namespace linkage

@@ -120,7 +120,7 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
     plan_ = ClosedFormPlan::build(mech_, sys_, q);
     // The plan must reproduce the configuration just solved, or it is not used.
     next_ = reg_;
-    if (plan_ && !(plan_->solve(sys_, phi, next_.q, next_.dq, next_.ddq) &&
+    if (plan_ && !(plan_->solve(sys_, phi, phi, next_.q, next_.dq, next_.ddq) &&
                    (next_.q - reg_.q).cwiseAbs().maxCoeff() <= 1e-9 * sys_.size &&
                    (next_.dq - reg_.dq).cwiseAbs().maxCoeff() <= 1e-7 * (1 + reg_.dq.norm())))
       plan_.reset();
@@ -233,7 +233,9 @@ bool Kinematics::trackClosedForm(double target) {
     const double phiNext =
         std::abs(remaining) <= hMax ? target : reg_.phi + std::copysign(hMax, remaining);
     next_.q = reg_.q;
-    if (!plan_->solve(sys_, phiNext, next_.q, next_.dq, next_.ddq)) {
+    next_.dq = reg_.dq;  // core groups predict from the previous rates
+    next_.ddq = reg_.ddq;
+    if (!plan_->solve(sys_, reg_.phi, phiNext, next_.q, next_.dq, next_.ddq)) {
       cur_ = reg_;
       return false;
     }

@@ -243,26 +243,32 @@ void checkWanzer(linkref::WanzerInversion inv, const std::string& name) {
   const PointId G = *m.findPoint("needlebar.G");
   const PointId E = *m.findPoint("triangle.E");
   const BodyId tri = m.bodyNamed("triangle")->id;
-  linkref::Wanzer<Q> w(linkref::wanzer_homework_params<Q>(inv));
-  Kinematics k;
-  ASSERT_TRUE(k.load(m).ok());
-  Series g, ex, ey, ang;
-  const double tri0 = double(w.at(Q(0)).tri_angle);
-  for (int i = 0; i <= 720; ++i) {
-    ASSERT_TRUE(k.moveTo(i).ok()) << name << " at " << i;
-    const auto r = w.at_deg(Q(i));
-    g.add(k.position(G).y(), k.velocity(G).y(), k.acceleration(G).y(), r.G.y, r.vG.y, r.aG.y);
-    ex.add(k.position(E).x(), k.velocity(E).x(), k.acceleration(E).x(), r.E.x, r.vE.x, r.aE.x);
-    ey.add(k.position(E).y(), k.velocity(E).y(), k.acceleration(E).y(), r.E.y, r.vE.y, r.aE.y);
-    ang.add(k.bodyAngle(tri) + tri0, k.bodyOmega(tri), k.bodyAlpha(tri), r.tri_angle, r.tri_omega,
-            r.tri_alpha);
-    EXPECT_LT(std::abs(k.position(G).x()), 1e-9);
+  for (bool closedForm : {true, false}) {
+    linkref::Wanzer<Q> w(linkref::wanzer_homework_params<Q>(inv));
+    KinematicsOptions opt;
+    opt.closedForm = closedForm;
+    Kinematics k(opt);
+    ASSERT_TRUE(k.load(m).ok());
+    EXPECT_EQ(k.closedForm(), closedForm);
+    Series g, ex, ey, ang;
+    const double tri0 = double(w.at(Q(0)).tri_angle);
+    for (int i = 0; i <= 720; ++i) {
+      ASSERT_TRUE(k.moveTo(i).ok()) << name << " at " << i;
+      const auto r = w.at_deg(Q(i));
+      g.add(k.position(G).y(), k.velocity(G).y(), k.acceleration(G).y(), r.G.y, r.vG.y, r.aG.y);
+      ex.add(k.position(E).x(), k.velocity(E).x(), k.acceleration(E).x(), r.E.x, r.vE.x, r.aE.x);
+      ey.add(k.position(E).y(), k.velocity(E).y(), k.acceleration(E).y(), r.E.y, r.vE.y, r.aE.y);
+      ang.add(k.bodyAngle(tri) + tri0, k.bodyOmega(tri), k.bodyAlpha(tri), r.tri_angle, r.tri_omega,
+              r.tri_alpha);
+      EXPECT_LT(std::abs(k.position(G).x()), 1e-9);
+    }
+    const std::string what = name + (closedForm ? " (core group)" : " (general)");
+    g.expectWithin(1e-9, 1e-9, what + " needle G");
+    ex.expectWithin(1e-9, 1e-9, what + " E.x");
+    ey.expectWithin(1e-9, 1e-9, what + " E.y");
+    // Angles are periodic only modulo 2 pi; the triangle swings and never turns a whole turn.
+    ang.expectWithin(1e-11, 1e-9, what + " triangle angle");
   }
-  g.expectWithin(1e-9, 1e-9, name + " needle G");
-  ex.expectWithin(1e-9, 1e-9, name + " E.x");
-  ey.expectWithin(1e-9, 1e-9, name + " E.y");
-  // Angles are periodic only modulo 2 pi; the triangle swings and never turns a whole turn.
-  ang.expectWithin(1e-11, 1e-9, name + " triangle angle");
 }
 
 TEST(Accuracy, WanzerInversion1AgainstReducedFormulation) {

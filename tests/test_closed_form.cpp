@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "io/model_file.h"
 #include "kinematics.h"
 #include "mechanisms.h"
 
@@ -90,6 +91,18 @@ TEST(ClosedForm, SixBarWithABlockInASlotOfAMovingRocker) {
   m.addSlider(blQ, slot);
   m.outputs = {blC, blQ};
   expectSameMotion(m, {blC, blQ, f.P}, 720, "six-bar");
+}
+
+// The Wanzer triangle held by three slider blocks: a core group (core_group.h), 3 unknowns.
+TEST(ClosedForm, WanzerTriadAsACoreGroupMatchesTheGeneralSolve) {
+  for (const char* name : {"wanzer-inversion-1", "wanzer-inversion-2"}) {
+    LoadResult r =
+        loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
+    ASSERT_TRUE(r.mechanism) << r.error;
+    std::vector<PointId> points;
+    for (const Point& p : r.mechanism->points) points.push_back(p.id);
+    expectSameMotion(*r.mechanism, points, 1080, name);
+  }
 }
 
 TEST(ClosedFormCoverage, TakenOnlyWhereTheMechanismDecomposes) {
