@@ -26,13 +26,13 @@ struct State {
 };
 
 State stateOf(int body, const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
-              const Eigen::VectorXd& ddq) {
+              const Eigen::VectorXd& ddq, const std::vector<Rot>* rot = nullptr) {
   State s;
   if (body < 0) return s;
   const int k = 3 * body;
   s.r = Vec2(q[k], q[k + 1]);
   s.th = q[k + 2];
-  s.R = Rot{std::cos(s.th), std::sin(s.th)};
+  s.R = rot ? (*rot)[body] : Rot{std::cos(s.th), std::sin(s.th)};
   s.v = Vec2(dq[k], dq[k + 1]);
   s.w = dq[k + 2];
   s.a = Vec2(ddq[k], ddq[k + 1]);
@@ -42,9 +42,11 @@ State stateOf(int body, const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
 
 // Writes a body whose angle, angular rates and one point's motion (local s at P) are known.
 void place(int body, double th, double w, double al, const Vec2& s, const Vec2& P, const Vec2& vP,
-           const Vec2& aP, Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq) {
+           const Vec2& aP, Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq,
+           std::vector<Rot>& rot) {
   const int k = 3 * body;
   const Rot R{std::cos(th), std::sin(th)};
+  rot[body] = R;
   const Vec2 g = R * s;
   q.segment<2>(k) = P - g;
   q[k + 2] = th;
@@ -302,24 +304,29 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
 
 bool ClosedFormPlan::solve(const System& sys, double prevPhi, double phi, Eigen::VectorXd& q,
                            Eigen::VectorXd& dq, Eigen::VectorXd& ddq) const {
-  Eigen::VectorXd nq = q;  // written group by group; q is kept for angle continuation
+  // In place: each group writes only its own bodies, after reading their previous angles.
+  rot_.resize(sys.nBodies);
   for (const Group& g : groups_) {
     if (g.kind == Kind::Core) {
-      if (!solveCore(cores_[g.core], sys, q, phi - prevPhi, nq, dq, ddq)) return false;
+      const CoreGroup& core = cores_[g.core];
+      if (!solveCore(core, sys, q, phi - prevPhi, q, dq, ddq)) return false;
+      rot_[core.core] = Rot{std::cos(q[3 * core.core + 2]), std::sin(q[3 * core.core + 2])};
+      for (const CoreLink& l : core.links)
+        if (l.block >= 0) rot_[l.block] = l.known >= 0 ? rot_[l.known] : Rot{};
       continue;
     }
-    const State k1 = stateOf(g.k1, nq, dq, ddq);
+    const State k1 = stateOf(g.k1, q, dq, ddq, &rot_);
     const Vec2 P1 = k1.pos(g.p1k), vP1 = k1.vel(g.p1k), aP1 = k1.acc(g.p1k);
     if (g.kind == Kind::Crank) {
       const double th = k1.th + g.sign * phi;
-      place(g.b1, th, k1.w + g.sign, k1.al, g.p1, P1, vP1, aP1, nq, dq, ddq);
+      place(g.b1, th, k1.w + g.sign, k1.al, g.p1, P1, vP1, aP1, q, dq, ddq, rot_);
       continue;
     }
     const double d1 = (g.c1 - g.p1).norm();
     Vec2 C, u1 = Vec2::Zero();
     double w1 = 0, al1 = 0;
     if (g.kind == Kind::RRR) {
-      const State k2 = stateOf(g.k2, nq, dq, ddq);
+      const State k2 = stateOf(g.k2, q, dq, ddq, &rot_);
       const Vec2 P2 = k2.pos(g.p2k), vP2 = k2.vel(g.p2k), aP2 = k2.acc(g.p2k);
       const double d2 = (g.c2 - g.p2).norm();
       const Vec2 e = P2 - P1;
@@ -336,10 +343,10 @@ bool ClosedFormPlan::solve(const System& sys, double prevPhi, double phi, Eigen:
       if (!solve2(perp(u1), -perp(u2), vP2 - vP1, w1, w2)) return false;
       solve2(perp(u1), -perp(u2), aP2 - aP1 - w2 * w2 * u2 + w1 * w1 * u1, al1, al2);
       const double th2 = continued(angleOf(u2) - g.dir2, q[3 * g.b2 + 2]);
-      place(g.b2, th2, w2, al2, g.p2, P2, vP2, aP2, nq, dq, ddq);
+      place(g.b2, th2, w2, al2, g.p2, P2, vP2, aP2, q, dq, ddq, rot_);
     } else {
       // The line C must keep to: the slot (through U, normal n), shifted by the block's offset.
-      const State k2 = stateOf(g.k2, nq, dq, ddq);
+      const State k2 = stateOf(g.k2, q, dq, ddq, &rot_);
       const Vec2 n = k2.R * g.n, dir = k2.R * g.d, U = k2.pos(g.u);
       const Vec2 w = g.kind == Kind::RRP ? Vec2(k2.R * (g.q2 - g.c2)) : Vec2::Zero();
       const double delta = n.dot(U - w - P1);
@@ -362,13 +369,12 @@ bool ClosedFormPlan::solve(const System& sys, double prevPhi, double phi, Eigen:
       if (g.kind == Kind::RRP) {
         const Vec2 vC = V0 + sd * dir;
         const Vec2 aC = A0 + sdd * dir;
-        place(g.b2, k2.th, k2.w, k2.al, g.c2, C, vC, aC, nq, dq, ddq);
+        place(g.b2, k2.th, k2.w, k2.al, g.c2, C, vC, aC, q, dq, ddq, rot_);
       }
     }
     const double th1 = continued(angleOf(u1) - g.dir1, q[3 * g.b1 + 2]);
-    place(g.b1, th1, w1, al1, g.p1, P1, vP1, aP1, nq, dq, ddq);
+    place(g.b1, th1, w1, al1, g.p1, P1, vP1, aP1, q, dq, ddq, rot_);
   }
-  q = nq;
   return true;
 }
 

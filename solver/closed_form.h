@@ -39,10 +39,10 @@ class ClosedFormPlan {
   static std::optional<ClosedFormPlan> build(const Mechanism& m, const System& sys,
                                              const Eigen::VectorXd& q);
 
-  // Positions at driver angle phi, and d/dphi, d2/dphi2 of every coordinate. On entry q, dq,
-  // ddq hold the previous position at driver angle prevPhi (angles are continued from it, core
-  // groups start from its prediction); on exit the new one. False where a group cannot close
-  // or is singular: then q is untouched, dq and ddq are not.
+  // Positions at driver angle phi, and d/dphi, d2/dphi2 of every coordinate, in place. On entry
+  // q, dq, ddq hold the previous position at driver angle prevPhi (angles are continued from it,
+  // core groups start from its prediction); on exit the new one. False where a group cannot
+  // close or is singular; then q, dq and ddq hold a partial update and must be discarded.
   bool solve(const System& sys, double prevPhi, double phi, Eigen::VectorXd& q, Eigen::VectorXd& dq,
              Eigen::VectorXd& ddq) const;
 
@@ -65,6 +65,7 @@ class ClosedFormPlan {
   };
   std::vector<Group> groups_;
   std::vector<CoreGroup> cores_;
+  mutable std::vector<Rot> rot_;  // per body, of the pose just placed: no sin/cos twice
 };
 
 }  // namespace linkage

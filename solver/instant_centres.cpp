@@ -11,10 +11,6 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-// Largest first-order error bound (in units of the input accuracy) for which a centre is taken
-// from lines: beyond it the lines' intersection would not be known to the cross-check's 1e-9.
-constexpr double kMaxError = CentreTolerances::check / CentreTolerances::inputAccuracy;
-
 // |a x b| of unit homogeneous vectors: 0 for the same point (either sign), the distance over L
 // for nearby finite points, the sine of the angle for two directions.
 double chordal(const Vec3& a, const Vec3& b) {
@@ -76,8 +72,7 @@ BodyId InstantCentres::bodyNumbered(int n) const {
   return {};
 }
 
-Status textbookNumbers(const Mechanism& m, std::vector<BodyId>& bodies,
-                       std::vector<int>& numbers) {
+Status textbookNumbers(const Mechanism& m, std::vector<BodyId>& bodies, std::vector<int>& numbers) {
   bodies.clear();
   numbers.clear();
   if (!m.ground()) return bad("no body is the ground");
@@ -269,7 +264,7 @@ void InstantCentreSolver::primaryCentres(const Kinematics&) {
         // A second pin-in-slot between the same bodies: the two normals meet at the centre.
         const Vec3 x = w.line.cross(l / s);
         const double e2 = (w.lineErr + 2 / s) / x.norm();
-        if (!(e2 <= kMaxError)) continue;  // the same line again
+        if (!(e2 <= CentreTolerances::coincident)) continue;  // the same line again
         w.h = x.normalized();
         w.exact = false;
         w.err = e2;
@@ -316,65 +311,75 @@ void InstantCentreSolver::primaryCentres(const Kinematics&) {
 
 void InstantCentreSolver::kennedy() {
   out_.kennedyRounds = 0;
-  auto known = [](const Work& w, int round) { return w.found >= 0 && w.found < round; };
   // Circle-diagram passes: a pass finds every pair with two lines through centres known before
   // it, so what a pass finds depends on earlier passes only, never on the order of the pairs.
+  // Well-conditioned meetings first; a pass takes poorly conditioned ones only when nothing else
+  // is left to find.
   for (int round = 1;; ++round) {
-    bool progress = false;
-    for (int a = 0; a < n_; ++a)
-      for (int b = a + 1; b < n_; ++b) {
-        const int p = pair(a, b);
-        Work& w = work_[p];
-        if (w.found >= 0 || w.rigid) continue;
-        InstantCentre& c = out_.centres[p];
-        cand_.clear();
-        int degenerate = 0;
-        for (int k = 0; k < n_; ++k) {
-          if (k == a || k == b) continue;
-          const Work& wa = work_[pair(a, k)];
-          const Work& wb = work_[pair(k, b)];
-          if (!known(wa, round) || !known(wb, round)) continue;
-          const Vec3 l = wa.h.cross(wb.h);
-          const double s = l.norm();
-          const double e = (wa.err + wb.err) / s;
-          if (!(e <= kMaxError)) {  // the two centres coincide: no line
-            ++degenerate;
-            continue;
-          }
-          cand_.push_back({l / s, e, CentreLine{out_.numbers[k], -1}});
-        }
-        if (w.hasLine) cand_.push_back({w.line, w.lineErr, CentreLine{0, w.lineJoint}});
-        // The two lines that fix the centre best: smallest first-order error bound.
-        double best = INFINITY;
-        int bx = -1, by = -1;
-        Vec3 bestX = Vec3::Zero();
-        for (size_t x = 0; x < cand_.size(); ++x)
-          for (size_t y = x + 1; y < cand_.size(); ++y) {
-            const Vec3 v = cand_[x].line.cross(cand_[y].line);
-            const double e = (cand_[x].err + cand_[y].err) / v.norm();
-            if (e < best) {
-              best = e;
-              bx = static_cast<int>(x), by = static_cast<int>(y);
-              bestX = v;
-            }
-          }
-        if (!(best <= kMaxError)) {
-          c.kennedyFailure = cand_.size() + degenerate >= 2 ? KennedyFailure::LinesCoincide
-                                                            : KennedyFailure::TooFewLines;
-          continue;
-        }
-        w.h = bestX.normalized();
-        w.err = best;
-        w.found = round;
-        c.status = CentreStatus::Kennedy;
-        c.lines = {cand_[bx].from, cand_[by].from};
-        c.round = round;
-        c.kennedyFailure = KennedyFailure::None;
-        progress = true;
-      }
-    if (!progress) break;
+    if (!kennedyPass(round, CentreTolerances::preferred) &&
+        !kennedyPass(round, CentreTolerances::coincident))
+      break;
     out_.kennedyRounds = round;
   }
+}
+
+bool InstantCentreSolver::kennedyPass(int round, double limit) {
+  auto known = [](const Work& w, int r) { return w.found >= 0 && w.found < r; };
+  const bool last = limit >= CentreTolerances::coincident;
+  bool progress = false;
+  for (int a = 0; a < n_; ++a)
+    for (int b = a + 1; b < n_; ++b) {
+      const int p = pair(a, b);
+      Work& w = work_[p];
+      if (w.found >= 0 || w.rigid) continue;
+      InstantCentre& c = out_.centres[p];
+      cand_.clear();
+      int degenerate = 0;
+      for (int k = 0; k < n_; ++k) {
+        if (k == a || k == b) continue;
+        const Work& wa = work_[pair(a, k)];
+        const Work& wb = work_[pair(k, b)];
+        if (!known(wa, round) || !known(wb, round)) continue;
+        const Vec3 l = wa.h.cross(wb.h);
+        const double s = l.norm();
+        const double e = (wa.err + wb.err) / s;
+        if (!(e <= limit)) {  // the two centres coincide (or nearly): no (usable) line
+          ++degenerate;
+          continue;
+        }
+        cand_.push_back({l / s, e, CentreLine{out_.numbers[k], -1}});
+      }
+      if (w.hasLine) cand_.push_back({w.line, w.lineErr, CentreLine{0, w.lineJoint}});
+      // The two lines that fix the centre best: smallest first-order error bound.
+      double best = INFINITY;
+      int bx = -1, by = -1;
+      Vec3 bestX = Vec3::Zero();
+      for (size_t x = 0; x < cand_.size(); ++x)
+        for (size_t y = x + 1; y < cand_.size(); ++y) {
+          const Vec3 v = cand_[x].line.cross(cand_[y].line);
+          const double e = (cand_[x].err + cand_[y].err) / v.norm();
+          if (e < best) {
+            best = e;
+            bx = static_cast<int>(x), by = static_cast<int>(y);
+            bestX = v;
+          }
+        }
+      if (!(best <= limit)) {
+        if (last)
+          c.kennedyFailure = cand_.size() + degenerate >= 2 ? KennedyFailure::LinesCoincide
+                                                            : KennedyFailure::TooFewLines;
+        continue;
+      }
+      w.h = bestX.normalized();
+      w.err = best;
+      w.found = round;
+      c.status = CentreStatus::Kennedy;
+      c.lines = {cand_[bx].from, cand_[by].from};
+      c.round = round;
+      c.kennedyFailure = KennedyFailure::None;
+      progress = true;
+    }
+  return progress;
 }
 
 void InstantCentreSolver::velocityCentres(const Kinematics& k) {
@@ -392,7 +397,8 @@ void InstantCentreSolver::velocityCentres(const Kinematics& k) {
       continue;
     }
     const double w = dq[3 * s + 2];
-    const Vec2 v = Vec2(dq[3 * s], dq[3 * s + 1]) + w * perp(centre_ - Vec2(q[3 * s], q[3 * s + 1]));
+    const Vec2 v =
+        Vec2(dq[3 * s], dq[3 * s + 1]) + w * perp(centre_ - Vec2(q[3 * s], q[3 * s + 1]));
     twist_[t] = Vec3(v.x() / L_, v.y() / L_, w);
     fastest = std::max(fastest, twist_[t].norm());
   }
@@ -435,9 +441,8 @@ void InstantCentreSolver::finish(const Kinematics&) {
     // Both derivations are known to first order within these bounds; the check reports what
     // exceeds 1e-9 (or their bounds, where a slow relative motion makes the velocities' centre
     // less sharp than that).
-    const double tol =
-        std::max(CentreTolerances::check,
-                 CentreTolerances::inputAccuracy * (w.err + 1 / w.velNorm));
+    const double tol = std::max(CentreTolerances::check,
+                                CentreTolerances::inputAccuracy * (w.err + 1 / w.velNorm));
     c.checked = true;
     if (c.h.z() != 0 && c.fromVelocity.z() != 0) {
       const Vec2 a = c.point(), b(c.fromVelocity.x(), c.fromVelocity.y());

@@ -56,6 +56,13 @@ struct CentreTolerances {
   // Relative motion slower than this, against the fastest body, is no relative motion: the
   // velocity-derived centre of that pair is undetermined.
   static constexpr double noMotion = 1e-12;
+  // Kennedy takes a centre from the two lines that fix it best, judged by the first-order error
+  // bound of their meeting point in units of inputAccuracy. Above `coincident` the lines (or
+  // the two centres a line would pass through) coincide to within what the positions resolve:
+  // 1e7 x 1e-13 = 1e-6 L. Meetings above `preferred` (lines at a small angle) are taken only
+  // when a pass finds nothing better, so that a later pass can offer better lines first.
+  static constexpr double preferred = 1e3;
+  static constexpr double coincident = 1e7;
 };
 
 struct InstantCentre {
@@ -157,6 +164,7 @@ class InstantCentreSolver {
   Vec2 turn(int body, const Vec2& v) const;
   void primaryCentres(const Kinematics& k);
   void kennedy();
+  bool kennedyPass(int round, double limit);
   void velocityCentres(const Kinematics& k);
   void finish(const Kinematics& k);
 

@@ -331,17 +331,40 @@ const PointLocation& Kinematics::locate(PointId p) const {
   return *loc;
 }
 
+const Rot& Kinematics::rotation(int body) const {
+  if (rot_.size() != static_cast<size_t>(sys_.nBodies)) {
+    rot_.assign(sys_.nBodies, Rot{});
+    rotAngle_.assign(sys_.nBodies, NAN);  // NaN never equals an angle: first use evaluates
+  }
+  const double th = cur_.q[3 * body + 2];
+  if (rotAngle_[body] != th) {
+    rot_[body] = Rot{std::cos(th), std::sin(th)};
+    rotAngle_[body] = th;
+  }
+  return rot_[body];
+}
+
 Vec2 Kinematics::position(PointId p) const {
-  return pointPosition(sys_, cur_.q, locate(p));
+  const PointLocation& l = locate(p);
+  if (l.body < 0) return l.s;
+  return cur_.q.segment<2>(3 * l.body) + rotation(l.body) * l.s;
 }
 
 Vec2 Kinematics::velocity(PointId p) const {
-  return omega() * pointVelocity(sys_, cur_.q, cur_.dq, locate(p));
+  const PointLocation& l = locate(p);
+  if (l.body < 0) return Vec2::Zero();
+  const int k = 3 * l.body;
+  return omega() * (cur_.dq.segment<2>(k) + cur_.dq[k + 2] * perp(rotation(l.body) * l.s));
 }
 
 Vec2 Kinematics::acceleration(PointId p) const {
+  const PointLocation& l = locate(p);
+  if (l.body < 0) return Vec2::Zero();
+  const int k = 3 * l.body;
+  const Vec2 g = rotation(l.body) * l.s;
   const double w = omega();
-  return w * w * pointAcceleration(sys_, cur_.q, cur_.dq, cur_.ddq, locate(p));
+  return w * w *
+         (cur_.ddq.segment<2>(k) + cur_.ddq[k + 2] * perp(g) - cur_.dq[k + 2] * cur_.dq[k + 2] * g);
 }
 
 double Kinematics::bodyAngle(BodyId b) const {

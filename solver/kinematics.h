@@ -104,6 +104,9 @@ class Kinematics {
   Status explainFailure(double phiFailed) const;
   std::string bodyList(const std::vector<int>& bodies) const;
   const PointLocation& locate(PointId p) const;
+  // cos and sin of a body's current angle, evaluated once per angle it takes (queries of
+  // several points of a body, or position, velocity and acceleration of one, share them).
+  const Rot& rotation(int body) const;
 
   KinematicsOptions opt_;
   Mechanism mech_;
@@ -115,7 +118,9 @@ class Kinematics {
   Snapshot cur_, reg_;  // current position and last regular one (the predictor's base)
   Snapshot next_;       // scratch for closed-form steps
   std::optional<ClosedFormPlan> plan_;
-  int regSign_ = 0;  // det J sign at reg_
+  mutable std::vector<Rot> rot_;
+  mutable std::vector<double> rotAngle_;  // the angle each rot_ entry was evaluated for
+  int regSign_ = 0;                       // det J sign at reg_
   bool valid_ = false;
 };
 

@@ -17,8 +17,7 @@ int System::bodyIndex(BodyId id) const {
 }
 
 const PointLocation* System::point(PointId id) const {
-  auto it = points.find(id.value);
-  return it == points.end() ? nullptr : &it->second;
+  return id.value < hasPoint.size() && hasPoint[id.value] ? &points[id.value] : nullptr;
 }
 
 namespace {
@@ -101,8 +100,13 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
     sys.bodyWeightXY[loc.body] += 1;
     sys.bodyWeightTheta[loc.body] += loc.s.squaredNorm();
   };
+  std::uint32_t maxId = 0;
+  for (const Point& p : m.points) maxId = std::max(maxId, p.id.value);
+  sys.points.assign(maxId + 1, PointLocation{});
+  sys.hasPoint.assign(maxId + 1, 0);
   for (const Point& p : m.points) {
     sys.points[p.id.value] = local(p.body, p.pos);
+    sys.hasPoint[p.id.value] = 1;
     weigh(p.body, p.pos);
   }
   for (const Slot& s : m.slots) {

@@ -10,7 +10,6 @@
 
 #include <Eigen/Core>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
 #include "geometry.h"
@@ -60,7 +59,9 @@ struct System {
   int bodyIndex(BodyId id) const;  // -1 for ground or unknown
   const PointLocation* point(PointId id) const;
 
-  std::unordered_map<std::uint32_t, PointLocation> points;
+  // Indexed by PointId value (ids are small and dense): a lookup per query, no hashing.
+  std::vector<PointLocation> points;
+  std::vector<char> hasPoint;
 };
 
 // Compiles the mechanism; a reference the model cannot resolve ends in BadModel with its place.

@@ -51,9 +51,11 @@ Status step(const InstantCentres& ics, int from, int to, const BodyMotion& motio
                   ic(from, to) + " and " + ic(1, to) + " are both at infinity, but body " +
                       std::to_string(from) + " turns: the centres are inconsistent");
     } else {
-      return fail(StatusCode::NotConverged,
-                  ic(from, to) + " and " + ic(1, to) + " are both at infinity: the step gives "
-                  "the direction of body " + std::to_string(to) + "'s translation, not its speed");
+      return fail(StatusCode::NotConverged, ic(from, to) + " and " + ic(1, to) +
+                                                " are both at infinity: the step gives "
+                                                "the direction of body " +
+                                                std::to_string(to) +
+                                                "'s translation, not its speed");
     }
     return Status::success();
   }
@@ -69,9 +71,9 @@ Status step(const InstantCentres& ics, int from, int to, const BodyMotion& motio
     const Vec2 r = s.centre - g->point();
     s.toArm = r.norm();
     if (!(s.toArm > 1e-9 * ics.size))
-      return fail(StatusCode::NotConverged,
-                  ic(from, to) + " coincides with " + ic(1, to) + ": the step does not fix body " +
-                      std::to_string(to) + "'s angular velocity");
+      return fail(StatusCode::NotConverged, ic(from, to) + " coincides with " + ic(1, to) +
+                                                ": the step does not fix body " +
+                                                std::to_string(to) + "'s angular velocity");
     out.kind = BodyMotion::Kind::Turns;
     out.pivot = g->point();
     // v_P = omega perp(r), so r x v_P = omega |r|^2.
@@ -163,9 +165,9 @@ VelocityChain velocityChain(const Kinematics& k, const InstantCentres& ics, Poin
   std::vector<int> bodies{ch.crank};
   for (int v : via) {
     if (v == 1 || !ics.bodyNumbered(v)) {
-      ch.status = fail(StatusCode::BadModel,
-                       v == 1 ? "the chain cannot go through the ground (body 1)"
-                              : "no body numbered " + std::to_string(v));
+      ch.status =
+          fail(StatusCode::BadModel, v == 1 ? "the chain cannot go through the ground (body 1)"
+                                            : "no body numbered " + std::to_string(v));
       return ch;
     }
     if (v == bodies.back()) {
