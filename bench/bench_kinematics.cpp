@@ -70,5 +70,3 @@ BENCHMARK_CAPTURE(kinematicStep, four_bar, std::string("four-bar-crank-rocker"))
 BENCHMARK_CAPTURE(kinematicStep, wanzer, std::string("wanzer-inversion-2"))->Name("step/wanzer");
 
 }  // namespace
-
-

@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 BUILD_DIR=${1:-build}
 
 packages=(cmake ninja-build g++ libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
-          qt6-base-dev qt6-svg-dev libqcustomplot-dev xvfb xauth fonts-dejavu-core locales)
+          qt6-base-dev qt6-svg-dev libqcustomplot-dev xvfb xauth fonts-dejavu-core locales python3)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -32,12 +32,12 @@ void NewtonSolver::viewsAt(const System& sys, const Eigen::VectorXd& q) {
   viewsQ_ = q;
 }
 
-double NewtonSolver::tolerance(const System& sys, const Eigen::VectorXd& q) const {
+double NewtonSolver::tolerance(const System& sys, const Eigen::VectorXd& q, double relTol) const {
   // Rounding in a residual grows with the coordinates' magnitude, not only with L.
   double scale = sys.size;
   for (int k = 0; k < sys.nBodies; ++k)
     scale = std::max(scale, std::max(std::abs(q[3 * k]), std::abs(q[3 * k + 1])));
-  return 1e-13 * scale;
+  return relTol * scale;
 }
 
 bool NewtonSolver::factor(const System& sys, const Eigen::VectorXd& q) {
@@ -72,7 +72,7 @@ NewtonResult NewtonSolver::solve(const System& sys, Eigen::VectorXd& q, double p
       res.failure = NewtonFailure::Diverged;
       return res;
     }
-    const double tol = tolerance(sys, q);
+    const double tol = tolerance(sys, q, opt.relTol);
     // Within tolerance but above rounding (a few eps of the coordinates): one more chord
     // correction, nearly free with the factorisation at hand, takes it to rounding level.
     if (res.residual <= tol && (polished || !haveLU || res.residual <= 0.05 * tol)) {

@@ -19,6 +19,9 @@ namespace linkage {
 
 struct NewtonOptions {
   int maxIterations = 12;
+  // Converged when max |Phi| <= relTol * max(L, |x|, |y|): 1e-13 is a few hundred roundings of a
+  // coordinate; looser values exist to measure what accuracy costs (docs/accuracy-and-speed.md).
+  double relTol = 1e-13;
   // Tracking: a first correction larger than this fraction of L means the predictor is not near
   // this branch; the step is refused rather than let Newton wander to another branch.
   double maxFirstStep = 0.1;
@@ -62,7 +65,7 @@ class NewtonSolver {
   bool factor(const System& sys, const Eigen::VectorXd& q);
   // Body views at q; sin and cos are evaluated again only when q changed.
   void viewsAt(const System& sys, const Eigen::VectorXd& q);
-  double tolerance(const System& sys, const Eigen::VectorXd& q) const;
+  double tolerance(const System& sys, const Eigen::VectorXd& q, double relTol) const;
 
   std::vector<int> rowMap_;
   std::vector<BodyView> views_;
