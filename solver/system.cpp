@@ -78,8 +78,20 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
     addGeometry(s.body, s.p0);
     addGeometry(s.body, s.p1);
   }
+  // Beyond these, squares of lengths overflow or every length drowns in rounding: refuse
+  // rather than return numbers that mean nothing.
+  constexpr double kLargest = 1e12, kSmallest = 1e-9;  // mm
+  if (lo.allFinite() && std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) > kLargest) {
+    status = bad("coordinates beyond 1e12 mm: the drawing is too large to compute with");
+    return std::nullopt;
+  }
   sys.size = (lo.allFinite() && hi.allFinite()) ? (hi - lo).norm() : 1.0;
-  if (!(sys.size > 0)) sys.size = 1.0;
+  if (lo.allFinite() && sys.size < kSmallest * std::max(1.0, hi.cwiseAbs().maxCoeff())) {
+    status =
+        bad("the drawing's extent is below 1e-9 of its size or distance from the origin "
+            "(or all its points coincide): rounding would swamp it");
+    return std::nullopt;
+  }
   const double L = sys.size;
 
   sys.frameOrigin.resize(sys.nBodies);

@@ -230,5 +230,25 @@ TEST(Compile, JointOnOneBodyAndMissingGroundAreBadModels) {
   EXPECT_EQ(k.load(n).code, StatusCode::BadModel);
 }
 
+TEST(Compile, AbsurdSizesAreRefusedWithAReason) {
+  auto f = fourBar(60, 20, 70, 50, 60);
+  Mechanism huge = f.m, tiny = f.m;
+  for (Point& p : huge.points) p.pos *= 1e11;
+  for (Point& p : tiny.points) p.pos *= 1e-12;
+  Kinematics k;
+  Status s = k.load(huge);
+  EXPECT_EQ(s.code, StatusCode::BadModel);
+  EXPECT_NE(s.message.find("too large"), std::string::npos) << s.message;
+  s = k.load(tiny);
+  EXPECT_EQ(s.code, StatusCode::BadModel);
+  EXPECT_NE(s.message.find("rounding"), std::string::npos) << s.message;
+  // 1e4 times larger and 1e-3 times smaller are fine (tests/test_stress.cpp checks accuracy).
+  Mechanism big = f.m, small = f.m;
+  for (Point& p : big.points) p.pos *= 1e4;
+  for (Point& p : small.points) p.pos *= 1e-3;
+  EXPECT_TRUE(k.load(big).ok());
+  EXPECT_TRUE(k.load(small).ok());
+}
+
 }  // namespace
 }  // namespace linkage
