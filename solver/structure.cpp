@@ -12,21 +12,22 @@ namespace {
 constexpr double kDependent = 1e-8;
 
 struct Basis {
-  explicit Basis(int n) : Q(n, 0) {}
-  Eigen::MatrixXd Q;  // columns orthonormal
-  int size() const { return static_cast<int>(Q.cols()); }
+  explicit Basis(int n) : Q(n, n) {}  // room for all n columns: no reallocation per row
+  Eigen::MatrixXd Q;                  // the first `count` columns are orthonormal
+  int count = 0;
+  int size() const { return count; }
+  auto basis() const { return Q.leftCols(count); }
 
   // Returns true and extends the basis if v is independent.
   bool add(Eigen::VectorXd v) {
     const double n0 = v.norm();
-    if (n0 == 0) return false;
+    if (n0 == 0 || count == Q.cols()) return false;
     v /= n0;
     for (int pass = 0; pass < 2; ++pass)
-      if (size() > 0) v -= Q * (Q.transpose() * v);
+      if (count > 0) v -= basis() * (basis().transpose() * v);
     const double n1 = v.norm();
     if (n1 < kDependent) return false;
-    Q.conservativeResize(Eigen::NoChange, size() + 1);
-    Q.col(size() - 1) = v / n1;
+    Q.col(count++) = v / n1;
     return true;
   }
 };
@@ -86,7 +87,7 @@ Structure analyzeStructure(const System& sys, const Eigen::VectorXd& q) {
       if (basis.add(Eigen::VectorXd::Unit(n, col))) s.holdCoordinates.push_back(col);
       if (basis.size() == n) break;
     }
-    s.nullBasis = basis.Q.rightCols(basis.size() - before);
+    s.nullBasis = basis.Q.middleCols(before, basis.size() - before);
     for (int k = 0; k < sys.nBodies; ++k)
       if (s.nullBasis.middleRows(3 * k, 3).norm() > 1e-7) s.freeBodies.push_back(k);
   }

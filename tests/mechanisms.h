@@ -97,4 +97,41 @@ inline SliderCrank sliderCrank(double r, double l, double e, double crankDeg,
   return s;
 }
 
+// A chain of `loops` four-bars along the x axis: loop k has ground pivots at 60k and 60k + 60;
+// loop 0's crank is driven, and the rocker of loop k, extended, is the input of loop k + 1.
+// 1 + 2 loops bodies; every loop after the first is a dyad on the previous one.
+inline Mechanism fourBarChain(int loops) {
+  Mechanism m;
+  const BodyId g = m.addBody("ground", true);
+  auto circle = [](Vec2 a, double ra, Vec2 b, double rb) {  // upper intersection
+    const Vec2 e = b - a;
+    const double d = e.norm(), x = (ra * ra - rb * rb + d * d) / (2 * d);
+    const double h = std::sqrt(std::max(0.0, ra * ra - x * x));
+    const Vec2 u = e / d;
+    return Vec2(a + x * u + h * Vec2(-u.y(), u.x()));
+  };
+  BodyId input = m.addBody("crank");
+  const Vec2 O0(0, 0);
+  const JointId drive = m.addPin(m.addPoint(g, "O0", O0), m.addPoint(input, "O0", O0));
+  Vec2 pivot = O0, A = Vec2(20 * std::cos(1.0), 20 * std::sin(1.0));
+  PointId inputA = m.addPoint(input, "A", A);
+  for (int k = 0; k < loops; ++k) {
+    const std::string n = std::to_string(k);
+    const Vec2 O4 = pivot + Vec2(60, 0);
+    const Vec2 B = circle(A, 70, O4, 50);
+    const BodyId coupler = m.addBody("coupler" + n), rocker = m.addBody("rocker" + n);
+    m.addPin(inputA, m.addPoint(coupler, "A", A));
+    m.addPin(m.addPoint(coupler, "B", B), m.addPoint(rocker, "B", B));
+    m.addPin(m.addPoint(rocker, "O4", O4), m.addPoint(g, "O4_" + n, O4));
+    // The next loop's input: the rocker extended beyond its pivot, 20 mm long.
+    const Vec2 next = O4 + 20 * (O4 - B).normalized();
+    pivot = O4;
+    A = next;
+    inputA = m.addPoint(rocker, "A", A);
+  }
+  m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
+  m.outputs = {inputA};
+  return m;
+}
+
 }  // namespace linkage::test

@@ -105,6 +105,11 @@ TEST(ClosedForm, WanzerTriadAsACoreGroupMatchesTheGeneralSolve) {
   }
 }
 
+TEST(ClosedForm, ChainOfTenFourBarsMatchesTheGeneralSolve) {
+  const Mechanism m = test::fourBarChain(10);  // 21 bodies, 63 coordinates
+  expectSameMotion(m, {m.outputs[0]}, 720, "chain of 10 four-bars");
+}
+
 TEST(ClosedFormCoverage, TakenOnlyWhereTheMechanismDecomposes) {
   // Wanzer-like triads, redundant joints and mechanisms with free freedoms use the general solve.
   auto f = test::fourBar(60, 20, 70, 50, 60);
