@@ -17,6 +17,16 @@ double chordal(const Vec3& a, const Vec3& b) {
   return a.cross(b).norm();
 }
 
+// a x b and its norm, in scalars: the hot loop of Kennedy's passes, written so that the compiler
+// keeps it in registers.
+inline double crossNorm(const Vec3& a, const Vec3& b, Vec3& out) {
+  const double x = a[1] * b[2] - a[2] * b[1];
+  const double y = a[2] * b[0] - a[0] * b[2];
+  const double z = a[0] * b[1] - a[1] * b[0];
+  out = Vec3(x, y, z);
+  return std::sqrt(x * x + y * y + z * z);
+}
+
 Status bad(std::string msg) {
   return Status::failure(StatusCode::BadModel, std::move(msg));
 }
@@ -24,27 +34,15 @@ Status bad(std::string msg) {
 }  // namespace
 
 const char* toString(CentreStatus s) {
-  switch (s) {
-    case CentreStatus::Primary:
-      return "primary";
-    case CentreStatus::Kennedy:
-      return "kennedy";
-    case CentreStatus::Velocity:
-      break;
-  }
-  return "velocity";
+  return s == CentreStatus::Primary   ? "primary"
+         : s == CentreStatus::Kennedy ? "kennedy"
+                                      : "velocity";
 }
 
 const char* toString(KennedyFailure f) {
-  switch (f) {
-    case KennedyFailure::None:
-      return "";
-    case KennedyFailure::TooFewLines:
-      return "fewer than two lines through known centres";
-    case KennedyFailure::LinesCoincide:
-      break;
-  }
-  return "the lines through known centres coincide";
+  return f == KennedyFailure::None          ? ""
+         : f == KennedyFailure::TooFewLines ? "fewer than two lines through known centres"
+                                            : "the lines through known centres coincide";
 }
 
 const InstantCentre* InstantCentres::find(int i, int j) const {
@@ -76,24 +74,29 @@ Status textbookNumbers(const Mechanism& m, std::vector<BodyId>& bodies, std::vec
   bodies.clear();
   numbers.clear();
   if (!m.ground()) return bad("no body is the ground");
-  std::vector<std::pair<int, BodyId>> list;
-  std::vector<const Body*> byNumber;  // to name the first holder of a number
-  for (const Body& b : m.bodies) {
+  std::vector<std::pair<int, BodyId>> list;  // (number, body)
+  auto refuse = [&](size_t i, const std::string& why) {
+    Status s = bad("bodies[" + std::to_string(i) + "] '" + m.bodies[i].name + "' " + why);
+    s.bodies.push_back(m.bodies[i].id);
+    return s;
+  };
+  for (size_t i = 0; i < m.bodies.size(); ++i) {
+    const Body& b = m.bodies[i];
     if (!b.number) continue;
     const int num = *b.number;
-    const std::string name = "body '" + b.name + "'";
     if (b.ground && num != 1)
-      return bad(name + " is the ground, which is number 1 for instant centres; its number is " +
-                 std::to_string(num));
+      return refuse(i, "is the ground, which is number 1 for instant centres; its number is " +
+                           std::to_string(num));
     if (!b.ground && num < 2)
-      return bad(name + " has number " + std::to_string(num) +
-                 ": 1 is the ground's, the other bodies take 2 and up");
+      return refuse(i, "has number " + std::to_string(num) +
+                           ": 1 is the ground's, the other bodies take 2 and up");
     for (const auto& [n, id] : list)
       if (n == num)
-        return bad(name + " and body '" + m.body(id)->name + "' have the same number " +
-                   std::to_string(num));
+        return refuse(i, "has number " + std::to_string(num) + ", as has body '" +
+                             m.body(id)->name + "': instant-centre numbers must be unique");
     list.emplace_back(num, b.id);
   }
+  // The others take the smallest free numbers, in file order.
   auto taken = [&](int num) {
     return std::any_of(list.begin(), list.end(), [&](const auto& e) { return e.first == num; });
   };
@@ -178,6 +181,11 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
   std::stable_sort(found.begin(), found.end(),
                    [](const auto& x, const auto& y) { return x.first < y.first; });
   const int pairs = n_ * (n_ - 1) / 2;
+  pairIndex_.assign(n_ * n_, -1);
+  for (int a = 0; a < n_; ++a)
+    for (int b = 0; b < n_; ++b)
+      if (a != b) pairIndex_[n_ * a + b] = pair(a, b);
+  open_.reserve(pairs);
   work_.assign(pairs, Work{});
   primaries_.clear();
   for (const auto& [p, prim] : found) {
@@ -227,11 +235,11 @@ Vec3 InstantCentreSolver::toPublic(const Vec3& h) const {
     if (d.x() < -1e-12 || (std::abs(d.x()) <= 1e-12 && d.y() < 0)) d = -d;
     return Vec3(d.x(), d.y(), 0.0);
   }
-  const Vec2 p = centre_ + L_ * xy / h.z();
+  const Vec2 p = centre_ + (L_ / h.z()) * xy;
   return Vec3(p.x(), p.y(), 1.0);
 }
 
-void InstantCentreSolver::primaryCentres(const Kinematics&) {
+void InstantCentreSolver::primaryCentres() {
   for (int p = 0; p < static_cast<int>(work_.size()); ++p) {
     Work& w = work_[p];
     InstantCentre& c = out_.centres[p];
@@ -311,74 +319,85 @@ void InstantCentreSolver::primaryCentres(const Kinematics&) {
 
 void InstantCentreSolver::kennedy() {
   out_.kennedyRounds = 0;
+  open_.clear();
+  for (int a = 0; a < n_; ++a)
+    for (int b = a + 1; b < n_; ++b) {
+      const int p = pairIndex_[n_ * a + b];
+      if (work_[p].found < 0 && !work_[p].rigid) open_.push_back({p, a, b});
+    }
   // Circle-diagram passes: a pass finds every pair with two lines through centres known before
   // it, so what a pass finds depends on earlier passes only, never on the order of the pairs.
   // Well-conditioned meetings first; a pass takes poorly conditioned ones only when nothing else
   // is left to find.
-  for (int round = 1;; ++round) {
+  for (int round = 1; !open_.empty(); ++round) {
     if (!kennedyPass(round, CentreTolerances::preferred) &&
         !kennedyPass(round, CentreTolerances::coincident))
       break;
     out_.kennedyRounds = round;
+    open_.erase(std::remove_if(open_.begin(), open_.end(),
+                               [&](const Open& o) { return work_[o.pair].found >= 0; }),
+                open_.end());
   }
 }
 
 bool InstantCentreSolver::kennedyPass(int round, double limit) {
-  auto known = [](const Work& w, int r) { return w.found >= 0 && w.found < r; };
+  auto known = [round](const Work& w) { return w.found >= 0 && w.found < round; };
   const bool last = limit >= CentreTolerances::coincident;
   bool progress = false;
-  for (int a = 0; a < n_; ++a)
-    for (int b = a + 1; b < n_; ++b) {
-      const int p = pair(a, b);
-      Work& w = work_[p];
-      if (w.found >= 0 || w.rigid) continue;
-      InstantCentre& c = out_.centres[p];
-      cand_.clear();
-      int degenerate = 0;
-      for (int k = 0; k < n_; ++k) {
-        if (k == a || k == b) continue;
-        const Work& wa = work_[pair(a, k)];
-        const Work& wb = work_[pair(k, b)];
-        if (!known(wa, round) || !known(wb, round)) continue;
-        const Vec3 l = wa.h.cross(wb.h);
-        const double s = l.norm();
-        const double e = (wa.err + wb.err) / s;
-        if (!(e <= limit)) {  // the two centres coincide (or nearly): no (usable) line
-          ++degenerate;
-          continue;
-        }
-        cand_.push_back({l / s, e, CentreLine{out_.numbers[k], -1}});
-      }
-      if (w.hasLine) cand_.push_back({w.line, w.lineErr, CentreLine{0, w.lineJoint}});
-      // The two lines that fix the centre best: smallest first-order error bound.
-      double best = INFINITY;
-      int bx = -1, by = -1;
-      Vec3 bestX = Vec3::Zero();
-      for (size_t x = 0; x < cand_.size(); ++x)
-        for (size_t y = x + 1; y < cand_.size(); ++y) {
-          const Vec3 v = cand_[x].line.cross(cand_[y].line);
-          const double e = (cand_[x].err + cand_[y].err) / v.norm();
-          if (e < best) {
-            best = e;
-            bx = static_cast<int>(x), by = static_cast<int>(y);
-            bestX = v;
-          }
-        }
-      if (!(best <= limit)) {
-        if (last)
-          c.kennedyFailure = cand_.size() + degenerate >= 2 ? KennedyFailure::LinesCoincide
-                                                            : KennedyFailure::TooFewLines;
+  for (const Open& o : open_) {
+    Work& w = work_[o.pair];
+    if (w.found >= 0) continue;  // found earlier in this round
+    InstantCentre& c = out_.centres[o.pair];
+    cand_.clear();
+    int degenerate = 0;
+    const int* fromA = &pairIndex_[n_ * o.a];
+    const int* fromB = &pairIndex_[n_ * o.b];
+    for (int k = 0; k < n_; ++k) {
+      if (k == o.a || k == o.b) continue;
+      const Work& wa = work_[fromA[k]];
+      const Work& wb = work_[fromB[k]];
+      if (!known(wa) || !known(wb)) continue;
+      Vec3 l;
+      const double s = crossNorm(wa.h, wb.h, l), e = wa.err + wb.err;
+      if (!(e <= limit * s)) {  // the two centres coincide (or nearly): no (usable) line
+        ++degenerate;
         continue;
       }
-      w.h = bestX.normalized();
-      w.err = best;
-      w.found = round;
-      c.status = CentreStatus::Kennedy;
-      c.lines = {cand_[bx].from, cand_[by].from};
-      c.round = round;
-      c.kennedyFailure = KennedyFailure::None;
-      progress = true;
+      cand_.push_back({l, s, e, CentreLine{out_.numbers[k], -1}});
     }
+    if (w.hasLine) cand_.push_back({w.line, 1.0, w.lineErr, CentreLine{0, w.lineJoint}});
+    // The two lines that fix the centre best: smallest first-order error bound, which for unit
+    // lines l, m is (err_l + err_m) / |l x m|; compared by cross-multiplication (no divisions).
+    double bestNum = INFINITY, bestDen = 1;
+    int bx = -1, by = -1;
+    Vec3 bestX = Vec3::Zero();
+    for (size_t x = 0; x < cand_.size(); ++x)
+      for (size_t y = x + 1; y < cand_.size(); ++y) {
+        Vec3 v;
+        const double den = crossNorm(cand_[x].line, cand_[y].line, v);
+        const double num = cand_[x].err * cand_[y].norm + cand_[y].err * cand_[x].norm;
+        if (num * bestDen < bestNum * den) {
+          bestNum = num, bestDen = den;
+          bx = static_cast<int>(x), by = static_cast<int>(y);
+          bestX = v;
+        }
+      }
+    if (!(bestNum <= limit * bestDen)) {
+      if (last)
+        c.kennedyFailure = cand_.size() + degenerate >= 2 ? KennedyFailure::LinesCoincide
+                                                          : KennedyFailure::TooFewLines;
+      continue;
+    }
+    const double best = bestNum / bestDen;
+    w.h = bestX / bestDen;
+    w.err = best;
+    w.found = round;
+    c.status = CentreStatus::Kennedy;
+    c.lines = {cand_[bx].from, cand_[by].from};
+    c.round = round;
+    c.kennedyFailure = KennedyFailure::None;
+    progress = true;
+  }
   return progress;
 }
 
@@ -389,7 +408,8 @@ void InstantCentreSolver::velocityCentres(const Kinematics& k) {
   const Eigen::VectorXd& dq = k.dq();
   // Each body's twist per radian of the driver, taken at the middle of the drawing: the velocity
   // there over L, and the angular velocity.
-  double fastest = 0;
+  double fastest2 = 0;
+  const double invL = 1 / L_;
   for (int t = 0; t < n_; ++t) {
     const int s = sysIndex_[t];
     if (s < 0) {
@@ -399,25 +419,26 @@ void InstantCentreSolver::velocityCentres(const Kinematics& k) {
     const double w = dq[3 * s + 2];
     const Vec2 v =
         Vec2(dq[3 * s], dq[3 * s + 1]) + w * perp(centre_ - Vec2(q[3 * s], q[3 * s + 1]));
-    twist_[t] = Vec3(v.x() / L_, v.y() / L_, w);
-    fastest = std::max(fastest, twist_[t].norm());
+    twist_[t] = Vec3(v.x() * invL, v.y() * invL, w);
+    fastest2 = std::max(fastest2, twist_[t].squaredNorm());
   }
+  const double fastest = std::sqrt(fastest2), invFastest = 1 / fastest;
   for (int a = 0; a < n_; ++a)
     for (int b = a + 1; b < n_; ++b) {
-      Work& w = work_[pair(a, b)];
+      Work& w = work_[pairIndex_[n_ * a + b]];
       const Vec3 rel = twist_[b] - twist_[a];
       // v + omega perp(P - centre) = 0 at P = centre + perp(v) / omega: in homogeneous
       // coordinates (perp(v) / L, omega), at infinity (perpendicular to v) when omega = 0.
       const Vec3 h(-rel.y(), rel.x(), rel.z());
       const double norm = h.norm();
       if (!(norm > CentreTolerances::noMotion * fastest)) continue;
-      w.vel = h / norm;
-      w.velNorm = norm / fastest;
+      w.vel = h * (1 / norm);
+      w.velNorm = norm * invFastest;
       w.velDetermined = true;
     }
 }
 
-void InstantCentreSolver::finish(const Kinematics&) {
+void InstantCentreSolver::finish() {
   out_.disagreements.clear();
   for (int p = 0; p < static_cast<int>(work_.size()); ++p) {
     const Work& w = work_[p];
@@ -446,10 +467,10 @@ void InstantCentreSolver::finish(const Kinematics&) {
     c.checked = true;
     if (c.h.z() != 0 && c.fromVelocity.z() != 0) {
       const Vec2 a = c.point(), b(c.fromVelocity.x(), c.fromVelocity.y());
-      const double r = std::max((a - centre_).norm(), (b - centre_).norm()) / L_;
+      const double r2 = std::max((a - centre_).squaredNorm(), (b - centre_).squaredNorm());
       c.euclidean = true;
       c.difference = (a - b).norm();
-      c.tolerance = tol * L_ * std::max(1.0, r * r);  // far centres are known less sharply
+      c.tolerance = tol * L_ * std::max(1.0, r2 / (L_ * L_));  // far centres: less sharp
     } else {
       c.difference = chordal(w.h, w.vel);
       c.tolerance = tol;
@@ -461,19 +482,23 @@ void InstantCentreSolver::finish(const Kinematics&) {
 
 const InstantCentres& InstantCentreSolver::compute(const Kinematics& k) {
   if (n_ == 0 || !out_.status.ok()) return out_;
+  const System& sys = k.system();
+  if (!k.valid() || sys.nBodies + 1 != static_cast<int>(origin_.size())) {
+    out_.status = bad("the kinematics hold another mechanism than the one prepared");
+    return out_;
+  }
   out_.crankDeg = k.crankDeg();
   out_.velocitiesValid = k.derivativesValid();
-  const System& sys = k.system();
   const Eigen::VectorXd& q = k.q();
   for (int s = 0; s < sys.nBodies; ++s) {
     origin_[s + 1] = Vec2(q[3 * s], q[3 * s + 1]);
     cos_[s + 1] = std::cos(q[3 * s + 2]);
     sin_[s + 1] = std::sin(q[3 * s + 2]);
   }
-  primaryCentres(k);
+  primaryCentres();
   kennedy();
   velocityCentres(k);
-  finish(k);
+  finish();
   return out_;
 }
 

@@ -48,7 +48,10 @@ struct CentreTolerances {
   // Relative accuracy of the positions and velocities the kinematic core delivers (its Newton
   // closes the joints to 1e-13 L).
   static constexpr double inputAccuracy = 1e-13;
-  // Disagreement between a Primary or Kennedy centre and the velocity-derived one that is reported.
+  // A Primary or Kennedy centre farther than this from the velocity-derived one is reported
+  // (chordal; 1e-9 L for finite centres within L of the middle), or farther than the two
+  // derivations' own first-order bounds where those are larger (lines meeting at a small angle,
+  // a slow relative motion).
   static constexpr double check = 1e-9;
   // A centre with |w| <= infinity * |(x, y)| is at infinity: more than 1e10 L away, where
   // positions known to 1e-13 L no longer fix a distance.
@@ -110,7 +113,7 @@ struct InstantCentres {
   std::vector<int> numbers;            // textbook number of bodies[t], ascending, numbers[0] = 1
   std::vector<InstantCentre> centres;  // one per pair, (i, j) ascending
   std::vector<CentreDisagreement> disagreements;
-  int kennedyRounds = 0;  // passes that found something
+  int kennedyRounds = 0;  // circle-diagram rounds that found something
 
   const InstantCentre* find(int i, int j) const;  // numbers in either order; nullptr if unknown
   int numberOf(BodyId b) const;                   // 0 when unknown
@@ -141,19 +144,21 @@ class InstantCentreSolver {
     int slotBody = -1;      // slider, pin-in-slot: system body index of the slot
     Vec2 n = Vec2::Zero();  // slot normal in the slot body's frame
   };
-  struct Work {  // per pair, scaled homogeneous (unit 3-vectors)
-    Eigen::Vector3d h, line, vel;
+  struct Work {  // per pair, scaled homogeneous (unit 3-vectors); what Kennedy reads first
+    Eigen::Vector3d h;
+    double err = 0;
+    int found = -1;  // round found in: 0 primary, >= 1 Kennedy, -1 not (yet)
+    bool rigid = false, hasLine = false, exact = false, velDetermined = false;
+    Eigen::Vector3d line, vel;
     Eigen::Vector3d mm;  // a joint's own point or slot normal, as given (public convention)
-    double err = 0, lineErr = 0;
+    double lineErr = 0;
     double velNorm = 0;  // relative motion against the fastest body's
-    int found = -1;      // round found in: 0 primary, >= 1 Kennedy, -1 not (yet)
     int lineJoint = -1;
-    bool hasLine = false, rigid = false, velDetermined = false, exact = false;
     int firstPrimary = 0, primaryCount = 0;  // range in primaries_
   };
-  struct Candidate {
+  struct Candidate {  // a line, not normalised: the error bound of its unit form is err / norm
     Eigen::Vector3d line;
-    double err;
+    double norm, err;
     CentreLine from;
   };
 
@@ -162,11 +167,11 @@ class InstantCentreSolver {
   Eigen::Vector3d toPublic(const Eigen::Vector3d& h) const;
   Vec2 global(int body, const Vec2& s) const;  // system body index
   Vec2 turn(int body, const Vec2& v) const;
-  void primaryCentres(const Kinematics& k);
+  void primaryCentres();
   void kennedy();
   bool kennedyPass(int round, double limit);
   void velocityCentres(const Kinematics& k);
-  void finish(const Kinematics& k);
+  void finish();
 
   int n_ = 0;
   std::vector<int> sysIndex_;       // textbook index -> system body index (-1 ground)
@@ -174,6 +179,11 @@ class InstantCentreSolver {
   std::vector<Primary> primaries_;  // grouped by pair
   std::vector<Work> work_;
   std::vector<Candidate> cand_;
+  std::vector<int> pairIndex_;  // n * a + b -> pair
+  struct Open {
+    int pair, a, b;
+  };
+  std::vector<Open> open_;    // pairs Kennedy has yet to find
   std::vector<Vec2> origin_;  // per textbook index: frame position at this position
   std::vector<double> cos_, sin_;
   std::vector<Eigen::Vector3d> twist_;  // per textbook index: (v at centre_ / L, omega) per rad

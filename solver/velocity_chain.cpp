@@ -1,5 +1,6 @@
 #include "velocity_chain.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
