@@ -52,13 +52,14 @@ class ClosedFormPlan {
   enum class Kind { Crank, RRR, RRP, RP, Core };
   struct Group {
     Kind kind = Kind::Crank;
-    int b1 = -1, b2 = -1;       // unknown bodies (b2 unused for Crank and RP)
-    int k1 = -1, k2 = -1;       // known bodies they attach to (-1 ground)
-    Vec2 p1k, p1;               // pin to k1: on k1, on b1
-    Vec2 c1, c2;                // the joint C: on b1 (and on b2 for RRR, RRP)
-    Vec2 p2, p2k;               // RRR: pin to k2: on b2, on k2
-    Vec2 u, n, d;               // RRP, RP: slot point, unit normal and direction on k2
-    Vec2 q2;                    // RRP: the block's point on the slot line
+    int b1 = -1, b2 = -1;                        // unknown bodies (b2 unused for Crank and RP)
+    int k1 = -1, k2 = -1;                        // known bodies they attach to (-1 ground)
+    Vec2 p1k = Vec2::Zero(), p1 = Vec2::Zero();  // pin to k1: on k1, on b1
+    Vec2 c1 = Vec2::Zero(), c2 = Vec2::Zero();   // the joint C: on b1 (and on b2 for RRR, RRP)
+    Vec2 p2 = Vec2::Zero(), p2k = Vec2::Zero();  // RRR: pin to k2: on b2, on k2
+    Vec2 u = Vec2::Zero(), n = Vec2::Zero(),
+         d = Vec2::Zero();      // RRP, RP: slot point, unit normal and direction on k2
+    Vec2 q2 = Vec2::Zero();     // RRP: the block's point on the slot line
     double dir1 = 0, dir2 = 0;  // local angles of (c1 - p1) and (c2 - p2) on their bodies
     double sign = 1;            // Crank: +-sigma; RRR, RRP, RP: the drawn branch
     int core = -1;              // Core: index into cores_

@@ -19,13 +19,13 @@
 namespace linkage {
 
 struct CoreLink {
-  bool pin = false;  // pin to the known body (2 rows), else the point on its slot line (1 row)
-  int known = -1;    // -1 ground
-  Vec2 s;            // the core's point
-  Vec2 ks;           // pin: the known body's point; line: a point of the (shifted) line
-  Vec2 n;            // line: its unit normal, in the known body's frame
-  int block = -1;    // an eliminated block, or -1
-  Vec2 blockPin;     // the block's pin point, in its frame
+  bool pin = false;       // pin to the known body (2 rows), else the point on its slot line (1 row)
+  int known = -1;         // -1 ground
+  Vec2 s = Vec2::Zero();  // the core's point
+  Vec2 ks = Vec2::Zero();        // pin: the known body's point; line: a point of the (shifted) line
+  Vec2 n = Vec2::Zero();         // line: its unit normal, in the known body's frame
+  int block = -1;                // an eliminated block, or -1
+  Vec2 blockPin = Vec2::Zero();  // the block's pin point, in its frame
 };
 
 struct CoreGroup {
