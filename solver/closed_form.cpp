@@ -75,6 +75,14 @@ bool solve2(const Vec2& a, const Vec2& b, const Vec2& rhs, double& x, double& y)
   return true;
 }
 
+// Where body b's local point s would be after h more radians of crank, on its smooth path:
+// second-order Taylor from the previous position, rates and accelerations.
+Vec2 predicted(int b, const Vec2& s, double h, const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
+               const Eigen::VectorXd& ddq) {
+  const State st = stateOf(b, q, dq, ddq);
+  return st.pos(s) + h * st.vel(s) + (0.5 * h * h) * st.acc(s);
+}
+
 }  // namespace
 
 std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const System& sys,
@@ -323,6 +331,11 @@ bool ClosedFormPlan::solve(const System& sys, double prevPhi, double phi, Eigen:
       continue;
     }
     const double d1 = (g.c1 - g.p1).norm();
+    // The joint C as the smooth motion would carry it: if that lands on the other side of the
+    // branch line than the drawn branch, the motion crosses a singular position (a change
+    // point, or a dead point ahead), where the intersection formula would reflect onto the
+    // other branch. The general solve takes over there and reports it.
+    const Vec2 Cpred = predicted(g.b1, g.c1, phi - prevPhi, q, dq, ddq);
     Vec2 C, u1 = Vec2::Zero();
     double w1 = 0, al1 = 0;
     if (g.kind == Kind::RRR) {
@@ -336,6 +349,7 @@ bool ClosedFormPlan::solve(const System& sys, double prevPhi, double phi, Eigen:
       const double a = (d1 * d1 - d2 * d2 + L * L) / (2 * L);
       const double h2 = d1 * d1 - a * a;
       if (!(h2 >= 0)) return false;
+      if (g.sign * cross(eh, Cpred - P1) < 0) return false;
       C = P1 + a * eh + g.sign * std::sqrt(h2) * perp(eh);
       u1 = C - P1;
       const Vec2 u2 = C - P2;
@@ -353,6 +367,7 @@ bool ClosedFormPlan::solve(const System& sys, double prevPhi, double phi, Eigen:
       const double lam2 = d1 * d1 - delta * delta;
       if (!(lam2 >= 0)) return false;
       const Vec2 foot = P1 + delta * n;
+      if (g.sign * dir.dot(Cpred - foot) < 0) return false;
       C = foot + g.sign * std::sqrt(lam2) * dir;
       u1 = C - P1;
       // C = U + s dir - w, with the block turning with k2 (w' = w_k2 perp(w)).

@@ -168,12 +168,18 @@ Kinematics::StepResult Kinematics::tryStep(double phiNext, Snapshot& out) {
   const double h = phiNext - reg_.phi;
   out.phi = phiNext;
   out.q = reg_.q + h * reg_.dq + (0.5 * h * h) * reg_.ddq;
+  lastRefusalCrossing_ = false;
   if (!newton_.solve(sys_, out.q, phiNext, opt_.newton).converged) return StepResult::Refused;
   if (!newton_.derivatives(sys_, out.q, out.dq, out.ddq)) {
+    // No velocities here: NaN, sized, so a caller that does not check derivativesValid() gets
+    // an obviously undefined number rather than a stale or out-of-range one.
+    out.dq = Eigen::VectorXd::Constant(sys_.nCoords(), NAN);
+    out.ddq = out.dq;
     out.regular = false;
     return StepResult::Singular;
   }
-  if (newton_.detSign() != regSign_) return StepResult::Refused;
+  lastRefusalCrossing_ = newton_.detSign() != regSign_;
+  if (lastRefusalCrossing_) return StepResult::Refused;
   out.regular = true;
   return StepResult::Accepted;
 }
@@ -251,6 +257,7 @@ Status Kinematics::trackGeneral(double target) {
   const double hMax = opt_.maxStepDeg * kDeg;
   const double hMin = opt_.minStepDeg * kDeg;
   double hTry = hMax;
+  bool crossing = false;  // the last refusal: a sign change of det J with Newton converged
   for (;;) {
     const double remaining = target - reg_.phi;
     if (remaining == 0) {
@@ -280,16 +287,17 @@ Status Kinematics::trackGeneral(double target) {
         [[fallthrough]];
       case StepResult::Refused:
         hTry = std::abs(phiNext - reg_.phi) / 4;
+        crossing = lastRefusalCrossing_;
         break;
     }
     if (hTry < hMin) {
       cur_ = reg_;
-      return explainFailure(target);
+      return explainFailure(target, crossing);
     }
   }
 }
 
-Status Kinematics::explainFailure(double phiFailed) const {
+Status Kinematics::explainFailure(double phiFailed, bool crossing) const {
   const double reached = (reg_.phi - sys_.startRad) / kDeg;
   const double wanted = (phiFailed - sys_.startRad) / kDeg;
   // Near a dead point q' grows without bound (like 1 / sqrt of the distance to it).
@@ -315,6 +323,13 @@ Status Kinematics::explainFailure(double phiFailed) const {
                 ": the mechanism locks at crank angle " + deg(reached) +
                 " (limit position: " + bodyList(involved) +
                 " reach a dead point, where no motion of the crank can pass)";
+  } else if (crossing) {
+    s.code = StatusCode::Singular;
+    s.message = "cannot follow the motion past crank angle " + deg(reached) + " towards " +
+                deg(wanted) +
+                ": the mechanism passes a singular position there where two assembly branches "
+                "meet (a change point: links in line); the driver does not decide which branch "
+                "it takes, so it stops rather than guess";
   } else {
     s.code = StatusCode::NotConverged;
     s.message = "cannot follow the motion past crank angle " + deg(reached) + " towards " +

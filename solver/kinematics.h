@@ -66,7 +66,8 @@ class Kinematics {
   // False at a singular position, where positions are known but velocities are not.
   bool derivativesValid() const { return cur_.regular; }
 
-  // mm, mm/s, mm/s^2 at the driver's speed.
+  // mm, mm/s, mm/s^2 at the driver's speed. Where derivativesValid() is false (moveTo returned
+  // Singular) velocities and accelerations are not determined and come back as NaN.
   Vec2 position(PointId p) const;
   Vec2 velocity(PointId p) const;
   Vec2 acceleration(PointId p) const;
@@ -101,7 +102,7 @@ class Kinematics {
   Status skipWholeTurns(double target);
   enum class StepResult { Accepted, Refused, Singular };
   StepResult tryStep(double phiNext, Snapshot& out);
-  Status explainFailure(double phiFailed) const;
+  Status explainFailure(double phiFailed, bool crossing) const;
   std::string bodyList(const std::vector<int>& bodies) const;
   const PointLocation& locate(PointId p) const;
   // cos and sin of a body's current angle, evaluated once per angle it takes (queries of
@@ -121,6 +122,7 @@ class Kinematics {
   mutable std::vector<Rot> rot_;
   mutable std::vector<double> rotAngle_;  // the angle each rot_ entry was evaluated for
   int regSign_ = 0;                       // det J sign at reg_
+  bool lastRefusalCrossing_ = false;      // tryStep refused a converged step: det J changed sign
   bool valid_ = false;
 };
 

@@ -7,9 +7,11 @@
 namespace linkage {
 
 namespace {
-// Pivot ratio below which J counts as singular: rounding in an O(1)-scaled J is ~1e-16, and a
-// mechanism one part in 1e12 from a dead point has velocities 1e12 times the crank's.
-constexpr double kSingularPivot = 1e-12;
+// Pivot ratio below which J counts as singular. Landing exactly on a singular position in
+// floating point leaves ~1e-12 (rounding of an O(1)-scaled J); the closest legitimate positions
+// measured (1e-5 mm from a change point, 1e-6 degrees from a dead point, lambda = 0.999) stay
+// above 1e-4. 1e-8 sits between, so a rounding-level singular point is never taken as regular.
+constexpr double kSingularPivot = 1e-8;
 }  // namespace
 
 void NewtonSolver::reset(const System& sys, const std::vector<int>& activeRows) {

@@ -170,3 +170,43 @@ TEST(Stress, ScaleAndPlacementDoNotChangeRelativeAccuracy) {
 
 }  // namespace
 }  // namespace linkage
+
+namespace linkage {
+namespace {
+
+// A parallelogram's change point: all four pins in line, where the parallelogram and the
+// antiparallelogram branch cross. The driver cannot decide which way it goes on: it must stop
+// there with a report, never turn onto the other branch silently.
+TEST(Stress, ParallelogramChangePointIsReportedNotCrossedSilently) {
+  for (bool closedForm : {true, false}) {
+    auto f = test::fourBar(60, 25, 60, 25, 30);  // crank at 30 deg: the change point is at -30
+    KinematicsOptions opt;
+    opt.closedForm = closedForm;
+    // Landing on it: positions, but no velocities.
+    Kinematics k(opt);
+    ASSERT_TRUE(k.load(f.m).ok());
+    ASSERT_TRUE(k.moveTo(-29).ok());
+    Status s = k.moveTo(-30);
+    EXPECT_EQ(s.code, StatusCode::Singular) << s.message;
+    EXPECT_NE(s.message.find("crank angle -30"), std::string::npos) << s.message;
+    EXPECT_FALSE(k.derivativesValid());
+    EXPECT_TRUE(k.position(f.B).allFinite());
+    EXPECT_NEAR(k.position(f.B).x(), 85, 1e-6);
+    // Across it, from either side of it, without stopping on it.
+    for (double from : {-29.0, -25.0}) {
+      Kinematics c(opt);
+      ASSERT_TRUE(c.load(f.m).ok());
+      ASSERT_TRUE(c.moveTo(from).ok());
+      Status across = c.moveTo(-35);
+      EXPECT_FALSE(across.ok()) << "crossed the change point from " << from;
+      EXPECT_NE(across.message.find("crank angle"), std::string::npos) << across.message;
+      // Still the parallelogram: the coupler has not turned, B is level with A.
+      EXPECT_NEAR(c.bodyAngle(f.coupler), 0, 1e-5) << across.message;
+      EXPECT_NEAR(c.position(f.B).y(), c.position(f.A).y(), 1e-5);
+      EXPECT_GT(c.crankDeg(), -30.0001);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace linkage
