@@ -297,7 +297,7 @@ Status Kinematics::trackGeneral(double target) {
   }
 }
 
-Status Kinematics::explainFailure(double phiFailed, bool crossing) const {
+Status Kinematics::explainFailure(double phiFailed, bool crossing) {
   const double reached = (reg_.phi - sys_.startRad) / kDeg;
   const double wanted = (phiFailed - sys_.startRad) / kDeg;
   // Near a dead point q' grows without bound (like 1 / sqrt of the distance to it).
@@ -323,7 +323,16 @@ Status Kinematics::explainFailure(double phiFailed, bool crossing) const {
                 ": the mechanism locks at crank angle " + deg(reached) +
                 " (limit position: " + bodyList(involved) +
                 " reach a dead point, where no motion of the crank can pass)";
-  } else if (crossing) {
+    return s;
+  }
+  if (!crossing) {
+    // Finite velocities but a nearly singular Jacobian: the branches meet just ahead (a
+    // change point), where Newton cannot tell them apart.
+    Eigen::VectorXd dq, ddq;
+    newton_.derivatives(sys_, reg_.q, dq, ddq);
+    crossing = newton_.pivotRatio() < 1e-3;
+  }
+  if (crossing) {
     s.code = StatusCode::Singular;
     s.message = "cannot follow the motion past crank angle " + deg(reached) + " towards " +
                 deg(wanted) +

@@ -102,7 +102,7 @@ class Kinematics {
   Status skipWholeTurns(double target);
   enum class StepResult { Accepted, Refused, Singular };
   StepResult tryStep(double phiNext, Snapshot& out);
-  Status explainFailure(double phiFailed, bool crossing) const;
+  Status explainFailure(double phiFailed, bool crossing);
   std::string bodyList(const std::vector<int>& bodies) const;
   const PointLocation& locate(PointId p) const;
   // cos and sin of a body's current angle, evaluated once per angle it takes (queries of
