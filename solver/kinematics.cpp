@@ -87,7 +87,6 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
   }
   newton_.reset(sys_, active);
 
-  const Eigen::VectorXd start = q;
   s = assemble(mech_, sys_, structure_, newton_, q, phi, assembly_);
   if (!s.ok()) return s;
   if (!warm && assembly_.moved(sys_)) {
@@ -107,8 +106,9 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
   snap.q = q;
   if (!newton_.derivatives(sys_, q, snap.dq, snap.ddq)) {
     s = Status::failure(StatusCode::Singular,
-                        "the mechanism is drawn in a singular position (a dead point): velocities "
-                        "are not determined there; draw it a little away from it");
+                        "the mechanism is drawn in a singular position (links in line: a dead "
+                        "point or a change point): velocities are not determined there; draw it "
+                        "a little away from it");
     s.crankDeg = (phi - sys_.startRad) / kDeg;
     return s;
   }
