@@ -10,27 +10,19 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.h"
 #include "instant_centres.h"
-#include "io/model_file.h"
 #include "kinematics.h"
 
 namespace {
 
 using namespace linkage;
 
-Mechanism exampleMechanism(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  if (!r.mechanism) {
-    std::fprintf(stderr, "%s\n", r.error.c_str());
-    std::abort();
-  }
-  return *r.mechanism;
-}
+using bench::example;
 
 void centreSets(benchmark::State& state, const std::string& name) {
   Kinematics k;
-  if (!k.load(exampleMechanism(name)).ok()) std::abort();
+  if (!k.load(example(name)).ok()) std::abort();
   std::vector<Kinematics> poses;
   poses.reserve(360);
   for (int deg = 0; deg < 360; ++deg) {
@@ -52,7 +44,7 @@ void centreSets(benchmark::State& state, const std::string& name) {
 
 void stepThenCentres(benchmark::State& state, const std::string& name) {
   Kinematics k;
-  if (!k.load(exampleMechanism(name)).ok()) std::abort();
+  if (!k.load(example(name)).ok()) std::abort();
   InstantCentreSolver solver;
   if (!solver.prepare(k).ok()) std::abort();
   double angle = 0;

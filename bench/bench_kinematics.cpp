@@ -9,22 +9,14 @@
 #include <cstdlib>
 #include <string>
 
-#include "io/model_file.h"
+#include "bench_common.h"
 #include "kinematics.h"
 
 namespace {
 
 using namespace linkage;
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  if (!r.mechanism) {
-    std::fprintf(stderr, "%s\n", r.error.c_str());
-    std::abort();
-  }
-  return *r.mechanism;
-}
+using bench::example;
 
 void kinematicStep(benchmark::State& state, const std::string& name) {
   const Mechanism m = example(name);

@@ -40,20 +40,11 @@ State stateOf(int body, const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
   return s;
 }
 
-// Writes a body whose angle, angular rates and one point's motion (local s at P) are known.
+// Writes a body whose angle, rates and one point's motion are known; keeps its rotation.
 void place(int body, double th, double w, double al, const Vec2& s, const Vec2& P, const Vec2& vP,
            const Vec2& aP, Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq,
            std::vector<Rot>& rot) {
-  const int k = 3 * body;
-  const Rot R{std::cos(th), std::sin(th)};
-  rot[body] = R;
-  const Vec2 g = R * s;
-  q.segment<2>(k) = P - g;
-  q[k + 2] = th;
-  dq.segment<2>(k) = vP - w * perp(g);
-  dq[k + 2] = w;
-  ddq.segment<2>(k) = aP - al * perp(g) + w * w * g;
-  ddq[k + 2] = al;
+  rot[body] = placeBody(body, th, w, al, s, P, vP, aP, q, dq, ddq);
 }
 
 double angleOf(const Vec2& v) {

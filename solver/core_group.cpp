@@ -145,15 +145,7 @@ bool solveCore(const CoreGroup& g, const System& sys, const Eigen::VectorXd& pre
     const Vec2 P = coreV.r + g0;
     const Vec2 vP = coreV.v + coreV.w * perp(g0);
     const Vec2 aP = Vec2(ddq[c], ddq[c + 1]) + ddq[c + 2] * perp(g0) - coreV.w * coreV.w * g0;
-    const Rot R{std::cos(th), std::sin(th)};
-    const Vec2 gb = R * l.blockPin;
-    const int b = 3 * l.block;
-    q.segment<2>(b) = P - gb;
-    q[b + 2] = th;
-    dq.segment<2>(b) = vP - w * perp(gb);
-    dq[b + 2] = w;
-    ddq.segment<2>(b) = aP - al * perp(gb) + w * w * gb;
-    ddq[b + 2] = al;
+    placeBody(l.block, th, w, al, l.blockPin, P, vP, aP, q, dq, ddq);
   }
   return true;
 }

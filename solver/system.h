@@ -95,6 +95,11 @@ Vec2 pointVelocity(const System& sys, const Eigen::VectorXd& q, const Eigen::Vec
 Vec2 pointAcceleration(const System& sys, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                        const Eigen::VectorXd& a, const PointLocation& p);
 
+// Writes body k's pose, rates and accelerations (in q, dq, ddq) from its angle th, angular rate
+// w and acceleration al and the motion (P, vP, aP) of its local point s. Returns the rotation.
+Rot placeBody(int k, double th, double w, double al, const Vec2& s, const Vec2& P, const Vec2& vP,
+              const Vec2& aP, Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq);
+
 // The sketch configuration: every body at its drawn pose.
 Eigen::VectorXd sketchCoordinates(const System& sys);
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_harness.h"
 #include "io/model_file.h"
 #include "io/numbers.h"
 #include "kinematics.h"
@@ -21,51 +22,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit = -1;
-  std::string out, err;
-  std::vector<std::string> lines() const {
-    std::vector<std::string> v;
-    std::istringstream s(out);
-    for (std::string l; std::getline(s, l);) v.push_back(l);
-    return v;
-  }
-};
+using CliRun = test::CliResult;
+using test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-class Cli : public ::testing::Test {
+class Cli : public test::CliTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("linkage-cli-test-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliRun run(const std::string& args, const std::string& env = "") {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string cmd = env + " '" + std::string(LINKAGE_CLI) + "' " + args + " > '" +
-                            out.string() + "' 2> '" + err.string() + "' < /dev/null";
-    const int status = std::system(cmd.c_str());
-    CliRun r;
-    r.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
   std::string write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << text;
-    return p.string();
+    return writeFile(name, text);
   }
-  fs::path dir_;
 };
 
 std::vector<double> fields(const std::string& row) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_harness.h"
 #include "instant_centres.h"
 #include "io/model_file.h"
 #include "io/numbers.h"
@@ -24,13 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
 std::vector<std::string> split(const std::string& text, char sep) {
   std::vector<std::string> v;
   std::istringstream s(text);
@@ -39,33 +33,14 @@ std::vector<std::string> split(const std::string& text, char sep) {
   return v;
 }
 
-struct CliResult {
-  int exit = -1;
-  std::string out, err;
-};
+using test::CliResult;
+using test::slurp;
 
-class InstantCentresCli : public ::testing::Test {
+class InstantCentresCli : public test::CliTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("linkage-ics-test-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  CliResult run(const std::string& args, const std::string& env = "") {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string cmd = env + " '" + std::string(LINKAGE_CLI) + "' " + args + " > '" +
-                            out.string() + "' 2> '" + err.string() + "' < /dev/null";
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-  }
   std::string write(const std::string& name, const Mechanism& m) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << serializeMechanism(m);
-    return "'" + p.string() + "'";
+    return "'" + writeFile(name, serializeMechanism(m)) + "'";
   }
-  fs::path dir_;
 };
 
 Mechanism example(const std::string& name) {
