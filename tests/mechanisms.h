@@ -97,6 +97,35 @@ inline SliderCrank sliderCrank(double r, double l, double e, double crankDeg,
   return s;
 }
 
+// A Watt II six-bar drawn where its ground pivots, the crank pin A and the pin F all lie on the
+// line y = 0 (tests/test_instant_centres.cpp explains why Kennedy cannot fix IC(2,6) there).
+// Bodies: ground, crank, coupler, rocker (with a third pin E), link, output.
+struct WattSixBar {
+  Mechanism m;
+  BodyId crank, output;
+};
+
+inline WattSixBar wattSixBar() {
+  WattSixBar w;
+  Mechanism& m = w.m;
+  const Vec2 O2(0, 0), O4(60, 0), O6(150, 0), A(20, 0), B(70, std::sqrt(2400.0)), E(85, 25),
+      F(110, 0);
+  const BodyId g = m.addBody("ground", true), crank = m.addBody("crank"),
+               coupler = m.addBody("coupler"), rocker = m.addBody("rocker"),
+               link = m.addBody("link"), output = m.addBody("output");
+  const JointId drive = m.addPin(m.addPoint(g, "O2", O2), m.addPoint(crank, "O2", O2));
+  m.addPin(m.addPoint(crank, "A", A), m.addPoint(coupler, "A", A));
+  m.addPin(m.addPoint(coupler, "B", B), m.addPoint(rocker, "B", B));
+  m.addPin(m.addPoint(rocker, "O4", O4), m.addPoint(g, "O4", O4));
+  m.addPin(m.addPoint(rocker, "E", E), m.addPoint(link, "E", E));
+  m.addPin(m.addPoint(link, "F", F), m.addPoint(output, "F", F));
+  m.addPin(m.addPoint(output, "O6", O6), m.addPoint(g, "O6", O6));
+  m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
+  w.crank = crank;
+  w.output = output;
+  return w;
+}
+
 // A chain of `loops` four-bars along the x axis: loop k has ground pivots at 60k and 60k + 60;
 // loop 0's crank is driven, and the rocker of loop k, extended, is the input of loop k + 1.
 // 1 + 2 loops bodies; every loop after the first is a dyad on the previous one.

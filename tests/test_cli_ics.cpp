@@ -174,19 +174,7 @@ TEST_F(InstantCentresCli, PointPrintsTheChainWithTheSolversVelocity) {
 // a note says so, the row is marked velocity; IC(3,5) has no centre (no relative motion) and
 // leaves all four coordinates empty.
 TEST_F(InstantCentresCli, CentresKennedyCannotFixAreMarkedNotInvented) {
-  Mechanism m;
-  const Vec2 O2(0, 0), O4(60, 0), O6(150, 0), A(20, 0), B(70, std::sqrt(2400.0)), E(85, 25),
-      F(110, 0);
-  const BodyId g = m.addBody("ground", true), b2 = m.addBody("crank"), b3 = m.addBody("coupler"),
-               b4 = m.addBody("rocker"), b5 = m.addBody("link"), b6 = m.addBody("output");
-  const JointId drive = m.addPin(m.addPoint(g, "O2", O2), m.addPoint(b2, "O2", O2));
-  m.addPin(m.addPoint(b2, "A", A), m.addPoint(b3, "A", A));
-  m.addPin(m.addPoint(b3, "B", B), m.addPoint(b4, "B", B));
-  m.addPin(m.addPoint(b4, "O4", O4), m.addPoint(g, "O4", O4));
-  m.addPin(m.addPoint(b4, "E", E), m.addPoint(b5, "E", E));
-  m.addPin(m.addPoint(b5, "F", F), m.addPoint(b6, "F", F));
-  m.addPin(m.addPoint(b6, "O6", O6), m.addPoint(g, "O6", O6));
-  m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
+  const Mechanism m = test::wattSixBar().m;
   CliResult r = run("ics " + write("watt.linkage.json", m) + " --angle 0");
   ASSERT_EQ(r.exit, 0) << r.err;
   const std::vector<std::string> lines = split(r.out, '\n');

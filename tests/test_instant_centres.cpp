@@ -398,20 +398,12 @@ TEST(InstantCentres, WanzerHomeworkConstructionAndChains) {
 // (xA - xO2) / (xA - xO4) and omega6 / omega4 = (xF - xO4) / (xF - xO6) (A and F move
 // perpendicular to the line): IC(2,6) = (-250, 0) for the numbers below.
 TEST(InstantCentres, WattSixBarPositionKennedyCannotFix) {
-  Mechanism m;
-  const Vec2 O2(0, 0), O4(60, 0), O6(150, 0), A(20, 0), B(70, std::sqrt(2400.0)), E(85, 25),
-      F(110, 0);
-  const BodyId g = m.addBody("ground", true), crank = m.addBody("crank"),
-               coupler = m.addBody("coupler"), rocker = m.addBody("rocker"),
-               link = m.addBody("link"), output = m.addBody("output");
-  const JointId drive = m.addPin(m.addPoint(g, "O2", O2), m.addPoint(crank, "O2", O2));
-  m.addPin(m.addPoint(crank, "A", A), m.addPoint(coupler, "A", A));
-  m.addPin(m.addPoint(coupler, "B", B), m.addPoint(rocker, "B", B));
-  m.addPin(m.addPoint(rocker, "O4", O4), m.addPoint(g, "O4", O4));
-  m.addPin(m.addPoint(rocker, "E", E), m.addPoint(link, "E", E));
-  m.addPin(m.addPoint(link, "F", F), m.addPoint(output, "F", F));
-  m.addPin(m.addPoint(output, "O6", O6), m.addPoint(g, "O6", O6));
-  m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
+  const test::WattSixBar w = test::wattSixBar();
+  const Mechanism& m = w.m;
+  const BodyId crank = w.crank, output = w.output;
+  auto drawn = [&](const char* p) { return m.point(*m.findPoint(p))->pos; };
+  const Vec2 O2 = drawn("ground.O2"), O4 = drawn("ground.O4"), O6 = drawn("ground.O6"),
+             A = drawn("crank.A"), F = drawn("link.F");
   Kinematics k;
   ASSERT_TRUE(k.load(m).ok());
   ASSERT_TRUE(k.derivativesValid());
@@ -436,7 +428,6 @@ TEST(InstantCentres, WattSixBarPositionKennedyCannotFix) {
   const VelocityChain ch = velocityChain(k, ics, *m.findPoint("output.F"));
   ASSERT_TRUE(ch.status.ok()) << ch.status.message;
   EXPECT_NEAR((ch.velocity - ch.solverVelocity).norm(), 0, 1e-9 * ch.solverVelocity.norm());
-  (void)coupler, (void)rocker, (void)link;
 }
 
 // A body pinned to the crank at two points moves with it: their centre does not exist, is not
