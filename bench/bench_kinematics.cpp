@@ -27,8 +27,8 @@ void kinematicStep(benchmark::State& state, const std::string& name) {
   for (auto _ : state) {
     angle += 1.0;
     if (!k.moveTo(angle).ok()) std::abort();
-    const Vec2 x = k.position(out), v = k.velocity(out), a = k.acceleration(out);
-    benchmark::DoNotOptimize(x.x() + v.x() + a.x());
+    const Kinematics::PointMotion m = k.motion(out);
+    benchmark::DoNotOptimize(m.position.x() + m.velocity.x() + m.acceleration.x());
   }
   state.SetItemsProcessed(state.iterations());
   state.counters["bodies"] = static_cast<double>(k.system().nBodies + 1);

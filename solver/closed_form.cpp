@@ -10,69 +10,35 @@ double cross(const Vec2& a, const Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
-// A known body's state: pose, and first and second derivatives in the driver angle.
-struct State {
-  Vec2 r = Vec2::Zero(), v = Vec2::Zero(), a = Vec2::Zero();
-  double th = 0, w = 0, al = 0;
-  Rot R;
+Rot compose(const Rot& a, const Rot& b) {
+  return Rot{a.c * b.c - a.s * b.s, a.s * b.c + a.c * b.s};
+}
 
-  // Position, velocity and acceleration of the body's local point s.
-  Vec2 pos(const Vec2& s) const { return r + R * s; }
-  Vec2 vel(const Vec2& s) const { return v + w * perp(R * s); }
-  Vec2 acc(const Vec2& s) const {
-    const Vec2 g = R * s;
-    return a + al * perp(g) - w * w * g;
+Rot direction(const Vec2& v) {
+  const double n = v.norm();
+  return Rot{v.x() / n, v.y() / n};
+}
+
+// The rotation taking a body's local direction (given as the rotation `local`) to the unit
+// vector u: the pose follows without a sin and cos of the body's angle. (u is C - P over the
+// link's length: a unit vector to rounding, as the intersection put C at that distance.)
+Rot turning(const Rot& local, const Vec2& u) {
+  return compose(Rot{u.x(), u.y()}, Rot{local.c, -local.s});
+}
+
+// The 2 x 2 system [a b] x = rhs of a group's velocities, then of its accelerations (the same
+// matrix). Singular when the columns are (nearly) parallel: a dead point, left to the general
+// solver to explain.
+struct Solve2 {
+  Vec2 a, b;
+  double det;
+  Solve2(const Vec2& a_, const Vec2& b_) : a(a_), b(b_), det(cross(a_, b_)) {}
+  bool regular() const { return det * det > 1e-20 * a.squaredNorm() * b.squaredNorm(); }
+  void solve(const Vec2& rhs, double& x, double& y) const {
+    x = cross(rhs, b) / det;
+    y = cross(a, rhs) / det;
   }
 };
-
-State stateOf(int body, const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
-              const Eigen::VectorXd& ddq, const std::vector<Rot>* rot = nullptr) {
-  State s;
-  if (body < 0) return s;
-  const int k = 3 * body;
-  s.r = Vec2(q[k], q[k + 1]);
-  s.th = q[k + 2];
-  s.R = rot ? (*rot)[body] : Rot{std::cos(s.th), std::sin(s.th)};
-  s.v = Vec2(dq[k], dq[k + 1]);
-  s.w = dq[k + 2];
-  s.a = Vec2(ddq[k], ddq[k + 1]);
-  s.al = ddq[k + 2];
-  return s;
-}
-
-// Writes a body whose angle, rates and one point's motion are known; keeps its rotation.
-void place(int body, double th, double w, double al, const Vec2& s, const Vec2& P, const Vec2& vP,
-           const Vec2& aP, Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq,
-           std::vector<Rot>& rot) {
-  rot[body] = placeBody(body, th, w, al, s, P, vP, aP, q, dq, ddq);
-}
-
-double angleOf(const Vec2& v) {
-  return std::atan2(v.y(), v.x());
-}
-
-// Continues an angle from its previous value instead of wrapping it into (-pi, pi].
-double continued(double raw, double previous) {
-  return previous + std::remainder(raw - previous, 2 * M_PI);
-}
-
-// Solves [a b] x = rhs for the two columns a, b; false when they are (nearly) parallel: a dead
-// point, left to the general solver to explain.
-bool solve2(const Vec2& a, const Vec2& b, const Vec2& rhs, double& x, double& y) {
-  const double det = cross(a, b);
-  if (!(std::abs(det) > 1e-10 * a.norm() * b.norm())) return false;
-  x = cross(rhs, b) / det;
-  y = cross(a, rhs) / det;
-  return true;
-}
-
-// Where body b's local point s would be after h more radians of crank, on its smooth path:
-// second-order Taylor from the previous position, rates and accelerations.
-Vec2 predicted(int b, const Vec2& s, double h, const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
-               const Eigen::VectorXd& ddq) {
-  const State st = stateOf(b, q, dq, ddq);
-  return st.pos(s) + h * st.vel(s) + (0.5 * h * h) * st.acc(s);
-}
 
 }  // namespace
 
@@ -259,7 +225,7 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
         }
       }
       if (!usable || rows != 3) continue;
-      core.detSign = coreDetSign(core, sys, q);
+      core.detSign = coreDetSign(core, q);
       if (core.detSign == 0) return std::nullopt;
       Group g;
       g.kind = Kind::Core;
@@ -279,20 +245,24 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
     if (!used[j]) return std::nullopt;
 
   // Local directions and the drawn branches, from the assembled configuration.
+  Motion at;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q.size());
+  at.fromCoordinates(0, q, zero, zero);
   for (Group& g : plan.groups_) {
     if (g.kind == Kind::Crank || g.kind == Kind::Core) continue;
-    g.dir1 = angleOf(g.c1 - g.p1);
-    const State k1 = stateOf(g.k1, q, zero, zero);
-    const State b1 = stateOf(g.b1, q, zero, zero);
+    g.rot1 = direction(g.c1 - g.p1);
+    g.d1 = (g.c1 - g.p1).norm();
+    const BodyState& k1 = at.of(g.k1);
+    const BodyState& b1 = at.of(g.b1);
     const Vec2 P1 = k1.pos(g.p1k), C = b1.pos(g.c1);
     if (g.kind == Kind::RRR) {
-      g.dir2 = angleOf(g.c2 - g.p2);
-      const Vec2 P2 = stateOf(g.k2, q, zero, zero).pos(g.p2k);
+      g.rot2 = direction(g.c2 - g.p2);
+      g.d2 = (g.c2 - g.p2).norm();
+      const Vec2 P2 = at.of(g.k2).pos(g.p2k);
       g.sign = cross(P2 - P1, C - P1) >= 0 ? 1 : -1;
     } else {
       g.d = -perp(g.n);  // the slot's direction: n was made as perp(direction)
-      const State k2 = stateOf(g.k2, q, zero, zero);
+      const BodyState& k2 = at.of(g.k2);
       const Vec2 n = k2.R * g.n;
       const Vec2 foot = P1 + n.dot(C - P1) * n;  // C is on the (shifted) line: project P1 on it
       g.sign = (k2.R * g.d).dot(C - foot) >= 0 ? 1 : -1;
@@ -301,38 +271,41 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
   return plan;
 }
 
-bool ClosedFormPlan::solve(const System& sys, double prevPhi, double phi, Eigen::VectorXd& q,
-                           Eigen::VectorXd& dq, Eigen::VectorXd& ddq) const {
-  // In place: each group writes only its own bodies, after reading their previous angles.
-  rot_.resize(sys.nBodies);
+bool ClosedFormPlan::solve(const System& sys, const Motion& prev, double phi, Motion& next) const {
+  next.phi = phi;
+  next.body.resize(sys.nBodies);
+  const double h = phi - prev.phi;
+  const Rot crank{std::cos(phi), std::sin(phi)};
+  // Sets body b, continuing its count of whole turns from the previous position.
+  auto set = [&](int b, const Rot& R, double w, double al, const Vec2& s, const Vec2& P,
+                 const Vec2& vP, const Vec2& aP) {
+    const BodyState& before = prev.body[b];
+    place(next.body[b], R, turnsAfter(before.R, before.turns, R), w, al, s, P, vP, aP);
+  };
   for (const Group& g : groups_) {
     if (g.kind == Kind::Core) {
-      const CoreGroup& core = cores_[g.core];
-      if (!solveCore(core, sys, q, phi - prevPhi, q, dq, ddq)) return false;
-      rot_[core.core] = Rot{std::cos(q[3 * core.core + 2]), std::sin(q[3 * core.core + 2])};
-      for (const CoreLink& l : core.links)
-        if (l.block >= 0) rot_[l.block] = l.known >= 0 ? rot_[l.known] : Rot{};
+      if (!solveCore(cores_[g.core], sys, prev, next)) return false;
       continue;
     }
-    const State k1 = stateOf(g.k1, q, dq, ddq, &rot_);
+    const BodyState& k1 = next.of(g.k1);
     const Vec2 P1 = k1.pos(g.p1k), vP1 = k1.vel(g.p1k), aP1 = k1.acc(g.p1k);
     if (g.kind == Kind::Crank) {
-      const double th = k1.th + g.sign * phi;
-      place(g.b1, th, k1.w + g.sign, k1.al, g.p1, P1, vP1, aP1, q, dq, ddq, rot_);
+      set(g.b1, compose(k1.R, g.sign > 0 ? crank : Rot{crank.c, -crank.s}), k1.w + g.sign, k1.al,
+          g.p1, P1, vP1, aP1);
       continue;
     }
-    const double d1 = (g.c1 - g.p1).norm();
+    const double d1 = g.d1;
     // The joint C as the smooth motion would carry it: if that lands on the other side of the
     // branch line than the drawn branch, the motion crosses a singular position (a change
     // point, or a dead point ahead), where the intersection formula would reflect onto the
     // other branch. The general solve takes over there and reports it.
-    const Vec2 Cpred = predicted(g.b1, g.c1, phi - prevPhi, q, dq, ddq);
+    const Vec2 Cpred = prev.body[g.b1].predicted(g.c1, h);
     Vec2 C, u1 = Vec2::Zero();
     double w1 = 0, al1 = 0;
     if (g.kind == Kind::RRR) {
-      const State k2 = stateOf(g.k2, q, dq, ddq, &rot_);
+      const BodyState& k2 = next.of(g.k2);
       const Vec2 P2 = k2.pos(g.p2k), vP2 = k2.vel(g.p2k), aP2 = k2.acc(g.p2k);
-      const double d2 = (g.c2 - g.p2).norm();
+      const double d2 = g.d2;
       const Vec2 e = P2 - P1;
       const double L = e.norm();
       if (!(L > 0)) return false;
@@ -344,14 +317,15 @@ bool ClosedFormPlan::solve(const System& sys, double prevPhi, double phi, Eigen:
       C = P1 + a * eh + g.sign * std::sqrt(h2) * perp(eh);
       u1 = C - P1;
       const Vec2 u2 = C - P2;
+      const Solve2 m(perp(u1), -perp(u2));
+      if (!m.regular()) return false;
       double w2, al2;
-      if (!solve2(perp(u1), -perp(u2), vP2 - vP1, w1, w2)) return false;
-      solve2(perp(u1), -perp(u2), aP2 - aP1 - w2 * w2 * u2 + w1 * w1 * u1, al1, al2);
-      const double th2 = continued(angleOf(u2) - g.dir2, q[3 * g.b2 + 2]);
-      place(g.b2, th2, w2, al2, g.p2, P2, vP2, aP2, q, dq, ddq, rot_);
+      m.solve(vP2 - vP1, w1, w2);
+      m.solve(aP2 - aP1 - w2 * w2 * u2 + w1 * w1 * u1, al1, al2);
+      set(g.b2, turning(g.rot2, u2 / d2), w2, al2, g.p2, P2, vP2, aP2);
     } else {
       // The line C must keep to: the slot (through U, normal n), shifted by the block's offset.
-      const State k2 = stateOf(g.k2, q, dq, ddq, &rot_);
+      const BodyState& k2 = next.of(g.k2);
       const Vec2 n = k2.R * g.n, dir = k2.R * g.d, U = k2.pos(g.u);
       const Vec2 w = g.kind == Kind::RRP ? Vec2(k2.R * (g.q2 - g.c2)) : Vec2::Zero();
       const double delta = n.dot(U - w - P1);
@@ -366,20 +340,21 @@ bool ClosedFormPlan::solve(const System& sys, double prevPhi, double phi, Eigen:
       const Vec2 Ru = k2.R * g.u;
       const Vec2 vU = k2.v + k2.w * perp(Ru);
       const Vec2 V0 = vU + s * k2.w * perp(dir) - k2.w * perp(w);
+      const Solve2 m(perp(u1), -dir);
+      if (!m.regular()) return false;
       double sd, sdd;
-      if (!solve2(perp(u1), -dir, V0 - vP1, w1, sd)) return false;
+      m.solve(V0 - vP1, w1, sd);
       const Vec2 aU = k2.a + k2.al * perp(Ru) - k2.w * k2.w * Ru;
       const Vec2 A0 = aU + 2 * sd * k2.w * perp(dir) + s * (k2.al * perp(dir) - k2.w * k2.w * dir) -
                       (k2.al * perp(w) - k2.w * k2.w * w);
-      solve2(perp(u1), -dir, A0 - aP1 + w1 * w1 * u1, al1, sdd);
+      m.solve(A0 - aP1 + w1 * w1 * u1, al1, sdd);
       if (g.kind == Kind::RRP) {
-        const Vec2 vC = V0 + sd * dir;
-        const Vec2 aC = A0 + sdd * dir;
-        place(g.b2, k2.th, k2.w, k2.al, g.c2, C, vC, aC, q, dq, ddq, rot_);
+        // The block keeps its slot body's angle (the slider holds the drawn relative angle,
+        // zero), whole turns included.
+        place(next.body[g.b2], k2.R, k2.turns, k2.w, k2.al, g.c2, C, V0 + sd * dir, A0 + sdd * dir);
       }
     }
-    const double th1 = continued(angleOf(u1) - g.dir1, q[3 * g.b1 + 2]);
-    place(g.b1, th1, w1, al1, g.p1, P1, vP1, aP1, q, dq, ddq, rot_);
+    set(g.b1, turning(g.rot1, u1 / d1), w1, al1, g.p1, P1, vP1, aP1);
   }
   return true;
 }

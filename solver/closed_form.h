@@ -28,6 +28,7 @@
 
 #include "core_group.h"
 #include "model.h"
+#include "motion.h"
 #include "system.h"
 
 namespace linkage {
@@ -39,12 +40,11 @@ class ClosedFormPlan {
   static std::optional<ClosedFormPlan> build(const Mechanism& m, const System& sys,
                                              const Eigen::VectorXd& q);
 
-  // Positions at driver angle phi, and d/dphi, d2/dphi2 of every coordinate, in place. On entry
-  // q, dq, ddq hold the previous position at driver angle prevPhi (angles are continued from it,
-  // core groups start from its prediction); on exit the new one. False where a group cannot
-  // close or is singular; then q, dq and ddq hold a partial update and must be discarded.
-  bool solve(const System& sys, double prevPhi, double phi, Eigen::VectorXd& q, Eigen::VectorXd& dq,
-             Eigen::VectorXd& ddq) const;
+  // The motion at driver angle phi (positions, d/dphi and d2/dphi2 of every coordinate) from the
+  // previous one (whole turns are counted from it, branch crossings and core groups predicted
+  // from its rates). False where a group cannot close or is singular; next is then partial and
+  // must be discarded.
+  bool solve(const System& sys, const Motion& prev, double phi, Motion& next) const;
 
   int groups() const { return static_cast<int>(groups_.size()); }
 
@@ -58,15 +58,15 @@ class ClosedFormPlan {
     Vec2 c1 = Vec2::Zero(), c2 = Vec2::Zero();   // the joint C: on b1 (and on b2 for RRR, RRP)
     Vec2 p2 = Vec2::Zero(), p2k = Vec2::Zero();  // RRR: pin to k2: on b2, on k2
     Vec2 u = Vec2::Zero(), n = Vec2::Zero(),
-         d = Vec2::Zero();      // RRP, RP: slot point, unit normal and direction on k2
-    Vec2 q2 = Vec2::Zero();     // RRP: the block's point on the slot line
-    double dir1 = 0, dir2 = 0;  // local angles of (c1 - p1) and (c2 - p2) on their bodies
-    double sign = 1;            // Crank: +-sigma; RRR, RRP, RP: the drawn branch
-    int core = -1;              // Core: index into cores_
+         d = Vec2::Zero();   // RRP, RP: slot point, unit normal and direction on k2
+    Vec2 q2 = Vec2::Zero();  // RRP: the block's point on the slot line
+    Rot rot1, rot2;          // directions of (c1 - p1) and (c2 - p2) on their bodies
+    double d1 = 0, d2 = 0;   // and their lengths
+    double sign = 1;         // Crank: +-sigma; RRR, RRP, RP: the drawn branch
+    int core = -1;           // Core: index into cores_
   };
   std::vector<Group> groups_;
   std::vector<CoreGroup> cores_;
-  mutable std::vector<Rot> rot_;  // per body, of the pose just placed: no sin/cos twice
 };
 
 }  // namespace linkage

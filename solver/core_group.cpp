@@ -10,17 +10,15 @@ namespace linkage {
 
 namespace {
 
-BodyView viewOf(int body, const Eigen::VectorXd& q, const Eigen::VectorXd* v, int col) {
+// A body as the joint functions see it; col -1 leaves its columns out of a Jacobian.
+BodyView viewOf(const BodyState& m, int col, bool withRates) {
   BodyView b;
   b.col = col;
-  if (body < 0) return b;
-  const int k = 3 * body;
-  b.r = Vec2(q[k], q[k + 1]);
-  b.theta = q[k + 2];
-  b.R = Rot{std::cos(b.theta), std::sin(b.theta)};
-  if (v) {
-    b.v = Vec2((*v)[k], (*v)[k + 1]);
-    b.w = (*v)[k + 2];
+  b.r = m.r;
+  b.R = m.R;
+  if (withRates) {
+    b.v = m.v;
+    b.w = m.w;
   }
   return b;
 }
@@ -32,11 +30,11 @@ struct Rows {
   Eigen::Matrix3d J;
 };
 
-void evalRows(const CoreGroup& g, const BodyView& core, const Eigen::VectorXd& q, Rows& out) {
+void evalRows(const CoreGroup& g, const BodyView& core, const Motion& m, Rows& out) {
   out.J.setZero();
   int row = 0;
   for (const CoreLink& l : g.links) {
-    const BodyView k = viewOf(l.known, q, nullptr, -1);  // col -1: only the core's columns
+    const BodyView k = viewOf(m.of(l.known), -1, false);  // only the core's columns
     if (l.pin) {
       out.phi.segment<2>(row) = pin::residual(core, l.s, k, l.ks);
       pin::jacobian(out.J, row, core, l.s, k, l.ks);
@@ -51,24 +49,27 @@ void evalRows(const CoreGroup& g, const BodyView& core, const Eigen::VectorXd& q
 
 // Right-hand side of J_core x_core = rhs: -J_K x_K for the known bodies (x = dq or ddq), plus
 // gamma when the velocities are given (accelerations).
-Eigen::Vector3d knownTerms(const CoreGroup& g, const BodyView& core, const Eigen::VectorXd& q,
-                           const Eigen::VectorXd& x, const Eigen::VectorXd* v) {
+Eigen::Vector3d knownTerms(const CoreGroup& g, const BodyView& core, const Motion& m,
+                           bool accelerations) {
   Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
   BodyView noCore = core;
   noCore.col = -1;
   int row = 0;
   for (const CoreLink& l : g.links) {
     const int rows = l.pin ? 2 : 1;
-    const BodyView k = viewOf(l.known, q, v, 0);
+    const BodyState& km = m.of(l.known);
+    const BodyView k = viewOf(km, 0, accelerations);
     if (l.known >= 0) {
       Eigen::Matrix3d Jk = Eigen::Matrix3d::Zero();
       if (l.pin)
         pin::jacobian(Jk, row, noCore, l.s, k, l.ks);
       else
         line::jacobian(Jk, row, noCore, l.s, k, l.n);
-      rhs.segment(row, rows) -= Jk.middleRows(row, rows) * x.segment<3>(3 * l.known);
+      const Eigen::Vector3d x = accelerations ? Eigen::Vector3d(km.a.x(), km.a.y(), km.al)
+                                              : Eigen::Vector3d(km.v.x(), km.v.y(), km.w);
+      rhs.segment(row, rows) -= Jk.middleRows(row, rows) * x;
     }
-    if (v) {
+    if (accelerations) {
       if (l.pin)
         rhs.segment<2>(row) += pin::gamma(core, l.s, k, l.ks);
       else
@@ -81,30 +82,39 @@ Eigen::Vector3d knownTerms(const CoreGroup& g, const BodyView& core, const Eigen
 
 }  // namespace
 
-int coreDetSign(const CoreGroup& g, const System& sys, const Eigen::VectorXd& q) {
+int coreDetSign(const CoreGroup& g, const Eigen::VectorXd& q) {
+  Motion m;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q.size());
+  m.fromCoordinates(0, q, zero, zero);
   Rows rows;
-  evalRows(g, viewOf(g.core, q, nullptr, 0), q, rows);
+  evalRows(g, viewOf(m.body[g.core], 0, false), m, rows);
   const double det = rows.J.determinant();
   const double scale = rows.J.cwiseAbs().maxCoeff();
   if (!(std::abs(det) > 1e-12 * scale * scale * scale)) return 0;
-  (void)sys;
   return det > 0 ? 1 : -1;
 }
 
-bool solveCore(const CoreGroup& g, const System& sys, const Eigen::VectorXd& prev, double h,
-               Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq) {
-  const int c = 3 * g.core;
+bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion& next) {
   const double L = sys.size;
-  // Predictor from the previous pose and rates (still in dq, ddq: not yet overwritten).
-  Eigen::Vector3d x = prev.segment<3>(c) + h * dq.segment<3>(c) + (0.5 * h * h) * ddq.segment<3>(c);
+  const double h = next.phi - prev.phi;
+  const BodyState& before = prev.body[g.core];
+  BodyState& core = next.body[g.core];
+  // Unknowns: the frame origin and the turn d relative to the previous rotation, from the
+  // predictor along the previous rates.
+  Eigen::Vector3d x;
+  x << before.r + h * before.v + (0.5 * h * h) * before.a, h * before.w + (0.5 * h * h) * before.al;
+  auto pose = [&](const Eigen::Vector3d& at) {
+    core.r = at.head<2>();
+    const Rot d{std::cos(at[2]), std::sin(at[2])};
+    core.R = Rot{before.R.c * d.c - before.R.s * d.s, before.R.s * d.c + before.R.c * d.s};
+    return viewOf(core, 0, false);
+  };
   Rows rows;
   Eigen::PartialPivLU<Eigen::Matrix3d> lu;
   bool converged = false, polished = false;
   double prevStep = INFINITY;
   for (int it = 0; it < 12; ++it) {
-    q.segment<3>(c) = x;
-    const BodyView core = viewOf(g.core, q, nullptr, 0);
-    evalRows(g, core, q, rows);
+    evalRows(g, pose(x), next, rows);
     const double res = rows.phi.cwiseAbs().maxCoeff();
     const double tol = 1e-13 * std::max({L, std::abs(x[0]), std::abs(x[1])});
     if (!std::isfinite(res)) return false;
@@ -122,30 +132,28 @@ bool solveCore(const CoreGroup& g, const System& sys, const Eigen::VectorXd& pre
     x -= delta;
   }
   if (!converged) return false;
-  q.segment<3>(c) = x;
   // The drawn branch: det J keeps its sign until a singular position.
-  const BodyView core = viewOf(g.core, q, nullptr, 0);
-  evalRows(g, core, q, rows);
+  const BodyView at = pose(x);
+  core.turns = turnsAfter(before.R, before.turns, core.R);
+  evalRows(g, at, next, rows);
   const double det = rows.J.determinant();
   const double scale = rows.J.cwiseAbs().maxCoeff();
   if (!(std::abs(det) > 1e-12 * scale * scale * scale) || (det > 0 ? 1 : -1) != g.detSign)
     return false;
   lu.compute(rows.J);
-  const Eigen::Vector3d v = lu.solve(knownTerms(g, core, q, dq, nullptr));
-  dq.segment<3>(c) = v;
-  const BodyView coreV = viewOf(g.core, q, &dq, 0);
-  ddq.segment<3>(c) = lu.solve(knownTerms(g, coreV, q, ddq, &dq));
+  const Eigen::Vector3d v = lu.solve(knownTerms(g, at, next, false));
+  core.v = v.head<2>();
+  core.w = v[2];
+  const Eigen::Vector3d a = lu.solve(knownTerms(g, viewOf(core, 0, true), next, true));
+  core.a = a.head<2>();
+  core.al = a[2];
 
-  // The blocks: angle, rate and acceleration of their slot body; pin point on the core.
+  // The blocks: rotation, rate and acceleration of their slot body; pin point on the core.
   for (const CoreLink& l : g.links) {
     if (l.block < 0) continue;
-    const BodyView k = viewOf(l.known, q, &dq, 0);
-    const double th = k.theta, w = k.w, al = l.known >= 0 ? ddq[3 * l.known + 2] : 0.0;
-    const Vec2 g0 = coreV.R * l.s;
-    const Vec2 P = coreV.r + g0;
-    const Vec2 vP = coreV.v + coreV.w * perp(g0);
-    const Vec2 aP = Vec2(ddq[c], ddq[c + 1]) + ddq[c + 2] * perp(g0) - coreV.w * coreV.w * g0;
-    placeBody(l.block, th, w, al, l.blockPin, P, vP, aP, q, dq, ddq);
+    const BodyState& k = next.of(l.known);
+    place(next.body[l.block], k.R, k.turns, k.w, k.al, l.blockPin, core.pos(l.s), core.vel(l.s),
+          core.acc(l.s));
   }
   return true;
 }

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "motion.h"
 #include "system.h"
 
 namespace linkage {
@@ -34,13 +35,13 @@ struct CoreGroup {
   int detSign = 0;              // of the 3 x 3 Jacobian on the drawn branch
 };
 
-// Solves the core's pose, rates and accelerations (and its blocks') from known bodies in q, dq,
-// ddq, starting from the core's previous pose in `prev` advanced by h along its rates. False
-// when Newton does not settle near the prediction or the group is (near) singular.
-bool solveCore(const CoreGroup& g, const System& sys, const Eigen::VectorXd& prev, double h,
-               Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq);
+// Solves the core's pose, rates and accelerations (and its blocks') in next, from the known
+// bodies already in next, starting from the core's pose in prev advanced along its rates to
+// next.phi. False when Newton does not settle near the prediction or the group is (near)
+// singular.
+bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion& next);
 
 // Sign of det of the core's 3 x 3 Jacobian at q (0 if singular).
-int coreDetSign(const CoreGroup& g, const System& sys, const Eigen::VectorXd& q);
+int coreDetSign(const CoreGroup& g, const Eigen::VectorXd& q);
 
 }  // namespace linkage

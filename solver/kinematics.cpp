@@ -19,7 +19,7 @@ std::string deg(double v) {
 }  // namespace
 
 double Kinematics::crankDeg() const {
-  return (cur_.phi - sys_.startRad) / kDeg;
+  return (cur().phi - sys_.startRad) / kDeg;
 }
 
 double Kinematics::omega() const {
@@ -36,11 +36,10 @@ std::string Kinematics::bodyList(const std::vector<int>& bodies) const {
 }
 
 Status Kinematics::load(const Mechanism& m) {
-  return prepare(m, nullptr);
+  return prepare(m, nullptr, 0.0);
 }
 
-Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
-  const double warmPhi = cur_.phi;
+Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm, double warmPhi) {
   valid_ = false;
   notes_.clear();
   assembly_ = {};
@@ -102,7 +101,6 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
   if (!s.ok()) return s;
 
   Snapshot snap;
-  snap.phi = phi;
   snap.q = q;
   if (!newton_.derivatives(sys_, q, snap.dq, snap.ddq)) {
     s = Status::failure(StatusCode::Singular,
@@ -112,16 +110,18 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
     s.crankDeg = (phi - sys_.startRad) / kDeg;
     return s;
   }
+  snap.fromCoordinates(phi, snap.q, snap.dq, snap.ddq);
+  snap.coordinates = true;
   snap.regular = true;
-  cur_ = reg_ = snap;
+  reg_ = snap;
+  atSingular_ = false;
   regSign_ = newton_.detSign();
   valid_ = true;
   if (opt_.closedForm) {
     plan_ = ClosedFormPlan::build(mech_, sys_, q);
     // The plan must reproduce the configuration just solved, or it is not used.
-    next_ = reg_;
-    if (plan_ && !(plan_->solve(sys_, phi, phi, next_.q, next_.dq, next_.ddq) &&
-                   (next_.q - reg_.q).cwiseAbs().maxCoeff() <= 1e-9 * sys_.size &&
+    if (plan_ && !(plan_->solve(sys_, reg_, phi, next_) &&
+                   (coordinates(next_).q - reg_.q).cwiseAbs().maxCoeff() <= 1e-9 * sys_.size &&
                    (next_.dq - reg_.dq).cwiseAbs().maxCoeff() <= 1e-7 * (1 + reg_.dq.norm())))
       plan_.reset();
   }
@@ -140,8 +140,8 @@ Status Kinematics::edit(const Mechanism& m) {
   if (!valid_) return load(m);
   // Carry each surviving body's rigid displacement (rotation, translation) over to its new frame.
   const System old = sys_;
-  const Eigen::VectorXd oldQ = cur_.q;
-  const double phi = cur_.phi;
+  const Eigen::VectorXd oldQ = coordinates(cur()).q;
+  const double phi = cur().phi;
   Status s;
   std::optional<System> next = compile(m, s);
   if (!next) return s;
@@ -155,8 +155,7 @@ Status Kinematics::edit(const Mechanism& m) {
     const Vec2 r = R * next->frameOrigin[k] + t;
     warm.segment<3>(3 * k) << r.x(), r.y(), th;
   }
-  cur_.phi = phi;
-  s = prepare(m, &warm);
+  s = prepare(m, &warm, phi);
   if (s.ok()) return s;
   // The edit moved things too far for a warm start: assemble the drawing and turn the crank.
   const Status cold = load(m);
@@ -166,21 +165,22 @@ Status Kinematics::edit(const Mechanism& m) {
 
 Kinematics::StepResult Kinematics::tryStep(double phiNext, Snapshot& out) {
   const double h = phiNext - reg_.phi;
-  out.phi = phiNext;
-  out.q = reg_.q + h * reg_.dq + (0.5 * h * h) * reg_.ddq;
+  const Snapshot& from = coordinates(reg_);
+  out.q = from.q + h * from.dq + (0.5 * h * h) * from.ddq;
   lastRefusalCrossing_ = false;
   if (!newton_.solve(sys_, out.q, phiNext, opt_.newton).converged) return StepResult::Refused;
-  if (!newton_.derivatives(sys_, out.q, out.dq, out.ddq)) {
+  out.coordinates = true;
+  out.regular = newton_.derivatives(sys_, out.q, out.dq, out.ddq);
+  if (!out.regular) {
     // No velocities here: NaN, sized, so a caller that does not check derivativesValid() gets
     // an obviously undefined number rather than a stale or out-of-range one.
     out.dq = Eigen::VectorXd::Constant(sys_.nCoords(), NAN);
     out.ddq = out.dq;
-    out.regular = false;
-    return StepResult::Singular;
   }
+  out.fromCoordinates(phiNext, out.q, out.dq, out.ddq);
+  if (!out.regular) return StepResult::Singular;
   lastRefusalCrossing_ = newton_.detSign() != regSign_;
   if (lastRefusalCrossing_) return StepResult::Refused;
-  out.regular = true;
   return StepResult::Accepted;
 }
 
@@ -199,7 +199,7 @@ Status Kinematics::skipWholeTurns(double target) {
   const Snapshot start = reg_;
   if (Status s = moveToPhi(reg_.phi + dir * turn); !s.ok()) return s;
   // Periodic when every point is back: x, y equal and angles equal modulo whole turns.
-  Eigen::VectorXd perTurn = reg_.q - start.q;
+  Eigen::VectorXd perTurn = coordinates(reg_).q - coordinates(start).q;
   for (int k = 0; k < sys_.nBodies; ++k) {
     const double dth = perTurn[3 * k + 2];
     const double whole = turn * std::round(dth / turn);
@@ -212,7 +212,9 @@ Status Kinematics::skipWholeTurns(double target) {
   const double turns = std::floor(std::abs(target - reg_.phi) / turn);
   reg_.phi += dir * turns * turn;
   reg_.q += turns * perTurn;
-  cur_ = reg_;
+  for (int k = 0; k < sys_.nBodies; ++k)
+    reg_.body[k].turns += static_cast<int>(std::lround(turns * perTurn[3 * k + 2] / turn));
+  atSingular_ = false;
   return Status::success();
 }
 
@@ -225,7 +227,7 @@ Status Kinematics::moveToPhi(double target) {
   if (plan_ && trackClosedForm(target)) return Status::success();
   if (plan_) {  // the general solve takes over from the last closed-form position
     Eigen::VectorXd dq, ddq;
-    if (newton_.derivatives(sys_, reg_.q, dq, ddq)) regSign_ = newton_.detSign();
+    if (newton_.derivatives(sys_, coordinates(reg_).q, dq, ddq)) regSign_ = newton_.detSign();
   }
   return trackGeneral(target);
 }
@@ -238,18 +240,15 @@ bool Kinematics::trackClosedForm(double target) {
     const double remaining = target - reg_.phi;
     const double phiNext =
         std::abs(remaining) <= hMax ? target : reg_.phi + std::copysign(hMax, remaining);
-    next_.q = reg_.q;
-    next_.dq = reg_.dq;  // core groups predict from the previous rates
-    next_.ddq = reg_.ddq;
-    if (!plan_->solve(sys_, reg_.phi, phiNext, next_.q, next_.dq, next_.ddq)) {
-      cur_ = reg_;
+    if (!plan_->solve(sys_, reg_, phiNext, next_)) {
+      atSingular_ = false;
       return false;
     }
-    next_.phi = phiNext;
     next_.regular = true;
+    next_.coordinates = false;  // made on demand: a closed-form step needs none
     std::swap(reg_, next_);
   }
-  cur_ = reg_;
+  atSingular_ = false;
   return true;
 }
 
@@ -261,7 +260,7 @@ Status Kinematics::trackGeneral(double target) {
   for (;;) {
     const double remaining = target - reg_.phi;
     if (remaining == 0) {
-      cur_ = reg_;
+      atSingular_ = false;
       return Status::success();
     }
     const bool last = std::abs(remaining) <= hTry;
@@ -270,13 +269,14 @@ Status Kinematics::trackGeneral(double target) {
     switch (tryStep(phiNext, next)) {
       case StepResult::Accepted:
         reg_ = std::move(next);
-        cur_ = reg_;
+        atSingular_ = false;
         regSign_ = newton_.detSign();
         hTry = std::min(hMax, 2 * hTry);
         continue;
       case StepResult::Singular:
         if (last) {
-          cur_ = std::move(next);
+          singular_ = std::move(next);
+          atSingular_ = true;
           Status s = Status::failure(
               StatusCode::Singular,
               "singular position at crank angle " + deg((target - sys_.startRad) / kDeg) +
@@ -291,7 +291,7 @@ Status Kinematics::trackGeneral(double target) {
         break;
     }
     if (hTry < hMin) {
-      cur_ = reg_;
+      atSingular_ = false;
       return explainFailure(target, crossing);
     }
   }
@@ -304,8 +304,8 @@ Status Kinematics::explainFailure(double phiFailed, bool crossing) {
   double speed = 0;
   std::vector<double> perBody(sys_.nBodies, 0.0);
   for (int k = 0; k < sys_.nBodies; ++k) {
-    perBody[k] = std::max({std::abs(reg_.dq[3 * k]), std::abs(reg_.dq[3 * k + 1]),
-                           std::abs(reg_.dq[3 * k + 2]) * sys_.size});
+    const BodyState& b = reg_.body[k];
+    perBody[k] = std::max({std::abs(b.v.x()), std::abs(b.v.y()), std::abs(b.w) * sys_.size});
     speed = std::max(speed, perBody[k]);
   }
   Status s;
@@ -329,7 +329,7 @@ Status Kinematics::explainFailure(double phiFailed, bool crossing) {
     // Finite velocities but a nearly singular Jacobian: the branches meet just ahead (a
     // change point), where Newton cannot tell them apart.
     Eigen::VectorXd dq, ddq;
-    newton_.derivatives(sys_, reg_.q, dq, ddq);
+    newton_.derivatives(sys_, coordinates(reg_).q, dq, ddq);
     crossing = newton_.pivotRatio() < 1e-3;
   }
   if (crossing) {
@@ -355,62 +355,55 @@ const PointLocation& Kinematics::locate(PointId p) const {
   return *loc;
 }
 
-const Rot& Kinematics::rotation(int body) const {
-  if (rot_.size() != static_cast<size_t>(sys_.nBodies)) {
-    rot_.assign(sys_.nBodies, Rot{});
-    rotAngle_.assign(sys_.nBodies, NAN);  // NaN never equals an angle: first use evaluates
-  }
-  const double th = cur_.q[3 * body + 2];
-  if (rotAngle_[body] != th) {
-    rot_[body] = Rot{std::cos(th), std::sin(th)};
-    rotAngle_[body] = th;
-  }
-  return rot_[body];
-}
-
 Vec2 Kinematics::position(PointId p) const {
   const PointLocation& l = locate(p);
-  if (l.body < 0) return l.s;
-  return cur_.q.segment<2>(3 * l.body) + rotation(l.body) * l.s;
+  return cur().of(l.body).pos(l.s);
 }
 
 Vec2 Kinematics::velocity(PointId p) const {
   const PointLocation& l = locate(p);
-  if (l.body < 0) return Vec2::Zero();
-  const int k = 3 * l.body;
-  return omega() * (cur_.dq.segment<2>(k) + cur_.dq[k + 2] * perp(rotation(l.body) * l.s));
+  return omega() * cur().of(l.body).vel(l.s);
 }
 
 Vec2 Kinematics::acceleration(PointId p) const {
   const PointLocation& l = locate(p);
-  if (l.body < 0) return Vec2::Zero();
-  const int k = 3 * l.body;
-  const Vec2 g = rotation(l.body) * l.s;
   const double w = omega();
-  return w * w *
-         (cur_.ddq.segment<2>(k) + cur_.ddq[k + 2] * perp(g) - cur_.dq[k + 2] * cur_.dq[k + 2] * g);
+  return w * w * cur().of(l.body).acc(l.s);
+}
+
+Kinematics::PointMotion Kinematics::motion(PointId p) const {
+  const PointLocation& l = locate(p);
+  const BodyState& b = cur().of(l.body);
+  const Vec2 g = b.R * l.s;
+  const double w = omega();
+  return {b.r + g, w * (b.v + b.w * perp(g)), w * w * (b.a + b.al * perp(g) - b.w * b.w * g)};
 }
 
 double Kinematics::bodyAngle(BodyId b) const {
-  const int k = sys_.bodyIndex(b);
-  return k < 0 ? 0.0 : cur_.q[3 * k + 2];
+  return cur().of(sys_.bodyIndex(b)).angle();
 }
 
 double Kinematics::bodyOmega(BodyId b) const {
-  const int k = sys_.bodyIndex(b);
-  return k < 0 ? 0.0 : omega() * cur_.dq[3 * k + 2];
+  return omega() * cur().of(sys_.bodyIndex(b)).w;
 }
 
 double Kinematics::bodyAlpha(BodyId b) const {
-  const int k = sys_.bodyIndex(b);
-  return k < 0 ? 0.0 : omega() * omega() * cur_.ddq[3 * k + 2];
+  return omega() * omega() * cur().of(sys_.bodyIndex(b)).al;
+}
+
+const Kinematics::Snapshot& Kinematics::coordinates(const Snapshot& s) const {
+  if (!s.coordinates) {
+    s.toCoordinates(s.q, s.dq, s.ddq);
+    s.coordinates = true;
+  }
+  return s;
 }
 
 Status Kinematics::checkDetermined(const std::vector<PointId>& points) const {
   for (PointId p : points) {
     const PointLocation* loc = sys_.point(p);
     if (!loc) return Status::failure(StatusCode::BadModel, "unknown output point");
-    if (!structure_.pointDetermined(sys_, cur_.q, *loc)) {
+    if (!structure_.pointDetermined(sys_, coordinates(cur()).q, *loc)) {
       Status s = Status::failure(
           StatusCode::Underconstrained,
           "the motion of " + mech_.pointLabel(p) + " is not determined by the driver: " +

@@ -18,6 +18,7 @@
 #include "assembly.h"
 #include "closed_form.h"
 #include "model.h"
+#include "motion.h"
 #include "newton.h"
 #include "status.h"
 #include "structure.h"
@@ -64,11 +65,17 @@ class Kinematics {
   const std::vector<std::string>& notes() const { return notes_; }
 
   // False at a singular position, where positions are known but velocities are not.
-  bool derivativesValid() const { return cur_.regular; }
+  bool derivativesValid() const { return cur().regular; }
 
   // mm, mm/s, mm/s^2 at the driver's speed. Where derivativesValid() is false (moveTo returned
   // Singular) velocities and accelerations are not determined and come back as NaN.
   Vec2 position(PointId p) const;
+  // All three at once (one lookup, one rotation of the point): what a motion table or a plot
+  // of a point needs at each angle.
+  struct PointMotion {
+    Vec2 position, velocity, acceleration;
+  };
+  PointMotion motion(PointId p) const;
   Vec2 velocity(PointId p) const;
   Vec2 acceleration(PointId p) const;
   // Body angle (rad, relative to the drawing), angular velocity and acceleration.
@@ -83,18 +90,20 @@ class Kinematics {
   bool closedForm() const { return plan_.has_value(); }
 
   // Raw state: q and its derivatives with respect to the driver angle (rad).
-  const Eigen::VectorXd& q() const { return cur_.q; }
-  const Eigen::VectorXd& dq() const { return cur_.dq; }
-  const Eigen::VectorXd& ddq() const { return cur_.ddq; }
+  const Eigen::VectorXd& q() const { return coordinates(cur()).q; }
+  const Eigen::VectorXd& dq() const { return coordinates(cur()).dq; }
+  const Eigen::VectorXd& ddq() const { return coordinates(cur()).ddq; }
 
  private:
-  struct Snapshot {
-    double phi = 0;
-    Eigen::VectorXd q, dq, ddq;
+  struct Snapshot : Motion {
     bool regular = false;
+    // The same in coordinates (x, y, theta per body) for the general solve and the raw
+    // accessors; a closed-form step leaves them to be made on demand (coordinates()).
+    mutable Eigen::VectorXd q, dq, ddq;
+    mutable bool coordinates = false;
   };
 
-  Status prepare(const Mechanism& m, const Eigen::VectorXd* warm);
+  Status prepare(const Mechanism& m, const Eigen::VectorXd* warm, double warmPhi);
   Status moveToPhi(double phi);
   Status trackGeneral(double phi);
   // Closed-form steps towards phi; false where the plan cannot go on (reg_ is the last good).
@@ -105,9 +114,7 @@ class Kinematics {
   Status explainFailure(double phiFailed, bool crossing);
   std::string bodyList(const std::vector<int>& bodies) const;
   const PointLocation& locate(PointId p) const;
-  // cos and sin of a body's current angle, evaluated once per angle it takes (queries of
-  // several points of a body, or position, velocity and acceleration of one, share them).
-  const Rot& rotation(int body) const;
+  const Snapshot& coordinates(const Snapshot& s) const;
 
   KinematicsOptions opt_;
   Mechanism mech_;
@@ -116,13 +123,15 @@ class Kinematics {
   AssemblyReport assembly_;
   NewtonSolver newton_;
   std::vector<std::string> notes_;
-  Snapshot cur_, reg_;  // current position and last regular one (the predictor's base)
-  Snapshot next_;       // scratch for closed-form steps
+  // The current position: the last regular one (the predictor's base) or, after a step that
+  // ended on a singular position, that position. A flag, not a copy: a step copies nothing.
+  const Snapshot& cur() const { return atSingular_ ? singular_ : reg_; }
+  Snapshot reg_, singular_;
+  bool atSingular_ = false;
+  Snapshot next_;  // scratch for closed-form steps
   std::optional<ClosedFormPlan> plan_;
-  mutable std::vector<Rot> rot_;
-  mutable std::vector<double> rotAngle_;  // the angle each rot_ entry was evaluated for
-  int regSign_ = 0;                       // det J sign at reg_
-  bool lastRefusalCrossing_ = false;      // tryStep refused a converged step: det J changed sign
+  int regSign_ = 0;                   // det J sign at reg_
+  bool lastRefusalCrossing_ = false;  // tryStep refused a converged step: det J changed sign
   bool valid_ = false;
 };
 

@@ -390,18 +390,11 @@ Vec2 pointAcceleration(const System&, const Eigen::VectorXd& q, const Eigen::Vec
   return Vec2(a[k], a[k + 1]) + a[k + 2] * perp(s) - v[k + 2] * v[k + 2] * s;
 }
 
-Rot placeBody(int k, double th, double w, double al, const Vec2& s, const Vec2& P, const Vec2& vP,
-              const Vec2& aP, Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq) {
-  const int c = 3 * k;
-  const Rot R{std::cos(th), std::sin(th)};
-  const Vec2 g = R * s;
-  q.segment<2>(c) = P - g;
-  q[c + 2] = th;
-  dq.segment<2>(c) = vP - w * perp(g);
-  dq[c + 2] = w;
-  ddq.segment<2>(c) = aP - al * perp(g) + w * w * g;
-  ddq[c + 2] = al;
-  return R;
+std::vector<Rot> rotations(const System& sys, const Eigen::VectorXd& q) {
+  std::vector<Rot> rot(sys.nBodies);
+  for (int k = 0; k < sys.nBodies; ++k)
+    rot[k] = Rot{std::cos(q[3 * k + 2]), std::sin(q[3 * k + 2])};
+  return rot;
 }
 
 Eigen::VectorXd sketchCoordinates(const System& sys) {

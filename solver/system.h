@@ -95,10 +95,8 @@ Vec2 pointVelocity(const System& sys, const Eigen::VectorXd& q, const Eigen::Vec
 Vec2 pointAcceleration(const System& sys, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                        const Eigen::VectorXd& a, const PointLocation& p);
 
-// Writes body k's pose, rates and accelerations (in q, dq, ddq) from its angle th, angular rate
-// w and acceleration al and the motion (P, vP, aP) of its local point s. Returns the rotation.
-Rot placeBody(int k, double th, double w, double al, const Vec2& s, const Vec2& P, const Vec2& vP,
-              const Vec2& aP, Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq);
+// Each body's rotation (cos and sin of its angle) at q.
+std::vector<Rot> rotations(const System& sys, const Eigen::VectorXd& q);
 
 // The sketch configuration: every body at its drawn pose.
 Eigen::VectorXd sketchCoordinates(const System& sys);

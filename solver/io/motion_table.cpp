@@ -22,8 +22,9 @@ std::string motionTableRow(const Kinematics& k, double crankDeg,
   std::string r = formatNumber(crankDeg / (6.0 * k.rpm()));
   r.append(",").append(formatNumber(crankDeg));
   for (PointId p : points) {
-    const Vec2 x = k.position(p), v = k.velocity(p), a = k.acceleration(p);
-    for (double value : {x.x(), x.y(), v.x(), v.y(), a.x(), a.y()})
+    const Kinematics::PointMotion m = k.motion(p);
+    for (double value : {m.position.x(), m.position.y(), m.velocity.x(), m.velocity.y(),
+                         m.acceleration.x(), m.acceleration.y()})
       r.append(",").append(formatNumber(value));
   }
   return r;
