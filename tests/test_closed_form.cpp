@@ -63,6 +63,28 @@ TEST(ClosedForm, RandomGrashofFourBarsMatchTheGeneralSolve) {
   }
 }
 
+// A drag link (ground shortest): crank, coupler and rocker all turn fully, so every body's
+// angle crosses the -x axis many times. The closed-form path keeps rotations and counts whole
+// turns by signs only; its angles must equal the general solve's continued angles, forwards
+// and backwards, and grow by exactly one turn per crank turn.
+TEST(ClosedForm, DragLinkCountsWholeTurnsOfEveryBody) {
+  auto f = test::fourBar(20, 50, 60, 55, 30, true, 10, 5);
+  expectSameMotion(f.m, {f.P}, 1080, "drag link");
+  Kinematics fast = make(f.m, true), slow = make(f.m, false);
+  for (double a : {0.0, 200.0, 721.0, 1500.0, -10.0, -800.0, 5.0}) {
+    ASSERT_TRUE(fast.moveTo(a).ok()) << a;
+    ASSERT_TRUE(slow.moveTo(a).ok()) << a;
+    for (BodyId b : {f.crank, f.coupler, f.rocker})
+      EXPECT_NEAR(fast.bodyAngle(b), slow.bodyAngle(b), 1e-10) << a;
+  }
+  Kinematics k = make(f.m, true);
+  ASSERT_TRUE(k.moveTo(17).ok());
+  const double rocker = k.bodyAngle(f.rocker), coupler = k.bodyAngle(f.coupler);
+  ASSERT_TRUE(k.moveTo(17 + 3 * 360).ok());
+  EXPECT_NEAR(k.bodyAngle(f.rocker) - rocker, 6 * M_PI, 1e-9);
+  EXPECT_NEAR(k.bodyAngle(f.coupler) - coupler, 6 * M_PI, 1e-9);
+}
+
 TEST(ClosedFormCoverage, SliderCranksBothKinds) {
   for (bool pinInSlot : {false, true}) {
     auto sc = test::sliderCrank(12, 41, 5, 70, Direction::Cw, 1500, pinInSlot);
