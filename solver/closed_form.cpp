@@ -274,88 +274,155 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
 bool ClosedFormPlan::solve(const System& sys, const Motion& prev, double phi, Motion& next) const {
   next.phi = phi;
   next.body.resize(sys.nBodies);
-  const double h = phi - prev.phi;
   const Rot crank{std::cos(phi), std::sin(phi)};
+  for (const Group& g : groups_)
+    if (!solveGroup(g, sys, prev, phi - prev.phi, crank, next)) return false;
+  return true;
+}
+
+void ClosedFormPlan::bodiesOf(const Group& g, std::vector<int>& unknown,
+                              std::vector<int>& known) const {
+  unknown.clear();
+  known.clear();
+  if (g.kind == Kind::Core) {
+    const CoreGroup& core = cores_[g.core];
+    unknown.push_back(core.core);
+    for (const CoreLink& l : core.links) {
+      if (l.block >= 0) unknown.push_back(l.block);
+      known.push_back(l.known);
+    }
+    return;
+  }
+  for (int b : {g.b1, g.b2})
+    if (b >= 0) unknown.push_back(b);
+  known.push_back(g.k1);
+  if (g.kind != Kind::Crank) known.push_back(g.k2);
+}
+
+bool ClosedFormPlan::sameGeometry(const Group& a, const Group& b, const ClosedFormPlan& pa,
+                                  const ClosedFormPlan& pb) {
+  if (a.kind == Kind::Core) {
+    const std::vector<CoreLink>&la = pa.cores_[a.core].links, &lb = pb.cores_[b.core].links;
+    if (la.size() != lb.size()) return false;
+    for (size_t i = 0; i < la.size(); ++i)
+      if (la[i].s != lb[i].s || la[i].ks != lb[i].ks || la[i].n != lb[i].n ||
+          la[i].blockPin != lb[i].blockPin)
+        return false;
+    return true;
+  }
+  return a.p1k == b.p1k && a.p1 == b.p1 && a.c1 == b.c1 && a.c2 == b.c2 && a.p2 == b.p2 &&
+         a.p2k == b.p2k && a.u == b.u && a.n == b.n && a.q2 == b.q2;
+}
+
+int ClosedFormPlan::resolveEdited(const System& sys, const ClosedFormPlan& before,
+                                  const Motion& prev, Motion& next) {
+  if (before.groups_.size() != groups_.size() || before.cores_.size() != cores_.size()) return -1;
+  std::vector<int> unknown, known, knownBefore;
+  for (size_t i = 0; i < groups_.size(); ++i) {
+    const Group &a = before.groups_[i], &b = groups_[i];
+    bodiesOf(a, unknown, knownBefore);
+    bodiesOf(b, unknown, known);
+    if (a.kind != b.kind || a.b1 != b.b1 || a.b2 != b.b2 || known != knownBefore) return -1;
+  }
+  // The same assembly branches as before the edit.
+  for (size_t i = 0; i < groups_.size(); ++i) groups_[i].sign = before.groups_[i].sign;
+  for (size_t i = 0; i < cores_.size(); ++i) cores_[i].detSign = before.cores_[i].detSign;
+
+  next.phi = prev.phi;
+  next.body = prev.body;
+  const Rot crank{std::cos(prev.phi), std::sin(prev.phi)};
+  std::vector<char> moved(sys.nBodies, 0);
+  int solved = 0;
+  for (size_t i = 0; i < groups_.size(); ++i) {
+    const Group& g = groups_[i];
+    bodiesOf(g, unknown, known);
+    bool touched = !sameGeometry(before.groups_[i], g, before, *this);
+    for (int b : known) touched = touched || (b >= 0 && moved[b]);
+    if (!touched) continue;  // its bodies keep prev's motion, already in next
+    if (!solveGroup(g, sys, prev, 0.0, crank, next)) return -1;
+    for (int b : unknown) moved[b] = 1;
+    ++solved;
+  }
+  return solved;
+}
+
+bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion& prev, double h,
+                                const Rot& crank, Motion& next) const {
   // Sets body b, continuing its count of whole turns from the previous position.
   auto set = [&](int b, const Rot& R, double w, double al, const Vec2& s, const Vec2& P,
                  const Vec2& vP, const Vec2& aP) {
     const BodyState& before = prev.body[b];
     place(next.body[b], R, turnsAfter(before.R, before.turns, R), w, al, s, P, vP, aP);
   };
-  for (const Group& g : groups_) {
-    if (g.kind == Kind::Core) {
-      if (!solveCore(cores_[g.core], sys, prev, next)) return false;
-      continue;
-    }
-    const BodyState& k1 = next.of(g.k1);
-    const Vec2 P1 = k1.pos(g.p1k), vP1 = k1.vel(g.p1k), aP1 = k1.acc(g.p1k);
-    if (g.kind == Kind::Crank) {
-      set(g.b1, compose(k1.R, g.sign > 0 ? crank : Rot{crank.c, -crank.s}), k1.w + g.sign, k1.al,
-          g.p1, P1, vP1, aP1);
-      continue;
-    }
-    const double d1 = g.d1;
-    // The joint C as the smooth motion would carry it: if that lands on the other side of the
-    // branch line than the drawn branch, the motion crosses a singular position (a change
-    // point, or a dead point ahead), where the intersection formula would reflect onto the
-    // other branch. The general solve takes over there and reports it.
-    const Vec2 Cpred = prev.body[g.b1].predicted(g.c1, h);
-    Vec2 C, u1 = Vec2::Zero();
-    double w1 = 0, al1 = 0;
-    if (g.kind == Kind::RRR) {
-      const BodyState& k2 = next.of(g.k2);
-      const Vec2 P2 = k2.pos(g.p2k), vP2 = k2.vel(g.p2k), aP2 = k2.acc(g.p2k);
-      const double d2 = g.d2;
-      const Vec2 e = P2 - P1;
-      const double L = e.norm();
-      if (!(L > 0)) return false;
-      const Vec2 eh = e / L;
-      const double a = (d1 * d1 - d2 * d2 + L * L) / (2 * L);
-      const double h2 = d1 * d1 - a * a;
-      if (!(h2 >= 0)) return false;
-      if (g.sign * cross(eh, Cpred - P1) < 0) return false;
-      C = P1 + a * eh + g.sign * std::sqrt(h2) * perp(eh);
-      u1 = C - P1;
-      const Vec2 u2 = C - P2;
-      const Solve2 m(perp(u1), -perp(u2));
-      if (!m.regular()) return false;
-      double w2, al2;
-      m.solve(vP2 - vP1, w1, w2);
-      m.solve(aP2 - aP1 - w2 * w2 * u2 + w1 * w1 * u1, al1, al2);
-      set(g.b2, turning(g.rot2, u2 / d2), w2, al2, g.p2, P2, vP2, aP2);
-    } else {
-      // The line C must keep to: the slot (through U, normal n), shifted by the block's offset.
-      const BodyState& k2 = next.of(g.k2);
-      const Vec2 n = k2.R * g.n, dir = k2.R * g.d, U = k2.pos(g.u);
-      const Vec2 w = g.kind == Kind::RRP ? Vec2(k2.R * (g.q2 - g.c2)) : Vec2::Zero();
-      const double delta = n.dot(U - w - P1);
-      const double lam2 = d1 * d1 - delta * delta;
-      if (!(lam2 >= 0)) return false;
-      const Vec2 foot = P1 + delta * n;
-      if (g.sign * dir.dot(Cpred - foot) < 0) return false;
-      C = foot + g.sign * std::sqrt(lam2) * dir;
-      u1 = C - P1;
-      // C = U + s dir - w, with the block turning with k2 (w' = w_k2 perp(w)).
-      const double s = dir.dot(C + w - U);
-      const Vec2 Ru = k2.R * g.u;
-      const Vec2 vU = k2.v + k2.w * perp(Ru);
-      const Vec2 V0 = vU + s * k2.w * perp(dir) - k2.w * perp(w);
-      const Solve2 m(perp(u1), -dir);
-      if (!m.regular()) return false;
-      double sd, sdd;
-      m.solve(V0 - vP1, w1, sd);
-      const Vec2 aU = k2.a + k2.al * perp(Ru) - k2.w * k2.w * Ru;
-      const Vec2 A0 = aU + 2 * sd * k2.w * perp(dir) + s * (k2.al * perp(dir) - k2.w * k2.w * dir) -
-                      (k2.al * perp(w) - k2.w * k2.w * w);
-      m.solve(A0 - aP1 + w1 * w1 * u1, al1, sdd);
-      if (g.kind == Kind::RRP) {
-        // The block keeps its slot body's angle (the slider holds the drawn relative angle,
-        // zero), whole turns included.
-        place(next.body[g.b2], k2.R, k2.turns, k2.w, k2.al, g.c2, C, V0 + sd * dir, A0 + sdd * dir);
-      }
-    }
-    set(g.b1, turning(g.rot1, u1 / d1), w1, al1, g.p1, P1, vP1, aP1);
+  if (g.kind == Kind::Core) return solveCore(cores_[g.core], sys, prev, next);
+  const BodyState& k1 = next.of(g.k1);
+  const Vec2 P1 = k1.pos(g.p1k), vP1 = k1.vel(g.p1k), aP1 = k1.acc(g.p1k);
+  if (g.kind == Kind::Crank) {
+    set(g.b1, compose(k1.R, g.sign > 0 ? crank : Rot{crank.c, -crank.s}), k1.w + g.sign, k1.al,
+        g.p1, P1, vP1, aP1);
+    return true;
   }
+  const double d1 = g.d1;
+  // The joint C as the smooth motion would carry it: if that lands on the other side of the
+  // branch line than the drawn branch, the motion crosses a singular position (a change
+  // point, or a dead point ahead), where the intersection formula would reflect onto the
+  // other branch. The general solve takes over there and reports it.
+  const Vec2 Cpred = prev.body[g.b1].predicted(g.c1, h);
+  Vec2 C, u1 = Vec2::Zero();
+  double w1 = 0, al1 = 0;
+  if (g.kind == Kind::RRR) {
+    const BodyState& k2 = next.of(g.k2);
+    const Vec2 P2 = k2.pos(g.p2k), vP2 = k2.vel(g.p2k), aP2 = k2.acc(g.p2k);
+    const double d2 = g.d2;
+    const Vec2 e = P2 - P1;
+    const double L = e.norm();
+    if (!(L > 0)) return false;
+    const Vec2 eh = e / L;
+    const double a = (d1 * d1 - d2 * d2 + L * L) / (2 * L);
+    const double h2 = d1 * d1 - a * a;
+    if (!(h2 >= 0)) return false;
+    if (g.sign * cross(eh, Cpred - P1) < 0) return false;
+    C = P1 + a * eh + g.sign * std::sqrt(h2) * perp(eh);
+    u1 = C - P1;
+    const Vec2 u2 = C - P2;
+    const Solve2 m(perp(u1), -perp(u2));
+    if (!m.regular()) return false;
+    double w2, al2;
+    m.solve(vP2 - vP1, w1, w2);
+    m.solve(aP2 - aP1 - w2 * w2 * u2 + w1 * w1 * u1, al1, al2);
+    set(g.b2, turning(g.rot2, u2 / d2), w2, al2, g.p2, P2, vP2, aP2);
+  } else {
+    // The line C must keep to: the slot (through U, normal n), shifted by the block's offset.
+    const BodyState& k2 = next.of(g.k2);
+    const Vec2 n = k2.R * g.n, dir = k2.R * g.d, U = k2.pos(g.u);
+    const Vec2 w = g.kind == Kind::RRP ? Vec2(k2.R * (g.q2 - g.c2)) : Vec2::Zero();
+    const double delta = n.dot(U - w - P1);
+    const double lam2 = d1 * d1 - delta * delta;
+    if (!(lam2 >= 0)) return false;
+    const Vec2 foot = P1 + delta * n;
+    if (g.sign * dir.dot(Cpred - foot) < 0) return false;
+    C = foot + g.sign * std::sqrt(lam2) * dir;
+    u1 = C - P1;
+    // C = U + s dir - w, with the block turning with k2 (w' = w_k2 perp(w)).
+    const double s = dir.dot(C + w - U);
+    const Vec2 Ru = k2.R * g.u;
+    const Vec2 vU = k2.v + k2.w * perp(Ru);
+    const Vec2 V0 = vU + s * k2.w * perp(dir) - k2.w * perp(w);
+    const Solve2 m(perp(u1), -dir);
+    if (!m.regular()) return false;
+    double sd, sdd;
+    m.solve(V0 - vP1, w1, sd);
+    const Vec2 aU = k2.a + k2.al * perp(Ru) - k2.w * k2.w * Ru;
+    const Vec2 A0 = aU + 2 * sd * k2.w * perp(dir) + s * (k2.al * perp(dir) - k2.w * k2.w * dir) -
+                    (k2.al * perp(w) - k2.w * k2.w * w);
+    m.solve(A0 - aP1 + w1 * w1 * u1, al1, sdd);
+    if (g.kind == Kind::RRP) {
+      // The block keeps its slot body's angle (the slider holds the drawn relative angle,
+      // zero), whole turns included.
+      place(next.body[g.b2], k2.R, k2.turns, k2.w, k2.al, g.c2, C, V0 + sd * dir, A0 + sdd * dir);
+    }
+  }
+  set(g.b1, turning(g.rot1, u1 / d1), w1, al1, g.p1, P1, vP1, aP1);
   return true;
 }
 

@@ -46,6 +46,15 @@ class ClosedFormPlan {
   // must be discarded.
   bool solve(const System& sys, const Motion& prev, double phi, Motion& next) const;
 
+  // After an edit of dimensions (the same topology, so the same groups in the same order) whose
+  // plan before the edit was `before`: the groups whose geometry changed, and those that
+  // depend on one, are solved again at prev.phi from prev (the pose before the edit, in the
+  // new body frames), on the branches of `before`; every other group keeps its bodies'
+  // motion from prev exactly. Returns the number of groups solved; -1 where the plans differ
+  // in their groups, or a group cannot close or is singular there.
+  int resolveEdited(const System& sys, const ClosedFormPlan& before, const Motion& prev,
+                    Motion& next);
+
   int groups() const { return static_cast<int>(groups_.size()); }
 
  private:
@@ -65,6 +74,14 @@ class ClosedFormPlan {
     double sign = 1;         // Crank: +-sigma; RRR, RRP, RP: the drawn branch
     int core = -1;           // Core: index into cores_
   };
+  // Solves one group into next from prev (h radians of crank later, crank rotation `crank`).
+  bool solveGroup(const Group& g, const System& sys, const Motion& prev, double h, const Rot& crank,
+                  Motion& next) const;
+  static bool sameGeometry(const Group& a, const Group& b, const ClosedFormPlan& pa,
+                           const ClosedFormPlan& pb);
+  // The group's unknown bodies, then the known bodies it reads (-1 for ground).
+  void bodiesOf(const Group& g, std::vector<int>& unknown, std::vector<int>& known) const;
+
   std::vector<Group> groups_;
   std::vector<CoreGroup> cores_;
 };

@@ -136,8 +136,48 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm, doub
   return Status::success();
 }
 
+bool Kinematics::editInPlace(const Mechanism& m) {
+  std::vector<BodyId> reshaped;
+  if (!plan_ || atSingular_ || !sameTopology(mech_, m, reshaped)) return false;
+  Status s;
+  std::optional<System> sys = compile(m, s);
+  if (!sys || sys->nRows != sys_.nRows || sys->nBodies != sys_.nBodies) return false;
+  // The current pose in the new body frames: a reshaped body keeps its rigid displacement from
+  // the drawing (its frame origin, the centroid of its points, moved with the points).
+  Motion warm = reg_;
+  for (BodyId id : reshaped) {
+    const int k = sys->bodyIndex(id);
+    if (k < 0) continue;  // ground: no frame to move
+    BodyState& b = warm.body[k];
+    const Vec2 shift = b.R * (sys->frameOrigin[k] - sys_.frameOrigin[k]);
+    b.r += shift;
+    b.v += b.w * perp(shift);
+    b.a += b.al * perp(shift) - b.w * b.w * shift;
+  }
+  Eigen::VectorXd q, dq, ddq;
+  warm.toCoordinates(q, dq, ddq);
+  std::optional<ClosedFormPlan> plan = ClosedFormPlan::build(m, *sys, q);
+  if (!plan) return false;
+  Motion solved;
+  const int groups = plan->resolveEdited(*sys, *plan_, warm, solved);
+  if (groups < 0) return false;
+  mech_ = m;
+  sys_ = std::move(*sys);
+  plan_ = std::move(plan);
+  static_cast<Motion&>(reg_) = std::move(solved);
+  reg_.regular = true;
+  reg_.coordinates = false;
+  // The same rows, so the structure and the Newton solver's row map stay as they are.
+  assembly_ = {};
+  notes_.clear();
+  lastEditGroups_ = groups;
+  return true;
+}
+
 Status Kinematics::edit(const Mechanism& m) {
   if (!valid_) return load(m);
+  if (editInPlace(m)) return Status::success();
+  lastEditGroups_ = -1;
   // Carry each surviving body's rigid displacement (rotation, translation) over to its new frame.
   const System old = sys_;
   const Eigen::VectorXd oldQ = coordinates(cur()).q;

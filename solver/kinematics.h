@@ -45,7 +45,12 @@ class Kinematics {
 
   // Replaces the mechanism by an edited version of it and re-solves at the current crank angle,
   // starting from the current pose of every body that is still there (matched by id).
+  // An edit of dimensions only (points or slots moved; see sameTopology) on the closed-form path
+  // re-solves only the groups of the changed bodies and of those that depend on them, on the
+  // same assembly branch; other edits, or one that a group cannot follow, are solved whole.
   Status edit(const Mechanism& m);
+  // Groups the last edit solved again, or -1 when it was solved whole.
+  int lastEditGroups() const { return lastEditGroups_; }
 
   // Tracks the motion to the given crank angle (degrees, from the start, in the driving
   // direction). On failure the state stays at the last position reached.
@@ -104,6 +109,7 @@ class Kinematics {
   };
 
   Status prepare(const Mechanism& m, const Eigen::VectorXd* warm, double warmPhi);
+  bool editInPlace(const Mechanism& m);
   Status moveToPhi(double phi);
   Status trackGeneral(double phi);
   // Closed-form steps towards phi; false where the plan cannot go on (reg_ is the last good).
@@ -133,6 +139,7 @@ class Kinematics {
   int regSign_ = 0;                   // det J sign at reg_
   bool lastRefusalCrossing_ = false;  // tryStep refused a converged step: det J changed sign
   bool valid_ = false;
+  int lastEditGroups_ = -1;
 };
 
 }  // namespace linkage

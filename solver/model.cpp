@@ -160,4 +160,37 @@ const char* toString(JointType t) {
   return "?";
 }
 
+bool sameTopology(const Mechanism& a, const Mechanism& b, std::vector<BodyId>& reshaped) {
+  reshaped.clear();
+  if (a.bodies.size() != b.bodies.size() || a.points.size() != b.points.size() ||
+      a.slots.size() != b.slots.size() || a.joints.size() != b.joints.size() ||
+      a.driver.has_value() != b.driver.has_value())
+    return false;
+  for (size_t i = 0; i < a.bodies.size(); ++i)
+    if (a.bodies[i].id != b.bodies[i].id || a.bodies[i].ground != b.bodies[i].ground) return false;
+  auto reshape = [&](BodyId id) {
+    if (std::find(reshaped.begin(), reshaped.end(), id) == reshaped.end()) reshaped.push_back(id);
+  };
+  for (size_t i = 0; i < a.points.size(); ++i) {
+    const Point &p = a.points[i], &q = b.points[i];
+    if (p.id != q.id || p.body != q.body) return false;
+    if (p.pos != q.pos) reshape(p.body);
+  }
+  for (size_t i = 0; i < a.slots.size(); ++i) {
+    const Slot &p = a.slots[i], &q = b.slots[i];
+    if (p.id != q.id || p.body != q.body) return false;
+    if (p.p0 != q.p0 || p.p1 != q.p1) reshape(p.body);
+  }
+  for (size_t i = 0; i < a.joints.size(); ++i) {
+    const Joint &p = a.joints[i], &q = b.joints[i];
+    if (p.id != q.id || p.type != q.type || p.a != q.a || p.b != q.b || p.slot != q.slot)
+      return false;
+  }
+  if (a.driver &&
+      (a.driver->joint != b.driver->joint || a.driver->direction != b.driver->direction ||
+       a.driver->startDeg != b.driver->startDeg))
+    return false;
+  return true;
+}
+
 }  // namespace linkage

@@ -128,4 +128,10 @@ struct Mechanism {
 
 const char* toString(JointType t);
 
+// Whether b is a with other dimensions only: the same bodies, points, slots, joints and driver
+// (ids, kinds, connections, start angle and direction), with points or slots moved. The bodies
+// whose shape changed go to `reshaped`. Such an edit can be re-solved group by group from the
+// current pose; anything else is a new mechanism.
+bool sameTopology(const Mechanism& a, const Mechanism& b, std::vector<BodyId>& reshaped);
+
 }  // namespace linkage

@@ -1,0 +1,127 @@
+// Edits of dimensions on the closed-form path re-solve only the groups they touch
+// (Kinematics::edit, ClosedFormPlan::resolveEdited); the answer must equal loading the edited
+// drawing afresh and turning the crank to the same angle.
+#include <gtest/gtest.h>
+
+#include "kinematics.h"
+#include "mechanisms.h"
+
+namespace linkage {
+namespace {
+
+// Every point's position, velocity and acceleration equal a fresh load turned to `deg`.
+void expectSameAsFresh(const Kinematics& k, const Mechanism& m, double deg, const char* what) {
+  Kinematics fresh;
+  ASSERT_TRUE(fresh.load(m).ok()) << what;
+  ASSERT_TRUE(fresh.moveTo(deg).ok()) << what;
+  const double L = fresh.system().size, w = fresh.omega();
+  for (const Point& p : m.points) {
+    EXPECT_LT((k.position(p.id) - fresh.position(p.id)).norm(), 1e-10 * L) << what;
+    EXPECT_LT((k.velocity(p.id) - fresh.velocity(p.id)).norm(), 1e-9 * L * w) << what;
+    EXPECT_LT((k.acceleration(p.id) - fresh.acceleration(p.id)).norm(), 1e-9 * L * w * w) << what;
+  }
+}
+
+Point& named(Mechanism& m, const std::string& body, const std::string& point) {
+  const Body* b = m.bodyNamed(body);
+  return *m.point(m.pointNamed(b->id, point)->id);
+}
+
+TEST(Edit, ChainReSolvesOnlyTheGroupsDownstreamOfTheChange) {
+  const int loops = 20;
+  const Mechanism m = test::fourBarChain(loops);
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  ASSERT_TRUE(k.closedForm());
+  ASSERT_TRUE(k.moveTo(40).ok());
+  const int groups = loops + 1;  // the crank, then one RRR dyad per loop
+
+  // The last rocker's output arm: only the last loop's dyad.
+  Mechanism last = m;
+  named(last, "rocker19", "A").pos += Vec2(1.5, -0.5);
+  ASSERT_TRUE(k.edit(last).ok());
+  EXPECT_EQ(k.lastEditGroups(), 1);
+  expectSameAsFresh(k, last, 40, "last rocker");
+
+  // A ground pivot in the middle: its loop and every loop it drives.
+  Mechanism middle = last;
+  named(middle, "ground", "O4_10").pos += Vec2(0.8, 0.3);
+  named(middle, "rocker10", "O4").pos += Vec2(0.8, 0.3);
+  ASSERT_TRUE(k.edit(middle).ok());
+  EXPECT_EQ(k.lastEditGroups(), loops - 10);
+  expectSameAsFresh(k, middle, 40, "middle pivot");
+
+  // The crank: everything.
+  Mechanism crank = middle;
+  named(crank, "crank", "A").pos *= 1.02;
+  named(crank, "coupler0", "A").pos *= 1.02;
+  ASSERT_TRUE(k.edit(crank).ok());
+  EXPECT_EQ(k.lastEditGroups(), groups);
+  expectSameAsFresh(k, crank, 40, "crank");
+
+  // A speed change moves nothing: no group is solved, rates scale.
+  Mechanism faster = crank;
+  faster.driver->rpm = 600;
+  ASSERT_TRUE(k.edit(faster).ok());
+  EXPECT_EQ(k.lastEditGroups(), 0);
+  expectSameAsFresh(k, faster, 40, "rpm");
+
+  // The motion goes on from the edited state as from a fresh load.
+  ASSERT_TRUE(k.moveTo(250).ok());
+  expectSameAsFresh(k, faster, 250, "after the edits");
+}
+
+TEST(Edit, InPlaceEqualsTheWholeReSolveOfTheGeneralPath) {
+  auto f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  KinematicsOptions general;
+  general.closedForm = false;
+  Kinematics fast, slow(general);
+  ASSERT_TRUE(fast.load(f.m).ok());
+  ASSERT_TRUE(slow.load(f.m).ok());
+  ASSERT_TRUE(fast.moveTo(123).ok());
+  ASSERT_TRUE(slow.moveTo(123).ok());
+  Mechanism edited = f.m;
+  for (Point& p : edited.points)
+    if (p.body == f.coupler) p.pos += Vec2(0.5, 0.25) * (p.name == "B" ? 1 : 0);
+  ASSERT_TRUE(fast.edit(edited).ok());
+  ASSERT_TRUE(slow.edit(edited).ok());
+  EXPECT_GE(fast.lastEditGroups(), 1);
+  EXPECT_EQ(slow.lastEditGroups(), -1);
+  for (const Point& p : edited.points) {
+    EXPECT_LT((fast.position(p.id) - slow.position(p.id)).norm(), 1e-10);
+    EXPECT_LT((fast.acceleration(p.id) - slow.acceleration(p.id)).norm(),
+              1e-9 * (1 + slow.acceleration(p.id).norm()));
+  }
+}
+
+TEST(Edit, KeepsTheCrossedBranch) {
+  // Drawn crossed; after the edit (a longer rocker) it must still be crossed, as a fresh load of
+  // the edited drawing assembles it.
+  auto f = test::fourBar(60, 20, 70, 50, 60, false);
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  ASSERT_TRUE(k.moveTo(30).ok());
+  Mechanism edited = f.m;
+  for (Point& p : edited.points)
+    if (p.name == "O4") p.pos += Vec2(3, 0);
+  ASSERT_TRUE(k.edit(edited).ok());
+  EXPECT_GE(k.lastEditGroups(), 1);
+  expectSameAsFresh(k, edited, 30, "crossed");
+}
+
+TEST(Edit, TopologyChangesAreSolvedWhole) {
+  auto f = test::fourBar(60, 20, 70, 50, 60);
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  Mechanism more = f.m;
+  more.addPoint(f.coupler, "Q", Vec2(10, 10));
+  ASSERT_TRUE(k.edit(more).ok());
+  EXPECT_EQ(k.lastEditGroups(), -1);
+  Mechanism reversed = f.m;
+  reversed.driver->direction = Direction::Cw;
+  ASSERT_TRUE(k.edit(reversed).ok());
+  EXPECT_EQ(k.lastEditGroups(), -1);
+}
+
+}  // namespace
+}  // namespace linkage
