@@ -57,15 +57,23 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
     if (c.kind == RowKind::Angle) isSlider[c.joint] = true;
     if (c.kind == RowKind::Driver) driver = &c;
   }
+  // Each body's joints, in file order: the search looks only at a body's own joints, so it is
+  // linear in the size of a mechanism that decomposes.
+  std::vector<std::vector<int>> jointsOf(sys.nBodies);
+  for (int j = 0; j < nj; ++j) {
+    const Constraint* c = pin[j] ? pin[j] : line[j];
+    if (!c) continue;
+    for (int b : {c->bi, c->bj})
+      if (b >= 0) jointsOf[b].push_back(j);
+  }
   std::vector<bool> known(sys.nBodies, false);
   auto isKnown = [&](int b) { return b < 0 || known[b]; };
   // Joints of body b not used yet whose other side is known.
   auto toKnown = [&](int b, std::vector<int>& out) {
     out.clear();
-    for (int j = 0; j < nj; ++j) {
+    for (int j : jointsOf[b]) {
       if (used[j]) continue;
       const Constraint* c = pin[j] ? pin[j] : line[j];
-      if (!c) continue;
       if ((c->bi == b && isKnown(c->bj)) || (c->bj == b && isKnown(c->bi))) out.push_back(j);
     }
   };
@@ -129,9 +137,10 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
       }
       if (k1j.size() != 1 || !pin[k1j[0]]) continue;
       // A dyad: b1 pinned to b2, b2 with exactly one joint to known bodies.
-      for (int j = 0; j < nj && !progress; ++j) {
+      for (int j : jointsOf[b1]) {
+        if (progress) break;
         const Constraint* c = pin[j];
-        if (used[j] || !c || (c->bi != b1 && c->bj != b1)) continue;
+        if (used[j] || !c) continue;
         const int b2 = otherBody(c, b1);
         if (b2 < 0 || known[b2]) continue;
         toKnown(b2, k2j);
@@ -174,7 +183,8 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
       std::vector<int> joints, blocks;
       int rows = 0;
       bool usable = true;
-      for (int j = 0; j < nj && usable; ++j) {
+      for (int j : jointsOf[c]) {
+        if (!usable) break;
         if (used[j]) continue;
         const Constraint* p = pin[j];
         const Constraint* l = line[j];
@@ -191,11 +201,8 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
           } else {
             // A block: this pin and one slider in a known slot, nothing else.
             std::vector<int> rest;
-            for (int j2 = 0; j2 < nj; ++j2) {
-              if (used[j2] || j2 == j) continue;
-              const Constraint* c2 = pin[j2] ? pin[j2] : line[j2];
-              if (c2 && (c2->bi == other || c2->bj == other)) rest.push_back(j2);
-            }
+            for (int j2 : jointsOf[other])
+              if (!used[j2] && j2 != j) rest.push_back(j2);
             if (rest.size() != 1 || !isSlider[rest[0]] || line[rest[0]]->bi != other ||
                 !isKnown(line[rest[0]]->bj))
               continue;  // not a block: a joint for a later group

@@ -1,5 +1,6 @@
 #include "system.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -11,9 +12,7 @@
 namespace linkage {
 
 int System::bodyIndex(BodyId id) const {
-  for (int i = 0; i < nBodies; ++i)
-    if (bodyIds[i] == id) return i;
-  return -1;
+  return id.value < bodyIndexById.size() ? bodyIndexById[id.value] : -1;
 }
 
 const PointLocation* System::point(PointId id) const {
@@ -45,6 +44,18 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
     return std::nullopt;
   }
   sys.nBodies = static_cast<int>(sys.bodyIds.size());
+  // Lookups by id value, so that compiling is linear in the size of the mechanism.
+  std::uint32_t maxBody = 0;
+  for (const Body& b : m.bodies) maxBody = std::max(maxBody, b.id.value);
+  std::vector<char> isBody(maxBody + 1, 0);
+  for (const Body& b : m.bodies) isBody[b.id.value] = 1;
+  sys.bodyIndexById.assign(maxBody + 1, -1);
+  for (int k = 0; k < sys.nBodies; ++k) sys.bodyIndexById[sys.bodyIds[k].value] = k;
+  auto knownBody = [&](BodyId id) { return id.value <= maxBody && isBody[id.value]; };
+  std::uint32_t maxSlot = 0;
+  for (const Slot& sl : m.slots) maxSlot = std::max(maxSlot, sl.id.value);
+  std::vector<const Slot*> slotById(maxSlot + 1, nullptr);
+  for (const Slot& sl : m.slots) slotById[sl.id.value] = &sl;
 
   // Frames at the centroid of each body's drawn geometry (points and slot ends).
   std::vector<Vec2> sum(sys.nBodies, Vec2::Zero());
@@ -60,14 +71,14 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
     }
   };
   for (const Point& p : m.points) {
-    if (!m.body(p.body)) {
+    if (!knownBody(p.body)) {
       status = bad("point \"" + p.name + "\" belongs to no body");
       return std::nullopt;
     }
     addGeometry(p.body, p.pos);
   }
   for (const Slot& s : m.slots) {
-    if (!m.body(s.body)) {
+    if (!knownBody(s.body)) {
       status = bad("slot \"" + s.name + "\" belongs to no body");
       return std::nullopt;
     }
@@ -165,7 +176,7 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
       push(c);
       continue;
     }
-    const Slot* s = m.slot(j.slot);
+    const Slot* s = j.slot.value <= maxSlot ? slotById[j.slot.value] : nullptr;
     if (!s) {
       status = bad(where + ".slot: unknown slot");
       return std::nullopt;

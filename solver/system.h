@@ -62,6 +62,7 @@ struct System {
   // Indexed by PointId value (ids are small and dense): a lookup per query, no hashing.
   std::vector<PointLocation> points;
   std::vector<char> hasPoint;
+  std::vector<int> bodyIndexById;  // likewise by BodyId value; -1 for ground and unknown ids
 };
 
 // Compiles the mechanism; a reference the model cannot resolve ends in BadModel with its place.
