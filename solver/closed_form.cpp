@@ -26,6 +26,17 @@ Rot turning(const Rot& local, const Vec2& u) {
   return compose(Rot{u.x(), u.y()}, Rot{local.c, -local.s});
 }
 
+// A point's position, velocity and acceleration: one rotation of it, none on the ground.
+struct PointState {
+  Vec2 p, v, a;
+};
+
+PointState pointOf(int body, const BodyState& b, const Vec2& s) {
+  if (body < 0) return {s, Vec2::Zero(), Vec2::Zero()};
+  const Vec2 g = b.R * s, t = perp(g);
+  return {b.r + g, b.v + b.w * t, b.a + b.al * t - b.w * b.w * g};
+}
+
 // The 2 x 2 system [a b] x = rhs of a group's velocities, then of its accelerations (the same
 // matrix). Singular when the columns are (nearly) parallel: a dead point, left to the general
 // solver to explain.
@@ -363,7 +374,8 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
   };
   if (g.kind == Kind::Core) return solveCore(cores_[g.core], sys, prev, next);
   const BodyState& k1 = next.of(g.k1);
-  const Vec2 P1 = k1.pos(g.p1k), vP1 = k1.vel(g.p1k), aP1 = k1.acc(g.p1k);
+  const PointState p1 = pointOf(g.k1, k1, g.p1k);
+  const Vec2 &P1 = p1.p, &vP1 = p1.v, &aP1 = p1.a;
   if (g.kind == Kind::Crank) {
     set(g.b1, compose(k1.R, g.sign > 0 ? crank : Rot{crank.c, -crank.s}), k1.w + g.sign, k1.al,
         g.p1, P1, vP1, aP1);
@@ -378,8 +390,8 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
   Vec2 C, u1 = Vec2::Zero();
   double w1 = 0, al1 = 0;
   if (g.kind == Kind::RRR) {
-    const BodyState& k2 = next.of(g.k2);
-    const Vec2 P2 = k2.pos(g.p2k), vP2 = k2.vel(g.p2k), aP2 = k2.acc(g.p2k);
+    const PointState p2 = pointOf(g.k2, next.of(g.k2), g.p2k);
+    const Vec2 &P2 = p2.p, &vP2 = p2.v, &aP2 = p2.a;
     const double d2 = g.d2;
     const Vec2 e = P2 - P1;
     const double L = e.norm();
@@ -412,17 +424,21 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
     u1 = C - P1;
     // C = U + s dir - w, with the block turning with k2 (w' = w_k2 perp(w)).
     const double s = dir.dot(C + w - U);
-    const Vec2 Ru = k2.R * g.u;
-    const Vec2 vU = k2.v + k2.w * perp(Ru);
-    const Vec2 V0 = vU + s * k2.w * perp(dir) - k2.w * perp(w);
     const Solve2 m(perp(u1), -dir);
     if (!m.regular()) return false;
     double sd, sdd;
-    m.solve(V0 - vP1, w1, sd);
-    const Vec2 aU = k2.a + k2.al * perp(Ru) - k2.w * k2.w * Ru;
-    const Vec2 A0 = aU + 2 * sd * k2.w * perp(dir) + s * (k2.al * perp(dir) - k2.w * k2.w * dir) -
-                    (k2.al * perp(w) - k2.w * k2.w * w);
-    m.solve(A0 - aP1 + w1 * w1 * u1, al1, sdd);
+    Vec2 V0 = Vec2::Zero(), A0 = Vec2::Zero();  // a slot in the ground does not move
+    if (g.k2 < 0) {
+      m.solve(-vP1, w1, sd);
+      m.solve(w1 * w1 * u1 - aP1, al1, sdd);
+    } else {
+      const PointState uk = pointOf(g.k2, k2, g.u);
+      V0 = uk.v + s * k2.w * perp(dir) - k2.w * perp(w);
+      m.solve(V0 - vP1, w1, sd);
+      A0 = uk.a + 2 * sd * k2.w * perp(dir) + s * (k2.al * perp(dir) - k2.w * k2.w * dir) -
+           (k2.al * perp(w) - k2.w * k2.w * w);
+      m.solve(A0 - aP1 + w1 * w1 * u1, al1, sdd);
+    }
     if (g.kind == Kind::RRP) {
       // The block keeps its slot body's angle (the slider holds the drawn relative angle,
       // zero), whole turns included.
