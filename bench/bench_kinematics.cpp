@@ -18,9 +18,11 @@ using namespace linkage;
 
 using bench::example;
 
-void kinematicStep(benchmark::State& state, const std::string& name) {
+void kinematicStep(benchmark::State& state, const std::string& name, bool accelerations) {
   const Mechanism m = example(name);
-  Kinematics k;
+  KinematicsOptions opt;
+  opt.accelerations = accelerations;
+  Kinematics k(opt);
   if (!k.load(m).ok()) std::abort();
   const PointId out = m.outputs.at(0);
   double angle = 0;
@@ -55,10 +57,19 @@ void closedFormSliderCrank(benchmark::State& state) {
 }
 
 BENCHMARK(closedFormSliderCrank)->Name("closed_form/slider_crank");
-BENCHMARK_CAPTURE(kinematicStep, slider_crank, std::string("slider-crank-22a-lambda-0.5"))
+BENCHMARK_CAPTURE(kinematicStep, slider_crank, std::string("slider-crank-22a-lambda-0.5"), true)
     ->Name("step/slider_crank");
-BENCHMARK_CAPTURE(kinematicStep, four_bar, std::string("four-bar-crank-rocker"))
+BENCHMARK_CAPTURE(kinematicStep, four_bar, std::string("four-bar-crank-rocker"), true)
     ->Name("step/four_bar");
-BENCHMARK_CAPTURE(kinematicStep, wanzer, std::string("wanzer-inversion-2"))->Name("step/wanzer");
+BENCHMARK_CAPTURE(kinematicStep, wanzer, std::string("wanzer-inversion-2"), true)
+    ->Name("step/wanzer");
+// The same steps without accelerations (positions and velocities only): what leaving them out
+// saves.
+BENCHMARK_CAPTURE(kinematicStep, slider_crank, std::string("slider-crank-22a-lambda-0.5"), false)
+    ->Name("step_no_acceleration/slider_crank");
+BENCHMARK_CAPTURE(kinematicStep, four_bar, std::string("four-bar-crank-rocker"), false)
+    ->Name("step_no_acceleration/four_bar");
+BENCHMARK_CAPTURE(kinematicStep, wanzer, std::string("wanzer-inversion-2"), false)
+    ->Name("step_no_acceleration/wanzer");
 
 }  // namespace

@@ -289,8 +289,10 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
   return plan;
 }
 
-bool ClosedFormPlan::solve(const System& sys, const Motion& prev, double phi, Motion& next) const {
+bool ClosedFormPlan::solve(const System& sys, const Motion& prev, double phi, Motion& next,
+                           bool accelerations) const {
   next.phi = phi;
+  next.accelerations = accelerations;
   next.body.resize(sys.nBodies);
   const Rot crank{std::cos(phi), std::sin(phi)};
   for (const Group& g : groups_)
@@ -348,6 +350,7 @@ int ClosedFormPlan::resolveEdited(const System& sys, const ClosedFormPlan& befor
 
   next.phi = prev.phi;
   next.body = prev.body;
+  next.accelerations = prev.accelerations;
   const Rot crank{std::cos(prev.phi), std::sin(prev.phi)};
   std::vector<char> moved(sys.nBodies, 0);
   int solved = 0;
@@ -386,7 +389,8 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
   // branch line than the drawn branch, the motion crosses a singular position (a change
   // point, or a dead point ahead), where the intersection formula would reflect onto the
   // other branch. The general solve takes over there and reports it.
-  const Vec2 Cpred = prev.body[g.b1].predicted(g.c1, h);
+  const Vec2 Cpred = prev.body[g.b1].predicted(g.c1, h, prev.accelerations);
+  const bool acc = next.accelerations;
   Vec2 C, u1 = Vec2::Zero();
   double w1 = 0, al1 = 0;
   if (g.kind == Kind::RRR) {
@@ -408,7 +412,10 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
     if (!m.regular()) return false;
     double w2, al2;
     m.solve(vP2 - vP1, w1, w2);
-    m.solve(aP2 - aP1 - w2 * w2 * u2 + w1 * w1 * u1, al1, al2);
+    if (acc)
+      m.solve(aP2 - aP1 - w2 * w2 * u2 + w1 * w1 * u1, al1, al2);
+    else
+      al1 = al2 = NAN;
     set(g.b2, turning(g.rot2, u2 / d2), w2, al2, g.p2, P2, vP2, aP2);
   } else {
     // The line C must keep to: the slot (through U, normal n), shifted by the block's offset.
@@ -430,15 +437,17 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
     Vec2 V0 = Vec2::Zero(), A0 = Vec2::Zero();  // a slot in the ground does not move
     if (g.k2 < 0) {
       m.solve(-vP1, w1, sd);
-      m.solve(w1 * w1 * u1 - aP1, al1, sdd);
+      if (acc) m.solve(w1 * w1 * u1 - aP1, al1, sdd);
     } else {
       const PointState uk = pointOf(g.k2, k2, g.u);
       V0 = uk.v + s * k2.w * perp(dir) - k2.w * perp(w);
       m.solve(V0 - vP1, w1, sd);
-      A0 = uk.a + 2 * sd * k2.w * perp(dir) + s * (k2.al * perp(dir) - k2.w * k2.w * dir) -
-           (k2.al * perp(w) - k2.w * k2.w * w);
-      m.solve(A0 - aP1 + w1 * w1 * u1, al1, sdd);
+      if (acc)
+        A0 = uk.a + 2 * sd * k2.w * perp(dir) + s * (k2.al * perp(dir) - k2.w * k2.w * dir) -
+             (k2.al * perp(w) - k2.w * k2.w * w);
+      if (acc) m.solve(A0 - aP1 + w1 * w1 * u1, al1, sdd);
     }
+    if (!acc) al1 = sdd = NAN;
     if (g.kind == Kind::RRP) {
       // The block keeps its slot body's angle (the slider holds the drawn relative angle,
       // zero), whole turns included.

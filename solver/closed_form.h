@@ -44,7 +44,9 @@ class ClosedFormPlan {
   // previous one (whole turns are counted from it, branch crossings and core groups predicted
   // from its rates). False where a group cannot close or is singular; next is then partial and
   // must be discarded.
-  bool solve(const System& sys, const Motion& prev, double phi, Motion& next) const;
+  // With accelerations false, the groups' acceleration solves are left out (NaN instead).
+  bool solve(const System& sys, const Motion& prev, double phi, Motion& next,
+             bool accelerations = true) const;
 
   // After an edit of dimensions (the same topology, so the same groups in the same order) whose
   // plan before the edit was `before`: the groups whose geometry changed, and those that

@@ -102,7 +102,9 @@ bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion
   // Unknowns: the frame origin and the turn d relative to the previous rotation, from the
   // predictor along the previous rates.
   Eigen::Vector3d x;
-  x << before.r + h * before.v + (0.5 * h * h) * before.a, h * before.w + (0.5 * h * h) * before.al;
+  const double h2 = prev.accelerations ? 0.5 * h * h : 0.0;  // second order where known
+  x << before.r + h * before.v + h2 * (prev.accelerations ? before.a : Vec2::Zero()),
+      h * before.w + h2 * (prev.accelerations ? before.al : 0.0);
   auto pose = [&](const Eigen::Vector3d& at) {
     core.r = at.head<2>();
     const Rot d{std::cos(at[2]), std::sin(at[2])};
@@ -144,7 +146,10 @@ bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion
   const Eigen::Vector3d v = lu.solve(knownTerms(g, at, next, false));
   core.v = v.head<2>();
   core.w = v[2];
-  const Eigen::Vector3d a = lu.solve(knownTerms(g, viewOf(core, 0, true), next, true));
+  const Eigen::Vector3d a =
+      next.accelerations
+          ? Eigen::Vector3d(lu.solve(knownTerms(g, viewOf(core, 0, true), next, true)))
+          : Eigen::Vector3d::Constant(NAN);
   core.a = a.head<2>();
   core.al = a[2];
 

@@ -224,6 +224,16 @@ Kinematics::StepResult Kinematics::tryStep(double phiNext, Snapshot& out) {
   return StepResult::Accepted;
 }
 
+void Kinematics::setAccelerations(bool on) {
+  opt_.accelerations = on;
+  if (!on || !valid_ || reg_.accelerations || !plan_) return;
+  if (plan_->solve(sys_, reg_, reg_.phi, next_, true)) {
+    next_.regular = true;
+    next_.coordinates = false;
+    std::swap(reg_, next_);
+  }
+}
+
 Status Kinematics::moveTo(double crankDeg) {
   if (!valid_) return Status::failure(StatusCode::BadModel, "no mechanism is loaded");
   if (!sys_.hasDriver)
@@ -265,9 +275,20 @@ Status Kinematics::moveToPhi(double target) {
     if (Status s = skipWholeTurns(target); !s.ok()) return s;
   }
   if (plan_ && trackClosedForm(target)) return Status::success();
-  if (plan_) {  // the general solve takes over from the last closed-form position
+  if (plan_) {
+    // The general solve takes over from the last closed-form position: its derivatives (with
+    // accelerations, which the predictor uses, even where the steps left them out) and the
+    // sign of det J that marks its branch.
+    const Eigen::VectorXd q = coordinates(reg_).q;
     Eigen::VectorXd dq, ddq;
-    if (newton_.derivatives(sys_, coordinates(reg_).q, dq, ddq)) regSign_ = newton_.detSign();
+    if (newton_.derivatives(sys_, q, dq, ddq)) {
+      regSign_ = newton_.detSign();
+      reg_.q = q;
+      reg_.dq = dq;
+      reg_.ddq = ddq;
+      reg_.coordinates = true;
+      reg_.fromCoordinates(reg_.phi, q, dq, ddq);
+    }
   }
   return trackGeneral(target);
 }
@@ -280,7 +301,7 @@ bool Kinematics::trackClosedForm(double target) {
     const double remaining = target - reg_.phi;
     const double phiNext =
         std::abs(remaining) <= hMax ? target : reg_.phi + std::copysign(hMax, remaining);
-    if (!plan_->solve(sys_, reg_, phiNext, next_)) {
+    if (!plan_->solve(sys_, reg_, phiNext, next_, opt_.accelerations)) {
       atSingular_ = false;
       return false;
     }
@@ -407,6 +428,7 @@ Vec2 Kinematics::velocity(PointId p) const {
 
 Vec2 Kinematics::acceleration(PointId p) const {
   const PointLocation& l = locate(p);
+  if (!cur().accelerations) return Vec2::Constant(NAN);
   const double w = omega();
   return w * w * cur().of(l.body).acc(l.s);
 }
@@ -416,7 +438,9 @@ Kinematics::PointMotion Kinematics::motion(PointId p) const {
   const BodyState& b = cur().of(l.body);
   const Vec2 g = b.R * l.s;
   const double w = omega();
-  return {b.r + g, w * (b.v + b.w * perp(g)), w * w * (b.a + b.al * perp(g) - b.w * b.w * g)};
+  return {b.r + g, w * (b.v + b.w * perp(g)),
+          cur().accelerations ? Vec2(w * w * (b.a + b.al * perp(g) - b.w * b.w * g))
+                              : Vec2::Constant(NAN)};
 }
 
 double Kinematics::bodyAngle(BodyId b) const {
@@ -428,7 +452,7 @@ double Kinematics::bodyOmega(BodyId b) const {
 }
 
 double Kinematics::bodyAlpha(BodyId b) const {
-  return omega() * omega() * cur().of(sys_.bodyIndex(b)).al;
+  return cur().accelerations ? omega() * omega() * cur().of(sys_.bodyIndex(b)).al : NAN;
 }
 
 const Kinematics::Snapshot& Kinematics::coordinates(const Snapshot& s) const {

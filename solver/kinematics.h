@@ -33,6 +33,10 @@ struct KinematicsOptions {
   // Solve mechanisms made of a crank and dyads group by group in closed form (closed_form.h)
   // instead of by Newton on all coordinates; the general solve remains the fallback.
   bool closedForm = true;
+  // Compute accelerations at every step. Positions and velocities always are: the tracker's
+  // predictor and its branch and dead-point checks need velocities, so accelerations are the
+  // part of a step a caller can leave out (then they come back as NaN).
+  bool accelerations = true;
 };
 
 class Kinematics {
@@ -60,6 +64,9 @@ class Kinematics {
   double crankDeg() const;
   double rpm() const { return sys_.rpm; }
   void setRpm(double rpm) { sys_.rpm = rpm; }
+  // Switches accelerations on or off (see KinematicsOptions); switched on, they are computed at
+  // once for the current position.
+  void setAccelerations(bool on);
   double omega() const;  // rad/s of the driver
 
   const Mechanism& mechanism() const { return mech_; }

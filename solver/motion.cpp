@@ -5,6 +5,7 @@ namespace linkage {
 void Motion::fromCoordinates(double phiAt, const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
                              const Eigen::VectorXd& ddq) {
   phi = phiAt;
+  accelerations = true;
   body.resize(q.size() / 3);
   for (size_t k = 0; k < body.size(); ++k) {
     BodyState& b = body[k];

@@ -32,10 +32,11 @@ struct BodyState {
     const Vec2 g = R * s;
     return a + al * perp(g) - w * w * g;
   }
-  // Where the local point s would be after h more radians of driver on the smooth path (Taylor
-  // to second order).
-  Vec2 predicted(const Vec2& s, double h) const {
-    return pos(s) + h * vel(s) + (0.5 * h * h) * acc(s);
+  // Where the local point s would be after h more radians of driver on the smooth path: Taylor
+  // to second order, or to first where accelerations were not computed.
+  Vec2 predicted(const Vec2& s, double h, bool accelerations) const {
+    const Vec2 first = pos(s) + h * vel(s);
+    return accelerations ? Vec2(first + (0.5 * h * h) * acc(s)) : first;
   }
 };
 
@@ -50,6 +51,8 @@ inline int turnsAfter(const Rot& before, int turns, const Rot& after) {
 struct Motion {
   double phi = 0;
   std::vector<BodyState> body;
+  // False when only positions and velocities were asked for: a and al are then NaN.
+  bool accelerations = true;
 
   // Body b, or ground (at rest at the origin) for b < 0.
   const BodyState& of(int b) const {
