@@ -85,7 +85,7 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
                      " (bodies " + bodyList(structure_.freeBodies) +
                      "): held where they are drawn");
   }
-  newton_.reset(sys_, active);
+  newton_.reset(sys_, active, opt_.sparseFrom);
 
   s = assemble(mech_, sys_, structure_, newton_, q, phi, assembly_);
   if (!s.ok()) return s;

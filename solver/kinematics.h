@@ -32,6 +32,10 @@ struct KinematicsOptions {
   // Solve mechanisms made of a crank and dyads group by group in closed form (closed_form.h)
   // instead of by Newton on all coordinates; the general solve remains the fallback.
   bool closedForm = true;
+  // Coordinates from which the general solve factors J as a sparse matrix and the structure
+  // analysis tries its sparse test first (newton.h); tests set it to compare both on one
+  // mechanism.
+  int sparseFrom = kSparseFrom;
 };
 
 class Kinematics {
@@ -81,6 +85,8 @@ class Kinematics {
 
   // True when the motion is computed group by group in closed form.
   bool closedForm() const { return plan_.has_value(); }
+  // True when the general solve factors J as a sparse matrix.
+  bool sparseSolve() const { return newton_.sparse(); }
 
   // Raw state: q and its derivatives with respect to the driver angle (rad).
   const Eigen::VectorXd& q() const { return cur_.q; }

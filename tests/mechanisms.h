@@ -128,8 +128,11 @@ inline WattSixBar wattSixBar() {
 
 // A chain of `loops` four-bars along the x axis: loop k has ground pivots at 60k and 60k + 60;
 // loop 0's crank is driven, and the rocker of loop k, extended, is the input of loop k + 1.
-// 1 + 2 loops bodies; every loop after the first is a dyad on the previous one.
-inline Mechanism fourBarChain(int loops) {
+// 1 + 2 loops bodies; every loop after the first is a dyad on the previous one. Loop 0's crank,
+// coupler and rocker lengths can be changed (a non-Grashof or a parallelogram first loop); the
+// other loops are 20, 70, 50 on 60 mm of ground, crank-rockers whatever their input does.
+inline Mechanism fourBarChain(int loops, double crankLength = 20, double couplerLength = 70,
+                              double rockerLength = 50) {
   Mechanism m;
   const BodyId g = m.addBody("ground", true);
   auto circle = [](Vec2 a, double ra, Vec2 b, double rb) {  // upper intersection
@@ -142,12 +145,12 @@ inline Mechanism fourBarChain(int loops) {
   BodyId input = m.addBody("crank");
   const Vec2 O0(0, 0);
   const JointId drive = m.addPin(m.addPoint(g, "O0", O0), m.addPoint(input, "O0", O0));
-  Vec2 pivot = O0, A = Vec2(20 * std::cos(1.0), 20 * std::sin(1.0));
+  Vec2 pivot = O0, A = Vec2(crankLength * std::cos(1.0), crankLength * std::sin(1.0));
   PointId inputA = m.addPoint(input, "A", A);
   for (int k = 0; k < loops; ++k) {
     const std::string n = std::to_string(k);
     const Vec2 O4 = pivot + Vec2(60, 0);
-    const Vec2 B = circle(A, 70, O4, 50);
+    const Vec2 B = circle(A, k == 0 ? couplerLength : 70, O4, k == 0 ? rockerLength : 50);
     const BodyId coupler = m.addBody("coupler" + n), rocker = m.addBody("rocker" + n);
     m.addPin(inputA, m.addPoint(coupler, "A", A));
     m.addPin(m.addPoint(coupler, "B", B), m.addPoint(rocker, "B", B));

@@ -1,0 +1,218 @@
+// Large mechanisms: the sparse LU (sparse_lu.h) against the dense one and against the
+// closed-form group solve.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <climits>
+#include <random>
+
+#include "dense_lu.h"
+#include "kinematics.h"
+#include "mechanisms.h"
+#include "sparse_lu.h"
+
+namespace linkage {
+namespace {
+
+// A random sparse matrix shaped like a mechanism's Jacobian: every row touches two "bodies"
+// (three columns each), with a unit diagonal added so that it is regular.
+Eigen::SparseMatrix<double> randomJacobianLike(int bodies, std::mt19937& rng) {
+  std::uniform_int_distribution<int> body(0, bodies - 1);
+  std::uniform_real_distribution<double> value(-1, 1);
+  const int n = 3 * bodies;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int r = 0; r < n; ++r) {
+    const int a = r / 3, b = body(rng);
+    for (int c = 0; c < 3; ++c) {
+      t.emplace_back(r, 3 * a + c, value(rng));
+      t.emplace_back(r, 3 * b + c, value(rng));
+    }
+    t.emplace_back(r, r, 2.0);
+  }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  return A;
+}
+
+TEST(SparseLU, SolvesAndSignAgreeWithTheDenseLU) {
+  std::mt19937 rng(20261122);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::SparseMatrix<double> A = randomJacobianLike(30 + trial, rng);
+    const Eigen::MatrixXd D(A);
+    SparseLU s;
+    s.analyzePattern(A);
+    s.compute(A);
+    DenseLU d;
+    d.resize(static_cast<int>(D.rows()));
+    d.compute(D);
+    EXPECT_EQ(s.detSign(), d.detSign()) << trial;
+    // Independent of both: the determinant's sign from Eigen's full-pivot LU.
+    EXPECT_EQ(s.detSign(), D.fullPivLu().determinant() > 0 ? 1 : -1) << trial;
+    EXPECT_GT(s.pivotRatio(), 1e-8);
+    Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(D.rows(), -1, 2), x = b;
+    s.solveInPlace(x);
+    EXPECT_LT((D * x - b).norm(), 1e-12 * b.norm()) << trial;
+  }
+}
+
+TEST(SparseLU, SingularMatricesHaveARoundingLevelPivotRatio) {
+  std::mt19937 rng(7);
+  Eigen::SparseMatrix<double> A = randomJacobianLike(40, rng);
+  // Row 5 replaced by the sum of rows 11 and 30: singular, in the same pattern plus fill.
+  Eigen::MatrixXd D(A);
+  D.row(5) = D.row(11) + D.row(30);
+  Eigen::SparseMatrix<double> S = D.sparseView();
+  SparseLU s;
+  s.compute(S);
+  EXPECT_LT(s.pivotRatio(), 1e-12);
+  // A zero column leaves nothing to pivot on at all.
+  D.col(7).setZero();
+  S = D.sparseView();
+  S.makeCompressed();
+  SparseLU z;
+  z.compute(S);
+  EXPECT_EQ(z.pivotRatio(), 0.0);
+}
+
+TEST(SparseLU, CopiesKeepTheirResultsAndFactorAgain) {
+  std::mt19937 rng(11);
+  const Eigen::SparseMatrix<double> A = randomJacobianLike(25, rng);
+  SparseLU s;
+  s.analyzePattern(A);
+  s.compute(A);
+  SparseLU copy = s;
+  EXPECT_EQ(copy.detSign(), s.detSign());
+  EXPECT_EQ(copy.pivotRatio(), s.pivotRatio());
+  copy.compute(A);
+  Eigen::VectorXd x = Eigen::VectorXd::Ones(A.rows()), y = x;
+  s.solveInPlace(x);
+  copy.solveInPlace(y);
+  EXPECT_LT((x - y).norm(), 1e-12 * x.norm());
+}
+
+KinematicsOptions options(bool closedForm, bool sparse) {
+  KinematicsOptions o;
+  o.closedForm = closedForm;
+  o.sparseFrom = sparse ? 0 : INT_MAX;
+  return o;
+}
+
+// 101 bodies, 303 coordinates: the general solve by the sparse LU against the group solve,
+// which shares no factorisation with it.
+TEST(SparseSolve, LargeChainMatchesTheClosedFormGroups) {
+  const Mechanism m = test::fourBarChain(50);
+  Kinematics general(options(false, true)), groups(options(true, true));
+  ASSERT_TRUE(general.load(m).ok());
+  ASSERT_TRUE(groups.load(m).ok());
+  ASSERT_TRUE(general.sparseSolve());
+  ASSERT_FALSE(general.closedForm());
+  ASSERT_TRUE(groups.closedForm());
+  const PointId out = m.outputs[0];
+  for (double a = 0; a <= 360; a += 7.5) {
+    ASSERT_TRUE(general.moveTo(a).ok()) << a;
+    ASSERT_TRUE(groups.moveTo(a).ok()) << a;
+    const double dqScale = 1 + groups.dq().cwiseAbs().maxCoeff();
+    const double ddqScale = 1 + groups.ddq().cwiseAbs().maxCoeff();
+    EXPECT_LT((general.q() - groups.q()).cwiseAbs().maxCoeff(), 1e-9) << a;
+    EXPECT_LT((general.dq() - groups.dq()).cwiseAbs().maxCoeff(), 1e-9 * dqScale) << a;
+    EXPECT_LT((general.ddq() - groups.ddq()).cwiseAbs().maxCoeff(), 1e-9 * ddqScale) << a;
+    EXPECT_LT((general.acceleration(out) - groups.acceleration(out)).norm(),
+              1e-9 * (1 + groups.acceleration(out).norm()))
+        << a;
+  }
+}
+
+// Same mechanism, dense and sparse: the same structure, the same motion, copies included.
+TEST(SparseSolve, DenseAndSparseGiveTheSameStructureAndMotion) {
+  const Mechanism m = test::fourBarChain(25);
+  Kinematics dense(options(false, false)), sparse(options(false, true));
+  ASSERT_TRUE(dense.load(m).ok());
+  ASSERT_TRUE(sparse.load(m).ok());
+  ASSERT_FALSE(dense.sparseSolve());
+  ASSERT_TRUE(sparse.sparseSolve());
+  EXPECT_EQ(sparse.structure().activeRows, dense.structure().activeRows);
+  ASSERT_TRUE(sparse.moveTo(100).ok());
+  Kinematics copy = sparse;  // Eigen's factors cannot be copied: the copy analyses again
+  for (double a = 100; a <= 500; a += 20) {
+    ASSERT_TRUE(dense.moveTo(a).ok()) << a;
+    ASSERT_TRUE(copy.moveTo(a).ok()) << a;
+    EXPECT_LT((dense.q() - copy.q()).cwiseAbs().maxCoeff(), 1e-9) << a;
+    EXPECT_LT((dense.dq() - copy.dq()).cwiseAbs().maxCoeff(),
+              1e-9 * (1 + dense.dq().cwiseAbs().maxCoeff()))
+        << a;
+  }
+}
+
+// Loop 0 is non-Grashof (crank 45, coupler 70, rocker 50 on 60): turned clockwise, the crank
+// locks where coupler and rocker fold, |A - O4| = 20, at crank angle 1 rad - acos(5225 / 5400).
+TEST(SparseSolve, LargeChainLockingIsReportedAsByTheDenseSolve) {
+  Mechanism m = test::fourBarChain(50, 45, 70, 50);
+  m.driver->direction = Direction::Cw;
+  const double lockDeg = (1.0 - std::acos(5225.0 / 5400)) * 180 / M_PI;
+  for (bool closedForm : {false, true}) {
+    Kinematics dense(options(closedForm, false)), sparse(options(closedForm, true));
+    ASSERT_TRUE(dense.load(m).ok());
+    ASSERT_TRUE(sparse.load(m).ok());
+    const Status d = dense.moveTo(60), s = sparse.moveTo(60);
+    EXPECT_EQ(s.code, StatusCode::Unreachable) << s.message;
+    EXPECT_EQ(s.code, d.code);
+    EXPECT_EQ(s.message, d.message);
+    ASSERT_TRUE(s.lastReachedDeg && d.lastReachedDeg);
+    EXPECT_NEAR(*s.lastReachedDeg, lockDeg, 1e-3);
+    EXPECT_NEAR(*s.lastReachedDeg, *d.lastReachedDeg, 1e-9);
+    EXPECT_NE(s.message.find("'coupler0', 'rocker0'"), std::string::npos) << s.message;
+    EXPECT_LT((sparse.q() - dense.q()).cwiseAbs().maxCoeff(), 1e-9);
+  }
+}
+
+// Loop 0 a parallelogram (25, 60, 25 on 60): all in line at crank angle -1 rad, where its two
+// branches cross. Landing on it: 12 loops, 75 coordinates, sparse by default. On longer chains
+// the LU pivots, dense as much as sparse, no longer show this singular position (the small
+// factor spreads over many pivots: see docs/benchmarks.md, Scale).
+TEST(SparseSolve, LandingOnTheChangePointOfALargeChainIsReportedAsByTheDenseSolve) {
+  const Mechanism m = test::fourBarChain(12, 25, 60, 25);
+  const double changeDeg = -180 / M_PI;
+  Kinematics dense(options(false, false)), sparse(options(false, true));
+  ASSERT_TRUE(dense.load(m).ok());
+  ASSERT_TRUE(sparse.load(m).ok());
+  ASSERT_TRUE(sparse.sparseSolve());
+  ASSERT_TRUE(dense.moveTo(-56).ok());
+  ASSERT_TRUE(sparse.moveTo(-56).ok());
+  const Status d = dense.moveTo(changeDeg), s = sparse.moveTo(changeDeg);
+  EXPECT_EQ(s.code, StatusCode::Singular) << s.message;
+  EXPECT_EQ(s.message, d.message);
+  EXPECT_FALSE(sparse.derivativesValid());
+  EXPECT_FALSE(dense.derivativesValid());
+  EXPECT_LT((sparse.q() - dense.q()).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+// Across it: both stop before it, on the parallelogram branch. Where exactly they give up, within
+// a 1e-6 degree of it, depends on rounding in Newton next to a singular J, so the angle in the
+// message is compared to 1e-5 degrees, not as text. 4 loops: on longer chains the first
+// correction onto the other branch is no longer "far" against the chain's size (0.1 L), and the
+// dense solve too goes on along the other branch (see docs/benchmarks.md, Scale).
+TEST(SparseSolve, CrossingTheChangePointIsRefusedAsByTheDenseSolve) {
+  const Mechanism m = test::fourBarChain(4, 25, 60, 25);
+  const double changeDeg = -180 / M_PI;
+  Kinematics dense(options(false, false)), sparse(options(false, true));
+  ASSERT_TRUE(dense.load(m).ok());
+  ASSERT_TRUE(sparse.load(m).ok());
+  ASSERT_TRUE(sparse.sparseSolve());
+  ASSERT_TRUE(dense.moveTo(-56).ok());
+  ASSERT_TRUE(sparse.moveTo(-56).ok());
+  const Status d = dense.moveTo(-70), s = sparse.moveTo(-70);
+  EXPECT_EQ(s.code, StatusCode::Singular) << s.message;
+  EXPECT_EQ(d.code, StatusCode::Singular) << d.message;
+  EXPECT_NE(s.message.find("branches meet"), std::string::npos) << s.message;
+  EXPECT_NE(d.message.find("branches meet"), std::string::npos) << d.message;
+  ASSERT_TRUE(s.lastReachedDeg && d.lastReachedDeg);
+  EXPECT_NEAR(*s.lastReachedDeg, *d.lastReachedDeg, 1e-5);
+  EXPECT_GT(*s.lastReachedDeg, changeDeg);
+  EXPECT_NEAR(*s.lastReachedDeg, changeDeg, 1e-5);
+  const int coupler0 = sparse.system().bodyIndex(m.bodyNamed("coupler0")->id);
+  EXPECT_NEAR(sparse.q()[3 * coupler0 + 2], 0, 1e-6);  // still the parallelogram
+}
+
+}  // namespace
+}  // namespace linkage
