@@ -53,7 +53,7 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm) {
 
   Eigen::VectorXd q = warm ? *warm : sketchCoordinates(sys_);
   const double phi = warm ? warmPhi : 0.0;
-  structure_ = analyzeStructure(sys_, q);
+  structure_ = analyzeStructure(sys_, q, opt_.sparseFrom);
   if (sys_.hasDriver && !structure_.driverMoves) {
     const JointId dj = mech_.driver->joint;
     s = Status::failure(StatusCode::Locked, "");

@@ -1,5 +1,6 @@
 // Large mechanisms: the sparse LU (sparse_lu.h) against the dense one and against the
-// closed-form group solve.
+// closed-form group solve, and the sparse proof of independent rows (independent_rows.h)
+// against a dense singular value decomposition and the dense structure analysis.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -7,6 +8,7 @@
 #include <random>
 
 #include "dense_lu.h"
+#include "independent_rows.h"
 #include "kinematics.h"
 #include "mechanisms.h"
 #include "sparse_lu.h"
@@ -89,6 +91,47 @@ TEST(SparseLU, CopiesKeepTheirResultsAndFactorAgain) {
   s.solveInPlace(x);
   copy.solveInPlace(y);
   EXPECT_LT((x - y).norm(), 1e-12 * x.norm());
+}
+
+TEST(IndependentRows, NeverClaimsMoreThanTheSingularValuesShow) {
+  std::mt19937 rng(3);
+  int proved = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    Eigen::SparseMatrix<double> A = randomJacobianLike(20, rng);
+    Eigen::MatrixXd D(A);
+    if (trial % 3 == 1) D.row(4) = D.row(9) + 1e-6 * D.row(4);  // nearly dependent
+    if (trial % 3 == 2) D.row(4) = D.row(9) + 1e-2 * D.row(4);  // clearly independent
+    for (int r = 0; r < D.rows(); ++r) D.row(r).normalize();
+    const double smin = Eigen::JacobiSVD<Eigen::MatrixXd>(D).singularValues().minCoeff();
+    A = D.sparseView();
+    const bool yes = rowsIndependent(A, 1e-5);
+    if (yes) {
+      ++proved;
+      EXPECT_GT(smin, 1e-5) << trial;
+    }
+    if (smin > 1e-4) EXPECT_TRUE(yes) << trial << ": smallest singular value " << smin;
+  }
+  EXPECT_GT(proved, 10);
+}
+
+// The structure analysis's sparse path applies to the chains of four-bars (the benchmarks' large
+// mechanisms): joint and driver rows, theta columns scaled by 1 / L as structure.cpp does.
+TEST(IndependentRows, ChainsOfFourBarsAreProved) {
+  for (int loops : {25, 250}) {
+    const Mechanism m = test::fourBarChain(loops);
+    Status st;
+    const std::optional<System> sys = compile(m, st);
+    ASSERT_TRUE(sys);
+    std::vector<BodyView> views;
+    makeViews(*sys, sketchCoordinates(*sys), nullptr, views);
+    std::vector<int> all(sys->nRows);
+    for (int r = 0; r < sys->nRows; ++r) all[r] = r;
+    ASSERT_EQ(sys->nRows, sys->nCoords());
+    Eigen::MatrixXd J(sys->nRows, sys->nCoords());
+    evalJacobian(*sys, views, all, J);
+    for (int k = 0; k < sys->nBodies; ++k) J.col(3 * k + 2) /= sys->size;
+    EXPECT_TRUE(rowsIndependent(J.sparseView(), 1e-5)) << loops;
+  }
 }
 
 KinematicsOptions options(bool closedForm, bool sparse) {
@@ -212,6 +255,85 @@ TEST(SparseSolve, CrossingTheChangePointIsRefusedAsByTheDenseSolve) {
   EXPECT_NEAR(*s.lastReachedDeg, changeDeg, 1e-5);
   const int coupler0 = sparse.system().bodyIndex(m.bodyNamed("coupler0")->id);
   EXPECT_NEAR(sparse.q()[3 * coupler0 + 2], 0, 1e-6);  // still the parallelogram
+}
+
+void expectSameStructure(const Structure& a, const Structure& b, const std::string& what) {
+  EXPECT_EQ(a.coordinates, b.coordinates) << what;
+  EXPECT_EQ(a.jointEquations, b.jointEquations) << what;
+  EXPECT_EQ(a.gruebler, b.gruebler) << what;
+  EXPECT_EQ(a.rank, b.rank) << what;
+  EXPECT_EQ(a.mobility, b.mobility) << what;
+  EXPECT_EQ(a.dependentRows, b.dependentRows) << what;
+  EXPECT_EQ(a.redundantJoints, b.redundantJoints) << what;
+  EXPECT_EQ(a.driverMoves, b.driverMoves) << what;
+  EXPECT_EQ(a.freeAfterDriver, b.freeAfterDriver) << what;
+  EXPECT_EQ(a.freeBodies, b.freeBodies) << what;
+  EXPECT_EQ(a.holdCoordinates, b.holdCoordinates) << what;
+  EXPECT_EQ(a.activeRows, b.activeRows) << what;
+  ASSERT_EQ(a.nullBasis.rows(), b.nullBasis.rows()) << what;
+  ASSERT_EQ(a.nullBasis.cols(), b.nullBasis.cols()) << what;
+  if (a.nullBasis.size()) EXPECT_LT((a.nullBasis - b.nullBasis).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// The sparse proof where it applies, the dense Gram-Schmidt where it does not: the Structure
+// is the one the dense analysis alone gives, in every case.
+TEST(SparseStructure, SameAsTheDenseAnalysisWhateverTheCase) {
+  struct Case {
+    std::string what;
+    Mechanism m;
+    StatusCode load = StatusCode::Ok;
+    size_t redundant = 0;
+    int free = 0;
+  };
+  std::vector<Case> cases;
+  const Mechanism chain = test::fourBarChain(25);  // 51 bodies, 153 coordinates
+  cases.push_back({"chain", chain, StatusCode::Ok, 0, 0});
+  {
+    // The last loop's coupler-rocker pin drawn twice: the second is redundant.
+    Mechanism m = chain;
+    const BodyId c = m.bodyNamed("coupler24")->id, r = m.bodyNamed("rocker24")->id;
+    const Vec2 B = m.pointNamed(c, "B")->pos;
+    m.addPin(m.addPoint(c, "B2", B), m.addPoint(r, "B2", B));
+    cases.push_back({"redundant pin", m, StatusCode::Ok, 1, 0});
+  }
+  {
+    // A roller on the last rocker's pin spins freely: a freedom the driver leaves.
+    Mechanism m = chain;
+    const BodyId r = m.bodyNamed("rocker24")->id, roller = m.addBody("roller");
+    const Vec2 A = m.pointNamed(r, "A")->pos;
+    m.addPin(m.addPoint(r, "axle", A), m.addPoint(roller, "C", A));
+    m.addPoint(roller, "rim", A + Vec2(5, 0));
+    cases.push_back({"idle roller", m, StatusCode::Ok, 0, 1});
+  }
+  {
+    // The first rocker pinned to the ground a second time: the driver cannot turn.
+    Mechanism m = chain;
+    const BodyId r = m.bodyNamed("rocker0")->id;
+    const Vec2 A = m.pointNamed(r, "A")->pos;
+    m.addPin(m.addPoint(r, "fix", A), m.addPoint(m.ground()->id, "fix", A));
+    cases.push_back({"locked", m, StatusCode::Locked, 1, 0});
+  }
+  {
+    Mechanism m = chain;
+    m.driver.reset();
+    cases.push_back({"no driver", m, StatusCode::Ok, 0, 1});
+  }
+  for (const Case& c : cases) {
+    Status st;
+    const std::optional<System> sys = compile(c.m, st);
+    ASSERT_TRUE(sys) << c.what;
+    const Eigen::VectorXd q = sketchCoordinates(*sys);
+    const Structure a = analyzeStructure(*sys, q, 0);
+    EXPECT_EQ(a.redundantJoints.size(), c.redundant) << c.what;
+    EXPECT_EQ(a.freeAfterDriver, c.free) << c.what;
+    expectSameStructure(a, analyzeStructure(*sys, q, INT_MAX), c.what);
+    Kinematics dense(options(false, false)), sparse(options(false, true));
+    const Status d = dense.load(c.m), s = sparse.load(c.m);
+    EXPECT_EQ(s.code, c.load) << c.what << ": " << s.message;
+    EXPECT_EQ(s.code, d.code) << c.what;
+    EXPECT_EQ(s.message, d.message) << c.what;
+    EXPECT_EQ(sparse.notes(), dense.notes()) << c.what;
+  }
 }
 
 }  // namespace
