@@ -364,5 +364,29 @@ TEST(SparseAssembly, LargeDrawingsAssembleOrFailAsWithTheDenseSolve) {
   EXPECT_EQ(s.joints, d.joints);
 }
 
+// A mechanism that does not decompose into groups (a chain of triads, 49 bodies): the sparse
+// general solve against the dense one, and every pin closed.
+TEST(SparseSolve, ChainOfTriadsIsSolvedAsByTheDenseSolve) {
+  const Mechanism m = test::triadChain(12);
+  Kinematics dense(options(true, false)), sparse(options(true, true));
+  ASSERT_TRUE(dense.load(m).ok());
+  ASSERT_TRUE(sparse.load(m).ok());
+  ASSERT_FALSE(sparse.closedForm());
+  ASSERT_TRUE(sparse.sparseSolve());
+  for (double a = 0; a <= 360; a += 15) {
+    ASSERT_TRUE(dense.moveTo(a).ok()) << a;
+    ASSERT_TRUE(sparse.moveTo(a).ok()) << a;
+    EXPECT_LT((sparse.q() - dense.q()).cwiseAbs().maxCoeff(), 1e-9) << a;
+    EXPECT_LT((sparse.dq() - dense.dq()).cwiseAbs().maxCoeff(),
+              1e-9 * (1 + dense.dq().cwiseAbs().maxCoeff()))
+        << a;
+    EXPECT_LT((sparse.ddq() - dense.ddq()).cwiseAbs().maxCoeff(),
+              1e-9 * (1 + dense.ddq().cwiseAbs().maxCoeff()))
+        << a;
+    for (const Joint& j : m.joints)
+      EXPECT_LT((sparse.position(j.a) - sparse.position(j.b)).norm(), 1e-9) << a;
+  }
+}
+
 }  // namespace
 }  // namespace linkage
