@@ -33,7 +33,7 @@ struct KinematicsOptions {
   // instead of by Newton on all coordinates; the general solve remains the fallback.
   bool closedForm = true;
   // Coordinates from which the general solve factors J as a sparse matrix and the structure
-  // analysis tries its sparse test first (newton.h); tests set it to compare both on one
+  // analysis tries its sparse test first (sparse_lu.h); tests set it to compare both on one
   // mechanism.
   int sparseFrom = kSparseFrom;
 };
