@@ -1,6 +1,7 @@
 #include "assembly.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -34,32 +35,67 @@ std::vector<double> jointGaps(const Mechanism& m, const System& sys, const Eigen
   return gaps;
 }
 
-// Levenberg-Marquardt on all equations: the closest the drawing can come to closing.
-void leastSquares(const System& sys, Eigen::VectorXd& q, double phi) {
+// Levenberg-Marquardt on all equations: the closest the drawing can come to closing. The damped
+// normal equations (J^T J + mu (I + diag J^T J)) d = J^T r are sparse for large systems, where
+// forming and factoring them densely is cubic (a 101-body drawing that cannot close spent 0.66 s
+// here, 19 ms sparse).
+void leastSquares(const System& sys, Eigen::VectorXd& q, double phi, bool sparse) {
   const int n = sys.nCoords();
   std::vector<int> all(sys.nRows);
   for (int r = 0; r < sys.nRows; ++r) all[r] = r;
   std::vector<BodyView> views;
-  Eigen::MatrixXd J(sys.nRows, n);
-  Eigen::VectorXd res(sys.nRows), trial(sys.nRows);
+  Eigen::MatrixXd J, A;
+  SparseJacobian Js;
+  Eigen::SparseMatrix<double> As, M, damping(n, n);
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> sparseLdlt;
+  if (sparse) {
+    Js = sparseJacobian(sys, all, sys.nRows);
+    damping.setIdentity();
+  } else {
+    J.resize(sys.nRows, n);
+  }
+  Eigen::VectorXd res(sys.nRows), trial(sys.nRows), g, diagA;
   double mu = 1e-3;
   auto cost = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
     makeViews(sys, x, nullptr, views);
     evalResidual(sys, views, phi, all, r);
     return r.squaredNorm();
   };
+  // The damped step for the current mu; false if the factorisation failed.
+  auto step = [&](Eigen::VectorXd& d) {
+    if (!sparse) {
+      Eigen::MatrixXd Md = A;
+      Md.diagonal().array() += mu * (1.0 + diagA.array());
+      d = Md.ldlt().solve(g);
+      return true;
+    }
+    damping.coeffs() = mu * (1.0 + diagA.array());
+    M = As + damping;
+    sparseLdlt.compute(M);
+    if (sparseLdlt.info() != Eigen::Success) return false;
+    d = sparseLdlt.solve(g);
+    return true;
+  };
   double f = cost(q, res);
   for (int it = 0; it < 200 && f > 0; ++it) {
     makeViews(sys, q, nullptr, views);
-    evalJacobian(sys, views, all, J);
-    for (int k = 0; k < sys.nBodies; ++k) J.col(3 * k + 2) /= sys.size;
-    const Eigen::MatrixXd A = J.transpose() * J;
-    const Eigen::VectorXd g = J.transpose() * res;
+    if (sparse) {
+      evalJacobian(sys, views, all, Js);
+      for (int k = 0; k < sys.nBodies; ++k) Js.J.col(3 * k + 2) /= sys.size;
+      As = Js.J.transpose() * Js.J;
+      g = Js.J.transpose() * res;
+      diagA = As.diagonal();
+    } else {
+      evalJacobian(sys, views, all, J);
+      for (int k = 0; k < sys.nBodies; ++k) J.col(3 * k + 2) /= sys.size;
+      A = J.transpose() * J;
+      g = J.transpose() * res;
+      diagA = A.diagonal();
+    }
     bool improved = false;
     for (int tries = 0; tries < 30 && !improved; ++tries) {
-      Eigen::MatrixXd M = A;
-      M.diagonal().array() += mu * (1.0 + A.diagonal().array());
-      Eigen::VectorXd d = M.ldlt().solve(g);
+      Eigen::VectorXd d;
+      if (!step(d)) return;
       for (int k = 0; k < sys.nBodies; ++k) d[3 * k + 2] /= sys.size;
       Eigen::VectorXd x = q - d;
       const double ft = cost(x, trial);
@@ -133,7 +169,7 @@ Status assemble(const Mechanism& m, const System& sys, const Structure& st, Newt
   }
   if (!closed) {
     Eigen::VectorXd fit = start;
-    leastSquares(sys, fit, phi);
+    leastSquares(sys, fit, phi, newton.sparse());
     const std::vector<double> gaps = jointGaps(m, sys, fit, phi);
     int worst = 0;
     for (int j = 1; j < static_cast<int>(gaps.size()); ++j)

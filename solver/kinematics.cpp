@@ -52,7 +52,7 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm, doub
 
   Eigen::VectorXd q = warm ? *warm : sketchCoordinates(sys_);
   const double phi = warm ? warmPhi : 0.0;
-  structure_ = analyzeStructure(sys_, q);
+  structure_ = analyzeStructure(sys_, q, opt_.sparseFrom);
   if (sys_.hasDriver && !structure_.driverMoves) {
     const JointId dj = mech_.driver->joint;
     s = Status::failure(StatusCode::Locked, "");
@@ -84,7 +84,7 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm, doub
                      " (bodies " + bodyList(structure_.freeBodies) +
                      "): held where they are drawn");
   }
-  newton_.reset(sys_, active);
+  newton_.reset(sys_, active, opt_.sparseFrom);
 
   s = assemble(mech_, sys_, structure_, newton_, q, phi, assembly_);
   if (!s.ok()) return s;

@@ -37,6 +37,10 @@ struct KinematicsOptions {
   // predictor and its branch and dead-point checks need velocities, so accelerations are the
   // part of a step a caller can leave out (then they come back as NaN).
   bool accelerations = true;
+  // Coordinates from which the general solve factors J as a sparse matrix and the structure
+  // analysis tries its sparse test first (sparse_lu.h); tests set it to compare both on one
+  // mechanism.
+  int sparseFrom = kSparseFrom;
 };
 
 class Kinematics {
@@ -100,6 +104,8 @@ class Kinematics {
 
   // True when the motion is computed group by group in closed form.
   bool closedForm() const { return plan_.has_value(); }
+  // True when the general solve factors J as a sparse matrix.
+  bool sparseSolve() const { return newton_.sparse(); }
 
   // Raw state: q and its derivatives with respect to the driver angle (rad).
   const Eigen::VectorXd& q() const { return coordinates(cur()).q; }

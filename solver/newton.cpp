@@ -14,14 +14,22 @@ namespace {
 constexpr double kSingularPivot = 1e-8;
 }  // namespace
 
-void NewtonSolver::reset(const System& sys, const std::vector<int>& activeRows) {
+void NewtonSolver::reset(const System& sys, const std::vector<int>& activeRows, int sparseFrom) {
   const int n = sys.nCoords();
   assert(static_cast<int>(activeRows.size()) == n &&
          "NewtonSolver needs a square system: add holds for free coordinates first");
   rowMap_.assign(sys.nRows, -1);
   for (int i = 0; i < static_cast<int>(activeRows.size()); ++i) rowMap_[activeRows[i]] = i;
-  J_.resize(n, n);
-  lu_.resize(n);
+  sparse_ = n >= sparseFrom;
+  if (sparse_) {
+    J_.resize(0, 0);
+    Js_ = sparseJacobian(sys, rowMap_, n);
+    slu_.analyzePattern(Js_.J);
+  } else {
+    J_.resize(n, n);
+    lu_.resize(n);
+    Js_ = {};
+  }
   phi_.resize(n);
   delta_.resize(n);
   rhs_.resize(n);
@@ -44,11 +52,28 @@ double NewtonSolver::tolerance(const System& sys, const Eigen::VectorXd& q, doub
 
 bool NewtonSolver::factor(const System& sys, const Eigen::VectorXd& q) {
   viewsAt(sys, q);
-  evalJacobian(sys, views_, rowMap_, J_);
   const double invL = 1.0 / sys.size;
-  for (int k = 0; k < sys.nBodies; ++k) J_.col(3 * k + 2) *= invL;
-  lu_.compute(J_);
-  return std::isfinite(lu_.pivotRatio()) && lu_.pivotRatio() > kSingularPivot;
+  if (sparse_) {
+    evalJacobian(sys, views_, rowMap_, Js_);
+    double* v = Js_.J.valuePtr();
+    const int* start = Js_.J.outerIndexPtr();
+    for (int k = 0; k < sys.nBodies; ++k)
+      for (int p = start[3 * k + 2]; p < start[3 * k + 3]; ++p) v[p] *= invL;
+    slu_.compute(Js_.J);
+  } else {
+    evalJacobian(sys, views_, rowMap_, J_);
+    for (int k = 0; k < sys.nBodies; ++k) J_.col(3 * k + 2) *= invL;
+    lu_.compute(J_);
+  }
+  return std::isfinite(pivotRatio()) && pivotRatio() > kSingularPivot;
+}
+
+void NewtonSolver::solveInPlace(Eigen::VectorXd& b) const {
+  if (sparse_) {
+    slu_.solveInPlace(b);
+  } else {
+    lu_.solveInPlace(b);
+  }
 }
 
 double NewtonSolver::residualNorm(const System& sys, const Eigen::VectorXd& q, double phi) {
@@ -92,7 +117,7 @@ NewtonResult NewtonSolver::solve(const System& sys, Eigen::VectorXd& q, double p
       haveLU = fresh = true;
     }
     delta_ = phi_;
-    lu_.solveInPlace(delta_);
+    solveInPlace(delta_);
     double step = 0;
     for (int k = 0; k < sys.nBodies; ++k) {
       delta_[3 * k + 2] *= invL;
@@ -128,7 +153,7 @@ bool NewtonSolver::correction(const System& sys, const Eigen::VectorXd& q, doubl
   evalResidual(sys, views_, phi, rowMap_, phi_);
   if (!factor(sys, q)) return false;
   delta = phi_;
-  lu_.solveInPlace(delta);
+  solveInPlace(delta);
   for (int k = 0; k < sys.nBodies; ++k) delta[3 * k + 2] /= sys.size;
   return delta.allFinite();
 }
@@ -141,12 +166,12 @@ bool NewtonSolver::derivatives(const System& sys, const Eigen::VectorXd& q, Eige
   if (sys.driverRow >= 0 && rowMap_[sys.driverRow] >= 0)
     rhs_[rowMap_[sys.driverRow]] = sys.size * sys.sigma;  // -Phi_phi
   dq = rhs_;
-  lu_.solveInPlace(dq);
+  solveInPlace(dq);
   for (int k = 0; k < sys.nBodies; ++k) dq[3 * k + 2] *= invL;
   setVelocities(sys, dq, views_);
   evalGamma(sys, views_, rowMap_, rhs_);
   ddq = rhs_;
-  lu_.solveInPlace(ddq);
+  solveInPlace(ddq);
   for (int k = 0; k < sys.nBodies; ++k) ddq[3 * k + 2] *= invL;
   return dq.allFinite() && ddq.allFinite();
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "dense_lu.h"
+#include "sparse_lu.h"
 #include "system.h"
 
 namespace linkage {
@@ -39,8 +40,10 @@ struct NewtonResult {
 
 class NewtonSolver {
  public:
-  // Prepares for the given rows (they must be independent and as many as coordinates).
-  void reset(const System& sys, const std::vector<int>& activeRows);
+  // Prepares for the given rows (they must be independent and as many as coordinates). J is
+  // factored as a sparse matrix from `sparseFrom` coordinates on.
+  void reset(const System& sys, const std::vector<int>& activeRows, int sparseFrom = kSparseFrom);
+  bool sparse() const { return sparse_; }
 
   // Every call takes the system it was reset for: the solver keeps no pointer to it, so the
   // objects that own both can be copied and moved freely.
@@ -51,8 +54,8 @@ class NewtonSolver {
                    Eigen::VectorXd& ddq);
 
   // Of the last factorisation: sign of det J and min/max pivot magnitude.
-  int detSign() const { return lu_.detSign(); }
-  double pivotRatio() const { return lu_.pivotRatio(); }
+  int detSign() const { return sparse_ ? slu_.detSign() : lu_.detSign(); }
+  double pivotRatio() const { return sparse_ ? slu_.pivotRatio() : lu_.pivotRatio(); }
 
   // One full Newton correction at q (J factored there): q_next = q - delta. False if singular.
   bool correction(const System& sys, const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta);
@@ -63,14 +66,18 @@ class NewtonSolver {
 
  private:
   bool factor(const System& sys, const Eigen::VectorXd& q);
+  void solveInPlace(Eigen::VectorXd& b) const;
   // Body views at q; sin and cos are evaluated again only when q changed.
   void viewsAt(const System& sys, const Eigen::VectorXd& q);
   double tolerance(const System& sys, const Eigen::VectorXd& q, double relTol) const;
 
   std::vector<int> rowMap_;
   std::vector<BodyView> views_;
+  bool sparse_ = false;
   Eigen::MatrixXd J_;
   DenseLU lu_;
+  SparseJacobian Js_;
+  SparseLU slu_;
   Eigen::VectorXd phi_, delta_, rhs_, viewsQ_;
 };
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "independent_rows.h"
+
 namespace linkage {
 
 namespace {
@@ -32,14 +34,46 @@ struct Basis {
   }
 };
 
+// The joint rows and the driver row: are they as many as the coordinates and independent with
+// a margin that Gram-Schmidt could not dispute? Every remainder of the Gram-Schmidt below is at
+// least the smallest singular value of the unit rows (in any order), so above 1e-5 it accepts
+// them all; closer to singular than that is left to it.
+constexpr double kProvedIndependent = 1e-5;
+static_assert(kProvedIndependent > 100 * kDependent);
+
+bool allRowsIndependent(const System& sys, const Eigen::VectorXd& q) {
+  const int n = sys.nCoords();
+  const int m = sys.nJointRows + (sys.driverRow >= 0 ? 1 : 0);
+  if (m != n || (sys.driverRow >= 0 && sys.driverRow != sys.nJointRows)) return false;
+  std::vector<int> rowMap(sys.nRows, -1);
+  for (int r = 0; r < m; ++r) rowMap[r] = r;
+  std::vector<BodyView> views;
+  makeViews(sys, q, nullptr, views);
+  SparseJacobian J = sparseJacobian(sys, rowMap, m);
+  evalJacobian(sys, views, rowMap, J);
+  for (int k = 0; k < sys.nBodies; ++k) J.J.col(3 * k + 2) /= sys.size;
+  return rowsIndependent(J.J, kProvedIndependent);
+}
+
 }  // namespace
 
-Structure analyzeStructure(const System& sys, const Eigen::VectorXd& q) {
+Structure analyzeStructure(const System& sys, const Eigen::VectorXd& q, int sparseFrom) {
   Structure s;
   const int n = sys.nCoords();
   s.coordinates = n;
   s.jointEquations = sys.nJointRows;
   s.gruebler = n - sys.nJointRows;
+
+  if (n >= sparseFrom && allRowsIndependent(sys, q)) {
+    // What the Gram-Schmidt below gives when it accepts every row.
+    s.rank = sys.nJointRows;
+    s.mobility = n - s.rank;
+    for (int r = 0; r < sys.nJointRows; ++r) s.activeRows.push_back(r);
+    s.driverMoves = sys.driverRow >= 0;
+    if (s.driverMoves) s.activeRows.push_back(sys.driverRow);
+    s.freeAfterDriver = 0;
+    return s;
+  }
 
   std::vector<BodyView> views;
   makeViews(sys, q, nullptr, views);

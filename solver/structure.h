@@ -5,12 +5,17 @@
 // Rank is decided on J with its theta columns divided by the mechanism size, so that every entry
 // is O(1), by Gram-Schmidt over the rows in file order: a row that lies in the span of the rows
 // before it is dependent, so the later of two joints that say the same thing is the one named.
+// That is dense and cubic in the number of coordinates; from `sparseFrom` coordinates on, the
+// common case (joint rows and driver row all independent, as many as coordinates) is proved by a
+// sparse test first (independent_rows.h), which gives the same Structure the Gram-Schmidt would;
+// anything else (a redundant joint, a freedom left, a borderline position) takes the dense path.
 #pragma once
 
 #include <Eigen/Core>
 #include <string>
 #include <vector>
 
+#include "sparse_lu.h"
 #include "system.h"
 
 namespace linkage {
@@ -34,7 +39,8 @@ struct Structure {
   bool pointDetermined(const System& sys, const Eigen::VectorXd& q, const PointLocation& p) const;
 };
 
-Structure analyzeStructure(const System& sys, const Eigen::VectorXd& q);
+Structure analyzeStructure(const System& sys, const Eigen::VectorXd& q,
+                           int sparseFrom = kSparseFrom);
 
 // A one-sentence summary for reports: "6 bodies, 15 coordinates, 14 joint equations, ...".
 std::string describe(const Structure& s);

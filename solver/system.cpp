@@ -312,26 +312,27 @@ void evalResidual(const System& sys, const std::vector<BodyView>& views, double 
 
 namespace {
 
-// Writes into a row-mapped view of J: rows the map skips are dropped.
+// Writes into a row-mapped view of J (dense, sparse, or a pattern recorder): rows the map skips
+// are dropped.
+template <class Target>
 struct MappedRows {
-  Eigen::MatrixXd& J;
+  Target& J;
   const std::vector<int>& map;
   int base;
   double sink = 0;
   double& operator()(int row, int col) {
     const int r = map[base + row];
-    return r < 0 ? sink : J(r, col);
+    return r < 0 ? sink : J.coeffRef(r, col);
   }
 };
 
-}  // namespace
-
-void evalJacobian(const System& sys, const std::vector<BodyView>& views,
-                  const std::vector<int>& rowMap, Eigen::MatrixXd& J) {
-  J.setZero();
+// Accumulates into entries of J that must be zero on entry.
+template <class Target>
+void addJacobian(const System& sys, const std::vector<BodyView>& views,
+                 const std::vector<int>& rowMap, Target& J) {
   const double L = sys.size;
   for (const Constraint& c : sys.cons) {
-    MappedRows rows{J, rowMap, c.row};
+    MappedRows<Target> rows{J, rowMap, c.row};
     const BodyView& i = views[c.bi + 1];
     const BodyView& j = views[c.bj + 1];
     switch (c.kind) {
@@ -350,6 +351,63 @@ void evalJacobian(const System& sys, const std::vector<BodyView>& views,
         break;
     }
   }
+}
+
+// Records where addJacobian writes.
+struct PatternRecorder {
+  std::vector<Eigen::Triplet<double>> entries;
+  double sink = 0;
+  double& coeffRef(int row, int col) {
+    entries.emplace_back(row, col, 0.0);
+    return sink;
+  }
+};
+
+// Replays the recorded writes into their slots.
+struct SlotWriter {
+  Eigen::SparseMatrix<double>& J;
+  const int* slot;
+  double& coeffRef([[maybe_unused]] int row, [[maybe_unused]] int col) {
+    const int s = *slot++;
+    assert(J.innerIndexPtr()[s] == row && s >= J.outerIndexPtr()[col] &&
+           s < J.outerIndexPtr()[col + 1] && "the joints wrote in another order than recorded");
+    return J.valuePtr()[s];
+  }
+};
+
+}  // namespace
+
+void evalJacobian(const System& sys, const std::vector<BodyView>& views,
+                  const std::vector<int>& rowMap, Eigen::MatrixXd& J) {
+  J.setZero();
+  addJacobian(sys, views, rowMap, J);
+}
+
+SparseJacobian sparseJacobian(const System& sys, const std::vector<int>& rowMap, int rows) {
+  std::vector<BodyView> views;
+  makeViews(sys, sketchCoordinates(sys), nullptr, views);
+  PatternRecorder rec;
+  addJacobian(sys, views, rowMap, rec);
+  SparseJacobian out;
+  out.J.resize(rows, sys.nCoords());
+  out.J.setFromTriplets(rec.entries.begin(), rec.entries.end());
+  out.J.makeCompressed();
+  out.slot.reserve(rec.entries.size());
+  const int* start = out.J.outerIndexPtr();
+  const int* inner = out.J.innerIndexPtr();
+  for (const auto& e : rec.entries) {
+    const int* p = std::lower_bound(inner + start[e.col()], inner + start[e.col() + 1], e.row());
+    out.slot.push_back(static_cast<int>(p - inner));
+  }
+  return out;
+}
+
+void evalJacobian(const System& sys, const std::vector<BodyView>& views,
+                  const std::vector<int>& rowMap, SparseJacobian& J) {
+  J.J.coeffs().setZero();
+  SlotWriter w{J.J, J.slot.data()};
+  addJacobian(sys, views, rowMap, w);
+  assert(w.slot == J.slot.data() + J.slot.size());
 }
 
 void evalGamma(const System& sys, const std::vector<BodyView>& views,

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <optional>
 #include <vector>
 
@@ -84,6 +85,18 @@ void evalResidual(const System& sys, const std::vector<BodyView>& views, double 
                   const std::vector<int>& rowMap, Eigen::VectorXd& out);
 void evalJacobian(const System& sys, const std::vector<BodyView>& views,
                   const std::vector<int>& rowMap, Eigen::MatrixXd& J);
+// J in compressed sparse storage, for large systems: its pattern is fixed by the joints alone,
+// and the joints' Jacobian functions write their entries in the same order at every
+// evaluation, so the storage slot of each write is found once and an evaluation is a sequence
+// of indexed additions (no search, no pattern change under a factorisation that analysed it).
+struct SparseJacobian {
+  Eigen::SparseMatrix<double> J;
+  std::vector<int> slot;  // value index of each write, in write order
+};
+// The pattern of the mapped rows of J (`rows` of them), zeros included.
+SparseJacobian sparseJacobian(const System& sys, const std::vector<int>& rowMap, int rows);
+void evalJacobian(const System& sys, const std::vector<BodyView>& views,
+                  const std::vector<int>& rowMap, SparseJacobian& J);
 // gamma with the views' velocities; J qdd = gamma.
 void evalGamma(const System& sys, const std::vector<BodyView>& views,
                const std::vector<int>& rowMap, Eigen::VectorXd& out);

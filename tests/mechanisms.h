@@ -128,8 +128,11 @@ inline WattSixBar wattSixBar() {
 
 // A chain of `loops` four-bars along the x axis: loop k has ground pivots at 60k and 60k + 60;
 // loop 0's crank is driven, and the rocker of loop k, extended, is the input of loop k + 1.
-// 1 + 2 loops bodies; every loop after the first is a dyad on the previous one.
-inline Mechanism fourBarChain(int loops) {
+// 1 + 2 loops bodies; every loop after the first is a dyad on the previous one. Loop 0's crank,
+// coupler and rocker lengths can be changed (a non-Grashof or a parallelogram first loop); the
+// other loops are 20, 70, 50 on 60 mm of ground, crank-rockers whatever their input does.
+inline Mechanism fourBarChain(int loops, double crankLength = 20, double couplerLength = 70,
+                              double rockerLength = 50) {
   Mechanism m;
   const BodyId g = m.addBody("ground", true);
   auto circle = [](Vec2 a, double ra, Vec2 b, double rb) {  // upper intersection
@@ -142,12 +145,12 @@ inline Mechanism fourBarChain(int loops) {
   BodyId input = m.addBody("crank");
   const Vec2 O0(0, 0);
   const JointId drive = m.addPin(m.addPoint(g, "O0", O0), m.addPoint(input, "O0", O0));
-  Vec2 pivot = O0, A = Vec2(20 * std::cos(1.0), 20 * std::sin(1.0));
+  Vec2 pivot = O0, A = Vec2(crankLength * std::cos(1.0), crankLength * std::sin(1.0));
   PointId inputA = m.addPoint(input, "A", A);
   for (int k = 0; k < loops; ++k) {
     const std::string n = std::to_string(k);
     const Vec2 O4 = pivot + Vec2(60, 0);
-    const Vec2 B = circle(A, 70, O4, 50);
+    const Vec2 B = circle(A, k == 0 ? couplerLength : 70, O4, k == 0 ? rockerLength : 50);
     const BodyId coupler = m.addBody("coupler" + n), rocker = m.addBody("rocker" + n);
     m.addPin(inputA, m.addPoint(coupler, "A", A));
     m.addPin(m.addPoint(coupler, "B", B), m.addPoint(rocker, "B", B));
@@ -160,6 +163,41 @@ inline Mechanism fourBarChain(int loops) {
   }
   m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
   m.outputs = {inputA};
+  return m;
+}
+
+// A chain of `units` class-III groups (triads) that the closed-form groups cannot solve: unit k
+// is a triangle hung from the ground by two long links and pushed sideways by a third link
+// from the previous unit's triangle (unit 0: from a 5 mm crank). No body of a triad is held to
+// known bodies by two joints or a core's three conditions, so only the general solve takes
+// it. 1 + 4 units bodies. The crank turns fully; the first triangle swings 10 mm and each next
+// one about a tenth less (its output point is nearer the point its two hangers converge to).
+inline Mechanism triadChain(int units) {
+  Mechanism m;
+  const BodyId g = m.addBody("ground", true);
+  const Vec2 C(-70, -5);
+  const BodyId crank = m.addBody("crank");
+  const JointId drive = m.addPin(m.addPoint(g, "C", C), m.addPoint(crank, "C", C));
+  PointId input = m.addPoint(crank, "A", C + Vec2(5, 0));
+  Vec2 in = C + Vec2(5, 0);
+  for (int k = 0; k < units; ++k) {
+    const std::string n = std::to_string(k);
+    const double x = 100.0 * k;
+    const Vec2 P(x - 30, -5), Q(x - 10, 0), R(x + 20, 5), S(x + 40, -10);
+    const Vec2 G2(x - 15, 80), G3(x + 25, 85);
+    const BodyId t = m.addBody("triangle" + n), push = m.addBody("push" + n),
+                 left = m.addBody("left" + n), right = m.addBody("right" + n);
+    m.addPin(input, m.addPoint(push, "in", in));
+    m.addPin(m.addPoint(push, "P", P), m.addPoint(t, "P", P));
+    m.addPin(m.addPoint(t, "Q", Q), m.addPoint(left, "Q", Q));
+    m.addPin(m.addPoint(left, "G", G2), m.addPoint(g, "G2_" + n, G2));
+    m.addPin(m.addPoint(t, "R", R), m.addPoint(right, "R", R));
+    m.addPin(m.addPoint(right, "G", G3), m.addPoint(g, "G3_" + n, G3));
+    input = m.addPoint(t, "S", S);
+    in = S;
+  }
+  m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
+  m.outputs = {input};
   return m;
 }
 
