@@ -219,9 +219,32 @@ Kinematics::StepResult Kinematics::tryStep(double phiNext, Snapshot& out) {
   }
   out.fromCoordinates(phiNext, out.q, out.dq, out.ddq);
   if (!out.regular) return StepResult::Singular;
-  lastRefusalCrossing_ = newton_.detSign() != regSign_;
+  lastRefusalCrossing_ = newton_.detSign() != regSign_ || !sameBranch(from, out, h);
   if (lastRefusalCrossing_) return StepResult::Refused;
   return StepResult::Accepted;
+}
+
+bool Kinematics::sameBranch(const Snapshot& from, const Snapshot& to, double h) const {
+  // Where two assembly branches cross (a change point) they have different tangents, and a
+  // step across it may land on the other branch with det J of the same sign (the sign flips
+  // along both). The velocities show it: on the branch it left from they follow the Taylor
+  // prediction to O(h^2), on the other they differ at first order. Body by body, so a jump in
+  // one loop of a long chain is not hidden in the norm of the whole. Each body may deviate by
+  // a tenth of its speed plus what its acceleration does over the step: far more than the
+  // O(h^2) of a smooth path, far less than a change of tangent.
+  const double L = sys_.size;
+  for (int k = 0; k < sys_.nBodies; ++k) {
+    double err = 0, speed = 0, acc = 0;
+    for (int c = 3 * k; c < 3 * k + 3; ++c) {
+      const double scale = c % 3 == 2 ? L : 1.0;  // angles as the arc they make over L
+      const double pred = from.dq[c] + h * from.ddq[c];
+      err = std::max(err, scale * std::abs(to.dq[c] - pred));
+      speed = std::max(speed, scale * (std::abs(to.dq[c]) + std::abs(pred)));
+      acc = std::max(acc, scale * std::abs(from.ddq[c]));
+    }
+    if (err > 0.1 * speed + std::abs(h) * acc + 1e-9 * L) return false;
+  }
+  return true;
 }
 
 void Kinematics::setAccelerations(bool on) {
@@ -391,7 +414,7 @@ Status Kinematics::explainFailure(double phiFailed, bool crossing) {
     // change point), where Newton cannot tell them apart.
     Eigen::VectorXd dq, ddq;
     newton_.derivatives(sys_, coordinates(reg_).q, dq, ddq);
-    crossing = newton_.pivotRatio() < 1e-3;
+    crossing = newton_.nearness() < 1e-3;
   }
   if (crossing) {
     s.code = StatusCode::Singular;

@@ -130,6 +130,8 @@ class Kinematics {
   Status skipWholeTurns(double target);
   enum class StepResult { Accepted, Refused, Singular };
   StepResult tryStep(double phiNext, Snapshot& out);
+  // Did a step stay on the branch it started from? (tryStep; see there.)
+  bool sameBranch(const Snapshot& from, const Snapshot& to, double h) const;
   Status explainFailure(double phiFailed, bool crossing);
   std::string bodyList(const std::vector<int>& bodies) const;
   const PointLocation& locate(PointId p) const;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <vector>
 
 #include "dense_lu.h"
@@ -56,6 +57,9 @@ class NewtonSolver {
   // Of the last factorisation: sign of det J and min/max pivot magnitude.
   int detSign() const { return sparse_ ? slu_.detSign() : lu_.detSign(); }
   double pivotRatio() const { return sparse_ ? slu_.pivotRatio() : lu_.pivotRatio(); }
+  // Of the last derivatives(): the smaller of the pivot ratio and an inverse-iteration estimate
+  // of the smallest singular value of the scaled J (how close to singular the position is).
+  double nearness() const { return std::min(pivotRatio(), estimate_); }
 
   // One full Newton correction at q (J factored there): q_next = q - delta. False if singular.
   bool correction(const System& sys, const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta);
@@ -65,6 +69,8 @@ class NewtonSolver {
   const std::vector<int>& rowMap() const { return rowMap_; }
 
  private:
+  double inverseEstimate();
+  double estimate_ = 1;
   bool factor(const System& sys, const Eigen::VectorXd& q);
   void solveInPlace(Eigen::VectorXd& b) const;
   // Body views at q; sin and cos are evaluated again only when q changed.

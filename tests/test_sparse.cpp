@@ -211,9 +211,7 @@ TEST(SparseSolve, LargeChainLockingIsReportedAsByTheDenseSolve) {
 }
 
 // Loop 0 a parallelogram (25, 60, 25 on 60): all in line at crank angle -1 rad, where its two
-// branches cross. Landing on it: 12 loops, 75 coordinates, sparse by default. On longer chains
-// the LU pivots, dense as much as sparse, no longer show this singular position (the small
-// factor spreads over many pivots: see docs/benchmarks.md, Scale).
+// branches cross. Landing on it: 12 loops, 75 coordinates, sparse by default.
 TEST(SparseSolve, LandingOnTheChangePointOfALargeChainIsReportedAsByTheDenseSolve) {
   const Mechanism m = test::fourBarChain(12, 25, 60, 25);
   const double changeDeg = -180 / M_PI;
@@ -233,9 +231,7 @@ TEST(SparseSolve, LandingOnTheChangePointOfALargeChainIsReportedAsByTheDenseSolv
 
 // Across it: both stop before it, on the parallelogram branch. Where exactly they give up, within
 // a 1e-6 degree of it, depends on rounding in Newton next to a singular J, so the angle in the
-// message is compared to 1e-5 degrees, not as text. 4 loops: on longer chains the first
-// correction onto the other branch is no longer "far" against the chain's size (0.1 L), and the
-// dense solve too goes on along the other branch (see docs/benchmarks.md, Scale).
+// message is compared to 1e-5 degrees, not as text.
 TEST(SparseSolve, CrossingTheChangePointIsRefusedAsByTheDenseSolve) {
   const Mechanism m = test::fourBarChain(4, 25, 60, 25);
   const double changeDeg = -180 / M_PI;
@@ -386,6 +382,52 @@ TEST(SparseSolve, ChainOfTriadsIsSolvedAsByTheDenseSolve) {
         << a;
     for (const Joint& j : m.joints)
       EXPECT_LT((sparse.position(j.a) - sparse.position(j.b)).norm(), 1e-9) << a;
+  }
+}
+
+}  // namespace
+}  // namespace linkage
+
+namespace linkage {
+namespace {
+
+// Landing on it and crossing it on chains of any length. The pivots of a partial-pivot LU stop
+// showing the singular position from about 18 loops (the small factor spreads over many
+// pivots), and across it the step may land on the other branch with det J of the same sign:
+// the inverse-iteration estimate (NewtonSolver::nearness) and the velocity continuity test
+// (Kinematics::sameBranch) must catch both, dense and sparse alike.
+TEST(GeneralSolve, LandingOnAChangePointIsReportedOnChainsOfAnyLength) {
+  for (int loops : {18, 30, 50}) {
+    const Mechanism m = test::fourBarChain(loops, 25, 60, 25);
+    for (bool sparse : {false, true}) {
+      if (!sparse && loops > 20) continue;  // the dense solve is slow there, and says the same
+      Kinematics k(options(false, sparse));
+      const std::string what = std::to_string(loops) + (sparse ? " loops, sparse" : " loops");
+      ASSERT_TRUE(k.load(m).ok()) << what;
+      ASSERT_TRUE(k.moveTo(-56).ok()) << what;
+      const Status s = k.moveTo(-180 / M_PI);
+      EXPECT_EQ(s.code, StatusCode::Singular) << what << ": " << s.message;
+      EXPECT_FALSE(k.derivativesValid()) << what;
+      EXPECT_TRUE(std::isnan(k.velocity(m.outputs[0]).x())) << what;
+    }
+  }
+}
+
+TEST(GeneralSolve, CrossingAChangePointIsRefusedOnChainsOfAnyLength) {
+  for (int loops : {4, 8, 20, 50}) {
+    const Mechanism m = test::fourBarChain(loops, 25, 60, 25);
+    for (bool sparse : {false, true}) {
+      if (!sparse && loops > 20) continue;  // the dense solve is slow there, and says the same
+      Kinematics k(options(false, sparse));
+      const std::string what = std::to_string(loops) + (sparse ? " loops, sparse" : " loops");
+      ASSERT_TRUE(k.load(m).ok()) << what;
+      ASSERT_TRUE(k.moveTo(-56).ok()) << what;
+      const Status s = k.moveTo(-70);
+      EXPECT_EQ(s.code, StatusCode::Singular) << what << ": " << s.message;
+      EXPECT_NE(s.message.find("branches meet"), std::string::npos) << what << ": " << s.message;
+      EXPECT_NEAR(k.bodyAngle(m.bodyNamed("coupler0")->id), 0, 1e-6)
+          << what << ": left the parallelogram branch";
+    }
   }
 }
 
