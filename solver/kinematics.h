@@ -35,7 +35,9 @@ struct KinematicsOptions {
   bool closedForm = true;
   // Compute accelerations at every step. Positions and velocities always are: the tracker's
   // predictor and its branch and dead-point checks need velocities, so accelerations are the
-  // part of a step a caller can leave out (then they come back as NaN).
+  // part of a step a caller can leave out. The closed-form groups then skip them (they come
+  // back as NaN, never stale); the general solve computes them anyway, as its test that a step
+  // stayed on its branch uses them.
   bool accelerations = true;
   // Coordinates from which the general solve factors J as a sparse matrix and the structure
   // analysis tries its sparse test first (sparse_lu.h); tests set it to compare both on one
