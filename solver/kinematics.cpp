@@ -9,6 +9,10 @@ namespace linkage {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
+// Nearness to singular (NewtonSolver::nearness) below which a position's derivatives are not
+// trusted as the base of the next step. Above NewtonSolver's 1e-8 (where velocities are not
+// given at all); the closest legitimate positions measured stay above 1e-4.
+constexpr double kUnreliable = 1e-7;
 
 std::string deg(double v) {
   char buf[64];
@@ -120,6 +124,7 @@ Status Kinematics::prepare(const Mechanism& m, const Eigen::VectorXd* warm, doub
   if (opt_.closedForm) {
     plan_ = ClosedFormPlan::build(mech_, sys_, q);
     // The plan must reproduce the configuration just solved, or it is not used.
+    next_.coordinates = false;  // whatever next_ held before is not what the plan writes
     if (plan_ && !(plan_->solve(sys_, reg_, phi, next_) &&
                    (coordinates(next_).q - reg_.q).cwiseAbs().maxCoeff() <= 1e-9 * sys_.size &&
                    (next_.dq - reg_.dq).cwiseAbs().maxCoeff() <= 1e-7 * (1 + reg_.dq.norm())))
@@ -219,7 +224,12 @@ Kinematics::StepResult Kinematics::tryStep(double phiNext, Snapshot& out) {
   }
   out.fromCoordinates(phiNext, out.q, out.dq, out.ddq);
   if (!out.regular) return StepResult::Singular;
-  lastRefusalCrossing_ = newton_.detSign() != regSign_ || !sameBranch(from, out, h);
+  // Within 1e-7 of singular (scaled J) accelerations carry errors of eps / 1e-14 and more:
+  // such a position is no base for the predictor or the branch test, which it could fool
+  // into accepting a jump onto the other branch step by tiny step. Refused like a crossing,
+  // so the tracker stops short of it and explains (explainFailure).
+  lastRefusalCrossing_ = newton_.detSign() != regSign_ || !sameBranch(from, out, h) ||
+                         newton_.nearness() < kUnreliable;
   if (lastRefusalCrossing_) return StepResult::Refused;
   return StepResult::Accepted;
 }
@@ -288,7 +298,7 @@ Status Kinematics::skipWholeTurns(double target) {
   reg_.phi += dir * turns * turn;
   reg_.q += turns * perTurn;
   for (int k = 0; k < sys_.nBodies; ++k)
-    reg_.body[k].turns += static_cast<int>(std::lround(turns * perTurn[3 * k + 2] / turn));
+    reg_.body[k].turns += std::round(turns * perTurn[3 * k + 2] / turn);
   atSingular_ = false;
   return Status::success();
 }
@@ -319,7 +329,9 @@ Status Kinematics::moveToPhi(double target) {
 }
 
 bool Kinematics::trackClosedForm(double target) {
-  const double hMax = opt_.maxStepDeg * kDeg;
+  // Whole turns are counted from one step to the next (motion.h), which needs every body to
+  // turn less than half a turn a step: the crank, at least, turns by the step itself.
+  const double hMax = std::min(opt_.maxStepDeg, 90.0) * kDeg;
   while (reg_.phi != target) {
     // Steps no larger than the general tracker's keep angles continued correctly and make a
     // region the mechanism cannot reach show up as a failed step, not be stepped over.

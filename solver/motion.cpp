@@ -13,7 +13,7 @@ void Motion::fromCoordinates(double phiAt, const Eigen::VectorXd& q, const Eigen
     const double th = q[c + 2];
     b.r = Vec2(q[c], q[c + 1]);
     b.R = Rot{std::cos(th), std::sin(th)};
-    b.turns = static_cast<int>(std::lround((th - std::atan2(b.R.s, b.R.c)) / (2 * M_PI)));
+    b.turns = std::round((th - std::atan2(b.R.s, b.R.c)) / (2 * M_PI));
     b.v = Vec2(dq[c], dq[c + 1]);
     b.w = dq[c + 2];
     b.a = Vec2(ddq[c], ddq[c + 1]);

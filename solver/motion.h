@@ -23,7 +23,7 @@ struct BodyState {
   Vec2 r = Vec2::Zero(), v = Vec2::Zero(), a = Vec2::Zero();  // frame origin, d/dphi, d2/dphi2
   Rot R;                                                      // rotation
   double w = 0, al = 0;                                       // d theta/dphi, d2 theta/dphi2
-  int turns = 0;                                              // theta = atan2(R) + 2 pi turns
+  double turns = 0;  // theta = atan2(R) + 2 pi turns: a whole number (a double cannot overflow)
 
   double angle() const { return std::atan2(R.s, R.c) + 2 * M_PI * turns; }
   Vec2 pos(const Vec2& s) const { return r + R * s; }
@@ -43,7 +43,7 @@ struct BodyState {
 // Whole turns of a body whose rotation moved from `before` (with `turns`) to `after` by less
 // than half a turn: atan2 jumps by 2 pi where the path crosses the -x axis, which shows as a
 // change of sign of sin with cos negative on the way.
-inline int turnsAfter(const Rot& before, int turns, const Rot& after) {
+inline double turnsAfter(const Rot& before, double turns, const Rot& after) {
   if (std::signbit(before.s) == std::signbit(after.s) || before.c + after.c >= 0) return turns;
   return std::signbit(after.s) ? turns + 1 : turns - 1;
 }
@@ -68,7 +68,7 @@ struct Motion {
 
 // Sets a body from its rotation, angular rate and acceleration and the motion (P, vP, aP) of
 // its local point s.
-inline void place(BodyState& b, const Rot& R, int turns, double w, double al, const Vec2& s,
+inline void place(BodyState& b, const Rot& R, double turns, double w, double al, const Vec2& s,
                   const Vec2& P, const Vec2& vP, const Vec2& aP) {
   const Vec2 g = R * s;
   b.R = R;
