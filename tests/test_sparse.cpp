@@ -211,16 +211,21 @@ TEST(SparseSolve, LargeChainLockingIsReportedAsByTheDenseSolve) {
 }
 
 // Loop 0 a parallelogram (25, 60, 25 on 60): all in line at crank angle -1 rad, where its two
-// branches cross. Landing on it: 12 loops, 75 coordinates, sparse by default.
+// branches cross. The chain on the general path, turned to -56 degrees, 1.3 degrees short of it.
+constexpr double changeDeg = -180 / M_PI;
+
+Kinematics nearChangePoint(const Mechanism& m, bool sparse) {
+  Kinematics k(options(false, sparse));
+  EXPECT_TRUE(k.load(m).ok());
+  EXPECT_EQ(k.sparseSolve(), sparse);
+  EXPECT_TRUE(k.moveTo(-56).ok());
+  return k;
+}
+
+// Landing on it: 12 loops, 75 coordinates, sparse by default.
 TEST(SparseSolve, LandingOnTheChangePointOfALargeChainIsReportedAsByTheDenseSolve) {
   const Mechanism m = test::fourBarChain(12, 25, 60, 25);
-  const double changeDeg = -180 / M_PI;
-  Kinematics dense(options(false, false)), sparse(options(false, true));
-  ASSERT_TRUE(dense.load(m).ok());
-  ASSERT_TRUE(sparse.load(m).ok());
-  ASSERT_TRUE(sparse.sparseSolve());
-  ASSERT_TRUE(dense.moveTo(-56).ok());
-  ASSERT_TRUE(sparse.moveTo(-56).ok());
+  Kinematics dense = nearChangePoint(m, false), sparse = nearChangePoint(m, true);
   const Status d = dense.moveTo(changeDeg), s = sparse.moveTo(changeDeg);
   EXPECT_EQ(s.code, StatusCode::Singular) << s.message;
   EXPECT_EQ(s.message, d.message);
@@ -234,13 +239,7 @@ TEST(SparseSolve, LandingOnTheChangePointOfALargeChainIsReportedAsByTheDenseSolv
 // message is compared to 1e-5 degrees, not as text.
 TEST(SparseSolve, CrossingTheChangePointIsRefusedAsByTheDenseSolve) {
   const Mechanism m = test::fourBarChain(4, 25, 60, 25);
-  const double changeDeg = -180 / M_PI;
-  Kinematics dense(options(false, false)), sparse(options(false, true));
-  ASSERT_TRUE(dense.load(m).ok());
-  ASSERT_TRUE(sparse.load(m).ok());
-  ASSERT_TRUE(sparse.sparseSolve());
-  ASSERT_TRUE(dense.moveTo(-56).ok());
-  ASSERT_TRUE(sparse.moveTo(-56).ok());
+  Kinematics dense = nearChangePoint(m, false), sparse = nearChangePoint(m, true);
   const Status d = dense.moveTo(-70), s = sparse.moveTo(-70);
   EXPECT_EQ(s.code, StatusCode::Singular) << s.message;
   EXPECT_EQ(d.code, StatusCode::Singular) << d.message;
@@ -385,12 +384,6 @@ TEST(SparseSolve, ChainOfTriadsIsSolvedAsByTheDenseSolve) {
   }
 }
 
-}  // namespace
-}  // namespace linkage
-
-namespace linkage {
-namespace {
-
 // Landing on it and crossing it on chains of any length. The pivots of a partial-pivot LU stop
 // showing the singular position from about 18 loops (the small factor spreads over many
 // pivots), and across it the step may land on the other branch with det J of the same sign:
@@ -401,11 +394,9 @@ TEST(GeneralSolve, LandingOnAChangePointIsReportedOnChainsOfAnyLength) {
     const Mechanism m = test::fourBarChain(loops, 25, 60, 25);
     for (bool sparse : {false, true}) {
       if (!sparse && loops > 20) continue;  // the dense solve is slow there, and says the same
-      Kinematics k(options(false, sparse));
+      Kinematics k = nearChangePoint(m, sparse);
       const std::string what = std::to_string(loops) + (sparse ? " loops, sparse" : " loops");
-      ASSERT_TRUE(k.load(m).ok()) << what;
-      ASSERT_TRUE(k.moveTo(-56).ok()) << what;
-      const Status s = k.moveTo(-180 / M_PI);
+      const Status s = k.moveTo(changeDeg);
       EXPECT_EQ(s.code, StatusCode::Singular) << what << ": " << s.message;
       EXPECT_FALSE(k.derivativesValid()) << what;
       EXPECT_TRUE(std::isnan(k.velocity(m.outputs[0]).x())) << what;
@@ -418,10 +409,8 @@ TEST(GeneralSolve, CrossingAChangePointIsRefusedOnChainsOfAnyLength) {
     const Mechanism m = test::fourBarChain(loops, 25, 60, 25);
     for (bool sparse : {false, true}) {
       if (!sparse && loops > 20) continue;  // the dense solve is slow there, and says the same
-      Kinematics k(options(false, sparse));
+      Kinematics k = nearChangePoint(m, sparse);
       const std::string what = std::to_string(loops) + (sparse ? " loops, sparse" : " loops");
-      ASSERT_TRUE(k.load(m).ok()) << what;
-      ASSERT_TRUE(k.moveTo(-56).ok()) << what;
       const Status s = k.moveTo(-70);
       EXPECT_EQ(s.code, StatusCode::Singular) << what << ": " << s.message;
       EXPECT_NE(s.message.find("branches meet"), std::string::npos) << what << ": " << s.message;
