@@ -56,8 +56,8 @@ class Kinematics {
   // Replaces the mechanism by an edited version of it and re-solves at the current crank angle,
   // starting from the current pose of every body that is still there (matched by id).
   // An edit of dimensions only (points or slots moved; see sameTopology) on the closed-form path
-  // re-solves only the groups of the changed bodies and of those that depend on them, on the
-  // same assembly branch; other edits, or one that a group cannot follow, are solved whole.
+  // re-solves only the groups whose geometry changed and those that depend on them, on the
+  // same assembly branches; other edits, or one that a group cannot follow, are solved whole.
   Status edit(const Mechanism& m);
   // Groups the last edit solved again, or -1 when it was solved whole.
   int lastEditGroups() const { return lastEditGroups_; }
@@ -153,8 +153,10 @@ class Kinematics {
   bool atSingular_ = false;
   Snapshot next_;  // scratch for closed-form steps
   std::optional<ClosedFormPlan> plan_;
-  int regSign_ = 0;                   // det J sign at reg_
-  bool lastRefusalCrossing_ = false;  // tryStep refused a converged step: det J changed sign
+  int regSign_ = 0;  // det J sign at reg_
+  // tryStep refused a converged step as a crossing: det J changed sign, the velocities jumped
+  // (another branch), or the position is too near singular to step from.
+  bool lastRefusalCrossing_ = false;
   bool valid_ = false;
   int lastEditGroups_ = -1;
 };
