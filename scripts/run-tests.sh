@@ -4,7 +4,7 @@
 # time when clang is there (FUZZ_SECONDS, default 60; 0 skips it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh build
+scripts/setup.sh --tests build
 (cd build && ctest --output-on-failure -j2)
 
 echo "== sanitizers (ASan + UBSan)"

@@ -1,30 +1,54 @@
 #!/usr/bin/env bash
 # Installs what the project needs on Debian 12 (as root, or with sudo) and builds it.
-# Usage: ./setup.sh [build-dir]   (default: build)
+#
+#   scripts/setup.sh [--tests] [BUILD_DIR]      (default build dir: build)
+#
+# Without --tests: only what the programs need (compiler, Eigen, JSON, Qt), and only the programs
+# are built. With --tests: also the test, benchmark and headless-display packages, and everything
+# is built. Each package set is complete on its own: a fresh Debian 12 root (debootstrap minbase)
+# is how CI proves it (.ci/run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+tests=0
+if [ "${1:-}" = "--tests" ]; then
+  tests=1
+  shift
+fi
 BUILD_DIR=${1:-build}
 
-packages=(cmake ninja-build g++ libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
-          qt6-base-dev qt6-svg-dev libqcustomplot-dev xvfb xauth fonts-dejavu-core locales python3)
+# The programs: linkage-cli (solver, file format) and the editor linkage (Qt 6 Widgets, Svg,
+# QCustomPlot's Qt 6 build, giflib for animated GIFs); a font so that labels are not boxes.
+packages=(cmake ninja-build g++ libeigen3-dev nlohmann-json3-dev)
+# The tests: GoogleTest and GoogleMock (separate packages on Debian 12), Google Benchmark, a real X
+# server and a way to drive it (Xvfb, xdotool, ImageMagick's import), a comma-decimal locale.
+test_packages=(libgtest-dev libgmock-dev libbenchmark-dev locales)
+if [ $tests -eq 1 ]; then packages+=("${test_packages[@]}"); fi
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO=sudo
 if [ ${#missing[@]} -gt 0 ]; then
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO=sudo
   echo "setup: installing ${missing[*]}"
   $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
-# A comma-decimal locale, so the tests can prove output does not depend on the locale.
-if ! locale -a 2>/dev/null | grep -qi '^de_DE.utf8$'; then
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO=sudo
-  $SUDO sed -i 's/^# *de_DE.UTF-8 UTF-8/de_DE.UTF-8 UTF-8/' /etc/locale.gen
-  $SUDO locale-gen >/dev/null
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
 fi
 
-cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$BUILD_DIR"
+if [ $tests -eq 1 ]; then
+  # A comma-decimal locale, so the tests can prove output does not depend on the locale.
+  if ! locale -a 2>/dev/null | grep -qi '^de_DE.utf8$'; then
+    $SUDO sed -i 's/^# *de_DE.UTF-8 UTF-8/de_DE.UTF-8 UTF-8/' /etc/locale.gen
+    $SUDO locale-gen >/dev/null
+  fi
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLINKAGE_BUILD_TESTS=ON \
+    -DLINKAGE_BUILD_BENCH=ON >/dev/null
+  cmake --build "$BUILD_DIR"
+else
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLINKAGE_BUILD_TESTS=OFF \
+    -DLINKAGE_BUILD_BENCH=OFF >/dev/null
+  cmake --build "$BUILD_DIR" --target linkage-cli
+fi
