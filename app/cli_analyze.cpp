@@ -5,9 +5,9 @@
 #include <string>
 
 #include "cli_common.h"
-#include "io/atomic_file.h"
-#include "io/motion_table.h"
-#include "io/numbers.h"
+#include "linkage/io/atomic_file.h"
+#include "linkage/io/motion_table.h"
+#include "linkage/io/numbers.h"
 
 namespace linkage::cli {
 

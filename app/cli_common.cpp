@@ -4,9 +4,9 @@
 #include <cmath>
 #include <iostream>
 
-#include "io/model_file.h"
-#include "io/model_lookup.h"
-#include "io/numbers.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/model_lookup.h"
+#include "linkage/io/numbers.h"
 
 namespace linkage::cli {
 
@@ -81,7 +81,7 @@ std::optional<Mechanism> openModel(const std::string& nameOrPath) {
 
 int prepare(Kinematics& k, const Mechanism& m) {
   const Status s = k.load(m);
-  for (const std::string& n : k.notes()) note(n);
+  for (const Note& n : k.notes()) note(n.text);
   if (!s.ok()) {
     error(s.message);
     return exitFor(s);

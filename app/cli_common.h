@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "kinematics.h"
-#include "model.h"
+#include "linkage/kinematics.h"
+#include "linkage/model.h"
 
 namespace linkage::cli {
 

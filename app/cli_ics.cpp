@@ -6,10 +6,10 @@
 #include <string>
 
 #include "cli_common.h"
-#include "instant_centres.h"
-#include "io/atomic_file.h"
-#include "io/numbers.h"
-#include "velocity_chain.h"
+#include "linkage/instant_centres.h"
+#include "linkage/io/atomic_file.h"
+#include "linkage/io/numbers.h"
+#include "linkage/velocity_chain.h"
 
 namespace linkage::cli {
 
@@ -118,7 +118,7 @@ std::string jsonCentreValue(const Eigen::Vector3d& h, bool determined) {
 }
 
 std::string jsonLine(const Mechanism& m, const InstantCentre& c, const CentreLine& l) {
-  if (l.k == 0) return "{\"joint\": " + jsonString(m.jointLabel(m.joints.at(l.joint).id)) + "}";
+  if (l.k == 0) return "{\"joint\": " + jsonString(m.jointLabel(l.joint)) + "}";
   return "{\"through\": [[" + std::to_string(std::min(c.i, l.k)) + ", " +
          std::to_string(std::max(c.i, l.k)) + "], [" + std::to_string(std::min(c.j, l.k)) + ", " +
          std::to_string(std::max(c.j, l.k)) + "]]}";
@@ -140,9 +140,9 @@ std::string json(const Mechanism& m, const InstantCentres& ics, double angle) {
          ", \"body_i\": " + jsonString(bodyName(m, c.bodyI)) +
          ", \"body_j\": " + jsonString(bodyName(m, c.bodyJ)) + ", \"status\": \"" +
          toString(c.status) + "\", " + jsonCentreValue(c.h, c.determined);
-    if (c.status == CentreStatus::Primary && c.joint >= 0 && c.lines[0].joint < 0)
-      s += ", \"joint\": " + jsonString(m.jointLabel(m.joints.at(c.joint).id));
-    if (c.status == CentreStatus::Kennedy || c.lines[0].joint >= 0) {
+    if (c.status == CentreStatus::Primary && c.joint && !c.lines[0].joint)
+      s += ", \"joint\": " + jsonString(m.jointLabel(c.joint));
+    if (c.status == CentreStatus::Kennedy || c.lines[0].joint) {
       s += ", \"lines\": [" + jsonLine(m, c, c.lines[0]) + ", " + jsonLine(m, c, c.lines[1]) + "]";
       if (c.status == CentreStatus::Kennedy) s += ", \"round\": " + std::to_string(c.round);
     }

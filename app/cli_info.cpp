@@ -2,8 +2,8 @@
 #include <iostream>
 
 #include "cli_common.h"
-#include "io/model_lookup.h"
-#include "io/numbers.h"
+#include "linkage/io/model_lookup.h"
+#include "linkage/io/numbers.h"
 
 namespace linkage::cli {
 
@@ -52,14 +52,14 @@ int info(int argc, char** argv) {
     std::cout << "driver: none\n";
   Kinematics k;
   const int e = prepare(k, *m);
-  if (k.system().nRows > 0 || e == kOk) {
-    const Structure& s = k.structure();
+  Status compiled;
+  const StructureReport s = analyzeDrawing(*m, compiled);
+  if (compiled.ok() && (s.coordinates > 0 || e == kOk)) {
     std::cout << "coordinates: " << s.coordinates << ", joint equations: " << s.jointEquations
               << "\n";
     std::cout << "degrees of freedom: " << s.mobility << " (Gruebler count " << s.gruebler
               << ", rank " << s.rank << ")\n";
-    for (int j : s.redundantJoints)
-      std::cout << "redundant: " << m->jointLabel(m->joints[j].id) << "\n";
+    for (JointId j : s.redundantJoints) std::cout << "redundant: " << m->jointLabel(j) << "\n";
   }
   if (e == kOk)
     std::cout << "assembly: moved up to " << formatNumber(k.assembly().maxMove, 6) << " mm\n";

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "cli_common.h"
-#include "io/model_lookup.h"
+#include "linkage/io/model_lookup.h"
 
 namespace linkage::cli {
 int analyze(int argc, char** argv);

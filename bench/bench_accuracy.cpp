@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "kinematics.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 #include "reference/four_bar.h"
 #include "reference/slider_crank.h"

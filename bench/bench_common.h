@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "io/model_file.h"
+#include "linkage/io/model_file.h"
 
 namespace linkage::bench {
 

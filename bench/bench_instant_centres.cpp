@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "bench_common.h"
-#include "instant_centres.h"
-#include "kinematics.h"
+#include "linkage/instant_centres.h"
+#include "linkage/kinematics.h"
 
 namespace {
 

@@ -10,7 +10,8 @@
 #include <string>
 
 #include "bench_common.h"
-#include "kinematics.h"
+#include "linkage/kinematics.h"
+#include "solve/kinematics_state.h"
 
 namespace {
 
@@ -33,7 +34,7 @@ void kinematicStep(benchmark::State& state, const std::string& name, bool accele
     benchmark::DoNotOptimize(m.position.x() + m.velocity.x() + m.acceleration.x());
   }
   state.SetItemsProcessed(state.iterations());
-  state.counters["bodies"] = static_cast<double>(k.system().nBodies + 1);
+  state.counters["bodies"] = static_cast<double>(linkage::internal::system(k).nBodies + 1);
 }
 
 // The exact closed form of the central slider-crank (r = 15, l = 30, 1000 rpm): what a

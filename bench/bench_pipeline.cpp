@@ -7,7 +7,7 @@
 //   build/bench/linkage_bench --benchmark_filter=pipeline
 #include <benchmark/benchmark.h>
 
-#include "kinematics.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "io/model_file.h"
+#include "linkage/io/model_file.h"
 
 namespace {
 

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "model.h"
+#include "linkage/model.h"
 
 namespace linkage::test {
 

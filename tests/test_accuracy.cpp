@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "io/model_file.h"
-#include "kinematics.h"
+#include "linkage/io/model_file.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 #include "reference/four_bar.h"
 #include "reference/slider_crank.h"

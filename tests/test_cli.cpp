@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "cli_harness.h"
-#include "io/model_file.h"
-#include "io/numbers.h"
-#include "kinematics.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/numbers.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 
 namespace linkage {

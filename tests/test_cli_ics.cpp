@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "cli_harness.h"
-#include "instant_centres.h"
-#include "io/model_file.h"
-#include "io/numbers.h"
-#include "kinematics.h"
+#include "linkage/instant_centres.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/numbers.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 
 namespace linkage {

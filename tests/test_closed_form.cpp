@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "io/model_file.h"
-#include "kinematics.h"
+#include "linkage/io/model_file.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 
 namespace linkage {

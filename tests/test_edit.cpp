@@ -3,7 +3,7 @@
 // drawing afresh and turning the crank to the same angle.
 #include <gtest/gtest.h>
 
-#include "kinematics.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 
 namespace linkage {
@@ -14,7 +14,7 @@ void expectSameAsFresh(const Kinematics& k, const Mechanism& m, double deg, cons
   Kinematics fresh;
   ASSERT_TRUE(fresh.load(m).ok()) << what;
   ASSERT_TRUE(fresh.moveTo(deg).ok()) << what;
-  const double L = fresh.system().size, w = fresh.omega();
+  const double L = fresh.size(), w = fresh.omega();
   for (const Point& p : m.points) {
     EXPECT_LT((k.position(p.id) - fresh.position(p.id)).norm(), 1e-10 * L) << what;
     EXPECT_LT((k.velocity(p.id) - fresh.velocity(p.id)).norm(), 1e-9 * L * w) << what;

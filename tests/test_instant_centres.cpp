@@ -9,14 +9,14 @@
 #include <set>
 #include <string>
 
-#include "instant_centres.h"
-#include "io/model_file.h"
-#include "kinematics.h"
+#include "linkage/instant_centres.h"
+#include "linkage/io/model_file.h"
+#include "linkage/kinematics.h"
+#include "linkage/velocity_chain.h"
 #include "mechanisms.h"
 #include "reference/four_bar.h"
 #include "reference/slider_crank.h"
 #include "reference/wanzer.h"
-#include "velocity_chain.h"
 
 namespace linkage {
 namespace {
@@ -76,7 +76,7 @@ Vec3 velocityCentre(const Kinematics& k, BodyId a, BodyId b) {
   const auto [va, wa] = motion(a, x);
   const auto [vb, wb] = motion(b, x);
   const Vec2 v = vb - va;
-  const double w = wb - wa, L = k.system().size;
+  const double w = wb - wa, L = k.size();
   const double scale = std::max(v.norm(), std::abs(w) * L);
   if (scale <= 1e-12 * L * k.omega()) return Vec3::Zero();
   if (std::abs(w) * L <= 1e-11 * v.norm()) return atInfinity(-v.y(), v.x());
@@ -122,7 +122,7 @@ void expectAllAgreeWithVelocities(const Kinematics& k, const InstantCentres& ics
       EXPECT_FALSE(c.velocityDetermined) << name(c.i, c.j, ics.crankDeg);
       continue;
     }
-    expectSame(c.h, v, k.system().size, name(c.i, c.j, ics.crankDeg));
+    expectSame(c.h, v, k.size(), name(c.i, c.j, ics.crankDeg));
   }
 }
 
@@ -167,7 +167,7 @@ TEST(InstantCentres, FourBarAgainstClosedFormLineIntersections) {
   Kinematics k;
   ASSERT_TRUE(k.load(example("four-bar-crank-rocker")).ok());
   const auto p = linkref::four_bar_crank_rocker_example<Q>();
-  const double L = k.system().size;
+  const double L = k.size();
   InstantCentreSolver solver;
   ASSERT_TRUE(solver.prepare(k).ok());
   for (int deg = 0; deg <= 720; deg += 3) {
@@ -192,7 +192,7 @@ TEST(InstantCentres, FourBarCrankAndCouplerInLine) {
   Kinematics k;
   ASSERT_TRUE(k.load(example("four-bar-crank-rocker")).ok());
   const auto p = linkref::four_bar_crank_rocker_example<Q>();
-  const double L = k.system().size;
+  const double L = k.size();
   for (double reach : {90.0, 50.0}) {  // |O2 B| = r2 + r3 extended, r3 - r2 folded
     // B on the circles about O2 (reach) and O4 (50), above the ground line (open circuit).
     const Q x = (Q(reach * reach) - Q(2500) + Q(3600)) / Q(120);
@@ -245,7 +245,7 @@ TEST(InstantCentres, SliderCrankBlockOrPinInSlotAgainstClosedForms) {
     p.omega = linkref::rpm_to_rad_s(Q(1500));
     Kinematics k;
     ASSERT_TRUE(k.load(sc.m).ok());
-    const double L = k.system().size;
+    const double L = k.size();
     InstantCentreSolver solver;
     ASSERT_TRUE(solver.prepare(k).ok());
     // 1 ground, 2 crank, 3 rod, 4 block (none with the rod's end in the slot).
@@ -261,8 +261,8 @@ TEST(InstantCentres, SliderCrankBlockOrPinInSlotAgainstClosedForms) {
         // Kennedy used the pin-in-slot's own line (the normal through B) with line O-A.
         const InstantCentre& c = *ics.find(1, 3);
         EXPECT_EQ(c.status, CentreStatus::Kennedy);
-        const int pis = static_cast<int>(sc.m.joints.size()) - 1;  // the pin-in-slot
-        ASSERT_EQ(sc.m.joints[pis].type, JointType::PinInSlot);
+        const JointId pis = sc.m.joints.back().id;  // the pin-in-slot
+        ASSERT_EQ(sc.m.joints.back().type, JointType::PinInSlot);
         const bool usesJoint = c.lines[0].joint == pis || c.lines[1].joint == pis;
         EXPECT_TRUE(usesJoint && (c.lines[0].k == 2 || c.lines[1].k == 2));
       } else {
@@ -287,7 +287,7 @@ TEST(InstantCentres, SliderAtRestAtDeadCentre) {
   EXPECT_FALSE(c.velocityDetermined);
   EXPECT_FALSE(c.checked);
   EXPECT_TRUE(ics.disagreements.empty());
-  expectSame(ics.find(2, 4)->h, finite(0, 0), k.system().size, "IC(2,4)");
+  expectSame(ics.find(2, 4)->h, finite(0, 0), k.size(), "IC(2,4)");
 }
 
 // The Wanzer needle bar, both inversions: all 15 centres against the solver's velocities, and
@@ -300,7 +300,7 @@ TEST(InstantCentres, WanzerBothInversionsAllFifteen) {
     Kinematics k;
     ASSERT_TRUE(k.load(example(one ? "wanzer-inversion-1" : "wanzer-inversion-2")).ok());
     linkref::Wanzer<Q> ref(linkref::wanzer_homework_params<Q>(inv));
-    const double L = k.system().size;
+    const double L = k.size();
     const Q w2 = -linkref::rpm_to_rad_s(Q(240));
     InstantCentreSolver solver;
     ASSERT_TRUE(solver.prepare(k).ok());
@@ -415,7 +415,7 @@ TEST(InstantCentres, WattSixBarPositionKennedyCannotFix) {
                w6 = w4 * (F.x() - O4.x()) / (F.x() - O6.x());
   const double x26 = (O2.x() - w6 * O6.x()) / (1 - w6);
   EXPECT_DOUBLE_EQ(x26, -250);
-  expectSame(c26.h, finite(x26, 0), k.system().size, "IC(2,6)");
+  expectSame(c26.h, finite(x26, 0), k.size(), "IC(2,6)");
   EXPECT_NEAR(k.bodyOmega(output) / k.bodyOmega(crank), w6, 1e-12);
   const InstantCentre& c35 = *ics.find(3, 5);
   EXPECT_EQ(c35.status, CentreStatus::Velocity);
@@ -450,7 +450,7 @@ TEST(InstantCentres, BodyRigidWithAnotherAndDuplicateJoint) {
   EXPECT_FALSE(rigid.determined);
   EXPECT_EQ(ics.find(2, 3)->status, CentreStatus::Primary);
   EXPECT_TRUE(ics.find(2, 3)->determined);
-  expectSame(ics.find(1, 5)->h, finite(0, 0), k.system().size, "IC(1,5)");
+  expectSame(ics.find(1, 5)->h, finite(0, 0), k.size(), "IC(1,5)");
   expectAllAgreeWithVelocities(k, ics);
 }
 

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "io/model_file.h"
-#include "kinematics.h"
+#include "linkage/io/model_file.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 
 namespace linkage {
@@ -20,7 +20,7 @@ void expectSameWithoutAccelerations(const Mechanism& m, bool closedForm, const s
   ASSERT_TRUE(a.load(m).ok()) << what;
   ASSERT_TRUE(b.load(m).ok()) << what;
   ASSERT_EQ(a.closedForm(), b.closedForm());
-  const double L = a.system().size, w = a.omega();
+  const double L = a.size(), w = a.omega();
   for (double deg = 0; deg <= 720; deg += 7) {
     ASSERT_TRUE(a.moveTo(deg).ok()) << what << " at " << deg;
     ASSERT_TRUE(b.moveTo(deg).ok()) << what << " at " << deg;

@@ -18,9 +18,9 @@
 #include <locale>
 #include <sstream>
 
-#include "io/atomic_file.h"
-#include "io/model_file.h"
-#include "io/numbers.h"
+#include "linkage/io/atomic_file.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/numbers.h"
 
 namespace linkage {
 namespace {

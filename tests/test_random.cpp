@@ -8,8 +8,8 @@
 #include <random>
 #include <sstream>
 
-#include "io/model_file.h"
-#include "kinematics.h"
+#include "linkage/io/model_file.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 
 namespace linkage {

@@ -7,11 +7,13 @@
 #include <climits>
 #include <random>
 
-#include "dense_lu.h"
-#include "independent_rows.h"
-#include "kinematics.h"
+#include "analysis/independent_rows.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
-#include "sparse_lu.h"
+#include "solve/body_view.h"
+#include "solve/dense_lu.h"
+#include "solve/kinematics_state.h"
+#include "solve/sparse_lu.h"
 
 namespace linkage {
 namespace {
@@ -174,7 +176,7 @@ TEST(SparseSolve, DenseAndSparseGiveTheSameStructureAndMotion) {
   ASSERT_TRUE(sparse.load(m).ok());
   ASSERT_FALSE(dense.sparseSolve());
   ASSERT_TRUE(sparse.sparseSolve());
-  EXPECT_EQ(sparse.structure().activeRows, dense.structure().activeRows);
+  EXPECT_EQ(internal::structure(sparse).activeRows, internal::structure(dense).activeRows);
   ASSERT_TRUE(sparse.moveTo(100).ok());
   Kinematics copy = sparse;  // Eigen's factors cannot be copied: the copy analyses again
   for (double a = 100; a <= 250; a += 50) {
@@ -249,7 +251,7 @@ TEST(SparseSolve, CrossingTheChangePointIsRefusedAsByTheDenseSolve) {
   EXPECT_NEAR(*s.lastReachedDeg, *d.lastReachedDeg, 1e-5);
   EXPECT_GT(*s.lastReachedDeg, changeDeg);
   EXPECT_NEAR(*s.lastReachedDeg, changeDeg, 1e-5);
-  const int coupler0 = sparse.system().bodyIndex(m.bodyNamed("coupler0")->id);
+  const int coupler0 = internal::system(sparse).bodyIndex(m.bodyNamed("coupler0")->id);
   EXPECT_NEAR(sparse.q()[3 * coupler0 + 2], 0, 1e-6);  // still the parallelogram
 }
 
@@ -344,7 +346,7 @@ TEST(SparseAssembly, LargeDrawingsAssembleOrFailAsWithTheDenseSolve) {
   Kinematics dense(options(false, false)), sparse(options(false, true));
   ASSERT_TRUE(dense.load(hand).ok());
   ASSERT_TRUE(sparse.load(hand).ok());
-  EXPECT_TRUE(sparse.assembly().moved(sparse.system()));
+  EXPECT_TRUE(sparse.assembly().moved);
   EXPECT_EQ(sparse.notes(), dense.notes());
   EXPECT_LT((sparse.q() - dense.q()).cwiseAbs().maxCoeff(), 1e-9);
   const PointId rB = *hand.findPoint("rocker7.B"), cB = *hand.findPoint("coupler7.B");

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "io/model_file.h"
-#include "kinematics.h"
+#include "linkage/io/model_file.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 #include "reference/four_bar.h"
 #include "reference/slider_crank.h"

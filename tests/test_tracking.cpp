@@ -4,7 +4,7 @@
 #include <cmath>
 #include <optional>
 
-#include "kinematics.h"
+#include "linkage/kinematics.h"
 #include "mechanisms.h"
 
 namespace linkage {

@@ -13,7 +13,7 @@
 #include <unordered_set>
 
 #include "io/json_tree.h"
-#include "io/model_file.h"
+#include "linkage/io/model_file.h"
 
 namespace linkage {
 

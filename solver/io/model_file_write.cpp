@@ -5,7 +5,7 @@
 #include <unordered_map>
 
 #include "io/json_tree.h"
-#include "io/model_file.h"
+#include "linkage/io/model_file.h"
 
 namespace linkage {
 

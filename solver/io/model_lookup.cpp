@@ -1,4 +1,4 @@
-#include "model_lookup.h"
+#include "linkage/io/model_lookup.h"
 
 #include <algorithm>
 #include <cstdlib>

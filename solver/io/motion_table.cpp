@@ -1,8 +1,8 @@
-#include "motion_table.h"
+#include "linkage/io/motion_table.h"
 
 #include <cmath>
 
-#include "io/numbers.h"
+#include "linkage/io/numbers.h"
 
 namespace linkage {
 

@@ -1,4 +1,4 @@
-#include "io/numbers.h"
+#include "linkage/io/numbers.h"
 
 #include <algorithm>
 #include <cassert>

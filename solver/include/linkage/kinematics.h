@@ -1,0 +1,184 @@
+// The kinematic model of one mechanism at one crank angle, and the way to move it: the API the
+// command line and the editor drive. It owns its state (no global state); every failure comes
+// back as a Status naming the joint, body and crank angle, and a failed load or edit leaves the
+// last good state as it was.
+//
+// Moving to a crank angle tracks the motion continuously from the current one, in steps of at
+// most `maxStepDeg`: a predictor (second-order Taylor from the last regular position) and Newton
+// on the independent equations. A step is refused, and cut to a quarter, when Newton does not
+// contract from the predictor, when its first correction is far (another branch), when the sign
+// of det J changes (the path crossed a singular position, where the other branch can be picked
+// up), or when the velocities at its end do not follow from those at its start (a change point
+// crossed with det J of the same sign). Refused down to `minStepDeg`, the reason is reported: a
+// limit position (the mechanism locks), a singular crossing, or a position solve that fails.
+//
+// Ids: every query takes the ids of the Mechanism that was loaded (or a copy of it). An id the
+// mechanism does not hold, or one from another mechanism, is refused: queries answer NaN and
+// contains() false, commands return BadModel. Nothing is undefined.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "linkage/geometry.h"
+#include "linkage/model.h"
+#include "linkage/options.h"
+#include "linkage/status.h"
+
+namespace linkage {
+
+struct KinematicsState;
+class Kinematics;
+namespace internal {
+const KinematicsState& state(const Kinematics& k);
+}
+
+// What the structure analysis found (Gruebler's count against the rank of the joint equations).
+struct StructureReport {
+  int coordinates = 0;     // 3 per moving body
+  int jointEquations = 0;  // scalar equations of the joints
+  int gruebler = 0;        // coordinates - joint equations (Gruebler-Kutzbach mobility)
+  int rank = 0;            // rank of the joint equations
+  int mobility = 0;        // coordinates - rank: the real number of degrees of freedom
+  bool driverMoves = false;
+  int freeAfterDriver = 0;               // freedoms the driver leaves (held where drawn)
+  std::vector<JointId> redundantJoints;  // file order; the later of two that say the same thing
+  std::vector<BodyId> freeBodies;        // bodies that can move with the crank held
+};
+
+// How far the drawing had to move to close.
+struct AssemblyReport {
+  double maxMove = 0;  // mm: largest displacement of any point or slot end of a body
+  BodyId body;         // the body that moved most
+  int iterations = 0;
+  bool moved = false;  // by more than rounding (1e-9 of the mechanism's size)
+};
+
+// Something a user should know that is not a failure.
+struct Note {
+  // CrankMoved: an edit that the crank could not follow to the angle it was at (it stopped at
+  // the last angle it reached).
+  enum class Kind { AssemblyMoved, RedundantJoints, FreedomsHeld, CrankMoved };
+  Kind kind = Kind::AssemblyMoved;
+  std::string text;  // one sentence, for people
+  std::vector<JointId> joints;
+  std::vector<BodyId> bodies;
+  bool operator==(const Note&) const = default;
+};
+
+class Kinematics {
+ public:
+  explicit Kinematics(KinematicsOptions opt = {});
+  ~Kinematics();
+  Kinematics(const Kinematics& other);
+  Kinematics& operator=(const Kinematics& other);
+  Kinematics(Kinematics&&);
+  Kinematics& operator=(Kinematics&&);
+
+  // Compiles, analyses and assembles the mechanism, then moves to crank angle 0 (the drawing
+  // turned by the driver's start offset). On failure the previous state, if there was one, is
+  // kept whole: valid(), mechanism() and every query answer as before the call.
+  Status load(const Mechanism& m);
+
+  // Replaces the mechanism by an edited version of it and re-solves at the current crank angle,
+  // starting from the current pose of every body that is still there (matched by id).
+  // An edit of dimensions only (points or slots moved; see sameTopology) on the closed-form path
+  // re-solves only the groups whose geometry changed and those that depend on them, on the
+  // same assembly branches; other edits, or one that a group cannot follow, are solved whole.
+  // On failure the previous state is kept, as for load().
+  Status edit(const Mechanism& m);
+  // Groups the last edit solved again, or -1 when it was solved whole.
+  int lastEditGroups() const;
+
+  // Tracks the motion to the given crank angle (degrees, from the start, in the driving
+  // direction). On failure the state stays at the last position reached.
+  Status moveTo(double crankDeg);
+
+  bool valid() const;
+  // Changes with every successful load or edit (unique across all Kinematics objects): what a
+  // derived object (InstantCentreSolver) records, to refuse working on a mechanism it has not
+  // seen.
+  std::uint64_t revision() const;
+  double crankDeg() const;
+  double rpm() const;
+  void setRpm(double rpm);
+  // Switches accelerations on or off (see KinematicsOptions); switched on, they are computed at
+  // once for the current position.
+  void setAccelerations(bool on);
+  bool accelerations() const;
+  double omega() const;  // rad/s of the driver
+
+  const Mechanism& mechanism() const;
+  StructureReport structure() const;
+  const AssemblyReport& assembly() const;
+  // Things a user should know that are not failures (assembly moves, idle freedoms held).
+  const std::vector<Note>& notes() const;
+  // L: the diagonal of the drawing's bounding box, the length scale of every tolerance (mm).
+  double size() const;
+
+  // Whether the loaded mechanism holds this id.
+  bool contains(BodyId id) const;
+  bool contains(PointId id) const;
+  bool contains(SlotId id) const;
+  bool contains(JointId id) const;
+
+  // False at a singular position, where positions are known but velocities are not.
+  bool derivativesValid() const;
+
+  // mm, mm/s, mm/s^2 at the driver's speed. Where derivativesValid() is false (moveTo returned
+  // Singular) velocities and accelerations are not determined and come back as NaN; so does
+  // everything asked of an id the mechanism does not hold.
+  Vec2 position(PointId p) const;
+  // All three at once (one lookup, one rotation of the point): what a motion table or a plot
+  // of a point needs at each angle.
+  struct PointMotion {
+    Vec2 position, velocity, acceleration;
+  };
+  PointMotion motion(PointId p) const;
+  Vec2 velocity(PointId p) const;
+  Vec2 acceleration(PointId p) const;
+  // Body angle (rad, relative to the drawing, whole turns counted), angular velocity and
+  // acceleration. The ground is at rest; an unknown id gives NaN.
+  double bodyAngle(BodyId b) const;
+  double bodyOmega(BodyId b) const;
+  double bodyAlpha(BodyId b) const;
+
+  // Each body's rigid motion from the drawing to the current pose (identity for the ground;
+  // NaN for an unknown id): what a canvas applies to a body drawn in sketch coordinates.
+  Transform bodyTransform(BodyId b) const;
+  // Sketch coordinates of a body to the world at the current pose, and back.
+  Vec2 toWorld(BodyId b, const Vec2& sketch) const;
+  Vec2 toSketch(BodyId b, const Vec2& world) const;
+  // A slot's two ends where they are now.
+  struct Segment {
+    Vec2 p0, p1;
+  };
+  Segment slotEnds(SlotId s) const;
+
+  // BadModel or Underconstrained naming the first point whose motion the driver does not fix.
+  Status checkDetermined(const std::vector<PointId>& points) const;
+
+  // True when the motion is computed group by group in closed form.
+  bool closedForm() const;
+  // True when the general solve factors J as a sparse matrix.
+  bool sparseSolve() const;
+
+  // Raw state: q (x, y, theta of each moving body's frame, at the centroid of its drawn
+  // geometry) and its derivatives with respect to the driver angle (rad).
+  const Eigen::VectorXd& q() const;
+  const Eigen::VectorXd& dq() const;
+  const Eigen::VectorXd& ddq() const;
+
+ private:
+  friend const KinematicsState& internal::state(const Kinematics& k);
+  std::unique_ptr<KinematicsState> d_;
+};
+
+// The structure of a mechanism as it is drawn, without assembling it: what `info` reports even
+// for a mechanism that cannot be loaded. `status` is BadModel when it does not compile.
+StructureReport analyzeDrawing(const Mechanism& m, Status& status);
+
+}  // namespace linkage

@@ -1,0 +1,186 @@
+// The mechanism document: what a user draws and what a .linkage.json file holds.
+//
+// Entities live in flat vectors and refer to each other by stable ids, never by index or pointer,
+// so an editor can keep ids across edits (ids are never reused within one Mechanism). Geometry is
+// in global sketch coordinates of one drawn configuration, in millimetres; a body is rigid, its
+// points and slots as drawn are its geometry.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linkage/geometry.h"
+
+namespace linkage {
+
+// An entity's id: a number never reused within one mechanism, and the mechanism that made it
+// (copies of a Mechanism share it), so that an id from another mechanism is refused rather than
+// taken for one of this mechanism's own.
+template <class Tag>
+struct Id {
+  std::uint32_t value = 0;  // 0 is "none"
+  std::uint32_t owner = 0;
+  explicit operator bool() const { return value != 0; }
+  friend bool operator==(Id a, Id b) { return a.value == b.value && a.owner == b.owner; }
+  friend bool operator!=(Id a, Id b) { return !(a == b); }
+  friend bool operator<(Id a, Id b) {
+    return a.value != b.value ? a.value < b.value : a.owner < b.owner;
+  }
+};
+using BodyId = Id<struct BodyTag>;
+using PointId = Id<struct PointTag>;
+using SlotId = Id<struct SlotTag>;
+using JointId = Id<struct JointTag>;
+
+// Fields of a file object that this program does not know are kept, verbatim, as the text of a
+// JSON object ("" when there were none), and written back on save.
+using Extras = std::string;
+
+struct Body {
+  BodyId id;
+  std::string name;
+  bool ground = false;
+  std::optional<int> number;  // textbook number for instant centres (ground is 1)
+  Extras extras;
+};
+
+struct Point {
+  PointId id;
+  BodyId body;
+  std::string name;  // unique within its body
+  Vec2 pos;
+};
+
+// A straight slot: the line through p0 and p1 (which also bound its drawn length).
+struct Slot {
+  SlotId id;
+  BodyId body;
+  std::string name;  // unique within its body
+  Vec2 p0, p1;
+};
+
+enum class JointType { Pin, Slider, PinInSlot };
+
+struct Joint {
+  JointId id;
+  JointType type = JointType::Pin;
+  PointId a;    // all types
+  PointId b;    // pin only
+  SlotId slot;  // slider and pin-in-slot only
+  Extras extras;
+};
+
+enum class Direction { Cw, Ccw };
+
+struct Driver {
+  JointId joint;  // a pin; the body of its b point turns relative to the body of its a point
+  double rpm = 60;
+  Direction direction = Direction::Ccw;
+  double startDeg = 0;  // start offset from the sketch, counted in the driving direction
+  Extras extras;
+};
+
+// What a removal took out of a mechanism, with the place of each entity in its vector, so that
+// restore() puts it back exactly (the same ids, the same order, the same file).
+struct Removal {
+  template <class T>
+  struct At {
+    size_t index = 0;
+    T value;
+  };
+  std::vector<At<Body>> bodies;  // ascending indices, as they were before the removal
+  std::vector<At<Point>> points;
+  std::vector<At<Slot>> slots;
+  std::vector<At<Joint>> joints;
+  std::vector<At<PointId>> outputs;
+  std::optional<Driver> driver;  // set when the driver's joint was removed
+  bool empty() const { return bodies.empty() && points.empty() && slots.empty() && joints.empty(); }
+};
+
+struct Mechanism {
+  std::string name;
+  std::vector<Body> bodies;  // file order
+  std::vector<Point>
+      points;  // grouped by body in no particular order; order within a body = file order
+  std::vector<Slot> slots;
+  std::vector<Joint> joints;  // file order: the driver's "joint" index counts in it
+  std::optional<Driver> driver;
+  std::vector<PointId> outputs;
+  Extras extras;         // unknown top-level fields
+  Extras unitsExtras;    // unknown fields of "units"
+  Extras outputsExtras;  // unknown fields of "outputs"
+
+  Mechanism();
+
+  BodyId addBody(std::string name, bool ground = false);
+  PointId addPoint(BodyId body, std::string name, Vec2 pos);
+  SlotId addSlot(BodyId body, std::string name, Vec2 p0, Vec2 p1);
+  JointId addPin(PointId a, PointId b);
+  JointId addSlider(PointId a, SlotId slot);
+  JointId addPinInSlot(PointId a, SlotId slot);
+
+  // Removal cascades to what cannot stand without the entity: a joint takes the driver along if
+  // it is the driver's; a point its joints and its place among the outputs; a slot its joints;
+  // a body its points and slots (and so their joints). Ids this mechanism does not hold are
+  // ignored. The Removal undoes it exactly with restore(), as long as nothing else changed in
+  // between (what an undo stack guarantees).
+  Removal remove(const std::vector<BodyId>& bodies, const std::vector<PointId>& points = {},
+                 const std::vector<SlotId>& slots = {}, const std::vector<JointId>& joints = {});
+  Removal remove(BodyId id) { return remove({id}); }
+  Removal remove(PointId id) { return remove({}, {id}); }
+  Removal remove(SlotId id) { return remove({}, {}, {id}); }
+  Removal remove(JointId id) { return remove({}, {}, {}, {id}); }
+  void restore(const Removal& r);
+
+  // Lookups return nullptr when the id is unknown (or another mechanism's).
+  const Body* body(BodyId id) const;
+  const Point* point(PointId id) const;
+  const Slot* slot(SlotId id) const;
+  const Joint* joint(JointId id) const;
+  Body* body(BodyId id);
+  Point* point(PointId id);
+  Slot* slot(SlotId id);
+  Joint* joint(JointId id);
+  bool contains(BodyId id) const { return body(id) != nullptr; }
+  bool contains(PointId id) const { return point(id) != nullptr; }
+  bool contains(SlotId id) const { return slot(id) != nullptr; }
+  bool contains(JointId id) const { return joint(id) != nullptr; }
+
+  const Body* bodyNamed(const std::string& name) const;
+  const Point* pointNamed(BodyId body, const std::string& name) const;
+  const Slot* slotNamed(BodyId body, const std::string& name) const;
+  const Body* ground() const;  // nullptr when there is none
+
+  // "body.point" as the file and the command line spell it.
+  std::string pointLabel(PointId id) const;
+  std::string slotLabel(SlotId id) const;
+  // A short description for messages, e.g. `joints[2] (slider slider4.E in disk.B)`.
+  std::string jointLabel(JointId id) const;
+  int jointIndex(JointId id) const;  // -1 when unknown
+
+  // Resolves "body.point"; nullopt when either name is unknown.
+  std::optional<PointId> findPoint(const std::string& dotted) const;
+
+  // The tag every id made here carries (copies share it).
+  std::uint32_t owner() const { return owner_; }
+
+ private:
+  template <class IdT>
+  IdT make() {
+    return IdT{nextId_++, owner_};
+  }
+  std::uint32_t owner_;
+  std::uint32_t nextId_ = 1;
+};
+
+const char* toString(JointType t);
+
+// Whether b is a with other dimensions only: the same bodies, points, slots, joints and driver
+// (ids, kinds, connections, start angle and direction), with points or slots moved. The bodies
+// whose shape changed go to `reshaped`. Such an edit can be re-solved group by group from the
+// current pose; anything else is a new mechanism.
+bool sameTopology(const Mechanism& a, const Mechanism& b, std::vector<BodyId>& reshaped);
+
+}  // namespace linkage

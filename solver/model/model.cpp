@@ -1,0 +1,274 @@
+#include "linkage/model.h"
+
+#include <algorithm>
+#include <atomic>
+
+namespace linkage {
+
+namespace {
+
+std::uint32_t newOwner() {
+  static std::atomic<std::uint32_t> next{1};
+  return next++;
+}
+
+template <class T, class IdT>
+bool listed(const std::vector<IdT>& ids, const T& id) {
+  return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+// Moves the elements `gone` says to `out`, with their indices, keeping the others' order.
+template <class T, class Pred>
+void take(std::vector<T>& v, Pred gone, std::vector<Removal::At<T>>& out) {
+  std::vector<T> kept;
+  kept.reserve(v.size());
+  for (size_t i = 0; i < v.size(); ++i) {
+    if (gone(v[i]))
+      out.push_back({i, std::move(v[i])});
+    else
+      kept.push_back(std::move(v[i]));
+  }
+  v = std::move(kept);
+}
+
+template <class T>
+void putBack(std::vector<T>& v, const std::vector<Removal::At<T>>& in) {
+  for (const auto& e : in) v.insert(v.begin() + static_cast<std::ptrdiff_t>(e.index), e.value);
+}
+template <class T, class IdT>
+T* findById(std::vector<T>& v, IdT id) {
+  auto it = std::find_if(v.begin(), v.end(), [&](const T& e) { return e.id == id; });
+  return it == v.end() ? nullptr : &*it;
+}
+}  // namespace
+
+Mechanism::Mechanism() : owner_(newOwner()) {}
+
+BodyId Mechanism::addBody(std::string name, bool isGround) {
+  Body b;
+  b.id = make<BodyId>();
+  b.name = std::move(name);
+  b.ground = isGround;
+  bodies.push_back(std::move(b));
+  return bodies.back().id;
+}
+
+PointId Mechanism::addPoint(BodyId bodyId, std::string name, Vec2 pos) {
+  points.push_back(Point{make<PointId>(), bodyId, std::move(name), pos});
+  return points.back().id;
+}
+
+SlotId Mechanism::addSlot(BodyId bodyId, std::string name, Vec2 p0, Vec2 p1) {
+  slots.push_back(Slot{make<SlotId>(), bodyId, std::move(name), p0, p1});
+  return slots.back().id;
+}
+
+JointId Mechanism::addPin(PointId a, PointId b) {
+  Joint j;
+  j.id = make<JointId>();
+  j.type = JointType::Pin;
+  j.a = a;
+  j.b = b;
+  joints.push_back(std::move(j));
+  return joints.back().id;
+}
+
+JointId Mechanism::addSlider(PointId a, SlotId s) {
+  Joint j;
+  j.id = make<JointId>();
+  j.type = JointType::Slider;
+  j.a = a;
+  j.slot = s;
+  joints.push_back(std::move(j));
+  return joints.back().id;
+}
+
+JointId Mechanism::addPinInSlot(PointId a, SlotId s) {
+  JointId id = addSlider(a, s);
+  joints.back().type = JointType::PinInSlot;
+  return id;
+}
+
+Removal Mechanism::remove(const std::vector<BodyId>& bodyIds, const std::vector<PointId>& pointIds,
+                          const std::vector<SlotId>& slotIds,
+                          const std::vector<JointId>& jointIds) {
+  Removal r;
+  auto pointGone = [&](const Point& p) {
+    return listed(pointIds, p.id) || listed(bodyIds, p.body);
+  };
+  auto slotGone = [&](const Slot& s) { return listed(slotIds, s.id) || listed(bodyIds, s.body); };
+  std::vector<PointId> goneP;
+  std::vector<SlotId> goneS;
+  for (const Point& p : points)
+    if (pointGone(p)) goneP.push_back(p.id);
+  for (const Slot& s : slots)
+    if (slotGone(s)) goneS.push_back(s.id);
+  take(
+      joints,
+      [&](const Joint& j) {
+        return listed(jointIds, j.id) || listed(goneP, j.a) || listed(goneP, j.b) ||
+               listed(goneS, j.slot);
+      },
+      r.joints);
+  take(points, pointGone, r.points);
+  take(slots, slotGone, r.slots);
+  take(
+      bodies, [&](const Body& b) { return listed(bodyIds, b.id); }, r.bodies);
+  take(
+      outputs, [&](const PointId& p) { return listed(goneP, p); }, r.outputs);
+  const bool driverGone =
+      driver && std::any_of(r.joints.begin(), r.joints.end(),
+                            [&](const auto& j) { return j.value.id == driver->joint; });
+  if (driverGone) {
+    r.driver = driver;
+    driver.reset();
+  }
+  return r;
+}
+
+void Mechanism::restore(const Removal& r) {
+  putBack(bodies, r.bodies);
+  putBack(points, r.points);
+  putBack(slots, r.slots);
+  putBack(joints, r.joints);
+  putBack(outputs, r.outputs);
+  if (r.driver) driver = r.driver;
+}
+
+const Body* Mechanism::body(BodyId id) const {
+  return const_cast<Mechanism*>(this)->body(id);
+}
+const Point* Mechanism::point(PointId id) const {
+  return const_cast<Mechanism*>(this)->point(id);
+}
+const Slot* Mechanism::slot(SlotId id) const {
+  return const_cast<Mechanism*>(this)->slot(id);
+}
+const Joint* Mechanism::joint(JointId id) const {
+  return const_cast<Mechanism*>(this)->joint(id);
+}
+Body* Mechanism::body(BodyId id) {
+  return findById(bodies, id);
+}
+Point* Mechanism::point(PointId id) {
+  return findById(points, id);
+}
+Slot* Mechanism::slot(SlotId id) {
+  return findById(slots, id);
+}
+Joint* Mechanism::joint(JointId id) {
+  return findById(joints, id);
+}
+
+const Body* Mechanism::bodyNamed(const std::string& n) const {
+  for (const Body& b : bodies)
+    if (b.name == n) return &b;
+  return nullptr;
+}
+
+const Point* Mechanism::pointNamed(BodyId b, const std::string& n) const {
+  for (const Point& p : points)
+    if (p.body == b && p.name == n) return &p;
+  return nullptr;
+}
+
+const Slot* Mechanism::slotNamed(BodyId b, const std::string& n) const {
+  for (const Slot& s : slots)
+    if (s.body == b && s.name == n) return &s;
+  return nullptr;
+}
+
+const Body* Mechanism::ground() const {
+  for (const Body& b : bodies)
+    if (b.ground) return &b;
+  return nullptr;
+}
+
+std::string Mechanism::pointLabel(PointId id) const {
+  const Point* p = point(id);
+  if (!p) return "?";
+  const Body* b = body(p->body);
+  return (b ? b->name : std::string("?")) + "." + p->name;
+}
+
+std::string Mechanism::slotLabel(SlotId id) const {
+  const Slot* s = slot(id);
+  if (!s) return "?";
+  const Body* b = body(s->body);
+  return (b ? b->name : std::string("?")) + "." + s->name;
+}
+
+int Mechanism::jointIndex(JointId id) const {
+  for (size_t i = 0; i < joints.size(); ++i)
+    if (joints[i].id == id) return static_cast<int>(i);
+  return -1;
+}
+
+std::string Mechanism::jointLabel(JointId id) const {
+  const Joint* j = joint(id);
+  if (!j) return "unknown joint";
+  std::string s = "joints[" + std::to_string(jointIndex(id)) + "] (" + toString(j->type) + " ";
+  if (j->type == JointType::Pin)
+    s += pointLabel(j->a) + " - " + pointLabel(j->b);
+  else
+    s += pointLabel(j->a) + " in " + slotLabel(j->slot);
+  return s + ")";
+}
+
+std::optional<PointId> Mechanism::findPoint(const std::string& dotted) const {
+  // Body names may themselves contain dots; the point name is what follows the last one.
+  size_t dot = dotted.rfind('.');
+  if (dot == std::string::npos) return std::nullopt;
+  const Body* b = bodyNamed(dotted.substr(0, dot));
+  if (!b) return std::nullopt;
+  const Point* p = pointNamed(b->id, dotted.substr(dot + 1));
+  if (!p) return std::nullopt;
+  return p->id;
+}
+
+const char* toString(JointType t) {
+  switch (t) {
+    case JointType::Pin:
+      return "pin";
+    case JointType::Slider:
+      return "slider";
+    case JointType::PinInSlot:
+      return "pin-in-slot";
+  }
+  return "?";
+}
+
+bool sameTopology(const Mechanism& a, const Mechanism& b, std::vector<BodyId>& reshaped) {
+  reshaped.clear();
+  if (a.bodies.size() != b.bodies.size() || a.points.size() != b.points.size() ||
+      a.slots.size() != b.slots.size() || a.joints.size() != b.joints.size() ||
+      a.driver.has_value() != b.driver.has_value())
+    return false;
+  for (size_t i = 0; i < a.bodies.size(); ++i)
+    if (a.bodies[i].id != b.bodies[i].id || a.bodies[i].ground != b.bodies[i].ground) return false;
+  auto reshape = [&](BodyId id) {
+    if (std::find(reshaped.begin(), reshaped.end(), id) == reshaped.end()) reshaped.push_back(id);
+  };
+  for (size_t i = 0; i < a.points.size(); ++i) {
+    const Point &p = a.points[i], &q = b.points[i];
+    if (p.id != q.id || p.body != q.body) return false;
+    if (p.pos != q.pos) reshape(p.body);
+  }
+  for (size_t i = 0; i < a.slots.size(); ++i) {
+    const Slot &p = a.slots[i], &q = b.slots[i];
+    if (p.id != q.id || p.body != q.body) return false;
+    if (p.p0 != q.p0 || p.p1 != q.p1) reshape(p.body);
+  }
+  for (size_t i = 0; i < a.joints.size(); ++i) {
+    const Joint &p = a.joints[i], &q = b.joints[i];
+    if (p.id != q.id || p.type != q.type || p.a != q.a || p.b != q.b || p.slot != q.slot)
+      return false;
+  }
+  if (a.driver &&
+      (a.driver->joint != b.driver->joint || a.driver->direction != b.driver->direction ||
+       a.driver->startDeg != b.driver->startDeg))
+    return false;
+  return true;
+}
+
+}  // namespace linkage

@@ -1,0 +1,91 @@
+// Closed-form kinematics for mechanisms built from a driven crank and dyads (Assur groups of
+// class II), solved one group after another from the ground outwards, as a designer does by
+// hand. The same equations as the general solve, ordered into a block-triangular sequence:
+//
+//   crank  body B pinned to a known body K at the driver:  theta_B = theta_K +- sigma phi,
+//          r_B from the pin.
+//   RRR    bodies B1, B2: B1 pinned to known K1 at P1, B2 to known K2 at P2, B1-B2 pinned at C.
+//          C = intersection of circles (P1, d1) and (P2, d2), on the side the drawing chose.
+//          Velocities: w1 perp(C - P1) - w2 perp(C - P2) = v_P2 - v_P1 (2 x 2), and likewise
+//          for accelerations with the centripetal terms on the right.
+//   RRP    rod B1 pinned to known K1 at P1, block B2 pinned to B1 at C and sliding in a slot of
+//          known K2 (angle of B2 = angle of K2): C = intersection of circle (P1, d1) with the
+//          slot's line shifted by the block's offset; w1 perp(C - P1) - s' dir = V0 - v_P1.
+//   RP     body B1 pinned to known K1 at P1 with a point C in a slot of known K2 (pin-in-slot):
+//          the RRP equations without a block.
+//   core   one body held by three scalar conditions to known bodies, its slider blocks
+//          eliminated (core_group.h): a 3 x 3 Newton, the one group here that iterates.
+// Every group's unknowns follow from known bodies, so no factorisation of the whole system is
+// needed: a step costs a few dozen flops per body. The branch (which of the two
+// intersections) is the drawn one and never changes: where a group cannot close (a negative
+// discriminant) or its 2 x 2 system is singular, the plan reports failure and the general solver
+// takes over and explains it.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "linkage/model.h"
+#include "solve/core_group.h"
+#include "solve/motion.h"
+#include "solve/system.h"
+
+namespace linkage {
+
+class ClosedFormPlan {
+ public:
+  // A plan when the whole mechanism decomposes into these groups (no redundant joints, no held
+  // coordinates), with branches taken from the assembled configuration q; nullopt otherwise.
+  static std::optional<ClosedFormPlan> build(const Mechanism& m, const System& sys,
+                                             const Eigen::VectorXd& q);
+
+  // The motion at driver angle phi (positions, d/dphi and d2/dphi2 of every coordinate) from the
+  // previous one (whole turns are counted from it, branch crossings and core groups predicted
+  // from its rates). False where a group cannot close or is singular; next is then partial and
+  // must be discarded.
+  // With accelerations false, the groups' acceleration solves are left out (NaN instead).
+  bool solve(const System& sys, const Motion& prev, double phi, Motion& next,
+             bool accelerations = true) const;
+
+  // After an edit of dimensions (the same topology, so the same groups in the same order) whose
+  // plan before the edit was `before`: the groups whose geometry changed, and those that
+  // depend on one, are solved again at prev.phi from prev (the pose before the edit, in the
+  // new body frames), on the branches of `before`; every other group keeps its bodies'
+  // motion from prev exactly. Returns the number of groups solved; -1 where the plans differ
+  // in their groups, or a group cannot close or is singular there.
+  int resolveEdited(const System& sys, const ClosedFormPlan& before, const Motion& prev,
+                    Motion& next);
+
+  int groups() const { return static_cast<int>(groups_.size()); }
+
+ private:
+  enum class Kind { Crank, RRR, RRP, RP, Core };
+  struct Group {
+    Kind kind = Kind::Crank;
+    int b1 = -1, b2 = -1;                        // unknown bodies (b2 unused for Crank and RP)
+    int k1 = -1, k2 = -1;                        // known bodies they attach to (-1 ground)
+    Vec2 p1k = Vec2::Zero(), p1 = Vec2::Zero();  // pin to k1: on k1, on b1
+    Vec2 c1 = Vec2::Zero(), c2 = Vec2::Zero();   // the joint C: on b1 (and on b2 for RRR, RRP)
+    Vec2 p2 = Vec2::Zero(), p2k = Vec2::Zero();  // RRR: pin to k2: on b2, on k2
+    Vec2 u = Vec2::Zero(), n = Vec2::Zero(),
+         d = Vec2::Zero();   // RRP, RP: slot point, unit normal and direction on k2
+    Vec2 q2 = Vec2::Zero();  // RRP: the block's point on the slot line
+    Rot rot1, rot2;          // directions of (c1 - p1) and (c2 - p2) on their bodies
+    double d1 = 0, d2 = 0;   // and their lengths
+    double sign = 1;         // Crank: +-sigma; RRR, RRP, RP: the drawn branch
+    int core = -1;           // Core: index into cores_
+  };
+  // Solves one group into next from prev (h radians of crank later, crank rotation `crank`).
+  bool solveGroup(const Group& g, const System& sys, const Motion& prev, double h, const Rot& crank,
+                  Motion& next) const;
+  static bool sameGeometry(const Group& a, const Group& b, const ClosedFormPlan& pa,
+                           const ClosedFormPlan& pb);
+  // The group's unknown bodies, then the known bodies it reads (-1 for ground).
+  void bodiesOf(const Group& g, std::vector<int>& unknown, std::vector<int>& known) const;
+
+  std::vector<Group> groups_;
+  std::vector<CoreGroup> cores_;
+};
+
+}  // namespace linkage

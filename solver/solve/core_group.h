@@ -1,0 +1,47 @@
+// A class-III-like group solved in reduced coordinates: one rigid "core" body held to known
+// bodies by exactly three scalar conditions, each one of
+//   - a pin to a known body (two conditions),
+//   - a point of the core on the line of a known body's slot (pin-in-slot, one condition),
+//   - a slider block pinned to the core and sliding in a known body's slot (one condition).
+// A block keeps its slot body's angle, so its pin point runs on the slot's line shifted by the
+// block's own offset (slot point minus pin point, fixed in the slot body's frame): the block
+// disappears into a pin-in-slot condition and its pose follows from the core afterwards.
+// The Wanzer needle bar is such a group (the triangle held by three blocks): 15 coordinates of
+// the general solve become 3, solved by Newton on a 3 x 3 Jacobian, with the rows evaluated by
+// the same joint functions (joint_pin.h, joint_pin_in_slot.h) as the general solve uses.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "solve/motion.h"
+#include "solve/system.h"
+
+namespace linkage {
+
+struct CoreLink {
+  bool pin = false;       // pin to the known body (2 rows), else the point on its slot line (1 row)
+  int known = -1;         // -1 ground
+  Vec2 s = Vec2::Zero();  // the core's point
+  Vec2 ks = Vec2::Zero();        // pin: the known body's point; line: a point of the (shifted) line
+  Vec2 n = Vec2::Zero();         // line: its unit normal, in the known body's frame
+  int block = -1;                // an eliminated block, or -1
+  Vec2 blockPin = Vec2::Zero();  // the block's pin point, in its frame
+};
+
+struct CoreGroup {
+  int core = -1;
+  std::vector<CoreLink> links;  // three rows in all
+  int detSign = 0;              // of the 3 x 3 Jacobian on the drawn branch
+};
+
+// Solves the core's pose, rates and accelerations (and its blocks') in next, from the known
+// bodies already in next, starting from the core's pose in prev advanced along its rates to
+// next.phi. False when Newton does not settle near the prediction or the group is (near)
+// singular.
+bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion& next);
+
+// Sign of det of the core's 3 x 3 Jacobian at q (0 if singular).
+int coreDetSign(const CoreGroup& g, const Eigen::VectorXd& q);
+
+}  // namespace linkage
