@@ -1,0 +1,128 @@
+#include "document/document.h"
+
+#include <QFileInfo>
+#include <cmath>
+
+#include "linkage/io/model_file.h"
+
+namespace linkage::ui {
+
+namespace {
+
+Mechanism emptyDesign() {
+  Mechanism m;
+  m.name = "untitled";
+  m.addBody("ground", true);
+  return m;
+}
+
+// A design the solver takes or, when it cannot, the reason, with the solver left empty.
+DocumentState solvedFresh(Mechanism m) {
+  DocumentState s;
+  s.status = s.kinematics.load(m);
+  s.design = std::move(m);
+  return s;
+}
+
+}  // namespace
+
+Document::Document(QObject* parent) : QObject(parent) {
+  connect(&undo_, &QUndoStack::cleanChanged, this, &Document::fileStateChanged);
+  clear();
+}
+
+Document::~Document() = default;
+
+void Document::clear() {
+  replace(solvedFresh(emptyDesign()), QString());
+}
+
+bool Document::open(const QString& path, QString* error) {
+  LoadResult r = loadMechanismFile(path.toStdString());
+  if (!r.mechanism) {
+    if (error) *error = QString::fromStdString(r.error);
+    return false;
+  }
+  setContents(std::move(*r.mechanism), path);
+  return true;
+}
+
+void Document::setContents(Mechanism m, const QString& path) {
+  replace(solvedFresh(std::move(m)), path);
+}
+
+void Document::replace(DocumentState s, const QString& path) {
+  state_ = std::move(s);
+  path_ = path;
+  undo_.clear();
+  icFresh_ = false;
+  emit designChanged();
+  emit poseChanged();
+  emit fileStateChanged();
+}
+
+bool Document::save(const QString& path, QString* error) {
+  WriteResult w = saveMechanismFile(state_.design, path.toStdString());
+  if (!w.ok) {
+    if (error) *error = QString::fromStdString(w.error);
+    return false;
+  }
+  path_ = path;
+  undo_.setClean();
+  emit fileStateChanged();
+  return true;
+}
+
+QString Document::displayName() const {
+  return path_.isEmpty() ? QStringLiteral("untitled") : QFileInfo(path_).fileName();
+}
+
+void Document::setDesign(const Mechanism& m) {
+  state_.design = m;
+  state_.status = state_.kinematics.edit(m);
+  icFresh_ = false;
+  emit designChanged();
+  emit poseChanged();
+}
+
+void Document::restore(const DocumentState& s) {
+  const double deg = crankDeg();
+  state_ = s;
+  if (state_.kinematics.valid() && std::isfinite(deg) && state_.kinematics.crankDeg() != deg) {
+    Status moved = state_.kinematics.moveTo(deg);
+    if (state_.status.ok()) state_.status = moved;
+  }
+  icFresh_ = false;
+  emit designChanged();
+  emit poseChanged();
+}
+
+double Document::crankDeg() const {
+  return state_.kinematics.valid() ? state_.kinematics.crankDeg() : 0.0;
+}
+
+Status Document::setCrankDeg(double deg) {
+  if (!state_.kinematics.valid())
+    return Status::failure(StatusCode::BadModel, "the mechanism is not solved");
+  Status s = state_.kinematics.moveTo(deg);
+  icFresh_ = false;
+  emit poseChanged();
+  return s;
+}
+
+void Document::setAccelerationsWanted(bool on) {
+  if (state_.kinematics.accelerations() != on) state_.kinematics.setAccelerations(on);
+}
+
+const InstantCentres& Document::instantCentres() {
+  if (icFresh_) return icSolver_.result();
+  const Kinematics& k = state_.kinematics;
+  if (k.valid() && k.revision() != icRevision_) {
+    icSolver_.prepare(k);
+    icRevision_ = k.revision();
+  }
+  icFresh_ = true;
+  return icSolver_.compute(k);
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,97 @@
+// One open mechanism: the design the user edits, the solver that moves it, the file it came from
+// and the undo stack of its edits. Views (canvas, docks, plots) observe it through its signals
+// and hold ids, never pointers into the solver.
+//
+// The design and the solution are kept apart on purpose: an edit that leaves the mechanism
+// impossible to assemble is still the user's design (kept, saved, undoable), while the solver
+// keeps the last good state and the reason it could not take the new one (solveStatus()).
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+#include <optional>
+
+#include "linkage/instant_centres.h"
+#include "linkage/kinematics.h"
+#include "linkage/model.h"
+
+namespace linkage::ui {
+
+// Everything an undo step puts back: the design, the solver with its pose and assembly branch,
+// and what the last solve said. Restoring it re-solves nothing, so an undo is exact.
+struct DocumentState {
+  Mechanism design;
+  Kinematics kinematics;
+  Status status;
+};
+
+class Document : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit Document(QObject* parent = nullptr);
+  ~Document() override;
+
+  // A new document: a ground body and nothing else, untitled, unmodified.
+  void clear();
+  // Reads a file; on failure returns false with the reader's message (it names the place) and
+  // leaves the document exactly as it was.
+  bool open(const QString& path, QString* error);
+  // Takes a mechanism read elsewhere (an example); `path` may be empty (untitled).
+  void setContents(Mechanism m, const QString& path);
+  // Writes the design atomically, keeping the unknown fields of the file it came from.
+  bool save(const QString& path, QString* error);
+
+  QString filePath() const { return path_; }
+  // The file name without directory, or "untitled".
+  QString displayName() const;
+  bool isModified() const { return !undo_.isClean(); }
+  QUndoStack* undoStack() { return &undo_; }
+
+  // The design as the user made it (what Save writes).
+  const Mechanism& design() const { return state_.design; }
+  // The last good solve; its mechanism() is the design when solved() is true.
+  const Kinematics& kinematics() const { return state_.kinematics; }
+  // Why the design is not the solved one (Ok when it is).
+  const Status& solveStatus() const { return state_.status; }
+  bool solved() const { return state_.status.ok() && state_.kinematics.valid(); }
+
+  // Replaces the design and re-solves it at the current crank angle (the solver's in-place
+  // edit). Used by undo commands; an edit the solver refuses is kept as the design.
+  void setDesign(const Mechanism& m);
+  DocumentState state() const { return state_; }
+  // Puts a state back exactly, then turns it to the crank angle the view was at.
+  void restore(const DocumentState& s);
+
+  // Pose. setCrankDeg tracks the motion continuously from where it is; on failure it stays at
+  // the last angle reached and the status says why.
+  double crankDeg() const;
+  Status setCrankDeg(double deg);
+  // Only what a view shows is computed: accelerations while a view needs them.
+  void setAccelerationsWanted(bool on);
+
+  // Instant centres at the current pose, computed on first request after a change.
+  const InstantCentres& instantCentres();
+
+ Q_SIGNALS:
+  // The design changed (an edit, an undo, a file): items are rebuilt.
+  void designChanged();
+  // The pose changed (crank angle): items move.
+  void poseChanged();
+  // The file path or the modified mark changed.
+  void fileStateChanged();
+
+ private:
+  void replace(DocumentState s, const QString& path);
+
+  DocumentState state_;
+  QString path_;
+  QUndoStack undo_;
+  InstantCentreSolver icSolver_;
+  std::uint64_t icRevision_ = 0;
+  double icCrankDeg_ = NAN;
+  bool icFresh_ = false;
+};
+
+}  // namespace linkage::ui
