@@ -1,0 +1,220 @@
+// The paint list: shapes from the mechanism's topology (which body is a bar, a plate, a block),
+// positions from the kinematics at its pose.
+#include "linkage/drawing.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace linkage {
+
+namespace {
+
+// Andrew's monotone chain; collinear points are dropped, so a row of points gives its two ends.
+std::vector<Vec2> convexHull(std::vector<Vec2> p) {
+  std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
+    return a.x() != b.x() ? a.x() < b.x() : a.y() < b.y();
+  });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return p;
+  std::vector<Vec2> h(2 * p.size());
+  size_t k = 0;
+  auto turnsLeft = [&](const Vec2& a, const Vec2& b, const Vec2& c) {
+    return cross(b - a, c - a) > 0;
+  };
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && !turnsLeft(h[k - 2], h[k - 1], p[i])) --k;
+    h[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && !turnsLeft(h[k - 2], h[k - 1], p[i - 1])) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
+bool slidesIn(const Mechanism& m, const Point& p) {
+  return std::any_of(m.joints.begin(), m.joints.end(),
+                     [&](const Joint& j) { return j.type == JointType::Slider && j.a == p.id; });
+}
+
+Drawing::Body describeBody(const Mechanism& m, const Body& b, int number) {
+  Drawing::Body d;
+  d.id = b.id;
+  d.number = number;
+  d.name = b.name;
+  std::vector<Vec2> geometry;
+  const Point* only = nullptr;
+  int points = 0, slots = 0;
+  for (const Point& p : m.points)
+    if (p.body == b.id) {
+      geometry.push_back(p.pos);
+      only = &p;
+      ++points;
+    }
+  for (const Slot& s : m.slots)
+    if (s.body == b.id) {
+      geometry.push_back(s.p0);
+      geometry.push_back(s.p1);
+      ++slots;
+    }
+  if (b.ground) {
+    d.shape = Drawing::Shape::Ground;
+    for (const Point& p : m.points)
+      if (p.body == b.id) d.outline.push_back(p.pos);
+    return d;
+  }
+  if (points == 1 && slots == 0) {
+    d.shape = slidesIn(m, *only) ? Drawing::Shape::Block : Drawing::Shape::Dot;
+    d.outline = {only->pos};
+    return d;
+  }
+  d.outline = convexHull(geometry);
+  if (d.outline.size() >= 3)
+    d.shape = Drawing::Shape::Plate;
+  else if (d.outline.size() == 2)
+    d.shape = Drawing::Shape::Bar;
+  else
+    d.shape = Drawing::Shape::Dot;  // all its points in one place (or none)
+  return d;
+}
+
+void extend(Drawing& d, const Vec2& p, bool& first) {
+  if (!p.allFinite()) return;
+  if (first) {
+    d.min = d.max = p;
+    first = false;
+  }
+  d.min = d.min.cwiseMin(p);
+  d.max = d.max.cwiseMax(p);
+}
+
+Eigen::Vector3d homogeneous(const InstantCentres& ics, int i, int j) {
+  const InstantCentre* c = ics.find(i, j);
+  return c && c->determined ? c->h : Eigen::Vector3d::Zero();
+}
+
+void placeCentres(Drawing& d, const Kinematics& k, const InstantCentres& ics) {
+  const Mechanism& m = k.mechanism();
+  d.centres.resize(ics.centres.size());
+  for (size_t n = 0; n < ics.centres.size(); ++n) {
+    const InstantCentre& c = ics.centres[n];
+    Drawing::Centre& out = d.centres[n];
+    out.i = c.i;
+    out.j = c.j;
+    out.determined = c.determined;
+    out.atInfinity = c.atInfinity();
+    out.at = c.determined ? Vec2(c.h.x(), c.h.y()) : Vec2::Zero();
+    out.status = c.status;
+    out.lines.clear();
+    const bool fromLines = c.status == CentreStatus::Kennedy ||
+                           (c.status == CentreStatus::Primary && c.lines[0].joint);
+    if (!c.determined || !fromLines) continue;
+    for (const CentreLine& l : c.lines) {
+      Drawing::KennedyLine line;
+      line.k = l.k;
+      if (l.k > 0) {
+        line.through[0] = homogeneous(ics, c.i, l.k);
+        line.through[1] = homogeneous(ics, l.k, c.j);
+      } else if (const Joint* j = m.joint(l.joint)) {
+        // A pin-in-slot's own line: the normal to the slot through the pin.
+        const Vec2 pin = k.position(j->a);
+        const Kinematics::Segment s = k.slotEnds(j->slot);
+        const Vec2 n = perp(s.p1 - s.p0).normalized();
+        line.through[0] = Eigen::Vector3d(pin.x(), pin.y(), 1);
+        line.through[1] = Eigen::Vector3d(n.x(), n.y(), 0);
+      }
+      out.lines.push_back(line);
+    }
+  }
+}
+
+}  // namespace
+
+bool updateDrawing(Drawing& d, const Kinematics& k, const InstantCentres* ics) {
+  if (!k.valid() || k.revision() != d.revision) return false;
+  const Mechanism& m = k.mechanism();
+  bool first = true;
+  for (Drawing::Body& b : d.bodies) {
+    b.pose = k.bodyTransform(b.id);
+    for (const Vec2& p : b.outline) extend(d, b.pose * p, first);
+  }
+  for (Drawing::Pin& p : d.pins) {
+    p.at = k.position(m.joint(p.joint)->a);
+    extend(d, p.at, first);
+  }
+  for (Drawing::Channel& c : d.channels) {
+    const Kinematics::Segment s = k.slotEnds(c.slot);
+    c.p0 = s.p0;
+    c.p1 = s.p1;
+    extend(d, c.p0, first);
+    extend(d, c.p1, first);
+  }
+  for (Drawing::Block& b : d.blocks) {
+    b.at = k.position(m.joint(b.joint)->a);
+    const Kinematics::Segment s = k.slotEnds(b.slot);
+    b.direction = (s.p1 - s.p0).normalized();
+  }
+  for (Drawing::SlotPin& p : d.slotPins) p.at = k.position(m.joint(p.joint)->a);
+  for (Drawing::Driver& r : d.drivers) {
+    r.at = k.position(m.joint(r.joint)->a);
+    r.crankDeg = k.crankDeg();
+  }
+  for (Drawing::Output& o : d.outputs) o.at = k.position(o.point);
+  if (ics && ics->status.ok())
+    placeCentres(d, k, *ics);
+  else
+    d.centres.clear();
+  return true;
+}
+
+Drawing describeDrawing(const Kinematics& k, const InstantCentres* ics) {
+  Drawing d;
+  if (!k.valid()) return d;
+  const Mechanism& m = k.mechanism();
+  d.revision = k.revision();
+  std::vector<BodyId> order;
+  std::vector<int> numbers;
+  const bool numbered = textbookNumbers(m, order, numbers).ok();
+  auto numberOf = [&](BodyId id) {
+    for (size_t t = 0; numbered && t < order.size(); ++t)
+      if (order[t] == id) return numbers[t];
+    return 0;
+  };
+  if (const Body* g = m.ground()) d.bodies.push_back(describeBody(m, *g, 1));
+  for (const Body& b : m.bodies)
+    if (!b.ground) d.bodies.push_back(describeBody(m, b, numberOf(b.id)));
+  const BodyId ground = m.ground() ? m.ground()->id : BodyId{};
+  for (const Joint& j : m.joints) {
+    const Point* a = m.point(j.a);
+    if (!a) continue;
+    if (j.type == JointType::Pin) {
+      const Point* b = m.point(j.b);
+      Drawing::Pin p;
+      p.joint = j.id;
+      p.a = a->body;
+      p.b = b ? b->body : BodyId{};
+      p.groundPivot = p.a == ground || p.b == ground;
+      p.driver = m.driver && m.driver->joint == j.id;
+      d.pins.push_back(p);
+      if (p.driver) {
+        Drawing::Driver r;
+        r.joint = j.id;
+        r.crank = p.b;
+        r.ccw = m.driver->direction == Direction::Ccw;
+        d.drivers.push_back(r);
+      }
+    } else if (j.type == JointType::Slider) {
+      d.blocks.push_back(Drawing::Block{j.id, a->body, j.slot});
+    } else {
+      d.slotPins.push_back(Drawing::SlotPin{j.id, j.slot});
+    }
+  }
+  for (const Slot& s : m.slots) d.channels.push_back(Drawing::Channel{s.id, s.body});
+  for (PointId p : m.outputs)
+    if (m.contains(p)) d.outputs.push_back(Drawing::Output{p, m.pointLabel(p)});
+  updateDrawing(d, k, ics);
+  return d;
+}
+
+}  // namespace linkage

@@ -1,0 +1,111 @@
+// What to paint of a mechanism at its current pose, as a textbook draws it, in a list any front
+// end can draw (the editor's canvas, an SVG writer, a test): bodies as bars, plates or slider
+// blocks, pins, slots as channels, the driver, output points, and optionally the instant centres
+// with the Kennedy lines that found them. Geometry only, in millimetres (sketch coordinates for
+// a body's own outline, world coordinates at the pose for everything else): line widths, colours
+// and symbol sizes are the front end's, so that it can keep them constant on screen at any zoom.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "linkage/instant_centres.h"
+#include "linkage/kinematics.h"
+
+namespace linkage {
+
+struct Drawing {
+  enum class Shape : unsigned char {
+    Ground,  // the frame: its pivots are hatched, its slots are fixed channels
+    Bar,     // two distinct points (and slots along them): a bar with rounded ends
+    Plate,   // three or more points, or a slot beside a point: a rigid plate (convex hull)
+    Block,   // one point that slides in a slot: drawn as the slider block of that joint
+    Dot,     // a single point, no slot: a small disc
+  };
+  struct Body {
+    BodyId id;
+    int number = 0;  // textbook number: ground 1, the others as instant centres number them
+    std::string name;
+    Shape shape = Shape::Dot;
+    Transform pose;  // sketch -> world at the current pose
+    // Sketch coordinates: Bar its two ends, Plate its convex hull (counter-clockwise), Dot and
+    // Block the point, Ground its points.
+    std::vector<Vec2> outline;
+  };
+  struct Pin {
+    JointId joint;
+    Vec2 at = Vec2::Zero();
+    BodyId a, b;               // the bodies of its a and b points
+    bool groundPivot = false;  // one side is the ground
+    bool driver = false;
+  };
+  struct Channel {
+    SlotId slot;
+    BodyId body;
+    Vec2 p0 = Vec2::Zero(), p1 = Vec2::Zero();  // the slot's ends now
+  };
+  struct Block {  // a slider joint: the block at its point, aligned with the slot
+    JointId joint;
+    BodyId body;  // the body of the joint's a point (the block)
+    SlotId slot;
+    Vec2 at = Vec2::Zero();
+    Vec2 direction = Vec2::UnitX();  // unit, along the slot now
+  };
+  struct SlotPin {  // a pin-in-slot joint: a pin inside the channel
+    JointId joint;
+    SlotId slot;
+    Vec2 at = Vec2::Zero();
+  };
+  struct Driver {
+    JointId joint;
+    BodyId crank;  // the body that turns (the pin's b side)
+    Vec2 at = Vec2::Zero();
+    bool ccw = true;  // seen with x right, y up
+    double crankDeg = 0;
+  };
+  struct Output {
+    PointId point;
+    std::string label;  // "body.point"
+    Vec2 at = Vec2::Zero();
+  };
+  // A line one centre was found from: through the two centres `through` (homogeneous as in
+  // InstantCentre::h: a direction with z = 0 for a centre at infinity), or, for a pin-in-slot's
+  // own line (k = 0), through the pin along the normal of the slot (through[1] a direction).
+  struct KennedyLine {
+    int k = 0;
+    Eigen::Vector3d through[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  };
+  struct Centre {
+    int i = 0, j = 0;
+    bool determined = false;
+    bool atInfinity = false;
+    Vec2 at = Vec2::Zero();  // the point, or the unit direction at infinity
+    CentreStatus status = CentreStatus::Velocity;
+    std::vector<KennedyLine> lines;  // Kennedy: the two lines that found it
+  };
+
+  std::vector<Body> bodies;  // ground first, then file order
+  std::vector<Pin> pins;
+  std::vector<Channel> channels;
+  std::vector<Block> blocks;
+  std::vector<SlotPin> slotPins;
+  std::vector<Driver> drivers;  // none or one
+  std::vector<Output> outputs;
+  std::vector<Centre> centres;  // when asked for
+  // The extent of everything above but the centres, mm (for "fit to view").
+  Vec2 min = Vec2::Zero(), max = Vec2::Zero();
+  std::uint64_t revision = 0;  // Kinematics::revision() it was made from
+};
+
+// The mechanism k holds at its current pose; with centres, also every instant centre of `ics`
+// (computed for k at this pose). An invalid k gives an empty drawing.
+Drawing describeDrawing(const Kinematics& k, const InstantCentres* ics = nullptr);
+
+// Only the parts that move, for a drawing of the same revision made before: every pose,
+// position and centre updated in place, nothing allocated. False when `d` was not made from
+// k's mechanism (it must then be described afresh).
+bool updateDrawing(Drawing& d, const Kinematics& k, const InstantCentres* ics = nullptr);
+
+}  // namespace linkage
