@@ -31,7 +31,8 @@ TEST(Drawing, WanzerShapesAreTheTextbooks) {
   ASSERT_EQ(d.bodies.size(), 6u);
   EXPECT_EQ(d.bodies[0].shape, Drawing::Shape::Ground);
   EXPECT_EQ(d.bodies[0].number, 1);
-  EXPECT_EQ(bodyNamed(d, "disk").shape, Drawing::Shape::Plate);
+  EXPECT_EQ(bodyNamed(d, "disk").shape, Drawing::Shape::Disc);  // its slots are chords
+  EXPECT_NEAR(bodyNamed(d, "disk").radius, std::hypot(10.0, 31.0), 1e-9);
   EXPECT_EQ(bodyNamed(d, "triangle").shape, Drawing::Shape::Plate);
   EXPECT_EQ(bodyNamed(d, "triangle").outline.size(), 3u);
   for (const char* block : {"slider4", "slider5", "needlebar"})

@@ -38,6 +38,33 @@ bool slidesIn(const Mechanism& m, const Point& p) {
                      [&](const Joint& j) { return j.type == JointType::Slider && j.a == p.id; });
 }
 
+// A slotted disk: every slot end at one distance from one of the body's points (the slots are
+// chords of the disk) and the other points inside that circle.
+bool discAbout(const Mechanism& m, const Body& b, Drawing::Body& d) {
+  for (const Point& c : m.points) {
+    if (c.body != b.id) continue;
+    double rho = -1;
+    bool round = true;
+    for (const Slot& s : m.slots) {
+      if (s.body != b.id) continue;
+      for (const Vec2& e : {s.p0, s.p1}) {
+        const double r = (e - c.pos).norm();
+        if (rho < 0) rho = r;
+        round = round && std::abs(r - rho) <= 1e-6 * rho;
+      }
+    }
+    if (!round || !(rho > 0)) continue;
+    for (const Point& p : m.points)
+      if (p.body == b.id && (p.pos - c.pos).norm() > rho * (1 + 1e-9)) round = false;
+    if (!round) continue;
+    d.shape = Drawing::Shape::Disc;
+    d.outline = {c.pos};
+    d.radius = rho;
+    return true;
+  }
+  return false;
+}
+
 Drawing::Body describeBody(const Mechanism& m, const Body& b, int number) {
   Drawing::Body d;
   d.id = b.id;
@@ -69,6 +96,7 @@ Drawing::Body describeBody(const Mechanism& m, const Body& b, int number) {
     d.outline = {only->pos};
     return d;
   }
+  if (slots > 0 && discAbout(m, b, d)) return d;
   d.outline = convexHull(geometry);
   if (d.outline.size() >= 3)
     d.shape = Drawing::Shape::Plate;
@@ -137,7 +165,14 @@ bool updateDrawing(Drawing& d, const Kinematics& k, const InstantCentres* ics) {
   bool first = true;
   for (Drawing::Body& b : d.bodies) {
     b.pose = k.bodyTransform(b.id);
-    for (const Vec2& p : b.outline) extend(d, b.pose * p, first);
+    for (const Vec2& p : b.outline) {
+      extend(d, b.pose * p, first);
+      if (b.radius > 0)
+        for (const Vec2& e : {Vec2(1, 0), Vec2(0, 1)}) {
+          extend(d, b.pose * p + b.radius * e, first);
+          extend(d, b.pose * p - b.radius * e, first);
+        }
+    }
   }
   for (Drawing::Pin& p : d.pins) {
     p.at = k.position(m.joint(p.joint)->a);

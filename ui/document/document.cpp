@@ -34,7 +34,7 @@ Document::Document(QObject* parent) : QObject(parent) {
 Document::~Document() = default;
 
 void Document::clear() {
-  replace(solvedFresh(emptyDesign()), QString());
+  replace(solvedFresh(emptyDesign()), QString(), QString());
 }
 
 bool Document::open(const QString& path, QString* error) {
@@ -47,13 +47,15 @@ bool Document::open(const QString& path, QString* error) {
   return true;
 }
 
-void Document::setContents(Mechanism m, const QString& path) {
-  replace(solvedFresh(std::move(m)), path);
+void Document::setContents(Mechanism m, const QString& path, const QString& title) {
+  replace(solvedFresh(std::move(m)), path, title);
 }
 
-void Document::replace(DocumentState s, const QString& path) {
+void Document::replace(DocumentState s, const QString& path, const QString& title) {
   state_ = std::move(s);
   path_ = path;
+  title_ = title;
+  poseStatus_ = Status::success();
   undo_.clear();
   icFresh_ = false;
   emit designChanged();
@@ -68,18 +70,21 @@ bool Document::save(const QString& path, QString* error) {
     return false;
   }
   path_ = path;
+  title_.clear();
   undo_.setClean();
   emit fileStateChanged();
   return true;
 }
 
 QString Document::displayName() const {
-  return path_.isEmpty() ? QStringLiteral("untitled") : QFileInfo(path_).fileName();
+  if (!path_.isEmpty()) return QFileInfo(path_).fileName();
+  return title_.isEmpty() ? QStringLiteral("untitled") : title_;
 }
 
 void Document::setDesign(const Mechanism& m) {
   state_.design = m;
   state_.status = state_.kinematics.edit(m);
+  poseStatus_ = Status::success();
   icFresh_ = false;
   emit designChanged();
   emit poseChanged();
@@ -92,6 +97,7 @@ void Document::restore(const DocumentState& s) {
     Status moved = state_.kinematics.moveTo(deg);
     if (state_.status.ok()) state_.status = moved;
   }
+  poseStatus_ = Status::success();
   icFresh_ = false;
   emit designChanged();
   emit poseChanged();
@@ -104,10 +110,10 @@ double Document::crankDeg() const {
 Status Document::setCrankDeg(double deg) {
   if (!state_.kinematics.valid())
     return Status::failure(StatusCode::BadModel, "the mechanism is not solved");
-  Status s = state_.kinematics.moveTo(deg);
+  poseStatus_ = state_.kinematics.moveTo(deg);
   icFresh_ = false;
   emit poseChanged();
-  return s;
+  return poseStatus_;
 }
 
 void Document::setAccelerationsWanted(bool on) {

@@ -38,13 +38,14 @@ class Document : public QObject {
   // Reads a file; on failure returns false with the reader's message (it names the place) and
   // leaves the document exactly as it was.
   bool open(const QString& path, QString* error);
-  // Takes a mechanism read elsewhere (an example); `path` may be empty (untitled).
-  void setContents(Mechanism m, const QString& path);
+  // Takes a mechanism read elsewhere; `path` may be empty (untitled), then `title` names it
+  // (an example opens untitled, under its name, so that Save asks where to write it).
+  void setContents(Mechanism m, const QString& path, const QString& title = QString());
   // Writes the design atomically, keeping the unknown fields of the file it came from.
   bool save(const QString& path, QString* error);
 
   QString filePath() const { return path_; }
-  // The file name without directory, or "untitled".
+  // The file name without directory, or the title, or "untitled".
   QString displayName() const;
   bool isModified() const { return !undo_.isClean(); }
   QUndoStack* undoStack() { return &undo_; }
@@ -68,6 +69,8 @@ class Document : public QObject {
   // the last angle reached and the status says why.
   double crankDeg() const;
   Status setCrankDeg(double deg);
+  // What the last setCrankDeg said (Ok, or why it stopped where it is).
+  const Status& poseStatus() const { return poseStatus_; }
   // Only what a view shows is computed: accelerations while a view needs them.
   void setAccelerationsWanted(bool on);
 
@@ -83,10 +86,11 @@ class Document : public QObject {
   void fileStateChanged();
 
  private:
-  void replace(DocumentState s, const QString& path);
+  void replace(DocumentState s, const QString& path, const QString& title);
 
   DocumentState state_;
-  QString path_;
+  QString path_, title_;
+  Status poseStatus_;
   QUndoStack undo_;
   InstantCentreSolver icSolver_;
   std::uint64_t icRevision_ = 0;

@@ -21,6 +21,8 @@ struct Drawing {
     Ground,  // the frame: its pivots are hatched, its slots are fixed channels
     Bar,     // two distinct points (and slots along them): a bar with rounded ends
     Plate,   // three or more points, or a slot beside a point: a rigid plate (convex hull)
+    Disc,    // slots whose ends all lie on a circle about one of the body's points (a slotted
+             // disk, as the Wanzer's): that circle
     Block,   // one point that slides in a slot: drawn as the slider block of that joint
     Dot,     // a single point, no slot: a small disc
   };
@@ -30,9 +32,10 @@ struct Drawing {
     std::string name;
     Shape shape = Shape::Dot;
     Transform pose;  // sketch -> world at the current pose
-    // Sketch coordinates: Bar its two ends, Plate its convex hull (counter-clockwise), Dot and
-    // Block the point, Ground its points.
+    // Sketch coordinates: Bar its two ends, Plate its convex hull (counter-clockwise), Disc its
+    // centre, Dot and Block the point, Ground its points.
     std::vector<Vec2> outline;
+    double radius = 0;  // Disc
   };
   struct Pin {
     JointId joint;

@@ -1,0 +1,120 @@
+#include "animation/crank_bar.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <cmath>
+
+#include "animation/animator.h"
+#include "document/document.h"
+
+namespace linkage::ui {
+
+namespace {
+constexpr int kSliderSteps = 3600;  // tenths of a degree over a revolution
+}
+
+const std::vector<double>& CrankBar::speeds() {
+  static const std::vector<double> s{1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01};
+  return s;
+}
+
+CrankBar::CrankBar(Animator* animator, QWidget* parent) : QWidget(parent), animator_(animator) {
+  slider_ = new QSlider(Qt::Horizontal);
+  slider_->setRange(0, kSliderSteps);
+  slider_->setPageStep(kSliderSteps / 36);
+  slider_->setMinimumWidth(200);
+  slider_->setToolTip(tr("Crank angle within the current revolution"));
+  slider_->setFocusPolicy(Qt::ClickFocus);
+  angle_ = new QDoubleSpinBox;
+  angle_->setRange(-1e7, 1e7);
+  angle_->setDecimals(2);
+  angle_->setSuffix(QStringLiteral("\u00b0"));
+  angle_->setKeyboardTracking(false);
+  angle_->setToolTip(tr("Crank angle from the start, in the driving direction (degrees)"));
+  revs_ = new QLabel;
+  revs_->setToolTip(tr("Whole revolutions of the crank from the start"));
+  increment_ = new QDoubleSpinBox;
+  increment_->setRange(0.01, 90);
+  increment_->setDecimals(2);
+  increment_->setValue(animator_->incrementDeg());
+  increment_->setSuffix(QStringLiteral("\u00b0"));
+  increment_->setToolTip(tr("Step increment (Left and Right keys)"));
+  speed_ = new QComboBox;
+  for (double f : speeds())
+    speed_->addItem(f == 1 ? tr("x1 (real time)") : QStringLiteral("x1/%1").arg(1 / f));
+  speed_->setToolTip(tr("Slow motion: the animation runs at this fraction of the driver's speed"));
+  driver_ = new QLabel;
+
+  auto* l = new QHBoxLayout(this);
+  l->setContentsMargins(4, 0, 4, 0);
+  l->addWidget(new QLabel(tr("Crank")));
+  l->addWidget(slider_, 1);
+  l->addWidget(angle_);
+  l->addWidget(revs_);
+  l->addSpacing(12);
+  l->addWidget(new QLabel(tr("Step")));
+  l->addWidget(increment_);
+  l->addWidget(new QLabel(tr("Speed")));
+  l->addWidget(speed_);
+  l->addSpacing(12);
+  l->addWidget(driver_);
+
+  connect(slider_, &QSlider::valueChanged, this, [this](int v) {
+    if (!doc_) return;
+    const double rev = std::floor(doc_->crankDeg() / 360.0);
+    seek(rev * 360.0 + v * 360.0 / kSliderSteps);
+  });
+  connect(angle_, &QDoubleSpinBox::valueChanged, this, [this](double v) { seek(v); });
+  connect(increment_, &QDoubleSpinBox::valueChanged, animator_, &Animator::setIncrementDeg);
+  connect(speed_, &QComboBox::currentIndexChanged, this, [this](int i) {
+    if (i >= 0 && i < int(speeds().size())) animator_->setSlowMotion(speeds()[i]);
+  });
+}
+
+void CrankBar::setSpeedIndex(int i) {
+  speed_->setCurrentIndex(std::clamp(i, 0, int(speeds().size()) - 1));
+}
+
+void CrankBar::setDocument(Document* doc) {
+  if (doc_) disconnect(doc_, nullptr, this, nullptr);
+  doc_ = doc;
+  if (doc_) {
+    connect(doc_, &Document::poseChanged, this, &CrankBar::showPose);
+    connect(doc_, &Document::designChanged, this, &CrankBar::showDriver);
+  }
+  showDriver();
+  showPose();
+}
+
+void CrankBar::seek(double deg) {
+  if (!doc_ || !doc_->solved()) return;
+  animator_->setPlaying(false);
+  doc_->setCrankDeg(deg);
+}
+
+void CrankBar::showPose() {
+  const double deg = doc_ ? doc_->crankDeg() : 0.0;
+  const double rev = std::floor(deg / 360.0);
+  QSignalBlocker a(slider_), b(angle_);
+  slider_->setValue(static_cast<int>(std::lround((deg - 360.0 * rev) / 360.0 * kSliderSteps)));
+  angle_->setValue(deg);
+  revs_->setText(tr("rev %1").arg(static_cast<long long>(rev)));
+}
+
+void CrankBar::showDriver() {
+  const bool ok = doc_ && doc_->kinematics().valid() && doc_->design().driver;
+  setEnabled(ok);
+  if (!ok) {
+    driver_->setText(tr("no driver"));
+    return;
+  }
+  const Driver& d = *doc_->design().driver;
+  driver_->setText(
+      tr("%1 rpm %2").arg(d.rpm).arg(d.direction == Direction::Cw ? tr("cw") : tr("ccw")));
+}
+
+}  // namespace linkage::ui

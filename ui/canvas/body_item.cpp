@@ -1,0 +1,191 @@
+#include "canvas/body_item.h"
+
+#include <QPainter>
+#include <QPainterPathStroker>
+#include <QStyleOptionGraphicsItem>
+#include <QtMath>
+#include <cmath>
+
+namespace linkage::ui {
+
+QPointF toQt(const Vec2& v) {
+  return QPointF(v.x(), v.y());
+}
+
+QTransform toQt(const Transform& t) {
+  // world = R sketch + t; QTransform maps (x, y) to (m11 x + m21 y + dx, m12 x + m22 y + dy).
+  return QTransform(t.R.c, t.R.s, -t.R.s, t.R.c, t.t.x(), t.t.y());
+}
+
+namespace {
+
+// Arc points about c from angle a0 through a positive sweep (radians, y up), close enough that
+// the polygon is never more than a quarter pixel inside the circle at the current zoom (px mm
+// per pixel): smooth at any size, and a polygon fills and strokes far faster than curves.
+void arc(QPolygonF& out, const Vec2& c, double r, double a0, double sweep, double px) {
+  const double rPx = std::max(r / px, 1.0);
+  const double step = std::clamp(2 * std::acos(std::max(0.0, 1 - 0.25 / rPx)), 0.02, M_PI / 6);
+  const int n = std::max(1, static_cast<int>(std::ceil(sweep / step)));
+  for (int k = 0; k <= n; ++k) {
+    const double a = a0 + sweep * k / n;
+    out << QPointF(c.x() + r * std::cos(a), c.y() + r * std::sin(a));
+  }
+}
+
+}  // namespace
+
+QPolygonF capsule(const Vec2& a, const Vec2& b, double r, double px) {
+  QPolygonF p;
+  const Vec2 d = b - a;
+  const double t = d.norm() > 0 ? std::atan2(d.y(), d.x()) : 0.0;
+  arc(p, b, r, t - M_PI / 2, M_PI, px);
+  arc(p, a, r, t + M_PI / 2, M_PI, px);
+  p << p.front();
+  return p;
+}
+
+QPolygonF roundedHull(const std::vector<Vec2>& hull, double r, double px) {
+  // Counter-clockwise convex polygon grown by r: each edge moved out along its normal, the
+  // corners rounded by arcs about the vertices.
+  QPolygonF p;
+  const size_t n = hull.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 e0 = hull[i] - hull[(i + n - 1) % n], e1 = hull[(i + 1) % n] - hull[i];
+    const double a0 = std::atan2(-e0.x(), e0.y());  // outward normal (e.y, -e.x)
+    double sweep = std::atan2(-e1.x(), e1.y()) - a0;
+    while (sweep < 0) sweep += 2 * M_PI;
+    arc(p, hull[i], r, a0, sweep, px);
+  }
+  if (!p.isEmpty()) p << p.front();
+  return p;
+}
+
+BodyItem::BodyItem(const CanvasContext* ctx, BodyGeometry g) : CanvasItem(ctx), g_(std::move(g)) {
+  setAcceptHoverEvents(g_.body.shape != Drawing::Shape::Ground);
+  const bool ground = g_.body.shape == Drawing::Shape::Ground;
+  setToolTip(
+      ground
+          ? QStringLiteral("1 %1 (the frame)").arg(QString::fromStdString(g_.body.name))
+          : QStringLiteral("%1 %2").arg(g_.body.number).arg(QString::fromStdString(g_.body.name)));
+  if (!ground && g_.body.shape != Drawing::Shape::Block && !g_.body.outline.empty()) {
+    Vec2 c = Vec2::Zero();
+    for (const Vec2& p : g_.body.outline) c += p;
+    c /= double(g_.body.outline.size());
+    // A disc's number off its centre, where its pivot and driver arrow are.
+    if (g_.body.shape == Drawing::Shape::Disc) c += 0.6 * g_.body.radius * Vec2(-0.6, 0.8);
+    label_ = new LabelItem(QString::number(g_.body.number), this);
+    label_->setPos(toQt(c));
+    label_->setBold(true);
+  }
+  rebuild();
+}
+
+void BodyItem::setPose(const Transform& pose) {
+  setTransform(toQt(pose));
+}
+
+void BodyItem::setFlagged(bool on) {
+  if (on == flagged_) return;
+  flagged_ = on;
+  update();
+}
+
+void BodyItem::rebuild() {
+  const double r = CanvasStyle::barWidth / 2 * px();
+  const std::vector<Vec2>& o = g_.body.outline;
+  body_ = QPolygonF();
+  switch (g_.body.shape) {
+    case Drawing::Shape::Bar:
+      body_ = capsule(o[0], o[1], r, px());
+      break;
+    case Drawing::Shape::Plate:
+      body_ = roundedHull(o, r, px());
+      break;
+    case Drawing::Shape::Disc:
+      body_ = capsule(o[0], o[0], g_.body.radius + r, px());
+      break;
+    case Drawing::Shape::Dot:
+      if (!o.empty()) body_ = capsule(o[0], o[0], r, px());
+      break;
+    case Drawing::Shape::Block:
+    case Drawing::Shape::Ground:
+      break;
+  }
+  shape_ = QPainterPath();
+  shape_.addPolygon(body_);
+  channels_.clear();
+  hatch_.clear();
+  const double w = CanvasStyle::channelWidth / 2 * px();
+  for (const auto& [a, b] : g_.slots) {
+    channels_.push_back(capsule(a, b, w, px()));
+    if (g_.body.shape != Drawing::Shape::Ground || a == b) continue;
+    // The frame's slots: short strokes along both walls, as a fixed guide is drawn.
+    const Vec2 d = (b - a).normalized(), n = perp(d);
+    const double step = 6 * px(), len = (b - a).norm();
+    for (double s = 0; s <= len; s += step)
+      for (int side : {-1, 1}) {
+        const Vec2 base = a + s * d + side * (w + 0.5 * px()) * n;
+        hatch_ << QLineF(toQt(base), toQt(base + side * 4 * px() * n - 4 * px() * d));
+      }
+  }
+  if (label_) label_->setColours(style().body(g_.body.number), style().paper);
+}
+
+QRectF BodyItem::boundingRect() const {
+  const double m = 6 * px();
+  QRectF r = body_.boundingRect();
+  for (const QPolygonF& c : channels_) r = r.united(c.boundingRect());
+  for (const QLineF& l : hatch_) r = r.united(QRectF(l.p1(), l.p2()).normalized());
+  return r.adjusted(-m, -m, m, m);
+}
+
+void BodyItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
+  const CanvasStyle& st = style();
+  const QColor line = flagged_ ? st.warning : st.body(g_.body.number);
+  p->setRenderHint(QPainter::Antialiasing);
+  // Cosmetic pens: widths in pixels, which the raster engine strokes on its fast path.
+  QPen pen = cosmetic(line, hovered_ || flagged_ ? 2.5 : CanvasStyle::outline);
+  // Fills without antialiasing, then antialiased one-pixel outlines over their edges: the
+  // outline hides the stair steps, and an aliased fill of a large plate costs a fraction of an
+  // antialiased one (plates and channels are most of a frame's pixels).
+  auto shape = [&](const QPolygonF& poly, const QColor& fill, const QPen& outline) {
+    p->setRenderHint(QPainter::Antialiasing, false);
+    p->setPen(Qt::NoPen);
+    p->setBrush(fill);
+    p->drawPolygon(poly);
+    p->setRenderHint(QPainter::Antialiasing, true);
+    p->setPen(outline);
+    p->setBrush(Qt::NoBrush);
+    p->drawPolygon(poly);
+  };
+  if (!body_.isEmpty())
+    shape(body_,
+          flagged_ ? QColor(st.warning.red(), st.warning.green(), st.warning.blue(), 60)
+                   : st.bodyFill(g_.body.number),
+          pen);
+  const QPen wall =
+      cosmetic(g_.body.shape == Drawing::Shape::Ground ? st.ink : line, CanvasStyle::outline);
+  for (const QPolygonF& c : channels_) shape(c, st.paper, wall);
+  if (!hatch_.isEmpty()) {
+    p->setPen(cosmetic(st.faint, 1));
+    p->drawLines(hatch_);
+  }
+  if (g_.body.shape != Drawing::Shape::Ground && g_.body.shape != Drawing::Shape::Block) {
+    p->setPen(Qt::NoPen);
+    p->setBrush(line);
+    const double r = CanvasStyle::pointRadius * px();
+    for (const Vec2& pt : g_.points) p->drawEllipse(toQt(pt), r, r);
+  }
+}
+
+void BodyItem::hoverEnterEvent(QGraphicsSceneHoverEvent*) {
+  hovered_ = true;
+  update();
+}
+
+void BodyItem::hoverLeaveEvent(QGraphicsSceneHoverEvent*) {
+  hovered_ = false;
+  update();
+}
+
+}  // namespace linkage::ui

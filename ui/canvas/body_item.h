@@ -1,0 +1,59 @@
+// One body as a textbook draws it, in its own sketch coordinates and moved by its pose: a bar
+// with rounded ends, a rigid plate, a small disc, or (the ground) its fixed slots with hatching.
+// Slots are channels cut into their body and turn with it. Slider blocks, pins and pivots are
+// items of their own (joint_items.h), drawn over the bodies.
+#pragma once
+
+#include <QString>
+#include <vector>
+
+#include "canvas/canvas_item.h"
+#include "linkage/drawing.h"
+
+namespace linkage::ui {
+
+struct BodyGeometry {
+  Drawing::Body body;
+  std::vector<std::pair<Vec2, Vec2>> slots;  // sketch coordinates
+  std::vector<Vec2> points;                  // sketch coordinates
+};
+
+class BodyItem : public CanvasItem {
+ public:
+  BodyItem(const CanvasContext* ctx, BodyGeometry g);
+  BodyId id() const { return g_.body.id; }
+  int number() const { return g_.body.number; }
+  const BodyGeometry& geometry() const { return g_; }
+  void setPose(const Transform& pose);
+  // Drawn in the warning colour (a body the solver names: free, or at a joint that fails).
+  void setFlagged(bool on);
+  bool flagged() const { return flagged_; }
+
+  QRectF boundingRect() const override;
+  QPainterPath shape() const override { return shape_; }
+  void paint(QPainter* p, const QStyleOptionGraphicsItem* o, QWidget*) override;
+
+ protected:
+  void rebuild() override;
+  void hoverEnterEvent(QGraphicsSceneHoverEvent*) override;
+  void hoverLeaveEvent(QGraphicsSceneHoverEvent*) override;
+
+ private:
+  BodyGeometry g_;
+  QPolygonF body_;
+  QPainterPath shape_;
+  std::vector<QPolygonF> channels_;
+  QVector<QLineF> hatch_;
+  LabelItem* label_ = nullptr;
+  bool hovered_ = false, flagged_ = false;
+};
+
+// The outline with rounded ends around the segment a-b at distance r (a disc when a = b), as a
+// polygon fine enough for `px` millimetres per pixel.
+QPolygonF capsule(const Vec2& a, const Vec2& b, double r, double px);
+// A counter-clockwise convex polygon grown by r, its corners rounded.
+QPolygonF roundedHull(const std::vector<Vec2>& hull, double r, double px);
+QPointF toQt(const Vec2& v);
+QTransform toQt(const Transform& t);
+
+}  // namespace linkage::ui

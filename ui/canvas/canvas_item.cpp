@@ -1,0 +1,60 @@
+#include "canvas/canvas_item.h"
+
+#include <QFontMetricsF>
+#include <QPainter>
+
+namespace linkage::ui {
+
+LabelItem::LabelItem(const QString& text, QGraphicsItem* parent)
+    : QGraphicsItem(parent), text_(text) {
+  setFlag(ItemIgnoresTransformations);
+  setAcceptedMouseButtons(Qt::NoButton);
+}
+
+void LabelItem::setText(const QString& text) {
+  if (text == text_) return;
+  prepareGeometryChange();
+  text_ = text;
+}
+
+void LabelItem::setColours(const QColor& ink, const QColor& halo) {
+  ink_ = ink;
+  halo_ = halo;
+  update();
+}
+
+void LabelItem::setOffset(const QPointF& offset) {
+  prepareGeometryChange();
+  offset_ = offset;
+}
+
+void LabelItem::setBold(bool bold) {
+  prepareGeometryChange();
+  bold_ = bold;
+}
+
+QRectF LabelItem::textRect() const {
+  QFont f;
+  f.setBold(bold_);
+  const QRectF r = QFontMetricsF(f).boundingRect(text_);
+  return QRectF(offset_.x() - r.width() / 2, offset_.y() - r.height() / 2, r.width(), r.height());
+}
+
+QRectF LabelItem::boundingRect() const {
+  return textRect().adjusted(-3, -3, 3, 3);
+}
+
+void LabelItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
+  QFont f = p->font();
+  f.setBold(bold_);
+  p->setFont(f);
+  const QRectF r = textRect();
+  // A backing of the paper colour keeps it legible over lines (cheaper than a halo).
+  QColor back = halo_;
+  back.setAlphaF(0.7);
+  p->fillRect(r.adjusted(-2, 0, 2, 0), back);
+  p->setPen(ink_);
+  p->drawText(r, Qt::AlignCenter, text_);
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,237 @@
+#include "canvas/canvas_scene.h"
+
+#include <QGraphicsPathItem>
+
+#include "canvas/traces.h"
+#include "document/document.h"
+
+namespace linkage::ui {
+
+namespace {
+
+// Z order, bottom to top.
+constexpr double kTraceZ = -10, kGroundZ = -5, kBodyZ = 0, kBlockZ = 20, kPinZ = 30, kDriverZ = 35,
+                 kOutputZ = 40;
+
+BodyGeometry geometryOf(const Mechanism& m, const Drawing::Body& b) {
+  BodyGeometry g;
+  g.body = b;
+  for (const Slot& s : m.slots)
+    if (s.body == b.id) g.slots.emplace_back(s.p0, s.p1);
+  for (const Point& p : m.points)
+    if (p.body == b.id) g.points.push_back(p.pos);
+  return g;
+}
+
+}  // namespace
+
+CanvasScene::CanvasScene(QObject* parent) : QGraphicsScene(parent) {
+  // Items move every frame: no spatial index to keep up to date.
+  setItemIndexMethod(NoIndex);
+  // Room to pan anywhere a mechanism could be drawn (mm).
+  setSceneRect(-1e6, -1e6, 2e6, 2e6);
+  ctx_.style = CanvasStyle::fromPalette(QPalette());
+  centres_ = new CentresItem(&ctx_);
+  centres_->setVisible(false);
+  addItem(centres_);
+  chain_ = new ChainItem(&ctx_);
+  addItem(chain_);
+}
+
+CanvasScene::~CanvasScene() = default;
+
+void CanvasScene::setDocument(Document* doc) {
+  for (auto& c : connections_) disconnect(c);
+  connections_.clear();
+  doc_ = doc;
+  if (doc_) {
+    connections_.push_back(connect(doc_, &Document::designChanged, this, &CanvasScene::rebuild));
+    connections_.push_back(connect(doc_, &Document::poseChanged, this, &CanvasScene::updatePose));
+  }
+  rebuild();
+}
+
+void CanvasScene::setPixelSize(double mmPerPx) {
+  if (!(mmPerPx > 0) || mmPerPx == ctx_.px) return;
+  ctx_.px = mmPerPx;
+  for (QGraphicsItem* i : items())
+    if (auto* c = dynamic_cast<CanvasItem*>(i)) c->restyle();
+}
+
+void CanvasScene::setPalette(const QPalette& p) {
+  ctx_.style = CanvasStyle::fromPalette(p);
+  setBackgroundBrush(ctx_.style.paper);
+  for (QGraphicsItem* i : items())
+    if (auto* c = dynamic_cast<CanvasItem*>(i)) c->restyle();
+  for (QGraphicsPathItem* t : traces_) {
+    QPen pen(ctx_.style.trace, 1.2, Qt::DashLine);
+    pen.setCosmetic(true);
+    t->setPen(pen);
+  }
+}
+
+void CanvasScene::setCentresVisible(bool on) {
+  if (on == centresVisible_) return;
+  centresVisible_ = on;
+  centres_->setVisible(on);
+  updatePose();
+}
+
+void CanvasScene::setTracesVisible(bool on) {
+  if (on == tracesVisible_) return;
+  tracesVisible_ = on;
+  updateTraces();
+}
+
+BodyItem* CanvasScene::bodyItem(BodyId id) const {
+  for (BodyItem* b : bodies_)
+    if (b->id() == id) return b;
+  return nullptr;
+}
+
+QRectF CanvasScene::mechanismRect() const {
+  if (drawing_.bodies.empty()) return QRectF();
+  QRectF r(toQt(drawing_.min), toQt(drawing_.max));
+  r = r.normalized();
+  for (const QGraphicsPathItem* t : traces_) r = r.united(t->path().boundingRect());
+  return r;
+}
+
+void CanvasScene::clearItems() {
+  for (QGraphicsItem* i : items())
+    if (i != centres_ && i != chain_ && !i->parentItem()) {
+      removeItem(i);
+      delete i;
+    }
+  bodies_.clear();
+  pins_.clear();
+  slotPins_.clear();
+  blocks_.clear();
+  outputs_.clear();
+  traces_.clear();
+  driver_ = nullptr;
+}
+
+void CanvasScene::rebuild() {
+  clearItems();
+  drawing_ = Drawing{};
+  if (!doc_) return;
+  const Kinematics& k = doc_->kinematics();
+  drawing_ = describeDrawing(k);
+  const Mechanism& m = k.mechanism();
+  std::map<BodyId, int> number;
+  for (const Drawing::Body& b : drawing_.bodies) {
+    number[b.id] = b.number;
+    auto* item = new BodyItem(&ctx_, geometryOf(m, b));
+    item->setZValue(b.shape == Drawing::Shape::Ground ? kGroundZ : kBodyZ + bodies_.size() * 0.01);
+    addItem(item);
+    bodies_.push_back(item);
+  }
+  for (const Drawing::Block& b : drawing_.blocks) {
+    auto* item = new BlockItem(&ctx_, b.joint, b.body, number[b.body]);
+    item->setToolTip(bodyItem(b.body) ? bodyItem(b.body)->toolTip() : QString());
+    item->setZValue(kBlockZ);
+    addItem(item);
+    blocks_.push_back(item);
+  }
+  for (const Drawing::Pin& p : drawing_.pins) {
+    auto* item = new PinItem(&ctx_, p.joint,
+                             p.groundPivot ? PinItem::Kind::GroundPivot : PinItem::Kind::Pin);
+    item->setToolTip(QString::fromStdString(m.jointLabel(p.joint)));
+    item->setZValue(kPinZ);
+    addItem(item);
+    pins_.push_back(item);
+  }
+  for (const Drawing::SlotPin& p : drawing_.slotPins) {
+    auto* item = new PinItem(&ctx_, p.joint, PinItem::Kind::InSlot);
+    item->setToolTip(QString::fromStdString(m.jointLabel(p.joint)));
+    item->setZValue(kPinZ);
+    addItem(item);
+    slotPins_.push_back(item);
+  }
+  for (const Drawing::Driver& d : drawing_.drivers) {
+    const QString tip =
+        QStringLiteral("driver: %1 rpm %2")
+            .arg(k.rpm())
+            .arg(d.ccw ? QStringLiteral("counter-clockwise") : QStringLiteral("clockwise"));
+    driver_ = new DriverItem(&ctx_, d.ccw, tip);
+    driver_->setZValue(kDriverZ);
+    addItem(driver_);
+  }
+  for (const Drawing::Output& o : drawing_.outputs) {
+    auto* item = new OutputItem(&ctx_, o.point, QString::fromStdString(o.label));
+    item->setZValue(kOutputZ);
+    addItem(item);
+    outputs_.push_back(item);
+  }
+  updateTraces();
+  updatePose();
+}
+
+void CanvasScene::updatePose() {
+  if (!doc_) return;
+  const Kinematics& k = doc_->kinematics();
+  const InstantCentres* ics = centresVisible_ && k.valid() ? &doc_->instantCentres() : nullptr;
+  if (!updateDrawing(drawing_, k, ics)) {
+    rebuild();  // the solver holds another revision: the items are out of date
+    return;
+  }
+  for (size_t i = 0; i < bodies_.size(); ++i) bodies_[i]->setPose(drawing_.bodies[i].pose);
+  for (size_t i = 0; i < pins_.size(); ++i) pins_[i]->setAt(drawing_.pins[i].at);
+  for (size_t i = 0; i < slotPins_.size(); ++i) slotPins_[i]->setAt(drawing_.slotPins[i].at);
+  for (size_t i = 0; i < blocks_.size(); ++i)
+    blocks_[i]->setPlacement(drawing_.blocks[i].at, drawing_.blocks[i].direction);
+  if (driver_ && !drawing_.drivers.empty()) driver_->setAt(drawing_.drivers[0].at);
+  for (size_t i = 0; i < outputs_.size(); ++i) outputs_[i]->setAt(drawing_.outputs[i].at);
+  centres_->setCentres(ics ? drawing_.centres : std::vector<Drawing::Centre>{});
+  updateFlags();
+  emit redrawn();
+}
+
+void CanvasScene::updateFlags() {
+  // The joints and bodies a failure names: an edit the solver refused, or a position the
+  // motion cannot pass (a change point). A limit position is not a failure.
+  const Status& s = doc_->solveStatus();
+  const Status& pose = doc_->poseStatus();
+  const bool poseFailed =
+      pose.code == StatusCode::Singular || pose.code == StatusCode::NotConverged;
+  auto listed = [&](JointId j) {
+    for (const Status* st : {&s, &pose}) {
+      if (st == &pose && !poseFailed) continue;
+      for (JointId x : st->joints)
+        if (x == j) return true;
+      for (const JointGap& g : st->gaps)
+        if (g.joint == j) return true;
+    }
+    return false;
+  };
+  for (PinItem* p : pins_) p->setFlagged(listed(p->joint()));
+  for (PinItem* p : slotPins_) p->setFlagged(listed(p->joint()));
+  for (BlockItem* b : blocks_) b->setFlagged(listed(b->joint()));
+  for (BodyItem* b : bodies_) {
+    bool named = false;
+    for (BodyId x : s.bodies) named = named || x == b->id();
+    b->setFlagged(named);
+  }
+}
+
+void CanvasScene::updateTraces() {
+  for (QGraphicsPathItem* t : traces_) {
+    removeItem(t);
+    delete t;
+  }
+  traces_.clear();
+  if (!tracesVisible_ || !doc_ || !doc_->kinematics().valid()) return;
+  for (const std::vector<Vec2>& path : tracePaths(doc_->kinematics())) {
+    QPainterPath pp;
+    for (size_t i = 0; i < path.size(); ++i)
+      i == 0 ? pp.moveTo(toQt(path[i])) : pp.lineTo(toQt(path[i]));
+    QPen pen(ctx_.style.trace, 1.2, Qt::DashLine);
+    pen.setCosmetic(true);
+    auto* item = addPath(pp, pen);
+    item->setZValue(kTraceZ);
+    traces_.push_back(item);
+  }
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,82 @@
+// The mechanism on the canvas: one item per body and per joint symbol, built from the solver's
+// paint list (linkage/drawing.h) when the design changes and only moved when the pose changes.
+// Overlays (instant centres, traced paths) are computed only while they are shown.
+#pragma once
+
+#include <QGraphicsScene>
+#include <QPointer>
+#include <map>
+#include <vector>
+
+#include "canvas/body_item.h"
+#include "canvas/canvas_item.h"
+#include "canvas/centres_item.h"
+#include "canvas/chain_item.h"
+#include "canvas/joint_items.h"
+#include "linkage/drawing.h"
+
+namespace linkage::ui {
+
+class Document;
+
+class CanvasScene : public QGraphicsScene {
+  Q_OBJECT
+
+ public:
+  explicit CanvasScene(QObject* parent = nullptr);
+  ~CanvasScene() override;
+
+  void setDocument(Document* doc);
+  Document* document() const { return doc_; }
+
+  // Millimetres per screen pixel: symbols are rebuilt to keep their size on screen.
+  void setPixelSize(double mmPerPx);
+  double pixelSize() const { return ctx_.px; }
+  void setPalette(const QPalette& p);
+  const CanvasStyle& style() const { return ctx_.style; }
+
+  void setCentresVisible(bool on);
+  bool centresVisible() const { return centresVisible_; }
+  void setTracesVisible(bool on);
+  bool tracesVisible() const { return tracesVisible_; }
+
+  // What is drawn now, for fitting the view and for tests.
+  const Drawing& drawing() const { return drawing_; }
+  QRectF mechanismRect() const;
+  CentresItem* centresItem() const { return centres_; }
+  ChainItem* chainItem() const { return chain_; }
+  BodyItem* bodyItem(BodyId id) const;
+  const std::vector<BlockItem*>& blockItems() const { return blocks_; }
+  const std::vector<PinItem*>& pinItems() const { return pins_; }
+  const std::vector<OutputItem*>& outputItems() const { return outputs_; }
+  // Traced path of each output point (scene coordinates), in the order of the outputs.
+  const std::vector<QGraphicsPathItem*>& traceItems() const { return traces_; }
+
+ Q_SIGNALS:
+  // Emitted after the items moved (a new pose or design): views repaint.
+  void redrawn();
+
+ private:
+  void rebuild();
+  void updatePose();
+  void updateTraces();
+  void updateFlags();
+  void clearItems();
+
+  QPointer<Document> doc_;
+  CanvasContext ctx_;
+  Drawing drawing_;
+  std::vector<BodyItem*> bodies_;
+  std::vector<PinItem*> pins_;
+  std::vector<PinItem*> slotPins_;
+  std::vector<BlockItem*> blocks_;
+  std::vector<OutputItem*> outputs_;
+  std::vector<QGraphicsPathItem*> traces_;
+  DriverItem* driver_ = nullptr;
+  CentresItem* centres_ = nullptr;
+  ChainItem* chain_ = nullptr;
+  bool centresVisible_ = false, tracesVisible_ = false;
+  std::vector<QMetaObject::Connection> connections_;
+};
+
+}  // namespace linkage::ui

@@ -1,0 +1,59 @@
+// The canvas: millimetres with y up, zoom at the cursor (wheel), pan (middle drag, or Space and
+// drag), fit to the mechanism, an adaptive grid. Space tapped without a drag is reported
+// (spaceTapped) so that the window can use it for play/pause.
+#pragma once
+
+#include <QGraphicsView>
+
+namespace linkage::ui {
+
+class CanvasScene;
+
+class CanvasView : public QGraphicsView {
+  Q_OBJECT
+
+ public:
+  explicit CanvasView(CanvasScene* scene, QWidget* parent = nullptr);
+  CanvasScene* canvasScene() const { return scene_; }
+
+  void setGridVisible(bool on);
+  bool gridVisible() const { return grid_; }
+  // Pixels per millimetre.
+  double zoom() const;
+  void setZoom(double pxPerMm);
+  void zoomBy(double factor);
+  // The whole mechanism (and its traced paths) in view, with a margin.
+  void fitToMechanism();
+  // The centre whose Kennedy lines are drawn when the mouse is on no centre.
+  void setSelectedCentre(int i, int j);
+
+ Q_SIGNALS:
+  void cursorMoved(QPointF mm);
+  void spaceTapped();
+  void centreHovered(int i, int j);
+
+ protected:
+  bool event(QEvent* e) override;
+  void drawBackground(QPainter* p, const QRectF& rect) override;
+  void wheelEvent(QWheelEvent* e) override;
+  void mousePressEvent(QMouseEvent* e) override;
+  void mouseMoveEvent(QMouseEvent* e) override;
+  void mouseReleaseEvent(QMouseEvent* e) override;
+  void keyPressEvent(QKeyEvent* e) override;
+  void keyReleaseEvent(QKeyEvent* e) override;
+  void resizeEvent(QResizeEvent* e) override;
+  void changeEvent(QEvent* e) override;
+
+ private:
+  void scaleChanged();
+  void panBy(const QPoint& delta);
+
+  CanvasScene* scene_;
+  bool grid_ = true;
+  bool spaceDown_ = false, spaceUsed_ = false, panning_ = false;
+  QPoint lastPan_;
+  std::pair<int, int> selectedCentre_{0, 0}, hoveredCentre_{0, 0};
+  bool fitted_ = false;
+};
+
+}  // namespace linkage::ui

@@ -1,0 +1,15 @@
+// The paths of a mechanism's output points over one revolution of the crank (or between the
+// limit positions of a crank that cannot turn fully), sampled on a copy of the kinematics so the
+// document's pose is left alone.
+#pragma once
+
+#include <vector>
+
+#include "linkage/kinematics.h"
+
+namespace linkage::ui {
+
+// One path per output point, in the order of Mechanism::outputs; world coordinates, mm.
+std::vector<std::vector<Vec2>> tracePaths(const Kinematics& k, double stepDeg = 1.0);
+
+}  // namespace linkage::ui

@@ -1,0 +1,279 @@
+#include "centres/centres_panel.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "document/document.h"
+
+namespace linkage::ui {
+
+namespace {
+
+QString num(double v, int decimals = 3) {
+  return QString::number(v, 'f', decimals);
+}
+
+QString pt(const Vec2& v) {
+  return QStringLiteral("(%1, %2)").arg(num(v.x()), num(v.y()));
+}
+
+QString ic(int i, int j) {
+  return QStringLiteral("IC(%1,%2)").arg(std::min(i, j)).arg(std::max(i, j));
+}
+
+QString bodyName(const Document& d, const InstantCentres& ics, int n) {
+  const Body* b = d.kinematics().mechanism().body(ics.bodyNumbered(n));
+  return b ? QString::fromStdString(b->name) : QStringLiteral("?");
+}
+
+}  // namespace
+
+CentresPanel::CentresPanel(QWidget* parent) : QWidget(parent) {
+  table_ = new QTableWidget(0, 6);
+  table_->setHorizontalHeaderLabels(
+      {tr("i,j"), tr("bodies"), tr("x [mm]"), tr("y [mm]"), tr("at \u221e"), tr("found by")});
+  table_->verticalHeader()->hide();
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  table_->setSelectionMode(QAbstractItemView::SingleSelection);
+  // Columns sized once per design, not per frame: sizing to contents measures every cell's
+  // text, which cost more than the whole solve and paint of a frame.
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+  table_->horizontalHeader()->setStretchLastSection(true);
+  connect(table_, &QTableWidget::itemSelectionChanged, this, [this] {
+    const auto rows = table_->selectionModel()->selectedRows();
+    if (rows.isEmpty()) {
+      emit centreChosen(0, 0);
+      return;
+    }
+    const QStringList ij = table_->item(rows[0].row(), 0)->text().split(',');
+    emit centreChosen(ij.value(0).toInt(), ij.value(1).toInt());
+  });
+
+  point_ = new QComboBox;
+  point_->setToolTip(tr("The point whose velocity the chain of centres finds"));
+  via_ = new QLineEdit;
+  via_->setPlaceholderText(tr("e.g. 3,4 (optional)"));
+  via_->setToolTip(
+      tr("Textbook numbers of the bodies to go through, from the crank to the point's body"));
+  steps_ = new QTextBrowser;
+  steps_->setOpenLinks(false);
+  connect(point_, &QComboBox::currentIndexChanged, this, &CentresPanel::refresh);
+  connect(via_, &QLineEdit::editingFinished, this, &CentresPanel::refresh);
+
+  auto* chainBox = new QWidget;
+  auto* form = new QFormLayout;
+  form->addRow(tr("Velocity of"), point_);
+  form->addRow(tr("Through bodies"), via_);
+  auto* chainLayout = new QVBoxLayout(chainBox);
+  chainLayout->setContentsMargins(0, 0, 0, 0);
+  chainLayout->addLayout(form);
+  chainLayout->addWidget(steps_);
+
+  auto* split = new QSplitter(Qt::Vertical);
+  split->addWidget(table_);
+  split->addWidget(chainBox);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(2, 2, 2, 2);
+  layout->addWidget(split);
+}
+
+void CentresPanel::setDocument(Document* doc) {
+  if (doc_) disconnect(doc_, nullptr, this, nullptr);
+  doc_ = doc;
+  if (doc_) connect(doc_, &Document::designChanged, this, &CentresPanel::rebuildPoints);
+  rebuildPoints();
+}
+
+void CentresPanel::rebuildPoints() {
+  const QString was = point_->currentText();
+  QSignalBlocker block(point_);
+  point_->clear();
+  point_->addItem(tr("(none)"));
+  if (doc_) {
+    const Mechanism& m = doc_->kinematics().mechanism();
+    // Output points first: the ones a user checks.
+    for (PointId p : m.outputs) point_->addItem(QString::fromStdString(m.pointLabel(p)));
+    for (const Point& p : m.points)
+      if (std::find(m.outputs.begin(), m.outputs.end(), p.id) == m.outputs.end())
+        point_->addItem(QString::fromStdString(m.pointLabel(p.id)));
+  }
+  int i = point_->findText(was);
+  if (i < 0 && point_->count() > 1 && doc_ && !doc_->kinematics().mechanism().outputs.empty())
+    i = 1;
+  point_->setCurrentIndex(std::max(i, 0));
+  refresh();
+}
+
+void CentresPanel::showEvent(QShowEvent* e) {
+  QWidget::showEvent(e);
+  refresh();
+}
+
+void CentresPanel::refresh() {
+  if (!isVisible() || !doc_ || !doc_->kinematics().valid()) {
+    if (chain_) {
+      chain_.reset();
+      emit chainChanged();
+    }
+    if (doc_ && !doc_->kinematics().valid()) table_->setRowCount(0);
+    return;
+  }
+  const InstantCentres& ics = doc_->instantCentres();
+  fillTable(ics);
+  fillChain(ics);
+}
+
+void CentresPanel::fillTable(const InstantCentres& ics) {
+  if (!ics.status.ok()) {
+    table_->setRowCount(0);
+    return;
+  }
+  const int n = static_cast<int>(ics.centres.size());
+  if (table_->rowCount() != n) {
+    table_->setRowCount(n);
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < 6; ++c) table_->setItem(r, c, new QTableWidgetItem);
+  }
+  const bool fresh = sizedFor_ != doc_->kinematics().revision();
+  for (int r = 0; r < n; ++r) {
+    const InstantCentre& c = ics.centres[r];
+    const bool inf = c.atInfinity();
+    const QString cells[6] = {
+        QStringLiteral("%1,%2").arg(c.i).arg(c.j),
+        bodyName(*doc_, ics, c.i) + QStringLiteral(" \u2013 ") + bodyName(*doc_, ics, c.j),
+        !c.determined ? QStringLiteral("\u2013")
+        : inf         ? num(c.h.x(), 4)
+                      : num(c.h.x()),
+        !c.determined ? QStringLiteral("\u2013")
+        : inf         ? num(c.h.y(), 4)
+                      : num(c.h.y()),
+        inf ? tr("yes (direction)") : QString(),
+        !c.determined ? tr("none (no relative motion)")
+        : c.status == CentreStatus::Kennedy
+            ? tr("Kennedy, round %1 (via %2)")
+                  .arg(c.round)
+                  .arg(c.lines[0].k ? QString::number(c.lines[0].k) : tr("slot"))
+            : QString::fromUtf8(toString(c.status))};
+    for (int k = 0; k < 6; ++k)
+      if (table_->item(r, k)->text() != cells[k]) table_->item(r, k)->setText(cells[k]);
+  }
+  if (fresh) {
+    table_->resizeColumnsToContents();
+    // Room for coordinates that grow while the mechanism moves (a centre far away).
+    const int wide = table_->fontMetrics().horizontalAdvance(QStringLiteral("-00000.000  "));
+    for (int c : {2, 3}) table_->setColumnWidth(c, std::max(table_->columnWidth(c), wide));
+    sizedFor_ = doc_->kinematics().revision();
+  }
+}
+
+void CentresPanel::fillChain(const InstantCentres& ics) {
+  const Mechanism& m = doc_->kinematics().mechanism();
+  std::optional<PointId> p = m.findPoint(point_->currentText().toStdString());
+  if (point_->currentIndex() <= 0 || !p || !ics.status.ok()) {
+    steps_->clear();
+    if (chain_) {
+      chain_.reset();
+      emit chainChanged();
+    }
+    return;
+  }
+  std::vector<int> via;
+  for (const QString& s : via_->text().split(',', Qt::SkipEmptyParts)) via.push_back(s.toInt());
+  chain_ = velocityChain(doc_->kinematics(), ics, *p, via);
+  emit chainChanged();
+  steps_->setHtml(chainText());
+}
+
+QString CentresPanel::chainText() const {
+  if (!chain_ || !doc_) return QString();
+  const VelocityChain& ch = *chain_;
+  const InstantCentres& ics = doc_->instantCentres();
+  const Mechanism& m = doc_->kinematics().mechanism();
+  const QString label = QString::fromStdString(m.pointLabel(ch.point));
+  if (!ch.status.ok())
+    return tr("<p><b>No chain:</b> %1</p>").arg(QString::fromStdString(ch.status.message));
+  QString s = tr("<p><b>v of %1</b> (body %2) at crank %3&deg;</p><ol>")
+                  .arg(label)
+                  .arg(ch.body)
+                  .arg(num(ics.crankDeg));
+  const BodyMotion& c = ch.crankMotion;
+  s += tr("<li>Crank %1 (%2) turns about %3 = %4 mm: &omega;%1 = %5 rad/s (%6 rpm %7)</li>")
+           .arg(ch.crank)
+           .arg(bodyName(*doc_, ics, ch.crank))
+           .arg(ic(1, ch.crank))
+           .arg(pt(c.pivot))
+           .arg(num(c.omega, 4))
+           .arg(doc_->kinematics().rpm())
+           .arg(c.omega < 0 ? tr("cw") : tr("ccw"));
+  for (const ChainStep& st : ch.steps) {
+    const QString P = ic(st.from, st.to);
+    if (st.centreAtInfinity) {
+      s += tr("<li>%1 is at infinity: bodies %2 and %3 turn alike, &omega;%3 = &omega;%2 = %4 "
+              "rad/s</li>")
+               .arg(P)
+               .arg(st.from)
+               .arg(st.to)
+               .arg(num(st.toMotion.omega, 4));
+      continue;
+    }
+    s += tr("<li>P = %1 = %2 mm").arg(P, pt(st.centre));
+    if (st.fromMotion.kind == BodyMotion::Kind::Turns)
+      s += tr("<br>|%1 P| = %2 mm; v<sub>P</sub> = &omega;%3 &middot; |%1 P| = %4 &times; %2 = "
+              "<b>%5 mm/s</b>")
+               .arg(ic(1, st.from))
+               .arg(num(st.fromArm))
+               .arg(st.from)
+               .arg(num(std::abs(st.fromMotion.omega), 4))
+               .arg(num(st.vP.norm()));
+    else
+      s += tr("<br>v<sub>P</sub> = v%1 = %2 mm/s").arg(st.from).arg(num(st.vP.norm()));
+    s += tr("<br>P is also on body %1 (P = %2): v<sub>P</sub> is the same on both")
+             .arg(st.to)
+             .arg(P);
+    switch (st.toMotion.kind) {
+      case BodyMotion::Kind::Turns:
+        s += tr("<br>body %1 turns about %2 = %3 mm; |%2 P| = %4 mm; &omega;%1 = v<sub>P</sub> / "
+                "|%2 P| = %5 rad/s")
+                 .arg(st.to)
+                 .arg(ic(1, st.to))
+                 .arg(pt(st.toMotion.pivot))
+                 .arg(num(st.toArm))
+                 .arg(num(st.toMotion.omega, 4));
+        break;
+      case BodyMotion::Kind::Translates:
+        s += tr("<br>%1 is at infinity: body %2 translates with v<sub>P</sub>")
+                 .arg(ic(1, st.to))
+                 .arg(st.to);
+        break;
+      case BodyMotion::Kind::AtRest:
+        s += tr("<br>body %1 is at rest at this instant").arg(st.to);
+        break;
+    }
+    s += QStringLiteral("</li>");
+  }
+  if (ch.bodyMotion.kind == BodyMotion::Kind::Turns)
+    s += tr("<li>%1 = %2 mm: |%3 %1| = %4 mm; v = &omega;%5 &middot; %4</li>")
+             .arg(label, pt(ch.position), ic(1, ch.body), num(ch.arm))
+             .arg(ch.body);
+  else if (ch.bodyMotion.kind == BodyMotion::Kind::Translates)
+    s += tr("<li>%1 moves with body %2: v = v%2</li>").arg(label).arg(ch.body);
+  s += QStringLiteral("</ol>");
+  const double diff = (ch.velocity - ch.solverVelocity).norm();
+  s += tr("<table><tr><td>by the chain</td><td><b>%1 mm/s</b></td><td>%2</td></tr>"
+          "<tr><td>exact (solver)</td><td><b>%3 mm/s</b></td><td>%4</td></tr>"
+          "<tr><td>difference</td><td>%5 mm/s</td><td></td></tr></table>")
+           .arg(num(ch.velocity.norm()), pt(ch.velocity), num(ch.solverVelocity.norm()),
+                pt(ch.solverVelocity))
+           .arg(diff, 0, 'g', 3);
+  return s;
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,57 @@
+// The instant-centres panel: every centre at the current crank angle (i, j, bodies, where, at
+// infinity, how it was found), following the animation; and for a chosen point, its velocity by
+// a chain of centres written out step by step as the homework writes it, beside the solver's
+// exact velocity and their difference. Work is done only while the panel is visible.
+#pragma once
+
+#include <QPointer>
+#include <QWidget>
+#include <optional>
+
+#include "linkage/velocity_chain.h"
+
+class QComboBox;
+class QLineEdit;
+class QTableWidget;
+class QTextBrowser;
+
+namespace linkage::ui {
+
+class Document;
+
+class CentresPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit CentresPanel(QWidget* parent = nullptr);
+  void setDocument(Document* doc);
+  // Recomputes what is shown (when visible); the window calls it on every pose change.
+  void refresh();
+  const std::optional<VelocityChain>& chain() const { return chain_; }
+  QTableWidget* table() const { return table_; }
+  QString chainText() const;
+
+ Q_SIGNALS:
+  // A row was chosen: (0, 0) when none.
+  void centreChosen(int i, int j);
+  // The chain changed (or is gone): the canvas draws its distances.
+  void chainChanged();
+
+ protected:
+  void showEvent(QShowEvent* e) override;
+
+ private:
+  void rebuildPoints();
+  void fillTable(const InstantCentres& ics);
+  void fillChain(const InstantCentres& ics);
+
+  QPointer<Document> doc_;
+  QTableWidget* table_;
+  QComboBox* point_;
+  QLineEdit* via_;
+  QTextBrowser* steps_;
+  std::optional<VelocityChain> chain_;
+  std::uint64_t sizedFor_ = 0;  // the revision the columns were sized for
+};
+
+}  // namespace linkage::ui

@@ -1,0 +1,105 @@
+#include "properties/inspector_panel.h"
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include "document/document.h"
+
+namespace linkage::ui {
+
+InspectorPanel::InspectorPanel(QWidget* parent) : QWidget(parent) {
+  summary_ = new QLabel;
+  summary_->setWordWrap(true);
+  summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  summary_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  motion_ = new QTableWidget(0, 4);
+  motion_->setHorizontalHeaderLabels(
+      {tr("point"), tr("position [mm]"), tr("velocity [mm/s]"), tr("acceleration [mm/s\u00b2]")});
+  motion_->verticalHeader()->hide();
+  motion_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  // Columns sized once per design, not per frame: sizing to contents measures every cell's
+  // text, which cost more than the whole solve and paint of a frame.
+  motion_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+  auto* l = new QVBoxLayout(this);
+  l->setContentsMargins(4, 4, 4, 4);
+  l->addWidget(summary_);
+  l->addWidget(new QLabel(tr("<b>Output points</b> (exact, at the current crank angle)")));
+  l->addWidget(motion_, 1);
+}
+
+void InspectorPanel::setDocument(Document* doc) {
+  if (doc_) disconnect(doc_, nullptr, this, nullptr);
+  doc_ = doc;
+  if (doc_) {
+    connect(doc_, &Document::designChanged, this, &InspectorPanel::refreshSummary);
+    connect(doc_, &Document::fileStateChanged, this, &InspectorPanel::refreshSummary);
+  }
+  refreshSummary();
+}
+
+void InspectorPanel::showEvent(QShowEvent* e) {
+  QWidget::showEvent(e);
+  refreshSummary();
+}
+
+QString InspectorPanel::summaryText() const {
+  return summary_->text();
+}
+
+void InspectorPanel::refreshSummary() {
+  if (!doc_) return;
+  const Mechanism& m = doc_->design();
+  const Kinematics& k = doc_->kinematics();
+  QString s =
+      tr("<b>%1</b><br>%2<br>")
+          .arg(QString::fromStdString(m.name).toHtmlEscaped(),
+               doc_->filePath().isEmpty() ? tr("not saved") : doc_->filePath().toHtmlEscaped());
+  s += tr("%1 bodies, %2 joints").arg(m.bodies.size()).arg(m.joints.size());
+  if (k.valid()) {
+    const StructureReport r = k.structure();
+    s += tr("<br>Degrees of freedom: <b>%1</b> (Gruebler %2, rank %3 of %4 equations)")
+             .arg(r.mobility)
+             .arg(r.gruebler)
+             .arg(r.rank)
+             .arg(r.jointEquations);
+    s += tr("<br>Solved %1")
+             .arg(k.closedForm() ? tr("in closed form, group by group")
+                                 : tr("by Newton on all coordinates"));
+    for (const Note& n : k.notes())
+      s += QStringLiteral("<br>\u2022 ") + QString::fromStdString(n.text).toHtmlEscaped();
+  }
+  if (!doc_->solveStatus().ok())
+    s += tr("<br><font color='#d22'><b>Not solved:</b> %1</font>")
+             .arg(QString::fromStdString(doc_->solveStatus().message).toHtmlEscaped());
+  summary_->setText(s);
+  refreshMotion();
+}
+
+void InspectorPanel::refreshMotion() {
+  if (!isVisible() || !doc_) return;
+  const Kinematics& k = doc_->kinematics();
+  const Mechanism& m = k.mechanism();
+  const int n = k.valid() ? static_cast<int>(m.outputs.size()) : 0;
+  const bool resize = motion_->rowCount() != n;
+  if (resize) {
+    motion_->setRowCount(n);
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < 4; ++c) motion_->setItem(r, c, new QTableWidgetItem);
+  }
+  auto pair = [](const Vec2& v) {
+    if (!v.allFinite()) return QStringLiteral("\u2013");
+    return QStringLiteral("%1, %2").arg(v.x(), 0, 'f', 3).arg(v.y(), 0, 'f', 3);
+  };
+  for (int r = 0; r < n; ++r) {
+    const Kinematics::PointMotion pm = k.motion(m.outputs[r]);
+    motion_->item(r, 0)->setText(QString::fromStdString(m.pointLabel(m.outputs[r])));
+    motion_->item(r, 1)->setText(pair(pm.position));
+    motion_->item(r, 2)->setText(pair(pm.velocity));
+    motion_->item(r, 3)->setText(pair(pm.acceleration));
+  }
+  if (resize) motion_->resizeColumnsToContents();
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,38 @@
+// The inspector: what the mechanism is (name, file, structure, degrees of freedom, how it is
+// solved, the solver's notes and any failure, with its place) and where its output points are
+// now: position, velocity and acceleration, exact, following the animation while visible.
+#pragma once
+
+#include <QPointer>
+#include <QWidget>
+
+class QLabel;
+class QTableWidget;
+
+namespace linkage::ui {
+
+class Document;
+
+class InspectorPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit InspectorPanel(QWidget* parent = nullptr);
+  void setDocument(Document* doc);
+  // Moves the readout to the current pose (when visible).
+  void refreshMotion();
+  QTableWidget* motionTable() const { return motion_; }
+  QString summaryText() const;
+
+ protected:
+  void showEvent(QShowEvent* e) override;
+
+ private:
+  void refreshSummary();
+
+  QPointer<Document> doc_;
+  QLabel* summary_;
+  QTableWidget* motion_;
+};
+
+}  // namespace linkage::ui

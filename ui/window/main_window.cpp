@@ -1,0 +1,267 @@
+#include "window/main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMimeData>
+#include <QSettings>
+#include <QStatusBar>
+#include <QStyleFactory>
+#include <QToolBar>
+#include <QUndoView>
+
+#include "animation/animator.h"
+#include "animation/crank_bar.h"
+#include "canvas/canvas_scene.h"
+#include "canvas/canvas_view.h"
+#include "centres/centres_panel.h"
+#include "document/document.h"
+#include "properties/inspector_panel.h"
+
+namespace linkage::ui {
+
+namespace {
+QList<MainWindow*>& openWindows() {
+  static QList<MainWindow*> w;
+  return w;
+}
+}  // namespace
+
+QList<MainWindow*> MainWindow::windows() {
+  return openWindows();
+}
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+  setAttribute(Qt::WA_DeleteOnClose);
+  setAcceptDrops(true);
+  openWindows().append(this);
+  doc_ = new Document(this);
+  scene_ = new CanvasScene(this);
+  view_ = new CanvasView(scene_, this);
+  animator_ = new Animator(this);
+  setCentralWidget(view_);
+  createActions();
+  createDocks();
+  createMenus();
+  createToolBars();
+  createStatusBar();
+  connectDocument();
+  readSettings();
+  updateTitle();
+  updateStatus();
+}
+
+MainWindow::~MainWindow() {
+  openWindows().removeAll(this);
+}
+
+QAction* MainWindow::makeAction(const QString& name, const QString& text, const QKeySequence& key,
+                                const QString& tip) {
+  auto* a = new QAction(text, this);
+  a->setObjectName(name);
+  if (!key.isEmpty()) a->setShortcut(key);
+  a->setStatusTip(tip);
+  a->setToolTip(key.isEmpty() ? text
+                              : QStringLiteral("%1 (%2)").arg(text).arg(
+                                    key.toString(QKeySequence::NativeText)));
+  a->setToolTip(a->toolTip().remove('&'));
+  addAction(a);
+  return a;
+}
+
+QAction* MainWindow::action(const QString& objectName) const {
+  return findChild<QAction*>(objectName);
+}
+
+QDockWidget* MainWindow::dock(const QString& objectName) const {
+  return findChild<QDockWidget*>(objectName);
+}
+
+void MainWindow::connectDocument() {
+  scene_->setDocument(doc_);
+  animator_->setDocument(doc_);
+  crankBar_->setDocument(doc_);
+  centres_->setDocument(doc_);
+  inspector_->setDocument(doc_);
+  history_->setStack(doc_->undoStack());
+  connect(doc_, &Document::fileStateChanged, this, &MainWindow::updateTitle);
+  connect(doc_, &Document::designChanged, this, &MainWindow::updateStatus);
+  connect(doc_, &Document::poseChanged, this, [this] {
+    updateStatus();
+    centres_->refresh();
+    inspector_->refreshMotion();
+  });
+  connect(centres_, &CentresPanel::chainChanged, this,
+          [this] { scene_->chainItem()->setChain(centres_->chain()); });
+  connect(centres_, &CentresPanel::centreChosen, view_, &CanvasView::setSelectedCentre);
+  connect(animator_, &Animator::message, this, &MainWindow::showMessage);
+  connect(animator_, &Animator::playingChanged, this, [this](bool on) {
+    QAction* play = action("play");
+    play->setChecked(on);
+    play->setText(on ? tr("&Pause") : tr("&Play"));
+    if (on) showMessage(QString(), false);
+  });
+  connect(view_, &CanvasView::cursorMoved, this, [this](QPointF mm) {
+    cursor_->setText(tr("x %1  y %2 mm").arg(mm.x(), 0, 'f', 2).arg(mm.y(), 0, 'f', 2));
+  });
+  connect(view_, &CanvasView::spaceTapped, action("play"), &QAction::trigger);
+}
+
+void MainWindow::createDocks() {
+  auto addDock = [this](const QString& name, const QString& title, QWidget* w,
+                        Qt::DockWidgetArea area) {
+    auto* d = new QDockWidget(title, this);
+    d->setObjectName(name);
+    d->setWidget(w);
+    addDockWidget(area, d);
+    return d;
+  };
+  inspector_ = new InspectorPanel;
+  addDock("properties", tr("Properties"), inspector_, Qt::RightDockWidgetArea);
+  centres_ = new CentresPanel;
+  QDockWidget* c = addDock("centres", tr("Instant Centres"), centres_, Qt::RightDockWidgetArea);
+  history_ = new QUndoView;
+  history_->setEmptyLabel(tr("<opened>"));
+  QDockWidget* h = addDock("history", tr("History"), history_, Qt::LeftDockWidgetArea);
+  h->hide();
+  // Work only while shown: the panels compute when they become visible.
+  connect(c, &QDockWidget::visibilityChanged, this, [this](bool) { updateWork(); });
+}
+
+void MainWindow::updateWork() {
+  // Accelerations only while something shows them (the inspector's readout).
+  doc_->setAccelerationsWanted(inspector_->isVisible());
+  centres_->refresh();
+}
+
+void MainWindow::createStatusBar() {
+  message_ = new QLabel;
+  message_->setTextFormat(Qt::PlainText);
+  message_->setMinimumWidth(100);
+  cursor_ = new QLabel;
+  crank_ = new QLabel;
+  dof_ = new QLabel;
+  for (QLabel* l : {cursor_, crank_, dof_}) l->setMinimumWidth(90);
+  cursor_->setMinimumWidth(170);
+  statusBar()->addWidget(message_, 1);
+  statusBar()->addPermanentWidget(cursor_);
+  statusBar()->addPermanentWidget(crank_);
+  statusBar()->addPermanentWidget(dof_);
+}
+
+void MainWindow::showMessage(const QString& text, bool warning) {
+  message_->setText(text);
+  message_->setToolTip(text);
+  QPalette p = message_->palette();
+  p.setColor(QPalette::WindowText,
+             warning ? QColor(200, 30, 20) : palette().color(QPalette::WindowText));
+  message_->setPalette(p);
+}
+
+void MainWindow::updateStatus() {
+  const Kinematics& k = doc_->kinematics();
+  crank_->setText(k.valid() ? tr("crank %1\u00b0").arg(doc_->crankDeg(), 0, 'f', 2)
+                            : tr("crank \u2013"));
+  if (k.valid()) {
+    const StructureReport r = k.structure();
+    dof_->setText(tr("DOF %1").arg(r.mobility));
+    dof_->setToolTip(tr("Degrees of freedom: %1 (Gruebler's count %2; rank %3)")
+                         .arg(r.mobility)
+                         .arg(r.gruebler)
+                         .arg(r.rank));
+  } else {
+    dof_->setText(tr("DOF \u2013"));
+  }
+  if (!doc_->solveStatus().ok())
+    showMessage(QString::fromStdString(doc_->solveStatus().message), true);
+}
+
+void MainWindow::updateTitle() {
+  setWindowTitle(QStringLiteral("%1[*] \u2014 Linkage").arg(doc_->displayName()));
+  setWindowModified(doc_->isModified());
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+  animator_->setPlaying(false);
+  if (!maybeSave()) {
+    e->ignore();
+    return;
+  }
+  writeSettings();
+  e->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+  if (e->mimeData()->hasUrls() && e->mimeData()->urls().value(0).isLocalFile())
+    e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+  const QString path = e->mimeData()->urls().value(0).toLocalFile();
+  if (path.isEmpty()) return;
+  e->acceptProposedAction();
+  if (maybeSave()) openFile(path);
+}
+
+void MainWindow::readSettings() {
+  QSettings s;
+  s.beginGroup(QStringLiteral("window"));
+  if (!restoreGeometry(s.value(QStringLiteral("geometry")).toByteArray())) resize(1280, 800);
+  restoreState(s.value(QStringLiteral("state")).toByteArray());
+  s.endGroup();
+  s.beginGroup(QStringLiteral("view"));
+  action("showGrid")->setChecked(s.value(QStringLiteral("grid"), true).toBool());
+  action("showCentres")->setChecked(s.value(QStringLiteral("centres"), false).toBool());
+  action("showTraces")->setChecked(s.value(QStringLiteral("traces"), true).toBool());
+  action("darkPalette")->setChecked(s.value(QStringLiteral("dark"), false).toBool());
+  crankBar_->setSpeedIndex(s.value(QStringLiteral("speed"), 3).toInt());
+  animator_->setIncrementDeg(s.value(QStringLiteral("increment"), 1.0).toDouble());
+  s.endGroup();
+}
+
+void MainWindow::writeSettings() const {
+  QSettings s;
+  s.beginGroup(QStringLiteral("window"));
+  s.setValue(QStringLiteral("geometry"), saveGeometry());
+  s.setValue(QStringLiteral("state"), saveState());
+  s.endGroup();
+  s.beginGroup(QStringLiteral("view"));
+  s.setValue(QStringLiteral("grid"), action("showGrid")->isChecked());
+  s.setValue(QStringLiteral("centres"), action("showCentres")->isChecked());
+  s.setValue(QStringLiteral("traces"), action("showTraces")->isChecked());
+  s.setValue(QStringLiteral("dark"), action("darkPalette")->isChecked());
+  s.setValue(QStringLiteral("increment"), animator_->incrementDeg());
+  s.endGroup();
+}
+
+void MainWindow::setDarkPalette(bool on) {
+  // One palette for the whole application: the canvas, docks and plots follow it.
+  if (on) {
+    QPalette p;
+    p.setColor(QPalette::Window, QColor(45, 45, 48));
+    p.setColor(QPalette::WindowText, QColor(225, 225, 225));
+    p.setColor(QPalette::Base, QColor(30, 30, 32));
+    p.setColor(QPalette::AlternateBase, QColor(45, 45, 48));
+    p.setColor(QPalette::Text, QColor(230, 230, 230));
+    p.setColor(QPalette::Button, QColor(55, 55, 58));
+    p.setColor(QPalette::ButtonText, QColor(225, 225, 225));
+    p.setColor(QPalette::Highlight, QColor(60, 130, 220));
+    p.setColor(QPalette::HighlightedText, Qt::white);
+    p.setColor(QPalette::ToolTipBase, QColor(60, 60, 64));
+    p.setColor(QPalette::ToolTipText, QColor(230, 230, 230));
+    p.setColor(QPalette::PlaceholderText, QColor(150, 150, 150));
+    QApplication::setPalette(p);
+  } else {
+    QApplication::setPalette(QApplication::style()->standardPalette());
+  }
+  for (MainWindow* w : windows()) {
+    w->action("darkPalette")->setChecked(on);
+    w->scene_->setPalette(w->view_->palette());
+    w->view_->resetCachedContent();
+  }
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,100 @@
+// One window per open document: the canvas in the middle; docks for the properties
+// (inspector), the instant centres and the plots; the file, view and animation actions in menus
+// and toolbars (each with its shortcut and status tip); the crank scrubber; the status bar with
+// the cursor position, the crank angle and the degrees of freedom. Several windows can be open
+// at once (File > New Window), so that two inversions can be compared side by side.
+#pragma once
+
+#include <QMainWindow>
+#include <QPointer>
+
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QUndoView;
+
+namespace linkage::ui {
+
+class Animator;
+class CanvasScene;
+class CanvasView;
+class CentresPanel;
+class CrankBar;
+class Document;
+class InspectorPanel;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  Document* document() const { return doc_; }
+  CanvasView* canvas() const { return view_; }
+  CanvasScene* scene() const { return scene_; }
+  Animator* animator() const { return animator_; }
+  CentresPanel* centresPanel() const { return centres_; }
+  InspectorPanel* inspector() const { return inspector_; }
+  CrankBar* crankBar() const { return crankBar_; }
+  QDockWidget* dock(const QString& objectName) const;
+  // An action by its object name ("play", "open", "showCentres", ...), for tests and scripts.
+  QAction* action(const QString& objectName) const;
+  // Every open main window.
+  static QList<MainWindow*> windows();
+
+  // Opens a file in this window; on failure shows the reader's message in a dialog (unless
+  // `error` is given, then it is returned there) and leaves the document as it was. No prompt
+  // for unsaved changes here: callers ask first (maybeSave).
+  bool openFile(const QString& path, QString* error = nullptr);
+  // An example by name (resources/examples), opened untitled under its name.
+  bool openExample(const QString& name, QString* error = nullptr);
+  // A path or an example's name, as `linkage [FILE | EXAMPLE-NAME]` takes it.
+  bool openNameOrPath(const QString& arg, QString* error = nullptr);
+  // Asks what to do with unsaved changes; true when it is all right to go on.
+  bool maybeSave();
+  bool save();
+  bool saveAs();
+
+ protected:
+  void closeEvent(QCloseEvent* e) override;
+  void dragEnterEvent(QDragEnterEvent* e) override;
+  void dropEvent(QDropEvent* e) override;
+
+ private:
+  void createActions();
+  void createMenus();
+  void createToolBars();
+  void createDocks();
+  void createStatusBar();
+  void connectDocument();
+  QAction* makeAction(const QString& name, const QString& text, const QKeySequence& key,
+                      const QString& tip);
+  void fillRecentMenu();
+  void fillExamplesMenu();
+  void addRecent(const QString& path);
+  void updateTitle();
+  void updateStatus();
+  void updateWork();
+  void showMessage(const QString& text, bool warning);
+  void readSettings();
+  void writeSettings() const;
+  void setDarkPalette(bool on);
+
+  Document* doc_;
+  CanvasScene* scene_;
+  CanvasView* view_;
+  Animator* animator_;
+  CrankBar* crankBar_ = nullptr;
+  CentresPanel* centres_ = nullptr;
+  InspectorPanel* inspector_ = nullptr;
+  QUndoView* history_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  QMenu* examplesMenu_ = nullptr;
+  QLabel* message_ = nullptr;
+  QLabel* cursor_ = nullptr;
+  QLabel* crank_ = nullptr;
+  QLabel* dof_ = nullptr;
+};
+
+}  // namespace linkage::ui

@@ -1,0 +1,141 @@
+// Opening and saving: files, examples, recent files, drops; the prompt for unsaved changes.
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+
+#include "canvas/canvas_view.h"
+#include "document/document.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/model_lookup.h"
+#include "window/main_window.h"
+
+namespace linkage::ui {
+
+namespace {
+constexpr int kMaxRecent = 10;
+const char* kRecentKey = "recentFiles";
+}  // namespace
+
+bool MainWindow::openFile(const QString& path, QString* error) {
+  QString why;
+  if (!doc_->open(path, &why)) {
+    if (error)
+      *error = why;
+    else
+      QMessageBox::critical(this, tr("Cannot Open"), why);
+    return false;
+  }
+  addRecent(QFileInfo(path).absoluteFilePath());
+  view_->fitToMechanism();
+  return true;
+}
+
+bool MainWindow::openExample(const QString& name, QString* error) {
+  const std::optional<std::string> path =
+      resolveModel(name.toStdString(), QApplication::applicationFilePath().toStdString());
+  LoadResult r = path ? loadMechanismFile(*path) : LoadResult{};
+  if (!r.mechanism) {
+    const QString why =
+        path ? QString::fromStdString(r.error) : tr("no example named \"%1\"").arg(name);
+    if (error)
+      *error = why;
+    else
+      QMessageBox::critical(this, tr("Cannot Open"), why);
+    return false;
+  }
+  doc_->setContents(std::move(*r.mechanism), QString(), name);
+  view_->fitToMechanism();
+  return true;
+}
+
+bool MainWindow::openNameOrPath(const QString& arg, QString* error) {
+  if (QFileInfo::exists(arg)) return openFile(arg, error);
+  return openExample(arg, error);
+}
+
+bool MainWindow::maybeSave() {
+  if (!doc_->isModified()) return true;
+  const auto answer = QMessageBox::warning(
+      this, tr("Unsaved Changes"),
+      tr("\"%1\" has changes that are not saved. Save them?").arg(doc_->displayName()),
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+  if (answer == QMessageBox::Save) return save();
+  return answer == QMessageBox::Discard;
+}
+
+bool MainWindow::save() {
+  if (doc_->filePath().isEmpty()) return saveAs();
+  QString why;
+  if (!doc_->save(doc_->filePath(), &why)) {
+    QMessageBox::critical(this, tr("Cannot Save"), why);
+    return false;
+  }
+  return true;
+}
+
+bool MainWindow::saveAs() {
+  QString start = doc_->filePath();
+  if (start.isEmpty())
+    start = QDir::home().filePath(doc_->displayName().replace(' ', '-') +
+                                  QStringLiteral(".linkage.json"));
+  QFileDialog dialog(this, tr("Save Mechanism As"), start,
+                     tr("Mechanisms (*.linkage.json);;All files (*)"));
+  dialog.setAcceptMode(QFileDialog::AcceptSave);
+  dialog.setDefaultSuffix(QStringLiteral("linkage.json"));
+  if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty()) return false;
+  const QString path = dialog.selectedFiles().first();
+  QString why;
+  if (!doc_->save(path, &why)) {
+    QMessageBox::critical(this, tr("Cannot Save"), why);
+    return false;
+  }
+  addRecent(QFileInfo(path).absoluteFilePath());
+  return true;
+}
+
+void MainWindow::addRecent(const QString& path) {
+  QSettings s;
+  QStringList files = s.value(kRecentKey).toStringList();
+  files.removeAll(path);
+  files.prepend(path);
+  while (files.size() > kMaxRecent) files.removeLast();
+  s.setValue(kRecentKey, files);
+}
+
+void MainWindow::fillRecentMenu() {
+  recentMenu_->clear();
+  const QStringList files = QSettings().value(kRecentKey).toStringList();
+  for (const QString& f : files) {
+    QAction* a = recentMenu_->addAction(QFileInfo(f).fileName());
+    a->setStatusTip(f);
+    a->setEnabled(QFileInfo::exists(f));
+    connect(a, &QAction::triggered, this, [this, f] {
+      if (maybeSave()) openFile(f);
+    });
+  }
+  if (files.isEmpty()) recentMenu_->addAction(tr("(none)"))->setEnabled(false);
+  recentMenu_->addSeparator();
+  connect(recentMenu_->addAction(tr("Clear List")), &QAction::triggered, this,
+          [] { QSettings().remove(kRecentKey); });
+}
+
+void MainWindow::fillExamplesMenu() {
+  examplesMenu_->clear();
+  for (const std::string& name : listExamples(QApplication::applicationFilePath().toStdString())) {
+    const QString n = QString::fromStdString(name);
+    QAction* a = examplesMenu_->addAction(n);
+    a->setObjectName(QStringLiteral("example:") + n);
+    a->setStatusTip(tr("Open the example %1").arg(n));
+    connect(a, &QAction::triggered, this, [this, n] {
+      if (maybeSave()) openExample(n);
+    });
+  }
+  if (examplesMenu_->isEmpty()) examplesMenu_->addAction(tr("(none found)"))->setEnabled(false);
+}
+
+}  // namespace linkage::ui
