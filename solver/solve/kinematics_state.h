@@ -55,6 +55,8 @@ struct KinematicsState {
   // Did a step stay on the branch it started from? (tryStep; see there.)
   bool sameBranch(const Snapshot& from, const Snapshot& to, double h) const;
   Status explainFailure(double phiFailed, bool crossing);
+  // At a singular position q: the bodies and joints there, added to s (and its message).
+  void namePlace(const Eigen::VectorXd& q, Status& s) const;
   std::string bodyList(const std::vector<int>& bodies) const;
   const Snapshot& coordinates(const Snapshot& s) const;
   double crankDeg() const;

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include <Eigen/SVD>
+#include <algorithm>
+
 #include "solve/kinematics_state.h"
 
 namespace linkage {
@@ -198,6 +201,7 @@ Status KinematicsState::trackGeneral(double target) {
               "singular position at crank angle " + deg((target - sys.startRad) / kDeg) +
                   ": positions are solved but velocities are not determined by the driver there");
           s.crankDeg = (target - sys.startRad) / kDeg;
+          namePlace(coordinates(singular).q, s);
           return s;
         }
         [[fallthrough]];
@@ -211,6 +215,37 @@ Status KinematicsState::trackGeneral(double target) {
       return explainFailure(target, crossing);
     }
   }
+}
+
+void KinematicsState::namePlace(const Eigen::VectorXd& q, Status& s) const {
+  // The bodies that can move with the crank held at a singular position (the direction J is
+  // blind to, from a singular value decomposition of J with its angle columns scaled by L so
+  // that every body's entries are lengths), and the joints on them: the links in line.
+  if (sys.nCoords() == 0 || sys.nCoords() > 300) return;  // a dense SVD: small systems only
+  std::vector<BodyView> views;
+  makeViews(sys, q, nullptr, views);
+  const std::vector<int>& rows = newton.rowMap();
+  const int n =
+      static_cast<int>(std::count_if(rows.begin(), rows.end(), [](int r) { return r >= 0; }));
+  Eigen::MatrixXd J(n, sys.nCoords());
+  evalJacobian(sys, views, rows, J);
+  for (int k = 0; k < sys.nBodies; ++k) J.col(3 * k + 2) /= sys.size;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
+  const Eigen::VectorXd v = svd.matrixV().col(sys.nCoords() - 1);
+  const double big = v.cwiseAbs().maxCoeff();
+  std::vector<int> moving;
+  for (int k = 0; k < sys.nBodies; ++k)
+    if (v.segment<3>(3 * k).cwiseAbs().maxCoeff() > 0.1 * big) {
+      moving.push_back(k);
+      s.bodies.push_back(sys.bodyIds[k]);
+    }
+  auto isMoving = [&](int b) { return std::find(moving.begin(), moving.end(), b) != moving.end(); };
+  for (const Constraint& c : sys.cons)
+    if (c.joint >= 0 && c.kind != RowKind::Driver && c.kind != RowKind::Hold &&
+        (isMoving(c.bi) || isMoving(c.bj)) &&
+        std::find(s.joints.begin(), s.joints.end(), sys.jointIds[c.joint]) == s.joints.end())
+      s.joints.push_back(sys.jointIds[c.joint]);
+  if (!moving.empty()) s.message += " (" + bodyList(moving) + " can move with the crank held)";
 }
 
 Status KinematicsState::explainFailure(double phiFailed, bool crossing) {
@@ -249,6 +284,7 @@ Status KinematicsState::explainFailure(double phiFailed, bool crossing) {
     crossing = newton.nearness() < 1e-3;
   }
   if (crossing) {
+    namePlace(coordinates(reg).q, s);
     s.code = StatusCode::Singular;
     s.message = "cannot follow the motion past crank angle " + deg(reached) + " towards " +
                 deg(wanted) +

@@ -1,6 +1,8 @@
 // The document: files in and out, edits kept when the solver refuses them, exact undo.
 #include <gtest/gtest.h>
 
+#include "ui_test.h"
+
 #include <QTemporaryDir>
 
 #include "document/document.h"

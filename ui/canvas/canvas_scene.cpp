@@ -98,11 +98,15 @@ QRectF CanvasScene::mechanismRect() const {
 }
 
 void CanvasScene::clearItems() {
+  // Top-level items only, collected first: deleting one deletes its children (labels), which
+  // items() also lists.
+  QList<QGraphicsItem*> doomed;
   for (QGraphicsItem* i : items())
-    if (i != centres_ && i != chain_ && !i->parentItem()) {
-      removeItem(i);
-      delete i;
-    }
+    if (i != centres_ && i != chain_ && !i->parentItem()) doomed.append(i);
+  for (QGraphicsItem* i : doomed) {
+    removeItem(i);
+    delete i;
+  }
   bodies_.clear();
   pins_.clear();
   slotPins_.clear();

@@ -24,7 +24,7 @@ CanvasView::CanvasView(CanvasScene* scene, QWidget* parent)
   setCacheMode(CacheBackground);
   setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  setTransformationAnchor(AnchorUnderMouse);
+  setTransformationAnchor(NoAnchor);
   setResizeAnchor(AnchorViewCenter);
   setMouseTracking(true);
   setFocusPolicy(Qt::StrongFocus);
@@ -44,10 +44,15 @@ void CanvasView::setZoom(double pxPerMm) {
   scaleChanged();
 }
 
-void CanvasView::zoomBy(double factor) {
+void CanvasView::zoomBy(double factor, std::optional<QPoint> anchor) {
+  // The point under the anchor (the view's centre by default) stays where it is.
+  const QPoint at = anchor.value_or(viewport()->rect().center());
+  const QPointF before = mapToScene(at);
   const double z = std::clamp(zoom() * factor, kMinZoom, kMaxZoom);
   scale(z / zoom(), z / zoom());
   scaleChanged();
+  const QPointF drift = mapToScene(at) - before;
+  centerOn(mapToScene(viewport()->rect().center()) - drift);
 }
 
 void CanvasView::scaleChanged() {
@@ -113,7 +118,10 @@ void CanvasView::drawBackground(QPainter* p, const QRectF& rect) {
 
 void CanvasView::wheelEvent(QWheelEvent* e) {
   const double steps = e->angleDelta().y() / 120.0;
-  if (steps != 0) zoomBy(std::pow(1.2, steps));
+  if (steps != 0) {
+    // At the cursor (the view's own anchor follows the last mouse move, not the wheel).
+    zoomBy(std::pow(1.2, steps), e->position().toPoint());
+  }
   e->accept();
 }
 

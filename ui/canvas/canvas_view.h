@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QGraphicsView>
+#include <optional>
 
 namespace linkage::ui {
 
@@ -21,7 +22,8 @@ class CanvasView : public QGraphicsView {
   // Pixels per millimetre.
   double zoom() const;
   void setZoom(double pxPerMm);
-  void zoomBy(double factor);
+  // Zooms about a viewport point (the view's centre when none is given).
+  void zoomBy(double factor, std::optional<QPoint> anchor = std::nullopt);
   // The whole mechanism (and its traced paths) in view, with a margin.
   void fitToMechanism();
   // The centre whose Kennedy lines are drawn when the mouse is on no centre.

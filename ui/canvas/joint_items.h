@@ -15,6 +15,7 @@ class PinItem : public CanvasItem {
   JointId joint() const { return joint_; }
   void setAt(const Vec2& at);
   void setFlagged(bool on);
+  bool flagged() const { return flagged_; }
   QRectF boundingRect() const override;
   void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
 
@@ -31,6 +32,7 @@ class BlockItem : public CanvasItem {
   BodyId body() const { return body_; }
   void setPlacement(const Vec2& at, const Vec2& direction);
   void setFlagged(bool on);
+  bool flagged() const { return flagged_; }
   QRectF boundingRect() const override;
   void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
 

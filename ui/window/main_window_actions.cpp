@@ -40,7 +40,7 @@ void MainWindow::createActions() {
           });
   connect(makeAction("save", tr("&Save"), QKeySequence::Save, tr("Save the mechanism")),
           &QAction::triggered, this, &MainWindow::save);
-  connect(makeAction("saveAs", tr("Save &As..."), QKeySequence::SaveAs,
+  connect(makeAction("saveAs", tr("Save &As..."), QKeySequence(tr("Ctrl+Shift+S")),
                      tr("Save the mechanism under another name")),
           &QAction::triggered, this, &MainWindow::saveAs);
   connect(

@@ -1,0 +1,176 @@
+// The canvas draws what the solver says: every item where the solver has its point, at every
+// frame of a revolution of every example; the overlay's centres are the solver's; the view is in
+// millimetres with y up, zooms at the cursor and fits the mechanism.
+#include <gtest/gtest.h>
+
+#include "ui_test.h"
+
+#include <QGraphicsPathItem>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "animation/animator.h"
+#include "canvas/canvas_scene.h"
+#include "canvas/canvas_view.h"
+#include "document/document.h"
+#include "linkage/io/model_lookup.h"
+#include "window/main_window.h"
+
+namespace linkage::ui {
+namespace {
+
+Vec2 fromQt(const QPointF& p) {
+  return Vec2(p.x(), p.y());
+}
+
+// Every body item maps each of its sketch points to the solver's position; pins, blocks and
+// outputs sit where the solver has their points.
+void expectDrawnAtSolver(const CanvasScene& s, const Kinematics& k, const std::string& where) {
+  const Mechanism& m = k.mechanism();
+  for (const Point& p : m.points) {
+    const BodyItem* b = s.bodyItem(p.body);
+    ASSERT_TRUE(b) << where;
+    const Vec2 drawn = fromQt(b->sceneTransform().map(QPointF(p.pos.x(), p.pos.y())));
+    EXPECT_LT((drawn - k.position(p.id)).norm(), 1e-9) << where << " " << m.pointLabel(p.id);
+  }
+  for (const PinItem* pin : s.pinItems())
+    EXPECT_LT((fromQt(pin->pos()) - k.position(m.joint(pin->joint())->a)).norm(), 1e-9) << where;
+  for (const BlockItem* b : s.blockItems()) {
+    const Joint* j = m.joint(b->joint());
+    EXPECT_LT((fromQt(b->pos()) - k.position(j->a)).norm(), 1e-9) << where;
+    const Kinematics::Segment slot = k.slotEnds(j->slot);
+    const Vec2 along = (slot.p1 - slot.p0).normalized();
+    const double a = b->rotation() * M_PI / 180;
+    EXPECT_LT(std::abs(cross(Vec2(std::cos(a), std::sin(a)), along)), 1e-9) << where;
+  }
+  ASSERT_EQ(s.outputItems().size(), m.outputs.size());
+  for (const OutputItem* o : s.outputItems())
+    EXPECT_LT((fromQt(o->pos()) - k.position(o->point())).norm(), 1e-9) << where;
+}
+
+TEST(Canvas, EveryExampleIsDrawnAtTheSolversPositionsThroughARevolution) {
+  const std::vector<std::string> names = listExamples();
+  ASSERT_GE(names.size(), 5u);
+  for (const std::string& name : names) {
+    MainWindow w;
+    w.resize(1000, 700);
+    QString why;
+    ASSERT_TRUE(w.openExample(QString::fromStdString(name), &why)) << why.toStdString();
+    Document* d = w.document();
+    ASSERT_TRUE(d->solved()) << name << ": " << d->solveStatus().message;
+    w.action("showCentres")->setChecked(true);
+    for (int f = 0; f <= 72; ++f) {
+      const Status st = d->setCrankDeg(5.0 * f);
+      ASSERT_TRUE(st.ok()) << name << " " << st.message;
+      expectDrawnAtSolver(*w.scene(), d->kinematics(), name + " at " + std::to_string(5 * f));
+    }
+  }
+}
+
+TEST(Canvas, OverlayShowsTheSolversCentres) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
+  Document* d = w.document();
+  CanvasScene* s = w.scene();
+  EXPECT_TRUE(s->centresItem()->centres().empty());  // hidden: nothing computed
+  w.action("showCentres")->setChecked(true);
+  for (double deg : {0.0, 33.0, 190.0}) {
+    ASSERT_TRUE(d->setCrankDeg(deg).ok());
+    const InstantCentres ref = computeInstantCentres(d->kinematics());
+    const auto& shown = s->centresItem()->centres();
+    ASSERT_EQ(shown.size(), ref.centres.size());
+    ASSERT_EQ(shown.size(), 15u);
+    for (size_t i = 0; i < shown.size(); ++i) {
+      const InstantCentre& c = ref.centres[i];
+      EXPECT_EQ(shown[i].i, c.i);
+      EXPECT_EQ(shown[i].j, c.j);
+      EXPECT_EQ(shown[i].determined, c.determined);
+      EXPECT_EQ(shown[i].atInfinity, c.atInfinity());
+      EXPECT_EQ(shown[i].status, c.status);
+      if (c.determined) EXPECT_LT((shown[i].at - Vec2(c.h.x(), c.h.y())).norm(), 1e-12);
+    }
+  }
+  w.action("showCentres")->setChecked(false);
+  EXPECT_FALSE(s->centresItem()->isVisible());
+}
+
+TEST(Canvas, ViewIsMillimetresWithYUpAndZoomsAtTheCursor) {
+  MainWindow w;
+  w.resize(1000, 700);
+  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
+  w.show();
+  CanvasView* v = w.canvas();
+  v->fitToMechanism();
+  // y up: a point higher in millimetres is higher on screen.
+  const QPoint low = v->mapFromScene(QPointF(0, 0)), high = v->mapFromScene(QPointF(0, 10));
+  EXPECT_LT(high.y(), low.y());
+  EXPECT_EQ(high.x(), low.x());
+  // The whole mechanism is in view after a fit.
+  const QRectF r = w.scene()->mechanismRect();
+  const QRect vr = v->viewport()->rect();
+  for (const QPointF& c : {r.topLeft(), r.bottomRight()})
+    EXPECT_TRUE(vr.contains(v->mapFromScene(c))) << c.x() << "," << c.y();
+  // Wheel zoom keeps the point under the cursor where it is.
+  const QPoint at(300, 250);
+  const QPointF before = v->mapToScene(at);
+  const double z = v->zoom();
+  QWheelEvent wheel(QPointF(at), v->viewport()->mapToGlobal(QPointF(at)), QPoint(), QPoint(0, 120),
+                    Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(v->viewport(), &wheel);
+  EXPECT_NEAR(v->zoom(), z * 1.2, 1e-9 * z);
+  EXPECT_LT((fromQt(v->mapToScene(at)) - fromQt(before)).norm(), 1.5 / v->zoom());
+  // Symbols keep their size on screen: the scene knows millimetres per pixel.
+  EXPECT_NEAR(w.scene()->pixelSize(), 1 / v->zoom(), 1e-12);
+}
+
+TEST(Canvas, SpaceTappedPlaysAndSpaceDragPans) {
+  MainWindow w;
+  w.resize(1000, 700);
+  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
+  w.show();
+  CanvasView* v = w.canvas();
+  v->setFocus();
+  QSignalSpy taps(v, &CanvasView::spaceTapped);
+  QTest::keyClick(v, Qt::Key_Space);
+  EXPECT_EQ(taps.count(), 1);
+  EXPECT_TRUE(w.animator()->playing());
+  QTest::keyClick(v, Qt::Key_Space);
+  EXPECT_FALSE(w.animator()->playing());
+  // Held Space with a drag pans, and is no tap.
+  const QPointF centre = v->mapToScene(v->viewport()->rect().center());
+  QTest::keyPress(v, Qt::Key_Space);
+  QTest::mousePress(v->viewport(), Qt::LeftButton, {}, QPoint(200, 200));
+  QMouseEvent move(QEvent::MouseMove, QPointF(260, 230),
+                   v->viewport()->mapToGlobal(QPointF(260, 230)), Qt::NoButton, Qt::LeftButton,
+                   Qt::NoModifier);
+  QApplication::sendEvent(v->viewport(), &move);
+  QTest::mouseRelease(v->viewport(), Qt::LeftButton, {}, QPoint(260, 230));
+  QTest::keyRelease(v, Qt::Key_Space);
+  EXPECT_EQ(taps.count(), 2);
+  EXPECT_FALSE(w.animator()->playing());
+  const QPointF moved = v->mapToScene(v->viewport()->rect().center());
+  EXPECT_NEAR(moved.x() - centre.x(), -60 / v->zoom(), 1.5 / v->zoom());
+  EXPECT_NEAR(moved.y() - centre.y(), 30 / v->zoom(), 1.5 / v->zoom());  // y up
+}
+
+TEST(Canvas, TracedPathsFollowTheOutputPoints) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
+  w.action("showTraces")->setChecked(true);
+  const auto& traces = w.scene()->traceItems();
+  ASSERT_EQ(traces.size(), 1u);
+  const QPainterPath& path = traces[0]->path();
+  ASSERT_GE(path.elementCount(), 360);
+  // Every sampled point of the path is where the coupler point is at that angle.
+  Kinematics k = w.document()->kinematics();
+  for (int i = 0; i <= 360; i += 40) {
+    ASSERT_TRUE(k.moveTo(i).ok());
+    const QPointF e = path.elementAt(i);
+    EXPECT_LT((fromQt(e) - k.position(k.mechanism().outputs[0])).norm(), 1e-9) << i;
+  }
+  w.action("showTraces")->setChecked(false);
+  EXPECT_TRUE(w.scene()->traceItems().empty());
+}
+
+}  // namespace
+}  // namespace linkage::ui
