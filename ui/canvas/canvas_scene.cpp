@@ -92,7 +92,7 @@ BodyItem* CanvasScene::bodyItem(BodyId id) const {
 QRectF CanvasScene::mechanismRect() const {
   if (drawing_.bodies.empty()) return QRectF();
   QRectF r(toQt(drawing_.min), toQt(drawing_.max));
-  r = r.normalized();
+  r = r.normalized().united(extent_);
   for (const QGraphicsPathItem* t : traces_) r = r.united(t->path().boundingRect());
   return r;
 }
@@ -168,6 +168,8 @@ void CanvasScene::rebuild() {
     addItem(item);
     outputs_.push_back(item);
   }
+  const auto [lo, hi] = motionExtent(k);
+  extent_ = QRectF(toQt(lo), toQt(hi)).normalized();
   updateTraces();
   updatePose();
 }

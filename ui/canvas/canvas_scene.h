@@ -40,8 +40,9 @@ class CanvasScene : public QGraphicsScene {
   void setTracesVisible(bool on);
   bool tracesVisible() const { return tracesVisible_; }
 
-  // What is drawn now, for fitting the view and for tests.
+  // What is drawn now, for tests.
   const Drawing& drawing() const { return drawing_; }
+  // What fitting the view shows: the mechanism now and everywhere it goes in a revolution.
   QRectF mechanismRect() const;
   CentresItem* centresItem() const { return centres_; }
   ChainItem* chainItem() const { return chain_; }
@@ -66,6 +67,7 @@ class CanvasScene : public QGraphicsScene {
   QPointer<Document> doc_;
   CanvasContext ctx_;
   Drawing drawing_;
+  QRectF extent_;
   std::vector<BodyItem*> bodies_;
   std::vector<PinItem*> pins_;
   std::vector<PinItem*> slotPins_;

@@ -45,6 +45,7 @@ void CanvasView::setZoom(double pxPerMm) {
 }
 
 void CanvasView::zoomBy(double factor, std::optional<QPoint> anchor) {
+  autoFit_ = false;
   // The point under the anchor (the view's centre by default) stays where it is.
   const QPoint at = anchor.value_or(viewport()->rect().center());
   const QPointF before = mapToScene(at);
@@ -68,7 +69,9 @@ void CanvasView::fitToMechanism() {
   const double zy = (viewport()->height() - 2 * margin) / std::max(r.height(), 1e-9);
   setZoom(std::max(kMinZoom, std::min(zx, zy)));
   centerOn(r.center());
-  fitted_ = true;
+  // Until the user zooms or pans, the view keeps fitting the mechanism as the window resizes
+  // (a file opened before the window is shown is fitted again once it has its size).
+  autoFit_ = true;
 }
 
 void CanvasView::setGridVisible(bool on) {
@@ -126,6 +129,7 @@ void CanvasView::wheelEvent(QWheelEvent* e) {
 }
 
 void CanvasView::panBy(const QPoint& delta) {
+  autoFit_ = false;
   // Scroll bars are off but still move the view over the (large) scene rectangle.
   horizontalScrollBar()->setValue(horizontalScrollBar()->value() - delta.x());
   verticalScrollBar()->setValue(verticalScrollBar()->value() - delta.y());
@@ -214,7 +218,7 @@ void CanvasView::keyReleaseEvent(QKeyEvent* e) {
 
 void CanvasView::resizeEvent(QResizeEvent* e) {
   QGraphicsView::resizeEvent(e);
-  if (!fitted_ && scene_->document()) fitToMechanism();
+  if (autoFit_ && scene_->document()) fitToMechanism();
 }
 
 void CanvasView::changeEvent(QEvent* e) {

@@ -55,7 +55,7 @@ class CanvasView : public QGraphicsView {
   bool spaceDown_ = false, spaceUsed_ = false, panning_ = false;
   QPoint lastPan_;
   std::pair<int, int> selectedCentre_{0, 0}, hoveredCentre_{0, 0};
-  bool fitted_ = false;
+  bool autoFit_ = true;
 };
 
 }  // namespace linkage::ui

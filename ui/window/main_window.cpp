@@ -20,6 +20,7 @@
 #include "centres/centres_panel.h"
 #include "document/document.h"
 #include "properties/inspector_panel.h"
+#include "window/icons.h"
 
 namespace linkage::ui {
 
@@ -49,6 +50,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   createToolBars();
   createStatusBar();
   connectDocument();
+  applyIcons();
   readSettings();
   updateTitle();
   updateStatus();
@@ -102,6 +104,7 @@ void MainWindow::connectDocument() {
     QAction* play = action("play");
     play->setChecked(on);
     play->setText(on ? tr("&Pause") : tr("&Play"));
+    play->setIcon(themedIcon(on ? QStringLiteral("pause") : QStringLiteral("play"), palette()));
     if (on) showMessage(QString(), false);
   });
   connect(view_, &CanvasView::cursorMoved, this, [this](QPointF mm) {
@@ -184,6 +187,30 @@ void MainWindow::updateTitle() {
   setWindowModified(doc_->isModified());
 }
 
+void MainWindow::applyIcons() {
+  const std::pair<const char*, const char*> icons[] = {{"new", "new"},
+                                                       {"open", "open"},
+                                                       {"save", "save"},
+                                                       {"undo", "undo"},
+                                                       {"redo", "redo"},
+                                                       {"fit", "fit"},
+                                                       {"showGrid", "grid"},
+                                                       {"showCentres", "centres"},
+                                                       {"showTraces", "traces"},
+                                                       {"stepForward", "step-forward"},
+                                                       {"stepBack", "step-back"},
+                                                       {"toStart", "to-start"}};
+  for (const auto& [action, icon] : icons)
+    if (QAction* a = this->action(action)) a->setIcon(themedIcon(icon, palette()));
+  action("play")->setIcon(themedIcon(
+      animator_->playing() ? QStringLiteral("pause") : QStringLiteral("play"), palette()));
+}
+
+void MainWindow::changeEvent(QEvent* e) {
+  if (e->type() == QEvent::PaletteChange) applyIcons();
+  QMainWindow::changeEvent(e);
+}
+
 void MainWindow::closeEvent(QCloseEvent* e) {
   animator_->setPlaying(false);
   if (!maybeSave()) {
@@ -253,6 +280,8 @@ void MainWindow::setDarkPalette(bool on) {
     p.setColor(QPalette::ToolTipBase, QColor(60, 60, 64));
     p.setColor(QPalette::ToolTipText, QColor(230, 230, 230));
     p.setColor(QPalette::PlaceholderText, QColor(150, 150, 150));
+    for (auto role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText})
+      p.setColor(QPalette::Disabled, role, QColor(120, 120, 120));
     QApplication::setPalette(p);
   } else {
     QApplication::setPalette(QApplication::style()->standardPalette());

@@ -60,6 +60,7 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* e) override;
   void dragEnterEvent(QDragEnterEvent* e) override;
   void dropEvent(QDropEvent* e) override;
+  void changeEvent(QEvent* e) override;
 
  private:
   void createActions();
@@ -80,6 +81,8 @@ class MainWindow : public QMainWindow {
   void readSettings();
   void writeSettings() const;
   void setDarkPalette(bool on);
+  // Toolbar and menu icons in the palette's colours.
+  void applyIcons();
 
   Document* doc_;
   CanvasScene* scene_;

@@ -1,0 +1,55 @@
+# Shared by the X11 tests: a private Xvfb display, the editor started in it with fresh
+# settings, screenshots, and comparisons of them. Everything started is stopped on exit.
+for tool in Xvfb xdotool import compare; do
+  command -v "$tool" >/dev/null || { echo "missing $tool (scripts/setup.sh --tests installs it)"; exit 1; }
+done
+work=$(mktemp -d /tmp/linkage-x11.XXXXXX)
+pids=()
+cleanup() {
+  for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done
+  wait 2>/dev/null || true
+  [ -n "${KEEP_SHOTS:-}" ] || rm -rf "$work"
+}
+trap cleanup EXIT
+fail() {
+  echo "FAIL: $*"
+  echo "screenshots: $work (kept)"
+  KEEP_SHOTS=1
+  exit 1
+}
+
+start_x11() {
+  # A display number nobody uses: Xvfb -displayfd picks one.
+  exec 5>"$work/display"
+  Xvfb -displayfd 5 -screen 0 1280x900x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
+  pids+=($!)
+  for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.05; done
+  [ -s "$work/display" ] || fail "Xvfb did not start"
+  export DISPLAY=":$(cat "$work/display")"
+  unset QT_QPA_PLATFORM
+  # Fresh settings and no session bus: a newcomer's first start.
+  export XDG_CONFIG_HOME="$work/config" HOME="$work/home" XDG_RUNTIME_DIR="$work/run"
+  mkdir -p "$XDG_CONFIG_HOME" "$HOME" "$XDG_RUNTIME_DIR"
+  chmod 700 "$XDG_RUNTIME_DIR"
+}
+
+start_linkage() {
+  "$@" >"$work/linkage.log" 2>&1 &
+  pids+=($!)
+  xdotool search --sync --onlyvisible --name "Linkage" >/dev/null 2>&1 &
+  local search=$!
+  for _ in $(seq 200); do
+    kill -0 "$search" 2>/dev/null || break
+    sleep 0.05
+  done
+  kill "$search" 2>/dev/null && fail "no Linkage window appeared ($(cat "$work/linkage.log"))"
+  win=$(xdotool search --onlyvisible --name "Linkage" | head -1)
+  xdotool windowmove "$win" 0 0 windowsize "$win" 1280 900
+  sleep 0.5
+}
+
+shot() { import -window root "$work/shot$1.png"; }
+# Pixels that differ between two screenshots.
+diffpixels() { compare -metric AE "$work/shot$1.png" "$work/shot$2.png" null: 2>&1 || true; }
+changed() { [ "$(diffpixels "$1" "$2")" != "0" ]; }
+same() { [ "$(diffpixels "$1" "$2")" = "0" ]; }
