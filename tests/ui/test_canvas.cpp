@@ -9,9 +9,11 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <QDockWidget>
 #include "animation/animator.h"
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
+#include "centres/centres_panel.h"
 #include "document/document.h"
 #include "linkage/io/model_lookup.h"
 #include "window/main_window.h"
@@ -170,6 +172,83 @@ TEST(Canvas, TracedPathsFollowTheOutputPoints) {
   }
   w.action("showTraces")->setChecked(false);
   EXPECT_TRUE(w.scene()->traceItems().empty());
+}
+
+}  // namespace
+}  // namespace linkage::ui
+
+namespace linkage::ui {
+namespace {
+
+// The homework's check, on the canvas: the chain of centres for the needle at the drawn
+// position (inversion 2) goes through IC(2,6), and its distances are drawn as dimensions.
+TEST(Canvas, VelocityChainIsWrittenOutAndItsDistancesDrawn) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
+  w.show();
+  QApplication::processEvents();
+  CentresPanel* panel = w.centresPanel();
+  ASSERT_TRUE(panel->isVisible());
+  ASSERT_TRUE(panel->chain());  // the first output point is chosen
+  const VelocityChain& ch = *panel->chain();
+  ASSERT_TRUE(ch.status.ok()) << ch.status.message;
+  ASSERT_EQ(ch.steps.size(), 1u);
+  EXPECT_EQ(ch.steps[0].from, 2);
+  EXPECT_EQ(ch.steps[0].to, 6);
+  // By the chain as by the solver (the solver's velocity is exact).
+  const Vec2 exact = w.document()->kinematics().velocity(ch.point);
+  EXPECT_LT((ch.velocity - exact).norm(), 1e-9 * exact.norm());
+  EXPECT_NE(panel->chainText().indexOf("IC(2,6)"), -1);
+  // |IC(1,2) P| drawn with its length; IC(1,6) is at infinity, so that is the only distance.
+  const auto& dims = w.scene()->chainItem()->dimensions();
+  ASSERT_EQ(dims.size(), 1u);
+  EXPECT_LT((dims[0].b - ch.steps[0].centre).norm(), 1e-12);
+  EXPECT_NEAR((dims[0].b - dims[0].a).norm(), ch.steps[0].fromArm, 1e-12);
+  // It follows the animation.
+  ASSERT_TRUE(w.document()->setCrankDeg(40).ok());
+  ASSERT_TRUE(panel->chain());
+  const Vec2 v40 = w.document()->kinematics().velocity(panel->chain()->point);
+  EXPECT_LT((panel->chain()->velocity - v40).norm(), 1e-9 * v40.norm());
+}
+
+// Hovering a centre draws its Kennedy lines; leaving it draws the chosen row's again.
+TEST(Canvas, HoveredCentreShowsItsKennedyLines) {
+  MainWindow w;
+  w.resize(1100, 750);
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
+  w.show();
+  w.action("showCentres")->setChecked(true);
+  QApplication::processEvents();
+  CanvasView* v = w.canvas();
+  const auto& cs = w.scene()->centresItem()->centres();
+  const Drawing::Centre* kennedy = nullptr;
+  for (const Drawing::Centre& c : cs)
+    if (c.status == CentreStatus::Kennedy && !c.atInfinity &&
+        v->viewport()->rect().contains(v->mapFromScene(toQt(c.at))))
+      kennedy = &c;
+  ASSERT_TRUE(kennedy);
+  QTest::mouseMove(v->viewport(), v->mapFromScene(toQt(kennedy->at)));
+  EXPECT_EQ(w.scene()->centresItem()->chosen(), std::make_pair(kennedy->i, kennedy->j));
+  EXPECT_EQ(kennedy->lines.size(), 2u);
+  QTest::mouseMove(v->viewport(), QPoint(5, 5));
+  EXPECT_EQ(w.scene()->centresItem()->chosen(), std::make_pair(0, 0));
+}
+
+// Work only when needed: accelerations only while the readout that shows them is visible.
+TEST(Canvas, AccelerationsOnlyWhileShown) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
+  w.show();
+  QApplication::processEvents();
+  EXPECT_TRUE(w.document()->kinematics().accelerations());
+  w.dock("properties")->hide();
+  QApplication::processEvents();
+  EXPECT_FALSE(w.document()->kinematics().accelerations());
+  ASSERT_TRUE(w.openExample("wanzer-inversion-1"));  // a new solver keeps the choice
+  EXPECT_FALSE(w.document()->kinematics().accelerations());
+  w.dock("properties")->show();
+  QApplication::processEvents();
+  EXPECT_TRUE(w.document()->kinematics().accelerations());
 }
 
 }  // namespace

@@ -66,6 +66,7 @@ CentresPanel::CentresPanel(QWidget* parent) : QWidget(parent) {
   steps_ = new QTextBrowser;
   steps_->setOpenLinks(false);
   connect(point_, &QComboBox::currentIndexChanged, this, &CentresPanel::refresh);
+  connect(point_, &QComboBox::activated, this, [this](int i) { choseNone_ = i == 0; });
   connect(via_, &QLineEdit::editingFinished, this, &CentresPanel::refresh);
 
   auto* chainBox = new QWidget;
@@ -105,8 +106,11 @@ void CentresPanel::rebuildPoints() {
       if (std::find(m.outputs.begin(), m.outputs.end(), p.id) == m.outputs.end())
         point_->addItem(QString::fromStdString(m.pointLabel(p.id)));
   }
+  // The same point again after an edit; otherwise the first output point, unless the user
+  // chose none.
   int i = point_->findText(was);
-  if (i < 0 && point_->count() > 1 && doc_ && !doc_->kinematics().mechanism().outputs.empty())
+  if ((i < 0 || (i == 0 && !choseNone_)) && point_->count() > 1 && doc_ &&
+      !doc_->kinematics().mechanism().outputs.empty())
     i = 1;
   point_->setCurrentIndex(std::max(i, 0));
   refresh();

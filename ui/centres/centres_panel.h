@@ -51,7 +51,9 @@ class CentresPanel : public QWidget {
   QLineEdit* via_;
   QTextBrowser* steps_;
   std::optional<VelocityChain> chain_;
-  std::uint64_t sizedFor_ = 0;  // the revision the columns were sized for
+  std::uint64_t sizedFor_ = 0;
+  bool choseNone_ =
+      false;  // the user asked for no chain  // the revision the columns were sized for
 };
 
 }  // namespace linkage::ui

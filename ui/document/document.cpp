@@ -53,6 +53,7 @@ void Document::setContents(Mechanism m, const QString& path, const QString& titl
 
 void Document::replace(DocumentState s, const QString& path, const QString& title) {
   state_ = std::move(s);
+  applyWants();
   path_ = path;
   title_ = title;
   poseStatus_ = Status::success();
@@ -84,6 +85,7 @@ QString Document::displayName() const {
 void Document::setDesign(const Mechanism& m) {
   state_.design = m;
   state_.status = state_.kinematics.edit(m);
+  applyWants();
   poseStatus_ = Status::success();
   icFresh_ = false;
   emit designChanged();
@@ -93,6 +95,7 @@ void Document::setDesign(const Mechanism& m) {
 void Document::restore(const DocumentState& s) {
   const double deg = crankDeg();
   state_ = s;
+  applyWants();
   if (state_.kinematics.valid() && std::isfinite(deg) && state_.kinematics.crankDeg() != deg) {
     Status moved = state_.kinematics.moveTo(deg);
     if (state_.status.ok()) state_.status = moved;
@@ -117,7 +120,13 @@ Status Document::setCrankDeg(double deg) {
 }
 
 void Document::setAccelerationsWanted(bool on) {
-  if (state_.kinematics.accelerations() != on) state_.kinematics.setAccelerations(on);
+  wantAccelerations_ = on;
+  applyWants();
+}
+
+void Document::applyWants() {
+  if (state_.kinematics.accelerations() != wantAccelerations_)
+    state_.kinematics.setAccelerations(wantAccelerations_);
 }
 
 const InstantCentres& Document::instantCentres() {

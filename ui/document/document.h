@@ -87,10 +87,12 @@ class Document : public QObject {
 
  private:
   void replace(DocumentState s, const QString& path, const QString& title);
+  void applyWants();
 
   DocumentState state_;
   QString path_, title_;
   Status poseStatus_;
+  bool wantAccelerations_ = true;
   QUndoStack undo_;
   InstantCentreSolver icSolver_;
   std::uint64_t icRevision_ = 0;

@@ -91,6 +91,8 @@ void MainWindow::connectDocument() {
   history_->setStack(doc_->undoStack());
   connect(doc_, &Document::fileStateChanged, this, &MainWindow::updateTitle);
   connect(doc_, &Document::designChanged, this, &MainWindow::updateStatus);
+  // A new solver (a file, an edit) starts with the default: ask again what is shown.
+  connect(doc_, &Document::designChanged, this, &MainWindow::updateWork);
   connect(doc_, &Document::poseChanged, this, [this] {
     updateStatus();
     centres_->refresh();
@@ -123,7 +125,7 @@ void MainWindow::createDocks() {
     return d;
   };
   inspector_ = new InspectorPanel;
-  addDock("properties", tr("Properties"), inspector_, Qt::RightDockWidgetArea);
+  QDockWidget* p = addDock("properties", tr("Properties"), inspector_, Qt::RightDockWidgetArea);
   centres_ = new CentresPanel;
   QDockWidget* c = addDock("centres", tr("Instant Centres"), centres_, Qt::RightDockWidgetArea);
   history_ = new QUndoView;
@@ -131,13 +133,17 @@ void MainWindow::createDocks() {
   QDockWidget* h = addDock("history", tr("History"), history_, Qt::LeftDockWidgetArea);
   h->hide();
   // Work only while shown: the panels compute when they become visible.
-  connect(c, &QDockWidget::visibilityChanged, this, [this](bool) { updateWork(); });
+  // Queued: a dock reports its visibility before its contents have changed theirs.
+  for (QDockWidget* d : {p, c})
+    connect(d, &QDockWidget::visibilityChanged, this, &MainWindow::updateWork,
+            Qt::QueuedConnection);
 }
 
 void MainWindow::updateWork() {
   // Accelerations only while something shows them (the inspector's readout).
   doc_->setAccelerationsWanted(inspector_->isVisible());
   centres_->refresh();
+  inspector_->refreshMotion();
 }
 
 void MainWindow::createStatusBar() {
