@@ -157,14 +157,13 @@ void placeCentres(Drawing& d, const Kinematics& k, const InstantCentres& ics) {
   }
 }
 
-}  // namespace
-
-bool updateDrawing(Drawing& d, const Kinematics& k, const InstantCentres* ics) {
-  if (!k.valid() || k.revision() != d.revision) return false;
-  const Mechanism& m = k.mechanism();
+// Puts every part where `at` says: at(PointId) a point's position, ends(SlotId) a slot's
+// ends, pose(BodyId) a body's transform.
+template <class At, class Ends, class Pose>
+void place(Drawing& d, const Mechanism& m, At at, Ends ends, Pose pose, double crankDeg) {
   bool first = true;
   for (Drawing::Body& b : d.bodies) {
-    b.pose = k.bodyTransform(b.id);
+    b.pose = pose(b.id);
     for (const Vec2& p : b.outline) {
       extend(d, b.pose * p, first);
       if (b.radius > 0)
@@ -175,39 +174,30 @@ bool updateDrawing(Drawing& d, const Kinematics& k, const InstantCentres* ics) {
     }
   }
   for (Drawing::Pin& p : d.pins) {
-    p.at = k.position(m.joint(p.joint)->a);
+    p.at = at(m.joint(p.joint)->a);
     extend(d, p.at, first);
   }
   for (Drawing::Channel& c : d.channels) {
-    const Kinematics::Segment s = k.slotEnds(c.slot);
-    c.p0 = s.p0;
-    c.p1 = s.p1;
+    std::tie(c.p0, c.p1) = ends(c.slot);
     extend(d, c.p0, first);
     extend(d, c.p1, first);
   }
   for (Drawing::Block& b : d.blocks) {
-    b.at = k.position(m.joint(b.joint)->a);
-    const Kinematics::Segment s = k.slotEnds(b.slot);
-    b.direction = (s.p1 - s.p0).normalized();
+    b.at = at(m.joint(b.joint)->a);
+    const auto [p0, p1] = ends(b.slot);
+    b.direction = (p1 - p0).normalized();
   }
-  for (Drawing::SlotPin& p : d.slotPins) p.at = k.position(m.joint(p.joint)->a);
+  for (Drawing::SlotPin& p : d.slotPins) p.at = at(m.joint(p.joint)->a);
   for (Drawing::Driver& r : d.drivers) {
-    r.at = k.position(m.joint(r.joint)->a);
-    r.crankDeg = k.crankDeg();
+    r.at = at(m.joint(r.joint)->a);
+    r.crankDeg = crankDeg;
   }
-  for (Drawing::Output& o : d.outputs) o.at = k.position(o.point);
-  if (ics && ics->status.ok())
-    placeCentres(d, k, *ics);
-  else
-    d.centres.clear();
-  return true;
+  for (Drawing::Output& o : d.outputs) o.at = at(o.point);
 }
 
-Drawing describeDrawing(const Kinematics& k, const InstantCentres* ics) {
+// The shapes and parts of a mechanism, not yet placed.
+Drawing describeShapes(const Mechanism& m) {
   Drawing d;
-  if (!k.valid()) return d;
-  const Mechanism& m = k.mechanism();
-  d.revision = k.revision();
   std::vector<BodyId> order;
   std::vector<int> numbers;
   const bool numbered = textbookNumbers(m, order, numbers).ok();
@@ -240,14 +230,55 @@ Drawing describeDrawing(const Kinematics& k, const InstantCentres* ics) {
         d.drivers.push_back(r);
       }
     } else if (j.type == JointType::Slider) {
-      d.blocks.push_back(Drawing::Block{j.id, a->body, j.slot});
-    } else {
+      if (m.contains(j.slot)) d.blocks.push_back(Drawing::Block{j.id, a->body, j.slot});
+    } else if (m.contains(j.slot)) {
       d.slotPins.push_back(Drawing::SlotPin{j.id, j.slot});
     }
   }
   for (const Slot& s : m.slots) d.channels.push_back(Drawing::Channel{s.id, s.body});
   for (PointId p : m.outputs)
     if (m.contains(p)) d.outputs.push_back(Drawing::Output{p, m.pointLabel(p)});
+  return d;
+}
+
+}  // namespace
+
+bool updateDrawing(Drawing& d, const Kinematics& k, const InstantCentres* ics) {
+  if (!k.valid() || k.revision() != d.revision) return false;
+  place(
+      d, k.mechanism(), [&](PointId p) { return k.position(p); },
+      [&](SlotId s) {
+        const Kinematics::Segment e = k.slotEnds(s);
+        return std::make_pair(e.p0, e.p1);
+      },
+      [&](BodyId b) { return k.bodyTransform(b); }, k.crankDeg());
+  if (ics && ics->status.ok())
+    placeCentres(d, k, *ics);
+  else
+    d.centres.clear();
+  return true;
+}
+
+Drawing describeSketch(const Mechanism& m) {
+  Drawing d = describeShapes(m);
+  place(
+      d, m,
+      [&](PointId p) {
+        const Point* q = m.point(p);
+        return q ? q->pos : Vec2(NAN, NAN);
+      },
+      [&](SlotId s) {
+        const Slot* q = m.slot(s);
+        return q ? std::make_pair(q->p0, q->p1) : std::make_pair(Vec2(NAN, NAN), Vec2(NAN, NAN));
+      },
+      [](BodyId) { return Transform{}; }, 0.0);
+  return d;
+}
+
+Drawing describeDrawing(const Kinematics& k, const InstantCentres* ics) {
+  if (!k.valid()) return Drawing{};
+  Drawing d = describeShapes(k.mechanism());
+  d.revision = k.revision();
   updateDrawing(d, k, ics);
   return d;
 }

@@ -83,6 +83,23 @@ void CanvasScene::setTracesVisible(bool on) {
   updateTraces();
 }
 
+const Mechanism& CanvasScene::shownMechanism() const {
+  static const Mechanism none;
+  if (!doc_) return none;
+  return solverShown_ ? doc_->kinematics().mechanism() : doc_->design();
+}
+
+Vec2 CanvasScene::worldOf(PointId p) const {
+  if (solverShown_ && doc_->kinematics().contains(p)) return doc_->kinematics().position(p);
+  const Point* q = doc_ ? doc_->design().point(p) : nullptr;
+  return q ? q->pos : Vec2(NAN, NAN);
+}
+
+Transform CanvasScene::poseOf(BodyId b) const {
+  if (solverShown_ && doc_->kinematics().contains(b)) return doc_->kinematics().bodyTransform(b);
+  return Transform{};
+}
+
 BodyItem* CanvasScene::bodyItem(BodyId id) const {
   for (BodyItem* b : bodies_)
     if (b->id() == id) return b;
@@ -121,8 +138,13 @@ void CanvasScene::rebuild() {
   drawing_ = Drawing{};
   if (!doc_) return;
   const Kinematics& k = doc_->kinematics();
-  drawing_ = describeDrawing(k);
-  const Mechanism& m = k.mechanism();
+  // The solver's pose when it holds this design (or the last good state of an edit of its
+  // dimensions it refused); otherwise the design as drawn (one the solver cannot take yet).
+  std::vector<BodyId> reshaped;
+  solverShown_ =
+      k.valid() && (doc_->solved() || sameTopology(doc_->design(), k.mechanism(), reshaped));
+  drawing_ = solverShown_ ? describeDrawing(k) : describeSketch(doc_->design());
+  const Mechanism& m = shownMechanism();
   std::map<BodyId, int> number;
   for (const Drawing::Body& b : drawing_.bodies) {
     number[b.id] = b.number;
@@ -168,14 +190,22 @@ void CanvasScene::rebuild() {
     addItem(item);
     outputs_.push_back(item);
   }
-  const auto [lo, hi] = motionExtent(k);
-  extent_ = QRectF(toQt(lo), toQt(hi)).normalized();
+  extent_ = QRectF();
+  if (solverShown_) {
+    const auto [lo, hi] = motionExtent(k);
+    extent_ = QRectF(toQt(lo), toQt(hi)).normalized();
+  }
   updateTraces();
   updatePose();
 }
 
 void CanvasScene::updatePose() {
   if (!doc_) return;
+  if (!solverShown_) {
+    updateFlags();
+    emit redrawn();
+    return;
+  }
   const Kinematics& k = doc_->kinematics();
   const InstantCentres* ics = centresVisible_ && k.valid() ? &doc_->instantCentres() : nullptr;
   if (!updateDrawing(drawing_, k, ics)) {
@@ -227,7 +257,7 @@ void CanvasScene::updateTraces() {
     delete t;
   }
   traces_.clear();
-  if (!tracesVisible_ || !doc_ || !doc_->kinematics().valid()) return;
+  if (!tracesVisible_ || !doc_ || !solverShown_) return;
   for (const std::vector<Vec2>& path : tracePaths(doc_->kinematics())) {
     QPainterPath pp;
     for (size_t i = 0; i < path.size(); ++i)

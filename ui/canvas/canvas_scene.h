@@ -13,11 +13,10 @@
 #include "canvas/centres_item.h"
 #include "canvas/chain_item.h"
 #include "canvas/joint_items.h"
+#include "document/document.h"
 #include "linkage/drawing.h"
 
 namespace linkage::ui {
-
-class Document;
 
 class CanvasScene : public QGraphicsScene {
   Q_OBJECT
@@ -47,6 +46,13 @@ class CanvasScene : public QGraphicsScene {
   CentresItem* centresItem() const { return centres_; }
   ChainItem* chainItem() const { return chain_; }
   BodyItem* bodyItem(BodyId id) const;
+
+  // What is drawn: the solver's mechanism at its pose, or the design as drawn when the solver
+  // cannot take it. Tools place what they make with these.
+  bool solverShown() const { return solverShown_; }
+  const Mechanism& shownMechanism() const;
+  Vec2 worldOf(PointId p) const;
+  Transform poseOf(BodyId b) const;  // sketch -> world as drawn
   const std::vector<BlockItem*>& blockItems() const { return blocks_; }
   const std::vector<PinItem*>& pinItems() const { return pins_; }
   const std::vector<OutputItem*>& outputItems() const { return outputs_; }
@@ -68,6 +74,7 @@ class CanvasScene : public QGraphicsScene {
   CanvasContext ctx_;
   Drawing drawing_;
   QRectF extent_;
+  bool solverShown_ = false;
   std::vector<BodyItem*> bodies_;
   std::vector<PinItem*> pins_;
   std::vector<PinItem*> slotPins_;

@@ -85,18 +85,20 @@ void CanvasView::setSelectedCentre(int i, int j) {
   if (hoveredCentre_.first == 0) scene_->centresItem()->setChosen(i, j);
 }
 
+double CanvasView::gridStep() const {
+  const double minPx = 12, z = zoom();
+  double spacing = std::pow(10.0, std::floor(std::log10(minPx / z)));
+  for (double f : {1.0, 2.0, 5.0, 10.0})
+    if (spacing * f * z >= minPx) return spacing * f;
+  return spacing * 10;
+}
+
 void CanvasView::drawBackground(QPainter* p, const QRectF& rect) {
   const CanvasStyle& st = scene_->style();
   p->fillRect(rect, st.paper);
   if (!grid_) return;
   // Minor spacing 1, 2 or 5 x 10^n mm, at least 12 pixels; majors at the next power of ten.
-  const double minPx = 12, z = zoom();
-  double spacing = std::pow(10.0, std::floor(std::log10(minPx / z)));
-  for (double f : {1.0, 2.0, 5.0, 10.0})
-    if (spacing * f * z >= minPx) {
-      spacing *= f;
-      break;
-    }
+  const double spacing = gridStep();
   const double major = std::pow(10.0, std::floor(std::log10(spacing)) + 1);
   auto lines = [&](double step, const QColor& c) {
     QPen pen(c, 0);

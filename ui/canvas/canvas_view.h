@@ -19,6 +19,8 @@ class CanvasView : public QGraphicsView {
 
   void setGridVisible(bool on);
   bool gridVisible() const { return grid_; }
+  // The grid's spacing at this zoom (mm): 1, 2 or 5 x 10^n, at least 12 pixels.
+  double gridStep() const;
   // Pixels per millimetre.
   double zoom() const;
   void setZoom(double pxPerMm);

@@ -106,6 +106,10 @@ struct Drawing {
 // (computed for k at this pose). An invalid k gives an empty drawing.
 Drawing describeDrawing(const Kinematics& k, const InstantCentres* ics = nullptr);
 
+// A design as drawn (every body at its sketch pose, revision 0), for one the solver cannot
+// take (yet): what a user is drawing, or an edit that does not assemble.
+Drawing describeSketch(const Mechanism& m);
+
 // Only the parts that move, for a drawing of the same revision made before: every pose,
 // position and centre updated in place, nothing allocated. False when `d` was not made from
 // k's mechanism (it must then be described afresh).

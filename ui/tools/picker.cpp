@@ -1,0 +1,126 @@
+#include "tools/picker.h"
+
+#include <cmath>
+
+#include "canvas/canvas_scene.h"
+
+namespace linkage::ui {
+
+namespace {
+
+double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double t =
+      d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (a + t * d - p).norm();
+}
+
+}  // namespace
+
+Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
+  Pick pick;
+  const Mechanism& m = s.shownMechanism();
+  double best = kPickPixels * px;
+  for (const Point& p : m.points) {
+    const Vec2 at = s.worldOf(p.id);
+    const double d = (at - world).norm();
+    // Among coincident points (a pin), the first in file order: the stable choice.
+    if (d < best - 1e-12 * std::max(1.0, best)) {
+      best = d;
+      pick.point = p.id;
+      pick.pointAt = at;
+    }
+  }
+  if (pick.point)
+    for (const Joint& j : m.joints)
+      if (j.type == JointType::Pin && (j.a == pick.point || j.b == pick.point)) {
+        pick.joint = j.id;
+        break;
+      }
+  // Slots within their channel (half its width and a little).
+  const double reach = (CanvasStyle::channelWidth / 2 + 3) * px;
+  double bestSlot = reach;
+  for (const Slot& sl : m.slots) {
+    const Transform T = s.poseOf(sl.body);
+    const double d = segmentDistance(world, T * sl.p0, T * sl.p1);
+    if (d < bestSlot) {
+      bestSlot = d;
+      pick.slot = sl.id;
+    }
+  }
+  // Blocks and slot pins under the cursor are their joints.
+  if (!pick.joint)
+    for (const Joint& j : m.joints)
+      if (j.type != JointType::Pin &&
+          (s.worldOf(j.a) - world).norm() < CanvasStyle::blockLength / 2 * px) {
+        pick.joint = j.id;
+        break;
+      }
+  // The top body whose drawn shape holds the point.
+  const QPointF q(world.x(), world.y());
+  for (QGraphicsItem* item : s.items(q, Qt::IntersectsItemShape, Qt::DescendingOrder)) {
+    if (auto* b = dynamic_cast<BodyItem*>(item)) {
+      pick.body = b->id();
+      break;
+    }
+    if (auto* bl = dynamic_cast<BlockItem*>(item)) {
+      pick.body = bl->body();
+      break;
+    }
+  }
+  if (!pick.body && pick.point) pick.body = m.point(pick.point)->body;
+  if (!pick.body && pick.slot) pick.body = m.slot(pick.slot)->body;
+  if (!pick.body && m.ground()) {
+    pick.body = m.ground()->id;
+  }
+  const Body* b = m.body(pick.body);
+  pick.onGround = b && b->ground;
+  return pick;
+}
+
+Snap snapAt(const CanvasScene& s, const Pick& pick, const Vec2& world, double px, double gridStep) {
+  Snap snap;
+  const Mechanism& m = s.shownMechanism();
+  if (pick.point) {
+    snap.kind = Snap::Kind::Point;
+    snap.at = pick.pointAt;
+    snap.point = pick.point;
+    snap.label = QString::fromStdString(m.pointLabel(pick.point));
+    return snap;
+  }
+  if (pick.slot) {
+    const Slot* sl = m.slot(pick.slot);
+    const Transform T = s.poseOf(sl->body);
+    const Vec2 a = T * sl->p0, d = (T * sl->p1 - a).normalized();
+    snap.kind = Snap::Kind::Slot;
+    snap.at = a + (world - a).dot(d) * d;
+    snap.slot = pick.slot;
+    snap.label = QStringLiteral("on slot %1").arg(QString::fromStdString(m.slotLabel(pick.slot)));
+    return snap;
+  }
+  if (gridStep > 0) {
+    snap.kind = Snap::Kind::Grid;
+    snap.at = Vec2(std::round(world.x() / gridStep) * gridStep,
+                   std::round(world.y() / gridStep) * gridStep);
+    // Only when the grid node is near: a coarse grid should not drag the cursor far.
+    if ((snap.at - world).norm() <= kPickPixels * px) {
+      snap.label = QStringLiteral("grid %1, %2").arg(snap.at.x()).arg(snap.at.y());
+      return snap;
+    }
+  }
+  snap.kind = Snap::Kind::Free;
+  snap.at = world;
+  return snap;
+}
+
+QString describePick(const Mechanism& m, const Pick& p) {
+  if (p.point) return QString::fromStdString(m.pointLabel(p.point));
+  if (p.joint) return QString::fromStdString(m.jointLabel(p.joint));
+  if (p.slot) return QStringLiteral("slot %1").arg(QString::fromStdString(m.slotLabel(p.slot)));
+  if (const Body* b = m.body(p.body))
+    return b->ground ? QStringLiteral("the ground")
+                     : QStringLiteral("body %1").arg(QString::fromStdString(b->name));
+  return QString();
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,141 @@
+#include "tools/slot_tools.h"
+
+#include "canvas/canvas_scene.h"
+#include "document/commands.h"
+#include "document/document.h"
+#include "document/edits.h"
+#include "tools/tool_overlay.h"
+
+namespace linkage::ui {
+
+QString SlotTool::hint() const {
+  if (!start_)
+    return tr(
+        "Slot: click where it starts, on the link it is cut in (on empty canvas: in the "
+        "ground)");
+  return tr("Slot: click where it ends; Esc cancels");
+}
+
+void SlotTool::deactivate() {
+  cancel();
+}
+
+void SlotTool::cancel() {
+  start_.reset();
+  body_ = {};
+  dragged_ = false;
+  ctx().overlay->clearPreview();
+  emit hintChanged();
+}
+
+void SlotTool::press(const CanvasMouse& e) {
+  if (e.button != Qt::LeftButton) return;
+  if (start_) {
+    finish(e.snap.at);
+    return;
+  }
+  start_ = e.snap.at;
+  const Mechanism& shown = ctx().scene->shownMechanism();
+  body_ = e.pick.body ? e.pick.body : (shown.ground() ? shown.ground()->id : BodyId{});
+  pressAt_ = e.viewPos;
+  dragged_ = false;
+  ctx().overlay->setPath({*start_}, e.snap.at);
+  emit hintChanged();
+}
+
+void SlotTool::move(const CanvasMouse& e) {
+  if (!start_) return;
+  ctx().overlay->setPath({*start_}, e.snap.at);
+  if ((e.buttons & Qt::LeftButton) && (e.viewPos - pressAt_).manhattanLength() > 6) dragged_ = true;
+}
+
+void SlotTool::release(const CanvasMouse& e) {
+  // A press and drag draws the slot at once.
+  if (start_ && dragged_ && e.button == Qt::LeftButton) finish(e.snap.at);
+}
+
+bool SlotTool::key(QKeyEvent* e) {
+  if (e->key() == Qt::Key_Escape && start_) {
+    cancel();
+    return true;
+  }
+  return false;
+}
+
+void SlotTool::finish(const Vec2& end) {
+  if (!start_ || (end - *start_).norm() < 1e-9) return;
+  Document* doc = ctx().doc;
+  Mechanism m = doc->design();
+  if (!m.contains(body_)) {
+    cancel();
+    return;
+  }
+  // The ends in the body's own drawing: where it is drawn now, mapped back.
+  const Transform T = ctx().scene->poseOf(body_);
+  const SlotId s = addBodySlot(m, body_, T.inverse(*start_), T.inverse(end));
+  cancel();
+  if (!s) return;
+  const QString what = QString::fromStdString(m.slotLabel(s));
+  commitEdit(doc, tr("Add slot %1").arg(what), std::move(m));
+  say(tr("Added slot %1").arg(what));
+}
+
+QString SlotJointTool::hint() const {
+  const bool block = type_ == JointType::Slider;
+  if (!point_)
+    return block ? tr("Block: click the point where the slider block goes")
+                 : tr("Pin in slot: click the point that runs in a slot");
+  return block ? tr("Block: click the slot the block slides in; Esc cancels")
+               : tr("Pin in slot: click the slot the pin runs in; Esc cancels");
+}
+
+void SlotJointTool::deactivate() {
+  point_ = {};
+  emit hintChanged();
+}
+
+bool SlotJointTool::key(QKeyEvent* e) {
+  if (e->key() == Qt::Key_Escape && point_) {
+    deactivate();
+    return true;
+  }
+  return false;
+}
+
+void SlotJointTool::press(const CanvasMouse& e) {
+  if (e.button != Qt::LeftButton) return;
+  if (!point_) {
+    if (!e.pick.point) {
+      say(tr("Click a point first"), true);
+      return;
+    }
+    point_ = e.pick.point;
+    emit hintChanged();
+    return;
+  }
+  if (!e.pick.slot) {
+    say(tr("Click a slot"), true);
+    return;
+  }
+  Document* doc = ctx().doc;
+  Mechanism m = doc->design();
+  std::string why;
+  QString text;
+  if (type_ == JointType::Slider) {
+    const BodyId b = addBlock(m, point_, e.pick.slot, ctx().scene->worldOf(point_), &why);
+    if (b) text = tr("Add block %1").arg(QString::fromStdString(m.body(b)->name));
+  } else {
+    const JointId j = addPinInSlot(m, point_, e.pick.slot, &why);
+    if (j) text = tr("Pin %1 in slot").arg(QString::fromStdString(m.pointLabel(point_)));
+  }
+  point_ = {};
+  emit hintChanged();
+  if (text.isEmpty()) {
+    say(QString::fromStdString(why), true);
+    return;
+  }
+  commitEdit(doc, text, std::move(m));
+  say(text);
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,48 @@
+// Slot (T): two clicks, or a press and drag, draw a slot on the body under the first click (on
+// the ground over empty canvas). Block (B) and Pin in slot (P): a point, then the slot it runs
+// in.
+#pragma once
+
+#include <optional>
+
+#include "tools/tool.h"
+
+namespace linkage::ui {
+
+class SlotTool : public Tool {
+  Q_OBJECT
+ public:
+  using Tool::Tool;
+  QString hint() const override;
+  void deactivate() override;
+  void press(const CanvasMouse& e) override;
+  void move(const CanvasMouse& e) override;
+  void release(const CanvasMouse& e) override;
+  bool key(QKeyEvent* e) override;
+
+ private:
+  void finish(const Vec2& end);
+  void cancel();
+  std::optional<Vec2> start_;
+  BodyId body_;
+  QPoint pressAt_;
+  bool dragged_ = false;
+};
+
+class SlotJointTool : public Tool {
+  Q_OBJECT
+ public:
+  // Slider: a block (a body of its own) at the point; PinInSlot: the point itself in the slot.
+  SlotJointTool(ToolContext* ctx, JointType type) : Tool(ctx), type_(type) {}
+  QString hint() const override;
+  bool snaps() const override { return false; }
+  void deactivate() override;
+  void press(const CanvasMouse& e) override;
+  bool key(QKeyEvent* e) override;
+
+ private:
+  JointType type_;
+  PointId point_;
+};
+
+}  // namespace linkage::ui
