@@ -136,6 +136,7 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
   const Mechanism& m = k.mechanism();
   const System& sys = internal::system(k);
   revision_ = k.revision();
+  out_.revision = revision_;
   jointIds_.clear();
   for (const Joint& j : m.joints) jointIds_.push_back(j.id);
   if (Status s = textbookNumbers(m, out_.bodies, out_.numbers); !s.ok()) {

@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "linkage/kinematics.h"
@@ -106,6 +107,8 @@ struct CentreDisagreement {
 
 struct InstantCentres {
   Status status;  // BadModel when there is no mechanism or its numbering cannot be used
+  // Kinematics::revision() of the mechanism the centres are of: what a velocity chain checks.
+  std::uint64_t revision = 0;
   double crankDeg = 0;
   double size = 1;                     // L, mm
   bool velocitiesValid = false;        // false at a singular position: no velocity-derived centres

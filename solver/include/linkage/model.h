@@ -128,7 +128,8 @@ struct Mechanism {
   // between (what an undo stack guarantees).
   Removal remove(const std::vector<BodyId>& bodies, const std::vector<PointId>& points = {},
                  const std::vector<SlotId>& slots = {}, const std::vector<JointId>& joints = {});
-  Removal remove(BodyId id) { return remove({id}); }
+  // (Spelled out: remove({id}) would call this overload again.)
+  Removal remove(BodyId id) { return remove(std::vector<BodyId>{id}); }
   Removal remove(PointId id) { return remove({}, {id}); }
   Removal remove(SlotId id) { return remove({}, {}, {id}); }
   Removal remove(JointId id) { return remove({}, {}, {}, {id}); }
