@@ -35,6 +35,10 @@ void expectQueriesRefused(const Kinematics& k, PointId p, BodyId b, const char* 
   EXPECT_TRUE(isNaN(k.toSketch(b, Vec2(1, 2)))) << what;
   const Status s = k.checkDetermined({p});
   EXPECT_EQ(s.code, StatusCode::BadModel) << what << ": " << s.message;
+  Kinematics copy = k;
+  const Kinematics::DragResult d = copy.dragTo(p, Vec2(0, 0));
+  EXPECT_EQ(d.status.code, StatusCode::BadModel) << what << ": " << d.status.message;
+  if (k.valid()) EXPECT_EQ(copy.crankDeg(), k.crankDeg()) << what;
 }
 
 // The same, and the instant centres and velocity chains of k.

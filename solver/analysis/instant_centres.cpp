@@ -29,10 +29,6 @@ inline double crossNorm(const Vec3& a, const Vec3& b, Vec3& out) {
   return std::sqrt(x * x + y * y + z * z);
 }
 
-Status bad(std::string msg) {
-  return Status::failure(StatusCode::BadModel, std::move(msg));
-}
-
 }  // namespace
 
 const char* toString(CentreStatus s) {
@@ -75,10 +71,11 @@ BodyId InstantCentres::bodyNumbered(int n) const {
 Status textbookNumbers(const Mechanism& m, std::vector<BodyId>& bodies, std::vector<int>& numbers) {
   bodies.clear();
   numbers.clear();
-  if (!m.ground()) return bad("no body is the ground");
+  if (!m.ground()) return Status::badModel("no body is the ground");
   std::vector<std::pair<int, BodyId>> list;  // (number, body)
   auto refuse = [&](size_t i, const std::string& why) {
-    Status s = bad("bodies[" + std::to_string(i) + "] '" + m.bodies[i].name + "' " + why);
+    Status s =
+        Status::badModel("bodies[" + std::to_string(i) + "] '" + m.bodies[i].name + "' " + why);
     s.bodies.push_back(m.bodies[i].id);
     return s;
   };
@@ -130,7 +127,7 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
   out_ = InstantCentres{};
   n_ = 0;
   if (!k.valid()) {
-    out_.status = bad("no mechanism is loaded");
+    out_.status = Status::badModel("no mechanism is loaded");
     return out_.status;
   }
   const Mechanism& m = k.mechanism();
@@ -490,9 +487,9 @@ const InstantCentres& InstantCentreSolver::compute(const Kinematics& k) {
   if (n_ == 0 || !out_.status.ok()) return out_;
   if (!k.valid() || k.revision() != revision_) {
     // Loud: the numbering, the joints and the body frames prepared are another mechanism's.
-    out_.status =
-        bad("the kinematics hold another mechanism (or another revision of it) than "
-            "the one prepared: call prepare() again");
+    out_.status = Status::badModel(
+        "the kinematics hold another mechanism (or another revision of it) than "
+        "the one prepared: call prepare() again");
     out_.centres.clear();
     out_.disagreements.clear();
     n_ = 0;

@@ -79,6 +79,10 @@ Status Kinematics::moveTo(double crankDeg) {
   return d_->moveToPhi(d_->sys.startRad + crankDeg * kDeg);
 }
 
+Kinematics::DragResult Kinematics::dragTo(PointId p, const Vec2& target) {
+  return d_->drag(p, target);
+}
+
 bool Kinematics::valid() const {
   return d_->valid;
 }

@@ -46,6 +46,8 @@ struct KinematicsState {
   Status editFrom(const KinematicsState& old, const Mechanism& m);
 
   Status moveToPhi(double phi);
+  // Kinematics::dragTo (drag.cpp).
+  Kinematics::DragResult drag(PointId p, const Vec2& target);
   Status trackGeneral(double phi);
   // Closed-form steps towards phi; false where the plan cannot go on (reg is the last good).
   bool trackClosedForm(double phi);

@@ -20,14 +20,6 @@ const PointLocation* System::point(PointId id) const {
                                                                                : nullptr;
 }
 
-namespace {
-
-Status bad(std::string msg) {
-  return Status::failure(StatusCode::BadModel, std::move(msg));
-}
-
-}  // namespace
-
 std::optional<System> compile(const Mechanism& m, Status& status) {
   status = Status::success();
   System sys;
@@ -37,9 +29,9 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
     return std::any_of(v.begin(), v.end(), [&](const auto& e) { return e.id.owner != sys.owner; });
   };
   if (foreign(m.bodies) || foreign(m.points) || foreign(m.slots) || foreign(m.joints)) {
-    status =
-        bad("an entity carries an id of another mechanism: copy entities with their names, "
-            "not their ids");
+    status = Status::badModel(
+        "an entity carries an id of another mechanism: copy entities with their names, "
+        "not their ids");
     return std::nullopt;
   }
   int grounds = 0;
@@ -52,7 +44,8 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
     }
   }
   if (grounds != 1) {
-    status = bad(grounds == 0 ? "no body is the ground" : "more than one body is the ground");
+    status = Status::badModel(grounds == 0 ? "no body is the ground"
+                                           : "more than one body is the ground");
     return std::nullopt;
   }
   sys.nBodies = static_cast<int>(sys.bodyIds.size());
@@ -86,18 +79,18 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
   };
   for (const Point& p : m.points) {
     if (!knownBody(p.body)) {
-      status = bad("point \"" + p.name + "\" belongs to no body");
+      status = Status::badModel("point \"" + p.name + "\" belongs to no body");
       return std::nullopt;
     }
     addGeometry(p.body, p.pos);
   }
   for (const Slot& s : m.slots) {
     if (!knownBody(s.body)) {
-      status = bad("slot \"" + s.name + "\" belongs to no body");
+      status = Status::badModel("slot \"" + s.name + "\" belongs to no body");
       return std::nullopt;
     }
     if ((s.p1 - s.p0).norm() == 0) {
-      status = bad("slot " + m.slotLabel(s.id) + " has zero length");
+      status = Status::badModel("slot " + m.slotLabel(s.id) + " has zero length");
       return std::nullopt;
     }
     addGeometry(s.body, s.p0);
@@ -107,14 +100,15 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
   // rather than return numbers that mean nothing.
   constexpr double kLargest = 1e12, kSmallest = 1e-9;  // mm
   if (lo.allFinite() && std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) > kLargest) {
-    status = bad("coordinates beyond 1e12 mm: the drawing is too large to compute with");
+    status =
+        Status::badModel("coordinates beyond 1e12 mm: the drawing is too large to compute with");
     return std::nullopt;
   }
   sys.size = (lo.allFinite() && hi.allFinite()) ? (hi - lo).norm() : 1.0;
   if (lo.allFinite() && sys.size < kSmallest * std::max(1.0, hi.cwiseAbs().maxCoeff())) {
-    status =
-        bad("the drawing's extent is below 1e-9 of its size or distance from the origin "
-            "(or all its points coincide): rounding would swamp it");
+    status = Status::badModel(
+        "the drawing's extent is below 1e-9 of its size or distance from the origin "
+        "(or all its points coincide): rounding would swamp it");
     return std::nullopt;
   }
   const double L = sys.size;
@@ -167,7 +161,7 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
     const std::string where = "joints[" + std::to_string(ji) + "]";
     const PointLocation* a = sys.point(j.a);
     if (!a) {
-      status = bad(where + ".a: unknown point");
+      status = Status::badModel(where + ".a: unknown point");
       return std::nullopt;
     }
     Constraint c;
@@ -177,11 +171,11 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
     if (j.type == JointType::Pin) {
       const PointLocation* b = sys.point(j.b);
       if (!b) {
-        status = bad(where + ".b: unknown point");
+        status = Status::badModel(where + ".b: unknown point");
         return std::nullopt;
       }
       if (b->body == a->body) {
-        status = bad(where + ": both sides are on one body");
+        status = Status::badModel(where + ": both sides are on one body");
         return std::nullopt;
       }
       c.kind = RowKind::Pin;
@@ -193,12 +187,12 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
     const Slot* s =
         j.slot.owner == sys.owner && j.slot.value <= maxSlot ? slotById[j.slot.value] : nullptr;
     if (!s) {
-      status = bad(where + ".slot: unknown slot");
+      status = Status::badModel(where + ".slot: unknown slot");
       return std::nullopt;
     }
     PointLocation u = local(s->body, s->p0);
     if (u.body == a->body) {
-      status = bad(where + ": both sides are on one body");
+      status = Status::badModel(where + ": both sides are on one body");
       return std::nullopt;
     }
     c.kind = RowKind::Line;
@@ -221,7 +215,7 @@ std::optional<System> compile(const Mechanism& m, Status& status) {
   if (m.driver) {
     int ji = m.jointIndex(m.driver->joint);
     if (ji < 0 || m.joints[ji].type != JointType::Pin) {
-      status = bad("driver: its joint must be a pin");
+      status = Status::badModel("driver: its joint must be a pin");
       return std::nullopt;
     }
     const Joint& j = m.joints[ji];

@@ -97,6 +97,27 @@ class Kinematics {
   // direction). On failure the state stays at the last position reached.
   Status moveTo(double crankDeg);
 
+  // Drag: moves the mechanism along its freedom so that point p comes as close as it can to
+  // `target` (world mm), as a hand pushing it would: a local descent of the distance from the
+  // current pose (Newton steps on the crank angle from the exact velocity and acceleration of
+  // the point), every step tracked by moveTo, so that it stays on its assembly branch however
+  // far the target is. Bounded work per call (at most 8 steps of at most 15 degrees of crank):
+  // an editor calls it once per mouse move and a far target is reached over a few calls.
+  struct DragResult {
+    // Ok; or Unreachable (atLimit) where the motion stopped at a limit position of the crank on
+    // the way down, Singular or NotConverged where it stopped short of a singular position (the
+    // message says where; the mechanism stays there, valid); BadModel for a point the driver
+    // does not move (on the ground, on a body held where it is), an unknown point or a target
+    // that is not finite, with nothing moved.
+    Status status;
+    double crankDeg = 0;     // the crank angle now
+    double distance = 0;     // |position(p) - target| now, mm
+    bool atLimit = false;    // stopped at a limit position (the distance would fall beyond it)
+    bool converged = false;  // as near as the motion goes (a local minimum, or the stop); false
+                             // when the call's work ran out first: call again
+  };
+  DragResult dragTo(PointId p, const Vec2& target);
+
   bool valid() const;
   // Changes with every successful load or edit (unique across all Kinematics objects): what a
   // derived object (InstantCentreSolver) records, to refuse working on a mechanism it has not
