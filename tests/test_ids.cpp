@@ -39,6 +39,8 @@ void expectQueriesRefused(const Kinematics& k, PointId p, BodyId b, const char* 
   const Kinematics::DragResult d = copy.dragTo(p, Vec2(0, 0));
   EXPECT_EQ(d.status.code, StatusCode::BadModel) << what << ": " << d.status.message;
   if (k.valid()) EXPECT_EQ(copy.crankDeg(), k.crankDeg()) << what;
+  EXPECT_EQ(copy.flipBranch(b).code, StatusCode::BadModel) << what;
+  for (const Point& q : k.mechanism().points) EXPECT_EQ(copy.position(q.id), k.position(q.id));
 }
 
 // The same, and the instant centres and velocity chains of k.

@@ -89,6 +89,12 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
   auto otherBody = [&](const Constraint* c, int b) { return c->bi == b ? c->bj : c->bi; };
 
   ClosedFormPlan plan;
+  plan.jointGroup_.assign(nj, -1);
+  // Marks joint j used by the group just added.
+  auto use = [&](int j) {
+    used[j] = true;
+    plan.jointGroup_[j] = static_cast<int>(plan.groups_.size()) - 1;
+  };
   bool crankDone = false;
   int remaining = sys.nBodies;
   std::vector<int> k1j, k2j;
@@ -109,7 +115,7 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
           g.p1k = pinOther(p, unknownSide);
           g.sign = unknownSide == driver->bi ? sys.sigma : -sys.sigma;
           plan.groups_.push_back(g);
-          used[driver->joint] = true;
+          use(driver->joint);
           known[unknownSide] = true;
           crankDone = progress = true;
           --remaining;
@@ -135,7 +141,8 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
           g.u = line[js]->sj;
           g.n = line[js]->nj;
           plan.groups_.push_back(g);
-          used[jp] = used[js] = true;
+          use(jp);
+          use(js);
           known[b1] = true;
           progress = true;
           --remaining;
@@ -176,7 +183,9 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
           continue;
         }
         plan.groups_.push_back(g);
-        used[k1j[0]] = used[j] = used[j2] = true;
+        use(k1j[0]);
+        use(j);
+        use(j2);
         known[b1] = known[b2] = true;
         progress = true;
         remaining -= 2;
@@ -247,7 +256,7 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
       g.core = static_cast<int>(plan.cores_.size());
       plan.cores_.push_back(core);
       plan.groups_.push_back(g);
-      for (int j : joints) used[j] = true;
+      for (int j : joints) use(j);
       known[c] = true;
       for (int b : blocks) known[b] = true;
       remaining -= 1 + static_cast<int>(blocks.size());
@@ -257,6 +266,9 @@ std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const Sy
   }
   for (int j = 0; j < nj; ++j)
     if (!used[j]) return std::nullopt;
+  plan.bodyGroup_.assign(sys.nBodies, -1);
+  for (size_t i = 0; i < plan.groups_.size(); ++i)
+    for (int b : plan.bodiesOf(static_cast<int>(i))) plan.bodyGroup_[b] = static_cast<int>(i);
 
   // Local directions and the drawn branches, from the assembled configuration.
   Motion at;
@@ -330,6 +342,31 @@ bool ClosedFormPlan::sameGeometry(const Group& a, const Group& b, const ClosedFo
          a.p2k == b.p2k && a.u == b.u && a.n == b.n && a.q2 == b.q2;
 }
 
+std::vector<int> ClosedFormPlan::bodiesOf(int g) const {
+  std::vector<int> unknown, known;
+  bodiesOf(groups_[g], unknown, known);
+  return unknown;
+}
+
+int ClosedFormPlan::resolveFrom(size_t first, const System& sys, const Motion& prev, Motion& next,
+                                std::vector<char>& moved, bool jump,
+                                const ClosedFormPlan* before) const {
+  const Rot crank{std::cos(prev.phi), std::sin(prev.phi)};
+  std::vector<int> unknown, known;
+  int solved = 0;
+  for (size_t i = first; i < groups_.size(); ++i) {
+    const Group& g = groups_[i];
+    bodiesOf(g, unknown, known);
+    bool touched = before ? !sameGeometry(before->groups_[i], g, *before, *this) : i == first;
+    for (int b : known) touched = touched || (b >= 0 && moved[b]);
+    if (!touched) continue;  // its bodies keep the motion already in next
+    if (!solveGroup(g, sys, prev, 0.0, crank, next, jump)) return -1;
+    for (int b : unknown) moved[b] = 1;
+    ++solved;
+  }
+  return solved;
+}
+
 int ClosedFormPlan::resolveEdited(const System& sys, const ClosedFormPlan& before,
                                   const Motion& prev, Motion& next) {
   if (before.groups_.size() != groups_.size() || before.cores_.size() != cores_.size()) return -1;
@@ -347,31 +384,43 @@ int ClosedFormPlan::resolveEdited(const System& sys, const ClosedFormPlan& befor
   next.phi = prev.phi;
   next.body = prev.body;
   next.accelerations = prev.accelerations;
-  const Rot crank{std::cos(prev.phi), std::sin(prev.phi)};
   std::vector<char> moved(sys.nBodies, 0);
-  int solved = 0;
-  for (size_t i = 0; i < groups_.size(); ++i) {
-    const Group& g = groups_[i];
-    bodiesOf(g, unknown, known);
-    bool touched = !sameGeometry(before.groups_[i], g, before, *this);
-    for (int b : known) touched = touched || (b >= 0 && moved[b]);
-    if (!touched) continue;  // its bodies keep prev's motion, already in next
-    if (!solveGroup(g, sys, prev, 0.0, crank, next)) return -1;
-    for (int b : unknown) moved[b] = 1;
-    ++solved;
-  }
-  return solved;
+  return resolveFrom(0, sys, prev, next, moved, false, &before);
+}
+
+bool ClosedFormPlan::flip(int g, const System& sys, const Motion& prev, Motion& next) {
+  if (!hasMirror(g)) return false;
+  ClosedFormPlan trial = *this;
+  Group& G = trial.groups_[g];
+  if (G.kind == Kind::Core)
+    trial.cores_[G.core].detSign = -trial.cores_[G.core].detSign;
+  else
+    G.sign = -G.sign;
+  next.phi = prev.phi;
+  next.body = prev.body;
+  next.accelerations = prev.accelerations;
+  std::vector<char> moved(sys.nBodies, 0);
+  if (trial.resolveFrom(static_cast<size_t>(g), sys, prev, next, moved, true) < 0) return false;
+  *this = std::move(trial);
+  return true;
 }
 
 bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion& prev, double h,
-                                const Rot& crank, Motion& next) const {
+                                const Rot& crank, Motion& next, bool jump) const {
   // Sets body b, continuing its count of whole turns from the previous position.
   auto set = [&](int b, const Rot& R, double w, double al, const Vec2& s, const Vec2& P,
                  const Vec2& vP, const Vec2& aP) {
     const BodyState& before = prev.body[b];
-    place(next.body[b], R, turnsAfter(before.R, before.turns, R), w, al, s, P, vP, aP);
+    const double turns =
+        jump ? nearestTurns(before.angle(), R) : turnsAfter(before.R, before.turns, R);
+    place(next.body[b], R, turns, w, al, s, P, vP, aP);
   };
-  if (g.kind == Kind::Core) return solveCore(cores_[g.core], sys, prev, next);
+  if (g.kind == Kind::Core) {
+    const CoreGroup& core = cores_[g.core];
+    if (!jump) return solveCore(core, sys, prev, next);
+    BodyState start;
+    return corePose(core, next, start) && solveCore(core, sys, prev, next, &start);
+  }
   const BodyState& k1 = next.of(g.k1);
   const PointState p1 = pointOf(g.k1, k1, g.p1k);
   const Vec2 &P1 = p1.p, &vP1 = p1.v, &aP1 = p1.a;
@@ -400,7 +449,7 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
     const double a = (d1 * d1 - d2 * d2 + L * L) / (2 * L);
     const double h2 = d1 * d1 - a * a;
     if (!(h2 >= 0)) return false;
-    if (g.sign * cross(eh, Cpred - P1) < 0) return false;
+    if (!jump && g.sign * cross(eh, Cpred - P1) < 0) return false;
     C = P1 + a * eh + g.sign * std::sqrt(h2) * perp(eh);
     u1 = C - P1;
     const Vec2 u2 = C - P2;
@@ -422,7 +471,7 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
     const double lam2 = d1 * d1 - delta * delta;
     if (!(lam2 >= 0)) return false;
     const Vec2 foot = P1 + delta * n;
-    if (g.sign * dir.dot(Cpred - foot) < 0) return false;
+    if (!jump && g.sign * dir.dot(Cpred - foot) < 0) return false;
     C = foot + g.sign * std::sqrt(lam2) * dir;
     u1 = C - P1;
     // C = U + s dir - w, with the block turning with k2 (w' = w_k2 perp(w)).

@@ -48,6 +48,12 @@ struct KinematicsState {
   Status moveToPhi(double phi);
   // Kinematics::dragTo (drag.cpp).
   Kinematics::DragResult drag(PointId p, const Vec2& target);
+  // Kinematics::flipBranch (flip.cpp): the plan's group on its other assembly; `what` names it
+  // in messages.
+  Status flip(int group, const std::string& what, Mechanism* redrawn);
+  std::vector<BodyId> flippableBodies() const;
+  // Every body at its drawn pose.
+  Motion sketchMotion() const;
   Status trackGeneral(double phi);
   // Closed-form steps towards phi; false where the plan cannot go on (reg is the last good).
   bool trackClosedForm(double phi);

@@ -118,6 +118,27 @@ class Kinematics {
   };
   DragResult dragTo(PointId p, const Vec2& target);
 
+  // Branch flip: puts the group that solves `body` (a dyad, RRR, RRP or RP, or a core group of
+  // the closed-form solve; closedForm()) on its other assembly at the current crank angle: a
+  // dyad's joint to the other intersection of its two circles (or circle and line), a core on
+  // the other root of its equations. The groups that depend on it are solved again on their
+  // own branches; the others do not move. By a joint: the group the joint belongs to (the
+  // joint between a dyad's two links, or one of its pins to the bodies it hangs from).
+  // The mechanism() is not changed: a later load of it assembles the drawing on the branch it
+  // is drawn on. `redrawn`, when given, gets the design redrawn on the new branch (every body
+  // the flip moves, drawn where it is at driver angle 0, the drawing's, exactly; the same ids):
+  // loading or editing to it gives the flipped motion, and saving it keeps the flip.
+  // Refused, with nothing changed: BadModel off the closed-form path (no mirror assembly is
+  // known), for the crank, the ground or an unknown id; Singular at a singular position, where
+  // the two assemblies meet; AssemblyFailed where a group that depends on it cannot close on
+  // the new branch; the tracker's status when the new branch cannot be turned back to the
+  // drawing's crank angle for `redrawn`.
+  Status flipBranch(BodyId body, Mechanism* redrawn = nullptr);
+  Status flipBranch(JointId joint, Mechanism* redrawn = nullptr);
+  // The bodies flipBranch takes (file order): the bodies of the closed-form groups that have a
+  // mirror assembly; empty off the closed-form path. What an editor greys its command by.
+  std::vector<BodyId> flippableBodies() const;
+
   bool valid() const;
   // Changes with every successful load or edit (unique across all Kinematics objects): what a
   // derived object (InstantCentreSolver) records, to refuse working on a mechanism it has not
