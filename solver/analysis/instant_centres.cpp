@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "joints/registry.h"
 #include "solve/kinematics_state.h"
 
 namespace linkage {
@@ -166,16 +167,17 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
     p.body = a->body;
     p.s = a->s;
     int other = -1;
-    if (j.type == JointType::Pin) {
+    const JointKind& kind = jointKind(j.type);
+    p.rule = kind.centre;
+    if (kind.onSlot) {
+      const Slot* s = m.slot(j.slot);
+      if (!s) continue;
+      p.slotBody = other = sys.bodyIndex(s->body);
+      p.n = perp((s->p1 - s->p0).normalized());  // bodies are at angle 0 as drawn
+    } else {
       const PointLocation* b = sys.point(j.b);
       if (!b) continue;
       other = b->body;
-    } else {
-      const Slot* s = m.slot(j.slot);
-      if (!s) continue;
-      p.kind = j.type == JointType::Slider ? Kind::Slider : Kind::PinInSlot;
-      p.slotBody = other = sys.bodyIndex(s->body);
-      p.n = perp((s->p1 - s->p0).normalized());  // bodies are at angle 0 as drawn
     }
     const int ta = textbookOf_[p.body + 1], tb = textbookOf_[other + 1];
     if (ta == tb) continue;
@@ -259,7 +261,7 @@ void InstantCentreSolver::primaryCentres() {
     bool fromLines = false;
     for (int e = w.firstPrimary; e < w.firstPrimary + w.primaryCount; ++e) {
       const Primary& pr = primaries_[e];
-      if (pr.kind == Kind::PinInSlot) {
+      if (pr.rule == CentreRule::OnNormal) {
         // Only a line: the centre is on the normal to the slot through the pin.
         const Vec2 n = turn(pr.slotBody, pr.n);
         const Vec3 l = scaled(global(pr.body, pr.s)).cross(Vec3(n.x(), n.y(), 0.0));
@@ -286,7 +288,7 @@ void InstantCentreSolver::primaryCentres() {
         continue;
       }
       Vec3 h, mm;
-      if (pr.kind == Kind::Pin) {
+      if (pr.rule == CentreRule::AtPoint) {
         const Vec2 x = global(pr.body, pr.s);
         h = scaled(x);
         mm = Vec3(x.x(), x.y(), 1.0);

@@ -39,8 +39,12 @@ struct KinematicsState {
   // Edits of an already valid state, cheapest first; each changes nothing when it fails.
   // Dimensions only, on the closed-form path: the groups the edit touches (load.cpp).
   bool editInPlace(const Mechanism& m, const std::vector<BodyId>& reshaped);
-  // Dimensions only: the analysis kept, re-assembled from the current pose.
+  // Dimensions only: the analysis and the Newton solver kept, re-assembled from the current
+  // pose.
   bool editKeepingAnalysis(const Mechanism& m);
+  // Closes the joints from q (near a solution) at phi, then starts there; false where it
+  // cannot (q is then the last iterate).
+  bool reassemble(Eigen::VectorXd& q, double phi);
   // Anything (into a new state): a warm start from old's pose, else the drawing turned to the
   // crank angle old was at.
   Status editFrom(const KinematicsState& old, const Mechanism& m);

@@ -18,6 +18,10 @@
 
 namespace linkage {
 
+// What a joint says by itself about the centre of the bodies it joins (defined with the joint
+// types, internally).
+enum class CentreRule : unsigned char;
+
 // How a centre was found. Velocity: Kennedy's lines do not fix it at this position (too few
 // lines, or the lines coincide), so it is taken from the solved velocities, and said so.
 enum class CentreStatus : unsigned char { Primary, Kennedy, Velocity };
@@ -140,9 +144,8 @@ class InstantCentreSolver {
   const InstantCentres& result() const { return out_; }
 
  private:
-  enum class Kind : unsigned char { Pin, Slider, PinInSlot };
   struct Primary {
-    Kind kind = Kind::Pin;
+    CentreRule rule{};  // what the joint says of the centre
     int joint = -1;
     int body = -1;  // system body index of the point (pin: point a), -1 ground
     Vec2 s = Vec2::Zero();
