@@ -36,9 +36,10 @@ namespace linkage {
 class ClosedFormPlan {
  public:
   // A plan when the whole mechanism decomposes into these groups (no redundant joints, no held
-  // coordinates), with branches taken from the assembled configuration q; nullopt otherwise.
+  // coordinates), with branches taken from the assembled configuration `at` (its positions);
+  // nullopt otherwise (closed_form_build.cpp).
   static std::optional<ClosedFormPlan> build(const Mechanism& m, const System& sys,
-                                             const Eigen::VectorXd& q);
+                                             const Motion& at);
 
   // The motion at driver angle phi (positions, d/dphi and d2/dphi2 of every coordinate) from the
   // previous one (whole turns are counted from it, branch crossings and core groups predicted
@@ -76,6 +77,7 @@ class ClosedFormPlan {
   bool flip(int g, const System& sys, const Motion& prev, Motion& next);
 
  private:
+  class Builder;
   enum class Kind { Crank, RRR, RRP, RP, Core };
   struct Group {
     Kind kind = Kind::Crank;

@@ -97,10 +97,7 @@ int detSignAt(const CoreGroup& g, const BodyState& core, const Motion& m) {
 
 }  // namespace
 
-int coreDetSign(const CoreGroup& g, const Eigen::VectorXd& q) {
-  Motion m;
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q.size());
-  m.fromCoordinates(0, q, zero, zero);
+int coreDetSign(const CoreGroup& g, const Motion& m) {
   return detSignAt(g, m.body[g.core], m);
 }
 

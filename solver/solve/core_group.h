@@ -50,7 +50,7 @@ bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion
 // rows are dependent: no pose, or not one that the rows fix.
 bool corePose(const CoreGroup& g, const Motion& m, BodyState& pose);
 
-// Sign of det of the core's 3 x 3 Jacobian at q (0 if singular).
-int coreDetSign(const CoreGroup& g, const Eigen::VectorXd& q);
+// Sign of det of the core's 3 x 3 Jacobian at the positions of m (0 if singular).
+int coreDetSign(const CoreGroup& g, const Motion& m);
 
 }  // namespace linkage

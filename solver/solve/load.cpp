@@ -97,7 +97,7 @@ Status KinematicsState::start(const Eigen::VectorXd& q, double phi) {
   valid = true;
   plan.reset();
   if (opt.closedForm) {
-    plan = ClosedFormPlan::build(mech, sys, q);
+    plan = ClosedFormPlan::build(mech, sys, reg);
     // The plan must reproduce the configuration just solved, or it is not used.
     next.coordinates = false;  // whatever next held before is not what the plan writes
     if (plan && !(plan->solve(sys, reg, phi, next) &&
@@ -163,9 +163,7 @@ bool KinematicsState::editInPlace(const Mechanism& m, const std::vector<BodyId>&
     b.v += b.w * perp(shift);
     b.a += b.al * perp(shift) - b.w * b.w * shift;
   }
-  Eigen::VectorXd q, dq, ddq;
-  warm.toCoordinates(q, dq, ddq);
-  std::optional<ClosedFormPlan> editedPlan = ClosedFormPlan::build(m, *edited, q);
+  std::optional<ClosedFormPlan> editedPlan = ClosedFormPlan::build(m, *edited, warm);
   if (!editedPlan) return false;
   Motion solved;
   const int groups = editedPlan->resolveEdited(*edited, *plan, warm, solved);
