@@ -31,6 +31,112 @@ constexpr int kMaxMoves = 16;
 // A tracker that stops within this of where it started has not moved: the start is the stop.
 constexpr double kStuck = 1e-6 * kDeg;
 
+// The descent for one point and target, on a state that can move.
+class Descent {
+ public:
+  Descent(KinematicsState& k, const PointLocation& loc, const Vec2& target)
+      : k_(k), loc_(loc), target_(target) {}
+
+  // At most kMaxSteps steps; Ok, or the tracker's status where the motion stopped.
+  Status run(Kinematics::DragResult& out) {
+    const double L = k_.sys.size;
+    Probe p = probe();
+    for (int step = 0; step < kMaxSteps; ++step) {
+      if (!std::isfinite(p.g))
+        return Status::failure(StatusCode::Singular, "velocities are not determined here");
+      const double phi0 = k_.cur().phi;
+      const double h = newtonStep(p, phi0);
+      // Converged: the point on the target, or a step below what an angle resolves.
+      if (p.f <= 0.5 * (1e-13 * L) * (1e-13 * L) ||
+          std::abs(h) <= 1e-13 * std::max(1.0, std::abs(phi0))) {
+        out.converged = true;
+        return Status::success();
+      }
+      Status s;
+      switch (lineSearch(h, p, s)) {
+        case Outcome::Moved:
+          continue;
+        case Outcome::Stopped:
+          out.atLimit = s.code == StatusCode::Unreachable;
+          out.converged = true;
+          return s;
+        case Outcome::Failed:
+          return s;
+        case Outcome::Nothing:
+          // Nothing nearer within the halvings: back to where it was, as near as it gets.
+          if (k_.cur().phi != phi0) {
+            if (s = k_.moveToPhi(phi0); !s.ok()) return s;
+          }
+          out.converged = moves_ < kMaxMoves;
+          return Status::success();
+      }
+    }
+    return Status::success();
+  }
+
+ private:
+  struct Probe {
+    double f, g, H;  // f, f', and f'' (exact) or NaN
+    double speed;    // |P'|
+  };
+  enum class Outcome { Moved, Stopped, Failed, Nothing };
+
+  Probe probe() const {
+    const KinematicsState::Snapshot& c = k_.cur();
+    const BodyState& b = c.of(loc_.body);
+    const Vec2 r = b.pos(loc_.s) - target_, dP = b.vel(loc_.s);
+    const double H = c.accelerations ? dP.squaredNorm() + b.acc(loc_.s).dot(r) : NAN;
+    return Probe{0.5 * r.squaredNorm(), dP.dot(r), H, dP.norm()};
+  }
+
+  // Newton's step where f'' > 0 (f'' exact, else the secant of f', else |P'|^2), the largest
+  // downhill one where not; capped.
+  double newtonStep(const Probe& p, double phi0) const {
+    double H = p.H;
+    if (!std::isfinite(H)) {
+      const double secant = (p.g - gBefore_) / (phi0 - phiBefore_);
+      H = std::isfinite(secant) && secant > 0 ? secant : p.speed * p.speed;
+    }
+    const double h = H > 0 ? -p.g / H : (p.g > 0 ? -kMaxStep : kMaxStep);
+    return std::clamp(h, -kMaxStep, kMaxStep);
+  }
+
+  // Moves by h from the current pose, halving h until f falls. A limit position or a singular
+  // one met on the way stops the motion there (Stopped, s says where) when it is on the way
+  // down; Failed for any other failure of the tracker (s).
+  Outcome lineSearch(double h, Probe& p, Status& s) {
+    const double phi0 = k_.cur().phi;
+    // A gain below what f resolves (its rounding, a few eps of f): near the minimum f' still
+    // tells the way, f no longer does, so such a step is taken without the test that f fell.
+    const bool withinRounding = 0.5 * std::abs(p.g * h) <= 1e-13 * p.f;
+    for (; moves_ < kMaxMoves; ++moves_, h /= 2) {
+      s = k_.moveToPhi(phi0 + h);
+      const Probe q = probe();
+      const bool stop = s.code == StatusCode::Unreachable || s.code == StatusCode::Singular ||
+                        s.code == StatusCode::NotConverged;
+      if (!s.ok() && !stop) return Outcome::Failed;
+      // Stopped where it was: it is at the limit (or the singular position) already.
+      if (!s.ok() && std::abs(k_.cur().phi - phi0) <= kStuck) return Outcome::Stopped;
+      if (!(q.f < p.f || (withinRounding && s.ok() && q.f <= p.f * (1 + 1e-13)))) continue;
+      ++moves_;
+      // Stopped short of the step, nearer than before: if f falls beyond the stop, this is
+      // as near as the motion goes; else the nearest position lies before it, go on from there.
+      if (!s.ok() && (!std::isfinite(q.g) || q.g * h < 0)) return Outcome::Stopped;
+      phiBefore_ = phi0;
+      gBefore_ = p.g;
+      p = q;
+      return Outcome::Moved;
+    }
+    return Outcome::Nothing;
+  }
+
+  KinematicsState& k_;
+  const PointLocation& loc_;
+  const Vec2 target_;
+  double phiBefore_ = NAN, gBefore_ = NAN;  // the pose before, for the secant
+  int moves_ = 0;                           // of the tracker, this call
+};
+
 }  // namespace
 
 Kinematics::DragResult KinematicsState::drag(PointId id, const Vec2& target) {
@@ -57,85 +163,7 @@ Kinematics::DragResult KinematicsState::drag(PointId id, const Vec2& target) {
   if (atSingular) {
     if (Status s = moveToPhi(reg.phi); !s.ok()) return finish(s);
   }
-
-  struct Probe {
-    double f, g, H;  // f, f', and f'' (exact) or NaN
-    double speed;    // |P'|
-  };
-  auto probe = [&] {
-    const Snapshot& c = cur();
-    const BodyState& b = c.of(loc->body);
-    const Vec2 r = b.pos(loc->s) - target, dP = b.vel(loc->s);
-    const double H = c.accelerations ? dP.squaredNorm() + b.acc(loc->s).dot(r) : NAN;
-    return Probe{0.5 * r.squaredNorm(), dP.dot(r), H, dP.norm()};
-  };
-  const double L = sys.size;
-  double phiBefore = NAN, gBefore = NAN;
-  int moves = 0;
-  Probe p = probe();
-  for (int step = 0; step < kMaxSteps; ++step) {
-    if (!std::isfinite(p.g))
-      return finish(Status::failure(StatusCode::Singular, "velocities are not determined here"));
-    const double phi0 = cur().phi;
-    double H = p.H;
-    if (!std::isfinite(H)) {
-      const double secant = (p.g - gBefore) / (phi0 - phiBefore);
-      H = std::isfinite(secant) && secant > 0 ? secant : p.speed * p.speed;
-    }
-    double h = H > 0 ? -p.g / H : (p.g > 0 ? -kMaxStep : kMaxStep);
-    h = std::clamp(h, -kMaxStep, kMaxStep);
-    // Converged: the point on the target, or a step below what an angle resolves.
-    if (p.f <= 0.5 * (1e-13 * L) * (1e-13 * L) ||
-        std::abs(h) <= 1e-13 * std::max(1.0, std::abs(phi0))) {
-      out.converged = true;
-      return finish(Status::success());
-    }
-    // A gain below what f resolves (its rounding, a few eps of f): near the minimum f' still
-    // tells the way, f no longer does, so such a step is taken without the test that f fell.
-    const bool withinRounding = 0.5 * std::abs(p.g * h) <= 1e-13 * p.f;
-    // Halve the step until f falls; a limit position or a singular one stops the motion there.
-    bool moved = false;
-    for (; moves < kMaxMoves && !moved; ++moves) {
-      const Status s = moveToPhi(phi0 + h);
-      const Probe q = probe();
-      if (!s.ok() && s.code != StatusCode::Unreachable && s.code != StatusCode::Singular &&
-          s.code != StatusCode::NotConverged)
-        return finish(s);
-      if (!s.ok() && std::abs(cur().phi - phi0) <= kStuck) {
-        // Stopped where it was: it is at the limit (or the singular position) already.
-        out.atLimit = s.code == StatusCode::Unreachable;
-        out.converged = true;
-        return finish(s);
-      }
-      if (!(q.f < p.f || (withinRounding && s.ok() && q.f <= p.f * (1 + 1e-13)))) {
-        h /= 2;
-        continue;
-      }
-      moved = true;
-      if (!s.ok()) {
-        // Stopped short of the step, nearer than before. Beyond it f would fall further (the
-        // stop is on the way down): this is as near as the motion goes. Otherwise the nearest
-        // position lies before the stop: go on from there.
-        if (!std::isfinite(q.g) || q.g * h < 0) {
-          out.atLimit = s.code == StatusCode::Unreachable;
-          out.converged = true;
-          return finish(s);
-        }
-      }
-      phiBefore = phi0;
-      gBefore = p.g;
-      p = q;
-    }
-    if (!moved) {
-      // Nothing nearer within the halvings: back to where it was, which is as near as it gets.
-      if (cur().phi != phi0) {
-        if (Status s = moveToPhi(phi0); !s.ok()) return finish(s);
-      }
-      out.converged = moves < kMaxMoves;
-      return finish(Status::success());
-    }
-  }
-  return finish(Status::success());
+  return finish(Descent(*this, *loc, target).run(out));
 }
 
 }  // namespace linkage
