@@ -5,7 +5,6 @@
 #include <string>
 
 #include "cli_common.h"
-#include "linkage/io/atomic_file.h"
 #include "linkage/io/motion_table.h"
 #include "linkage/io/numbers.h"
 
@@ -118,14 +117,7 @@ int writeTable(Kinematics& k, const Options& o, Status& s) {
   } else {
     s = sweepMotionTable(k, o.spec, sink);
   }
-  if (o.out.empty()) {
-    std::fwrite(buffer.data(), 1, buffer.size(), stdout);
-    std::fflush(stdout);
-    return kOk;
-  }
-  const WriteResult w = writeFileAtomically(o.out, buffer);
-  if (!w.ok) error(w.error);
-  return w.ok ? kOk : kFailure;
+  return writeOutput(o.out, buffer);
 }
 
 }  // namespace
@@ -133,12 +125,8 @@ int writeTable(Kinematics& k, const Options& o, Status& s) {
 int analyze(int argc, char** argv) {
   Options o;
   if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
-  std::optional<Mechanism> m = openModel(o.model);
+  std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
-  if (!m->driver) {
-    error(o.model + ": the mechanism has no driver: add \"driver\": {\"joint\": <pin index>, ...}");
-    return kBadInput;
-  }
   std::optional<std::vector<PointId>> ids = outputPoints(*m, o.points);
   if (!ids) return kBadInput;
   o.spec.points = *ids;

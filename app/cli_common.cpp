@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
+#include "linkage/io/atomic_file.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
@@ -78,6 +80,27 @@ std::optional<Mechanism> openModel(const std::string& nameOrPath) {
     return std::nullopt;
   }
   return std::move(*r.mechanism);
+}
+
+std::optional<Mechanism> openDrivenModel(const std::string& nameOrPath) {
+  std::optional<Mechanism> m = openModel(nameOrPath);
+  if (m && !m->driver) {
+    error(nameOrPath +
+          ": the mechanism has no driver: add \"driver\": {\"joint\": <pin index>, ...}");
+    return std::nullopt;
+  }
+  return m;
+}
+
+int writeOutput(const std::string& path, const std::string& text) {
+  if (path.empty()) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fflush(stdout);
+    return kOk;
+  }
+  const WriteResult w = writeFileAtomically(path, text);
+  if (!w.ok) error(w.error);
+  return w.ok ? kOk : kFailure;
 }
 
 int prepare(Kinematics& k, const Mechanism& m) {

@@ -32,6 +32,14 @@ std::optional<long long> wholeNumber(const std::string& option, const std::strin
 // Loads MODEL (a path or an example name); prints the error and returns nullopt on failure.
 std::optional<Mechanism> openModel(const std::string& nameOrPath);
 
+// openModel, for a command that turns the crank: a mechanism without a driver is refused (the
+// message says how to add one).
+std::optional<Mechanism> openDrivenModel(const std::string& nameOrPath);
+
+// Writes text to standard output, or atomically to `path` when it is not empty; kOk, or
+// kFailure with the error printed.
+int writeOutput(const std::string& path, const std::string& text);
+
 // Loads and assembles; prints notes (assembly moves, redundant joints) to standard error.
 // Returns the exit status, kOk when the kinematics are ready.
 int prepare(Kinematics& k, const Mechanism& m);

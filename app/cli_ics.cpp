@@ -7,7 +7,6 @@
 
 #include "cli_common.h"
 #include "linkage/instant_centres.h"
-#include "linkage/io/atomic_file.h"
 #include "linkage/io/numbers.h"
 #include "linkage/velocity_chain.h"
 
@@ -361,28 +360,13 @@ void report(const InstantCentres& ics) {
                          : "the two bodies do not move relative to each other"));
 }
 
-int write(const Options& o, const std::string& text) {
-  if (o.out.empty()) {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    std::fflush(stdout);
-    return kOk;
-  }
-  const WriteResult w = writeFileAtomically(o.out, text);
-  if (!w.ok) error(w.error);
-  return w.ok ? kOk : kFailure;
-}
-
 }  // namespace
 
 int ics(int argc, char** argv) {
   Options o;
   if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
-  std::optional<Mechanism> m = openModel(o.model);
+  std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
-  if (!m->driver) {
-    error(o.model + ": the mechanism has no driver: add \"driver\": {\"joint\": <pin index>, ...}");
-    return kBadInput;
-  }
   std::optional<PointId> pid;
   if (!o.point.empty()) {
     std::optional<std::vector<PointId>> ids = outputPoints(*m, {o.point});
@@ -403,13 +387,13 @@ int ics(int argc, char** argv) {
   }
   const InstantCentres& ics = solver.compute(k);
   report(ics);
-  if (!pid) return write(o, o.json ? json(*m, ics, *o.angle) : csv(*m, ics, *o.angle));
+  if (!pid) return writeOutput(o.out, o.json ? json(*m, ics, *o.angle) : csv(*m, ics, *o.angle));
   const VelocityChain ch = velocityChain(k, ics, *pid, o.viaBodies);
   if (!ch.status.ok()) {
     error("--point " + o.point + ": " + ch.status.message);
     return ch.status.code == StatusCode::BadModel || !o.viaBodies.empty() ? kBadInput : kFailure;
   }
-  return write(o, o.json ? chainJson(*m, ics, ch) : chainText(*m, ics, ch, k.rpm()));
+  return writeOutput(o.out, o.json ? chainJson(*m, ics, ch) : chainText(*m, ics, ch, k.rpm()));
 }
 
 }  // namespace linkage::cli

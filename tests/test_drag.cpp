@@ -7,9 +7,9 @@
 #include <cmath>
 
 #include "examples.h"
+#include "four_bar_reference.h"
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
-#include "reference/four_bar.h"
 #include "reference/wanzer.h"
 
 namespace linkage {
@@ -62,16 +62,7 @@ TEST(Drag, ACouplerPointReachesTheNearestPointOfItsCurve) {
   // point is on the curve at the crank angle reached, and no point of the curve within 10
   // degrees of crank is nearer (a scan of the reference).
   auto f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
-  linkref::FourBarParams<double> p;
-  p.O2 = {0, 0};
-  p.O4 = {60, 0};
-  p.r2 = 20;
-  p.r3 = 70;
-  p.r4 = 50;
-  p.theta20 = 60 * kDeg;
-  p.omega = 1;
-  p.px = 35;
-  p.py = 25;
+  const auto p = test::fourBarReference(60, 20, 70, 50, 60, true, 35, 25);
   auto ref = [&](double deg) {
     const auto s = linkref::four_bar(p, deg * kDeg);
     return Vec2(s.P.x, s.P.y);

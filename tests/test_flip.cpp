@@ -7,10 +7,10 @@
 #include <cmath>
 
 #include "examples.h"
+#include "four_bar_reference.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
-#include "reference/four_bar.h"
 
 namespace linkage {
 namespace {
@@ -50,21 +50,6 @@ void expectRedrawnMovesAlike(Kinematics& flipped, const Mechanism& redrawn,
   }
 }
 
-linkref::FourBarParams<double> reference(linkref::FourBarBranch branch, double omega) {
-  linkref::FourBarParams<double> p;
-  p.O2 = {0, 0};
-  p.O4 = {60, 0};
-  p.r2 = 20;
-  p.r3 = 70;
-  p.r4 = 50;
-  p.theta20 = 60 * kDeg;
-  p.omega = omega;
-  p.branch = branch;
-  p.px = 35;
-  p.py = 25;
-  return p;
-}
-
 TEST(Flip, FourBarGoesToTheOtherIntersectionOfItsCircles) {
   auto f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
   for (double at : {0.0, 75.0, 200.0, 330.0}) {
@@ -79,7 +64,7 @@ TEST(Flip, FourBarGoesToTheOtherIntersectionOfItsCircles) {
     EXPECT_EQ(k.crankDeg(), at);
     EXPECT_EQ(k.position(onCrank), crankA);  // the crank does not move
     // The crossed closed form, here and along the motion.
-    const auto crossed = reference(linkref::FourBarBranch::kCrossed, k.omega());
+    const auto crossed = test::fourBarReference(60, 20, 70, 50, 60, false, 35, 25, k.omega());
     const double L = k.size(), w = k.omega();
     for (double deg : {at, at + 50, at + 180, at - 90}) {
       ASSERT_TRUE(k.moveTo(deg).ok()) << deg;
