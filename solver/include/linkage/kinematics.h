@@ -4,13 +4,21 @@
 // last good state as it was.
 //
 // Moving to a crank angle tracks the motion continuously from the current one, in steps of at
-// most `maxStepDeg`: a predictor (second-order Taylor from the last regular position) and Newton
-// on the independent equations. A step is refused, and cut to a quarter, when Newton does not
-// contract from the predictor, when its first correction is far (another branch), when the sign
-// of det J changes (the path crossed a singular position, where the other branch can be picked
-// up), or when the velocities at its end do not follow from those at its start (a change point
-// crossed with det J of the same sign). Refused down to `minStepDeg`, the reason is reported: a
-// limit position (the mechanism locks), a singular crossing, or a position solve that fails.
+// most `maxStepDeg`. Group by group in closed form where the mechanism decomposes (a step the
+// groups cannot take, because a group does not close or its joint would land on the other side
+// of its branch line, is left to the general solve from the last position reached). Else a
+// predictor (second-order Taylor from the last regular position) and Newton on the independent
+// equations. A step is refused, and the next try cut to a quarter of it (after an accepted step
+// the step doubles again, up to `maxStepDeg`), when Newton does not converge from the predictor
+// (J singular there, no contraction, or a first correction farther than
+// `NewtonOptions::maxFirstStep` of the size: another branch), when the sign of det J changes (the
+// path crossed a singular position, where the other branch can be picked up), when the velocities
+// at its end do not follow from those at its start (a change point crossed with det J of the same
+// sign), or when its end is too near a singular position to be the base of the next step. A step
+// that ends on a singular position is refused too, unless it ends at the angle asked for: moveTo
+// then stops there with Singular (positions known, velocities not). Refused down to
+// `minStepDeg`, the reason is reported: a limit position (the mechanism locks), a singular
+// crossing, or a position solve that fails.
 //
 // Ids: every query takes the ids of the Mechanism that was loaded (or a copy of it). An id the
 // mechanism does not hold, or one from another mechanism, is refused: queries answer NaN and
