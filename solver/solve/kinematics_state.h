@@ -91,6 +91,10 @@ struct KinematicsState {
   bool lastRefusalCrossing = false;
   bool valid = false;
   int lastEditGroups = -1;
+  // How the last edit was solved (for tests and benchmarks): in place by the closed-form groups,
+  // re-assembled with the analysis kept, or whole (analysed again).
+  enum class EditPath { None, InPlace, KeptAnalysis, Whole };
+  EditPath lastEdit = EditPath::None;
   std::uint64_t revision = 0;
 };
 

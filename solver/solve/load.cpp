@@ -180,6 +180,7 @@ bool KinematicsState::editInPlace(const Mechanism& m, const std::vector<BodyId>&
                              [](const Note& n) { return n.kind == Note::Kind::AssemblyMoved; }),
               notes.end());
   lastEditGroups = groups;
+  lastEdit = EditPath::InPlace;
   return true;
 }
 
@@ -216,6 +217,7 @@ bool KinematicsState::editKeepingAnalysis(const Mechanism& m) {
       trial.notes.end());
   trial.revision = revision;
   trial.lastEditGroups = -1;
+  trial.lastEdit = EditPath::KeptAnalysis;
   *this = std::move(trial);
   return true;
 }
@@ -232,6 +234,7 @@ bool KinematicsState::reassemble(Eigen::VectorXd& q, double phi) {
 
 Status KinematicsState::editFrom(const KinematicsState& old, const Mechanism& m) {
   lastEditGroups = -1;
+  lastEdit = EditPath::Whole;
   const Snapshot& now = old.coordinates(old.cur());
   const double phi = now.phi;
   Status s;
