@@ -5,7 +5,6 @@
 #include <string>
 
 #include "cli_common.h"
-#include "linkage/io/atomic_file.h"
 #include "linkage/io/motion_table.h"
 #include "linkage/io/numbers.h"
 
@@ -37,138 +36,109 @@ written, then the reason on standard error.
 
 constexpr long long kMaxRows = 50'000'000;
 
-}  // namespace
-
-int analyze(int argc, char** argv) {
+struct Options {
   std::string model, out;
   std::vector<std::string> points;
-  long long steps = 360;
-  double revs = 1, rpm = 0;
+  MotionTableSpec spec;  // steps, revs, rpm (points later)
   std::optional<double> angle;
-  bool sweepOptions = false;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (isHelp(a)) {
-      std::cout << kHelp;
-      return kOk;
-    }
-    auto value = [&](std::string& v) {
-      if (i + 1 >= argc) {
-        error(a + ": needs a value");
-        return false;
-      }
-      v = argv[++i];
-      return true;
-    };
-    std::string v;
-    if (a == "--steps" || a == "--revs" || a == "--rpm" || a == "--angle" || a == "--point" ||
-        a == "--out") {
-      if (!value(v)) return kBadInput;
-    }
-    if (a == "--steps") {
-      std::optional<long long> n = wholeNumber(a, v);
-      if (!n) return kBadInput;
-      if (*n < 1) {
-        error("--steps: must be at least 1");
-        return kBadInput;
-      }
-      steps = *n;
-      sweepOptions = true;
-    } else if (a == "--revs") {
-      std::optional<double> r = positiveNumber(a, v);
-      if (!r) return kBadInput;
-      revs = *r;
-      sweepOptions = true;
-    } else if (a == "--rpm") {
-      std::optional<double> r = positiveNumber(a, v);
-      if (!r) return kBadInput;
-      rpm = *r;
-    } else if (a == "--angle") {
-      angle = number(a, v);
-      if (!angle) return kBadInput;
-    } else if (a == "--point") {
-      points.push_back(v);
-    } else if (a == "--out") {
-      out = v;
-    } else if (!a.empty() && a[0] == '-' && a != "-") {
-      error("analyze: unknown option " + a + " (see linkage-cli analyze --help)");
-      return kBadInput;
-    } else if (model.empty()) {
-      model = a;
-    } else {
-      error("analyze: more than one MODEL given: " + model + ", " + a);
-      return kBadInput;
-    }
-  }
-  if (model.empty()) {
-    error("analyze: no MODEL given (see linkage-cli analyze --help)");
-    return kBadInput;
-  }
-  if (angle && sweepOptions) {
+  bool sweepOptions = false;  // --steps or --revs given
+};
+
+// The options, checked against each other; the exit status when they cannot be used.
+std::optional<int> readOptions(int argc, char** argv, Options& o) {
+  Arguments args("analyze", kHelp);
+  args.value("--steps",
+             [&](const std::string& a, const std::string& v) {
+               const std::optional<long long> n = wholeNumber(a, v);
+               if (n && *n < 1) error("--steps: must be at least 1");
+               if (!n || *n < 1) return false;
+               o.spec.steps = *n;
+               return o.sweepOptions = true;
+             })
+      .value("--revs",
+             [&](const std::string& a, const std::string& v) {
+               const std::optional<double> r = positiveNumber(a, v);
+               if (r) o.spec.revs = *r;
+               return r && (o.sweepOptions = true);
+             })
+      .value("--rpm",
+             [&](const std::string& a, const std::string& v) {
+               const std::optional<double> r = positiveNumber(a, v);
+               if (r) o.spec.rpm = *r;
+               return r.has_value();
+             })
+      .value("--angle", [&](const std::string& a,
+                            const std::string& v) { return (o.angle = number(a, v)).has_value(); })
+      .value("--point",
+             [&](const std::string&, const std::string& v) {
+               o.points.push_back(v);
+               return true;
+             })
+      .value("--out", [&](const std::string&, const std::string& v) {
+        o.out = v;
+        return true;
+      });
+  if (std::optional<int> e = args.read(argc, argv, o.model)) return e;
+  if (o.angle && o.sweepOptions) {
     error("analyze: --angle gives one row; it cannot be combined with --steps or --revs");
     return kBadInput;
   }
-  MotionTableSpec spec;
-  spec.steps = steps;
-  spec.revs = revs;
-  spec.rpm = rpm;
-  const long long rows = motionTableRows(spec);
-  if (!angle && rows < 0) {
-    error("analyze: --steps " + std::to_string(steps) + " times --revs " + formatNumber(revs) +
-          " is not a whole number of steps");
+  const long long rows = motionTableRows(o.spec);
+  if (!o.angle && rows < 0) {
+    error("analyze: --steps " + std::to_string(o.spec.steps) + " times --revs " +
+          formatNumber(o.spec.revs) + " is not a whole number of steps");
     return kBadInput;
   }
-  if (!angle && rows > kMaxRows) {
+  if (!o.angle && rows > kMaxRows) {
     error("analyze: " + std::to_string(rows) + " rows is more than the " +
           std::to_string(kMaxRows) + " this command writes; use fewer steps or revolutions");
     return kBadInput;
   }
+  return std::nullopt;
+}
 
-  std::optional<Mechanism> m = openModel(model);
-  if (!m) return kBadInput;
-  if (!m->driver) {
-    error(model + ": the mechanism has no driver: add \"driver\": {\"joint\": <pin index>, ...}");
-    return kBadInput;
-  }
-  std::optional<std::vector<PointId>> ids = outputPoints(*m, points);
-  if (!ids) return kBadInput;
-  spec.points = *ids;
-
-  Kinematics k;
-  if (int e = prepare(k, *m); e != kOk) return e;
-  if (Status s = k.checkDetermined(spec.points); !s.ok()) {
-    error(s.message);
-    return exitFor(s);
-  }
-
+// The table's rows, to standard output as they come (in blocks) or to `out` at the end
+// (atomically); the status of the motion, or kFailure when the file cannot be written.
+int writeTable(Kinematics& k, const Options& o, Status& s) {
   std::string buffer;
   auto sink = [&](const std::string& row) {
     buffer += row;
     buffer += '\n';
-    if (out.empty() && buffer.size() > (1 << 16)) {
+    if (o.out.empty() && buffer.size() > (1 << 16)) {
       std::fwrite(buffer.data(), 1, buffer.size(), stdout);
       buffer.clear();
     }
   };
+  if (o.angle) {
+    if (o.spec.rpm > 0) k.setRpm(o.spec.rpm);
+    sink(motionTableHeader(k.mechanism(), o.spec.points));
+    s = k.moveTo(*o.angle);
+    if (s.ok()) sink(motionTableRow(k, *o.angle, o.spec.points));
+  } else {
+    s = sweepMotionTable(k, o.spec, sink);
+  }
+  return writeOutput(o.out, buffer);
+}
+
+}  // namespace
+
+int analyze(int argc, char** argv) {
+  Options o;
+  if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
+  std::optional<Mechanism> m = openDrivenModel(o.model);
+  if (!m) return kBadInput;
+  std::optional<std::vector<PointId>> ids = outputPoints(*m, o.points);
+  if (!ids) return kBadInput;
+  o.spec.points = *ids;
+
+  Kinematics k;
+  if (int e = prepare(k, *m); e != kOk) return e;
+  if (Status s = k.checkDetermined(o.spec.points); !s.ok()) {
+    error(s.message);
+    return exitFor(s);
+  }
   Status s;
-  if (angle) {
-    if (rpm > 0) k.setRpm(rpm);
-    sink(motionTableHeader(k.mechanism(), spec.points));
-    s = k.moveTo(*angle);
-    if (s.ok()) sink(motionTableRow(k, *angle, spec.points));
-  } else {
-    s = sweepMotionTable(k, spec, sink);
-  }
-  if (out.empty()) {
-    std::fwrite(buffer.data(), 1, buffer.size(), stdout);
-    std::fflush(stdout);
-  } else {
-    WriteResult w = writeFileAtomically(out, buffer);
-    if (!w.ok) {
-      error(w.error);
-      return kFailure;
-    }
-  }
+  if (int e = writeTable(k, o, s); e != kOk) return e;
   if (!s.ok()) {
     error(s.message);
     return exitFor(s);

@@ -1,9 +1,12 @@
 #include "cli_common.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
+#include "linkage/io/atomic_file.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
@@ -79,6 +82,27 @@ std::optional<Mechanism> openModel(const std::string& nameOrPath) {
   return std::move(*r.mechanism);
 }
 
+std::optional<Mechanism> openDrivenModel(const std::string& nameOrPath) {
+  std::optional<Mechanism> m = openModel(nameOrPath);
+  if (m && !m->driver) {
+    error(nameOrPath +
+          ": the mechanism has no driver: add \"driver\": {\"joint\": <pin index>, ...}");
+    return std::nullopt;
+  }
+  return m;
+}
+
+int writeOutput(const std::string& path, const std::string& text) {
+  if (path.empty()) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fflush(stdout);
+    return kOk;
+  }
+  const WriteResult w = writeFileAtomically(path, text);
+  if (!w.ok) error(w.error);
+  return w.ok ? kOk : kFailure;
+}
+
 int prepare(Kinematics& k, const Mechanism& m) {
   const Status s = k.load(m);
   for (const Note& n : k.notes()) note(n.text);
@@ -119,6 +143,51 @@ std::optional<std::vector<PointId>> outputPoints(const Mechanism& m,
 
 bool isHelp(const std::string& arg) {
   return arg == "--help" || arg == "-h";
+}
+
+Arguments& Arguments::value(std::string option, Reader read) {
+  values_.emplace_back(std::move(option), std::move(read));
+  return *this;
+}
+
+Arguments& Arguments::flag(std::string option, bool& on) {
+  flags_.emplace_back(std::move(option), &on);
+  return *this;
+}
+
+std::optional<int> Arguments::read(int argc, char** argv, std::string& model) const {
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (isHelp(a)) {
+      std::cout << help_;
+      return kOk;
+    }
+    auto value =
+        std::find_if(values_.begin(), values_.end(), [&](auto& v) { return v.first == a; });
+    auto flag = std::find_if(flags_.begin(), flags_.end(), [&](auto& f) { return f.first == a; });
+    if (value != values_.end()) {
+      if (i + 1 >= argc) {
+        error(a + ": needs a value");
+        return kBadInput;
+      }
+      if (!value->second(a, argv[++i])) return kBadInput;
+    } else if (flag != flags_.end()) {
+      *flag->second = true;
+    } else if (!a.empty() && a[0] == '-' && a != "-") {
+      error(command_ + ": unknown option " + a + " (see linkage-cli " + command_ + " --help)");
+      return kBadInput;
+    } else if (model.empty()) {
+      model = a;
+    } else {
+      error(command_ + ": more than one MODEL given: " + model + ", " + a);
+      return kBadInput;
+    }
+  }
+  if (model.empty()) {
+    error(command_ + ": no MODEL given (see linkage-cli " + command_ + " --help)");
+    return kBadInput;
+  }
+  return std::nullopt;
 }
 
 }  // namespace linkage::cli

@@ -7,7 +7,6 @@
 
 #include "cli_common.h"
 #include "linkage/instant_centres.h"
-#include "linkage/io/atomic_file.h"
 #include "linkage/io/numbers.h"
 #include "linkage/velocity_chain.h"
 
@@ -89,7 +88,9 @@ std::string ic(int i, int j) {
 std::string pair2(const Vec2& v, double scale = 0) {
   const double floor = 1e-12 * std::max(scale, v.cwiseAbs().maxCoeff());
   auto clean = [&](double x) { return std::abs(x) < floor ? 0.0 : x; };
-  return "(" + num(clean(v.x()), 6) + ", " + num(clean(v.y()), 6) + ")";
+  // (Appended, not "(" + ...: GCC 12 warns falsely on that with -Wrestrict, bug 105329.)
+  std::string s = "(";
+  return s.append(num(clean(v.x()), 6)).append(", ").append(num(clean(v.y()), 6)).append(")");
 }
 
 std::string csv(const Mechanism& m, const InstantCentres& ics, double angle) {
@@ -247,7 +248,8 @@ std::string chainText(const Mechanism& m, const InstantCentres& ics, const Veloc
 }
 
 std::string jsonVec(const Vec2& v) {
-  return "[" + num(v.x()) + ", " + num(v.y()) + "]";
+  std::string s = "[";  // (appended: see pair2)
+  return s.append(num(v.x())).append(", ").append(num(v.y())).append("]");
 }
 
 std::string jsonMotion(const BodyMotion& mo) {
@@ -294,97 +296,57 @@ std::string chainJson(const Mechanism& m, const InstantCentres& ics, const Veloc
   return s;
 }
 
-}  // namespace
-
-int ics(int argc, char** argv) {
+struct Options {
   std::string model, out, point, via;
   std::optional<double> angle;
   double rpm = 0;
-  bool asJson = false;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (isHelp(a)) {
-      std::cout << kHelp;
-      return kOk;
-    }
-    std::string v;
-    if (a == "--angle" || a == "--out" || a == "--point" || a == "--via" || a == "--rpm") {
-      if (i + 1 >= argc) {
-        error(a + ": needs a value");
-        return kBadInput;
-      }
-      v = argv[++i];
-    }
-    if (a == "--angle") {
-      if (!(angle = number(a, v))) return kBadInput;
-    } else if (a == "--rpm") {
-      std::optional<double> r = positiveNumber(a, v);
-      if (!r) return kBadInput;
-      rpm = *r;
-    } else if (a == "--out") {
-      out = v;
-    } else if (a == "--point") {
-      point = v;
-    } else if (a == "--via") {
-      via = v;
-    } else if (a == "--json") {
-      asJson = true;
-    } else if (!a.empty() && a[0] == '-' && a != "-") {
-      error("ics: unknown option " + a + " (see linkage-cli ics --help)");
-      return kBadInput;
-    } else if (model.empty()) {
-      model = a;
-    } else {
-      error("ics: more than one MODEL given: " + model + ", " + a);
-      return kBadInput;
-    }
-  }
-  if (model.empty()) {
-    error("ics: no MODEL given (see linkage-cli ics --help)");
-    return kBadInput;
-  }
-  if (!angle) {
+  bool json = false;
+  std::vector<int> viaBodies;
+};
+
+// The options, checked against each other; the exit status when they cannot be used.
+std::optional<int> readOptions(int argc, char** argv, Options& o) {
+  auto text = [](std::string& to) {
+    return [&to](const std::string&, const std::string& v) {
+      to = v;
+      return true;
+    };
+  };
+  Arguments args("ics", kHelp);
+  args.value("--angle", [&](const std::string& a,
+                            const std::string& v) { return (o.angle = number(a, v)).has_value(); })
+      .value("--rpm",
+             [&](const std::string& a, const std::string& v) {
+               const std::optional<double> r = positiveNumber(a, v);
+               if (r) o.rpm = *r;
+               return r.has_value();
+             })
+      .value("--out", text(o.out))
+      .value("--point", text(o.point))
+      .value("--via", text(o.via))
+      .flag("--json", o.json);
+  if (std::optional<int> e = args.read(argc, argv, o.model)) return e;
+  if (!o.angle) {
     error("ics: --angle DEG is required");
     return kBadInput;
   }
-  if (!via.empty() && point.empty()) {
+  if (!o.via.empty() && o.point.empty()) {
     error("ics: --via needs --point");
     return kBadInput;
   }
-  std::vector<int> viaBodies;
-  for (size_t start = 0; !via.empty() && start <= via.size();) {
-    const size_t comma = std::min(via.find(',', start), via.size());
-    std::optional<long long> n = wholeNumber("--via", via.substr(start, comma - start));
+  for (size_t start = 0; !o.via.empty() && start <= o.via.size();) {
+    const size_t comma = std::min(o.via.find(',', start), o.via.size());
+    std::optional<long long> n = wholeNumber("--via", o.via.substr(start, comma - start));
     if (!n) return kBadInput;
-    viaBodies.push_back(static_cast<int>(std::clamp(*n, -1LL, 1LL << 30)));
+    o.viaBodies.push_back(static_cast<int>(std::clamp(*n, -1LL, 1LL << 30)));
     start = comma + 1;
   }
+  return std::nullopt;
+}
 
-  std::optional<Mechanism> m = openModel(model);
-  if (!m) return kBadInput;
-  if (!m->driver) {
-    error(model + ": the mechanism has no driver: add \"driver\": {\"joint\": <pin index>, ...}");
-    return kBadInput;
-  }
-  std::optional<PointId> pid;
-  if (!point.empty()) {
-    std::optional<std::vector<PointId>> ids = outputPoints(*m, {point});
-    if (!ids) return kBadInput;
-    pid = ids->front();
-  }
-  Kinematics k;
-  if (int e = prepare(k, *m); e != kOk) return e;
-  if (rpm > 0) k.setRpm(rpm);
-  InstantCentreSolver solver;
-  if (Status s = solver.prepare(k); !s.ok()) {
-    error(s.message);
-    return kBadInput;
-  }
-  if (Status s = k.moveTo(*angle); !s.ok()) {
-    error(s.message);
-    return exitFor(s);
-  }
-  const InstantCentres& ics = solver.compute(k);
+// Warnings and notes on the centres: disagreements with the velocities, centres Kennedy's
+// theorem does not fix here.
+void report(const InstantCentres& ics) {
   for (const CentreDisagreement& d : ics.disagreements)
     std::cerr << "linkage-cli: warning: " << ic(d.i, d.j)
               << ": Kennedy's centre and the velocities' differ by " << num(d.difference, 3)
@@ -396,29 +358,42 @@ int ics(int argc, char** argv) {
            toString(c.kennedyFailure) + "): " +
            (c.determined ? "taken from the solved velocities"
                          : "the two bodies do not move relative to each other"));
+}
 
-  std::string text;
-  if (pid) {
-    const VelocityChain ch = velocityChain(k, ics, *pid, viaBodies);
-    if (!ch.status.ok()) {
-      error("--point " + point + ": " + ch.status.message);
-      return ch.status.code == StatusCode::BadModel || !viaBodies.empty() ? kBadInput : kFailure;
-    }
-    text = asJson ? chainJson(*m, ics, ch) : chainText(*m, ics, ch, k.rpm());
-  } else {
-    text = asJson ? json(*m, ics, *angle) : csv(*m, ics, *angle);
+}  // namespace
+
+int ics(int argc, char** argv) {
+  Options o;
+  if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
+  std::optional<Mechanism> m = openDrivenModel(o.model);
+  if (!m) return kBadInput;
+  std::optional<PointId> pid;
+  if (!o.point.empty()) {
+    std::optional<std::vector<PointId>> ids = outputPoints(*m, {o.point});
+    if (!ids) return kBadInput;
+    pid = ids->front();
   }
-  if (out.empty()) {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    std::fflush(stdout);
-    return kOk;
+  Kinematics k;
+  if (int e = prepare(k, *m); e != kOk) return e;
+  if (o.rpm > 0) k.setRpm(o.rpm);
+  InstantCentreSolver solver;
+  if (Status s = solver.prepare(k); !s.ok()) {
+    error(s.message);
+    return kBadInput;
   }
-  WriteResult w = writeFileAtomically(out, text);
-  if (!w.ok) {
-    error(w.error);
-    return kFailure;
+  if (Status s = k.moveTo(*o.angle); !s.ok()) {
+    error(s.message);
+    return exitFor(s);
   }
-  return kOk;
+  const InstantCentres& ics = solver.compute(k);
+  report(ics);
+  if (!pid) return writeOutput(o.out, o.json ? json(*m, ics, *o.angle) : csv(*m, ics, *o.angle));
+  const VelocityChain ch = velocityChain(k, ics, *pid, o.viaBodies);
+  if (!ch.status.ok()) {
+    error("--point " + o.point + ": " + ch.status.message);
+    return ch.status.code == StatusCode::BadModel || !o.viaBodies.empty() ? kBadInput : kFailure;
+  }
+  return writeOutput(o.out, o.json ? chainJson(*m, ics, ch) : chainText(*m, ics, ch, k.rpm()));
 }
 
 }  // namespace linkage::cli

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "examples.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
@@ -18,12 +19,7 @@ namespace {
 
 using Q = __float128;
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
-}
+using test::example;
 
 // Samples of one coordinate of a point: solver and reference side by side.
 struct Series {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli_harness.h"
+#include "examples.h"
 #include "linkage/instant_centres.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
@@ -43,12 +44,7 @@ class InstantCentresCli : public test::CliTest {
   }
 };
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
-}
+using test::example;
 
 double field(const std::string& text) {
   std::optional<double> v = parseNumber(text);

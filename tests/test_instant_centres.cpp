@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 
+#include "examples.h"
 #include "linkage/instant_centres.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
@@ -25,12 +26,7 @@ using Q = __float128;
 using QV = linkref::Vec2<Q>;
 using Vec3 = Eigen::Vector3d;
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
-}
+using test::example;
 
 // A centre in the public convention: (x, y, 1), or (dx, dy, 0) for a unit direction.
 Vec3 finite(double x, double y) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "joints/registry.h"
 #include "solve/kinematics_state.h"
 
 namespace linkage {
@@ -27,10 +28,6 @@ inline double crossNorm(const Vec3& a, const Vec3& b, Vec3& out) {
   const double z = a[0] * b[1] - a[1] * b[0];
   out = Vec3(x, y, z);
   return std::sqrt(x * x + y * y + z * z);
-}
-
-Status bad(std::string msg) {
-  return Status::failure(StatusCode::BadModel, std::move(msg));
 }
 
 }  // namespace
@@ -75,10 +72,11 @@ BodyId InstantCentres::bodyNumbered(int n) const {
 Status textbookNumbers(const Mechanism& m, std::vector<BodyId>& bodies, std::vector<int>& numbers) {
   bodies.clear();
   numbers.clear();
-  if (!m.ground()) return bad("no body is the ground");
+  if (!m.ground()) return Status::badModel("no body is the ground");
   std::vector<std::pair<int, BodyId>> list;  // (number, body)
   auto refuse = [&](size_t i, const std::string& why) {
-    Status s = bad("bodies[" + std::to_string(i) + "] '" + m.bodies[i].name + "' " + why);
+    Status s =
+        Status::badModel("bodies[" + std::to_string(i) + "] '" + m.bodies[i].name + "' " + why);
     s.bodies.push_back(m.bodies[i].id);
     return s;
   };
@@ -130,12 +128,13 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
   out_ = InstantCentres{};
   n_ = 0;
   if (!k.valid()) {
-    out_.status = bad("no mechanism is loaded");
+    out_.status = Status::badModel("no mechanism is loaded");
     return out_.status;
   }
   const Mechanism& m = k.mechanism();
   const System& sys = internal::system(k);
   revision_ = k.revision();
+  out_.revision = revision_;
   jointIds_.clear();
   for (const Joint& j : m.joints) jointIds_.push_back(j.id);
   if (Status s = textbookNumbers(m, out_.bodies, out_.numbers); !s.ok()) {
@@ -168,16 +167,17 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
     p.body = a->body;
     p.s = a->s;
     int other = -1;
-    if (j.type == JointType::Pin) {
+    const JointKind& kind = jointKind(j.type);
+    p.rule = kind.centre;
+    if (kind.onSlot) {
+      const Slot* s = m.slot(j.slot);
+      if (!s) continue;
+      p.slotBody = other = sys.bodyIndex(s->body);
+      p.n = perp((s->p1 - s->p0).normalized());  // bodies are at angle 0 as drawn
+    } else {
       const PointLocation* b = sys.point(j.b);
       if (!b) continue;
       other = b->body;
-    } else {
-      const Slot* s = m.slot(j.slot);
-      if (!s) continue;
-      p.kind = j.type == JointType::Slider ? Kind::Slider : Kind::PinInSlot;
-      p.slotBody = other = sys.bodyIndex(s->body);
-      p.n = perp((s->p1 - s->p0).normalized());  // bodies are at angle 0 as drawn
     }
     const int ta = textbookOf_[p.body + 1], tb = textbookOf_[other + 1];
     if (ta == tb) continue;
@@ -261,7 +261,7 @@ void InstantCentreSolver::primaryCentres() {
     bool fromLines = false;
     for (int e = w.firstPrimary; e < w.firstPrimary + w.primaryCount; ++e) {
       const Primary& pr = primaries_[e];
-      if (pr.kind == Kind::PinInSlot) {
+      if (pr.rule == CentreRule::OnNormal) {
         // Only a line: the centre is on the normal to the slot through the pin.
         const Vec2 n = turn(pr.slotBody, pr.n);
         const Vec3 l = scaled(global(pr.body, pr.s)).cross(Vec3(n.x(), n.y(), 0.0));
@@ -288,7 +288,7 @@ void InstantCentreSolver::primaryCentres() {
         continue;
       }
       Vec3 h, mm;
-      if (pr.kind == Kind::Pin) {
+      if (pr.rule == CentreRule::AtPoint) {
         const Vec2 x = global(pr.body, pr.s);
         h = scaled(x);
         mm = Vec3(x.x(), x.y(), 1.0);
@@ -489,9 +489,9 @@ const InstantCentres& InstantCentreSolver::compute(const Kinematics& k) {
   if (n_ == 0 || !out_.status.ok()) return out_;
   if (!k.valid() || k.revision() != revision_) {
     // Loud: the numbering, the joints and the body frames prepared are another mechanism's.
-    out_.status =
-        bad("the kinematics hold another mechanism (or another revision of it) than "
-            "the one prepared: call prepare() again");
+    out_.status = Status::badModel(
+        "the kinematics hold another mechanism (or another revision of it) than "
+        "the one prepared: call prepare() again");
     out_.centres.clear();
     out_.disagreements.clear();
     n_ = 0;

@@ -123,6 +123,12 @@ VelocityChain velocityChain(const Kinematics& k, const InstantCentres& ics, Poin
     ch.status = ics.status;
     return ch;
   }
+  if (!k.valid() || ics.revision != k.revision() || ics.crankDeg != k.crankDeg()) {
+    ch.status = fail(StatusCode::BadModel,
+                     "the instant centres are of another mechanism, another revision of it or "
+                     "another crank angle than the kinematics: compute them again");
+    return ch;
+  }
   const Mechanism& m = k.mechanism();
   const Point* pt = m.point(point);
   if (!pt) {

@@ -13,6 +13,7 @@
 #include <unordered_set>
 
 #include "io/json_tree.h"
+#include "joints/registry.h"
 #include "linkage/io/model_file.h"
 
 namespace linkage {
@@ -294,27 +295,23 @@ class Reader {
   void readJoint(const Json& j, const std::string& path) {
     requireObject(j, path);
     const Json& type = require(j, "type", path);
-    bool pin = type == "pin", slider = type == "slider", pinInSlot = type == "pin-in-slot";
-    if (!pin && !slider && !pinInSlot)
-      refuse(path + ".type",
-             "expected \"pin\", \"slider\" or \"pin-in-slot\", got " + describe(type));
+    const JointKind* kind = type.is_string() ? jointKindNamed(type.get<std::string>()) : nullptr;
+    if (!kind) refuse(path + ".type", "expected " + jointKindNames() + ", got " + describe(type));
     auto [a, bodyA] = readPointRef(require(j, "a", path), path + ".a");
     const BodyNames* other = nullptr;
-    if (pin) {
+    if (!kind->onSlot) {
       if (find(j, "slot"))
-        refuse(path + ".slot", "a pin joins points \"a\" and \"b\"; it has no slot");
+        refuse(path + ".slot",
+               std::string("a ") + kind->name + " joins points \"a\" and \"b\"; it has no slot");
       auto [b, bodyB] = readPointRef(require(j, "b", path), path + ".b");
-      m_.addPin(a, b);
+      m_.addJoint(kind->type, a, b, {});
       other = bodyB;
     } else {
       if (find(j, "b"))
-        refuse(path + ".b", std::string("a ") + type.get<std::string>() +
+        refuse(path + ".b", std::string("a ") + kind->name +
                                 " joins point \"a\" to a \"slot\"; it has no point \"b\"");
       auto [s, bodyS] = readSlotRef(require(j, "slot", path), path + ".slot");
-      if (slider)
-        m_.addSlider(a, s);
-      else
-        m_.addPinInSlot(a, s);
+      m_.addJoint(kind->type, a, {}, s);
       other = bodyS;
     }
     if (bodyA == other) refuse(path, "both sides are on body " + literal(bodyA->name));

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "io/json_tree.h"
+#include "joints/registry.h"
 #include "linkage/io/model_file.h"
 
 namespace linkage {
@@ -154,10 +155,10 @@ Json jointJson(const Labels& labels, const Joint& jt) {
   Json j = Json::object();
   j["type"] = toString(jt.type);
   j["a"] = Labels::of(labels.points, jt.a.value);
-  if (jt.type == JointType::Pin)
-    j["b"] = Labels::of(labels.points, jt.b.value);
-  else
+  if (jointKind(jt.type).onSlot)
     j["slot"] = Labels::of(labels.slots, jt.slot.value);
+  else
+    j["b"] = Labels::of(labels.points, jt.b.value);
   appendExtras(j, jt.extras, {"type", "a", "b", "slot"});
   return j;
 }
@@ -284,10 +285,9 @@ std::string mechanismDifference(const Mechanism& a, const Mechanism& b) {
     std::string w = "joints[" + std::to_string(i) + "]";
     if (ja.type != jb.type) return w + ".type differs";
     if (a.pointLabel(ja.a) != b.pointLabel(jb.a)) return w + ".a differs";
-    if (ja.type == JointType::Pin && a.pointLabel(ja.b) != b.pointLabel(jb.b))
-      return w + ".b differs";
-    if (ja.type != JointType::Pin && a.slotLabel(ja.slot) != b.slotLabel(jb.slot))
-      return w + ".slot differs";
+    const bool onSlot = jointKind(ja.type).onSlot;
+    if (!onSlot && a.pointLabel(ja.b) != b.pointLabel(jb.b)) return w + ".b differs";
+    if (onSlot && a.slotLabel(ja.slot) != b.slotLabel(jb.slot)) return w + ".slot differs";
     if (auto d = compareExtras(ja.extras, jb.extras, w); !d.empty()) return d;
   }
   if (a.driver.has_value() != b.driver.has_value()) return "driver: present in only one";

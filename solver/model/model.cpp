@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 
+#include "joints/registry.h"
+
 namespace linkage {
 
 namespace {
@@ -63,30 +65,29 @@ SlotId Mechanism::addSlot(BodyId bodyId, std::string name, Vec2 p0, Vec2 p1) {
   return slots.back().id;
 }
 
-JointId Mechanism::addPin(PointId a, PointId b) {
+JointId Mechanism::addJoint(JointType type, PointId a, PointId b, SlotId s) {
   Joint j;
   j.id = make<JointId>();
-  j.type = JointType::Pin;
+  j.type = type;
   j.a = a;
-  j.b = b;
+  if (jointKind(type).onSlot)
+    j.slot = s;
+  else
+    j.b = b;
   joints.push_back(std::move(j));
   return joints.back().id;
+}
+
+JointId Mechanism::addPin(PointId a, PointId b) {
+  return addJoint(JointType::Pin, a, b, {});
 }
 
 JointId Mechanism::addSlider(PointId a, SlotId s) {
-  Joint j;
-  j.id = make<JointId>();
-  j.type = JointType::Slider;
-  j.a = a;
-  j.slot = s;
-  joints.push_back(std::move(j));
-  return joints.back().id;
+  return addJoint(JointType::Slider, a, {}, s);
 }
 
 JointId Mechanism::addPinInSlot(PointId a, SlotId s) {
-  JointId id = addSlider(a, s);
-  joints.back().type = JointType::PinInSlot;
-  return id;
+  return addJoint(JointType::PinInSlot, a, {}, s);
 }
 
 Removal Mechanism::remove(const std::vector<BodyId>& bodyIds, const std::vector<PointId>& pointIds,
@@ -208,10 +209,10 @@ std::string Mechanism::jointLabel(JointId id) const {
   const Joint* j = joint(id);
   if (!j) return "unknown joint";
   std::string s = "joints[" + std::to_string(jointIndex(id)) + "] (" + toString(j->type) + " ";
-  if (j->type == JointType::Pin)
-    s += pointLabel(j->a) + " - " + pointLabel(j->b);
-  else
+  if (jointKind(j->type).onSlot)
     s += pointLabel(j->a) + " in " + slotLabel(j->slot);
+  else
+    s += pointLabel(j->a) + " - " + pointLabel(j->b);
   return s + ")";
 }
 
@@ -227,15 +228,7 @@ std::optional<PointId> Mechanism::findPoint(const std::string& dotted) const {
 }
 
 const char* toString(JointType t) {
-  switch (t) {
-    case JointType::Pin:
-      return "pin";
-    case JointType::Slider:
-      return "slider";
-    case JointType::PinInSlot:
-      return "pin-in-slot";
-  }
-  return "?";
+  return jointKind(t).name;
 }
 
 bool sameTopology(const Mechanism& a, const Mechanism& b, std::vector<BodyId>& reshaped) {

@@ -10,11 +10,6 @@ Rot compose(const Rot& a, const Rot& b) {
   return Rot{a.c * b.c - a.s * b.s, a.s * b.c + a.c * b.s};
 }
 
-Rot direction(const Vec2& v) {
-  const double n = v.norm();
-  return Rot{v.x() / n, v.y() / n};
-}
-
 // The rotation taking a body's local direction (given as the rotation `local`) to the unit
 // vector u: the pose follows without a sin and cos of the body's angle. (u is C - P over the
 // link's length: a unit vector to rounding, as the intersection put C at that distance.)
@@ -48,242 +43,6 @@ struct Solve2 {
 };
 
 }  // namespace
-
-std::optional<ClosedFormPlan> ClosedFormPlan::build(const Mechanism& m, const System& sys,
-                                                    const Eigen::VectorXd& q) {
-  if (!sys.hasDriver || sys.nRows != sys.nCoords() || sys.nJointRows + 1 != sys.nCoords())
-    return std::nullopt;  // holds, redundant or missing equations: the general solve
-  const int nj = static_cast<int>(m.joints.size());
-  // The compiled rows of each joint.
-  std::vector<const Constraint*> pin(nj, nullptr), line(nj, nullptr);
-  std::vector<bool> isSlider(nj, false), used(nj, false);
-  const Constraint* driver = nullptr;
-  for (const Constraint& c : sys.cons) {
-    if (c.kind == RowKind::Pin) pin[c.joint] = &c;
-    if (c.kind == RowKind::Line) line[c.joint] = &c;
-    if (c.kind == RowKind::Angle) isSlider[c.joint] = true;
-    if (c.kind == RowKind::Driver) driver = &c;
-  }
-  // Each body's joints, in file order: the search looks only at a body's own joints, so it is
-  // linear in the size of a mechanism that decomposes.
-  std::vector<std::vector<int>> jointsOf(sys.nBodies);
-  for (int j = 0; j < nj; ++j) {
-    const Constraint* c = pin[j] ? pin[j] : line[j];
-    if (!c) continue;
-    for (int b : {c->bi, c->bj})
-      if (b >= 0) jointsOf[b].push_back(j);
-  }
-  std::vector<bool> known(sys.nBodies, false);
-  auto isKnown = [&](int b) { return b < 0 || known[b]; };
-  // Joints of body b not used yet whose other side is known.
-  auto toKnown = [&](int b, std::vector<int>& out) {
-    out.clear();
-    for (int j : jointsOf[b]) {
-      if (used[j]) continue;
-      const Constraint* c = pin[j] ? pin[j] : line[j];
-      if ((c->bi == b && isKnown(c->bj)) || (c->bj == b && isKnown(c->bi))) out.push_back(j);
-    }
-  };
-  auto pinOn = [&](const Constraint* c, int b) { return c->bi == b ? c->si : c->sj; };
-  auto pinOther = [&](const Constraint* c, int b) { return c->bi == b ? c->sj : c->si; };
-  auto otherBody = [&](const Constraint* c, int b) { return c->bi == b ? c->bj : c->bi; };
-
-  ClosedFormPlan plan;
-  bool crankDone = false;
-  int remaining = sys.nBodies;
-  std::vector<int> k1j, k2j;
-  while (remaining > 0) {
-    bool progress = false;
-    if (!crankDone) {
-      const Constraint* p = pin[driver->joint];
-      const int unknownSide = !isKnown(driver->bi) ? driver->bi : driver->bj;
-      const int knownSide = unknownSide == driver->bi ? driver->bj : driver->bi;
-      if (isKnown(knownSide) && !isKnown(unknownSide)) {
-        toKnown(unknownSide, k1j);
-        if (k1j.size() == 1 && k1j[0] == driver->joint) {
-          Group g;
-          g.kind = Kind::Crank;
-          g.b1 = unknownSide;
-          g.k1 = knownSide;
-          g.p1 = pinOn(p, unknownSide);
-          g.p1k = pinOther(p, unknownSide);
-          g.sign = unknownSide == driver->bi ? sys.sigma : -sys.sigma;
-          plan.groups_.push_back(g);
-          used[driver->joint] = true;
-          known[unknownSide] = true;
-          crankDone = progress = true;
-          --remaining;
-        }
-      }
-    }
-    for (int b1 = 0; b1 < sys.nBodies && !progress; ++b1) {
-      if (known[b1]) continue;
-      toKnown(b1, k1j);
-      // RP: a pin and a pin-in-slot (point on b1) to known bodies.
-      if (k1j.size() == 2) {
-        for (int order = 0; order < 2 && !progress; ++order) {
-          const int jp = k1j[order], js = k1j[1 - order];
-          if (!pin[jp] || !line[js] || isSlider[js] || line[js]->bi != b1) continue;
-          Group g;
-          g.kind = Kind::RP;
-          g.b1 = b1;
-          g.k1 = otherBody(pin[jp], b1);
-          g.p1 = pinOn(pin[jp], b1);
-          g.p1k = pinOther(pin[jp], b1);
-          g.c1 = line[js]->si;
-          g.k2 = line[js]->bj;
-          g.u = line[js]->sj;
-          g.n = line[js]->nj;
-          plan.groups_.push_back(g);
-          used[jp] = used[js] = true;
-          known[b1] = true;
-          progress = true;
-          --remaining;
-        }
-        if (progress) break;
-      }
-      if (k1j.size() != 1 || !pin[k1j[0]]) continue;
-      // A dyad: b1 pinned to b2, b2 with exactly one joint to known bodies.
-      for (int j : jointsOf[b1]) {
-        if (progress) break;
-        const Constraint* c = pin[j];
-        if (used[j] || !c) continue;
-        const int b2 = otherBody(c, b1);
-        if (b2 < 0 || known[b2]) continue;
-        toKnown(b2, k2j);
-        if (k2j.size() != 1) continue;
-        const int j2 = k2j[0];
-        Group g;
-        g.b1 = b1;
-        g.b2 = b2;
-        g.k1 = otherBody(pin[k1j[0]], b1);
-        g.p1 = pinOn(pin[k1j[0]], b1);
-        g.p1k = pinOther(pin[k1j[0]], b1);
-        g.c1 = pinOn(c, b1);
-        g.c2 = pinOn(c, b2);
-        if (pin[j2]) {
-          g.kind = Kind::RRR;
-          g.k2 = otherBody(pin[j2], b2);
-          g.p2 = pinOn(pin[j2], b2);
-          g.p2k = pinOther(pin[j2], b2);
-        } else if (isSlider[j2] && line[j2]->bi == b2) {
-          g.kind = Kind::RRP;
-          g.k2 = line[j2]->bj;
-          g.q2 = line[j2]->si;
-          g.u = line[j2]->sj;
-          g.n = line[j2]->nj;
-        } else {
-          continue;
-        }
-        plan.groups_.push_back(g);
-        used[k1j[0]] = used[j] = used[j2] = true;
-        known[b1] = known[b2] = true;
-        progress = true;
-        remaining -= 2;
-      }
-    }
-    // A core body held by three conditions, its blocks eliminated (core_group.h).
-    for (int c = 0; c < sys.nBodies && !progress; ++c) {
-      if (known[c]) continue;
-      CoreGroup core;
-      core.core = c;
-      std::vector<int> joints, blocks;
-      int rows = 0;
-      bool usable = true;
-      for (int j : jointsOf[c]) {
-        if (!usable) break;
-        if (used[j]) continue;
-        const Constraint* p = pin[j];
-        const Constraint* l = line[j];
-        if (p && (p->bi == c || p->bj == c)) {
-          const int other = otherBody(p, c);
-          CoreLink link;
-          link.s = pinOn(p, c);
-          if (isKnown(other)) {
-            link.pin = true;
-            link.known = other;
-            link.ks = pinOther(p, c);
-            rows += 2;
-            joints.push_back(j);
-          } else {
-            // A block: this pin and one slider in a known slot, nothing else.
-            std::vector<int> rest;
-            for (int j2 : jointsOf[other])
-              if (!used[j2] && j2 != j) rest.push_back(j2);
-            if (rest.size() != 1 || !isSlider[rest[0]] || line[rest[0]]->bi != other ||
-                !isKnown(line[rest[0]]->bj))
-              continue;  // not a block: a joint for a later group
-            const Constraint* sl = line[rest[0]];
-            link.known = sl->bj;
-            link.ks = sl->sj - (sl->si - pinOther(p, c));  // the line the pin point keeps to
-            link.n = sl->nj;
-            link.block = other;
-            link.blockPin = pinOther(p, c);
-            rows += 1;
-            joints.push_back(j);
-            joints.push_back(rest[0]);
-            blocks.push_back(other);
-          }
-          core.links.push_back(link);
-        } else if (l && l->bi == c && !isSlider[j] && isKnown(l->bj)) {
-          CoreLink link;
-          link.known = l->bj;
-          link.s = l->si;
-          link.ks = l->sj;
-          link.n = l->nj;
-          rows += 1;
-          joints.push_back(j);
-          core.links.push_back(link);
-        } else if (l && (l->bi == c || l->bj == c) && isKnown(otherBody(l, c))) {
-          usable = false;  // a slider or a slot of its own on a known body: not this kind
-        }
-      }
-      if (!usable || rows != 3) continue;
-      core.detSign = coreDetSign(core, q);
-      if (core.detSign == 0) return std::nullopt;
-      Group g;
-      g.kind = Kind::Core;
-      g.b1 = c;
-      g.core = static_cast<int>(plan.cores_.size());
-      plan.cores_.push_back(core);
-      plan.groups_.push_back(g);
-      for (int j : joints) used[j] = true;
-      known[c] = true;
-      for (int b : blocks) known[b] = true;
-      remaining -= 1 + static_cast<int>(blocks.size());
-      progress = true;
-    }
-    if (!progress) return std::nullopt;
-  }
-  for (int j = 0; j < nj; ++j)
-    if (!used[j]) return std::nullopt;
-
-  // Local directions and the drawn branches, from the assembled configuration.
-  Motion at;
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q.size());
-  at.fromCoordinates(0, q, zero, zero);
-  for (Group& g : plan.groups_) {
-    if (g.kind == Kind::Crank || g.kind == Kind::Core) continue;
-    g.rot1 = direction(g.c1 - g.p1);
-    g.d1 = (g.c1 - g.p1).norm();
-    const BodyState& k1 = at.of(g.k1);
-    const BodyState& b1 = at.of(g.b1);
-    const Vec2 P1 = k1.pos(g.p1k), C = b1.pos(g.c1);
-    if (g.kind == Kind::RRR) {
-      g.rot2 = direction(g.c2 - g.p2);
-      g.d2 = (g.c2 - g.p2).norm();
-      const Vec2 P2 = at.of(g.k2).pos(g.p2k);
-      g.sign = cross(P2 - P1, C - P1) >= 0 ? 1 : -1;
-    } else {
-      g.d = -perp(g.n);  // the slot's direction: n was made as perp(direction)
-      const BodyState& k2 = at.of(g.k2);
-      const Vec2 n = k2.R * g.n;
-      const Vec2 foot = P1 + n.dot(C - P1) * n;  // C is on the (shifted) line: project P1 on it
-      g.sign = (k2.R * g.d).dot(C - foot) >= 0 ? 1 : -1;
-    }
-  }
-  return plan;
-}
 
 bool ClosedFormPlan::solve(const System& sys, const Motion& prev, double phi, Motion& next,
                            bool accelerations) const {
@@ -330,6 +89,31 @@ bool ClosedFormPlan::sameGeometry(const Group& a, const Group& b, const ClosedFo
          a.p2k == b.p2k && a.u == b.u && a.n == b.n && a.q2 == b.q2;
 }
 
+std::vector<int> ClosedFormPlan::bodiesOf(int g) const {
+  std::vector<int> unknown, known;
+  bodiesOf(groups_[g], unknown, known);
+  return unknown;
+}
+
+int ClosedFormPlan::resolveFrom(size_t first, const System& sys, const Motion& prev, Motion& next,
+                                std::vector<char>& moved, bool jump,
+                                const ClosedFormPlan* before) const {
+  const Rot crank{std::cos(prev.phi), std::sin(prev.phi)};
+  std::vector<int> unknown, known;
+  int solved = 0;
+  for (size_t i = first; i < groups_.size(); ++i) {
+    const Group& g = groups_[i];
+    bodiesOf(g, unknown, known);
+    bool touched = before ? !sameGeometry(before->groups_[i], g, *before, *this) : i == first;
+    for (int b : known) touched = touched || (b >= 0 && moved[b]);
+    if (!touched) continue;  // its bodies keep the motion already in next
+    if (!solveGroup(g, sys, prev, 0.0, crank, next, jump)) return -1;
+    for (int b : unknown) moved[b] = 1;
+    ++solved;
+  }
+  return solved;
+}
+
 int ClosedFormPlan::resolveEdited(const System& sys, const ClosedFormPlan& before,
                                   const Motion& prev, Motion& next) {
   if (before.groups_.size() != groups_.size() || before.cores_.size() != cores_.size()) return -1;
@@ -347,31 +131,43 @@ int ClosedFormPlan::resolveEdited(const System& sys, const ClosedFormPlan& befor
   next.phi = prev.phi;
   next.body = prev.body;
   next.accelerations = prev.accelerations;
-  const Rot crank{std::cos(prev.phi), std::sin(prev.phi)};
   std::vector<char> moved(sys.nBodies, 0);
-  int solved = 0;
-  for (size_t i = 0; i < groups_.size(); ++i) {
-    const Group& g = groups_[i];
-    bodiesOf(g, unknown, known);
-    bool touched = !sameGeometry(before.groups_[i], g, before, *this);
-    for (int b : known) touched = touched || (b >= 0 && moved[b]);
-    if (!touched) continue;  // its bodies keep prev's motion, already in next
-    if (!solveGroup(g, sys, prev, 0.0, crank, next)) return -1;
-    for (int b : unknown) moved[b] = 1;
-    ++solved;
-  }
-  return solved;
+  return resolveFrom(0, sys, prev, next, moved, false, &before);
+}
+
+bool ClosedFormPlan::flip(int g, const System& sys, const Motion& prev, Motion& next) {
+  if (!hasMirror(g)) return false;
+  ClosedFormPlan trial = *this;
+  Group& G = trial.groups_[g];
+  if (G.kind == Kind::Core)
+    trial.cores_[G.core].detSign = -trial.cores_[G.core].detSign;
+  else
+    G.sign = -G.sign;
+  next.phi = prev.phi;
+  next.body = prev.body;
+  next.accelerations = prev.accelerations;
+  std::vector<char> moved(sys.nBodies, 0);
+  if (trial.resolveFrom(static_cast<size_t>(g), sys, prev, next, moved, true) < 0) return false;
+  *this = std::move(trial);
+  return true;
 }
 
 bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion& prev, double h,
-                                const Rot& crank, Motion& next) const {
+                                const Rot& crank, Motion& next, bool jump) const {
   // Sets body b, continuing its count of whole turns from the previous position.
   auto set = [&](int b, const Rot& R, double w, double al, const Vec2& s, const Vec2& P,
                  const Vec2& vP, const Vec2& aP) {
     const BodyState& before = prev.body[b];
-    place(next.body[b], R, turnsAfter(before.R, before.turns, R), w, al, s, P, vP, aP);
+    const double turns =
+        jump ? nearestTurns(before.angle(), R) : turnsAfter(before.R, before.turns, R);
+    place(next.body[b], R, turns, w, al, s, P, vP, aP);
   };
-  if (g.kind == Kind::Core) return solveCore(cores_[g.core], sys, prev, next);
+  if (g.kind == Kind::Core) {
+    const CoreGroup& core = cores_[g.core];
+    if (!jump) return solveCore(core, sys, prev, next);
+    BodyState start;
+    return corePose(core, next, start) && solveCore(core, sys, prev, next, &start);
+  }
   const BodyState& k1 = next.of(g.k1);
   const PointState p1 = pointOf(g.k1, k1, g.p1k);
   const Vec2 &P1 = p1.p, &vP1 = p1.v, &aP1 = p1.a;
@@ -400,7 +196,7 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
     const double a = (d1 * d1 - d2 * d2 + L * L) / (2 * L);
     const double h2 = d1 * d1 - a * a;
     if (!(h2 >= 0)) return false;
-    if (g.sign * cross(eh, Cpred - P1) < 0) return false;
+    if (!jump && g.sign * cross(eh, Cpred - P1) < 0) return false;
     C = P1 + a * eh + g.sign * std::sqrt(h2) * perp(eh);
     u1 = C - P1;
     const Vec2 u2 = C - P2;
@@ -422,7 +218,7 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
     const double lam2 = d1 * d1 - delta * delta;
     if (!(lam2 >= 0)) return false;
     const Vec2 foot = P1 + delta * n;
-    if (g.sign * dir.dot(Cpred - foot) < 0) return false;
+    if (!jump && g.sign * dir.dot(Cpred - foot) < 0) return false;
     C = foot + g.sign * std::sqrt(lam2) * dir;
     u1 = C - P1;
     // C = U + s dir - w, with the block turning with k2 (w' = w_k2 perp(w)).

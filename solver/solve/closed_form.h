@@ -36,9 +36,10 @@ namespace linkage {
 class ClosedFormPlan {
  public:
   // A plan when the whole mechanism decomposes into these groups (no redundant joints, no held
-  // coordinates), with branches taken from the assembled configuration q; nullopt otherwise.
+  // coordinates), with branches taken from the assembled configuration `at` (its positions);
+  // nullopt otherwise (closed_form_build.cpp).
   static std::optional<ClosedFormPlan> build(const Mechanism& m, const System& sys,
-                                             const Eigen::VectorXd& q);
+                                             const Motion& at);
 
   // The motion at driver angle phi (positions, d/dphi and d2/dphi2 of every coordinate) from the
   // previous one (whole turns are counted from it, branch crossings and core groups predicted
@@ -58,8 +59,25 @@ class ClosedFormPlan {
                     Motion& next);
 
   int groups() const { return static_cast<int>(groups_.size()); }
+  // The group that solves body b (a system body index), -1 for none; the group a joint (an
+  // index in Mechanism::joints) belongs to.
+  int groupOfBody(int b) const { return b >= 0 ? bodyGroup_[b] : -1; }
+  int groupOfJoint(int j) const { return j >= 0 ? jointGroup_[j] : -1; }
+  // Whether a group has a second assembly (its mirror closure): every kind but the crank. A
+  // dyad's joint C is the other intersection of its two circles (RRR) or of its circle and line
+  // (RRP, RP); a core's pose the other root of its rows (core_group.h: corePose).
+  bool hasMirror(int g) const { return g >= 0 && groups_[g].kind != Kind::Crank; }
+  // The group's unknown bodies.
+  std::vector<int> bodiesOf(int g) const;
+
+  // Puts group g on its other assembly at prev.phi: g is solved again on the other branch, and
+  // every group that depends on it on its own branch, from prev (the motion now); other bodies
+  // keep prev's motion. The plan keeps the new branch. False, with the plan unchanged, where
+  // g has no mirror, or a group cannot close or is singular on the other assembly there.
+  bool flip(int g, const System& sys, const Motion& prev, Motion& next);
 
  private:
+  class Builder;
   enum class Kind { Crank, RRR, RRP, RP, Core };
   struct Group {
     Kind kind = Kind::Crank;
@@ -77,8 +95,16 @@ class ClosedFormPlan {
     int core = -1;           // Core: index into cores_
   };
   // Solves one group into next from prev (h radians of crank later, crank rotation `crank`).
+  // A jump (h = 0, another assembly of it or of a group it depends on): no continuity with
+  // prev is asked for; whole turns are the nearest to prev's angles.
   bool solveGroup(const Group& g, const System& sys, const Motion& prev, double h, const Rot& crank,
-                  Motion& next) const;
+                  Motion& next, bool jump = false) const;
+  // Solves again, at prev.phi, the groups from `first` on that are `first` or depend on a body
+  // marked in `moved` (which gets their bodies); the others keep next's motion. The number of
+  // groups solved, -1 where one cannot be.
+  int resolveFrom(size_t first, const System& sys, const Motion& prev, Motion& next,
+                  std::vector<char>& moved, bool jump,
+                  const ClosedFormPlan* before = nullptr) const;
   static bool sameGeometry(const Group& a, const Group& b, const ClosedFormPlan& pa,
                            const ClosedFormPlan& pb);
   // The group's unknown bodies, then the known bodies it reads (-1 for ground).
@@ -86,6 +112,7 @@ class ClosedFormPlan {
 
   std::vector<Group> groups_;
   std::vector<CoreGroup> cores_;
+  std::vector<int> bodyGroup_, jointGroup_;
 };
 
 }  // namespace linkage

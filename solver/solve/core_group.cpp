@@ -80,35 +80,93 @@ Eigen::Vector3d knownTerms(const CoreGroup& g, const BodyView& core, const Motio
   return rhs;
 }
 
-}  // namespace
-
-int coreDetSign(const CoreGroup& g, const Eigen::VectorXd& q) {
-  Motion m;
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q.size());
-  m.fromCoordinates(0, q, zero, zero);
-  Rows rows;
-  evalRows(g, viewOf(m.body[g.core], 0, false), m, rows);
-  const double det = rows.J.determinant();
-  const double scale = rows.J.cwiseAbs().maxCoeff();
+// Sign of det J, 0 where J is (near) singular.
+int detSign(const Eigen::Matrix3d& J) {
+  const double det = J.determinant();
+  const double scale = J.cwiseAbs().maxCoeff();
   if (!(std::abs(det) > 1e-12 * scale * scale * scale)) return 0;
   return det > 0 ? 1 : -1;
 }
 
-bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion& next) {
+// The same of the core's 3 x 3 Jacobian with the core at `core`.
+int detSignAt(const CoreGroup& g, const BodyState& core, const Motion& m) {
+  Rows rows;
+  evalRows(g, viewOf(core, 0, false), m, rows);
+  return detSign(rows.J);
+}
+
+}  // namespace
+
+int coreDetSign(const CoreGroup& g, const Motion& m) {
+  return detSignAt(g, m.body[g.core], m);
+}
+
+bool corePose(const CoreGroup& g, const Motion& m, BodyState& pose) {
+  // Rows M (x, y, c, s) = b: a pin r + R s = K gives two, a line n . (r + R s - U) = 0 one, with
+  // R s = (c s_x - s s_y, s s_x + c s_y).
+  Eigen::Matrix<double, 3, 4> M;
+  Eigen::Vector3d b;
+  int row = 0;
+  for (const CoreLink& l : g.links) {
+    const BodyState& k = m.of(l.known);
+    const Vec2& s = l.s;
+    if (l.pin) {
+      const Vec2 K = k.pos(l.ks);
+      M.row(row) << 1, 0, s.x(), -s.y();
+      M.row(row + 1) << 0, 1, s.y(), s.x();
+      b.segment<2>(row) = K;
+      row += 2;
+    } else {
+      const Vec2 n = k.R * l.n;
+      M.row(row) << n.x(), n.y(), n.dot(s), cross(s, n);
+      b[row] = n.dot(k.pos(l.ks));
+      row += 1;
+    }
+  }
+  Eigen::FullPivLU<Eigen::Matrix<double, 3, 4>> lu(M);
+  if (lu.rank() < 3) return false;
+  const Eigen::Vector4d x0 = lu.solve(b);
+  const Eigen::Vector4d k = lu.kernel().col(0);
+  // |x0.cs + t k.cs|^2 = 1: a t^2 + 2 bh t + c = 0.
+  const Vec2 p = x0.tail<2>(), q = k.tail<2>();
+  const double a = q.squaredNorm(), bh = p.dot(q), c = p.squaredNorm() - 1;
+  const double disc = bh * bh - a * c;
+  if (!(a > 0) || !(disc >= 0)) return false;
+  const double root = std::sqrt(disc);
+  // The two roots without cancellation: t1 t2 = c / a.
+  const double t1 = (-bh - std::copysign(root, bh)) / a;
+  const double t2 = t1 != 0 ? c / (a * t1) : (-bh + root) / a;
+  for (double t : {t1, t2}) {
+    const Eigen::Vector4d x = x0 + t * k;
+    const double n = x.tail<2>().norm();
+    pose.r = x.head<2>();
+    pose.R = Rot{x[2] / n, x[3] / n};
+    if (detSignAt(g, pose, m) == g.detSign) return true;
+  }
+  return false;
+}
+
+bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion& next,
+               const BodyState* start) {
   const double L = sys.size;
   const double h = next.phi - prev.phi;
   const BodyState& before = prev.body[g.core];
   BodyState& core = next.body[g.core];
-  // Unknowns: the frame origin and the turn d relative to the previous rotation, from the
-  // predictor along the previous rates.
+  // Unknowns: the frame origin and the turn d relative to a base rotation: the previous one,
+  // with the predictor along the previous rates, or the start's.
   Eigen::Vector3d x;
-  const double h2 = prev.accelerations ? 0.5 * h * h : 0.0;  // second order where known
-  x << before.r + h * before.v + h2 * (prev.accelerations ? before.a : Vec2::Zero()),
-      h * before.w + h2 * (prev.accelerations ? before.al : 0.0);
+  const Rot base = start ? start->R : before.R;
+  if (start) {
+    x << start->r, 0.0;
+  } else {
+    const double h2 = prev.accelerations ? 0.5 * h * h : 0.0;  // second order where known
+    x << before.r + h * before.v + h2 * (prev.accelerations ? before.a : Vec2::Zero()),
+        h * before.w + h2 * (prev.accelerations ? before.al : 0.0);
+  }
   auto pose = [&](const Eigen::Vector3d& at) {
     core.r = at.head<2>();
     const Rot d{std::cos(at[2]), std::sin(at[2])};
-    core.R = Rot{before.R.c * d.c - before.R.s * d.s, before.R.s * d.c + before.R.c * d.s};
+    core.R = Rot{base.c * d.c - base.s * d.s, base.s * d.c + base.c * d.s};
     return viewOf(core, 0, false);
   };
   Rows rows;
@@ -136,12 +194,10 @@ bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion
   if (!converged) return false;
   // The drawn branch: det J keeps its sign until a singular position.
   const BodyView at = pose(x);
-  core.turns = turnsAfter(before.R, before.turns, core.R);
+  core.turns =
+      start ? nearestTurns(before.angle(), core.R) : turnsAfter(before.R, before.turns, core.R);
   evalRows(g, at, next, rows);
-  const double det = rows.J.determinant();
-  const double scale = rows.J.cwiseAbs().maxCoeff();
-  if (!(std::abs(det) > 1e-12 * scale * scale * scale) || (det > 0 ? 1 : -1) != g.detSign)
-    return false;
+  if (detSign(rows.J) != g.detSign) return false;
   lu.compute(rows.J);
   const Eigen::Vector3d v = lu.solve(knownTerms(g, at, next, false));
   core.v = v.head<2>();

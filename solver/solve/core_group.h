@@ -37,11 +37,20 @@ struct CoreGroup {
 
 // Solves the core's pose, rates and accelerations (and its blocks') in next, from the known
 // bodies already in next, starting from the core's pose in prev advanced along its rates to
-// next.phi. False when Newton does not settle near the prediction or the group is (near)
-// singular.
-bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion& next);
+// next.phi, or from `start` when given (a jump: whole turns then counted from prev's angle).
+// False when Newton does not settle near the start or the group is (near) singular, or not on
+// its branch (the sign of det J).
+bool solveCore(const CoreGroup& g, const System& sys, const Motion& prev, Motion& next,
+               const BodyState* start = nullptr);
 
-// Sign of det of the core's 3 x 3 Jacobian at q (0 if singular).
-int coreDetSign(const CoreGroup& g, const Eigen::VectorXd& q);
+// The core's poses on its branch (g.detSign) with the known bodies as they are in m, in closed
+// form: the three rows are linear in (x, y, cos theta, sin theta) of the core's frame, a line in
+// that space, which meets the circle cos^2 + sin^2 = 1 at most twice, one point on each branch
+// (det J changes sign between the two roots). False where the line misses the circle, or the
+// rows are dependent: no pose, or not one that the rows fix.
+bool corePose(const CoreGroup& g, const Motion& m, BodyState& pose);
+
+// Sign of det of the core's 3 x 3 Jacobian at the positions of m (0 if singular).
+int coreDetSign(const CoreGroup& g, const Motion& m);
 
 }  // namespace linkage

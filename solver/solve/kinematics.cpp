@@ -79,6 +79,29 @@ Status Kinematics::moveTo(double crankDeg) {
   return d_->moveToPhi(d_->sys.startRad + crankDeg * kDeg);
 }
 
+Kinematics::DragResult Kinematics::dragTo(PointId p, const Vec2& target) {
+  return d_->drag(p, target);
+}
+
+Status Kinematics::flipBranch(BodyId id, Mechanism* redrawn) {
+  const Body* b = valid() ? d_->mech.body(id) : nullptr;
+  if (!b) return Status::badModel(valid() ? "unknown body" : "no mechanism is loaded");
+  if (b->ground) return Status::badModel("the ground does not move: it has no assembly to flip");
+  const int group = d_->plan ? d_->plan->groupOfBody(d_->sys.bodyIndex(id)) : -1;
+  return d_->flip(group, "body '" + b->name + "'", redrawn);
+}
+
+Status Kinematics::flipBranch(JointId id, Mechanism* redrawn) {
+  const int j = valid() ? d_->mech.jointIndex(id) : -1;
+  if (j < 0) return Status::badModel(valid() ? "unknown joint" : "no mechanism is loaded");
+  const int group = d_->plan ? d_->plan->groupOfJoint(j) : -1;
+  return d_->flip(group, d_->mech.jointLabel(id), redrawn);
+}
+
+std::vector<BodyId> Kinematics::flippableBodies() const {
+  return d_->flippableBodies();
+}
+
 bool Kinematics::valid() const {
   return d_->valid;
 }

@@ -39,13 +39,25 @@ struct KinematicsState {
   // Edits of an already valid state, cheapest first; each changes nothing when it fails.
   // Dimensions only, on the closed-form path: the groups the edit touches (load.cpp).
   bool editInPlace(const Mechanism& m, const std::vector<BodyId>& reshaped);
-  // Dimensions only: the analysis kept, re-assembled from the current pose.
+  // Dimensions only: the analysis and the Newton solver kept, re-assembled from the current
+  // pose.
   bool editKeepingAnalysis(const Mechanism& m);
+  // Closes the joints from q (near a solution) at phi, then starts there; false where it
+  // cannot (q is then the last iterate).
+  bool reassemble(Eigen::VectorXd& q, double phi);
   // Anything (into a new state): a warm start from old's pose, else the drawing turned to the
   // crank angle old was at.
   Status editFrom(const KinematicsState& old, const Mechanism& m);
 
   Status moveToPhi(double phi);
+  // Kinematics::dragTo (drag.cpp).
+  Kinematics::DragResult drag(PointId p, const Vec2& target);
+  // Kinematics::flipBranch (flip.cpp): the plan's group on its other assembly; `what` names it
+  // in messages.
+  Status flip(int group, const std::string& what, Mechanism* redrawn);
+  std::vector<BodyId> flippableBodies() const;
+  // Every body at its drawn pose.
+  Motion sketchMotion() const;
   Status trackGeneral(double phi);
   // Closed-form steps towards phi; false where the plan cannot go on (reg is the last good).
   bool trackClosedForm(double phi);
@@ -81,6 +93,10 @@ struct KinematicsState {
   bool lastRefusalCrossing = false;
   bool valid = false;
   int lastEditGroups = -1;
+  // How the last edit was solved (for tests and benchmarks): in place by the closed-form groups,
+  // re-assembled with the analysis kept, or whole (analysed again).
+  enum class EditPath { None, InPlace, KeptAnalysis, Whole };
+  EditPath lastEdit = EditPath::None;
   std::uint64_t revision = 0;
 };
 

@@ -97,7 +97,7 @@ Status KinematicsState::start(const Eigen::VectorXd& q, double phi) {
   valid = true;
   plan.reset();
   if (opt.closedForm) {
-    plan = ClosedFormPlan::build(mech, sys, q);
+    plan = ClosedFormPlan::build(mech, sys, reg);
     // The plan must reproduce the configuration just solved, or it is not used.
     next.coordinates = false;  // whatever next held before is not what the plan writes
     if (plan && !(plan->solve(sys, reg, phi, next) &&
@@ -163,9 +163,7 @@ bool KinematicsState::editInPlace(const Mechanism& m, const std::vector<BodyId>&
     b.v += b.w * perp(shift);
     b.a += b.al * perp(shift) - b.w * b.w * shift;
   }
-  Eigen::VectorXd q, dq, ddq;
-  warm.toCoordinates(q, dq, ddq);
-  std::optional<ClosedFormPlan> editedPlan = ClosedFormPlan::build(m, *edited, q);
+  std::optional<ClosedFormPlan> editedPlan = ClosedFormPlan::build(m, *edited, warm);
   if (!editedPlan) return false;
   Motion solved;
   const int groups = editedPlan->resolveEdited(*edited, *plan, warm, solved);
@@ -182,45 +180,61 @@ bool KinematicsState::editInPlace(const Mechanism& m, const std::vector<BodyId>&
                              [](const Note& n) { return n.kind == Note::Kind::AssemblyMoved; }),
               notes.end());
   lastEditGroups = groups;
+  lastEdit = EditPath::InPlace;
   return true;
 }
 
 bool KinematicsState::editKeepingAnalysis(const Mechanism& m) {
   // The same joints and bodies: the structure analysis (which rows are independent, which
-  // coordinates are held) is kept, and the edited drawing is re-assembled from the current
-  // pose at the current crank angle. It must land on the same branch, regular: the same sign of
-  // det J and a Newton that converges from the carried pose. Anything else (a rank that the
-  // edit changed shows as a singular J) is left to the whole analysis.
+  // coordinates are held) is kept, and so is the Newton solver (its row map and the sparse
+  // LU's analysis of J's pattern, which the joints fix); the edited drawing is re-assembled
+  // from the current pose at the current crank angle by Newton, or the damped assembly where
+  // the edit moved too much for it. It must land on the same branch, regular: the same sign of
+  // det J. Anything else (a rank that the edit changed shows as a singular J, or as redundant
+  // rows that no longer hold) is left to the whole analysis.
   if (atSingular) return false;
   Status s;
   std::optional<System> edited = compile(m, s);
-  if (!edited || edited->nRows != sys.nRows - static_cast<int>(structure.holdCoordinates.size()))
-    return false;
+  const int holds = static_cast<int>(structure.holdCoordinates.size());
+  if (!edited || edited->nRows != sys.nRows - holds) return false;
   const Snapshot& now = coordinates(cur());
   Eigen::VectorXd q = carriedPose(sys, now.q, *edited);
+  for (int col : structure.holdCoordinates) addHold(*edited, col, q[col]);
   KinematicsState trial(opt);
   trial.mech = m;
   trial.sys = std::move(*edited);
   trial.structure = structure;
-  trial.notes = notes;
-  trial.resetSolver(q);
-  AssemblyReport moved;
-  if (!assemble(trial.mech, trial.sys, trial.structure, trial.newton, q, now.phi, moved).ok())
+  trial.newton = std::move(newton);
+  const bool ok = trial.reassemble(q, now.phi) && trial.regSign == regSign;
+  if (!ok) {
+    newton = std::move(trial.newton);
     return false;
-  if (!checkRedundant(trial.mech, trial.sys, trial.structure, q, now.phi).ok()) return false;
-  if (!trial.start(q, now.phi).ok() || trial.regSign != regSign) return false;
-  trial.revision = revision;
-  trial.lastEditGroups = -1;
+  }
+  trial.notes = notes;
   trial.notes.erase(
       std::remove_if(trial.notes.begin(), trial.notes.end(),
                      [](const Note& n) { return n.kind == Note::Kind::AssemblyMoved; }),
       trial.notes.end());
+  trial.revision = revision;
+  trial.lastEditGroups = -1;
+  trial.lastEdit = EditPath::KeptAnalysis;
   *this = std::move(trial);
   return true;
 }
 
+bool KinematicsState::reassemble(Eigen::VectorXd& q, double phi) {
+  const Eigen::VectorXd from = q;
+  if (!newton.solve(sys, q, phi, opt.newton).converged) {
+    q = from;
+    AssemblyReport moved;
+    if (!assemble(mech, sys, structure, newton, q, phi, moved).ok()) return false;
+  }
+  return checkRedundant(mech, sys, structure, q, phi).ok() && start(q, phi).ok();
+}
+
 Status KinematicsState::editFrom(const KinematicsState& old, const Mechanism& m) {
   lastEditGroups = -1;
+  lastEdit = EditPath::Whole;
   const Snapshot& now = old.coordinates(old.cur());
   const double phi = now.phi;
   Status s;

@@ -48,6 +48,12 @@ inline double turnsAfter(const Rot& before, double turns, const Rot& after) {
   return std::signbit(after.s) ? turns + 1 : turns - 1;
 }
 
+// Whole turns that put a body of rotation R nearest to the angle `near`: for a jump (another
+// assembly at the same crank angle), where no path between the two positions is followed.
+inline double nearestTurns(double near, const Rot& R) {
+  return std::round((near - std::atan2(R.s, R.c)) / (2 * M_PI));
+}
+
 struct Motion {
   double phi = 0;
   std::vector<BodyState> body;

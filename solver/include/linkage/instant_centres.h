@@ -11,11 +11,16 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "linkage/kinematics.h"
 
 namespace linkage {
+
+// What a joint says by itself about the centre of the bodies it joins (defined with the joint
+// types, internally).
+enum class CentreRule : unsigned char;
 
 // How a centre was found. Velocity: Kennedy's lines do not fix it at this position (too few
 // lines, or the lines coincide), so it is taken from the solved velocities, and said so.
@@ -106,6 +111,8 @@ struct CentreDisagreement {
 
 struct InstantCentres {
   Status status;  // BadModel when there is no mechanism or its numbering cannot be used
+  // Kinematics::revision() of the mechanism the centres are of: what a velocity chain checks.
+  std::uint64_t revision = 0;
   double crankDeg = 0;
   double size = 1;                     // L, mm
   bool velocitiesValid = false;        // false at a singular position: no velocity-derived centres
@@ -137,9 +144,8 @@ class InstantCentreSolver {
   const InstantCentres& result() const { return out_; }
 
  private:
-  enum class Kind : unsigned char { Pin, Slider, PinInSlot };
   struct Primary {
-    Kind kind = Kind::Pin;
+    CentreRule rule{};  // what the joint says of the centre
     int joint = -1;
     int body = -1;  // system body index of the point (pin: point a), -1 ground
     Vec2 s = Vec2::Zero();

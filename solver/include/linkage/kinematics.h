@@ -4,13 +4,21 @@
 // last good state as it was.
 //
 // Moving to a crank angle tracks the motion continuously from the current one, in steps of at
-// most `maxStepDeg`: a predictor (second-order Taylor from the last regular position) and Newton
-// on the independent equations. A step is refused, and cut to a quarter, when Newton does not
-// contract from the predictor, when its first correction is far (another branch), when the sign
-// of det J changes (the path crossed a singular position, where the other branch can be picked
-// up), or when the velocities at its end do not follow from those at its start (a change point
-// crossed with det J of the same sign). Refused down to `minStepDeg`, the reason is reported: a
-// limit position (the mechanism locks), a singular crossing, or a position solve that fails.
+// most `maxStepDeg`. Group by group in closed form where the mechanism decomposes (a step the
+// groups cannot take, because a group does not close or its joint would land on the other side
+// of its branch line, is left to the general solve from the last position reached). Else a
+// predictor (second-order Taylor from the last regular position) and Newton on the independent
+// equations. A step is refused, and the next try cut to a quarter of it (after an accepted step
+// the step doubles again, up to `maxStepDeg`), when Newton does not converge from the predictor
+// (J singular there, no contraction, or a first correction farther than
+// `NewtonOptions::maxFirstStep` of the size: another branch), when the sign of det J changes (the
+// path crossed a singular position, where the other branch can be picked up), when the velocities
+// at its end do not follow from those at its start (a change point crossed with det J of the same
+// sign), or when its end is too near a singular position to be the base of the next step. A step
+// that ends on a singular position is refused too, unless it ends at the angle asked for: moveTo
+// then stops there with Singular (positions known, velocities not). Refused down to
+// `minStepDeg`, the reason is reported: a limit position (the mechanism locks), a singular
+// crossing, or a position solve that fails.
 //
 // Ids: every query takes the ids of the Mechanism that was loaded (or a copy of it). An id the
 // mechanism does not hold, or one from another mechanism, is refused: queries answer NaN and
@@ -96,6 +104,48 @@ class Kinematics {
   // Tracks the motion to the given crank angle (degrees, from the start, in the driving
   // direction). On failure the state stays at the last position reached.
   Status moveTo(double crankDeg);
+
+  // Drag: moves the mechanism along its freedom so that point p comes as close as it can to
+  // `target` (world mm), as a hand pushing it would: a local descent of the distance from the
+  // current pose (Newton steps on the crank angle from the exact velocity and acceleration of
+  // the point), every step tracked by moveTo, so that it stays on its assembly branch however
+  // far the target is. Bounded work per call (at most 8 steps of at most 15 degrees of crank):
+  // an editor calls it once per mouse move and a far target is reached over a few calls.
+  struct DragResult {
+    // Ok; or Unreachable (atLimit) where the motion stopped at a limit position of the crank on
+    // the way down, Singular or NotConverged where it stopped short of a singular position (the
+    // message says where; the mechanism stays there, valid); BadModel for a point the driver
+    // does not move (on the ground, on a body held where it is), an unknown point or a target
+    // that is not finite, with nothing moved.
+    Status status;
+    double crankDeg = 0;     // the crank angle now
+    double distance = 0;     // |position(p) - target| now, mm
+    bool atLimit = false;    // stopped at a limit position (the distance would fall beyond it)
+    bool converged = false;  // as near as the motion goes (a local minimum, or the stop); false
+                             // when the call's work ran out first: call again
+  };
+  DragResult dragTo(PointId p, const Vec2& target);
+
+  // Branch flip: puts the group that solves `body` (a dyad, RRR, RRP or RP, or a core group of
+  // the closed-form solve; closedForm()) on its other assembly at the current crank angle: a
+  // dyad's joint to the other intersection of its two circles (or circle and line), a core on
+  // the other root of its equations. The groups that depend on it are solved again on their
+  // own branches; the others do not move. By a joint: the group the joint belongs to (the
+  // joint between a dyad's two links, or one of its pins to the bodies it hangs from).
+  // The mechanism() is not changed: a later load of it assembles the drawing on the branch it
+  // is drawn on. `redrawn`, when given, gets the design redrawn on the new branch (every body
+  // the flip moves, drawn where it is at driver angle 0, the drawing's, exactly; the same ids):
+  // loading or editing to it gives the flipped motion, and saving it keeps the flip.
+  // Refused, with nothing changed: BadModel off the closed-form path (no mirror assembly is
+  // known), for the crank, the ground or an unknown id; Singular at a singular position, where
+  // the two assemblies meet; AssemblyFailed where a group that depends on it cannot close on
+  // the new branch; the tracker's status when the new branch cannot be turned back to the
+  // drawing's crank angle for `redrawn`.
+  Status flipBranch(BodyId body, Mechanism* redrawn = nullptr);
+  Status flipBranch(JointId joint, Mechanism* redrawn = nullptr);
+  // The bodies flipBranch takes (file order): the bodies of the closed-form groups that have a
+  // mirror assembly; empty off the closed-form path. What an editor greys its command by.
+  std::vector<BodyId> flippableBodies() const;
 
   bool valid() const;
   // Changes with every successful load or edit (unique across all Kinematics objects): what a

@@ -120,6 +120,8 @@ struct Mechanism {
   JointId addPin(PointId a, PointId b);
   JointId addSlider(PointId a, SlotId slot);
   JointId addPinInSlot(PointId a, SlotId slot);
+  // Any type: point a to point b, or to a slot, as the type joins (the other is left unset).
+  JointId addJoint(JointType type, PointId a, PointId b, SlotId slot);
 
   // Removal cascades to what cannot stand without the entity: a joint takes the driver along if
   // it is the driver's; a point its joints and its place among the outputs; a slot its joints;
@@ -128,7 +130,8 @@ struct Mechanism {
   // between (what an undo stack guarantees).
   Removal remove(const std::vector<BodyId>& bodies, const std::vector<PointId>& points = {},
                  const std::vector<SlotId>& slots = {}, const std::vector<JointId>& joints = {});
-  Removal remove(BodyId id) { return remove({id}); }
+  // (Spelled out: remove({id}) would call this overload again.)
+  Removal remove(BodyId id) { return remove(std::vector<BodyId>{id}); }
   Removal remove(PointId id) { return remove({}, {id}); }
   Removal remove(SlotId id) { return remove({}, {}, {id}); }
   Removal remove(JointId id) { return remove({}, {}, {}, {id}); }

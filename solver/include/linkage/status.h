@@ -48,6 +48,7 @@ struct Status {
     s.message = std::move(msg);
     return s;
   }
+  static Status badModel(std::string msg) { return failure(StatusCode::BadModel, std::move(msg)); }
 };
 
 }  // namespace linkage

@@ -53,6 +53,8 @@ struct VelocityChain {
   Vec2 solverVelocity = Vec2::Zero();  // Kinematics::velocity, mm/s (when velocities exist)
 };
 
+// `ics` must be the centres of k as it is (the same revision, computed at its current crank
+// angle): other centres are refused with BadModel.
 // `via`: textbook numbers of the bodies to go through, in order, between the crank and the
 // point's body. Empty: the direct step through IC(crank, body), or else the first single body
 // (in number order) through which the chain can be followed.
