@@ -51,6 +51,11 @@ void CanvasScene::setDocument(Document* doc) {
   rebuild();
 }
 
+void CanvasScene::addOverlay(QGraphicsItem* item) {
+  overlays_.push_back(item);
+  addItem(item);
+}
+
 void CanvasScene::setPixelSize(double mmPerPx) {
   if (!(mmPerPx > 0) || mmPerPx == ctx_.px) return;
   ctx_.px = mmPerPx;
@@ -119,7 +124,9 @@ void CanvasScene::clearItems() {
   // items() also lists.
   QList<QGraphicsItem*> doomed;
   for (QGraphicsItem* i : items())
-    if (i != centres_ && i != chain_ && !i->parentItem()) doomed.append(i);
+    if (i != centres_ && i != chain_ && !i->parentItem() &&
+        std::find(overlays_.begin(), overlays_.end(), i) == overlays_.end())
+      doomed.append(i);
   for (QGraphicsItem* i : doomed) {
     removeItem(i);
     delete i;

@@ -28,6 +28,10 @@ class CanvasScene : public QGraphicsScene {
   void setDocument(Document* doc);
   Document* document() const { return doc_; }
 
+  // An item drawn over the mechanism that the scene keeps across rebuilds (the tools').
+  void addOverlay(QGraphicsItem* item);
+  const CanvasContext* context() const { return &ctx_; }
+
   // Millimetres per screen pixel: symbols are rebuilt to keep their size on screen.
   void setPixelSize(double mmPerPx);
   double pixelSize() const { return ctx_.px; }
@@ -84,6 +88,7 @@ class CanvasScene : public QGraphicsScene {
   DriverItem* driver_ = nullptr;
   CentresItem* centres_ = nullptr;
   ChainItem* chain_ = nullptr;
+  std::vector<QGraphicsItem*> overlays_;
   bool centresVisible_ = false, tracesVisible_ = false;
   std::vector<QMetaObject::Connection> connections_;
 };

@@ -28,6 +28,9 @@ class CanvasView : public QGraphicsView {
   void zoomBy(double factor, std::optional<QPoint> anchor = std::nullopt);
   // The whole mechanism (and its traced paths) in view, with a margin.
   void fitToMechanism();
+  // Panning now (middle button, or Space held): the tools leave the mouse to the view.
+  bool panning() const { return panning_; }
+  bool spaceHeld() const { return spaceDown_; }
   // The centre whose Kennedy lines are drawn when the mouse is on no centre.
   void setSelectedCentre(int i, int j);
 

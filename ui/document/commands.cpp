@@ -102,4 +102,28 @@ void commitEdit(Document* doc, const QString& text, Mechanism next, const Docume
   doc->undoStack()->push(new EditCommand(doc, text, before, doc->state()));
 }
 
+bool flipAssembly(Document* doc, BodyId body, QString* why) {
+  if (!doc->solved()) {
+    if (why) *why = QStringLiteral("the mechanism is not solved");
+    return false;
+  }
+  Kinematics trial = doc->kinematics();
+  Mechanism redrawn;
+  Status s = trial.flipBranch(body, &redrawn);
+  // The solver takes the redrawn design on the branch it is on now (same shapes, same pose).
+  if (s.ok()) s = trial.edit(redrawn);
+  if (!s.ok()) {
+    if (why) *why = QString::fromStdString(s.message);
+    return false;
+  }
+  const DocumentState before = doc->state();
+  const Body* b = redrawn.body(body);
+  const QString name = b ? QString::fromStdString(b->name) : QString();
+  DocumentState after{std::move(redrawn), std::move(trial), Status::success()};
+  doc->restore(after);
+  doc->undoStack()->push(
+      new EditCommand(doc, QObject::tr("Flip the assembly of %1").arg(name), before, doc->state()));
+  return true;
+}
+
 }  // namespace linkage::ui

@@ -40,4 +40,9 @@ void editDesign(Document* doc, const QString& text, Mechanism next);
 void commitEdit(Document* doc, const QString& text, Mechanism next);
 void commitEdit(Document* doc, const QString& text, Mechanism next, const DocumentState& before);
 
+// Puts the group that solves `body` (a dyad) on its other assembly: the mirror closure, at the
+// current crank angle, with the design redrawn on the new branch so that the file keeps it.
+// One undo step; false with the solver's reason when there is no other assembly to take.
+bool flipAssembly(Document* doc, BodyId body, QString* why);
+
 }  // namespace linkage::ui

@@ -119,6 +119,19 @@ Status Document::setCrankDeg(double deg) {
   return poseStatus_;
 }
 
+Kinematics::DragResult Document::dragTo(PointId p, const Vec2& target) {
+  Kinematics::DragResult r;
+  if (!state_.kinematics.valid()) {
+    r.status = Status::failure(StatusCode::BadModel, "the mechanism is not solved");
+    return r;
+  }
+  r = state_.kinematics.dragTo(p, target);
+  poseStatus_ = r.status;
+  icFresh_ = false;
+  emit poseChanged();
+  return r;
+}
+
 void Document::setAccelerationsWanted(bool on) {
   wantAccelerations_ = on;
   applyWants();

@@ -69,7 +69,10 @@ class Document : public QObject {
   // the last angle reached and the status says why.
   double crankDeg() const;
   Status setCrankDeg(double deg);
-  // What the last setCrankDeg said (Ok, or why it stopped where it is).
+  // Moves the mechanism along its freedom so that point p follows `target` as a hand would
+  // (the solver's drag: never onto the other assembly branch; stops at a limit position).
+  Kinematics::DragResult dragTo(PointId p, const Vec2& target);
+  // What the last setCrankDeg or dragTo said (Ok, or why it stopped where it is).
   const Status& poseStatus() const { return poseStatus_; }
   // Only what a view shows is computed: accelerations while a view needs them.
   void setAccelerationsWanted(bool on);

@@ -41,6 +41,12 @@ void LinkTool::press(const CanvasMouse& e) {
   emit hintChanged();
 }
 
+void LinkTool::startAt(const LinkVertex& v) {
+  vertices_ = {v};
+  showPath(v.at);
+  emit hintChanged();
+}
+
 void LinkTool::move(const CanvasMouse& e) {
   if (!vertices_.empty()) showPath(e.snap.at);
 }

@@ -23,6 +23,8 @@ class LinkTool : public Tool {
   bool key(QKeyEvent* e) override;
   bool rightClick(const CanvasMouse& e) override;
   bool drawing() const { return !vertices_.empty(); }
+  // Starts a link at a point (the context menu's "attach a link here").
+  void startAt(const LinkVertex& v);
 
  private:
   void finish();

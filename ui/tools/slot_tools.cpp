@@ -43,6 +43,14 @@ void SlotTool::press(const CanvasMouse& e) {
   emit hintChanged();
 }
 
+void SlotTool::startAt(const Vec2& at, BodyId body) {
+  start_ = at;
+  body_ = body;
+  dragged_ = false;
+  ctx().overlay->setPath({at}, at);
+  emit hintChanged();
+}
+
 void SlotTool::move(const CanvasMouse& e) {
   if (!start_) return;
   ctx().overlay->setPath({*start_}, e.snap.at);
@@ -91,6 +99,11 @@ QString SlotJointTool::hint() const {
 
 void SlotJointTool::deactivate() {
   point_ = {};
+  emit hintChanged();
+}
+
+void SlotJointTool::startAt(PointId p) {
+  point_ = p;
   emit hintChanged();
 }
 

@@ -19,6 +19,8 @@ class SlotTool : public Tool {
   void move(const CanvasMouse& e) override;
   void release(const CanvasMouse& e) override;
   bool key(QKeyEvent* e) override;
+  // Starts a slot at a place on a body (the context menu's "add a slot from here").
+  void startAt(const Vec2& at, BodyId body);
 
  private:
   void finish(const Vec2& end);
@@ -39,6 +41,8 @@ class SlotJointTool : public Tool {
   void deactivate() override;
   void press(const CanvasMouse& e) override;
   bool key(QKeyEvent* e) override;
+  // The point is chosen (the context menu): the next click picks the slot.
+  void startAt(PointId p);
 
  private:
   JointType type_;

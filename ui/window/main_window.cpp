@@ -20,6 +20,9 @@
 #include "centres/centres_panel.h"
 #include "document/document.h"
 #include "properties/inspector_panel.h"
+#include "tools/selection.h"
+#include "tools/tool_overlay.h"
+#include "tools/toolbox.h"
 #include "window/icons.h"
 
 namespace linkage::ui {
@@ -45,6 +48,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   animator_ = new Animator(this);
   setCentralWidget(view_);
   createActions();
+  createTools();
   createDocks();
   createMenus();
   createToolBars();
@@ -146,7 +150,27 @@ void MainWindow::updateWork() {
   inspector_->refreshMotion();
 }
 
+void MainWindow::createTools() {
+  selection_ = new Selection;
+  selection_->setParent(this);
+  overlay_ = new ToolOverlay(scene_->context(), scene_, selection_);
+  scene_->addOverlay(overlay_);
+  connect(selection_, &Selection::changed, this, [this] { overlay_->update(); });
+  ToolContext ctx;
+  ctx.doc = doc_;
+  ctx.scene = scene_;
+  ctx.view = view_;
+  ctx.selection = selection_;
+  ctx.overlay = overlay_;
+  ctx.message = [this](const QString& text, bool warning) { showMessage(text, warning); };
+  toolbox_ = new Toolbox(ctx, this);
+}
+
 void MainWindow::createStatusBar() {
+  hint_ = new QLabel;
+  hint_->setText(toolbox_->hint());
+  connect(toolbox_, &Toolbox::hintChanged, hint_, &QLabel::setText);
+  statusBar()->addWidget(hint_);
   message_ = new QLabel;
   message_->setTextFormat(Qt::PlainText);
   message_->setMinimumWidth(100);

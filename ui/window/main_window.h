@@ -22,6 +22,9 @@ class CentresPanel;
 class CrankBar;
 class Document;
 class InspectorPanel;
+class Selection;
+class ToolOverlay;
+class Toolbox;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -37,6 +40,8 @@ class MainWindow : public QMainWindow {
   CentresPanel* centresPanel() const { return centres_; }
   InspectorPanel* inspector() const { return inspector_; }
   CrankBar* crankBar() const { return crankBar_; }
+  Toolbox* toolbox() const { return toolbox_; }
+  Selection* selection() const { return selection_; }
   QDockWidget* dock(const QString& objectName) const;
   // An action by its object name ("play", "open", "showCentres", ...), for tests and scripts.
   QAction* action(const QString& objectName) const;
@@ -64,6 +69,7 @@ class MainWindow : public QMainWindow {
 
  private:
   void createActions();
+  void createTools();
   void createMenus();
   void createToolBars();
   void createDocks();
@@ -92,6 +98,10 @@ class MainWindow : public QMainWindow {
   CentresPanel* centres_ = nullptr;
   InspectorPanel* inspector_ = nullptr;
   QUndoView* history_ = nullptr;
+  Selection* selection_ = nullptr;
+  ToolOverlay* overlay_ = nullptr;
+  Toolbox* toolbox_ = nullptr;
+  QLabel* hint_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QMenu* examplesMenu_ = nullptr;
   QLabel* message_ = nullptr;

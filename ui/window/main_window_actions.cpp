@@ -14,6 +14,7 @@
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "document/document.h"
+#include "tools/toolbox.h"
 #include "window/main_window.h"
 
 namespace linkage::ui {
@@ -147,6 +148,15 @@ void MainWindow::createMenus() {
   history->setStatusTip(tr("Show every edit; click one to go back to it"));
   edit->addAction(history);
 
+  edit->addSeparator();
+  edit->addAction(toolbox_->deleteAction());
+  edit->addAction(toolbox_->flipAction());
+
+  QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+  for (QAction* a : toolbox_->toolActions()) tools->addAction(a);
+  tools->addSeparator();
+  tools->addAction(toolbox_->snapAction());
+
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (const char* a : {"fit", "zoomIn", "zoomOut"}) view->addAction(action(a));
   view->addSeparator();
@@ -169,6 +179,13 @@ void MainWindow::createToolBars() {
   QToolBar* file = addToolBar(tr("File"));
   file->setObjectName("fileToolBar");
   for (const char* a : {"new", "open", "save", "undo", "redo"}) file->addAction(action(a));
+  QToolBar* tools = new QToolBar(tr("Tools"), this);
+  tools->setObjectName("toolsToolBar");
+  addToolBar(Qt::LeftToolBarArea, tools);
+  for (QAction* a : toolbox_->toolActions()) tools->addAction(a);
+  tools->addSeparator();
+  tools->addAction(toolbox_->deleteAction());
+  tools->addAction(toolbox_->flipAction());
   QToolBar* view = addToolBar(tr("View"));
   view->setObjectName("viewToolBar");
   for (const char* a : {"fit", "showGrid", "showCentres", "showTraces"}) view->addAction(action(a));

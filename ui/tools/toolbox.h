@@ -1,0 +1,60 @@
+// The canvas's tools with their actions (toolbar, menu, shortcut, status tip), the one that is
+// active, and the routing of the canvas's mouse and keys to it (after the view's own zoom and
+// pan). Also the commands on the selection: Delete, Flip assembly, and the right-click menus.
+#pragma once
+
+#include <QActionGroup>
+#include <QObject>
+#include <memory>
+#include <vector>
+
+#include "tools/tool.h"
+
+class QMenu;
+
+namespace linkage::ui {
+
+class Toolbox : public QObject {
+  Q_OBJECT
+
+ public:
+  Toolbox(ToolContext ctx, QWidget* actionParent);
+  ~Toolbox() override;
+
+  // The tool actions in toolbar order (objectName "tool:select", "tool:link", ...).
+  const std::vector<QAction*>& toolActions() const { return actions_; }
+  QAction* deleteAction() const { return delete_; }
+  QAction* flipAction() const { return flip_; }
+  QAction* snapAction() const { return snap_; }
+  Tool* tool() const { return current_; }
+  void setTool(const QString& name);  // "select", "link", ...
+  QString hint() const;
+  // Deletes the selection and what depends on it (one undo step).
+  void deleteSelection();
+  // The menu a right click at `e` opens (what can be done with what is there).
+  QMenu* contextMenu(const CanvasMouse& e, QWidget* parent);
+
+ Q_SIGNALS:
+  void hintChanged(const QString& hint);
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  CanvasMouse mouseAt(const QPoint& viewPos, Qt::MouseButton button, Qt::MouseButtons buttons,
+                      Qt::KeyboardModifiers mods) const;
+  void add(const QString& name, const QString& text, const QKeySequence& key, const QString& tip,
+           Tool* tool);
+  void updateCommands();
+
+  ToolContext ctx_;
+  std::vector<std::unique_ptr<Tool>> tools_;
+  std::vector<QAction*> actions_;
+  QActionGroup* group_;
+  Tool* current_ = nullptr;
+  QAction* delete_ = nullptr;
+  QAction* flip_ = nullptr;
+  QAction* snap_ = nullptr;
+};
+
+}  // namespace linkage::ui
