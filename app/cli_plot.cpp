@@ -1,6 +1,7 @@
 // linkage-cli plot: the motion curves of one or more mechanisms as a figure file, without a
 // window. The only command that makes a QApplication (offscreen unless QT_QPA_PLATFORM says
 // otherwise); the others stay free of Qt at run time.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -72,76 +73,88 @@ struct PlotOptions {
 
 bool parseSize(const std::string& text, int& w, int& h) {
   const size_t x = text.find('x');
-  if (x == std::string::npos) return false;
-  const std::optional<double> a = parseNumber(text.substr(0, x)),
-                              b = parseNumber(text.substr(x + 1));
-  if (!a || !b || *a != std::floor(*a) || *b != std::floor(*b)) return false;
-  if (*a < 50 || *b < 50 || *a > 20000 || *b > 20000) return false;
-  w = static_cast<int>(*a);
-  h = static_cast<int>(*b);
+  const std::optional<double> a =
+      x == std::string::npos ? std::nullopt : parseNumber(text.substr(0, x));
+  const std::optional<double> b =
+      x == std::string::npos ? std::nullopt : parseNumber(text.substr(x + 1));
+  const bool ok = a && b && *a == std::floor(*a) && *b == std::floor(*b) && *a >= 50 && *b >= 50 &&
+                  *a <= 20000 && *b <= 20000;
+  if (!ok) error("--size: \"" + text + "\" is not WxH with whole numbers from 50 to 20000");
+  w = ok ? static_cast<int>(*a) : 0;
+  h = ok ? static_cast<int>(*b) : 0;
+  return ok;
+}
+
+// The value if it is one of `allowed`; prints the problem otherwise.
+bool oneOf(const std::string& option, const std::string& v,
+           const std::vector<std::string>& allowed) {
+  for (const std::string& x : allowed)
+    if (v == x) return true;
+  std::string list;
+  for (size_t i = 0; i < allowed.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + allowed[i];
+  error(option + ": \"" + v + "\" is not " + list);
+  return false;
+}
+
+bool wholeIn(const std::string& option, const std::string& v, long long lo, long long hi,
+             long long& out) {
+  const std::optional<long long> n = wholeNumber(option, v);
+  if (n && (*n < lo || *n > hi))
+    error(option + ": must be from " + std::to_string(lo) + " to " + std::to_string(hi));
+  if (!n || *n < lo || *n > hi) return false;
+  out = *n;
+  return true;
+}
+
+// One option and its value (empty for flags); false after printing the problem.
+bool apply(const std::string& a, const std::string& v, PlotOptions& o) {
+  if (a == "--revs") return wholeIn(a, v, 1, 100, o.revs);
+  if (a == "--steps") return wholeIn(a, v, 12, 36000, o.steps);
+  if (a == "--size") return parseSize(v, o.width, o.height);
+  if ((a == "--units" && !oneOf(a, v, {"mm", "m", "g"})) ||
+      (a == "--component" && !oneOf(a, v, {"x", "y", "magnitude"})))
+    return false;
+  if (a == "--along") {
+    o.along = number(a, v);
+    return o.along.has_value();
+  }
+  if (a == "--point") {
+    o.point = v;
+  } else if (a == "--out") {
+    o.out = v;
+  } else if (a == "--units") {
+    o.units = v;
+  } else if (a == "--component") {
+    o.component = v;
+  } else if (a == "--jerk") {
+    o.jerk = true;
+  } else if (a == "--overlay") {
+    o.overlay = true;
+  } else if (!a.empty() && a[0] == '-') {
+    error("plot: unknown option " + a + " (see linkage-cli plot --help)");
+    return false;
+  } else {
+    o.models.push_back(a);
+  }
   return true;
 }
 
 // Returns kOk, or the exit status after printing the problem.
 int parseOptions(int argc, char** argv, PlotOptions& o) {
+  const std::vector<std::string> withValue = {"--point", "--out",  "--revs",      "--steps",
+                                              "--units", "--size", "--component", "--along"};
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
-    auto value = [&](std::string& v) {
-      if (i + 1 >= argc) {
+    std::string v;
+    if (std::find(withValue.begin(), withValue.end(), a) != withValue.end()) {
+      if (i + 1 == argc) {
         error(a + ": needs a value");
-        return false;
+        return kBadInput;
       }
       v = argv[++i];
-      return true;
-    };
-    std::string v;
-    if (a == "--point" || a == "--out" || a == "--revs" || a == "--steps" || a == "--units" ||
-        a == "--size" || a == "--component" || a == "--along") {
-      if (!value(v)) return kBadInput;
     }
-    if (a == "--point") {
-      o.point = v;
-    } else if (a == "--out") {
-      o.out = v;
-    } else if (a == "--revs" || a == "--steps") {
-      std::optional<long long> n = wholeNumber(a, v);
-      if (!n) return kBadInput;
-      const long long lo = a == "--revs" ? 1 : 12, hi = a == "--revs" ? 100 : 36000;
-      if (*n < lo || *n > hi) {
-        error(a + ": must be from " + std::to_string(lo) + " to " + std::to_string(hi));
-        return kBadInput;
-      }
-      (a == "--revs" ? o.revs : o.steps) = *n;
-    } else if (a == "--units") {
-      if (v != "mm" && v != "m" && v != "g") {
-        error("--units: \"" + v + "\" is not mm, m or g");
-        return kBadInput;
-      }
-      o.units = v;
-    } else if (a == "--size") {
-      if (!parseSize(v, o.width, o.height)) {
-        error("--size: \"" + v + "\" is not WxH with whole numbers from 50 to 20000");
-        return kBadInput;
-      }
-    } else if (a == "--component") {
-      if (v != "x" && v != "y" && v != "magnitude") {
-        error("--component: \"" + v + "\" is not x, y or magnitude");
-        return kBadInput;
-      }
-      o.component = v;
-    } else if (a == "--along") {
-      o.along = number(a, v);
-      if (!o.along) return kBadInput;
-    } else if (a == "--jerk") {
-      o.jerk = true;
-    } else if (a == "--overlay") {
-      o.overlay = true;
-    } else if (!a.empty() && a[0] == '-') {
-      error("plot: unknown option " + a + " (see linkage-cli plot --help)");
-      return kBadInput;
-    } else {
-      o.models.push_back(a);
-    }
+    if (!apply(a, v, o)) return kBadInput;
   }
   if (o.models.empty()) {
     error("plot: no MODEL given (see linkage-cli plot --help)");

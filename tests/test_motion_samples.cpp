@@ -6,23 +6,18 @@
 #include <string>
 #include <tuple>
 
+#include "examples.h"
 #include "linkage/extremes.h"
-#include "linkage/io/model_file.h"
 #include "linkage/motion_samples.h"
 #include "mechanisms.h"
-#include "reference/slider_crank.h"
+#include "reference/dual.h"
 
 namespace linkage {
 namespace {
 
 using Q = __float128;
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
-}
+using test::example;
 
 Kinematics loaded(const Mechanism& m) {
   Kinematics k;
@@ -31,47 +26,27 @@ Kinematics loaded(const Mechanism& m) {
   return k;
 }
 
-// A forward-mode dual number: value and derivative, to differentiate the reference's exact
-// acceleration once more (the slider-crank's jerk in closed form, no differences).
-template <class T>
-struct Dual {
-  T v{}, d{};
-  Dual() = default;
-  Dual(T value, T derivative = T(0)) : v(value), d(derivative) {}
-  Dual(int value) : v(T(value)) {}
-  friend Dual operator+(Dual a, Dual b) { return {a.v + b.v, a.d + b.d}; }
-  friend Dual operator-(Dual a, Dual b) { return {a.v - b.v, a.d - b.d}; }
-  friend Dual operator-(Dual a) { return {-a.v, -a.d}; }
-  friend Dual operator*(Dual a, Dual b) { return {a.v * b.v, a.d * b.v + a.v * b.d}; }
-  friend Dual operator/(Dual a, Dual b) {
-    return {a.v / b.v, (a.d * b.v - a.v * b.d) / (b.v * b.v)};
-  }
-  friend bool operator>(Dual a, Dual b) { return a.v > b.v; }
-  friend bool operator>=(Dual a, Dual b) { return a.v >= b.v; }
-  friend Dual sin(Dual a) { return {linkref::sin(a.v), linkref::cos(a.v) * a.d}; }
-  friend Dual cos(Dual a) { return {linkref::cos(a.v), -linkref::sin(a.v) * a.d}; }
-  friend Dual sqrt(Dual a) {
-    const T s = linkref::sqrt(a.v);
-    return {s, a.d / (T(2) * s)};
-  }
-  friend Dual atan2(Dual y, Dual x) {
-    return {linkref::atan2(y.v, x.v), (x.v * y.d - y.v * x.d) / (x.v * x.v + y.v * y.v)};
-  }
-};
-
 // The example's slider-crank (r = 15, l, outer dead centre at crank angle 0, 1000 rpm ccw):
-// the needle bar's acceleration and jerk at crank angle phi (rad).
+// the needle bar's motion and jerk at crank angle phi (rad).
 template <class T>
-struct NeedleBar {
-  T y, vy, ay, jy;
-};
-template <class T>
-NeedleBar<T> needleBar(T l, T phi) {
-  linkref::SliderCrankParams<Dual<T>> p;
-  const linkref::SliderCrankParams<T> q = linkref::slider_crank_22a<T>(l);
-  p.r = q.r, p.l = q.l, p.e = q.e, p.a0 = q.a0, p.s = q.s, p.omega = q.omega;
-  const auto st = linkref::slider_crank(p, Dual<T>(phi, T(1)));
-  return {st.y.v, st.vy.v, st.ay.v, q.omega * st.ay.d};
+linkref::SliderJerk<T> needleBar(T l, T phi) {
+  return linkref::slider_crank_jerk(linkref::slider_crank_22a<T>(l), phi);
+}
+
+// The reference's jerk (a dual number through the closed form) against the third derivative
+// by hand: y = r sin t + D, D = sqrt(l^2 - r^2 cos^2 t), t = pi/2 + phi, u = sin t cos t:
+// y''' = -r cos t - 2 r^2 sin 2t / D - 3 r^4 u cos 2t / D^3 + 3 r^6 u^3 / D^5.
+TEST(MotionSamples, ReferenceJerkIsTheThirdDerivative) {
+  for (Q l : {Q(30), Q(50)})
+    for (Q phi : {Q(0.1), Q(1), Q(2.5), Q(4)}) {
+      const Q r = 15, t = linkref::pi<Q>() / 2 + phi, c = cosq(t), sn = sinq(t), u = sn * c;
+      const Q D = sqrtq(l * l - r * r * c * c), w = linkref::rpm_to_rad_s(Q(1000));
+      const Q y3 = -r * c - 2 * r * r * 2 * u / D -
+                   3 * powq(r, 4) * u * (c * c - sn * sn) / powq(D, 3) +
+                   3 * powq(r, 6) * u * u * u / powq(D, 5);
+      EXPECT_LT(double(fabsq(needleBar<Q>(l, phi).jy - w * w * w * y3)),
+                1e-20 * double(w * w * w * r));
+    }
 }
 
 TEST(MotionSamples, SamplesAreTheSolversOwnAndTheGivenSolverDoesNotMove) {

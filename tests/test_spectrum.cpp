@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "linkage/io/model_file.h"
+#include "examples.h"
 #include "linkage/motion_samples.h"
 #include "linkage/spectrum.h"
 #include "reference/scalar.h"
@@ -119,12 +119,7 @@ Q sqrtSeriesCoefficient(Q lambda, int m) {
   return sum;
 }
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
-}
+using test::example;
 
 // Example files: r = 15, l = r / lambda, drawn at the outer dead centre, ccw, 1000 rpm; the
 // needle bar's y at crank angle phi is r cos phi + l sqrt(1 - lambda^2 sin^2 phi) (seed 002's

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace linkage::brent {
 
@@ -23,13 +24,9 @@ double zero(F f, double a, double b, double fa, double fb, double tol) {
       fc = fa;
       d = e = b - a;
     }
-    if (std::abs(fc) < std::abs(fb)) {
-      a = b;
-      b = c;
-      c = a;
-      fa = fb;
-      fb = fc;
-      fc = fa;
+    if (std::abs(fc) < std::abs(fb)) {  // b the best so far, a the previous b
+      std::tie(a, b, c) = std::make_tuple(b, c, b);
+      std::tie(fa, fb, fc) = std::make_tuple(fb, fc, fb);
     }
     const double tol1 = 2 * eps * std::abs(b) + 0.5 * tol;
     const double xm = 0.5 * (c - b);
@@ -103,12 +100,7 @@ double minimum(F f, double a, double b, double tol, double* fmin) {
     const double fu = f(u);
     if (fu <= fx) {
       (u >= x ? a : b) = x;
-      v = w;
-      fv = fw;
-      w = x;
-      fw = fx;
-      x = u;
-      fx = fu;
+      std::tie(v, fv, w, fw, x, fx) = std::make_tuple(w, fw, x, fx, u, fu);
     } else {
       (u < x ? a : b) = u;
       if (fu <= fw || w == x) {

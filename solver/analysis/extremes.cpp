@@ -17,6 +17,7 @@ class Probe {
     k_.setAccelerations(true);
   }
   bool ok() const { return ok_; }
+  double crankDeg() const { return k_.crankDeg(); }
   // A failed move leaves the solver where it got to; the next extreme may still be reachable.
   void reset() { ok_ = true; }
   double value(double deg) { return moveTo(deg) ? valueAt(k_, q_, o_) : NAN; }
@@ -88,8 +89,14 @@ Extremes extremesOf(const MotionSamples& s, const Quantity& q, Order order) {
   auto place = [&](long long i, double sign) {
     // A sample at an end of a curve that does not go round has one neighbour: it stays.
     const bool interior = s.periodic || (i > 0 && i + 1 < n);
-    Extreme e = interior ? refine(probe, order, sign, c.crankDeg[i], c.values[i], h)
-                         : Extreme{c.crankDeg[i], c.values[i], Extreme::Method::Sample};
+    // A periodic curve has the same extreme a whole turn on: refine it at the turn nearest to
+    // where the solver copy is (at most half a turn to track, not up to R turns back). Not a
+    // body's angle, which gains its whole turns every revolution.
+    double at = c.crankDeg[i];
+    if (s.periodic && !(q.isBody() && order == Order::Position))
+      at += 360.0 * std::round((probe.crankDeg() - at) / 360.0);
+    Extreme e = interior ? refine(probe, order, sign, at, c.values[i], h)
+                         : Extreme{at, c.values[i], Extreme::Method::Sample};
     if (s.periodic) {
       e.crankDeg -= 360.0 * std::floor(e.crankDeg / 360.0);
       if (e.crankDeg > 360.0 - 1e-9) e.crankDeg = 0;  // a root a hair before 0 is at 0

@@ -225,12 +225,18 @@ FrameRenderer bar(bool antialiased) {
   };
 }
 
+// An animation of `frames` frames of the given size written in `dir`.
+AnimationSpec animation(const QTemporaryDir& dir, const char* name, QSize size, int frames) {
+  AnimationSpec s;
+  s.path = dir.filePath(name);
+  s.size = size;
+  s.frames = frames;
+  return s;
+}
+
 TEST(AnimationExport, GifDecodesToTheAskedFramesAndSizeExactlyWhenFewColours) {
   QTemporaryDir dir;
-  AnimationSpec s;
-  s.path = dir.filePath("run.gif");
-  s.size = QSize(160, 120);
-  s.frames = 12;
+  AnimationSpec s = animation(dir, "run.gif", QSize(160, 120), 12);
   s.fps = 20;
   QString err;
   const FrameRenderer render = bar(false);
@@ -263,10 +269,7 @@ TEST(AnimationExport, GifDecodesToTheAskedFramesAndSizeExactlyWhenFewColours) {
 
 TEST(AnimationExport, GifOfAnAntialiasedSceneKeepsItsColoursClose) {
   QTemporaryDir dir;
-  AnimationSpec s;
-  s.path = dir.filePath("aa.gif");
-  s.size = QSize(200, 150);
-  s.frames = 8;
+  const AnimationSpec s = animation(dir, "aa.gif", QSize(200, 150), 8);
   QString err;
   const FrameRenderer render = bar(true);
   std::set<QRgb> colours;  // more than a GIF holds: the palette must choose
@@ -299,11 +302,8 @@ TEST(AnimationExport, GifOfAnAntialiasedSceneKeepsItsColoursClose) {
 
 TEST(AnimationExport, PngSequenceIsNumberedFrames) {
   QTemporaryDir dir;
-  AnimationSpec s;
+  AnimationSpec s = animation(dir, "run.png", QSize(64, 48), 5);
   s.format = AnimationSpec::Format::PngSequence;
-  s.path = dir.filePath("run.png");
-  s.size = QSize(64, 48);
-  s.frames = 5;
   QString err;
   ASSERT_TRUE(exportAnimation(s, bar(true), &err)) << err.toStdString();
   const QStringList names = pngSequenceNames(s.path, 5);

@@ -116,9 +116,18 @@ std::uint8_t Palette::index(QRgb c) {
 void Palette::map(const QImage& image, std::vector<std::uint8_t>& out) {
   out.resize(static_cast<size_t>(image.width()) * image.height());
   size_t k = 0;
+  // Frames are mostly runs of one colour (background, link bodies): the last answer first.
+  QRgb last = 0xff000000u;
+  std::uint8_t lastIndex = index(last);
   for (int y = 0; y < image.height(); ++y) {
     const QRgb* row = reinterpret_cast<const QRgb*>(image.constScanLine(y));
-    for (int x = 0; x < image.width(); ++x) out[k++] = index(row[x]);
+    for (int x = 0; x < image.width(); ++x) {
+      if ((row[x] | 0xff000000u) != last) {
+        last = row[x] | 0xff000000u;
+        lastIndex = index(last);
+      }
+      out[k++] = lastIndex;
+    }
   }
 }
 
