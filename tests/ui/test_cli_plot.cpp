@@ -133,10 +133,29 @@ TEST(CliPlot, CrankThatStopsDrawsThePartThatExistsAndExitsThree) {
   EXPECT_EQ(QImage(png).size(), QSize(900, 900));
 }
 
-TEST(CliPlot, OtherCommandsMakeNoQApplication) {
+TEST(CliPlot, OtherCommandsMakeNoQApplicationAndLinkageCliLoadsNoQt) {
   // A platform plugin that does not exist aborts any QApplication: these must not make one.
   EXPECT_EQ(cli({"info", "wanzer-inversion-2"}, "no-such-platform").exit, 0);
   EXPECT_EQ(cli({"analyze", "wanzer-inversion-2", "--angle", "10"}, "no-such-platform").exit, 0);
+  // The figure is drawn by linkage-plot; linkage-cli itself links no Qt library.
+  QProcess ldd;
+  ldd.start("ldd", {LINKAGE_CLI});
+  if (!ldd.waitForFinished(30000) || ldd.exitCode() != 0) GTEST_SKIP() << "no ldd";
+  const QString libs = QString::fromUtf8(ldd.readAllStandardOutput());
+  EXPECT_TRUE(libs.contains("libc.so")) << libs.toStdString();
+  EXPECT_FALSE(libs.contains("Qt")) << libs.toStdString();
+}
+
+TEST(CliPlot, WithoutLinkageplotBesideItPlotSaysSo) {
+  QTemporaryDir dir;
+  const QString lone = dir.filePath("linkage-cli");
+  ASSERT_TRUE(QFile::copy(LINKAGE_CLI, lone));
+  QProcess p;
+  p.start(lone, {"plot", "wanzer-inversion-1", "--out", dir.filePath("x.png")});
+  ASSERT_TRUE(p.waitForFinished(30000));
+  EXPECT_EQ(p.exitCode(), 1);
+  EXPECT_TRUE(QString::fromUtf8(p.readAllStandardError()).contains("linkage-plot is not there"));
+  EXPECT_FALSE(QFile::exists(dir.filePath("x.png")));
 }
 
 }  // namespace
