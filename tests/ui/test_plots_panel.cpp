@@ -2,6 +2,8 @@
 // the mouse, work only when shown, units remembered, comparisons, harmonics, extremes.
 #include <gtest/gtest.h>
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
@@ -231,6 +233,46 @@ TEST_F(PlotsPanelTest, HarmonicsViewShowsTheAmplitudes) {
   EXPECT_TRUE(panel.extremesText().contains("Position y: k=1 15 mm 0.00°"))
       << panel.extremesText().toStdString();
   shot(panel, "plots-panel-harmonics");
+}
+
+TEST_F(PlotsPanelTest, ControlsChangeWhatIsPlotted) {
+  panel.setDocument(&doc);
+  showAndSettle();
+  QComboBox* acceleration = nullptr;
+  for (QComboBox* c : panel.findChildren<QComboBox*>())
+    if (c->findText("g") >= 0) acceleration = c;
+  ASSERT_NE(acceleration, nullptr);
+  acceleration->setCurrentIndex(acceleration->findText("g"));
+  EXPECT_EQ(panel.units().acceleration, AccelerationUnit::G);
+  EXPECT_EQ(panel.figure().axisRect(2, 0)->axis(QCPAxis::atLeft)->label(), "Acceleration ay [g]");
+  QCheckBox* jerk = nullptr;
+  for (QCheckBox* c : panel.findChildren<QCheckBox*>())
+    if (c->text() == "Jerk") jerk = c;
+  ASSERT_NE(jerk, nullptr);
+  QTest::mouseClick(jerk, Qt::LeftButton);
+  QApplication::processEvents();
+  EXPECT_TRUE(panel.request().orders[3]);
+  EXPECT_EQ(panel.figure().rows(), 4);
+  EXPECT_EQ(panel.figure().axisRect(3, 0)->axis(QCPAxis::atLeft)->label(), "Jerk jy [g/s]");
+  EXPECT_TRUE(panel.curves(0)->curve(Order::Jerk).status.ok());
+}
+
+TEST_F(PlotsPanelTest, APointTheEditRemovesGivesWayToTheFirstOutput) {
+  panel.setDocument(&doc);
+  CurveRequest r = panel.request();
+  r.target = "triangle.E";
+  panel.setRequest(r);
+  showAndSettle();
+  ASSERT_EQ(panel.curves(0)->quantity().point, *doc.design().findPoint("triangle.E"));
+  Mechanism edited = doc.design();
+  edited.remove(*edited.findPoint("triangle.E"));  // and the joints at E
+  edited.addPin(edited.addPoint(edited.bodyNamed("triangle")->id, "E2", Vec2(0, 0)),
+                *edited.findPoint("slider4.E"));
+  doc.setDesign(edited);
+  QApplication::processEvents();
+  EXPECT_EQ(panel.request().target, "needlebar.G");
+  ASSERT_NE(panel.curves(0), nullptr);
+  EXPECT_EQ(panel.curves(0)->quantity().point, *doc.design().findPoint("needlebar.G"));
 }
 
 }  // namespace

@@ -24,15 +24,10 @@
 #include "plots/curve_set.h"
 #include "plots/units.h"
 
-class QCheckBox;
-class QComboBox;
 class QCustomPlot;
-class QDoubleSpinBox;
 class QLabel;
 class QMouseEvent;
-class QSpinBox;
 class QStackedWidget;
-class QToolButton;
 class QTreeWidget;
 
 namespace linkage::ui {
@@ -40,6 +35,7 @@ namespace linkage::ui {
 class Document;
 class HarmonicsFigure;
 class MotionFigure;
+class PlotControls;
 
 class PlotsPanel : public QWidget {
   Q_OBJECT
@@ -90,9 +86,8 @@ class PlotsPanel : public QWidget {
   void showEvent(QShowEvent* e) override;
 
  private:
-  void buildControls();
-  void fillTargets();
-  void readControls();
+  void buildWidgets();
+  void offerTargets();
   void writeControls();
   void markStale(Document* d);
   void schedule();
@@ -102,6 +97,7 @@ class PlotsPanel : public QWidget {
   void updateExtremes();
   void mouseOnPlot(QMouseEvent* e, bool press);
   std::vector<Document*> shownDocuments() const;
+  std::vector<const CurveSet*> shownSets() const;
   void ensureComputed();
 
   QPointer<Document> doc_;
@@ -113,17 +109,13 @@ class PlotsPanel : public QWidget {
 
   // One curve set per shown document (same order as shownDocuments()), null when stale.
   std::vector<std::pair<QPointer<Document>, std::unique_ptr<CurveSet>>> sets_;
-  bool figureStale_ = true, pending_ = false, dragging_ = false, updatingControls_ = false;
+  bool figureStale_ = true, pending_ = false, dragging_ = false;
   int dragRect_ = -1;  // the plot a drag started on
   // Receivers of the documents' signals: replaced (and so disconnected) with the documents.
   QObject *docContext_ = nullptr, *othersContext_ = nullptr;
   int computations_ = 0;
 
-  QComboBox *target_, *component_, *velocityUnit_, *accelerationUnit_, *compareBox_;
-  QDoubleSpinBox* direction_;
-  QCheckBox* orders_[kOrders];
-  QSpinBox *revs_, *steps_;
-  QToolButton* harmonicsButton_;
+  PlotControls* controls_;
   QStackedWidget* stack_;
   QCustomPlot *plot_, *harmonicsPlot_;
   std::unique_ptr<MotionFigure> figure_;
