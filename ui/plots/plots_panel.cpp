@@ -327,6 +327,10 @@ void PlotsPanel::mouseOnPlot(QMouseEvent* e, bool press) {
 
 bool PlotsPanel::exportFigure(const QString& path, QSize size, QString* error) {
   ensureComputed();
+  if (shownSets().empty()) {
+    if (error) *error = "No curves to export: no document is plotted.";
+    return false;
+  }
   if (harmonics_) return exportPlot(harmonicsPlot_, path, size, error);
   figure_->setCursorVisible(false);
   const bool ok = exportPlot(plot_, path, size, error);
