@@ -70,8 +70,7 @@ bool unitDirection(const Quantity& q, Vec2& u) {
 // Why jerk (or harmonics) cannot be had from these samples, or "" when they can.
 std::string periodicProblem(const MotionSamples& s, bool accelerations) {
   if (accelerations && !s.accelerations) return "accelerations were not sampled";
-  if (s.size() <= s.steps)
-    return "the crank did not complete a revolution (" + s.status.message + ")";
+  if (s.size() <= s.steps) return "the crank did not complete a revolution";
   if (!s.periodic) return "the motion does not repeat after one revolution of the crank";
   return "";
 }

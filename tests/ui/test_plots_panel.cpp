@@ -13,6 +13,7 @@
 #include "document/document.h"
 #include "linkage/extremes.h"
 #include "linkage/io/model_lookup.h"
+#include "mechanisms.h"
 #include "plots/motion_figure.h"
 #include "plots/plots_panel.h"
 #include "plots/qcp.h"
@@ -273,6 +274,40 @@ TEST_F(PlotsPanelTest, APointTheEditRemovesGivesWayToTheFirstOutput) {
   EXPECT_EQ(panel.request().target, "needlebar.G");
   ASSERT_NE(panel.curves(0), nullptr);
   EXPECT_EQ(panel.curves(0)->quantity().point, *doc.design().findPoint("needlebar.G"));
+}
+
+TEST_F(PlotsPanelTest, EmptyDocumentSaysWhy) {
+  Document empty;  // a ground and nothing else: no driver, nothing to plot
+  panel.setDocument(&empty);
+  showAndSettle();
+  ASSERT_NE(panel.curves(0), nullptr);
+  EXPECT_TRUE(panel.curves(0)->empty());
+  EXPECT_FALSE(panel.curves(0)->status().ok());
+  EXPECT_TRUE(panel.cursorText().isEmpty() || panel.cursorText().contains(QString::fromUtf8("—")));
+  panel.setDocument(nullptr);
+  QApplication::processEvents();
+  QString err;
+  EXPECT_FALSE(panel.exportFigure("/tmp/never.png", QSize(400, 300), &err));
+  EXPECT_FALSE(err.isEmpty());
+}
+
+TEST_F(PlotsPanelTest, CrankThatStopsPlotsThePartThatExistsAndClicksStayInIt) {
+  auto f = test::fourBar(100, 60, 40, 70, 30);  // locks 52.8 degrees on
+  doc.setContents(f.m, QString());
+  panel.setDocument(&doc);
+  QSignalSpy spy(&panel, &PlotsPanel::crankAngleRequested);
+  showAndSettle();
+  const CurveSet* set = panel.curves(0);
+  ASSERT_NE(set, nullptr);
+  EXPECT_EQ(set->status().code, StatusCode::Unreachable);
+  EXPECT_DOUBLE_EQ(set->lastDeg(), 52);
+  EXPECT_FALSE(set->periodic());
+  const QPoint at(panel.figure().pixelAt(1, 0, 200.0, 0).x(),
+                  panel.figure().axisRect(1, 0)->center().y());
+  QTest::mouseClick(panel.plotWidget(), Qt::LeftButton, {}, at);
+  ASSERT_EQ(spy.count(), 1);
+  EXPECT_DOUBLE_EQ(spy.at(0).at(0).toDouble(), 52);  // the end of what exists
+  shot(panel, "plots-panel-partial");
 }
 
 }  // namespace

@@ -16,10 +16,27 @@ double tickStep(double range) {
   return 360.0 * std::ceil(range / 8 / 360);
 }
 
-QString statusNote(const CurveSet& set) {
-  const QString why = QString::fromStdString(set.status().message);
-  if (set.empty()) return why;
-  return QString::fromUtf8("Ends at %1°: %2").arg(set.lastDeg(), 0, 'f', 1).arg(why);
+// Words broken into lines of at most `width` characters.
+QString wrapped(const QString& text, int width) {
+  QStringList lines;
+  QString line;
+  for (const QString& word : text.split(' ', Qt::SkipEmptyParts)) {
+    if (!line.isEmpty() && line.size() + 1 + word.size() > width) {
+      lines << line;
+      line.clear();
+    }
+    line += (line.isEmpty() ? "" : " ") + word;
+  }
+  if (!line.isEmpty()) lines << line;
+  return lines.join('\n');
+}
+
+// Why a set's curves stop early or are missing, under its column's title.
+QString statusNote(const CurveSet& set, bool named, int width) {
+  QString why = QString::fromStdString(set.status().message);
+  if (!set.empty())
+    why = QString::fromUtf8("Ends at %1°: %2").arg(set.lastDeg(), 0, 'f', 1).arg(why);
+  return wrapped(named ? set.title() + ": " + why : why, width);
 }
 
 // A note in the top left corner of a plot, one line below another.
@@ -91,7 +108,10 @@ void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options
   titleFont.setBold(true);
   titleFont.setPointSizeF(base.pointSizeF() + 1);
 
-  // Row 0: titles; rows 1 ... n: plots; last row: the crank angle's label.
+  // Row 0: titles; row 1: why curves stop early, if any do; then the plots; last row: the
+  // crank angle's label.
+  int firstRow = 1;
+  std::vector<QCPTextElement*> footer;
   auto setsOf = [&](int column) {
     std::vector<int> v;
     for (int i = 0; i < static_cast<int>(sets.size()); ++i)
@@ -121,8 +141,21 @@ void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options
     } else {
       layout->addElement(0, c, head);
     }
-    layout->addElement(rows() + 1, c, foot);
+    // Lines as long as the column is wide (at the size the figure is laid out for).
+    const int chars = std::max(
+        40, plot_->width() / columns_ / std::max(1, QFontMetrics(base).averageCharWidth()) - 4);
+    QStringList notes;
+    for (int i : setsOf(c))
+      if (!sets[i]->status().ok()) notes << statusNote(*sets[i], !side && sets.size() > 1, chars);
+    if (!notes.isEmpty()) {
+      auto* note = new QCPTextElement(plot_, notes.join('\n'), base);
+      note->setTextColor(QColor(150, 20, 20));
+      layout->addElement(1, c, note);
+      firstRow = 2;
+    }
+    footer.push_back(foot);
   }
+  for (int c = 0; c < columns_; ++c) layout->addElement(firstRow + rows(), c, footer[c]);
   auto* rowsGroup = new QCPMarginGroup(plot_);
   groups_.push_back(rowsGroup);
   for (int c = 0; c < columns_; ++c) groups_.push_back(new QCPMarginGroup(plot_));
@@ -136,7 +169,7 @@ void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options
     double lo = INFINITY, hi = -INFINITY;
     for (int c = 0; c < columns_; ++c) {
       auto* rect = new QCPAxisRect(plot_);
-      layout->addElement(r + 1, c, rect);
+      layout->addElement(firstRow + r, c, rect);
       rects_.push_back(rect);
       rect->setMarginGroup(QCP::msTop | QCP::msBottom, rowsGroup);
       rect->setMarginGroup(QCP::msLeft | QCP::msRight, groups_[1 + c]);
@@ -155,7 +188,6 @@ void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options
       int notes = 0;
       for (int i : setsOf(c)) {
         const CurveSet& set = *sets[i];
-        if (r == 0 && !set.status().ok()) addNote(plot_, rect, statusNote(set), notes++);
         const Curve& curve = set.curve(o);
         if (!set.empty() && !curve.status.ok()) {
           addNote(plot_, rect, QString::fromStdString(curve.status.message), notes++);
