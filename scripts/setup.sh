@@ -22,8 +22,10 @@ BUILD_DIR=${1:-build}
 packages=(cmake ninja-build g++ libeigen3-dev nlohmann-json3-dev qt6-base-dev qt6-svg-dev
   libqcustomplot-dev libgif-dev fonts-dejavu-core)
 # The tests: GoogleTest and GoogleMock (separate packages on Debian 12), Google Benchmark, a real X
-# server and a way to drive it (Xvfb, xdotool, ImageMagick's import), a comma-decimal locale.
-test_packages=(libgtest-dev libgmock-dev libbenchmark-dev locales xvfb xauth xdotool imagemagick)
+# server and a way to drive it (Xvfb, xdotool, ImageMagick's import), a comma-decimal locale,
+# pdftotext (poppler-utils) to read the labels of exported PDF figures.
+test_packages=(libgtest-dev libgmock-dev libbenchmark-dev locales xvfb xauth xdotool imagemagick
+  poppler-utils)
 if [ $tests -eq 1 ]; then packages+=("${test_packages[@]}"); fi
 
 missing=()

@@ -1,0 +1,268 @@
+#include "linkage/motion_samples.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace linkage {
+
+const PointSamples* MotionSamples::point(PointId id) const {
+  for (const PointSamples& p : points)
+    if (p.id == id) return &p;
+  return nullptr;
+}
+
+const BodySamples* MotionSamples::body(BodyId id) const {
+  for (const BodySamples& b : bodies)
+    if (b.id == id) return &b;
+  return nullptr;
+}
+
+namespace {
+
+Status bad(std::string msg) {
+  return Status::failure(StatusCode::BadModel, std::move(msg));
+}
+
+// Every body's pose. At a regular position of a mechanism the driver moves, velocities and
+// accelerations follow from the pose (the linear solves have one solution), so equal poses
+// mean equal motion: the periodicity test needs nothing more.
+std::vector<Transform> poses(const Kinematics& k) {
+  std::vector<Transform> out;
+  for (const Body& b : k.mechanism().bodies) out.push_back(k.bodyTransform(b.id));
+  return out;
+}
+
+bool samePoses(const std::vector<Transform>& a, const std::vector<Transform>& b, double L) {
+  if (a.size() != b.size()) return false;
+  const double tol = 1e-9;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (std::abs(a[i].R.c - b[i].R.c) > tol || std::abs(a[i].R.s - b[i].R.s) > tol) return false;
+    if ((a[i].t - b[i].t).norm() > tol * L) return false;
+  }
+  return true;
+}
+
+double component(const Vec2& v, const Quantity& q, const Vec2& u) {
+  switch (q.component) {
+    case Quantity::Component::X:
+      return v.x();
+    case Quantity::Component::Y:
+      return v.y();
+    case Quantity::Component::Magnitude:
+      return v.norm();
+    case Quantity::Component::Along:
+      return v.dot(u);
+  }
+  return NAN;
+}
+
+// The unit direction of an Along quantity (or +x for the others); false when it has none.
+bool unitDirection(const Quantity& q, Vec2& u) {
+  u = Vec2(1, 0);
+  if (q.component != Quantity::Component::Along) return true;
+  const double n = q.direction.norm();
+  if (!(n > 0) || !std::isfinite(n)) return false;
+  u = q.direction / n;
+  return true;
+}
+
+// Why jerk (or harmonics) cannot be had from these samples, or "" when they can.
+std::string periodicProblem(const MotionSamples& s, bool accelerations) {
+  if (accelerations && !s.accelerations) return "accelerations were not sampled";
+  if (s.size() <= s.steps) return "the crank did not complete a revolution";
+  if (!s.periodic) return "the motion does not repeat after one revolution of the crank";
+  return "";
+}
+
+// One revolution of a periodic curve repeated over all the samples (the sample at 360 * r
+// is the one at 0).
+std::vector<double> tiled(const std::vector<double>& period, long long rows) {
+  std::vector<double> v(rows);
+  const long long n = static_cast<long long>(period.size());
+  for (long long i = 0; i < rows; ++i) v[i] = period[i % n];
+  return v;
+}
+
+}  // namespace
+
+MotionSamples sampleMotion(const Kinematics& k, const SampleSpec& spec) {
+  MotionSamples s;
+  s.kinematics = k;
+  s.steps = spec.steps;
+  s.revs = spec.revs;
+  if (!k.valid()) {
+    s.status = bad("no mechanism is solved");
+    return s;
+  }
+  const double total = static_cast<double>(spec.steps) * spec.revs;
+  if (!(spec.steps > 0 && spec.revs > 0 && std::isfinite(total)) ||
+      std::abs(total - std::round(total)) > 1e-9 * std::max(1.0, total)) {
+    s.status = bad("steps per revolution times revolutions must be a positive whole number");
+    return s;
+  }
+  for (PointId p : spec.points)
+    if (!k.contains(p)) {
+      s.status = bad("a point the mechanism does not hold");
+      return s;
+    }
+  for (BodyId b : spec.bodies)
+    if (!k.contains(b)) {
+      s.status = bad("a body the mechanism does not hold");
+      return s;
+    }
+  if (Status d = k.checkDetermined(spec.points); !d.ok()) {
+    s.status = d;
+    return s;
+  }
+
+  Kinematics& kk = s.kinematics;
+  if (spec.rpm > 0) kk.setRpm(spec.rpm);
+  kk.setAccelerations(spec.accelerations);
+  s.rpm = kk.rpm();
+  s.omega = kk.omega();
+  s.accelerations = spec.accelerations;
+  const long long rows = static_cast<long long>(std::round(total)) + 1;
+  for (PointId p : spec.points) s.points.push_back({p, {}, {}, {}});
+  for (BodyId b : spec.bodies) s.bodies.push_back({b, {}, {}, {}});
+  auto reserve = [rows](auto& v) { v.reserve(rows); };
+  reserve(s.crankDeg);
+  for (PointSamples& p : s.points) {
+    reserve(p.p);
+    reserve(p.v);
+    if (spec.accelerations) reserve(p.a);
+  }
+
+  std::vector<Transform> start;
+  for (long long i = 0; i < rows; ++i) {
+    // Angles from the index, as the motion table's, so the last is exactly 360 * revs.
+    const double deg = static_cast<double>(i) * 360.0 / static_cast<double>(spec.steps);
+    // A singular position comes back as Singular: velocities are not determined there.
+    const Status st = kk.moveTo(deg);
+    if (!st.ok()) {
+      s.status = st;
+      break;
+    }
+    s.crankDeg.push_back(deg);
+    for (PointSamples& p : s.points) {
+      const Kinematics::PointMotion m = kk.motion(p.id);
+      p.p.push_back(m.position);
+      p.v.push_back(m.velocity);
+      if (spec.accelerations) p.a.push_back(m.acceleration);
+    }
+    for (BodySamples& b : s.bodies) {
+      b.angle.push_back(kk.bodyAngle(b.id));
+      b.omega.push_back(kk.bodyOmega(b.id));
+      if (spec.accelerations) b.alpha.push_back(kk.bodyAlpha(b.id));
+    }
+    if (i == 0) start = poses(kk);
+    if (i == spec.steps) s.periodic = samePoses(start, poses(kk), kk.size());
+  }
+  return s;
+}
+
+Curve curveOf(const MotionSamples& s, const Quantity& q, Order order) {
+  Curve c;
+  c.crankDeg = s.crankDeg;
+  Vec2 u;
+  if (!unitDirection(q, u)) {
+    c.status = bad("the direction of the component has no length");
+    return c;
+  }
+  const int o = static_cast<int>(order);
+  if (o >= 2 && !s.accelerations) {
+    c.status = bad("accelerations were not sampled");
+    return c;
+  }
+  std::string problem = order == Order::Jerk ? periodicProblem(s, true) : "";
+  if (!problem.empty()) {
+    c.status = bad("no jerk: " + problem);
+    return c;
+  }
+  const long long n = s.steps;
+  if (q.isBody()) {
+    const BodySamples* b = s.body(q.body);
+    if (!b) {
+      c.status = bad("the body was not sampled");
+      return c;
+    }
+    const std::vector<double>* v[] = {&b->angle, &b->omega, &b->alpha};
+    if (order != Order::Jerk) {
+      c.values = *v[o];
+      return c;
+    }
+    Derivative d = periodicDerivative({b->alpha.begin(), b->alpha.begin() + n});
+    for (double& x : d.values) x *= s.omega;
+    c.values = tiled(d.values, s.size());
+    c.errorEstimate = d.errorEstimate * s.omega;
+    return c;
+  }
+  const PointSamples* p = s.point(q.point);
+  if (!p) {
+    c.status = bad("the point was not sampled");
+    return c;
+  }
+  std::vector<Vec2> vectors;
+  if (order != Order::Jerk) {
+    const std::vector<Vec2>* v[] = {&p->p, &p->v, &p->a};
+    vectors = *v[o];
+  } else {
+    // The jerk vector: the spectral derivative of each component of the acceleration.
+    std::vector<double> ax(n), ay(n);
+    for (long long i = 0; i < n; ++i) {
+      ax[i] = p->a[i].x();
+      ay[i] = p->a[i].y();
+    }
+    const Derivative jx = periodicDerivative(ax), jy = periodicDerivative(ay);
+    vectors.resize(s.size());
+    for (long long i = 0; i < s.size(); ++i)
+      vectors[i] = s.omega * Vec2(jx.values[i % n], jy.values[i % n]);
+    // Every component is a combination of the two with weights of at most 1 in size.
+    c.errorEstimate = s.omega * (jx.errorEstimate + jy.errorEstimate);
+  }
+  c.values.reserve(vectors.size());
+  for (const Vec2& v : vectors) c.values.push_back(component(v, q, u));
+  return c;
+}
+
+double valueAt(const Kinematics& k, const Quantity& q, Order order) {
+  Vec2 u;
+  if (!unitDirection(q, u) || order == Order::Jerk) return NAN;
+  if (q.isBody()) {
+    switch (order) {
+      case Order::Position:
+        return k.bodyAngle(q.body);
+      case Order::Velocity:
+        return k.bodyOmega(q.body);
+      default:
+        return k.bodyAlpha(q.body);
+    }
+  }
+  const Kinematics::PointMotion m = k.motion(q.point);
+  const Vec2* v[] = {&m.position, &m.velocity, &m.acceleration};
+  return component(*v[static_cast<int>(order)], q, u);
+}
+
+Spectrum harmonicsOf(const MotionSamples& s, const Quantity& q, Order order, int maxK,
+                     Status* why) {
+  auto fail = [&](std::string msg) {
+    if (why) *why = bad("no harmonics: " + msg);
+    return Spectrum{};
+  };
+  const std::string problem = periodicProblem(s, order >= Order::Acceleration);
+  if (!problem.empty()) return fail(problem);
+  Curve c = curveOf(s, q, order);
+  if (!c.status.ok()) return fail(c.status.message);
+  const long long n = s.steps;
+  std::vector<double> period(c.values.begin(), c.values.begin() + n);
+  if (q.isBody() && order == Order::Position) {
+    // Whole turns per revolution, spread evenly: the steady part of the angle.
+    const double drift = c.values[n] - c.values[0];
+    for (long long i = 0; i < n; ++i)
+      period[i] -= drift * static_cast<double>(i) / static_cast<double>(n);
+  }
+  if (why) *why = Status::success();
+  return harmonics(period, maxK);
+}
+
+}  // namespace linkage

@@ -1,0 +1,86 @@
+#include "plots/curve_set.h"
+
+#include <cmath>
+
+namespace linkage::ui {
+
+namespace {
+
+QString crankName(const Mechanism& m) {
+  if (m.driver)
+    if (const Joint* j = m.joint(m.driver->joint))
+      if (const Point* p = m.point(j->b))
+        if (const Body* b = m.body(p->body)) return QString::fromStdString(b->name);
+  return "crank";
+}
+
+}  // namespace
+
+CurveSet::CurveSet(const Kinematics& k, const CurveRequest& r, const QString& title)
+    : title_(title), request_(r) {
+  const std::string target = r.target.toStdString();
+  crankLabel_ = QString("%1 angle [deg]").arg(crankName(k.mechanism()));
+  if (!k.valid()) {
+    status_ = Status::failure(StatusCode::BadModel, "the mechanism is not solved");
+    return;
+  }
+  SampleSpec spec;
+  if (r.body) {
+    const Body* b = k.mechanism().bodyNamed(target);
+    if (!b) {
+      status_ = Status::failure(StatusCode::BadModel, "no body \"" + target + "\"");
+      return;
+    }
+    quantity_ = Quantity::ofBody(b->id);
+    spec.bodies = {b->id};
+  } else {
+    const std::optional<PointId> p = k.mechanism().findPoint(target);
+    if (!p) {
+      status_ = Status::failure(StatusCode::BadModel, "no point \"" + target + "\"");
+      return;
+    }
+    const double a = r.directionDeg * M_PI / 180;
+    quantity_ = Quantity::ofPoint(*p, r.component, Vec2(std::cos(a), std::sin(a)));
+    spec.points = {*p};
+  }
+  spec.steps = r.steps;
+  spec.revs = r.revs;
+  spec.accelerations = r.orders[2] || r.orders[3];
+  samples_ = std::make_shared<MotionSamples>(sampleMotion(k, spec));
+  status_ = samples_->status;
+  for (int o = 0; o < kOrders; ++o) {
+    if (!r.orders[o]) continue;
+    curves_[o] = curveOf(*samples_, quantity_, static_cast<Order>(o));
+    if (curves_[o].status.ok())
+      extremes_[o] = extremesOf(*samples_, quantity_, static_cast<Order>(o));
+  }
+  const Curve& j = curves_[3];
+  if (r.orders[3] && j.status.ok())
+    jerk_ = PeriodicInterpolant({j.values.begin(), j.values.begin() + samples_->steps});
+  probe_ = std::make_unique<Kinematics>(samples_->kinematics);
+  probe_->setAccelerations(true);
+}
+
+double CurveSet::lastDeg() const {
+  return empty() ? NAN : samples_->crankDeg.back();
+}
+
+std::array<double, kOrders> CurveSet::valuesAt(double deg) {
+  std::array<double, kOrders> v{NAN, NAN, NAN, NAN};
+  if (empty() || !(deg >= 0 && deg <= lastDeg())) return v;
+  const bool moved = probe_->moveTo(deg).ok() && probe_->derivativesValid();
+  for (int o = 0; o < 3; ++o)
+    if (request_.orders[o] && moved) v[o] = valueAt(*probe_, quantity_, static_cast<Order>(o));
+  if (!jerk_.empty()) v[3] = jerk_(deg * M_PI / 180);
+  return v;
+}
+
+Spectrum CurveSet::harmonics(Order o, int maxK, Status* why) const {
+  if (empty()) {
+    if (why) *why = status_;
+    return {};
+  }
+  return harmonicsOf(*samples_, quantity_, o, maxK, why);
+}
+
+}  // namespace linkage::ui

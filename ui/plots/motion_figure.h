@@ -1,0 +1,80 @@
+// The motion curves as a figure in a QCustomPlot: one row per order shown (position, velocity,
+// acceleration, jerk) sharing the crank-angle axis, one column per mechanism side by side (the
+// homework's 3 x 2 figure) or all of them overlaid in one column; extremes marked; a cursor
+// line on every plot on a layer of its own, so that moving it repaints that layer only.
+// The plots panel and `linkage-cli plot` both draw with it.
+#pragma once
+
+#include <QColor>
+#include <QPointF>
+#include <vector>
+
+#include "plots/curve_set.h"
+#include "plots/units.h"
+
+class QCustomPlot;
+class QCPAxisRect;
+class QCPGraph;
+class QCPLegend;
+class QCPLayer;
+class QCPItemStraightLine;
+class QCPItemTracer;
+class QCPMarginGroup;
+
+namespace linkage::ui {
+
+class MotionFigure {
+ public:
+  enum class Layout { Overlay, SideBySide };
+  struct Options {
+    Layout layout = Layout::Overlay;
+    PlotUnits units;
+    bool extremes = true;  // mark each curve's maximum and minimum
+    bool cursor = true;
+  };
+
+  explicit MotionFigure(QCustomPlot* plot);
+  QCustomPlot* plot() const { return plot_; }
+
+  // Lays the figure out anew for these curve sets (the first is the main document's) and
+  // replots. The sets must outlive the next build (the figure keeps no copy of them).
+  void build(const std::vector<const CurveSet*>& sets, const Options& options);
+
+  // Moves the cursor to a crank angle within the plotted range and repaints the cursor layer
+  // only (the curves' layers keep their buffers).
+  void setCursor(double deg);
+  double cursor() const { return cursorDeg_; }
+  void setCursorVisible(bool on);
+
+  // The crank angle under a pixel of one of the plots (inside its axes), or NaN elsewhere;
+  // `rect` receives the plot's index (row-major) or -1.
+  double crankAt(const QPointF& pixel, int* rect = nullptr) const;
+  // The crank angle at a pixel column of plot `rect`, inside its axes or not (a drag).
+  double crankAtX(int rect, double pixelX) const;
+  // The pixel of a crank angle on a plot (for tests and tools).
+  QPointF pixelAt(int row, int column, double deg, double value) const;
+
+  int rows() const { return static_cast<int>(rowOrders_.size()); }
+  int columns() const { return columns_; }
+  Order rowOrder(int row) const { return rowOrders_[row]; }
+  QCPAxisRect* axisRect(int row, int column) const;
+  double xMax() const { return xMax_; }
+
+  static QColor colour(int set);
+
+ private:
+  void clear();
+
+  QCustomPlot* plot_;
+  QCPLayer* cursorLayer_;
+  std::vector<QCPMarginGroup*> groups_;
+  std::vector<Order> rowOrders_;
+  int columns_ = 0;
+  std::vector<QCPAxisRect*> rects_;  // row-major
+  std::vector<QCPItemStraightLine*> lines_;
+  std::vector<QCPItemTracer*> tracers_;
+  QCPLegend* legend_ = nullptr;
+  double cursorDeg_ = 0, xMax_ = 360;
+};
+
+}  // namespace linkage::ui

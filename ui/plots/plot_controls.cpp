@@ -1,0 +1,175 @@
+#include "plots/plot_controls.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSpinBox>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <algorithm>
+
+namespace linkage::ui {
+
+PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
+  auto* rows = new QVBoxLayout(this);
+  rows->setContentsMargins(0, 0, 0, 0);
+  rows->setSpacing(3);
+
+  auto* row1 = new QHBoxLayout;
+  target_ = new QComboBox;
+  target_->setToolTip("The point (or body) whose motion is plotted");
+  target_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  target_->setMinimumContentsLength(14);
+  component_ = new QComboBox;
+  component_->addItems({"x", "y", "magnitude", "along"});
+  component_->setToolTip(
+      "Component of the point's motion: x, y, the vectors' lengths, or along a direction");
+  direction_ = new QDoubleSpinBox;
+  direction_->setRange(-360, 360);
+  direction_->setDecimals(1);
+  direction_->setSuffix(QString::fromUtf8("°"));
+  direction_->setToolTip("The direction, counter-clockwise from +x");
+  row1->addWidget(new QLabel("Plot"));
+  row1->addWidget(target_, 1);
+  row1->addWidget(component_);
+  row1->addWidget(direction_);
+  rows->addLayout(row1);
+
+  auto* row2 = new QHBoxLayout;
+  const char* names[] = {"Position", "Velocity", "Acceleration", "Jerk"};
+  for (int o = 0; o < kOrders; ++o) {
+    orders_[o] = new QCheckBox(names[o]);
+    row2->addWidget(orders_[o]);
+  }
+  orders_[3]->setToolTip("Spectral derivative of the exact accelerations over one revolution");
+  revs_ = new QSpinBox;
+  revs_->setRange(1, 20);
+  revs_->setSuffix(" rev");
+  steps_ = new QSpinBox;
+  steps_->setRange(12, 36000);
+  steps_->setSingleStep(60);
+  steps_->setSuffix(" steps/rev");
+  row2->addStretch(1);
+  row2->addWidget(revs_);
+  row2->addWidget(steps_);
+  rows->addLayout(row2);
+
+  auto* row3 = new QHBoxLayout;
+  velocityUnit_ = new QComboBox;
+  velocityUnit_->addItems({"mm/s", "m/s"});
+  accelerationUnit_ = new QComboBox;
+  accelerationUnit_->addItems({QString::fromUtf8("mm/s²"), QString::fromUtf8("m/s²"), "g"});
+  accelerationUnit_->setToolTip(QString::fromUtf8("g = 9806.65 mm/s² (standard gravity)"));
+  compare_ = new QComboBox;
+  compare_->addItems({"No comparison", "Overlay", "Side by side"});
+  compare_->setToolTip("Curves of the other open documents");
+  harmonics_ = new QToolButton;
+  harmonics_->setText("Harmonics");
+  harmonics_->setCheckable(true);
+  harmonics_->setToolTip("Amplitude of each multiple of the crank frequency");
+  row3->addWidget(new QLabel("Units"));
+  row3->addWidget(velocityUnit_);
+  row3->addWidget(accelerationUnit_);
+  row3->addStretch(1);
+  row3->addWidget(compare_);
+  row3->addWidget(harmonics_);
+  rows->addLayout(row3);
+
+  auto request = [this] {
+    if (quiet_) return;
+    const CurveRequest r = read();
+    if (r == shown_) return;
+    shown_ = r;
+    Q_EMIT requestChanged(r);
+  };
+  connect(target_, &QComboBox::currentIndexChanged, this, request);
+  connect(component_, &QComboBox::currentIndexChanged, this, request);
+  connect(direction_, &QDoubleSpinBox::editingFinished, this, request);
+  for (QCheckBox* c : orders_) connect(c, &QCheckBox::toggled, this, request);
+  connect(revs_, &QSpinBox::valueChanged, this, request);
+  connect(steps_, &QSpinBox::editingFinished, this, request);
+  auto units = [this] {
+    if (quiet_) return;
+    PlotUnits u;
+    u.velocity = static_cast<VelocityUnit>(velocityUnit_->currentIndex());
+    u.acceleration = static_cast<AccelerationUnit>(accelerationUnit_->currentIndex());
+    Q_EMIT unitsChanged(u);
+  };
+  connect(velocityUnit_, &QComboBox::currentIndexChanged, this, units);
+  connect(accelerationUnit_, &QComboBox::currentIndexChanged, this, units);
+  connect(compare_, &QComboBox::currentIndexChanged, this, [this](int i) {
+    if (!quiet_) Q_EMIT compareChanged(i);
+  });
+  connect(harmonics_, &QToolButton::toggled, this, [this](bool on) {
+    if (!quiet_) Q_EMIT harmonicsToggled(on);
+  });
+}
+
+void PlotControls::display(const CurveRequest& r, const PlotUnits& u, int compare,
+                           bool compareEnabled, bool harmonics) {
+  quiet_ = true;
+  shown_ = r;
+  target_->setCurrentIndex(target_->findData(QStringList{r.target, r.body ? "body" : "point"}));
+  component_->setCurrentIndex(static_cast<int>(r.component));
+  component_->setEnabled(!r.body);
+  direction_->setValue(r.directionDeg);
+  direction_->setEnabled(!r.body && r.component == Quantity::Component::Along);
+  for (int o = 0; o < kOrders; ++o) orders_[o]->setChecked(r.orders[o]);
+  revs_->setValue(r.revs);
+  steps_->setValue(r.steps);
+  velocityUnit_->setCurrentIndex(static_cast<int>(u.velocity));
+  accelerationUnit_->setCurrentIndex(static_cast<int>(u.acceleration));
+  compare_->setCurrentIndex(compare);
+  compare_->setEnabled(compareEnabled);
+  harmonics_->setChecked(harmonics);
+  quiet_ = false;
+}
+
+bool PlotControls::offerTargets(const Mechanism* m, CurveRequest& r) {
+  quiet_ = true;
+  target_->clear();
+  if (m) {
+    auto add = [&](PointId p) {
+      const QString l = QString::fromStdString(m->pointLabel(p));
+      if (target_->findData(QStringList{l, "point"}) < 0)
+        target_->addItem(l, QStringList{l, "point"});
+    };
+    for (PointId p : m->outputs) add(p);
+    for (const Point& p : m->points) add(p.id);
+    for (const Body& b : m->bodies) {
+      if (b.ground) continue;
+      const QString n = QString::fromStdString(b.name);
+      target_->addItem(QString("%1 (rotation)").arg(n), QStringList{n, "body"});
+    }
+  }
+  bool changed = false;
+  int i = target_->findData(QStringList{r.target, r.body ? "body" : "point"});
+  if (i < 0 && target_->count() > 0) {
+    // The first output, or the first point: what the document is about.
+    i = 0;
+    const QStringList d = target_->itemData(0).toStringList();
+    r.target = d.value(0);
+    r.body = d.value(1) == "body";
+    changed = true;
+  }
+  target_->setCurrentIndex(i);
+  quiet_ = false;
+  return changed;
+}
+
+CurveRequest PlotControls::read() const {
+  CurveRequest r = shown_;
+  const QStringList d = target_->currentData().toStringList();
+  r.target = d.value(0);
+  r.body = d.value(1) == "body";
+  r.component = static_cast<Quantity::Component>(std::max(0, component_->currentIndex()));
+  r.directionDeg = direction_->value();
+  for (int o = 0; o < kOrders; ++o) r.orders[o] = orders_[o]->isChecked();
+  r.revs = revs_->value();
+  r.steps = steps_->value();
+  return r;
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,50 @@
+// The controls above the plots: what is plotted (point or body, component, direction, orders,
+// revolutions, steps), the units, the comparison mode and the harmonics switch. They show a
+// state and report what the user changes; the panel decides what that means.
+#pragma once
+
+#include <QWidget>
+
+#include "plots/curve_set.h"
+#include "plots/units.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QSpinBox;
+class QToolButton;
+
+namespace linkage::ui {
+
+class PlotControls : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit PlotControls(QWidget* parent = nullptr);
+
+  // Shows these; emits nothing.
+  void display(const CurveRequest& r, const PlotUnits& u, int compare, bool compareEnabled,
+               bool harmonics);
+  // The points (outputs first) and bodies of `m` as choices (none for nullptr). If r's target is
+  // not among them, r becomes the first choice (the first output); returns whether r changed.
+  bool offerTargets(const Mechanism* m, CurveRequest& r);
+
+ Q_SIGNALS:
+  void requestChanged(const CurveRequest& r);
+  void unitsChanged(const PlotUnits& u);
+  void compareChanged(int mode);
+  void harmonicsToggled(bool on);
+
+ private:
+  CurveRequest read() const;
+
+  CurveRequest shown_;
+  bool quiet_ = false;  // while showing a state: no signals
+  QComboBox *target_, *component_, *velocityUnit_, *accelerationUnit_, *compare_;
+  QDoubleSpinBox* direction_;
+  QCheckBox* orders_[kOrders];
+  QSpinBox *revs_, *steps_;
+  QToolButton* harmonics_;
+};
+
+}  // namespace linkage::ui

@@ -1,0 +1,341 @@
+#include "plots/plots_panel.h"
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QTimer>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+#include "document/document.h"
+#include "export/figure_export.h"
+#include "plots/curve_lists.h"
+#include "plots/harmonics_figure.h"
+#include "plots/motion_figure.h"
+#include "plots/plot_controls.h"
+#include "plots/qcp.h"
+
+namespace linkage::ui {
+
+namespace {
+
+QString titleOf(const Document* d) {
+  const std::string& name = d->design().name;
+  return name.empty() ? d->displayName() : QString::fromStdString(name);
+}
+
+}  // namespace
+
+PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent), units_(PlotUnits::fromSettings()) {
+  buildWidgets();
+  writeControls();
+}
+
+PlotsPanel::~PlotsPanel() = default;
+
+void PlotsPanel::buildWidgets() {
+  auto* top = new QVBoxLayout(this);
+  top->setContentsMargins(4, 4, 4, 4);
+  top->setSpacing(3);
+  controls_ = new PlotControls;
+  top->addWidget(controls_);
+  status_ = new QLabel;
+  status_->setWordWrap(true);
+  status_->setStyleSheet("color: #962020");
+  status_->hide();
+  top->addWidget(status_);
+
+  auto* split = new QSplitter(Qt::Vertical);
+  stack_ = new QStackedWidget;
+  plot_ = new QCustomPlot;
+  plot_->setMinimumSize(200, 200);
+  plot_->setCursor(Qt::CrossCursor);
+  harmonicsPlot_ = new QCustomPlot;
+  stack_->addWidget(plot_);
+  stack_->addWidget(harmonicsPlot_);
+  figure_ = std::make_unique<MotionFigure>(plot_);
+  harmonicsFigure_ = std::make_unique<HarmonicsFigure>(harmonicsPlot_);
+  split->addWidget(stack_);
+  auto* below = new QWidget;
+  auto* belowLayout = new QVBoxLayout(below);
+  belowLayout->setContentsMargins(0, 0, 0, 0);
+  values_ = new QLabel;
+  values_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  values_->setWordWrap(true);
+  extremes_ = new QTreeWidget;
+  extremes_->setRootIsDecorated(false);
+  extremes_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  belowLayout->addWidget(values_);
+  belowLayout->addWidget(extremes_, 1);
+  split->addWidget(below);
+  split->setStretchFactor(0, 4);
+  split->setStretchFactor(1, 1);
+  split->setSizes({640, 160});  // the plots first; the lists take what is left
+  top->addWidget(split, 1);
+
+  connect(controls_, &PlotControls::requestChanged, this, &PlotsPanel::setRequest);
+  connect(controls_, &PlotControls::unitsChanged, this, &PlotsPanel::setUnits);
+  connect(controls_, &PlotControls::compareChanged, this,
+          [this](int i) { setCompare(static_cast<Compare>(i)); });
+  connect(controls_, &PlotControls::harmonicsToggled, this, &PlotsPanel::setHarmonicsShown);
+
+  plot_->setInteractions({});  // a drag moves the crank, not the axes
+  connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
+  connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { mouseOnPlot(e, false); });
+  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { dragging_ = false; });
+}
+
+// --- what is plotted ------------------------------------------------------------------------
+
+void PlotsPanel::writeControls() {
+  const bool others = std::any_of(others_.begin(), others_.end(),
+                                  [this](const QPointer<Document>& d) { return d && d != doc_; });
+  controls_->display(request_, units_, static_cast<int>(compare_), others, harmonics_);
+}
+
+void PlotsPanel::offerTargets() {
+  // A target the design no longer has gives way to its first output: every set is stale.
+  if (controls_->offerTargets(doc_ ? &doc_->design() : nullptr, request_))
+    for (auto& s : sets_) s.second.reset();
+  writeControls();
+}
+
+void PlotsPanel::setRequest(const CurveRequest& r) {
+  if (r == request_) return;
+  request_ = r;
+  writeControls();
+  for (auto& s : sets_) s.second.reset();
+  figureStale_ = true;
+  schedule();
+}
+
+void PlotsPanel::setUnits(const PlotUnits& u) {
+  if (u == units_) return;
+  units_ = u;
+  units_.toSettings();
+  writeControls();
+  // The curves are kept in the solver's units: only the figure changes.
+  figureStale_ = true;
+  if (isVisible()) rebuildFigure();
+}
+
+void PlotsPanel::setHarmonicsShown(bool on) {
+  if (on == harmonics_) return;
+  harmonics_ = on;
+  writeControls();
+  stack_->setCurrentIndex(on ? 1 : 0);
+  figureStale_ = true;
+  if (isVisible()) rebuildFigure();
+}
+
+// --- documents ------------------------------------------------------------------------------
+
+void PlotsPanel::setDocument(Document* doc) {
+  delete docContext_;
+  docContext_ = new QObject(this);
+  doc_ = doc;
+  if (doc) {
+    connect(doc, &Document::designChanged, docContext_, [this, doc] {
+      offerTargets();
+      markStale(doc);
+    });
+    connect(doc, &Document::poseChanged, docContext_, [this] { updateCursor(); });
+    connect(doc, &QObject::destroyed, docContext_, [this] { setDocument(nullptr); });
+  }
+  offerTargets();
+  markStale(doc);
+}
+
+void PlotsPanel::setComparisonDocuments(const QList<Document*>& docs) {
+  delete othersContext_;
+  othersContext_ = new QObject(this);
+  others_.clear();
+  for (Document* d : docs) {
+    if (!d) continue;
+    others_.push_back(d);
+    connect(d, &Document::designChanged, othersContext_, [this, d] { markStale(d); });
+    connect(d, &QObject::destroyed, othersContext_, [this] { schedule(); });
+  }
+  writeControls();
+  figureStale_ = true;
+  schedule();
+}
+
+void PlotsPanel::setCompare(Compare c) {
+  if (c == compare_) return;
+  compare_ = c;
+  writeControls();
+  figureStale_ = true;
+  schedule();
+}
+
+std::vector<Document*> PlotsPanel::shownDocuments() const {
+  std::vector<Document*> v;
+  if (!doc_) return v;
+  v.push_back(doc_);
+  if (compare_ != Compare::Off)
+    for (const QPointer<Document>& d : others_)
+      if (d && d != doc_) v.push_back(d);
+  return v;
+}
+
+std::vector<const CurveSet*> PlotsPanel::shownSets() const {
+  std::vector<const CurveSet*> v;
+  for (const auto& s : sets_)
+    if (s.second) v.push_back(s.second.get());
+  return v;
+}
+
+const CurveSet* PlotsPanel::curves(int i) const {
+  return i >= 0 && i < static_cast<int>(sets_.size()) ? sets_[i].second.get() : nullptr;
+}
+
+// --- work -----------------------------------------------------------------------------------
+
+void PlotsPanel::markStale(Document* d) {
+  for (auto& s : sets_)
+    if (s.first == d) s.second.reset();
+  figureStale_ = true;
+  schedule();
+}
+
+void PlotsPanel::schedule() {
+  // Hidden: nothing now; showEvent does what is stale. Shown: once per burst of changes (an
+  // edit dragged with the mouse changes the design many times between two paints).
+  if (!isVisible() || pending_) return;
+  pending_ = true;
+  QTimer::singleShot(0, this, [this] {
+    if (pending_) recompute();
+  });
+}
+
+void PlotsPanel::showEvent(QShowEvent* e) {
+  QWidget::showEvent(e);
+  ensureComputed();
+  updateCursor();
+}
+
+void PlotsPanel::ensureComputed() {
+  const std::vector<Document*> docs = shownDocuments();
+  bool stale = figureStale_ || docs.size() != sets_.size();
+  for (size_t i = 0; !stale && i < docs.size(); ++i)
+    stale = sets_[i].first != docs[i] || !sets_[i].second;
+  if (stale) recompute();
+}
+
+void PlotsPanel::recompute() {
+  pending_ = false;
+  std::vector<std::pair<QPointer<Document>, std::unique_ptr<CurveSet>>> next;
+  for (Document* d : shownDocuments()) {
+    std::unique_ptr<CurveSet> set;
+    for (auto& s : sets_)
+      if (s.first == d && s.second) set = std::move(s.second);
+    if (!set) {
+      set = std::make_unique<CurveSet>(d->kinematics(), request_, titleOf(d));
+      ++computations_;
+    }
+    next.emplace_back(d, std::move(set));
+  }
+  sets_ = std::move(next);
+  rebuildFigure();
+}
+
+void PlotsPanel::rebuildFigure() {
+  const std::vector<const CurveSet*> sets = shownSets();
+  QStringList problems;
+  if (!doc_)
+    problems << "No document.";
+  else if (!doc_->solved())
+    problems << QString(
+                    "The design cannot be solved (%1): the curves are those of the last "
+                    "design that could.")
+                    .arg(QString::fromStdString(doc_->solveStatus().message));
+  if (doc_ && request_.target.isEmpty()) problems << "The mechanism has no point to plot.";
+  status_->setText(problems.join(" "));
+  status_->setVisible(!problems.isEmpty());
+  if (harmonics_) {
+    harmonicsFigure_->build(sets, units_);
+  } else {
+    MotionFigure::Options o;
+    o.layout = compare_ == Compare::SideBySide ? MotionFigure::Layout::SideBySide
+                                               : MotionFigure::Layout::Overlay;
+    o.units = units_;
+    figure_->build(sets, o);
+  }
+  figureStale_ = false;
+  updateExtremes();
+  updateCursor();
+}
+
+// --- cursor and extremes --------------------------------------------------------------------
+
+double PlotsPanel::cursorDeg() const {
+  return figure_->cursor();
+}
+
+void PlotsPanel::updateCursor() {
+  if (!isVisible() || sets_.empty() || !doc_) return;
+  CurveSet* main = sets_[0].second.get();
+  if (!main) return;
+  const double c = doc_->crankDeg(), period = 360.0 * request_.revs;
+  // Periodic curves: the revolution window the crank is in; otherwise the angle itself.
+  const double x = main->periodic() ? c - period * std::floor(c / period) : c;
+  if (!harmonics_) figure_->setCursor(x);
+  std::vector<CurveSet*> sets;
+  for (auto& s : sets_)
+    if (s.second) sets.push_back(s.second.get());
+  values_->setText(cursorValues(sets, x, units_));
+}
+
+QString PlotsPanel::cursorText() const {
+  return values_->text();
+}
+
+void PlotsPanel::updateExtremes() {
+  if (harmonics_)
+    listHarmonics(extremes_, shownSets(), units_);
+  else
+    listExtremes(extremes_, shownSets(), units_);
+}
+
+QString PlotsPanel::extremesText() const {
+  return listText(extremes_, harmonics_);
+}
+
+void PlotsPanel::mouseOnPlot(QMouseEvent* e, bool press) {
+  if (!(e->buttons() & Qt::LeftButton) || harmonics_) return;
+  if (press) dragging_ = !std::isnan(figure_->crankAt(e->position(), &dragRect_));
+  if (!dragging_) return;
+  // While dragging, the plot pressed on gives the angle even outside its axes.
+  double deg = figure_->crankAtX(dragRect_, e->position().x());
+  const CurveSet* main = curves(0);
+  double hi = figure_->xMax();
+  if (main && !main->empty() && !main->periodic()) hi = std::min(hi, main->lastDeg());
+  deg = std::clamp(deg, 0.0, hi);
+  double base = 0;
+  if (doc_ && main && main->periodic()) {
+    const double period = figure_->xMax();
+    base = period * std::floor(doc_->crankDeg() / period);
+  }
+  Q_EMIT crankAngleRequested(base + deg);
+}
+
+// --- export ---------------------------------------------------------------------------------
+
+bool PlotsPanel::exportFigure(const QString& path, QSize size, QString* error) {
+  ensureComputed();
+  if (shownSets().empty()) {
+    if (error) *error = "No curves to export: no document is plotted.";
+    return false;
+  }
+  if (harmonics_) return exportPlot(harmonicsPlot_, path, size, error);
+  figure_->setCursorVisible(false);
+  const bool ok = exportPlot(plot_, path, size, error);
+  figure_->setCursorVisible(true);
+  return ok;
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,99 @@
+#include "plots/units.h"
+
+#include <QSettings>
+#include <cmath>
+
+namespace linkage::ui {
+
+double PlotUnits::scale(Order o, bool body) const {
+  if (body) return o == Order::Position ? 180.0 / M_PI : 1.0;
+  switch (o) {
+    case Order::Position:
+      return 1;
+    case Order::Velocity:
+      return velocity == VelocityUnit::MetrePerSecond ? 1e-3 : 1;
+    case Order::Acceleration:
+    case Order::Jerk:
+      switch (acceleration) {
+        case AccelerationUnit::MillimetrePerSecond2:
+          return 1;
+        case AccelerationUnit::MetrePerSecond2:
+          return 1e-3;
+        case AccelerationUnit::G:
+          return 1 / kStandardGravity;
+      }
+  }
+  return 1;
+}
+
+QString PlotUnits::name(Order o, bool body) const {
+  if (body) {
+    static const char* names[] = {"deg", "rad/s", "rad/s²", "rad/s³"};
+    return QString::fromUtf8(names[static_cast<int>(o)]);
+  }
+  const bool metres = o == Order::Velocity ? velocity == VelocityUnit::MetrePerSecond
+                                           : acceleration == AccelerationUnit::MetrePerSecond2;
+  switch (o) {
+    case Order::Position:
+      return "mm";
+    case Order::Velocity:
+      return metres ? "m/s" : "mm/s";
+    case Order::Acceleration:
+      if (acceleration == AccelerationUnit::G) return "g";
+      return QString::fromUtf8(metres ? "m/s²" : "mm/s²");
+    case Order::Jerk:
+      if (acceleration == AccelerationUnit::G) return "g/s";
+      return QString::fromUtf8(metres ? "m/s³" : "mm/s³");
+  }
+  return {};
+}
+
+PlotUnits PlotUnits::fromSettings() {
+  QSettings s;
+  PlotUnits u;
+  const int v = s.value("plots/velocityUnit", 0).toInt();
+  const int a = s.value("plots/accelerationUnit", 0).toInt();
+  if (v >= 0 && v <= 1) u.velocity = static_cast<VelocityUnit>(v);
+  if (a >= 0 && a <= 2) u.acceleration = static_cast<AccelerationUnit>(a);
+  return u;
+}
+
+void PlotUnits::toSettings() const {
+  QSettings s;
+  s.setValue("plots/velocityUnit", static_cast<int>(velocity));
+  s.setValue("plots/accelerationUnit", static_cast<int>(acceleration));
+}
+
+QString componentLabel(Quantity::Component c, double directionDeg, Order o) {
+  static const char* letters[] = {"", "v", "a", "j"};
+  static const char* vectors[] = {"r", "v", "a", "j"};
+  const int i = static_cast<int>(o);
+  switch (c) {
+    case Quantity::Component::X:
+      return QString(letters[i]) + "x";
+    case Quantity::Component::Y:
+      return QString(letters[i]) + "y";
+    case Quantity::Component::Magnitude:
+      return QString("|%1|").arg(vectors[i]);
+    case Quantity::Component::Along:
+      return QString::fromUtf8("%1 along %2°").arg(vectors[i]).arg(directionDeg, 0, 'g', 6);
+  }
+  return {};
+}
+
+QString axisLabel(bool body, Quantity::Component c, double directionDeg, Order o,
+                  const PlotUnits& u) {
+  const int i = static_cast<int>(o);
+  if (body) {
+    static const char* names[] = {"Angle", "Angular velocity", "Angular acceleration",
+                                  "Angular jerk"};
+    return QString("%1 [%2]").arg(names[i], u.name(o, true));
+  }
+  static const char* names[] = {"Position", "Velocity", "Acceleration", "Jerk"};
+  const QString what = (c == Quantity::Component::Magnitude && o == Order::Velocity)
+                           ? QString("Speed")
+                           : QString(names[i]);
+  return QString("%1 %2 [%3]").arg(what, componentLabel(c, directionDeg, o), u.name(o, false));
+}
+
+}  // namespace linkage::ui

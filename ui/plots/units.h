@@ -1,0 +1,40 @@
+// The units the plots show, switchable and remembered (QSettings, "plots/..."): velocities in
+// mm/s or m/s, accelerations in mm/s^2, m/s^2 or g (standard gravity, 9806.65 mm/s^2); jerk
+// follows the acceleration's choice (mm/s^3, m/s^3, g/s). Bodies turn in degrees, rad/s,
+// rad/s^2, rad/s^3. The solver's own units are mm, mm/s, mm/s^2, rad, rad/s, rad/s^2.
+#pragma once
+
+#include <QString>
+
+#include "linkage/motion_samples.h"
+
+namespace linkage::ui {
+
+constexpr double kStandardGravity = 9806.65;  // mm/s^2
+
+enum class VelocityUnit { MillimetrePerSecond, MetrePerSecond };
+enum class AccelerationUnit { MillimetrePerSecond2, MetrePerSecond2, G };
+
+struct PlotUnits {
+  VelocityUnit velocity = VelocityUnit::MillimetrePerSecond;
+  AccelerationUnit acceleration = AccelerationUnit::MillimetrePerSecond2;
+
+  // Shown value = solver value * scale.
+  double scale(Order o, bool body) const;
+  // "mm", "mm/s", "g", "deg", "rad/s", ...
+  QString name(Order o, bool body) const;
+
+  static PlotUnits fromSettings();
+  void toSettings() const;
+  bool operator==(const PlotUnits&) const = default;
+};
+
+// The component of a point's motion as the labels write it: "y", "|r|", "along 30°" with the
+// order's letter ("vy", "|v|", ...).
+QString componentLabel(Quantity::Component c, double directionDeg, Order o);
+
+// An axis label with its unit: "Position y [mm]", "Speed |v| [m/s]", "Angular velocity [rad/s]".
+QString axisLabel(bool body, Quantity::Component c, double directionDeg, Order o,
+                  const PlotUnits& u);
+
+}  // namespace linkage::ui
