@@ -94,8 +94,42 @@ void editPoint(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// Baselines in the same run: one tracker step of 1 degree (moveTo), and a load of the design
+// from scratch (what an edit would cost without the kept analysis).
+void step(benchmark::State& state) {
+  const Scene s = scene(static_cast<int>(state.range(0)));
+  const bool closedForm = state.range(1) != 0;
+  Kinematics k(options(closedForm));
+  load(state, k, s.m, closedForm);
+  double angle = 0;
+  for (auto _ : state) {
+    angle += 1;
+    if (!k.moveTo(angle).ok()) {
+      state.SkipWithError("the mechanism stopped");
+      break;
+    }
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void loadAgain(benchmark::State& state) {
+  const Scene s = scene(static_cast<int>(state.range(0)));
+  const bool closedForm = state.range(1) != 0;
+  Kinematics k(options(closedForm));
+  load(state, k, s.m, closedForm);
+  for (auto _ : state) {
+    if (!k.load(s.m).ok()) {
+      state.SkipWithError("cannot load");
+      break;
+    }
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 // range(0): 0 the Wanzer, 1 the chain; range(1): 1 closed-form groups, 0 general solve.
 BENCHMARK(drag)->Name("editor/drag")->ArgsProduct({{0, 1}, {1, 0}});
 BENCHMARK(editPoint)->Name("editor/edit_point")->ArgsProduct({{0, 1}, {1, 0}});
+BENCHMARK(step)->Name("editor/step_1deg")->ArgsProduct({{0, 1}, {1, 0}});
+BENCHMARK(loadAgain)->Name("editor/load")->ArgsProduct({{0, 1}, {1, 0}});
 
 }  // namespace
