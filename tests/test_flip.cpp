@@ -91,6 +91,26 @@ TEST(Flip, FourBarGoesToTheOtherIntersectionOfItsCircles) {
   }
 }
 
+TEST(Flip, RedrawnAtTheDrawingsDriverAngleWhateverTheStartOffset) {
+  // Crank angle 0 is the drawing turned by start_deg: the redrawn design is drawn at the
+  // drawing's driver angle (crank angle -start_deg), keeps the offset, and moves alike. Here by
+  // a clockwise driver.
+  auto f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25, Direction::Cw);
+  f.m.driver->startDeg = 25;
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  ASSERT_TRUE(k.moveTo(40).ok());
+  Mechanism redrawn;
+  const Status s = k.flipBranch(f.rocker, &redrawn);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_EQ(redrawn.driver->startDeg, 25);
+  // The crossed closed form at the drawn crank (60 degrees): the redrawn B.
+  const auto crossed = test::fourBarReference(60, 20, 70, 50, 60, false, 35, 25);
+  const auto drawn = linkref::four_bar(crossed, 0.0);
+  EXPECT_LT((redrawn.point(f.B)->pos - Vec2(drawn.B.x, drawn.B.y)).norm(), 1e-12 * k.size());
+  expectRedrawnMovesAlike(k, redrawn, {40, -25, 100, 250});
+}
+
 TEST(Flip, ByAnyBodyOrJointOfTheDyadAndBackAgain) {
   auto f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
   Kinematics k, byRocker, byJoint, twice;

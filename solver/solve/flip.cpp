@@ -95,29 +95,30 @@ Status KinematicsState::flip(int group, const std::string& what, Mechanism* redr
                   "redrawn there: " + s.message;
       return s;
     }
-    *redrawn = mech;
-    const std::vector<double> shift = moves(mech, sys, back.reg, sketchMotion());
-    auto redraw = [&](BodyId body, Vec2& p) {
-      const int k = sys.bodyIndex(body);
-      if (k < 0 || shift[k] <= kRounding * sys.size) return;
-      p = back.reg.body[k].pos(p - sys.frameOrigin[k]);
-    };
-    for (Point& p : redrawn->points) redraw(p.body, p.pos);
-    for (Slot& s : redrawn->slots) {
-      redraw(s.body, s.p0);
-      redraw(s.body, s.p1);
-    }
+    *redrawn = drawnAt(back.reg);
   }
   plan = std::move(flipped);
   reg = std::move(now);
   return Status::success();
 }
 
-Motion KinematicsState::sketchMotion() const {
-  Motion m;
+Mechanism KinematicsState::drawnAt(const Motion& at) const {
+  Motion sketch;
   const Eigen::VectorXd q = sketchCoordinates(sys), zero = Eigen::VectorXd::Zero(q.size());
-  m.fromCoordinates(0, q, zero, zero);
-  return m;
+  sketch.fromCoordinates(0, q, zero, zero);
+  const std::vector<double> shift = moves(mech, sys, at, sketch);
+  Mechanism out = mech;
+  auto redraw = [&](BodyId body, Vec2& p) {
+    const int k = sys.bodyIndex(body);
+    if (k < 0 || shift[k] <= kRounding * sys.size) return;
+    p = at.body[k].pos(p - sys.frameOrigin[k]);
+  };
+  for (Point& p : out.points) redraw(p.body, p.pos);
+  for (Slot& s : out.slots) {
+    redraw(s.body, s.p0);
+    redraw(s.body, s.p1);
+  }
+  return out;
 }
 
 }  // namespace linkage

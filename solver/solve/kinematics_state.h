@@ -56,8 +56,9 @@ struct KinematicsState {
   // in messages.
   Status flip(int group, const std::string& what, Mechanism* redrawn);
   std::vector<BodyId> flippableBodies() const;
-  // Every body at its drawn pose.
-  Motion sketchMotion() const;
+  // The design drawn at the pose `at`: each body that is not at its drawn pose there (beyond
+  // rounding) drawn where it is; the others as they were, to the bit.
+  Mechanism drawnAt(const Motion& at) const;
   Status trackGeneral(double phi);
   // Closed-form steps towards phi; false where the plan cannot go on (reg is the last good).
   bool trackClosedForm(double phi);
