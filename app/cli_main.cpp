@@ -10,6 +10,7 @@ namespace linkage::cli {
 int analyze(int argc, char** argv);
 int ics(int argc, char** argv);
 int info(int argc, char** argv);
+int limits(int argc, char** argv);
 }  // namespace linkage::cli
 
 namespace {
@@ -20,6 +21,7 @@ Commands:
   analyze MODEL ...   motion table (position, velocity, acceleration of points) over crank angles
   info MODEL          structure of a mechanism: degrees of freedom, redundant joints, assembly
   ics MODEL --angle D instant centres (Kennedy-Aronhold) at a crank angle; velocity chains
+  limits MODEL ...    limit positions and stroke of a point along a direction or of a body
   examples            list the example mechanisms that MODEL can name
 
 MODEL is a .linkage.json file or the name of an example (e.g. wanzer-inversion-2).
@@ -40,6 +42,7 @@ int main(int argc, char** argv) {
   if (cmd == "analyze") return analyze(argc - 2, argv + 2);
   if (cmd == "info") return info(argc - 2, argv + 2);
   if (cmd == "ics") return ics(argc - 2, argv + 2);
+  if (cmd == "limits") return limits(argc - 2, argv + 2);
   if (cmd == "examples") {
     if (argc > 2 && isHelp(argv[2])) {
       std::cout << "usage: linkage-cli examples\n\nLists the example mechanisms by name.\n";
