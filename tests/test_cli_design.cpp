@@ -192,6 +192,154 @@ TEST_F(DesignCli, TransmissionBadInput) {
   EXPECT_EQ(run("transmission --help").exit, 0);
 }
 
+TEST_F(DesignCli, StudyHeaderAndThePapersAdjustment) {
+  CliResult r =
+      run("study needle-876-alpha-0 --move ground.F --about 43,137.05539931644228 --angle -1 "
+          "--from 0 --to 35 --steps 8 --point needlebar.G --body lever --threads 2");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const std::vector<std::string> lines = r.lines();
+  ASSERT_EQ(lines.size(), 9u);
+  EXPECT_EQ(lines[0],
+            "t,turns,lock_deg,needlebar.G.min_mm,needlebar.G.max_mm,needlebar.G.stroke_mm,"
+            "needlebar.G.peak_speed_mm_s,needlebar.G.peak_accel_mm_s2,lever.swing_deg,"
+            "mu:coupler.B.min_deg,mu:coupler.B.max_deg,mu:link.E.min_deg,mu:link.E.max_deg,"
+            "mu:rod.G.min_deg,mu:rod.G.max_deg");
+  for (size_t i = 1; i < lines.size(); ++i) {
+    const std::vector<std::string> f = split(lines[i], ',');
+    ASSERT_EQ(f.size(), 15u);
+    EXPECT_EQ(field(f[0]), 5.0 * (i - 1));
+    EXPECT_EQ(f[1], "1");
+    EXPECT_EQ(f[2], "");
+    EXPECT_NEAR(field(f[3]), 107.4750004009442, 1e-12);  // the lowest position stays
+  }
+  // The last row is the alpha = 35 example's limits, to rounding of the moved pivot.
+  CliResult lim = run("limits needle-876-alpha-35 --point needlebar.G");
+  ASSERT_EQ(lim.exit, 0);
+  EXPECT_NEAR(field(split(lines[8], ',')[5]), field(split(lim.lines()[3], ',')[2]), 1e-9);
+}
+
+TEST_F(DesignCli, StudyRowsEqualSeparateRunsOfTheMovedModels) {
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  const std::string base = write("base.linkage.json", f.m);
+  CliResult r = run("study " + base +
+                    " --move ground.O4 --by 1,0.5 --from -2 --to 2 --steps 5 --point coupler.P");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const std::vector<std::string> lines = r.lines();
+  ASSERT_EQ(lines.size(), 6u);
+  for (size_t i = 1; i < lines.size(); ++i) {
+    const std::vector<std::string> row = split(lines[i], ',');
+    ASSERT_EQ(row.size(), 10u);
+    const double t = field(row[0]);
+    EXPECT_EQ(t, -3.0 + i);
+    // The moved model: the ground's O4 and the rocker's O4 pinned there, moved by t (1, 0.5).
+    Mechanism moved = f.m;
+    for (Point& p : moved.points)
+      if (p.name == "O4") p.pos += t * Vec2(1, 0.5);
+    const std::string file = write("moved" + std::to_string(i) + ".linkage.json", moved);
+    CliResult a = run("analyze " + file + " --point coupler.P");
+    ASSERT_EQ(a.exit, 0) << a.err;
+    double speed = 0, accel = 0, lo = INFINITY, hi = -INFINITY;
+    const std::vector<std::string> table = a.lines();
+    ASSERT_EQ(table.size(), 362u);
+    for (size_t k = 1; k < table.size(); ++k) {
+      const std::vector<std::string> c = split(table[k], ',');
+      speed = std::max(speed, std::hypot(field(c[4]), field(c[5])));
+      accel = std::max(accel, std::hypot(field(c[6]), field(c[7])));
+      lo = std::min(lo, field(c[3]));
+      hi = std::max(hi, field(c[3]));
+    }
+    EXPECT_EQ(field(row[6]), speed);  // the same samples, the same doubles
+    EXPECT_EQ(field(row[7]), accel);
+    // The exact extremes lie beyond the samples' by less than a degree's worth.
+    EXPECT_LE(field(row[3]), lo);
+    EXPECT_GT(field(row[3]), lo - 1e-2);
+    EXPECT_GE(field(row[4]), hi);
+    EXPECT_LT(field(row[4]), hi + 1e-2);
+    CliResult l = run("limits " + file + " --point coupler.P");
+    ASSERT_EQ(l.exit, 0) << l.err;
+    EXPECT_EQ(field(row[5]), field(split(l.lines().back(), ',')[2]));
+  }
+}
+
+TEST_F(DesignCli, StudyReportsWhereTheCrankStops) {
+  // The rocker pivot moved up towards B: from some t on, the rocker is the shortest link.
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 60);
+  CliResult r = run("study " + write("f.linkage.json", f.m) +
+                    " --move ground.O4 --by 0,1 --from 0 --to 40 --steps 3 --point coupler.B");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const std::vector<std::string> lines = r.lines();
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(split(lines[1], ',')[1], "1");
+  const std::vector<std::string> last = split(lines[3], ',');
+  ASSERT_EQ(last.size(), 10u);
+  EXPECT_EQ(last[0], "40");
+  EXPECT_EQ(last[1], "0");
+  for (size_t k = 3; k < last.size(); ++k) EXPECT_EQ(last[k], "") << k;
+  EXPECT_NE(r.err.find("t = 40: "), std::string::npos) << r.err;
+  // analyze on the moved model stops at the same place.
+  Mechanism moved = f.m;
+  for (Point& p : moved.points)
+    if (p.name == "O4") p.pos += Vec2(0, 40);
+  CliResult a = run("analyze " + write("moved.linkage.json", moved) + " --steps 3600");
+  EXPECT_EQ(a.exit, 3);
+  const double reached = field(split(a.lines().back(), ',')[1]);
+  EXPECT_GE(field(last[2]), reached);
+  EXPECT_LT(field(last[2]), reached + 0.1);
+}
+
+TEST_F(DesignCli, StudyBadInputAndThreads) {
+  const std::string ok =
+      "study four-bar-crank-rocker --move ground.O4 --by 1,0 --from 0 --to 1 "
+      "--steps 3 --point coupler.P";
+  CliResult one = run(ok + " --threads 1"), three = run(ok + " --threads 3");
+  ASSERT_EQ(one.exit, 0) << one.err;
+  EXPECT_EQ(one.out, three.out);
+  struct Case {
+    std::string args, message;
+  };
+  const std::string m = "study four-bar-crank-rocker ";
+  for (const Case& c : std::vector<Case>{
+           {"study", "no MODEL given"},
+           {m + "--by 1,0 --from 0 --to 1 --steps 3 --point coupler.P", "--move is required"},
+           {m + "--move ground.O4 --by 1,0 --to 1 --steps 3 --point coupler.P",
+            "--from is required"},
+           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --point coupler.P",
+            "--steps is required"},
+           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3", "--point is required"},
+           {m + "--move ground.O4 --from 0 --to 1 --steps 3 --point coupler.P", "either --by"},
+           {m + "--move ground.O4 --by 1,0 --about 0,0 --angle 5 --from 0 --to 1 --steps 3 "
+                "--point coupler.P",
+            "either --by"},
+           {m + "--move ground.O4 --about 0,0 --from 0 --to 1 --steps 3 --point coupler.P",
+            "--about and --angle go together"},
+           {m + "--move ground.Q --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P",
+            "no point \"Q\" on body \"ground\""},
+           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 0 --point coupler.P",
+            "--steps: must be from 1"},
+           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P "
+                "--crank-steps 2",
+            "--crank-steps: must be from 4"},
+           {m + "--move ground.O4 --by 1,0 --from 0 --to x --steps 3 --point coupler.P",
+            "not a number"},
+           {m + "--move ground.O4 --by 1 --from 0 --to 1 --steps 3 --point coupler.P",
+            "not two numbers"},
+           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P "
+                "--body nobody",
+            "--body nobody: no body"},
+           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P "
+                "--direction 0,0",
+            "must not be 0,0"},
+           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P --frob 1",
+            "unknown option --frob"},
+       }) {
+    CliResult r = run(c.args);
+    EXPECT_EQ(r.exit, 2) << c.args;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.args;
+  }
+  EXPECT_EQ(run("study --help").exit, 0);
+}
+
 }  // namespace
 }  // namespace linkage
 #endif

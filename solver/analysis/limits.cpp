@@ -75,7 +75,7 @@ Status checkMeasure(const Kinematics& k, const LimitMeasure& w) {
 }
 
 MeasureTrack::MeasureTrack(const Kinematics& k, LimitMeasure what)
-    : what_(std::move(what)), size_(k.size()) {
+    : what_(std::move(what)), size_(k.size()), noise_(noiseOf(k, what_)) {
   if (!what_.body) what_.direction.normalize();
   const LimitMeasure w = what_;
   channel.f = [w](const Kinematics& at) {
@@ -89,6 +89,17 @@ void MeasureTrack::sample(const Kinematics& k) {
   const Reading r = read(k, what_);
   values.push_back(r.value);
   channel.samples.push_back({r.d1, r.d2});
+}
+
+bool MeasureTrack::moves() const {
+  for (const RootSample& s : channel.samples)
+    if (std::abs(s.g) > noise_) return true;
+  return false;
+}
+
+std::vector<RootChannel*> MeasureTrack::channels() {
+  if (!moves()) return {};
+  return {&channel};
 }
 
 bool MeasureTrack::repeats() const {
@@ -105,6 +116,7 @@ bool MeasureTrack::repeats() const {
 Limits MeasureTrack::result(bool periodic) const {
   Limits out;
   out.periodic = periodic;
+  out.moves = moves();
   auto consider = [&](double deg, double v) {
     if (v < out.min) {
       out.min = v;
@@ -151,17 +163,9 @@ Limits findLimits(const Kinematics& k0, const LimitMeasure& what, const LimitOpt
     if (out.status = k.moveTo(crank.back()); !out.status.ok()) return out;
     track.sample(k);
   }
-  double gmax = 0;
-  for (const RootSample& s : track.channel.samples) gmax = std::max(gmax, std::abs(s.g));
   const bool periodic = track.repeats();
-  if (gmax <= noiseOf(k, what)) {
-    out = track.result(periodic);
-    out.moves = false;
-    out.extremes.clear();
-    return out;
-  }
   if (periodic) track.closePeriod();
-  if (out.status = findRoots(probe, crank, {&track.channel}, periodic, opt.toleranceDeg);
+  if (out.status = findRoots(probe, crank, track.channels(), periodic, opt.toleranceDeg);
       !out.status.ok())
     return out;
   return track.result(periodic);

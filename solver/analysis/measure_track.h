@@ -25,7 +25,11 @@ class MeasureTrack {
   bool repeats() const;
   // Makes the last sample the first one exactly, for a periodic sweep.
   void closePeriod() { channel.samples.back() = channel.samples.front(); }
-  // The Limits, after findRoots has filled channel.roots.
+  // False when the rate never rises above rounding: then there is no channel to search (its
+  // sign changes would be noise), no extreme, and the stroke is 0 to rounding.
+  bool moves() const;
+  std::vector<RootChannel*> channels();
+  // The Limits, after findRoots has searched channels().
   Limits result(bool periodic) const;
 
   RootChannel channel;
@@ -33,7 +37,8 @@ class MeasureTrack {
 
  private:
   LimitMeasure what_;
-  double size_;  // the mechanism's length scale
+  double size_;   // the mechanism's length scale
+  double noise_;  // |rate| at or below this is rounding of a zero
 };
 
 }  // namespace linkage

@@ -127,13 +127,14 @@ void TransmissionTrack::sample(const Kinematics& k) {
   const TransmissionReading r = signedAngle(k, t_);
   mu.push_back(muOf(t_, r.deg));
   stationary_.samples.push_back({r.perDeg, r.perDeg2});
-  along_.samples.push_back(
-      {std::sin(2 * r.deg * kDeg), 2 * std::cos(2 * r.deg * kDeg) * r.perDeg * kDeg});
+  if (isRod(t_))
+    along_.samples.push_back(
+        {std::sin(2 * r.deg * kDeg), 2 * std::cos(2 * r.deg * kDeg) * r.perDeg * kDeg});
 }
 
 void TransmissionTrack::closePeriod() {
   stationary_.samples.back() = stationary_.samples.front();
-  along_.samples.back() = along_.samples.front();
+  if (isRod(t_)) along_.samples.back() = along_.samples.front();
 }
 
 std::vector<RootChannel*> TransmissionTrack::channels() {
