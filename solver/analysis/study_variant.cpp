@@ -21,7 +21,7 @@ StudyRow measureVariant(const Mechanism& moved, const StudySpec& spec, const Vec
   std::vector<MeasureTrack> bodies;
   for (BodyId b : spec.bodies) bodies.emplace_back(k, LimitMeasure::angleOf(b));
   std::vector<TransmissionTrack> tracks;
-  for (const TransmissionJoint& t : joints) tracks.emplace_back(t);
+  for (const TransmissionJoint& t : joints) tracks.emplace_back(moved, t);
   std::vector<double> crank;
   for (int i = 0; i <= spec.steps; ++i) {
     // Angles from the index, as the motion table's, so that the samples are its rows.

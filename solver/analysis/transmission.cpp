@@ -27,27 +27,48 @@ PointId pointOn(const Mechanism& m, JointId joint, BodyId body) {
   return b && b->body == body ? j->b : PointId{};
 }
 
-// theta (degrees, see transmission_track.h) and its derivatives per degree of crank.
-TransmissionReading signedAngle(const Kinematics& k, const TransmissionJoint& t) {
+// theta (degrees, see transmission_track.h), its derivatives per degree of crank, and for a
+// rod sin(2 theta) and cos(2 theta), from the lines' directions (no sine evaluated). `slot` is
+// the slot's direction as drawn, on its body.
+struct Signed {
+  double deg = 0, perDeg = 0, perDeg2 = 0, sin2 = 0, cos2 = 0;
+};
+
+Signed signedAngle(const Kinematics& k, const TransmissionJoint& t, const Vec2& slot) {
   const double w = k.omega();
-  double theta = 0, rate = 0, accel = 0;
+  Signed out;
   if (t.kind == TransmissionKind::Dyad) {
     const Vec2 u = k.position(t.linkOuter) - k.position(t.linkAt);
     const Vec2 v = k.position(t.otherOuter) - k.position(t.otherAt);
-    theta = std::atan2(cross(u, v), u.dot(v));
+    out.deg = std::atan2(cross(u, v), u.dot(v)) / kDeg;
   } else {
-    const Kinematics::Segment s = k.slotEnds(t.slot);
-    const Vec2 d = s.p1 - s.p0, u = k.position(t.linkAt) - k.position(t.linkOuter);
-    theta = std::atan2(cross(d, u), d.dot(u));
+    const Vec2 d = k.bodyTransform(t.other).R * slot;
+    const Vec2 u = k.position(t.linkAt) - k.position(t.linkOuter);
+    const double c = d.dot(u), s = cross(d, u), n = c * c + s * s;
+    double theta = std::atan2(s, c);
     if (theta > M_PI / 2) theta -= M_PI;
     if (theta <= -M_PI / 2) theta += M_PI;
+    out.deg = theta / kDeg;
+    out.sin2 = 2 * s * c / n;
+    out.cos2 = (c * c - s * s) / n;
   }
   // A line fixed in a body turns with it: theta turns at the difference of the two bodies'
   // rates (the rod's minus the slot's, the second link's minus the first's).
   const double sign = isRod(t) ? 1 : -1;
-  rate = sign * (k.bodyOmega(t.link) - k.bodyOmega(t.other)) / w;
-  accel = sign * (k.bodyAlpha(t.link) - k.bodyAlpha(t.other)) / (w * w) * kDeg;
-  return {theta / kDeg, rate, accel};
+  out.perDeg = sign * (k.bodyOmega(t.link) - k.bodyOmega(t.other)) / w;
+  out.perDeg2 = sign * (k.bodyAlpha(t.link) - k.bodyAlpha(t.other)) / (w * w) * kDeg;
+  return out;
+}
+
+// The slot's direction as drawn (zero for a dyad).
+Vec2 slotDirection(const Mechanism& m, const TransmissionJoint& t) {
+  const Slot* s = t.kind == TransmissionKind::Dyad ? nullptr : m.slot(t.slot);
+  return s ? Vec2(s->p1 - s->p0) : Vec2::Zero();
+}
+
+// The channel of the rod lying along its slot: sin(2 theta), smooth through the fold.
+RootSample along(const Signed& s) {
+  return {s.sin2, 2 * s.cos2 * s.perDeg * kDeg};
 }
 
 double muOf(const TransmissionJoint& t, double theta) {
@@ -104,32 +125,30 @@ std::vector<TransmissionJoint> transmissionJoints(const Mechanism& m) {
 }
 
 TransmissionReading transmissionAngle(const Kinematics& k, const TransmissionJoint& t) {
-  const TransmissionReading s = signedAngle(k, t);
+  if (!k.valid()) return {NAN, NAN, NAN};
+  const Signed s = signedAngle(k, t, slotDirection(k.mechanism(), t));
   // mu = |theta| or 90 - |theta|: its rates are theta's, turned by the side theta is on.
   const double side = (s.deg < 0 ? -1 : 1) * (isRod(t) ? -1 : 1);
   return {muOf(t, s.deg), side * s.perDeg, side * s.perDeg2};
 }
 
-TransmissionTrack::TransmissionTrack(const TransmissionJoint& t) : t_(t) {
-  stationary_.f = [t](const Kinematics& k) {
-    const TransmissionReading r = signedAngle(k, t);
+TransmissionTrack::TransmissionTrack(const Mechanism& m, const TransmissionJoint& t) : t_(t) {
+  const Vec2 slot = slotDirection(m, t);
+  stationary_.f = [t, slot](const Kinematics& k) {
+    const Signed r = signedAngle(k, t, slot);
     return RootSample{r.perDeg, r.perDeg2};
   };
-  stationary_.value = [t](const Kinematics& k) { return signedAngle(k, t).deg; };
-  along_.f = [t](const Kinematics& k) {
-    const TransmissionReading r = signedAngle(k, t);
-    return RootSample{std::sin(2 * r.deg * kDeg), 2 * std::cos(2 * r.deg * kDeg) * r.perDeg * kDeg};
-  };
+  stationary_.value = [t, slot](const Kinematics& k) { return signedAngle(k, t, slot).deg; };
+  along_.f = [t, slot](const Kinematics& k) { return along(signedAngle(k, t, slot)); };
   along_.value = stationary_.value;
+  slot_ = slot;
 }
 
 void TransmissionTrack::sample(const Kinematics& k) {
-  const TransmissionReading r = signedAngle(k, t_);
+  const Signed r = signedAngle(k, t_, slot_);
   mu.push_back(muOf(t_, r.deg));
   stationary_.samples.push_back({r.perDeg, r.perDeg2});
-  if (isRod(t_))
-    along_.samples.push_back(
-        {std::sin(2 * r.deg * kDeg), 2 * std::cos(2 * r.deg * kDeg) * r.perDeg * kDeg});
+  if (isRod(t_)) along_.samples.push_back(along(r));
 }
 
 void TransmissionTrack::closePeriod() {

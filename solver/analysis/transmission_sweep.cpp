@@ -115,7 +115,7 @@ TransmissionSweep sweepTransmission(const Kinematics& k0, const TransmissionOpti
   if (out.status = k.moveTo(0); !out.status.ok()) return out;
   const Kinematics start = k;
   std::vector<TransmissionTrack> tracks;
-  for (const TransmissionJoint& t : out.joints) tracks.emplace_back(t);
+  for (const TransmissionJoint& t : out.joints) tracks.emplace_back(k0.mechanism(), t);
   for (int i = 0; i <= opt.steps; ++i) {
     const double crank = i * 360.0 / opt.steps;
     if (out.status = k.moveTo(crank); !out.status.ok()) break;

@@ -19,7 +19,7 @@ namespace linkage {
 
 class TransmissionTrack {
  public:
-  explicit TransmissionTrack(const TransmissionJoint& t);
+  TransmissionTrack(const Mechanism& m, const TransmissionJoint& t);
   void sample(const Kinematics& k);
   void closePeriod();
   std::vector<RootChannel*> channels();
@@ -30,6 +30,7 @@ class TransmissionTrack {
 
  private:
   TransmissionJoint t_;
+  Vec2 slot_ = Vec2::Zero();  // a rod's slot as drawn, on its body
   RootChannel stationary_, along_;
 };
 
