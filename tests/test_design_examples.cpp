@@ -10,6 +10,8 @@
 
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
+#include "linkage/limits.h"
+#include "reference/needle876.h"
 
 namespace linkage {
 namespace {
@@ -87,6 +89,45 @@ TEST(Needle876, AssemblesAsDrawnTurnsFullyAndStartsAtTheLowestPosition) {
     }
     ASSERT_TRUE(k.moveTo(360).ok());
     EXPECT_NEAR(k.position(G).y(), lowest, 1e-12);
+  }
+}
+
+TEST(Needle876, NeedleStrokeIsBetweenTheTwoStretchedAndFoldedPositions) {
+  // The needle stands still where crank and coupler are collinear: stretched (the drawing,
+  // crank angle 0: the bottom) and folded (|OB| = AB - OA = 160: the top). Closed form of the
+  // folded position in __float128: B on the circles (O, 160) and (C, 25), on the side where the
+  // reference's B passes, the crank pointing away from B.
+  using Q = __float128;
+  for (int alpha : {0, 35}) {
+    const Mechanism m = needle(alpha);
+    Kinematics k;
+    ASSERT_TRUE(k.load(m).ok());
+    const Limits lim = findLimits(
+        k, LimitMeasure::along(*m.findPoint("needlebar.G"), defaultDirection(m, m.outputs[0])));
+    ASSERT_TRUE(lim.status.ok()) << lim.status.message;
+    ASSERT_EQ(lim.extremes.size(), 2u);
+    const linkref::Needle876<Q> ref(alpha);
+    EXPECT_FALSE(lim.extremes[0].max);
+    EXPECT_NEAR(lim.extremes[0].crankDeg, 0, 1e-9);
+    EXPECT_NEAR(lim.extremes[0].value, static_cast<double>(ref.at(Q(0)).G.y), 1e-9);
+    const linkref::Vec2<Q> C = ref.C;
+    const Q d = linkref::norm(C), r = 160, x = (r * r - Q(625) + d * d) / (2 * d),
+            h = linkref::sqrt(r * r - x * x);
+    double best = 1e300, top = 0;
+    for (const Q side : {h, -h}) {
+      const linkref::Vec2<Q> B = (x / d) * C + (side / d) * linkref::perp(C);
+      Q deg = (linkref::atan2(-B.y, -B.x) - linkref::atan2(ref.at(Q(0)).A.y, ref.at(Q(0)).A.x)) *
+              180 / linkref::pi<Q>();
+      while (deg < 0) deg += 360;
+      const double miss = static_cast<double>(linkref::norm(ref.at(deg).B - B));
+      if (miss < best) best = miss, top = static_cast<double>(deg);
+    }
+    ASSERT_LT(best, 1e-9);
+    EXPECT_TRUE(lim.extremes[1].max);
+    EXPECT_NEAR(lim.extremes[1].crankDeg, top, 1e-9);
+    EXPECT_NEAR(lim.extremes[1].value, static_cast<double>(ref.at(Q(top)).G.y), 1e-9);
+    // The paper: 18 to 23 mm for alpha 0 to 35.
+    EXPECT_NEAR(lim.stroke, alpha == 0 ? 18 : 23, 0.5);
   }
 }
 
