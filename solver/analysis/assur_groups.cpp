@@ -50,7 +50,7 @@ std::vector<Link> links(const Mechanism& m) {
 
 class Search {
  public:
-  Search(const Mechanism& m, std::vector<Link> l) : m_(m), links_(std::move(l)) {
+  Search(const Mechanism& m, std::vector<Link> l) : links_(std::move(l)) {
     const int n = static_cast<int>(m.bodies.size());
     known_.assign(n, false);
     inSet_.assign(n, false);
@@ -127,16 +127,19 @@ class Search {
     return false;
   }
 
+  // The equations of the joints with an end in the set and the other known or in it, each
+  // counted once (from its first end in the set).
   bool fixes() const {
     int equations = 0;
-    for (const Link& l : links_) {
-      const bool ina = inSet_[l.a], inb = inSet_[l.b];
-      if ((ina && (inb || known_[l.b])) || (inb && known_[l.a])) equations += l.equations;
-    }
+    for (int b : set_)
+      for (int k : adjacent_[b]) {
+        const Link& l = links_[k];
+        const int other = l.a == b ? l.b : l.a;
+        if (known_[other] || (inSet_[other] && (l.a == b))) equations += l.equations;
+      }
     return equations >= 3 * static_cast<int>(set_.size());
   }
 
-  const Mechanism& m_;
   std::vector<Link> links_;
   std::vector<bool> known_, inSet_;
   std::vector<std::vector<int>> adjacent_;
