@@ -53,34 +53,17 @@ int limits(int argc, char** argv) {
       } else if (a == "--body") {
         body = *v;
       } else if (a == "--direction") {
-        if (!(direction = numberPair(a, *v))) return kBadInput;
-        if (direction->norm() == 0) {
-          error("--direction: must not be 0,0");
-          return kBadInput;
-        }
+        if (!(direction = numberPair(a, *v, true))) return kBadInput;
       } else {
-        std::optional<long long> n = wholeNumber(a, *v);
+        std::optional<long long> n = wholeNumberIn(a, *v, 4, 1'000'000);
         if (!n) return kBadInput;
-        if (*n < 4 || *n > 1'000'000) {
-          error("--steps: must be from 4 to 1000000, got " + *v);
-          return kBadInput;
-        }
         steps = *n;
       }
-    } else if (!a.empty() && a[0] == '-') {
-      error("limits: unknown option " + a + " (see linkage-cli limits --help)");
-      return kBadInput;
-    } else if (model.empty()) {
-      model = a;
-    } else {
-      error("limits: more than one MODEL given: " + model + ", " + a);
+    } else if (!modelArgument("limits", a, model)) {
       return kBadInput;
     }
   }
-  if (model.empty()) {
-    error("limits: no MODEL given (see linkage-cli limits --help)");
-    return kBadInput;
-  }
+  if (!modelGiven("limits", model)) return kBadInput;
   if (point.empty() == body.empty()) {
     error("limits: give either --point body.point or --body NAME");
     return kBadInput;
@@ -89,12 +72,8 @@ int limits(int argc, char** argv) {
     error("limits: --direction goes with --point");
     return kBadInput;
   }
-  std::optional<Mechanism> m = openModel(model);
+  std::optional<Mechanism> m = openDrivenModel(model);
   if (!m) return kBadInput;
-  if (!m->driver) {
-    error(model + ": the mechanism has no driver: add \"driver\": {\"joint\": <pin index>, ...}");
-    return kBadInput;
-  }
   LimitMeasure what;
   if (!point.empty()) {
     std::optional<std::vector<PointId>> ids = outputPoints(*m, {point});

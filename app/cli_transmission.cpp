@@ -58,12 +58,8 @@ int transmission(int argc, char** argv) {
       std::optional<std::string> v = optionValue(argc, argv, i);
       if (!v) return kBadInput;
       if (a == "--steps") {
-        std::optional<long long> n = wholeNumber(a, *v);
+        std::optional<long long> n = wholeNumberIn(a, *v, 4, 1'000'000);
         if (!n) return kBadInput;
-        if (*n < 4 || *n > 1'000'000) {
-          error("--steps: must be from 4 to 1000000, got " + *v);
-          return kBadInput;
-        }
         opt.steps = static_cast<int>(*n);
       } else {
         std::optional<Vec2> b = numberPair(a, *v);
@@ -74,35 +70,23 @@ int transmission(int argc, char** argv) {
         }
         opt.band = {b->x(), b->y()};
       }
-    } else if (!a.empty() && a[0] == '-') {
-      error("transmission: unknown option " + a + " (see linkage-cli transmission --help)");
-      return kBadInput;
-    } else if (model.empty()) {
-      model = a;
-    } else {
-      error("transmission: more than one MODEL given: " + model + ", " + a);
+    } else if (!modelArgument("transmission", a, model)) {
       return kBadInput;
     }
   }
-  if (model.empty()) {
-    error("transmission: no MODEL given (see linkage-cli transmission --help)");
-    return kBadInput;
-  }
-  std::optional<Mechanism> m = openModel(model);
+  if (!modelGiven("transmission", model)) return kBadInput;
+  std::optional<Mechanism> m = openDrivenModel(model);
   if (!m) return kBadInput;
-  if (!m->driver) {
-    error(model + ": the mechanism has no driver: add \"driver\": {\"joint\": <pin index>, ...}");
-    return kBadInput;
-  }
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;
   const TransmissionSweep s = sweepTransmission(k, opt);
   std::string out = "crank_deg";
-  for (const TransmissionJoint& t : s.joints) out += "," + t.label;
+  // append, not operator+: g++ 12 -Wrestrict false alarm (as in motion_table.cpp)
+  for (const TransmissionJoint& t : s.joints) out.append(",").append(t.label);
   out += "\n";
   for (size_t i = 0; i < s.crankDeg.size(); ++i) {
     out += formatNumber(s.crankDeg[i]);
-    for (const std::vector<double>& v : s.values) out += "," + formatNumber(v[i]);
+    for (const std::vector<double>& v : s.values) out.append(",").append(formatNumber(v[i]));
     out += "\n";
   }
   std::fwrite(out.data(), 1, out.size(), stdout);

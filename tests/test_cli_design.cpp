@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli_harness.h"
+#include "examples.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
 #include "linkage/kinematics.h"
@@ -35,17 +36,25 @@ double field(const std::string& text) {
   return v.value_or(NAN);
 }
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
-}
+using test::example;
+
+struct BadInput {
+  std::string args, message;
+};
 
 class DesignCli : public test::CliTest {
  protected:
   std::string write(const std::string& name, const Mechanism& m) {
     return "'" + writeFile(name, serializeMechanism(m)) + "'";
+  }
+  // Each runs to exit status 2, writes nothing on standard output, and says why.
+  void expectBadInput(const std::vector<BadInput>& cases) {
+    for (const BadInput& c : cases) {
+      CliResult r = run(c.args);
+      EXPECT_EQ(r.exit, 2) << c.args;
+      EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+      EXPECT_TRUE(r.out.empty()) << c.args;
+    }
   }
 };
 
@@ -86,29 +95,21 @@ TEST_F(DesignCli, LimitsCsvCarriesTheLibrarysExtremes) {
 }
 
 TEST_F(DesignCli, LimitsBadInputAndALockedCrank) {
-  struct Case {
-    std::string args, message;
-  };
-  for (const Case& c : std::vector<Case>{
-           {"limits", "no MODEL given"},
-           {"limits four-bar-crank-rocker", "give either --point body.point or --body NAME"},
-           {"limits four-bar-crank-rocker --point coupler.P --body rocker", "give either"},
-           {"limits four-bar-crank-rocker --body rocker --direction 0,1", "goes with --point"},
-           {"limits four-bar-crank-rocker --point coupler.Q", "no point \"Q\" on body"},
-           {"limits four-bar-crank-rocker --body nobody", "--body nobody: no body"},
-           {"limits four-bar-crank-rocker --point coupler.P --direction 0,0", "must not be 0,0"},
-           {"limits four-bar-crank-rocker --point coupler.P --direction 1", "not two numbers"},
-           {"limits four-bar-crank-rocker --point coupler.P --direction 1,x", "not a number"},
-           {"limits four-bar-crank-rocker --point coupler.P --steps 3", "from 4 to 1000000"},
-           {"limits four-bar-crank-rocker --point coupler.P --steps", "needs a value"},
-           {"limits four-bar-crank-rocker --point coupler.P --frob", "unknown option --frob"},
-           {"limits nosuchfile --point a.b", "no such file"},
-       }) {
-    CliResult r = run(c.args);
-    EXPECT_EQ(r.exit, 2) << c.args;
-    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
-    EXPECT_TRUE(r.out.empty()) << c.args;
-  }
+  expectBadInput({
+      {"limits", "no MODEL given"},
+      {"limits four-bar-crank-rocker", "give either --point body.point or --body NAME"},
+      {"limits four-bar-crank-rocker --point coupler.P --body rocker", "give either"},
+      {"limits four-bar-crank-rocker --body rocker --direction 0,1", "goes with --point"},
+      {"limits four-bar-crank-rocker --point coupler.Q", "no point \"Q\" on body"},
+      {"limits four-bar-crank-rocker --body nobody", "--body nobody: no body"},
+      {"limits four-bar-crank-rocker --point coupler.P --direction 0,0", "must not be 0,0"},
+      {"limits four-bar-crank-rocker --point coupler.P --direction 1", "not two numbers"},
+      {"limits four-bar-crank-rocker --point coupler.P --direction 1,x", "not a number"},
+      {"limits four-bar-crank-rocker --point coupler.P --steps 3", "from 4 to 1000000"},
+      {"limits four-bar-crank-rocker --point coupler.P --steps", "needs a value"},
+      {"limits four-bar-crank-rocker --point coupler.P --frob", "unknown option --frob"},
+      {"limits nosuchfile --point a.b", "no such file"},
+  });
   const test::FourBar locked = test::fourBar(60, 40, 50, 45, 70);
   CliResult r = run("limits " + write("locked.linkage.json", locked.m) + " --point coupler.B");
   EXPECT_EQ(r.exit, 3);
@@ -170,25 +171,17 @@ TEST_F(DesignCli, TransmissionOutOfBandIsExitFourWithTheRowsWritten) {
 }
 
 TEST_F(DesignCli, TransmissionBadInput) {
-  struct Case {
-    std::string args, message;
-  };
-  for (const Case& c : std::vector<Case>{
-           {"transmission", "no MODEL given"},
-           {"transmission four-bar-crank-rocker --band 150,30", "low end must be below"},
-           {"transmission four-bar-crank-rocker --band 30", "not two numbers"},
-           {"transmission four-bar-crank-rocker --band a,b", "not a number"},
-           {"transmission four-bar-crank-rocker --steps 0", "from 4 to 1000000"},
-           {"transmission four-bar-crank-rocker --steps 1.5", "not a whole number"},
-           {"transmission four-bar-crank-rocker --point x", "unknown option --point"},
-           {"transmission four-bar-crank-rocker four-bar-crank-rocker", "more than one MODEL"},
-           {"transmission nosuchfile", "no such file"},
-       }) {
-    CliResult r = run(c.args);
-    EXPECT_EQ(r.exit, 2) << c.args;
-    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
-    EXPECT_TRUE(r.out.empty()) << c.args;
-  }
+  expectBadInput({
+      {"transmission", "no MODEL given"},
+      {"transmission four-bar-crank-rocker --band 150,30", "low end must be below"},
+      {"transmission four-bar-crank-rocker --band 30", "not two numbers"},
+      {"transmission four-bar-crank-rocker --band a,b", "not a number"},
+      {"transmission four-bar-crank-rocker --steps 0", "from 4 to 1000000"},
+      {"transmission four-bar-crank-rocker --steps 1.5", "not a whole number"},
+      {"transmission four-bar-crank-rocker --point x", "unknown option --point"},
+      {"transmission four-bar-crank-rocker four-bar-crank-rocker", "more than one MODEL"},
+      {"transmission nosuchfile", "no such file"},
+  });
   EXPECT_EQ(run("transmission --help").exit, 0);
 }
 
@@ -294,49 +287,38 @@ TEST_F(DesignCli, StudyBadInputAndThreads) {
   CliResult one = run(ok + " --threads 1"), three = run(ok + " --threads 3");
   ASSERT_EQ(one.exit, 0) << one.err;
   EXPECT_EQ(one.out, three.out);
-  struct Case {
-    std::string args, message;
-  };
   const std::string m = "study four-bar-crank-rocker ";
-  for (const Case& c : std::vector<Case>{
-           {"study", "no MODEL given"},
-           {m + "--by 1,0 --from 0 --to 1 --steps 3 --point coupler.P", "--move is required"},
-           {m + "--move ground.O4 --by 1,0 --to 1 --steps 3 --point coupler.P",
-            "--from is required"},
-           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --point coupler.P",
-            "--steps is required"},
-           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3", "--point is required"},
-           {m + "--move ground.O4 --from 0 --to 1 --steps 3 --point coupler.P", "either --by"},
-           {m + "--move ground.O4 --by 1,0 --about 0,0 --angle 5 --from 0 --to 1 --steps 3 "
-                "--point coupler.P",
-            "either --by"},
-           {m + "--move ground.O4 --about 0,0 --from 0 --to 1 --steps 3 --point coupler.P",
-            "--about and --angle go together"},
-           {m + "--move ground.Q --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P",
-            "no point \"Q\" on body \"ground\""},
-           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 0 --point coupler.P",
-            "--steps: must be from 1"},
-           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P "
-                "--crank-steps 2",
-            "--crank-steps: must be from 4"},
-           {m + "--move ground.O4 --by 1,0 --from 0 --to x --steps 3 --point coupler.P",
-            "not a number"},
-           {m + "--move ground.O4 --by 1 --from 0 --to 1 --steps 3 --point coupler.P",
-            "not two numbers"},
-           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P "
-                "--body nobody",
-            "--body nobody: no body"},
-           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P "
-                "--direction 0,0",
-            "must not be 0,0"},
-           {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P --frob 1",
-            "unknown option --frob"},
-       }) {
-    CliResult r = run(c.args);
-    EXPECT_EQ(r.exit, 2) << c.args;
-    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
-    EXPECT_TRUE(r.out.empty()) << c.args;
-  }
+  expectBadInput({
+      {"study", "no MODEL given"},
+      {m + "--by 1,0 --from 0 --to 1 --steps 3 --point coupler.P", "--move is required"},
+      {m + "--move ground.O4 --by 1,0 --to 1 --steps 3 --point coupler.P", "--from is required"},
+      {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --point coupler.P", "--steps is required"},
+      {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3", "--point is required"},
+      {m + "--move ground.O4 --from 0 --to 1 --steps 3 --point coupler.P", "either --by"},
+      {m + "--move ground.O4 --by 1,0 --about 0,0 --angle 5 --from 0 --to 1 --steps 3 "
+           "--point coupler.P",
+       "either --by"},
+      {m + "--move ground.O4 --about 0,0 --from 0 --to 1 --steps 3 --point coupler.P",
+       "--about and --angle go together"},
+      {m + "--move ground.Q --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P",
+       "no point \"Q\" on body \"ground\""},
+      {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 0 --point coupler.P",
+       "--steps: must be from 1"},
+      {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P "
+           "--crank-steps 2",
+       "--crank-steps: must be from 4"},
+      {m + "--move ground.O4 --by 1,0 --from 0 --to x --steps 3 --point coupler.P", "not a number"},
+      {m + "--move ground.O4 --by 1 --from 0 --to 1 --steps 3 --point coupler.P",
+       "not two numbers"},
+      {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P "
+           "--body nobody",
+       "--body nobody: no body"},
+      {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P "
+           "--direction 0,0",
+       "must not be 0,0"},
+      {m + "--move ground.O4 --by 1,0 --from 0 --to 1 --steps 3 --point coupler.P --frob 1",
+       "unknown option --frob"},
+  });
   EXPECT_EQ(run("study --help").exit, 0);
 }
 

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <string>
 
+#include "examples.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
 #include "linkage/limits.h"
@@ -17,10 +18,7 @@ namespace linkage {
 namespace {
 
 Mechanism needle(int alpha) {
-  LoadResult r = loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/needle-876-alpha-" +
-                                   std::to_string(alpha) + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
+  return test::example("needle-876-alpha-" + std::to_string(alpha));
 }
 
 Vec2 at(const Mechanism& m, const std::string& dotted) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "analysis/assur_groups.h"
+#include "examples.h"
 #include "linkage/grashof.h"
 #include "linkage/io/model_file.h"
 #include "mechanisms.h"
@@ -14,12 +15,7 @@
 namespace linkage {
 namespace {
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
-}
+using test::example;
 
 std::string names(const Mechanism& m, const std::vector<BodyId>& bodies) {
   std::string s;

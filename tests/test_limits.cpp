@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "examples.h"
 #include "linkage/io/model_file.h"
 #include "linkage/limits.h"
 #include "mechanisms.h"
@@ -23,12 +24,7 @@ using linkref::Vec2;
 constexpr double kTolDeg = 1e-9;  // the crank angle of every extreme
 constexpr double kTolMm = 1e-9;   // and the value there (mm, or degrees for a body)
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
-}
+using test::example;
 
 // The crank angle (degrees in [0, 360)) of an absolute crank direction theta, for a crank drawn
 // at theta0 turning in direction s.

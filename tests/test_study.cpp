@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "examples.h"
 #include "linkage/io/model_file.h"
 #include "linkage/study.h"
 #include "mechanisms.h"
@@ -15,12 +16,7 @@
 namespace linkage {
 namespace {
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
-}
+using test::example;
 
 std::vector<std::string> labels(const Mechanism& m, const std::vector<PointId>& ps) {
   std::vector<std::string> out;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "examples.h"
 #include "linkage/io/model_file.h"
 #include "linkage/transmission.h"
 #include "mechanisms.h"
@@ -19,12 +20,7 @@ using Q = __float128;
 
 constexpr double kTol = 1e-9;  // degrees of angle and of crank
 
-Mechanism example(const std::string& name) {
-  LoadResult r =
-      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json");
-  EXPECT_TRUE(r.mechanism.has_value()) << r.error;
-  return r.mechanism ? *r.mechanism : Mechanism{};
-}
+using test::example;
 
 double wrap360(double d) {
   d = std::fmod(d, 360.0);
