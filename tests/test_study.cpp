@@ -70,6 +70,7 @@ TEST(Study, RowsAreTheDesignChecksOfTheMovedMechanisms) {
   spec.point = f.P;
   spec.direction = Vec2(0, 1);
   spec.bodies = {f.rocker, f.coupler};
+  spec.keepPaths = true;
   const Study s = runStudy(f.m, spec);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   ASSERT_EQ(s.rows.size(), 7u);
@@ -95,8 +96,10 @@ TEST(Study, RowsAreTheDesignChecksOfTheMovedMechanisms) {
     EXPECT_EQ(r.transmission[0].min, tr.summaries[0].min);
     EXPECT_EQ(r.transmission[0].max, tr.summaries[0].max);
     double speed = 0, accel = 0;
+    ASSERT_EQ(r.path.size(), 361u);
     for (int deg = 0; deg <= 360; ++deg) {
       ASSERT_TRUE(k.moveTo(deg).ok());
+      EXPECT_EQ(r.path[deg], k.position(f.P));
       speed = std::max(speed, std::hypot(k.velocity(f.P).x(), k.velocity(f.P).y()));
       accel = std::max(accel, std::hypot(k.acceleration(f.P).x(), k.acceleration(f.P).y()));
     }
@@ -140,6 +143,7 @@ TEST(Study, AStudyThatPassesTheGrashofLimitReportsWhereTheCrankStops) {
     EXPECT_EQ(r.status.code, StatusCode::Unreachable) << r.status.message;
     ASSERT_TRUE(r.lockDeg.has_value());
     EXPECT_TRUE(r.point.extremes.empty());
+    EXPECT_TRUE(r.path.empty());  // not asked for
     // Turning on from the drawing, the first crank angle where coupler and rocker no longer
     // reach: |A O4| leaves [|r3 - r4|, r3 + r4] (marched by 0.01 degree, then bisected).
     auto reach = [&](double deg) {

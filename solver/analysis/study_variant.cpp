@@ -31,6 +31,7 @@ StudyRow measureVariant(const Mechanism& moved, const StudySpec& spec, const Vec
       return row;
     }
     const Kinematics::PointMotion p = k.motion(spec.point);
+    if (spec.keepPaths) row.path.push_back(p.position);
     row.peakSpeed = std::max(row.peakSpeed, std::hypot(p.velocity.x(), p.velocity.y()));
     row.peakAccel = std::max(row.peakAccel, std::hypot(p.acceleration.x(), p.acceleration.y()));
     point.sample(k);

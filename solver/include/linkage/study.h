@@ -47,6 +47,8 @@ struct StudySpec {
   std::vector<BodyId> bodies;     // whose swings
   int steps = 360;                // samples per turn of the crank (at least 4)
   int threads = 0;                // 0: one per core
+  // Keep each variant's path of the point (what an editor overlays to compare the designs).
+  bool keepPaths = false;
 };
 
 struct StudyRow {
@@ -61,6 +63,9 @@ struct StudyRow {
   double peakAccel = 0;           // largest |a|, mm/s^2
   std::vector<Limits> bodies;     // swings, in the order of StudySpec::bodies
   std::vector<TransmissionSummary> transmission;  // extremes, min and max (no stretches)
+  // With keepPaths: the point's position at crank angles 360 i / steps, as far as the crank
+  // turned.
+  std::vector<Vec2> path;
 };
 
 struct Study {
