@@ -12,15 +12,12 @@
 #include "linkage/limits.h"
 #include "linkage/transmission.h"
 #include "mechanisms.h"
+#include "slow_build.h"
 
 namespace linkage {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__OPTIMIZE__) == 0
-constexpr int kCases = 60;  // sanitizers or -O0: fewer cases
-#else
-constexpr int kCases = 240;
-#endif
+constexpr int kCases = test::kSlowBuild ? 60 : 240;
 
 // Local extremes of a continuous periodic quantity alternate.
 template <class E>

@@ -12,7 +12,7 @@ Run from anywhere:  python3 resources/examples/needle_876.py
 
 from decimal import Decimal, getcontext
 
-from generate import plain, write
+from generate import linkage_file, plain, write
 
 getcontext().prec = 50
 D = Decimal
@@ -94,12 +94,9 @@ def mechanism(s, alpha_deg):
     F = tuple(plain(float(v)) for v in pivot_F(s, alpha_deg))
     H = (plain(float(XC + B_SLOT)), 0)
     pts = lambda **kw: {k: list(v) for k, v in kw.items()}  # noqa: E731
-    return {
-        "format": "linkage",
-        "version": 1,
-        "name": f"876-class needle mechanism (eight links), alpha = {alpha_deg} degrees",
-        "units": {"length": "mm"},
-        "bodies": [
+    return linkage_file(
+        f"876-class needle mechanism (eight links), alpha = {alpha_deg} degrees",
+        [
             {"name": "ground", "ground": True, "number": 1,
              "points": pts(O=(0, 0), C=r["C"], F=F),
              "slots": {"guide": [list(H), [H[0], 150]]}},
@@ -111,7 +108,7 @@ def mechanism(s, alpha_deg):
             {"name": "rod", "number": 7, "points": pts(E=r["E"], G=r["G"])},
             {"name": "needlebar", "number": 8, "points": pts(G=r["G"])},
         ],
-        "joints": [
+        [
             {"type": "pin", "a": "ground.O", "b": "crank.O"},
             {"type": "pin", "a": "crank.A", "b": "coupler.A"},
             {"type": "pin", "a": "coupler.B", "b": "lever.B"},
@@ -123,9 +120,8 @@ def mechanism(s, alpha_deg):
             {"type": "pin", "a": "rod.G", "b": "needlebar.G"},
             {"type": "slider", "a": "needlebar.G", "slot": "ground.guide"},
         ],
-        "driver": {"joint": 0, "rpm": 1000, "direction": "ccw"},
-        "outputs": {"points": ["needlebar.G"]},
-    }
+        {"joint": 0, "rpm": 1000, "direction": "ccw"},
+        ["needlebar.G"])
 
 
 def main():
