@@ -1,7 +1,10 @@
 // linkage-cli info: what the program makes of a mechanism (structure, assembly) before analysis.
+#include <algorithm>
+#include <array>
 #include <iostream>
 
 #include "cli_common.h"
+#include "linkage/grashof.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
 
@@ -12,9 +15,27 @@ const char* kHelp = R"(usage: linkage-cli info MODEL
 
 Describes MODEL (a .linkage.json file or an example name): bodies, joints, driver, the degrees
 of freedom (Gruebler count and the rank of the joint equations), redundant joints, and how far
-the drawing had to move to close. Exit status 0, or 2 when the mechanism cannot be used (the
-message says why and where).
+the drawing had to move to close, and Grashof's class of every four-bar loop (frame, input,
+coupler, output as the structure solves them; lengths between pins as drawn). Exit status 0,
+or 2 when the mechanism cannot be used (the message says why and where).
 )";
+
+// "four-bar loop ground-crank-coupler-rocker: frame 60, input 20, coupler 70, output 50 mm:
+// crank-rocker (s + l = 90 < p + q = 110)".
+void printFourBarLoops(const Mechanism& m) {
+  for (const FourBarLoop& l : fourBarLoops(m)) {
+    std::string names;
+    for (BodyId b : l.bodies) names += (names.empty() ? "" : "-") + m.body(b)->name;
+    std::array<double, 4> s = l.lengths;
+    std::sort(s.begin(), s.end());
+    const char* rel = l.kind == GrashofClass::ChangePoint ? " = " : l.margin > 0 ? " < " : " > ";
+    std::cout << "four-bar loop " << names << ": frame " << formatNumber(l.lengths[0], 6)
+              << ", input " << formatNumber(l.lengths[1], 6) << ", coupler "
+              << formatNumber(l.lengths[2], 6) << ", output " << formatNumber(l.lengths[3], 6)
+              << " mm: " << toString(l.kind) << " (s + l = " << formatNumber(s[0] + s[3], 6) << rel
+              << "p + q = " << formatNumber(s[1] + s[2], 6) << ")\n";
+  }
+}
 }  // namespace
 
 int info(int argc, char** argv) {
@@ -63,6 +84,7 @@ int info(int argc, char** argv) {
   }
   if (e == kOk)
     std::cout << "assembly: moved up to " << formatNumber(k.assembly().maxMove, 6) << " mm\n";
+  printFourBarLoops(*m);
   return e;
 }
 

@@ -11,6 +11,9 @@ int analyze(int argc, char** argv);
 int ics(int argc, char** argv);
 int info(int argc, char** argv);
 int plot(int argc, char** argv);
+int limits(int argc, char** argv);
+int transmission(int argc, char** argv);
+int study(int argc, char** argv);
 }  // namespace linkage::cli
 
 namespace {
@@ -22,6 +25,9 @@ Commands:
   info MODEL          structure of a mechanism: degrees of freedom, redundant joints, assembly
   ics MODEL --angle D instant centres (Kennedy-Aronhold) at a crank angle; velocity chains
   plot MODEL...       figure of position, velocity, acceleration of a point (PNG, PDF, SVG)
+  limits MODEL ...    limit positions and stroke of a point along a direction or of a body
+  transmission MODEL  transmission angles over a turn, checked against a band (30 to 150)
+  study MODEL ...     one point moved over a range: stroke, swings, transmission, peaks
   examples            list the example mechanisms that MODEL can name
 
 MODEL is a .linkage.json file or the name of an example (e.g. wanzer-inversion-2).
@@ -43,6 +49,9 @@ int main(int argc, char** argv) {
   if (cmd == "info") return info(argc - 2, argv + 2);
   if (cmd == "ics") return ics(argc - 2, argv + 2);
   if (cmd == "plot") return plot(argc - 2, argv + 2);
+  if (cmd == "limits") return limits(argc - 2, argv + 2);
+  if (cmd == "transmission") return transmission(argc - 2, argv + 2);
+  if (cmd == "study") return study(argc - 2, argv + 2);
   if (cmd == "examples") {
     if (argc > 2 && isHelp(argv[2])) {
       std::cout << "usage: linkage-cli examples\n\nLists the example mechanisms by name.\n";

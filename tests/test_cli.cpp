@@ -205,6 +205,34 @@ TEST_F(Cli, OutputIgnoresTheLocale) {
   EXPECT_EQ(c.out, de.out);
 }
 
+TEST_F(Cli, InfoClassifiesEveryFourBarLoop) {
+  CliRun r = run("info four-bar-crank-rocker");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  EXPECT_NE(r.out.find("\nfour-bar loop ground-crank-coupler-rocker: frame 60, input 20, coupler "
+                       "70, output 50 mm: crank-rocker (s + l = 90 < p + q = 110)\n"),
+            std::string::npos)
+      << r.out;
+  r = run("info needle-876-alpha-0");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  EXPECT_NE(r.out.find("\nfour-bar loop ground-crank-coupler-lever: frame 175.923, input 15, "
+                       "coupler 175, output 25 mm: crank-rocker (s + l = 190.923 < p + q = 200)\n"
+                       "four-bar loop ground-lever-link-rocker: frame 37.9446, input 17, coupler "
+                       "30, output 25 mm: crank-rocker (s + l = 54.9446 < p + q = 55)\n"),
+            std::string::npos)
+      << r.out;
+  // The lines before are those of a mechanism without loops.
+  EXPECT_EQ(r.out.find("four-bar"), r.out.find("assembly: moved up to 0 mm\n") + 27);
+  auto f = test::fourBar(60, 20, 60, 20, 70);  // a parallelogram
+  r = run("info '" + write("p.linkage.json", serializeMechanism(f.m)) + "'");
+  EXPECT_NE(r.out.find(": change point (s + l = 80 = p + q = 80)\n"), std::string::npos) << r.out;
+  f = test::fourBar(60, 40, 50, 45, 70);
+  r = run("info '" + write("n.linkage.json", serializeMechanism(f.m)) + "'");
+  EXPECT_NE(r.out.find(": double-rocker (non-Grashof) (s + l = 100 > p + q = 95)\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(run("info wanzer-inversion-2").out.find("four-bar"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace linkage
 #endif

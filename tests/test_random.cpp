@@ -11,15 +11,12 @@
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
+#include "slow_build.h"
 
 namespace linkage {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__OPTIMIZE__) == 0
-constexpr int kScale = 1;  // sanitizers or -O0: fewer cases
-#else
-constexpr int kScale = 4;
-#endif
+constexpr int kScale = test::kSlowBuild ? 1 : 4;
 
 // Loads and turns a mechanism two revolutions; checks every outcome is finite or explained.
 void exercise(const Mechanism& m, const std::string& what) {

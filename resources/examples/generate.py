@@ -62,6 +62,12 @@ def newton(residual_jacobian, q, max_iter=60):
     raise RuntimeError("Newton did not converge")
 
 
+def linkage_file(name, bodies, joints, driver, outputs):
+    """A mechanism file's contents, its keys in the order of the format spec."""
+    return {"format": "linkage", "version": 1, "name": name, "units": {"length": "mm"},
+            "bodies": bodies, "joints": joints, "driver": driver, "outputs": {"points": outputs}}
+
+
 # ----------------------------------------------------------------------------------------------
 # Wanzer needle bar (ME 481 H05): triangle EF 16, FG 56, EG 62; slot B is x = 10, slot C is y = 10
 # on the disk (disk frame = global frame in the sketch); needle slot D is x = 0.
@@ -120,12 +126,9 @@ def wanzer_sketch(inv, start):
 def wanzer_file(inv, E, F, G):
     # The slot that carries each slider is what distinguishes the inversions.
     slot4, slot5 = ("disk.B", "disk.C") if inv == 2 else ("disk.C", "disk.B")
-    return {
-        "format": "linkage",
-        "version": 1,
-        "name": f"Wanzer needle bar, inversion {inv}",
-        "units": {"length": "mm"},
-        "bodies": [
+    return linkage_file(
+        f"Wanzer needle bar, inversion {inv}",
+        [
             {"name": "ground", "ground": True, "number": 1,
              "points": {"A": [0, 0]},
              "slots": {"D": [[0, 0], [0, -100]]}},
@@ -138,7 +141,7 @@ def wanzer_file(inv, E, F, G):
             {"name": "slider5", "number": 5, "points": {"F": list(F)}},
             {"name": "needlebar", "number": 6, "points": {"G": list(G)}},
         ],
-        "joints": [
+        [
             {"type": "pin", "a": "ground.A", "b": "disk.A"},
             {"type": "pin", "a": "triangle.E", "b": "slider4.E"},
             {"type": "slider", "a": "slider4.E", "slot": slot4},
@@ -147,9 +150,8 @@ def wanzer_file(inv, E, F, G):
             {"type": "pin", "a": "triangle.G", "b": "needlebar.G"},
             {"type": "slider", "a": "needlebar.G", "slot": "ground.D"},
         ],
-        "driver": {"joint": 0, "rpm": 240, "direction": "cw"},
-        "outputs": {"points": ["needlebar.G"]},
-    }
+        {"joint": 0, "rpm": 240, "direction": "cw"},
+        ["needlebar.G"])
 
 
 # ----------------------------------------------------------------------------------------------
@@ -157,12 +159,9 @@ def wanzer_file(inv, E, F, G):
 # the outer dead centre. Exact integers, nothing to solve.
 def slider_crank_file(lam_text, l):
     r = 15
-    return {
-        "format": "linkage",
-        "version": 1,
-        "name": f"Central slider-crank needle bar (22-A), lambda = {lam_text}",
-        "units": {"length": "mm"},
-        "bodies": [
+    return linkage_file(
+        f"Central slider-crank needle bar (22-A), lambda = {lam_text}",
+        [
             {"name": "ground", "ground": True, "number": 1,
              "points": {"O": [0, 0]},
              "slots": {"guide": [[0, 0], [0, 120]]}},
@@ -170,15 +169,14 @@ def slider_crank_file(lam_text, l):
             {"name": "rod", "number": 3, "points": {"A": [0, r], "B": [0, r + l]}},
             {"name": "needlebar", "number": 4, "points": {"B": [0, r + l]}},
         ],
-        "joints": [
+        [
             {"type": "pin", "a": "ground.O", "b": "crank.O"},
             {"type": "pin", "a": "crank.A", "b": "rod.A"},
             {"type": "pin", "a": "rod.B", "b": "needlebar.B"},
             {"type": "slider", "a": "needlebar.B", "slot": "ground.guide"},
         ],
-        "driver": {"joint": 0, "rpm": 1000, "direction": "ccw"},
-        "outputs": {"points": ["needlebar.B"]},
-    }
+        {"joint": 0, "rpm": 1000, "direction": "ccw"},
+        ["needlebar.B"])
 
 
 # ----------------------------------------------------------------------------------------------
@@ -206,27 +204,23 @@ def four_bar_file():
     for exact, fl in ((A, Af), (B, Bf), (P, Pf)):  # the float closed form agrees to rounding
         assert all(abs(x - y) <= 1e-13 * max(1.0, abs(x)) for x, y in zip(exact, fl))
     assert B[1] > 0
-    data = {
-        "format": "linkage",
-        "version": 1,
-        "name": "Four-bar crank-rocker with coupler point",
-        "units": {"length": "mm"},
-        "bodies": [
+    data = linkage_file(
+        "Four-bar crank-rocker with coupler point",
+        [
             {"name": "ground", "ground": True, "number": 1,
              "points": {"O2": [0, 0], "O4": [60, 0]}},
             {"name": "crank", "number": 2, "points": {"O2": [0, 0], "A": list(A)}},
             {"name": "coupler", "number": 3, "points": {"A": list(A), "B": list(B), "P": list(P)}},
             {"name": "rocker", "number": 4, "points": {"B": list(B), "O4": [60, 0]}},
         ],
-        "joints": [
+        [
             {"type": "pin", "a": "ground.O2", "b": "crank.O2"},
             {"type": "pin", "a": "crank.A", "b": "coupler.A"},
             {"type": "pin", "a": "coupler.B", "b": "rocker.B"},
             {"type": "pin", "a": "rocker.O4", "b": "ground.O4"},
         ],
-        "driver": {"joint": 0, "rpm": 60, "direction": "ccw"},
-        "outputs": {"points": ["coupler.P"]},
-    }
+        {"joint": 0, "rpm": 60, "direction": "ccw"},
+        ["coupler.P"])
     return data, (A, B, P)
 
 

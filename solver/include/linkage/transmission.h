@@ -1,0 +1,100 @@
+// Transmission angles: at every joint where a link drives another body through the joint, how
+// well it does, over a turn of the crank (seed 001's mu_1, mu_2, mu_3 and its band of 30 to 150
+// degrees).
+//
+// The joints are found from the topology (analysis/assur_groups.h), in the groups a designer
+// would solve from the ground outwards, so every mechanism gets them, not only the examples:
+// - Dyad: a pin-pin-pin group, links B1 and B2 with a middle pin C and outer pins P1 and P2 to
+//   bodies known before them: the angle between C->P1 and C->P2, 0 to 180 degrees (mu_1, mu_2
+//   of the paper, formula 4). 0 and 180 are the group's toggle positions.
+// - RodSlider: a rod pinned to a known body at P1 and to a slider block at C, the block in a
+//   slot: 90 degrees minus the angle between the rod and the slot's line (mu_3, formula 11).
+// - RodInSlot: the same with the rod's own point C in a known body's slot (pin-in-slot).
+// Other groups (the Wanzer triangle's class-III group, a block sliding along a rotating link)
+// have no such joint and are not reported.
+//
+// Each angle is read from the solved pose, and its rate from the bodies' angular velocities
+// (the angle between two lines fixed in two bodies changes at the difference of their rates),
+// so its extremes and its crossings of the band are found by root finding to 1e-9 degree of
+// crank, as limit positions are (linkage/limits.h): the minimum and maximum are exact, not
+// the best of the samples.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "linkage/kinematics.h"
+
+namespace linkage {
+
+enum class TransmissionKind { Dyad, RodSlider, RodInSlot };
+const char* toString(TransmissionKind k);  // "dyad", "rod-slider", "rod-in-slot"
+
+struct TransmissionJoint {
+  TransmissionKind kind = TransmissionKind::Dyad;
+  JointId joint;                // the middle pin (Dyad), the rod-block pin, or the pin-in-slot
+  BodyId link;                  // B1, or the rod
+  BodyId other;                 // B2 (Dyad) or the body that holds the slot
+  PointId linkOuter, linkAt;    // on `link`: its pin to a known body, its point at the joint
+  PointId otherOuter, otherAt;  // Dyad: on `other`, likewise
+  SlotId slot;                  // RodSlider, RodInSlot
+  std::string label;            // "mu:" and the joint's `a` point as in the file
+};
+
+// In the order the structure solves the groups (the paper's mu_1, mu_2, mu_3 for its mechanism).
+std::vector<TransmissionJoint> transmissionJoints(const Mechanism& m);
+
+// The angle at k's pose, in degrees, with its first and second derivatives per degree of crank
+// (NaN where k's velocities or accelerations are not known).
+struct TransmissionReading {
+  double deg = 0, perDeg = 0, perDeg2 = 0;
+};
+TransmissionReading transmissionAngle(const Kinematics& k, const TransmissionJoint& t);
+
+struct TransmissionBand {
+  double lo = 30, hi = 150;
+};
+
+// A stretch of crank angle where the angle is outside the band: from fromDeg (in [0, 360)) to
+// toDeg > fromDeg, which passes 360 when the stretch wraps past crank angle 0.
+struct TransmissionStretch {
+  double fromDeg = 0, toDeg = 0;
+  bool below = true;  // below lo, else above hi
+};
+
+struct TransmissionExtreme {
+  bool max = false;
+  double crankDeg = 0;
+  double deg = 0;
+};
+
+struct TransmissionSummary {
+  double min = 0, minDeg = 0;  // the smallest angle over the turn and its crank angle
+  double max = 0, maxDeg = 0;
+  std::vector<TransmissionExtreme> extremes;  // every local extreme, crank order
+  std::vector<TransmissionStretch> outside;   // crank order of fromDeg
+  bool inBand() const { return outside.empty(); }
+};
+
+struct TransmissionOptions {
+  int steps = 360;  // samples over the turn (at least 4)
+  TransmissionBand band;
+  double toleranceDeg = 1e-9;
+};
+
+struct TransmissionSweep {
+  // BadModel (options), or the solver's status where the crank cannot turn fully; then
+  // crankDeg and values hold the samples reached and summaries is empty.
+  Status status;
+  TransmissionBand band;
+  std::vector<TransmissionJoint> joints;
+  std::vector<double> crankDeg;                // 0, 360/steps, ..., 360
+  std::vector<std::vector<double>> values;     // [joint][sample], degrees
+  std::vector<TransmissionSummary> summaries;  // [joint]
+  bool inBand() const;
+};
+
+// Sweeps a copy of k over crank angles 0 to 360 (k itself does not move).
+TransmissionSweep sweepTransmission(const Kinematics& k, const TransmissionOptions& opt = {});
+
+}  // namespace linkage
