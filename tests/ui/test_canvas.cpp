@@ -199,7 +199,10 @@ TEST(Canvas, VelocityChainIsWrittenOutAndItsDistancesDrawn) {
   const Vec2 exact = w.document()->kinematics().velocity(ch.point);
   EXPECT_LT((ch.velocity - exact).norm(), 1e-9 * exact.norm());
   EXPECT_NE(panel->chainText().indexOf("IC(2,6)"), -1);
-  // |IC(1,2) P| drawn with its length; IC(1,6) is at infinity, so that is the only distance.
+  // Drawn with the instant centres: |IC(1,2) P| with its length; IC(1,6) is at infinity, so
+  // that is the only distance.
+  EXPECT_TRUE(w.scene()->chainItem()->dimensions().empty());
+  w.action("showCentres")->setChecked(true);
   const auto& dims = w.scene()->chainItem()->dimensions();
   ASSERT_EQ(dims.size(), 1u);
   EXPECT_LT((dims[0].b - ch.steps[0].centre).norm(), 1e-12);

@@ -7,3 +7,11 @@
 inline void PrintTo(const QString& s, std::ostream* os) {
   *os << '"' << s.toStdString() << '"';
 }
+
+#include <QWidget>
+
+// With LINKAGE_TEST_SHOTS=DIR set, a test leaves a picture of a widget there, to look at.
+inline void shot(QWidget* w, const char* name) {
+  const QByteArray dir = qgetenv("LINKAGE_TEST_SHOTS");
+  if (!dir.isEmpty()) w->grab().save(QString::fromLocal8Bit(dir) + "/" + name + ".png");
+}

@@ -26,8 +26,9 @@ QString SelectTool::hint() const {
     case Mode::Reshape:
       return tr("Changing the design: the point moves in its link; release to keep, Esc to undo");
     default:
-      return tr("Select: click a point, joint, slot or link (Shift adds); drag a point to move "
-                "the mechanism, Ctrl+drag to change the design");
+      return tr(
+          "Select: click a point, joint, slot or link (Shift adds); drag a point to move "
+          "the mechanism, Ctrl+drag to change the design");
   }
 }
 

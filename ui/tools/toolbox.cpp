@@ -53,11 +53,9 @@ Toolbox::Toolbox(ToolContext ctx, QWidget* actionParent) : QObject(actionParent)
        tr("Draw a link point by point; on a point of another link it pins there"),
        new LinkTool(&ctx_));
   tool("ground", tr("&Ground Pivot"), QKeySequence(tr("G")),
-       tr("Pin a point to the ground, or put a ground point on the canvas"),
-       new GroundTool(&ctx_));
+       tr("Pin a point to the ground, or put a ground point on the canvas"), new GroundTool(&ctx_));
   tool("slot", tr("Sl&ot"), QKeySequence(tr("T")),
-       tr("Draw a slot on the link under the first click, or in the ground"),
-       new SlotTool(&ctx_));
+       tr("Draw a slot on the link under the first click, or in the ground"), new SlotTool(&ctx_));
   tool("block", tr("Slider &Block"), QKeySequence(tr("B")),
        tr("Put a slider block at a point, sliding in a slot"),
        new SlotJointTool(&ctx_, JointType::Slider));
@@ -66,8 +64,8 @@ Toolbox::Toolbox(ToolContext ctx, QWidget* actionParent) : QObject(actionParent)
        new SlotJointTool(&ctx_, JointType::PinInSlot));
   tool("driver", tr("&Driver"), QKeySequence(tr("M")), tr("Make a pin the driver (the crank)"),
        new DriverTool(&ctx_));
-  tool("output", tr("O&utput Point"), QKeySequence(tr("O")),
-       tr("Trace, plot and export a point"), new OutputTool(&ctx_));
+  tool("output", tr("O&utput Point"), QKeySequence(tr("O")), tr("Trace, plot and export a point"),
+       new OutputTool(&ctx_));
 
   delete_ = make(QStringLiteral("delete"), tr("&Delete"), QKeySequence::Delete,
                  tr("Delete the selection and what depends on it"));
@@ -188,8 +186,8 @@ bool Toolbox::eventFilter(QObject* watched, QEvent* event) {
       if (view->panning() || view->spaceHeld() || m->button() == Qt::MiddleButton ||
           (m->buttons() & Qt::MiddleButton))
         return false;
-      const CanvasMouse e = mouseAt(m->position().toPoint(), m->button(), m->buttons(),
-                                    m->modifiers());
+      const CanvasMouse e =
+          mouseAt(m->position().toPoint(), m->button(), m->buttons(), m->modifiers());
       if (event->type() == QEvent::MouseMove) {
         ctx_.overlay->setHover(e.pick);
         ctx_.overlay->setSnap(current_->snaps() ? std::optional<Snap>(e.snap) : std::nullopt);

@@ -40,9 +40,8 @@ QMenu* Toolbox::contextMenu(const CanvasMouse& e, QWidget* parent) {
     });
     if (!m.body(point->body)->ground)
       menu->addAction(tr("Pin to the Ground Here"), this, [edit, id, at, label] {
-        edit(tr("Pin to ground at %1").arg(label), [&](Mechanism& n, std::string&) {
-          return bool(addGroundPoint(n, at, id));
-        });
+        edit(tr("Pin to ground at %1").arg(label),
+             [&](Mechanism& n, std::string&) { return bool(addGroundPoint(n, at, id)); });
       });
     menu->addAction(tr("Slider Block in a Slot Here..."), this, [this, id] {
       setTool(QStringLiteral("block"));
@@ -73,14 +72,13 @@ QMenu* Toolbox::contextMenu(const CanvasMouse& e, QWidget* parent) {
     } else {
       QMenu* type = menu->addMenu(tr("Change Type"));
       for (JointType t : {JointType::Slider, JointType::PinInSlot}) {
-        QAction* a = type->addAction(t == JointType::Slider ? tr("Slider (block keeps its angle)")
-                                                            : tr("Pin in slot (turns freely)"),
-                                     this, [edit, id, t, label] {
-                                       edit(tr("Change type of %1").arg(label),
-                                            [&](Mechanism& n, std::string& why) {
-                                              return changeJointType(n, id, t, &why);
-                                            });
-                                     });
+        QAction* a = type->addAction(
+            t == JointType::Slider ? tr("Slider (block keeps its angle)")
+                                   : tr("Pin in slot (turns freely)"),
+            this, [edit, id, t, label] {
+              edit(tr("Change type of %1").arg(label),
+                   [&](Mechanism& n, std::string& why) { return changeJointType(n, id, t, &why); });
+            });
         a->setCheckable(true);
         a->setChecked(joint->type == t);
       }
@@ -109,8 +107,8 @@ QMenu* Toolbox::contextMenu(const CanvasMouse& e, QWidget* parent) {
       QString why;
       if (!flipAssembly(doc, id, &why)) ctx_.message(tr("Cannot flip: %1").arg(why), true);
     });
-    const std::vector<BodyId> ok = doc->solved() ? doc->kinematics().flippableBodies()
-                                                 : std::vector<BodyId>{};
+    const std::vector<BodyId> ok =
+        doc->solved() ? doc->kinematics().flippableBodies() : std::vector<BodyId>{};
     flip->setEnabled(std::find(ok.begin(), ok.end(), id) != ok.end());
     menu->addAction(tr("Delete Link"), this, [doc, id, name] {
       Mechanism n = doc->design();

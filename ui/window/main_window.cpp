@@ -7,7 +7,9 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QScrollArea>
 #include <QSettings>
+#include <QSplitter>
 #include <QStatusBar>
 #include <QStyleFactory>
 #include <QToolBar>
@@ -20,6 +22,7 @@
 #include "centres/centres_panel.h"
 #include "document/document.h"
 #include "properties/inspector_panel.h"
+#include "properties/properties_panel.h"
 #include "tools/selection.h"
 #include "tools/tool_overlay.h"
 #include "tools/toolbox.h"
@@ -92,6 +95,8 @@ void MainWindow::connectDocument() {
   crankBar_->setDocument(doc_);
   centres_->setDocument(doc_);
   inspector_->setDocument(doc_);
+  properties_->setDocument(doc_, selection_);
+  connect(properties_, &PropertiesPanel::message, this, &MainWindow::showMessage);
   history_->setStack(doc_->undoStack());
   connect(doc_, &Document::fileStateChanged, this, &MainWindow::updateTitle);
   connect(doc_, &Document::designChanged, this, &MainWindow::updateStatus);
@@ -102,8 +107,13 @@ void MainWindow::connectDocument() {
     centres_->refresh();
     inspector_->refreshMotion();
   });
-  connect(centres_, &CentresPanel::chainChanged, this,
-          [this] { scene_->chainItem()->setChain(centres_->chain()); });
+  // The chain's distances belong to the instant-centre view: drawn while it is on.
+  auto showChain = [this] {
+    scene_->chainItem()->setChain(action("showCentres")->isChecked() ? centres_->chain()
+                                                                     : std::nullopt);
+  };
+  connect(centres_, &CentresPanel::chainChanged, this, showChain);
+  connect(action("showCentres"), &QAction::toggled, this, showChain);
   connect(centres_, &CentresPanel::centreChosen, view_, &CanvasView::setSelectedCentre);
   connect(animator_, &Animator::message, this, &MainWindow::showMessage);
   connect(animator_, &Animator::playingChanged, this, [this](bool on) {
@@ -128,8 +138,20 @@ void MainWindow::createDocks() {
     addDockWidget(area, d);
     return d;
   };
+  // The selection's exact numbers above, what the mechanism is and where it is below.
+  properties_ = new PropertiesPanel;
   inspector_ = new InspectorPanel;
-  QDockWidget* p = addDock("properties", tr("Properties"), inspector_, Qt::RightDockWidgetArea);
+  auto* split = new QSplitter(Qt::Vertical);
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(properties_);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  split->addWidget(scroll);
+  split->addWidget(inspector_);
+  split->setStretchFactor(0, 3);
+  split->setStretchFactor(1, 2);
+  scroll->setMinimumHeight(140);
+  QDockWidget* p = addDock("properties", tr("Properties"), split, Qt::RightDockWidgetArea);
   centres_ = new CentresPanel;
   QDockWidget* c = addDock("centres", tr("Instant Centres"), centres_, Qt::RightDockWidgetArea);
   history_ = new QUndoView;

@@ -22,6 +22,7 @@ class CentresPanel;
 class CrankBar;
 class Document;
 class InspectorPanel;
+class PropertiesPanel;
 class Selection;
 class ToolOverlay;
 class Toolbox;
@@ -39,6 +40,7 @@ class MainWindow : public QMainWindow {
   Animator* animator() const { return animator_; }
   CentresPanel* centresPanel() const { return centres_; }
   InspectorPanel* inspector() const { return inspector_; }
+  PropertiesPanel* properties() const { return properties_; }
   CrankBar* crankBar() const { return crankBar_; }
   Toolbox* toolbox() const { return toolbox_; }
   Selection* selection() const { return selection_; }
@@ -97,6 +99,7 @@ class MainWindow : public QMainWindow {
   CrankBar* crankBar_ = nullptr;
   CentresPanel* centres_ = nullptr;
   InspectorPanel* inspector_ = nullptr;
+  PropertiesPanel* properties_ = nullptr;
   QUndoView* history_ = nullptr;
   Selection* selection_ = nullptr;
   ToolOverlay* overlay_ = nullptr;

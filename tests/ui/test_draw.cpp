@@ -1,0 +1,260 @@
+// Drawing with the mouse and the keyboard only: a four-bar from nothing, saved and checked by
+// the command line; undo and redo of every kind of edit give back the identical file.
+#include <gtest/gtest.h>
+
+#include "ui_test.h"
+
+#include <QComboBox>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include "canvas/canvas_scene.h"
+#include "document/document.h"
+#include "drawing.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/model_lookup.h"
+#include "properties/properties_panel.h"
+#include "tools/selection.h"
+#include "tools/toolbox.h"
+
+namespace linkage::ui {
+namespace {
+
+// Runs linkage-cli; its exit status and output.
+std::pair<int, QString> cli(const QStringList& args) {
+  QProcess p;
+  p.start(QStringLiteral(LINKAGE_CLI), args);
+  p.waitForFinished(30000);
+  return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput() + p.readAllStandardError())};
+}
+
+// Ground pivots at (0, 0) and (60, 0), crank to (10, 20), coupler to (70, 50), rocker down to
+// the second pivot, the crank's pivot the driver: a crank-rocker.
+void drawFourBar(MainWindow& w) {
+  test::Draw d{w};
+  d.key("G");
+  d.click(0, 0);
+  d.click(60, 0);
+  d.key("L");
+  d.click(0, 0);
+  d.click(10, 20);
+  d.key(Qt::Key_Return);
+  d.key("L");
+  d.click(10, 20);
+  d.click(70, 50);
+  d.key(Qt::Key_Return);
+  d.key("L");
+  d.click(70, 50);
+  d.click(60, 0);
+  d.key(Qt::Key_Return);
+  d.key("M");
+  d.click(0, 0);
+  d.key("O");
+  d.click(70, 50);
+  d.key("S");
+}
+
+TEST(Draw, FourBarWithMouseAndKeysIsSavedAndTurnsFully) {
+  MainWindow w;
+  w.resize(1200, 800);
+  w.show();
+  QApplication::processEvents();
+  w.canvas()->setZoom(5);
+  w.canvas()->centerOn(30, 25);
+  drawFourBar(w);
+  shot(&w, "draw-four-bar");
+  Document* doc = w.document();
+  ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
+  EXPECT_EQ(doc->design().bodies.size(), 4u) << serializeMechanism(doc->design());
+  EXPECT_EQ(doc->design().joints.size(), 4u);
+  ASSERT_TRUE(doc->design().driver);
+  QTemporaryDir dir;
+  const QString path = dir.filePath("four-bar.linkage.json");
+  QString why;
+  ASSERT_TRUE(doc->save(path, &why)) << why.toStdString();
+  const auto [code, info] = cli({"info", path});
+  EXPECT_EQ(code, 0) << info.toStdString();
+  EXPECT_NE(info.indexOf("bodies: 4, joints: 4"), -1) << info.toStdString();
+  EXPECT_EQ(info.count(QStringLiteral("(pin ")), 5) << info.toStdString();  // 4 + the driver line
+  EXPECT_NE(info.indexOf("degrees of freedom: 1 "), -1) << info.toStdString();
+  const auto [turns, table] = cli({"analyze", path, "--steps", "72"});
+  EXPECT_EQ(turns, 0) << table.right(400).toStdString();
+  EXPECT_EQ(table.count('\n'), 1 + 73);  // the header and every 5 degrees of a revolution
+}
+
+TEST(Draw, UndoAndRedoOfEveryEditGiveBackTheIdenticalFile) {
+  MainWindow w;
+  w.resize(1200, 800);
+  w.show();
+  QApplication::processEvents();
+  w.canvas()->setZoom(5);
+  w.canvas()->centerOn(30, 25);
+  Document* doc = w.document();
+  std::vector<std::string> files{serializeMechanism(doc->design())};
+  auto record = [&] { files.push_back(serializeMechanism(doc->design())); };
+  test::Draw d{w};
+  // Each kind of edit, one after the other.
+  d.key("G");
+  d.click(0, 0);
+  record();
+  d.click(60, 0);
+  record();
+  d.key("L");
+  d.click(0, 0);
+  d.click(10, 20);
+  d.key(Qt::Key_Return);
+  record();
+  d.key("L");
+  d.click(10, 20);
+  d.click(70, 50);
+  d.click(40, 60);  // three points: a plate
+  d.key(Qt::Key_Return);
+  record();
+  d.key("L");
+  d.click(70, 50);
+  d.click(60, 0);
+  d.key(Qt::Key_Return);
+  record();
+  d.key("M");
+  d.click(0, 0);
+  record();
+  d.key("O");
+  d.click(40, 60);
+  record();
+  d.key("T");
+  d.click(20, -20);
+  d.click(50, -20);
+  record();  // a slot in the ground
+  d.key("S");
+  d.click(40, 60);
+  d.key(Qt::Key_Delete);
+  record();
+  shot(&w, "draw-every-edit");
+  ASSERT_EQ(doc->undoStack()->count(), int(files.size()) - 1);
+  for (int i = int(files.size()) - 2; i >= 0; --i) {
+    w.action("undo")->trigger();
+    EXPECT_EQ(serializeMechanism(doc->design()), files[i]) << "undo to step " << i;
+  }
+  for (size_t i = 1; i < files.size(); ++i) {
+    w.action("redo")->trigger();
+    EXPECT_EQ(serializeMechanism(doc->design()), files[i]) << "redo to step " << i;
+  }
+}
+
+}  // namespace
+}  // namespace linkage::ui
+
+namespace linkage::ui {
+namespace {
+
+// Types a value into a field of the properties panel as a user does: click in it, select all,
+// type, Enter.
+void type(MainWindow& w, const QString& label, const QString& text) {
+  QWidget* f = w.properties()->field(label);
+  ASSERT_TRUE(f) << label.toStdString() << " in " << w.properties()->title().toStdString();
+  QTest::mouseClick(f, Qt::LeftButton);
+  QTest::keyClick(f, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(f, text);
+  QTest::keyClick(f, Qt::Key_Return);
+}
+
+// The Wanzer needle bar, inversion 2, drawn with the tools (a disk with two slots, the
+// triangle, two slider blocks, the needle bar in a ground slot) and its exact dimensions typed
+// in: its motion equals the example file's.
+TEST(Draw, WanzerInversion2DrawnWithTheToolsMovesAsTheExample) {
+  MainWindow w;
+  w.resize(1300, 900);
+  w.show();
+  QApplication::processEvents();
+  w.canvas()->setZoom(3.5);
+  w.canvas()->centerOn(0, -35);
+  test::Draw d{w};
+  Document* doc = w.document();
+  d.key("G");
+  d.click(0, 0);  // ground point A
+  d.key("T");
+  d.click(0, 0);  // on A, in the ground: the needle bar's guide D
+  d.click(0, -100);
+  d.key("L");
+  d.click(0, 0);  // the disk, pinned to the ground at A
+  d.click(10, 30);
+  d.key(Qt::Key_Return);
+  d.key("T");
+  d.click(10, 30);  // on the disk's point: slot B in the disk
+  d.click(10, -30);
+  d.key("T");
+  d.click(-30, 10);  // inside the disk (now drawn as one): slot C
+  d.click(30, 10);
+  d.key("L");
+  d.click(10, 20);    // on slot B's line: E
+  d.click(22.5, 10);  // on slot C's line: F
+  d.click(0, -40);    // on the guide's line: G
+  d.key(Qt::Key_Return);
+  shot(&w, "wanzer-drawn");
+  // Exact numbers: the slots' ends and the triangle's points.
+  auto select = [&](double x, double y) {
+    d.key("S");
+    d.click(x, y);
+  };
+  select(10, -15);
+  type(w, "x0 [mm]", "10");
+  type(w, "y0 [mm]", "-31");
+  type(w, "x1 [mm]", "10");
+  type(w, "y1 [mm]", "31");
+  select(-20, 10);
+  type(w, "x0 [mm]", "-31");
+  type(w, "x1 [mm]", "31");
+  select(10, 20);
+  type(w, "y [mm]", "19.927945624162106");
+  select(22.5, 10);
+  type(w, "x [mm]", "22.547346160988806");
+  select(0, -40);
+  type(w, "y [mm]", "-41.260288538951315");
+  // The blocks: a point, then the slot it slides in.
+  d.key("B");
+  d.click(10, 19.93);
+  d.click(10, -15);
+  d.key("B");
+  d.click(22.55, 10);
+  d.click(-20, 10);
+  d.key("B");
+  d.click(0, -41.26);
+  d.click(0, -80);
+  d.key("M");
+  d.click(0, 0);
+  select(0, 0);
+  type(w, "Driver speed [rpm]", "240");
+  auto* dir = qobject_cast<QComboBox*>(w.properties()->field("Direction"));
+  ASSERT_TRUE(dir);
+  dir->setFocus();
+  QTest::keyClick(dir, Qt::Key_Down);  // clockwise
+  d.key("O");
+  d.click(0, -41.26);
+  shot(&w, "wanzer-done");
+  ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
+  const Mechanism& drawn = doc->design();
+  EXPECT_EQ(drawn.bodies.size(), 6u) << serializeMechanism(drawn);
+  EXPECT_EQ(drawn.joints.size(), 7u) << serializeMechanism(drawn);
+  ASSERT_TRUE(drawn.driver);
+  EXPECT_EQ(drawn.driver->direction, Direction::Cw);
+  EXPECT_EQ(drawn.driver->rpm, 240);
+  ASSERT_EQ(drawn.outputs.size(), 1u);
+  // The motion of G over a revolution, against the example's.
+  const Mechanism ref = *loadMechanismFile(*resolveModel("wanzer-inversion-2")).mechanism;
+  Kinematics a, b;
+  ASSERT_TRUE(a.load(drawn).ok());
+  ASSERT_TRUE(b.load(ref).ok());
+  const PointId ga = drawn.outputs[0], gb = ref.outputs[0];
+  for (double deg = 0; deg <= 360; deg += 7.5) {
+    ASSERT_TRUE(a.moveTo(deg).ok());
+    ASSERT_TRUE(b.moveTo(deg).ok());
+    const auto ma = a.motion(ga), mb = b.motion(gb);
+    EXPECT_LT((ma.position - mb.position).norm(), 1e-9) << deg;
+    EXPECT_LT((ma.velocity - mb.velocity).norm(), 1e-9 * mb.velocity.norm() + 1e-9) << deg;
+    EXPECT_LT((ma.acceleration - mb.acceleration).norm(), 1e-9 * mb.acceleration.norm() + 1e-9)
+        << deg;
+  }
+}
+
+}  // namespace
+}  // namespace linkage::ui

@@ -1,0 +1,75 @@
+// Exact numbers for the selection: names (editable, unique), a point's coordinates, a bar's
+// length and angle (editing them moves its second point), a slot's ends, a joint's type, the
+// driver's rpm, direction and start angle, whether a point is an output; the mechanism's own
+// name and driver when nothing is selected. Millimetres and degrees, in the drawing's
+// coordinates (the sketch, at crank angle -start), typed values taken exactly (never snapped).
+// Every change is one undo step.
+#pragma once
+
+#include <QPointer>
+#include <QWidget>
+#include <functional>
+#include <vector>
+
+#include "linkage/model.h"
+
+class QFormLayout;
+class QLabel;
+class QLineEdit;
+
+namespace linkage::ui {
+
+class Document;
+class Selection;
+
+class PropertiesPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit PropertiesPanel(QWidget* parent = nullptr);
+  void setDocument(Document* doc, Selection* selection);
+  // The field with this label (for tests and scripts), or nullptr.
+  QWidget* field(const QString& label) const;
+  QString title() const;
+
+ Q_SIGNALS:
+  void message(const QString& text, bool warning);
+
+ private:
+  struct Row {
+    QString label;
+    QWidget* editor;
+    std::function<void()> refresh;
+  };
+  void rebuild();
+  void refresh();
+  void clearRows();
+  void fillMechanism();
+  void fillBody(BodyId id);
+  void fillPoint(PointId id);
+  void fillJoint(JointId id);
+  void fillSlot(SlotId id);
+  void fillDriver();
+  // Editors that commit on Enter or leaving the field; a refused value turns the field red and
+  // puts the old one back.
+  void addText(const QString& label, std::function<QString()> value,
+               std::function<bool(const QString&, QString*)> commit);
+  void addNumber(const QString& label, std::function<double()> value,
+                 std::function<bool(double, QString*)> commit, const QString& unit);
+  void addInfo(const QString& label, std::function<QString()> value);
+  // Applies a change to a copy of the design as one undo step.
+  bool change(const QString& text, const std::function<bool(Mechanism&, QString*)>& edit,
+              QString* why);
+
+  QPointer<Document> doc_;
+  Selection* selection_ = nullptr;
+  QLabel* title_;
+  QFormLayout* form_;
+  std::vector<Row> rows_;
+  QString shape_;  // what the rows are for: rebuilt when it changes, refreshed otherwise
+};
+
+// The shortest decimal text that reads back as exactly v ("0.1", not "0.10000000000000001").
+QString exactText(double v);
+
+}  // namespace linkage::ui
