@@ -7,6 +7,7 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QImageReader>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMimeData>
@@ -16,9 +17,12 @@
 #include <QTest>
 
 #include "animation/crank_bar.h"
+#include "canvas/canvas_scene.h"
+#include "canvas/canvas_view.h"
 #include "dialogs.h"
 #include "document/commands.h"
 #include "document/document.h"
+#include "export/animation_export.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "window/main_window.h"
@@ -174,7 +178,7 @@ TEST(Window, ViewOptionsAndLayoutAreRemembered) {
     w.action("showGrid")->setChecked(false);
     w.action("showCentres")->setChecked(true);
     w.dock("centres")->hide();
-    w.resize(900, 650);
+    w.resize(1100, 760);
     w.show();
     QApplication::processEvents();
     EXPECT_TRUE(w.close());
@@ -182,7 +186,7 @@ TEST(Window, ViewOptionsAndLayoutAreRemembered) {
   MainWindow w;
   EXPECT_FALSE(w.action("showGrid")->isChecked());
   EXPECT_TRUE(w.action("showCentres")->isChecked());
-  EXPECT_EQ(w.size(), QSize(900, 650));
+  EXPECT_EQ(w.size(), QSize(1100, 760));
   w.show();
   QApplication::processEvents();
   EXPECT_FALSE(w.dock("centres")->isVisible());
@@ -205,6 +209,45 @@ TEST(Window, EveryActionHasAStatusTipAndTheKeysAreTheDocumented) {
   for (QAction* a : w.findChildren<QAction*>())
     if (!a->objectName().isEmpty() && !a->isSeparator() && !a->menu())
       EXPECT_FALSE(a->statusTip().isEmpty()) << a->objectName().toStdString();
+}
+
+}  // namespace
+}  // namespace linkage::ui
+
+namespace linkage::ui {
+namespace {
+
+// File > Export > Animation: each frame is the mechanism at its crank angle, the whole motion
+// in view at the asked size; the window is as it was afterwards.
+TEST(Window, AnimationFramesShowTheMechanismAtEachAngle) {
+  MainWindow w;
+  w.resize(1000, 700);
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
+  w.show();
+  QApplication::processEvents();
+  const double zoom = w.canvas()->zoom();
+  const QImage a = w.renderFrame(0, QSize(320, 240));
+  const QImage b = w.renderFrame(90, QSize(320, 240));
+  EXPECT_EQ(a.size(), QSize(320, 240));
+  EXPECT_NE(a, b);
+  EXPECT_EQ(a, w.renderFrame(0, QSize(320, 240)));  // the same angle, the same picture
+  shot(&w, "animation-window");
+  a.save(QString::fromLocal8Bit(qgetenv("LINKAGE_TEST_SHOTS")) + "/frame-0.png");
+  QTemporaryDir dir;
+  AnimationSpec spec;
+  spec.path = dir.filePath("wanzer.gif");
+  spec.size = QSize(240, 180);
+  spec.frames = 12;
+  QString why;
+  ASSERT_TRUE(exportAnimation(
+      spec, [&](double deg, QSize s) { return w.renderFrame(deg, s); }, &why))
+      << why.toStdString();
+  w.endFrames();
+  EXPECT_NEAR(w.canvas()->zoom(), zoom, 1e-12);
+  EXPECT_NEAR(w.scene()->pixelSize(), 1 / zoom, 1e-12);
+  QImageReader gif(spec.path);
+  EXPECT_EQ(gif.imageCount(), 12);
+  EXPECT_EQ(gif.size(), QSize(240, 180));
 }
 
 }  // namespace

@@ -64,7 +64,9 @@ void CanvasView::scaleChanged() {
 void CanvasView::fitToMechanism() {
   QRectF r = scene_->mechanismRect();
   if (r.isEmpty()) r = r.adjusted(-50, -50, 50, 50);
-  const double margin = 60;  // pixels around it, for symbols and labels
+  // Pixels around it, for symbols and labels: less in a small view (an animation's frames).
+  const double margin =
+      std::clamp(0.07 * std::min(viewport()->width(), viewport()->height()), 12.0, 60.0);
   const double zx = (viewport()->width() - 2 * margin) / std::max(r.width(), 1e-9);
   const double zy = (viewport()->height() - 2 * margin) / std::max(r.height(), 1e-9);
   setZoom(std::max(kMinZoom, std::min(zx, zy)));

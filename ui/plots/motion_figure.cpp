@@ -69,6 +69,10 @@ MotionFigure::MotionFigure(QCustomPlot* plot) : plot_(plot) {
   cursorLayer_ = plot_->layer("cursor");
   // Its own paint buffer: replotting it leaves the curves' buffer as it is.
   cursorLayer_->setMode(QCPLayer::lmBuffered);
+  // A resized widget (a dock made lower or higher) lays the rows out again: refit the labels.
+  QObject::connect(plot_, &QCustomPlot::afterReplot, plot_, [this] {
+    if (fitLabels()) plot_->replot(QCustomPlot::rpQueuedReplot);
+  });
 }
 
 void MotionFigure::clear() {
@@ -81,8 +85,30 @@ void MotionFigure::clear() {
   lines_.clear();
   tracers_.clear();
   rowOrders_.clear();
+  labels_.clear();
   columns_ = 0;
   legend_ = nullptr;
+}
+
+bool MotionFigure::fitLabels() {
+  bool changed = false;
+  for (size_t i = 0; i < rects_.size() && i < labels_.size(); ++i) {
+    QCPAxis* y = rects_[i]->axis(QCPAxis::atLeft);
+    const QFontMetrics fm(y->labelFont());
+    const bool fits = fm.horizontalAdvance(labels_[i].first) + 8 <= rects_[i]->outerRect().height();
+    const QString& want = fits ? labels_[i].first : labels_[i].second;
+    if (y->label() != want) {
+      y->setLabel(want);
+      changed = true;
+    }
+    // About one value tick per 30 pixels of height, so that low plots do not crowd them.
+    const int ticks = std::clamp(rects_[i]->height() / 30, 2, 6);
+    if (y->ticker()->tickCount() != ticks) {
+      y->ticker()->setTickCount(ticks);
+      changed = true;
+    }
+  }
+  return changed;
 }
 
 QCPAxisRect* MotionFigure::axisRect(int row, int column) const {
@@ -184,7 +210,9 @@ void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options
       rect->setMinimumMargins(QMargins(
           0, 0, QFontMetrics(x->tickLabelFont()).horizontalAdvance(QString::number(xMax_)) / 2 + 6,
           0));
-      y->setLabel(axisLabel(req.body, req.component, req.directionDeg, o, opt.units));
+      labels_.emplace_back(axisLabel(req.body, req.component, req.directionDeg, o, opt.units),
+                           shortAxisLabel(req.body, req.component, req.directionDeg, o, opt.units));
+      y->setLabel(labels_.back().first);
       int notes = 0;
       for (int i : setsOf(c)) {
         const CurveSet& set = *sets[i];
@@ -252,6 +280,8 @@ void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options
   cursorLayer_->setVisible(opt.cursor);
   setCursor(cursorDeg_);
   plot_->replot();
+  // The rows' heights are known once laid out: labels that do not fit are shortened.
+  if (fitLabels()) plot_->replot();
 }
 
 void MotionFigure::setCursor(double deg) {

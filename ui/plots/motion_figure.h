@@ -61,9 +61,13 @@ class MotionFigure {
   double xMax() const { return xMax_; }
 
   static QColor colour(int set);
+  // Long y labels where the plots are tall enough for them, short ones where not (a low dock);
+  // true when a label changed (the caller replots).
+  bool fitLabels();
 
  private:
   void clear();
+  std::vector<std::pair<QString, QString>> labels_;  // long and short, per axis rect
 
   QCustomPlot* plot_;
   QCPLayer* cursorLayer_;

@@ -51,7 +51,7 @@ void PlotsPanel::buildWidgets() {
   auto* split = new QSplitter(Qt::Vertical);
   stack_ = new QStackedWidget;
   plot_ = new QCustomPlot;
-  plot_->setMinimumSize(200, 200);
+  plot_->setMinimumSize(200, 180);
   plot_->setCursor(Qt::CrossCursor);
   harmonicsPlot_ = new QCustomPlot;
   stack_->addWidget(plot_);
@@ -67,6 +67,7 @@ void PlotsPanel::buildWidgets() {
   values_->setWordWrap(true);
   extremes_ = new QTreeWidget;
   extremes_->setRootIsDecorated(false);
+  extremes_->setMinimumHeight(48);
   extremes_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
   belowLayout->addWidget(values_);
   belowLayout->addWidget(extremes_, 1);

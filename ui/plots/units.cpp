@@ -96,4 +96,14 @@ QString axisLabel(bool body, Quantity::Component c, double directionDeg, Order o
   return QString("%1 %2 [%3]").arg(what, componentLabel(c, directionDeg, o), u.name(o, false));
 }
 
+QString shortAxisLabel(bool body, Quantity::Component c, double directionDeg, Order o,
+                       const PlotUnits& u) {
+  const int i = static_cast<int>(o);
+  if (body) {
+    static const char* names[] = {"θ", "ω", "α", "α'"};
+    return QString("%1 [%2]").arg(QString::fromUtf8(names[i]), u.name(o, true));
+  }
+  return QString("%1 [%2]").arg(componentLabel(c, directionDeg, o), u.name(o, false));
+}
+
 }  // namespace linkage::ui

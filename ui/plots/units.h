@@ -36,5 +36,8 @@ QString componentLabel(Quantity::Component c, double directionDeg, Order o);
 // An axis label with its unit: "Position y [mm]", "Speed |v| [m/s]", "Angular velocity [rad/s]".
 QString axisLabel(bool body, Quantity::Component c, double directionDeg, Order o,
                   const PlotUnits& u);
+// The same, short, for a plot too low for the long label ("vy [mm/s]", "ω [rad/s]").
+QString shortAxisLabel(bool body, Quantity::Component c, double directionDeg, Order o,
+                       const PlotUnits& u);
 
 }  // namespace linkage::ui

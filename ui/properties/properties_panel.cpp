@@ -17,7 +17,11 @@
 namespace linkage::ui {
 
 QString exactText(double v) {
-  for (int digits = 1; digits <= 17; ++digits) {
+  // Whole digits are never dropped into an exponent ("240", not "2.4e+02").
+  const int whole = std::abs(v) >= 1 && std::abs(v) < 1e15
+                        ? static_cast<int>(std::floor(std::log10(std::abs(v)))) + 1
+                        : 1;
+  for (int digits = whole; digits <= 17; ++digits) {
     const std::string s = formatNumber(v, digits);
     if (parseNumber(s) == v) return QString::fromStdString(s);
   }

@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QRegularExpression>
@@ -77,7 +78,8 @@ int runHeadless(const HeadlessOptions& o) {
     return 2;
   }
   w.action("showCentres")->setChecked(o.ics);
-  if (QAction* a = w.action("showPlots")) a->setChecked(o.plots);
+  if (o.ics) w.dock("centres")->raise();
+  w.dock("plots")->setVisible(o.plots);
   w.show();
   settle();
   w.canvas()->fitToMechanism();

@@ -4,9 +4,11 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QGuiApplication>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
@@ -21,6 +23,7 @@
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
 #include "document/document.h"
+#include "plots/plots_panel.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
@@ -61,10 +64,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   readSettings();
   updateTitle();
   updateStatus();
+  updateComparisons();
 }
 
 MainWindow::~MainWindow() {
   openWindows().removeAll(this);
+  updateComparisons();
+}
+
+void MainWindow::updateComparisons() {
+  for (MainWindow* w : openWindows()) {
+    QList<Document*> others;
+    for (MainWindow* o : openWindows())
+      if (o != w) others.append(o->doc_);
+    w->plots_->setComparisonDocuments(others);
+  }
 }
 
 QAction* MainWindow::makeAction(const QString& name, const QString& text, const QKeySequence& key,
@@ -96,6 +110,11 @@ void MainWindow::connectDocument() {
   centres_->setDocument(doc_);
   inspector_->setDocument(doc_);
   properties_->setDocument(doc_, selection_);
+  plots_->setDocument(doc_);
+  connect(plots_, &PlotsPanel::crankAngleRequested, this, [this](double deg) {
+    animator_->setPlaying(false);
+    if (doc_->solved()) doc_->setCrankDeg(deg);
+  });
   connect(properties_, &PropertiesPanel::message, this, &MainWindow::showMessage);
   history_->setStack(doc_->undoStack());
   connect(doc_, &Document::fileStateChanged, this, &MainWindow::updateTitle);
@@ -154,10 +173,23 @@ void MainWindow::createDocks() {
   QDockWidget* p = addDock("properties", tr("Properties"), split, Qt::RightDockWidgetArea);
   centres_ = new CentresPanel;
   QDockWidget* c = addDock("centres", tr("Instant Centres"), centres_, Qt::RightDockWidgetArea);
+  plots_ = new PlotsPanel;
+  QDockWidget* pl = addDock("plots", tr("Plots"), plots_, Qt::BottomDockWidgetArea);
+  pl->toggleViewAction()->setObjectName("showPlots");
+  pl->toggleViewAction()->setStatusTip(
+      tr("Position, velocity and acceleration of a point against the crank angle"));
   history_ = new QUndoView;
   history_->setEmptyLabel(tr("<opened>"));
   QDockWidget* h = addDock("history", tr("History"), history_, Qt::LeftDockWidgetArea);
   h->hide();
+  // The default layout (a saved one replaces it): the properties and the instant centres as
+  // tabs on the right, full height; the plots under the canvas.
+  setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+  setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+  tabifyDockWidget(p, c);
+  p->raise();
+  resizeDocks({p}, {400}, Qt::Horizontal);
+  resizeDocks({pl}, {320}, Qt::Vertical);
   // Work only while shown: the panels compute when they become visible.
   // Queued: a dock reports its visibility before its contents have changed theirs.
   for (QDockWidget* d : {p, c})
@@ -288,7 +320,13 @@ void MainWindow::dropEvent(QDropEvent* e) {
 void MainWindow::readSettings() {
   QSettings s;
   s.beginGroup(QStringLiteral("window"));
-  if (!restoreGeometry(s.value(QStringLiteral("geometry")).toByteArray())) resize(1280, 800);
+  // First start: most of the screen (the canvas, the plots and the panels all want room).
+  if (!restoreGeometry(s.value(QStringLiteral("geometry")).toByteArray())) {
+    const QRect screen = QGuiApplication::primaryScreen()
+                             ? QGuiApplication::primaryScreen()->availableGeometry()
+                             : QRect(0, 0, 1280, 800);
+    resize(std::max(1024, screen.width() * 9 / 10), std::max(720, screen.height() * 9 / 10));
+  }
   restoreState(s.value(QStringLiteral("state")).toByteArray());
   s.endGroup();
   s.beginGroup(QStringLiteral("view"));

@@ -7,6 +7,7 @@
 
 #include <QMainWindow>
 #include <QPointer>
+#include <memory>
 
 class QDockWidget;
 class QLabel;
@@ -23,6 +24,7 @@ class CrankBar;
 class Document;
 class InspectorPanel;
 class PropertiesPanel;
+class PlotsPanel;
 class Selection;
 class ToolOverlay;
 class Toolbox;
@@ -41,6 +43,7 @@ class MainWindow : public QMainWindow {
   CentresPanel* centresPanel() const { return centres_; }
   InspectorPanel* inspector() const { return inspector_; }
   PropertiesPanel* properties() const { return properties_; }
+  PlotsPanel* plots() const { return plots_; }
   CrankBar* crankBar() const { return crankBar_; }
   Toolbox* toolbox() const { return toolbox_; }
   Selection* selection() const { return selection_; }
@@ -60,6 +63,10 @@ class MainWindow : public QMainWindow {
   bool openNameOrPath(const QString& arg, QString* error = nullptr);
   // Asks what to do with unsaved changes; true when it is all right to go on.
   bool maybeSave();
+  // One frame of the animation as File > Export > Animation writes it: the mechanism at a crank
+  // angle, fitted to its motion, at `size`; endFrames() when done.
+  QImage renderFrame(double deg, QSize size);
+  void endFrames();
   bool save();
   bool saveAs();
 
@@ -91,6 +98,12 @@ class MainWindow : public QMainWindow {
   void setDarkPalette(bool on);
   // Toolbar and menu icons in the palette's colours.
   void applyIcons();
+  // File > Export: the motion table, the plots' figure, the animation.
+  void exportMotionTable();
+  void exportFigure();
+  void exportAnimation();
+  // Every window's plots compare with the other windows' documents.
+  static void updateComparisons();
 
   Document* doc_;
   CanvasScene* scene_;
@@ -100,11 +113,14 @@ class MainWindow : public QMainWindow {
   CentresPanel* centres_ = nullptr;
   InspectorPanel* inspector_ = nullptr;
   PropertiesPanel* properties_ = nullptr;
+  PlotsPanel* plots_ = nullptr;
   QUndoView* history_ = nullptr;
   Selection* selection_ = nullptr;
   ToolOverlay* overlay_ = nullptr;
   Toolbox* toolbox_ = nullptr;
   QLabel* hint_ = nullptr;
+  std::unique_ptr<CanvasScene> frameScene_;
+  std::unique_ptr<CanvasView> frameView_;
   QMenu* recentMenu_ = nullptr;
   QMenu* examplesMenu_ = nullptr;
   QLabel* message_ = nullptr;

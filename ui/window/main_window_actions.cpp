@@ -135,6 +135,9 @@ void MainWindow::createMenus() {
   file->addSeparator();
   file->addAction(action("save"));
   file->addAction(action("saveAs"));
+  QMenu* exports = file->addMenu(tr("E&xport"));
+  for (const char* a : {"exportTable", "exportFigure", "exportAnimation"})
+    exports->addAction(action(a));
   file->addSeparator();
   file->addAction(action("closeWindow"));
   file->addAction(action("quit"));
@@ -163,7 +166,8 @@ void MainWindow::createMenus() {
   for (const char* a : {"showGrid", "showCentres", "showTraces", "darkPalette"})
     view->addAction(action(a));
   view->addSeparator();
-  for (const char* d : {"properties", "centres"}) view->addAction(dock(d)->toggleViewAction());
+  for (const char* d : {"properties", "centres", "plots"})
+    view->addAction(dock(d)->toggleViewAction());
 
   QMenu* anim = menuBar()->addMenu(tr("&Animation"));
   for (const char* a : {"play", "stepBack", "stepForward", "toStart"}) anim->addAction(action(a));
