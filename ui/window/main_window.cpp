@@ -272,18 +272,31 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::applyIcons() {
-  const std::pair<const char*, const char*> icons[] = {{"new", "new"},
-                                                       {"open", "open"},
-                                                       {"save", "save"},
-                                                       {"undo", "undo"},
-                                                       {"redo", "redo"},
-                                                       {"fit", "fit"},
-                                                       {"showGrid", "grid"},
-                                                       {"showCentres", "centres"},
-                                                       {"showTraces", "traces"},
-                                                       {"stepForward", "step-forward"},
-                                                       {"stepBack", "step-back"},
-                                                       {"toStart", "to-start"}};
+  // action object name, icon file
+  static const std::pair<const char*, const char*> icons[] = {
+      {"new", "new"},
+      {"open", "open"},
+      {"save", "save"},
+      {"undo", "undo"},
+      {"redo", "redo"},
+      {"fit", "fit"},
+      {"showGrid", "grid"},
+      {"showCentres", "centres"},
+      {"showTraces", "traces"},
+      {"stepForward", "step-forward"},
+      {"stepBack", "step-back"},
+      {"toStart", "to-start"},
+      {"tool:select", "tool-select"},
+      {"tool:link", "tool-link"},
+      {"tool:ground", "tool-ground"},
+      {"tool:slot", "tool-slot"},
+      {"tool:block", "tool-block"},
+      {"tool:pinInSlot", "tool-pin-in-slot"},
+      {"tool:driver", "tool-driver"},
+      {"tool:output", "tool-output"},
+      {"delete", "delete"},
+      {"flip", "flip"},
+  };
   for (const auto& [action, icon] : icons)
     if (QAction* a = this->action(action)) a->setIcon(themedIcon(icon, palette()));
   action("play")->setIcon(themedIcon(
