@@ -3,6 +3,7 @@
 //   linkage [FILE | EXAMPLE-NAME]
 //   linkage --screenshot OUT.png [FILE|EXAMPLE] [--angle DEG] [--ics] [--size WxH] [--dark]
 //   linkage --benchmark-frames N [FILE|EXAMPLE] [--ics] [--plots] [--size WxH]
+//   linkage --benchmark-drag N [FILE|EXAMPLE] [--ctrl] [--ics] [--plots] [--size WxH]
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
@@ -16,7 +17,8 @@ namespace {
 
 bool wantsHeadless(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
-    if (!std::strcmp(argv[i], "--screenshot") || !std::strcmp(argv[i], "--benchmark-frames"))
+    if (!std::strcmp(argv[i], "--screenshot") || !std::strcmp(argv[i], "--benchmark-frames") ||
+        !std::strcmp(argv[i], "--benchmark-drag"))
       return true;
   return false;
 }
@@ -49,6 +51,14 @@ int main(int argc, char** argv) {
                                  QStringLiteral("Animate N frames as fast as possible in the "
                                                 "offscreen window and print frame times."),
                                  QStringLiteral("N"));
+  const QCommandLineOption drag(QStringLiteral("benchmark-drag"),
+                                QStringLiteral("Drag the first output point with N mouse moves "
+                                               "in the offscreen window; print the time from "
+                                               "each move to the redrawn frame."),
+                                QStringLiteral("N"));
+  const QCommandLineOption ctrl(QStringLiteral("ctrl"),
+                                QStringLiteral("With --benchmark-drag: hold Ctrl (the design "
+                                               "changes while dragging)."));
   const QCommandLineOption angle(QStringLiteral("angle"),
                                  QStringLiteral("Crank angle for the screenshot (degrees)."),
                                  QStringLiteral("DEG"));
@@ -59,7 +69,7 @@ int main(int argc, char** argv) {
                                 QStringLiteral("Window size (default 1280x800)."),
                                 QStringLiteral("WxH"));
   const QCommandLineOption dark(QStringLiteral("dark"), QStringLiteral("Use the dark palette."));
-  cli.addOptions({screenshot, bench, angle, ics, plots, size, dark});
+  cli.addOptions({screenshot, bench, drag, ctrl, angle, ics, plots, size, dark});
   cli.process(app);
 
   const QStringList args = cli.positionalArguments();
@@ -74,8 +84,10 @@ int main(int argc, char** argv) {
     o.ics = cli.isSet(ics);
     o.plots = cli.isSet(plots);
     o.dark = cli.isSet(dark);
+    o.reshape = cli.isSet(ctrl);
     QString why;
-    if (!linkage::ui::parseHeadless(cli.value(bench), cli.value(angle), cli.value(size), o, &why)) {
+    if (!linkage::ui::parseHeadless(cli.value(bench), cli.value(angle), cli.value(size), o, &why,
+                                    cli.value(drag))) {
       std::fprintf(stderr, "linkage: %s\n", qPrintable(why));
       return 2;
     }

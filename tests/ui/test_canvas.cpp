@@ -209,6 +209,7 @@ TEST(Canvas, VelocityChainIsWrittenOutAndItsDistancesDrawn) {
   EXPECT_NEAR((dims[0].b - dims[0].a).norm(), ch.steps[0].fromArm, 1e-12);
   // It follows the animation.
   ASSERT_TRUE(w.document()->setCrankDeg(40).ok());
+  QApplication::processEvents();
   ASSERT_TRUE(panel->chain());
   const Vec2 v40 = w.document()->kinematics().velocity(panel->chain()->point);
   EXPECT_LT((panel->chain()->velocity - v40).norm(), 1e-9 * v40.norm());

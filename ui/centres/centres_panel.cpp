@@ -57,6 +57,13 @@ CentresPanel::CentresPanel(QWidget* parent) : QWidget(parent) {
     emit centreChosen(ij.value(0).toInt(), ij.value(1).toInt());
   });
 
+  textTimer_.setSingleShot(true);
+  connect(&textTimer_, &QTimer::timeout, this, [this] {
+    if (chain_) {
+      steps_->setHtml(chainText());
+      lastText_.start();
+    }
+  });
   point_ = new QComboBox;
   point_->setToolTip(tr("The point whose velocity the chain of centres finds"));
   via_ = new QLineEdit;
@@ -122,6 +129,15 @@ void CentresPanel::showEvent(QShowEvent* e) {
 }
 
 void CentresPanel::refresh() {
+  if (pending_) return;
+  pending_ = true;
+  QTimer::singleShot(0, this, [this] {
+    pending_ = false;
+    update();
+  });
+}
+
+void CentresPanel::update() {
   if (!isVisible() || !doc_ || !doc_->kinematics().valid()) {
     if (chain_) {
       chain_.reset();
@@ -193,7 +209,14 @@ void CentresPanel::fillChain(const InstantCentres& ics) {
   for (const QString& s : via_->text().split(',', Qt::SkipEmptyParts)) via.push_back(s.toInt());
   chain_ = velocityChain(doc_->kinematics(), ics, *p, via);
   emit chainChanged();
-  steps_->setHtml(chainText());
+  constexpr int kTextMs = 100;
+  if (!lastText_.isValid() || lastText_.elapsed() >= kTextMs) {
+    textTimer_.stop();
+    steps_->setHtml(chainText());
+    lastText_.start();
+  } else if (!textTimer_.isActive()) {
+    textTimer_.start(kTextMs - int(lastText_.elapsed()));
+  }
 }
 
 QString CentresPanel::chainText() const {

@@ -4,7 +4,9 @@
 // exact velocity and their difference. Work is done only while the panel is visible.
 #pragma once
 
+#include <QElapsedTimer>
 #include <QPointer>
+#include <QTimer>
 #include <QWidget>
 #include <optional>
 
@@ -25,7 +27,9 @@ class CentresPanel : public QWidget {
  public:
   explicit CentresPanel(QWidget* parent = nullptr);
   void setDocument(Document* doc);
-  // Recomputes what is shown (when visible); the window calls it on every pose change.
+  // Asks for what is shown to be recomputed (when visible), once per turn of the event loop
+  // however often it is asked (an edit changes the design and the pose at once); the window
+  // calls it on every pose change.
   void refresh();
   const std::optional<VelocityChain>& chain() const { return chain_; }
   QTableWidget* table() const { return table_; }
@@ -42,6 +46,7 @@ class CentresPanel : public QWidget {
 
  private:
   void rebuildPoints();
+  void update();
   void fillTable(const InstantCentres& ics);
   void fillChain(const InstantCentres& ics);
 
@@ -52,8 +57,12 @@ class CentresPanel : public QWidget {
   QTextBrowser* steps_;
   std::optional<VelocityChain> chain_;
   std::uint64_t sizedFor_ = 0;
-  bool choseNone_ =
-      false;  // the user asked for no chain  // the revision the columns were sized for
+  bool choseNone_ = false;
+  bool pending_ = false;
+  // The written-out chain is laid out as rich text, which costs more than a frame: while the
+  // mechanism moves it is rewritten at most ten times a second, and once more when it stops.
+  QElapsedTimer lastText_;
+  QTimer textTimer_;  // the user asked for no chain  // the revision the columns were sized for
 };
 
 }  // namespace linkage::ui

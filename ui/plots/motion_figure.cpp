@@ -65,6 +65,9 @@ MotionFigure::MotionFigure(QCustomPlot* plot) : plot_(plot) {
   // A legend added to the layout makes itself the plot's legend, which would then collect
   // every graph (markers included): the figure adds the curves itself.
   plot_->setAutoAddPlottableToLegend(false);
+  // Curves as one polyline each (not segment by segment): a replot costs a fraction, which a
+  // drag that reshapes the design and redraws the curves 30 times a second needs.
+  plot_->setPlottingHint(QCP::phFastPolylines, true);
   plot_->addLayer("cursor", plot_->layer("main"), QCustomPlot::limAbove);
   cursorLayer_ = plot_->layer("cursor");
   // Its own paint buffer: replotting it leaves the curves' buffer as it is.
@@ -86,6 +89,8 @@ void MotionFigure::clear() {
   tracers_.clear();
   rowOrders_.clear();
   labels_.clear();
+  slots_.clear();
+  key_.clear();
   columns_ = 0;
   legend_ = nullptr;
 }
@@ -115,8 +120,74 @@ QCPAxisRect* MotionFigure::axisRect(int row, int column) const {
   return rects_.at(static_cast<size_t>(row * columns_ + column));
 }
 
+namespace {
+
+// Everything of the curve sets and options that decides the figure's layout (not its values):
+// equal keys, the same axes, graphs and notes in the same places.
+QString layoutKey(const std::vector<const CurveSet*>& sets, const MotionFigure::Options& opt) {
+  QStringList k;
+  k << QString::number(int(opt.layout)) << QString::number(opt.extremes)
+    << QString::number(opt.cursor) << QString::number(sets.size());
+  k << QString::number(int(opt.units.velocity)) << QString::number(int(opt.units.acceleration));
+  for (const CurveSet* s : sets) {
+    const CurveRequest& r = s->request();
+    k << s->title() << s->crankLabel() << r.target << QString::number(r.revs)
+      << QString::number(int(r.component)) << QString::number(r.directionDeg)
+      << QString::number(r.body) << QString::number(s->periodic()) << QString::number(s->empty());
+    for (int o = 0; o < kOrders; ++o) {
+      k << QString::number(r.orders[o]);
+      if (!r.orders[o]) continue;
+      const Curve& c = s->curve(static_cast<Order>(o));
+      k << QString::fromStdString(c.status.message) << QString::number(c.values.empty())
+        << QString::number(s->extremes(static_cast<Order>(o)).status.ok());
+    }
+  }
+  return k.join(QChar(0x1f));
+}
+
+}  // namespace
+
+bool MotionFigure::refresh(const std::vector<const CurveSet*>& sets, const Options& opt) {
+  if (slots_.empty() || rects_.empty() || layoutKey(sets, opt) != key_) return false;
+  const CurveRequest& req = sets[0]->request();
+  std::vector<double> lo(rows(), INFINITY), hi(rows(), -INFINITY);
+  for (const GraphSlot& slot : slots_) {
+    const CurveSet& set = *sets[slot.set];
+    const Curve& curve = set.curve(slot.order);
+    const double scale = opt.units.scale(slot.order, req.body);
+    const int row = static_cast<int>(std::find(rowOrders_.begin(), rowOrders_.end(), slot.order) -
+                                     rowOrders_.begin());
+    QVector<double> keys(curve.crankDeg.begin(), curve.crankDeg.end()), values;
+    values.reserve(keys.size());
+    for (double v : curve.values) {
+      values.push_back(v * scale);
+      lo[row] = std::min(lo[row], values.back());
+      hi[row] = std::max(hi[row], values.back());
+    }
+    slot.curve->setData(keys, values, true);
+    if (slot.marks) {
+      slot.marks->data()->clear();
+      const int turns = set.periodic() ? req.revs : 1;
+      for (const Extreme* e : {&set.extremes(slot.order).max, &set.extremes(slot.order).min})
+        for (int t = 0; t < turns; ++t)
+          slot.marks->addData(e->crankDeg + 360.0 * t, e->value * scale);
+    }
+  }
+  for (int r = 0; r < rows(); ++r) {
+    double l = lo[r], h = hi[r];
+    if (!(l <= h)) l = -1, h = 1;
+    const double pad = h > l ? 0.06 * (h - l) : std::max(1.0, std::abs(h)) * 0.1;
+    for (int c = 0; c < columns_; ++c)
+      axisRect(r, c)->axis(QCPAxis::atLeft)->setRange(l - pad, h + pad);
+  }
+  for (QCPItemTracer* t : tracers_) t->updatePosition();
+  plot_->replot();
+  return true;
+}
+
 void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options& opt) {
   clear();
+  key_ = sets.empty() ? QString() : layoutKey(sets, opt);
   if (sets.empty()) {
     plot_->replot();
     return;
@@ -231,6 +302,7 @@ void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options
         }
         QCPGraph* g = plot_->addGraph(x, y);
         g->setData(keys, values, true);
+        slots_.push_back(GraphSlot{g, nullptr, i, o});
         g->setPen(QPen(colour(i), 1.5));
         // Adaptive sampling draws dense data as one min-max bar per pixel column, which makes
         // steep parts look bold: only for curves far denser than any figure's pixels.
@@ -238,6 +310,7 @@ void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options
         g->setName(set.title());
         if (opt.extremes && set.extremes(o).status.ok()) {
           QCPGraph* marks = plot_->addGraph(x, y);
+          slots_.back().marks = marks;
           marks->setLineStyle(QCPGraph::lsNone);
           marks->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, colour(i), 7));
           const int turns = set.periodic() ? req.revs : 1;

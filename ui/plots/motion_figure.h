@@ -39,6 +39,10 @@ class MotionFigure {
   // Lays the figure out anew for these curve sets (the first is the main document's) and
   // replots. The sets must outlive the next build (the figure keeps no copy of them).
   void build(const std::vector<const CurveSet*>& sets, const Options& options);
+  // New values for the figure as built (an edit of the design while dragging): the curves'
+  // data, marks and value ranges replaced and one replot, without laying the figure out
+  // again. False, and nothing done, when the layout would differ: build() then.
+  bool refresh(const std::vector<const CurveSet*>& sets, const Options& options);
 
   // Moves the cursor to a crank angle within the plotted range and repaints the cursor layer
   // only (the curves' layers keep their buffers).
@@ -68,6 +72,14 @@ class MotionFigure {
  private:
   void clear();
   std::vector<std::pair<QString, QString>> labels_;  // long and short, per axis rect
+  struct GraphSlot {
+    QCPGraph* curve;
+    QCPGraph* marks;
+    int set;
+    Order order;
+  };
+  std::vector<GraphSlot> slots_;  // the graphs in the order build() made them
+  QString key_;                   // the layout they were made for
 
   QCustomPlot* plot_;
   QCPLayer* cursorLayer_;

@@ -197,19 +197,26 @@ const CurveSet* PlotsPanel::curves(int i) const {
 // --- work -----------------------------------------------------------------------------------
 
 void PlotsPanel::markStale(Document* d) {
+  // The curves are sampled again; the figure keeps its layout if the new curves fit it
+  // (MotionFigure::refresh), which a drag that reshapes the design relies on.
   for (auto& s : sets_)
     if (s.first == d) s.second.reset();
-  figureStale_ = true;
   schedule();
 }
 
 void PlotsPanel::schedule() {
   // Hidden: nothing now; showEvent does what is stale. Shown: once per burst of changes (an
-  // edit dragged with the mouse changes the design many times between two paints).
+  // edit dragged with the mouse changes the design many times between two paints), and at
+  // most 30 times a second: a figure costs a few milliseconds, which a drag's every frame
+  // cannot spare, and the eye does not follow curves faster.
   if (!isVisible() || pending_) return;
   pending_ = true;
-  QTimer::singleShot(0, this, [this] {
-    if (pending_) recompute();
+  constexpr int kMinMs = 33;
+  const int wait = lastFigure_.isValid() ? std::max(0, kMinMs - int(lastFigure_.elapsed())) : 0;
+  QTimer::singleShot(wait, this, [this] {
+    if (!pending_) return;
+    recompute();
+    lastFigure_.start();
   });
 }
 
@@ -264,7 +271,8 @@ void PlotsPanel::rebuildFigure() {
     o.layout = compare_ == Compare::SideBySide ? MotionFigure::Layout::SideBySide
                                                : MotionFigure::Layout::Overlay;
     o.units = units_;
-    figure_->build(sets, o);
+    // The same layout with new values (a drag reshaping the design): the data only.
+    if (figureStale_ || !figure_->refresh(sets, o)) figure_->build(sets, o);
   }
   figureStale_ = false;
   updateExtremes();

@@ -15,6 +15,7 @@
 //   connect(plots, &PlotsPanel::crankAngleRequested, [doc](double d) { doc->setCrankDeg(d); });
 #pragma once
 
+#include <QElapsedTimer>
 #include <QList>
 #include <QPointer>
 #include <QWidget>
@@ -114,6 +115,7 @@ class PlotsPanel : public QWidget {
   // Receivers of the documents' signals: replaced (and so disconnected) with the documents.
   QObject *docContext_ = nullptr, *othersContext_ = nullptr;
   int computations_ = 0;
+  QElapsedTimer lastFigure_;  // when the curves were last recomputed
 
   PlotControls* controls_;
   QStackedWidget* stack_;

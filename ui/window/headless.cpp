@@ -10,6 +10,9 @@
 #include <cstdio>
 #include <vector>
 
+#include <QMouseEvent>
+#include <cmath>
+
 #include "canvas/canvas_view.h"
 #include "document/document.h"
 #include "window/main_window.h"
@@ -17,8 +20,16 @@
 namespace linkage::ui {
 
 bool parseHeadless(const QString& frames, const QString& angle, const QString& size,
-                   HeadlessOptions& o, QString* why) {
+                   HeadlessOptions& o, QString* why, const QString& dragMoves) {
   bool ok = true;
+  if (!dragMoves.isEmpty()) {
+    o.dragMoves = dragMoves.toInt(&ok);
+    if (!ok || o.dragMoves < 1) {
+      *why =
+          QStringLiteral("--benchmark-drag: \"%1\" is not a whole number of moves").arg(dragMoves);
+      return false;
+    }
+  }
   if (!frames.isEmpty()) {
     o.frames = frames.toInt(&ok);
     if (!ok || o.frames < 1) {
@@ -64,6 +75,53 @@ double percentile(std::vector<double> v, double p) {
   std::sort(v.begin(), v.end());
   const size_t i = std::min(v.size() - 1, static_cast<size_t>(p * (v.size() - 1) + 0.5));
   return v[i];
+}
+
+// Mouse moves of a drag of the first output point in the real window, each measured from the
+// move event to the redrawn frame: the event handled, the mechanism solved (the crank turned,
+// or with Ctrl the design changed and re-solved), the canvas, docks and plots brought up to
+// date and painted by the event loop, until nothing is left to do.
+int benchmarkDrag(MainWindow& w, const HeadlessOptions& o) {
+  Document* d = w.document();
+  if (!d->solved() || d->design().outputs.empty()) {
+    std::fprintf(stderr,
+                 "linkage: --benchmark-drag needs a solved mechanism with an output point\n");
+    return 2;
+  }
+  CanvasView* v = w.canvas();
+  QWidget* port = v->viewport();
+  const Qt::KeyboardModifiers mods = o.reshape ? Qt::ControlModifier : Qt::NoModifier;
+  const Vec2 start = d->kinematics().position(d->design().outputs[0]);
+  auto send = [&](QEvent::Type type, const Vec2& at, Qt::MouseButton b, Qt::MouseButtons bs) {
+    const QPointF p = v->mapFromScene(QPointF(at.x(), at.y()));
+    QMouseEvent e(type, p, port->mapToGlobal(p), b, bs, mods);
+    QApplication::sendEvent(port, &e);
+  };
+  auto drain = [] {
+    for (int i = 0; i < 4; ++i) QCoreApplication::processEvents();
+  };
+  send(QEvent::MouseMove, start, Qt::NoButton, Qt::NoButton);
+  send(QEvent::MouseButtonPress, start, Qt::LeftButton, Qt::LeftButton);
+  drain();
+  // A circle of a tenth of the mechanism's size about where the point was: the crank turns to
+  // follow (or, with Ctrl, the point is moved in its link).
+  const double r = 0.1 * d->kinematics().size();
+  std::vector<double> ms;
+  QElapsedTimer t;
+  for (int i = 1; i <= o.dragMoves; ++i) {
+    const double a = 2 * M_PI * i / std::max(o.dragMoves, 60);
+    const Vec2 at = start + r * Vec2(std::sin(a), 1 - std::cos(a));
+    t.start();
+    send(QEvent::MouseMove, at, Qt::NoButton, Qt::LeftButton);
+    drain();
+    ms.push_back(t.nsecsElapsed() * 1e-6);
+  }
+  send(QEvent::MouseButtonRelease, start, Qt::LeftButton, Qt::NoButton);
+  drain();
+  std::printf("drag %s moves %d median_ms %.3f p99_ms %.3f max_ms %.3f\n",
+              o.reshape ? "design" : "motion", o.dragMoves, percentile(ms, 0.5),
+              percentile(ms, 0.99), *std::max_element(ms.begin(), ms.end()));
+  return 0;
 }
 
 }  // namespace
@@ -130,6 +188,7 @@ int runHeadless(const HeadlessOptions& o) {
     std::printf("frames %d median_ms %.3f p99_ms %.3f max_ms %.3f\n", o.frames, percentile(ms, 0.5),
                 percentile(ms, 0.99), *std::max_element(ms.begin(), ms.end()));
   }
+  if (o.dragMoves > 0) return benchmarkDrag(w, o);
   return 0;
 }
 

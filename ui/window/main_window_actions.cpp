@@ -44,6 +44,15 @@ void MainWindow::createActions() {
   connect(makeAction("saveAs", tr("Save &As..."), QKeySequence(tr("Ctrl+Shift+S")),
                      tr("Save the mechanism under another name")),
           &QAction::triggered, this, &MainWindow::saveAs);
+  connect(makeAction("exportTable", tr("Motion &Table (CSV)..."), QKeySequence(),
+                     tr("Write the motion of the output points over revolutions as a CSV table")),
+          &QAction::triggered, this, &MainWindow::exportMotionTable);
+  connect(makeAction("exportFigure", tr("&Plot Figure..."), QKeySequence(),
+                     tr("Write the plots as a PNG, PDF or SVG figure")),
+          &QAction::triggered, this, &MainWindow::exportFigure);
+  connect(makeAction("exportAnimation", tr("&Animation..."), QKeySequence(),
+                     tr("Write the animation as a GIF or a numbered PNG sequence")),
+          &QAction::triggered, this, &MainWindow::exportAnimation);
   connect(
       makeAction("closeWindow", tr("&Close Window"), QKeySequence::Close, tr("Close this window")),
       &QAction::triggered, this, &QWidget::close);
