@@ -5,7 +5,9 @@
 #include "ui_test.h"
 
 #include <QComboBox>
+#include <QLabel>
 #include <QProcess>
+#include <QStatusBar>
 #include <QTemporaryDir>
 
 #include "canvas/canvas_scene.h"
@@ -254,6 +256,58 @@ TEST(Draw, WanzerInversion2DrawnWithTheToolsMovesAsTheExample) {
     EXPECT_LT((ma.acceleration - mb.acceleration).norm(), 1e-9 * mb.acceleration.norm() + 1e-9)
         << deg;
   }
+}
+
+}  // namespace
+}  // namespace linkage::ui
+
+namespace linkage::ui {
+namespace {
+
+QString statusText(const MainWindow& w) {
+  QString all;
+  for (QLabel* l : w.statusBar()->findChildren<QLabel*>()) all += l->text() + "\n";
+  return all;
+}
+
+// Over-constrained: a second coupler beside the first says the same thing twice; the solver
+// names the redundant joint, the canvas draws it in the warning colour and the status bar
+// says so. Under-constrained: a link hanging from the crank is free with the crank held.
+TEST(Draw, RedundantJointsAndFreeBodiesAreNamedAndShown) {
+  MainWindow w;
+  w.resize(1200, 800);
+  w.show();
+  QApplication::processEvents();
+  w.canvas()->setZoom(5);
+  w.canvas()->centerOn(30, 25);
+  drawFourBar(w);
+  test::Draw d{w};
+  d.key("L");
+  d.click(10, 20);
+  d.click(70, 50);
+  d.key(Qt::Key_Return);
+  Document* doc = w.document();
+  ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
+  const StructureReport r = doc->kinematics().structure();
+  ASSERT_FALSE(r.redundantJoints.empty());
+  EXPECT_EQ(r.mobility, 1);
+  EXPECT_EQ(r.gruebler, 0);
+  int flagged = 0;
+  for (PinItem* p : w.scene()->pinItems()) flagged += p->flagged();
+  EXPECT_EQ(flagged, int(r.redundantJoints.size()));
+  EXPECT_NE(statusText(w).indexOf("redundant"), -1) << statusText(w).toStdString();
+  EXPECT_NE(statusText(w).indexOf("Gruebler 0"), -1) << statusText(w).toStdString();
+  w.action("undo")->trigger();
+  // A link hanging from the crank's pin, its other end free.
+  d.key("L");
+  d.click(10, 20);
+  d.click(-20, 40);
+  d.key(Qt::Key_Return);
+  ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
+  const StructureReport u = doc->kinematics().structure();
+  ASSERT_EQ(u.freeBodies.size(), 1u);
+  EXPECT_TRUE(w.scene()->bodyItem(u.freeBodies[0])->flagged());
+  EXPECT_EQ(doc->design().body(u.freeBodies[0])->name, "link5");
 }
 
 }  // namespace

@@ -238,7 +238,12 @@ void CanvasScene::updateFlags() {
   const Status& pose = doc_->poseStatus();
   const bool poseFailed =
       pose.code == StatusCode::Singular || pose.code == StatusCode::NotConverged;
+  // And what the structure analysis names: redundant joints, bodies free with the crank held.
+  StructureReport structure;
+  if (solverShown_) structure = doc_->kinematics().structure();
   auto listed = [&](JointId j) {
+    for (JointId x : structure.redundantJoints)
+      if (x == j) return true;
     for (const Status* st : {&s, &pose}) {
       if (st == &pose && !poseFailed) continue;
       for (JointId x : st->joints)
@@ -254,6 +259,7 @@ void CanvasScene::updateFlags() {
   for (BodyItem* b : bodies_) {
     bool named = false;
     for (BodyId x : s.bodies) named = named || x == b->id();
+    for (BodyId x : structure.freeBodies) named = named || x == b->id();
     b->setFlagged(named);
   }
 }

@@ -119,6 +119,7 @@ void MainWindow::connectDocument() {
   history_->setStack(doc_->undoStack());
   connect(doc_, &Document::fileStateChanged, this, &MainWindow::updateTitle);
   connect(doc_, &Document::designChanged, this, &MainWindow::updateStatus);
+  connect(doc_, &Document::designChanged, this, &MainWindow::showDesignStatus);
   // A new solver (a file, an edit) starts with the default: ask again what is shown.
   connect(doc_, &Document::designChanged, this, &MainWindow::updateWork);
   connect(doc_, &Document::poseChanged, this, [this] {
@@ -225,6 +226,13 @@ void MainWindow::createStatusBar() {
   hint_->setText(toolbox_->hint());
   connect(toolbox_, &Toolbox::hintChanged, hint_, &QLabel::setText);
   statusBar()->addWidget(hint_);
+  problem_ = new QLabel;
+  problem_->setTextFormat(Qt::PlainText);
+  QPalette warn = problem_->palette();
+  warn.setColor(QPalette::WindowText, QColor(200, 30, 20));
+  problem_->setPalette(warn);
+  problem_->hide();
+  statusBar()->addWidget(problem_);
   message_ = new QLabel;
   message_->setTextFormat(Qt::PlainText);
   message_->setMinimumWidth(100);
@@ -254,7 +262,9 @@ void MainWindow::updateStatus() {
                             : tr("crank \u2013"));
   if (k.valid()) {
     const StructureReport r = k.structure();
-    dof_->setText(tr("DOF %1").arg(r.mobility));
+    dof_->setText(r.gruebler == r.mobility
+                      ? tr("DOF %1").arg(r.mobility)
+                      : tr("DOF %1 (Gruebler %2)").arg(r.mobility).arg(r.gruebler));
     dof_->setToolTip(tr("Degrees of freedom: %1 (Gruebler's count %2; rank %3)")
                          .arg(r.mobility)
                          .arg(r.gruebler)
@@ -262,8 +272,26 @@ void MainWindow::updateStatus() {
   } else {
     dof_->setText(tr("DOF \u2013"));
   }
-  if (!doc_->solveStatus().ok())
-    showMessage(QString::fromStdString(doc_->solveStatus().message), true);
+}
+
+void MainWindow::showDesignStatus() {
+  // Kept in a label of its own while it holds (transient messages come and go beside it).
+  QString text;
+  const Kinematics& k = doc_->kinematics();
+  if (!doc_->solveStatus().ok()) {
+    text = QString::fromStdString(doc_->solveStatus().message);
+  } else if (k.valid()) {
+    // Over- or under-constrained: the joints or bodies the structure analysis names (they are
+    // drawn in the warning colour).
+    for (const Note& n : k.notes())
+      if (n.kind == Note::Kind::RedundantJoints || n.kind == Note::Kind::FreedomsHeld) {
+        text = QString::fromStdString(n.text);
+        break;
+      }
+  }
+  problem_->setText(text);
+  problem_->setToolTip(text);
+  problem_->setVisible(!text.isEmpty());
 }
 
 void MainWindow::updateTitle() {

@@ -91,6 +91,9 @@ class MainWindow : public QMainWindow {
   void addRecent(const QString& path);
   void updateTitle();
   void updateStatus();
+  // What the solver says of the design: why it cannot take it, or the joints that are
+  // redundant and the bodies that are free.
+  void showDesignStatus();
   void updateWork();
   void showMessage(const QString& text, bool warning);
   void readSettings();
@@ -124,6 +127,7 @@ class MainWindow : public QMainWindow {
   QMenu* recentMenu_ = nullptr;
   QMenu* examplesMenu_ = nullptr;
   QLabel* message_ = nullptr;
+  QLabel* problem_ = nullptr;  // what is wrong with the design, while it is
   QLabel* cursor_ = nullptr;
   QLabel* crank_ = nullptr;
   QLabel* dof_ = nullptr;
