@@ -53,3 +53,16 @@ shot() { import -window root "$work/shot$1.png"; }
 diffpixels() { compare -metric AE "$work/shot$1.png" "$work/shot$2.png" null: 2>&1 || true; }
 changed() { [ "$(diffpixels "$1" "$2")" != "0" ]; }
 same() { [ "$(diffpixels "$1" "$2")" = "0" ]; }
+
+# The canvas's origin in a screenshot: where its two axes cross. The axes are one pixel wide,
+# the longest straight runs of mid grey on the canvas (darker than the grid, lighter than text).
+axes_of() {
+  convert "$1" -colorspace gray -depth 8 txt:- | awk -F'[,: ()]+' '
+    NR > 1 { v = $(NF-1); if (v >= 100 && v <= 180) { col[$1]++; row[$2]++ } }
+    END {
+      for (c in col) if (col[c] > bc) { bc = col[c]; x = c }
+      for (r in row) if (row[r] > br) { br = row[r]; y = r }
+      if (bc < 200 || br < 200) exit 1
+      print x, y
+    }'
+}

@@ -26,6 +26,8 @@ class CanvasView : public QGraphicsView {
   void setZoom(double pxPerMm);
   // Zooms about a viewport point (the view's centre when none is given).
   void zoomBy(double factor, std::optional<QPoint> anchor = std::nullopt);
+  // Pixels per millimetre at which the drawing is at its real size (the screen's logical DPI).
+  double actualSizeZoom() const { return logicalDpiX() / 25.4; }
   // The whole mechanism (and its traced paths) in view, with a margin.
   void fitToMechanism();
   // Panning now (middle button, or Space held): the tools leave the mouse to the view.

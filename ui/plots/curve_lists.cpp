@@ -27,7 +27,7 @@ QString formatValue(double v) {
 }
 
 QString formatDegrees(double deg) {
-  return QString::fromUtf8("%1°").arg(deg, 0, 'f', 2);
+  return std::isfinite(deg) ? QString::fromUtf8("%1°").arg(deg, 0, 'f', 2) : QString::fromUtf8("—");
 }
 
 QString cursorValues(const std::vector<CurveSet*>& sets, double deg, const PlotUnits& u) {

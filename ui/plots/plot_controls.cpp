@@ -85,6 +85,7 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
     Q_EMIT requestChanged(r);
   };
   connect(target_, &QComboBox::currentIndexChanged, this, request);
+  connect(target_, &QComboBox::activated, this, [this] { autoTarget_ = false; });
   connect(component_, &QComboBox::currentIndexChanged, this, request);
   connect(direction_, &QDoubleSpinBox::editingFinished, this, request);
   for (QCheckBox* c : orders_) connect(c, &QCheckBox::toggled, this, request);
@@ -146,7 +147,8 @@ bool PlotControls::offerTargets(const Mechanism* m, CurveRequest& r) {
   }
   bool changed = false;
   int i = target_->findData(QStringList{r.target, r.body ? "body" : "point"});
-  if (i < 0 && target_->count() > 0) {
+  const bool firstOutput = m && !m->outputs.empty() && i != 0;
+  if ((i < 0 || (autoTarget_ && firstOutput)) && target_->count() > 0) {
     // The first output, or the first point: what the document is about.
     i = 0;
     const QStringList d = target_->itemData(0).toStringList();

@@ -40,6 +40,9 @@ class PlotControls : public QWidget {
 
   CurveRequest shown_;
   bool quiet_ = false;  // while showing a state: no signals
+  // The target was chosen for the user (no output yet), not by them: it gives way to the
+  // first output point when the design gets one.
+  bool autoTarget_ = true;
   QComboBox *target_, *component_, *velocityUnit_, *accelerationUnit_, *compare_;
   QDoubleSpinBox* direction_;
   QCheckBox* orders_[kOrders];

@@ -52,8 +52,10 @@ void LinkTool::move(const CanvasMouse& e) {
 }
 
 void LinkTool::doubleClick(const CanvasMouse&) {
-  // The press of the double click added its point already.
-  finish();
+  // The press of the double click added its point already. A double click that is only the
+  // first point (two quick clicks at one place, the first of them for something else) does
+  // not end the link.
+  if (vertices_.size() >= 2) finish();
 }
 
 bool LinkTool::key(QKeyEvent* e) {

@@ -210,6 +210,10 @@ bool Toolbox::eventFilter(QObject* watched, QEvent* event) {
       } else if (event->type() == QEvent::MouseButtonRelease) {
         current_->release(e);
       } else {
+        // Qt sends a double click in place of the second click's press: the press first,
+        // then the double click (a quick second click may also be a new start).
+        view->setFocus();
+        current_->press(e);
         current_->doubleClick(e);
       }
       return true;

@@ -65,6 +65,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   updateTitle();
   updateStatus();
   updateComparisons();
+  // The keyboard to the canvas: tool keys and Space work from the start.
+  view_->setFocus();
 }
 
 MainWindow::~MainWindow() {

@@ -80,6 +80,10 @@ void MainWindow::createActions() {
           &QAction::triggered, this, [this] { view_->zoomBy(1.25); });
   connect(makeAction("zoomOut", tr("Zoom &Out"), QKeySequence::ZoomOut, tr("Zoom out")),
           &QAction::triggered, this, [this] { view_->zoomBy(0.8); });
+  connect(makeAction("actualSize", tr("&Actual Size"), QKeySequence(tr("Ctrl+1")),
+                     tr("A millimetre on the screen for a millimetre of the mechanism")),
+          &QAction::triggered, this,
+          [this] { view_->zoomBy(view_->actualSizeZoom() / view_->zoom()); });
   QAction* grid =
       makeAction("showGrid", tr("&Grid"), QKeySequence(tr("#")), tr("Show the millimetre grid"));
   grid->setCheckable(true);
@@ -170,7 +174,7 @@ void MainWindow::createMenus() {
   tools->addAction(toolbox_->snapAction());
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
-  for (const char* a : {"fit", "zoomIn", "zoomOut"}) view->addAction(action(a));
+  for (const char* a : {"fit", "zoomIn", "zoomOut", "actualSize"}) view->addAction(action(a));
   view->addSeparator();
   for (const char* a : {"showGrid", "showCentres", "showTraces", "darkPalette"})
     view->addAction(action(a));
