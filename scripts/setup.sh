@@ -53,5 +53,5 @@ if [ $tests -eq 1 ]; then
 else
   cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLINKAGE_BUILD_TESTS=OFF \
     -DLINKAGE_BUILD_BENCH=OFF >/dev/null
-  cmake --build "$BUILD_DIR" --target linkage-cli
+  cmake --build "$BUILD_DIR" --target linkage linkage-cli linkage-plot
 fi

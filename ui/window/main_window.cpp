@@ -72,6 +72,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 MainWindow::~MainWindow() {
   openWindows().removeAll(this);
   updateComparisons();
+  // The children (document, docks, scene) are destroyed after this destructor, by QObject's;
+  // signals they send on the way (a dock hidden, the undo stack cleared) must not reach this
+  // window's slots any more.
+  for (QObject* child : findChildren<QObject*>()) disconnect(child, nullptr, this, nullptr);
 }
 
 void MainWindow::updateComparisons() {
