@@ -3,6 +3,7 @@
 //   linkage [FILE | EXAMPLE-NAME]
 //   linkage --screenshot OUT.png [FILE|EXAMPLE] [--angle DEG] [--ics] [--size WxH] [--dark]
 //   linkage --benchmark-frames N [FILE|EXAMPLE] [--ics] [--plots] [--size WxH]
+//   (both also [--extremes] [--transmission] [--checks]: the design checks)
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
@@ -59,7 +60,14 @@ int main(int argc, char** argv) {
                                 QStringLiteral("Window size (default 1280x800)."),
                                 QStringLiteral("WxH"));
   const QCommandLineOption dark(QStringLiteral("dark"), QStringLiteral("Use the dark palette."));
-  cli.addOptions({screenshot, bench, angle, ics, plots, size, dark});
+  const QCommandLineOption extremes(QStringLiteral("extremes"),
+                                    QStringLiteral("Draw the extreme positions of the output."));
+  const QCommandLineOption transmission(QStringLiteral("transmission"),
+                                        QStringLiteral("Show the transmission angles."));
+  const QCommandLineOption checks(QStringLiteral("checks"),
+                                  QStringLiteral("Show the design-checks dock."));
+  cli.addOptions(
+      {screenshot, bench, angle, ics, plots, size, dark, extremes, transmission, checks});
   cli.process(app);
 
   const QStringList args = cli.positionalArguments();
@@ -74,6 +82,9 @@ int main(int argc, char** argv) {
     o.ics = cli.isSet(ics);
     o.plots = cli.isSet(plots);
     o.dark = cli.isSet(dark);
+    o.extremes = cli.isSet(extremes);
+    o.transmission = cli.isSet(transmission);
+    o.checks = cli.isSet(checks);
     QString why;
     if (!linkage::ui::parseHeadless(cli.value(bench), cli.value(angle), cli.value(size), o, &why)) {
       std::fprintf(stderr, "linkage: %s\n", qPrintable(why));

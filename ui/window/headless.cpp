@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QRegularExpression>
@@ -78,6 +79,12 @@ int runHeadless(const HeadlessOptions& o) {
   }
   w.action("showCentres")->setChecked(o.ics);
   if (QAction* a = w.action("showPlots")) a->setChecked(o.plots);
+  w.action("showExtremes")->setChecked(o.extremes);
+  w.action("showTransmission")->setChecked(o.transmission);
+  if (o.checks) {
+    w.dock("designChecks")->show();
+    w.dock("designChecks")->raise();
+  }
   w.show();
   settle();
   w.canvas()->fitToMechanism();

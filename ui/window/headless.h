@@ -13,6 +13,8 @@ struct HeadlessOptions {
   int frames = 0;      // frames to measure, or 0
   double angleDeg = 0;
   bool ics = false, plots = false, dark = false;
+  // The design checks: extreme positions, transmission arcs, the design-checks dock.
+  bool extremes = false, transmission = false, checks = false;
   QSize size{1280, 800};
 };
 

@@ -53,6 +53,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   createActions();
   createTools();
   createDocks();
+  createDesignChecks();
   createMenus();
   createToolBars();
   createStatusBar();
@@ -295,6 +296,8 @@ void MainWindow::readSettings() {
   action("showGrid")->setChecked(s.value(QStringLiteral("grid"), true).toBool());
   action("showCentres")->setChecked(s.value(QStringLiteral("centres"), false).toBool());
   action("showTraces")->setChecked(s.value(QStringLiteral("traces"), true).toBool());
+  action("showExtremes")->setChecked(s.value(QStringLiteral("extremes"), false).toBool());
+  action("showTransmission")->setChecked(s.value(QStringLiteral("transmission"), false).toBool());
   action("darkPalette")->setChecked(s.value(QStringLiteral("dark"), false).toBool());
   crankBar_->setSpeedIndex(s.value(QStringLiteral("speed"), 3).toInt());
   animator_->setIncrementDeg(s.value(QStringLiteral("increment"), 1.0).toDouble());
@@ -311,6 +314,8 @@ void MainWindow::writeSettings() const {
   s.setValue(QStringLiteral("grid"), action("showGrid")->isChecked());
   s.setValue(QStringLiteral("centres"), action("showCentres")->isChecked());
   s.setValue(QStringLiteral("traces"), action("showTraces")->isChecked());
+  s.setValue(QStringLiteral("extremes"), action("showExtremes")->isChecked());
+  s.setValue(QStringLiteral("transmission"), action("showTransmission")->isChecked());
   s.setValue(QStringLiteral("dark"), action("darkPalette")->isChecked());
   s.setValue(QStringLiteral("increment"), animator_->incrementDeg());
   s.endGroup();

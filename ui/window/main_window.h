@@ -19,11 +19,15 @@ class Animator;
 class CanvasScene;
 class CanvasView;
 class CentresPanel;
+class ChecksPanel;
 class CrankBar;
+class DesignChoices;
+class DesignOverlays;
 class Document;
 class InspectorPanel;
 class PropertiesPanel;
 class Selection;
+class StudyDialog;
 class ToolOverlay;
 class Toolbox;
 
@@ -44,6 +48,11 @@ class MainWindow : public QMainWindow {
   CrankBar* crankBar() const { return crankBar_; }
   Toolbox* toolbox() const { return toolbox_; }
   Selection* selection() const { return selection_; }
+  DesignChoices* designChoices() const { return choices_; }
+  DesignOverlays* designOverlays() const { return designOverlays_; }
+  ChecksPanel* checksPanel() const { return checks_; }
+  // The parameter-study dialog, made on first use (Analysis > Parameter Study).
+  StudyDialog* studyDialog();
   QDockWidget* dock(const QString& objectName) const;
   // An action by its object name ("play", "open", "showCentres", ...), for tests and scripts.
   QAction* action(const QString& objectName) const;
@@ -76,6 +85,8 @@ class MainWindow : public QMainWindow {
   void createToolBars();
   void createDocks();
   void createStatusBar();
+  void createDesignChecks();  // main_window_design.cpp
+  void addAnalysisMenu();
   void connectDocument();
   QAction* makeAction(const QString& name, const QString& text, const QKeySequence& key,
                       const QString& tip);
@@ -111,6 +122,10 @@ class MainWindow : public QMainWindow {
   QLabel* cursor_ = nullptr;
   QLabel* crank_ = nullptr;
   QLabel* dof_ = nullptr;
+  DesignChoices* choices_ = nullptr;
+  DesignOverlays* designOverlays_ = nullptr;
+  ChecksPanel* checks_ = nullptr;
+  StudyDialog* study_ = nullptr;
 };
 
 }  // namespace linkage::ui

@@ -160,16 +160,20 @@ void MainWindow::createMenus() {
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (const char* a : {"fit", "zoomIn", "zoomOut"}) view->addAction(action(a));
   view->addSeparator();
-  for (const char* a : {"showGrid", "showCentres", "showTraces", "darkPalette"})
+  for (const char* a :
+       {"showGrid", "showCentres", "showTraces", "showExtremes", "showTransmission", "darkPalette"})
     view->addAction(action(a));
   view->addSeparator();
-  for (const char* d : {"properties", "centres"}) view->addAction(dock(d)->toggleViewAction());
+  for (const char* d : {"properties", "centres", "designChecks"})
+    view->addAction(dock(d)->toggleViewAction());
 
   QMenu* anim = menuBar()->addMenu(tr("&Animation"));
   for (const char* a : {"play", "stepBack", "stepForward", "toStart"}) anim->addAction(action(a));
   anim->addSeparator();
   anim->addAction(action("slower"));
   anim->addAction(action("faster"));
+
+  addAnalysisMenu();
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(action("about"));
