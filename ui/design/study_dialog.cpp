@@ -79,7 +79,10 @@ StudyDialog::StudyDialog(Document* doc, QWidget* parent) : QDialog(parent), doc_
   resize(1180, 760);
 }
 
-StudyDialog::~StudyDialog() = default;
+StudyDialog::~StudyDialog() {
+  // The run stops (and its threads are joined) while the dialog its signals go to is whole.
+  delete runner_;
+}
 
 void StudyDialog::buildForm() {
   move_ = new QComboBox;
