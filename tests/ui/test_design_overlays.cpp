@@ -132,6 +132,11 @@ TEST(DesignOverlays, ExtremesAreDrawnOnTheCanvas) {
     for (int x = 0; x < on.width(); ++x) changed += on.pixel(x, y) != off.pixel(x, y);
   EXPECT_GT(changed, 500);
   shot(&w, "design-extremes");
+  // Across the view: the rod's E along x, the labels above or below the dimension.
+  w.designChoices()->setSubject({QStringLiteral("rod.E"), QString(), Vec2(1, 0)});
+  QApplication::processEvents();
+  EXPECT_GE(w.designOverlays()->extremesItem()->poses().poses.size(), 2u);
+  shot(&w, "design-extremes-across");
 }
 
 // Each arc is transmissionAngle's value at the pose, spans exactly that angle between the lines

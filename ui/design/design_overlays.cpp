@@ -3,6 +3,7 @@
 #include "canvas/canvas_scene.h"
 #include "design/design_choices.h"
 #include "design/extremes_item.h"
+#include "design/extremes_notes.h"
 #include "design/transmission_item.h"
 #include "document/document.h"
 
@@ -10,18 +11,23 @@ namespace linkage::ui {
 
 namespace {
 // Above the traced paths (-10), under the frame (-5) and the bodies: ghosts behind the
-// mechanism. The arcs over everything but the instant centres' lines.
-constexpr double kExtremesZ = -8, kTransmissionZ = 95;
+// mechanism; their marks and values, and the arcs, over everything but the instant centres.
+constexpr double kExtremesZ = -8, kNotesZ = 94, kTransmissionZ = 95;
 }  // namespace
 
 DesignOverlays::DesignOverlays(CanvasScene* scene, DesignChoices* choices, QObject* parent)
     : QObject(parent), choices_(choices) {
   auto board = std::make_shared<LabelBoard>();
   scene->addOverlay(new LabelBoardReset(board));
-  extremes_ = new ExtremesItem(scene->context(), board);
+  extremes_ = new ExtremesItem(scene->context());
   extremes_->setZValue(kExtremesZ);
   extremes_->setVisible(false);
   scene->addOverlay(extremes_);
+  notes_ = new ExtremesNotes(scene->context(), extremes_, board);
+  notes_->setZValue(kNotesZ);
+  notes_->setVisible(false);
+  extremes_->setNotes(notes_);
+  scene->addOverlay(notes_);
   transmission_ = new TransmissionItem(scene->context(), board);
   transmission_->setZValue(kTransmissionZ);
   transmission_->setVisible(false);
@@ -52,6 +58,7 @@ void DesignOverlays::setExtremesVisible(bool on) {
   if (on == extremesOn_) return;
   extremesOn_ = on;
   extremes_->setVisible(on);
+  notes_->setVisible(on);
   updateExtremes();
 }
 

@@ -14,6 +14,7 @@ class CanvasScene;
 class DesignChoices;
 class Document;
 class ExtremesItem;
+class ExtremesNotes;
 class TransmissionItem;
 
 class DesignOverlays : public QObject {
@@ -42,6 +43,7 @@ class DesignOverlays : public QObject {
   QPointer<Document> doc_;
   DesignChoices* choices_;
   ExtremesItem* extremes_;
+  ExtremesNotes* notes_;
   TransmissionItem* transmission_;
   bool extremesOn_ = false, transmissionOn_ = false;
   int searches_ = 0, arcUpdates_ = 0;

@@ -1,17 +1,13 @@
 // The mechanism drawn faintly at the extreme positions of a point (or of a body's angle), as
 // the paper of seed 001 draws its figure 2b: every moving body's outline, its pins and blocks,
-// thin and light, at each crank angle findLimits reports, with the point marked there; for a
-// point, the stroke as a dimension beside it with every extreme at its height ("max 131.20 mm
-// (crank 87.3°)"); for a body, each extreme's label at the body's mark. The poses are computed once
-// per design (on a copy of the document's solver); the item only paints them.
+// thin and light, at each crank angle findLimits reports, under the mechanism. Their marks,
+// values and the stroke are drawn over it by ExtremesNotes (extremes_notes.h). The poses are
+// computed once per design (on a copy of the document's solver); the items only paint them.
 #pragma once
 
 #include <vector>
 
-#include <memory>
-
 #include "canvas/canvas_item.h"
-#include "design/overlay_labels.h"
 #include "linkage/drawing.h"
 #include "linkage/limits.h"
 
@@ -27,7 +23,7 @@ struct ExtremePoses {
   LimitMeasure measure;
   Limits limits;                   // findLimits's answer; status says why there are no poses
   std::vector<ExtremePose> poses;  // one per extreme, crank order
-  QString label;                   // the point's "body.point", or the body's name
+  Status status;                   // the copy's turn to the extremes: why poses stop short
 };
 
 // findLimits on k, then a copy of k turned to each extreme (from crank angle 0 forwards, as
@@ -36,10 +32,12 @@ ExtremePoses findExtremePoses(const Kinematics& k, const LimitMeasure& what);
 
 class ExtremesItem : public CanvasItem {
  public:
-  ExtremesItem(const CanvasContext* ctx, std::shared_ptr<LabelBoard> board);
+  explicit ExtremesItem(const CanvasContext* ctx);
   void setPoses(ExtremePoses poses);
   void clear();
   const ExtremePoses& poses() const { return poses_; }
+  // The item that marks the positions and labels them (above the mechanism), repainted with it.
+  void setNotes(QGraphicsItem* notes) { notes_ = notes; }
 
   QRectF boundingRect() const override;
   void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
@@ -52,7 +50,7 @@ class ExtremesItem : public CanvasItem {
     std::vector<std::pair<QPolygonF, int>> outlines;  // world polygons with the body's number
     std::vector<QPointF> pins;
   };
-  std::shared_ptr<LabelBoard> board_;
+  QGraphicsItem* notes_ = nullptr;
   ExtremePoses poses_;
   std::vector<Ghost> ghosts_;  // [pose]
 };
