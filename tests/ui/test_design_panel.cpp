@@ -13,6 +13,8 @@
 #include <QTableWidget>
 #include <QTest>
 
+#include "canvas/canvas_view.h"
+#include "centres/centres_panel.h"
 #include "design/checks_panel.h"
 #include "design/design_choices.h"
 #include "document/commands.h"
@@ -22,6 +24,11 @@
 
 namespace linkage::ui {
 namespace {
+
+// Lets the window lay its docks out and report their visibility (queued signals).
+void settle() {
+  for (int i = 0; i < 4; ++i) QApplication::processEvents();
+}
 
 double exact(const QTableWidget* t, int row, int column, int role = Qt::UserRole) {
   const QTableWidgetItem* i = t->item(row, column);
@@ -36,9 +43,8 @@ struct PanelWindow {
     panel = w.checksPanel();
     w.resize(1200, 800);
     w.show();
-    w.dock("designChecks")->show();
-    w.dock("designChecks")->raise();
-    QApplication::processEvents();
+    w.action("showDesignChecks")->trigger();
+    settle();
   }
   Document* doc() { return w.document(); }
 };
@@ -136,6 +142,45 @@ TEST(DesignPanel, TheNumbersAreTheSolverAPIs) {
   EXPECT_TRUE(p->limitsStatus().contains(QStringLiteral("not both 0")));
 }
 
+TEST(DesignPanel, ShiftDShowsTheDockAndATabBehindAnotherComputesNothing) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("needle-876-alpha-35"));
+  w.resize(1200, 800);
+  w.show();
+  QApplication::processEvents();
+  ChecksPanel* p = w.checksPanel();
+  ASSERT_FALSE(w.dock("designChecks")->isVisible());
+  EXPECT_EQ(p->computations(), 0);
+  QTest::keyClick(w.canvas(), Qt::Key_D, Qt::ShiftModifier);
+  settle();
+  EXPECT_TRUE(w.dock("designChecks")->isVisible());
+  EXPECT_TRUE(p->shown());
+  EXPECT_EQ(p->computations(), 1);
+  EXPECT_EQ(p->transmissionTable()->rowCount(), 3);
+  // A tab beside the instant centres, in front: the centres behind it compute nothing (their
+  // dock is moved off the window but stays "visible").
+  EXPECT_TRUE(w.tabifiedDockWidgets(w.dock("centres")).contains(w.dock("designChecks")));
+  ASSERT_TRUE(w.document()->setCrankDeg(10).ok());
+  QApplication::processEvents();
+  EXPECT_FALSE(w.centresPanel()->chain().has_value());
+  // Behind the instant centres: the dock's visibility says it is not seen.
+  w.dock("centres")->raise();
+  settle();
+  ASSERT_FALSE(p->shown());
+  ASSERT_TRUE(w.document()->setCrankDeg(20).ok());
+  EXPECT_TRUE(w.centresPanel()->chain().has_value());  // the centres are seen again
+  Mechanism m = w.document()->design();
+  m.point(*m.findPoint("ground.C"))->pos.y() += 0.5;
+  m.point(*m.findPoint("lever.C"))->pos.y() += 0.5;
+  editDesign(w.document(), "Move C", m);
+  EXPECT_EQ(p->computations(), 1);
+  w.dock("designChecks")->raise();
+  settle();
+  EXPECT_TRUE(p->shown());
+  EXPECT_EQ(p->computations(), 2);
+  expectGrashof(*p, w.document()->design());
+}
+
 TEST(DesignPanel, EditsAreFollowedOnlyWhileShown) {
   PanelWindow pw("needle-876-alpha-0");
   ChecksPanel* p = pw.panel;
@@ -153,8 +198,8 @@ TEST(DesignPanel, EditsAreFollowedOnlyWhileShown) {
   const PointId g = d->design().outputs.front();
   expectLimits(*p, d->kinematics(), LimitMeasure::along(g, defaultDirection(d->design(), g)));
   // Hidden: edits and poses compute nothing; shown again, the numbers are the design's now.
-  pw.w.dock("designChecks")->hide();
-  QApplication::processEvents();
+  pw.w.action("showDesignChecks")->trigger();
+  settle();
   const int hidden = p->computations();
   m.point(*m.findPoint("ground.C"))->pos.y() += 0.5;
   m.point(*m.findPoint("lever.C"))->pos.y() += 0.5;
@@ -162,8 +207,8 @@ TEST(DesignPanel, EditsAreFollowedOnlyWhileShown) {
   pw.w.designChoices()->setBand({35, 145});
   ASSERT_TRUE(d->setCrankDeg(80).ok());
   EXPECT_EQ(p->computations(), hidden);
-  pw.w.dock("designChecks")->show();
-  QApplication::processEvents();
+  pw.w.action("showDesignChecks")->trigger();
+  settle();
   EXPECT_EQ(p->computations(), hidden + 1);
   expectGrashof(*p, d->design());
   expectTransmission(*p, d->kinematics(), {35, 145});

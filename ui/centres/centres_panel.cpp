@@ -122,7 +122,9 @@ void CentresPanel::showEvent(QShowEvent* e) {
 }
 
 void CentresPanel::refresh() {
-  if (!isVisible() || !doc_ || !doc_->kinematics().valid()) {
+  // Seen: not only visible, but on the window (a dock in a tab behind another is moved off it
+  // and stays "visible").
+  if (!isVisible() || visibleRegion().isEmpty() || !doc_ || !doc_->kinematics().valid()) {
     if (chain_) {
       chain_.reset();
       emit chainChanged();

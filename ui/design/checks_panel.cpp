@@ -179,14 +179,14 @@ QString ChecksPanel::limitsStatus() const {
   return limitsNote_->text();
 }
 
-void ChecksPanel::showEvent(QShowEvent* e) {
-  QWidget::showEvent(e);
-  if (stale_) recompute();
+void ChecksPanel::setShown(bool on) {
+  shown_ = on;
+  if (shown_ && stale_) recompute();
 }
 
 void ChecksPanel::markStale() {
   stale_ = true;
-  if (isVisible()) recompute();
+  if (shown_) recompute();
 }
 
 void ChecksPanel::recompute() {

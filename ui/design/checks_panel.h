@@ -7,10 +7,11 @@
 //   canvas's arcs (sweepTransmission);
 // - limit positions: every extreme of a point along a direction (default: its slot's, else +y)
 //   or of a body's angle, with the crank angles and the stroke (findLimits); the same subject
-//   as the canvas's extreme positions. Double-clicking a row turns the crank there.
-// Values follow edits: recomputed when the design, the band or the subject changes, only while
-// the panel is visible (hidden, an edit only marks it stale). Each number's exact value is in
-// its cell's Qt::UserRole.
+//   as the canvas's extreme positions.
+// Double-clicking a value turns the crank to where it occurs. Values follow edits: recomputed
+// when the design, the band or the subject changes, only while the panel is seen (setShown:
+// its dock's visibility); unseen, an edit only marks it stale. Each number's exact value is in
+// its cell's Qt::UserRole, the crank angle it occurs at in CrankRole.
 #pragma once
 
 #include <QPointer>
@@ -35,6 +36,10 @@ class ChecksPanel : public QWidget {
 
   explicit ChecksPanel(DesignChoices* choices, QWidget* parent = nullptr);
   void setDocument(Document* doc);
+  // Whether the panel is seen (its dock's visibilityChanged): computed when it comes into view
+  // if anything changed meanwhile, and on every change while it is seen.
+  void setShown(bool on);
+  bool shown() const { return shown_; }
 
   QTableWidget* grashofTable() const { return grashof_; }
   QTableWidget* transmissionTable() const { return transmission_; }
@@ -47,9 +52,6 @@ class ChecksPanel : public QWidget {
   QString limitsStatus() const;
   // Times the checks were computed (tests: none while hidden).
   int computations() const { return computations_; }
-
- protected:
-  void showEvent(QShowEvent* e) override;
 
  private:
   void buildWidgets();
@@ -66,7 +68,7 @@ class ChecksPanel : public QWidget {
 
   QPointer<Document> doc_;
   DesignChoices* choices_;
-  bool stale_ = true;
+  bool stale_ = true, shown_ = false;
   int computations_ = 0;
   QTableWidget *grashof_, *transmission_, *limits_;
   QComboBox* subject_;

@@ -81,10 +81,7 @@ int runHeadless(const HeadlessOptions& o) {
   if (QAction* a = w.action("showPlots")) a->setChecked(o.plots);
   w.action("showExtremes")->setChecked(o.extremes);
   w.action("showTransmission")->setChecked(o.transmission);
-  if (o.checks) {
-    w.dock("designChecks")->show();
-    w.dock("designChecks")->raise();
-  }
+  if (o.checks) w.action("showDesignChecks")->trigger();
   w.show();
   settle();
   w.canvas()->fitToMechanism();

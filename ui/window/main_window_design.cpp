@@ -41,15 +41,26 @@ void MainWindow::createDesignChecks() {
   dock->setObjectName("designChecks");
   dock->setWidget(checks_);
   addDockWidget(Qt::RightDockWidgetArea, dock);
-  // A tab beside the instant centres: three docks stacked leave each too little height.
+  // A tab beside the instant centres: under them the right side has no room for its tables.
   tabifyDockWidget(this->dock("centres"), dock);
   dock->hide();
+  // Computed only while seen: a dock's visibility, not its widget's, says so (a tab behind
+  // another is moved off the window, still "visible"). Queued, as the other docks' are.
+  connect(dock, &QDockWidget::visibilityChanged, checks_, &ChecksPanel::setShown,
+          Qt::QueuedConnection);
   QAction* show = dock->toggleViewAction();
   show->setObjectName("showDesignChecks");
   show->setShortcut(QKeySequence(tr("Shift+D")));
   show->setStatusTip(
       tr("Grashof's class of each four-bar loop, the transmission angles, the "
          "limit positions and stroke"));
+  // Asked for, it comes to the front of its tabs (once the layout has taken it back).
+  connect(
+      show, &QAction::triggered, dock,
+      [dock](bool on) {
+        if (on) dock->raise();
+      },
+      Qt::QueuedConnection);
 }
 
 void MainWindow::addAnalysisMenu() {
