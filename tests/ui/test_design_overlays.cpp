@@ -8,6 +8,8 @@
 #include "ui_test.h"
 
 #include <QAction>
+#include <QMenu>
+#include <QMenuBar>
 #include <QSettings>
 #include <QTest>
 #include <cmath>
@@ -304,8 +306,22 @@ TEST(DesignOverlays, ActionsShortcutsAndSettings) {
     EXPECT_TRUE(a->isChecked());
     EXPECT_TRUE(w.designOverlays()->extremesVisible());
     EXPECT_TRUE(w.designOverlays()->transmissionVisible());
-    // In the View menu and the Analysis menu.
-    EXPECT_TRUE(e->associatedObjects().size() >= 2);
+    // In the View menu and the Analysis menu, with the dock and the study.
+    auto menu = [&](const QString& title) -> QMenu* {
+      for (QAction* m : w.menuBar()->actions())
+        if (m->menu() && m->text().remove('&') == title) return m->menu();
+      return nullptr;
+    };
+    QMenu* view = menu(QStringLiteral("View"));
+    QMenu* analysis = menu(QStringLiteral("Analysis"));
+    ASSERT_TRUE(view && analysis);
+    for (QAction* act : {e, a}) {
+      EXPECT_TRUE(view->actions().contains(act));
+      EXPECT_TRUE(analysis->actions().contains(act));
+    }
+    EXPECT_TRUE(analysis->actions().contains(w.action("parameterStudy")));
+    EXPECT_TRUE(analysis->actions().contains(w.action("showDesignChecks")));
+    EXPECT_EQ(w.action("showDesignChecks")->shortcut(), QKeySequence(QStringLiteral("Shift+D")));
     EXPECT_TRUE(w.close());
   }
   {
