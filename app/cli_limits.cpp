@@ -98,7 +98,7 @@ int limits(int argc, char** argv) {
     return exitFor(r.status);
   }
   std::string out = "event,crank_deg,value\n";
-  for (const Extreme& e : r.extremes)
+  for (const LocalExtreme& e : r.extremes)
     out += std::string(e.max ? "max," : "min,") + formatNumber(e.crankDeg) + "," +
            formatNumber(e.value) + "\n";
   out += "stroke,," + formatNumber(r.stroke) + "\n";

@@ -6,6 +6,7 @@
 #include "cli_common.h"
 #include "design_options.h"
 #include "linkage/io/numbers.h"
+#include "linkage/io/study_table.h"
 #include "linkage/study.h"
 
 namespace linkage::cli {
@@ -157,33 +158,10 @@ int study(int argc, char** argv) {
     error(s.status.message);
     return kBadInput;
   }
-  const std::string p = m->pointLabel(spec.point);
-  std::string out = "t,turns,lock_deg," + p + ".min_mm," + p + ".max_mm," + p + ".stroke_mm," + p +
-                    ".peak_speed_mm_s," + p + ".peak_accel_mm_s2";
-  for (BodyId b : spec.bodies) out += "," + m->body(b)->name + ".swing_deg";
-  for (const TransmissionJoint& t : s.joints)
-    out += "," + t.label + ".min_deg," + t.label + ".max_deg";
-  out += "\n";
-  for (const StudyRow& r : s.rows) {
-    out +=
-        formatNumber(r.t) + (r.turns ? ",1," : ",0,") + (r.lockDeg ? formatNumber(*r.lockDeg) : "");
-    const size_t measures = 5 + spec.bodies.size() + 2 * s.joints.size();
-    if (!r.turns || !r.status.ok()) {
-      out += std::string(measures, ',') + "\n";
-      if (!r.status.ok())
-        std::cerr << "linkage-cli: t = " << formatNumber(r.t) << ": " << r.status.message << "\n";
-      continue;
-    }
-    // append, not operator+: g++ 12 -Wrestrict false alarm (as in motion_table.cpp)
-    auto put = [&](double v) { out.append(",").append(formatNumber(v)); };
-    for (double v : {r.point.min, r.point.max, r.point.stroke, r.peakSpeed, r.peakAccel}) put(v);
-    for (const Limits& b : r.bodies) put(b.stroke);
-    for (const TransmissionSummary& t : r.transmission) {
-      put(t.min);
-      put(t.max);
-    }
-    out += "\n";
-  }
+  const std::string out = studyTableCsv(*m, spec, s);
+  for (const StudyRow& r : s.rows)
+    if (!r.status.ok())
+      std::cerr << "linkage-cli: t = " << formatNumber(r.t) << ": " << r.status.message << "\n";
   std::fwrite(out.data(), 1, out.size(), stdout);
   std::fflush(stdout);
   return kOk;

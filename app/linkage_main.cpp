@@ -4,6 +4,7 @@
 //   linkage --screenshot OUT.png [FILE|EXAMPLE] [--angle DEG] [--ics] [--size WxH] [--dark]
 //   linkage --benchmark-frames N [FILE|EXAMPLE] [--ics] [--plots] [--size WxH]
 //   linkage --benchmark-drag N [FILE|EXAMPLE] [--ctrl] [--ics] [--plots] [--size WxH]
+//   (all three also [--extremes] [--transmission] [--checks]: the design checks)
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
@@ -69,7 +70,14 @@ int main(int argc, char** argv) {
                                 QStringLiteral("Window size (default 1280x800)."),
                                 QStringLiteral("WxH"));
   const QCommandLineOption dark(QStringLiteral("dark"), QStringLiteral("Use the dark palette."));
-  cli.addOptions({screenshot, bench, drag, ctrl, angle, ics, plots, size, dark});
+  const QCommandLineOption extremes(QStringLiteral("extremes"),
+                                    QStringLiteral("Draw the extreme positions of the output."));
+  const QCommandLineOption transmission(QStringLiteral("transmission"),
+                                        QStringLiteral("Show the transmission angles."));
+  const QCommandLineOption checks(QStringLiteral("checks"),
+                                  QStringLiteral("Show the design-checks dock."));
+  cli.addOptions({screenshot, bench, drag, ctrl, angle, ics, plots, size, dark, extremes,
+                  transmission, checks});
   cli.process(app);
 
   const QStringList args = cli.positionalArguments();
@@ -85,6 +93,9 @@ int main(int argc, char** argv) {
     o.plots = cli.isSet(plots);
     o.dark = cli.isSet(dark);
     o.reshape = cli.isSet(ctrl);
+    o.extremes = cli.isSet(extremes);
+    o.transmission = cli.isSet(transmission);
+    o.checks = cli.isSet(checks);
     QString why;
     if (!linkage::ui::parseHeadless(cli.value(bench), cli.value(angle), cli.value(size), o, &why,
                                     cli.value(drag))) {

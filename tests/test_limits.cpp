@@ -112,8 +112,8 @@ TEST(Limits, FourBarRockerIsAtItsExtremesWhereCrankAndCouplerAreCollinear) {
         if (miss < best) best = miss, crank = deg;
       }
       ASSERT_LT(best, 1e-6);  // the drawn branch goes through one of them
-      const Extreme* e = nullptr;
-      for (const Extreme& x : lim.extremes)
+      const LocalExtreme* e = nullptr;
+      for (const LocalExtreme& x : lim.extremes)
         if (periodicGap(x.crankDeg, crank) < 1e-3) e = &x;
       ASSERT_NE(e, nullptr) << "no extreme near " << crank;
       EXPECT_LT(periodicGap(e->crankDeg, crank), kTolDeg) << e->crankDeg << " vs " << crank;
@@ -170,7 +170,7 @@ TEST(Limits, OffsetSliderCrankStrokeIsWhereCrankAndRodAreCollinear) {
         const Q ob = Q(l) + stretched * Q(r), y = linkref::sqrt(ob * ob - Q(e) * Q(e));
         const Q theta = linkref::atan2(stretched * y, stretched * Q(e));
         const double crank = crankOf(theta, Q(drawn) * linkref::pi<Q>() / 180, sgn);
-        const Extreme& x = lim.extremes[lim.extremes[0].max == (stretched > 0) ? 0 : 1];
+        const LocalExtreme& x = lim.extremes[lim.extremes[0].max == (stretched > 0) ? 0 : 1];
         EXPECT_EQ(x.max, stretched > 0);
         EXPECT_LT(periodicGap(x.crankDeg, crank), kTolDeg) << x.crankDeg << " vs " << crank;
         EXPECT_NEAR(x.value, static_cast<double>(y), kTolMm);

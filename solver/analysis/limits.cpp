@@ -139,7 +139,7 @@ Limits MeasureTrack::result(bool periodic) const {
     consider(deg, r.value);
   }
   std::sort(out.extremes.begin(), out.extremes.end(),
-            [](const Extreme& a, const Extreme& b) { return a.crankDeg < b.crankDeg; });
+            [](const LocalExtreme& a, const LocalExtreme& b) { return a.crankDeg < b.crankDeg; });
   out.stroke = out.max - out.min;
   return out;
 }

@@ -186,6 +186,7 @@ TEST(Canvas, VelocityChainIsWrittenOutAndItsDistancesDrawn) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
   w.show();
+  w.dock("centres")->raise();  // its tab in front: the panel works only while seen
   QApplication::processEvents();
   CentresPanel* panel = w.centresPanel();
   ASSERT_TRUE(panel->isVisible());
@@ -251,6 +252,11 @@ TEST(Canvas, AccelerationsOnlyWhileShown) {
   ASSERT_TRUE(w.openExample("wanzer-inversion-1"));  // a new solver keeps the choice
   EXPECT_FALSE(w.document()->kinematics().accelerations());
   w.dock("properties")->show();
+  QApplication::processEvents();
+  // Back, but behind the instant centres' tab: still not seen.
+  EXPECT_EQ(w.document()->kinematics().accelerations(),
+            !w.dock("properties")->visibleRegion().isEmpty());
+  w.dock("properties")->raise();
   QApplication::processEvents();
   EXPECT_TRUE(w.document()->kinematics().accelerations());
 }

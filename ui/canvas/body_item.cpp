@@ -90,27 +90,27 @@ void BodyItem::setFlagged(bool on) {
   update();
 }
 
-void BodyItem::rebuild() {
-  const double r = CanvasStyle::barWidth / 2 * px();
-  const std::vector<Vec2>& o = g_.body.outline;
-  body_ = QPolygonF();
-  switch (g_.body.shape) {
+QPolygonF bodyOutline(const Drawing::Body& b, double px) {
+  const double r = CanvasStyle::barWidth / 2 * px;
+  const std::vector<Vec2>& o = b.outline;
+  switch (b.shape) {
     case Drawing::Shape::Bar:
-      body_ = capsule(o[0], o[1], r, px());
-      break;
+      return capsule(o[0], o[1], r, px);
     case Drawing::Shape::Plate:
-      body_ = roundedHull(o, r, px());
-      break;
+      return roundedHull(o, r, px);
     case Drawing::Shape::Disc:
-      body_ = capsule(o[0], o[0], g_.body.radius + r, px());
-      break;
+      return capsule(o[0], o[0], b.radius + r, px);
     case Drawing::Shape::Dot:
-      if (!o.empty()) body_ = capsule(o[0], o[0], r, px());
-      break;
+      return o.empty() ? QPolygonF() : capsule(o[0], o[0], r, px);
     case Drawing::Shape::Block:
     case Drawing::Shape::Ground:
       break;
   }
+  return QPolygonF();
+}
+
+void BodyItem::rebuild() {
+  body_ = bodyOutline(g_.body, px());
   shape_ = QPainterPath();
   shape_.addPolygon(body_);
   channels_.clear();

@@ -53,6 +53,8 @@ class BodyItem : public CanvasItem {
 QPolygonF capsule(const Vec2& a, const Vec2& b, double r, double px);
 // A counter-clockwise convex polygon grown by r, its corners rounded.
 QPolygonF roundedHull(const std::vector<Vec2>& hull, double r, double px);
+// A body's outline as BodyItem draws it (sketch coordinates); empty for the ground and blocks.
+QPolygonF bodyOutline(const Drawing::Body& b, double px);
 QPointF toQt(const Vec2& v);
 QTransform toQt(const Transform& t);
 

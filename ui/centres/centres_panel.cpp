@@ -138,7 +138,9 @@ void CentresPanel::refresh() {
 }
 
 void CentresPanel::update() {
-  if (!isVisible() || !doc_ || !doc_->kinematics().valid()) {
+  // Seen: not only visible, but on the window (a dock in a tab behind another is moved off it
+  // and stays "visible").
+  if (!isVisible() || visibleRegion().isEmpty() || !doc_ || !doc_->kinematics().valid()) {
     if (chain_) {
       chain_.reset();
       emit chainChanged();

@@ -78,7 +78,8 @@ void InspectorPanel::refreshSummary() {
 }
 
 void InspectorPanel::refreshMotion() {
-  if (!isVisible() || !doc_) return;
+  // Seen only: a dock in a tab behind another is moved off the window but stays "visible".
+  if (!isVisible() || visibleRegion().isEmpty() || !doc_) return;
   const Kinematics& k = doc_->kinematics();
   const Mechanism& m = k.mechanism();
   const int n = k.valid() ? static_cast<int>(m.outputs.size()) : 0;

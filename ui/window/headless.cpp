@@ -138,6 +138,9 @@ int runHeadless(const HeadlessOptions& o) {
   w.action("showCentres")->setChecked(o.ics);
   if (o.ics) w.dock("centres")->raise();
   w.dock("plots")->setVisible(o.plots);
+  w.action("showExtremes")->setChecked(o.extremes);
+  w.action("showTransmission")->setChecked(o.transmission);
+  if (o.checks) w.action("showDesignChecks")->trigger();
   w.show();
   settle();
   w.canvas()->fitToMechanism();

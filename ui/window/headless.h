@@ -15,6 +15,8 @@ struct HeadlessOptions {
   bool reshape = false;  // the drag with Ctrl held: the design changes
   double angleDeg = 0;
   bool ics = false, plots = false, dark = false;
+  // The design checks: extreme positions, transmission arcs, the design-checks dock.
+  bool extremes = false, transmission = false, checks = false;
   QSize size{1280, 800};
 };
 

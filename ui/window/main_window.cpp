@@ -56,6 +56,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   createActions();
   createTools();
   createDocks();
+  createDesignChecks();
+  dock("properties")->raise();  // the default front tab on the right (a saved layout may differ)
   createMenus();
   createToolBars();
   createStatusBar();
@@ -199,6 +201,9 @@ void MainWindow::createDocks() {
   resizeDocks({pl}, {320}, Qt::Vertical);
   // Work only while shown: the panels compute when they become visible.
   // Queued: a dock reports its visibility before its contents have changed theirs.
+  // A dock's visibility says whether it is seen (a tab behind another is moved off the window
+  // but its widget stays "visible").
+  connect(p, &QDockWidget::visibilityChanged, this, [this](bool seen) { propertiesSeen_ = seen; });
   for (QDockWidget* d : {p, c})
     connect(d, &QDockWidget::visibilityChanged, this, &MainWindow::updateWork,
             Qt::QueuedConnection);
@@ -206,7 +211,7 @@ void MainWindow::createDocks() {
 
 void MainWindow::updateWork() {
   // Accelerations only while something shows them (the inspector's readout).
-  doc_->setAccelerationsWanted(inspector_->isVisible());
+  doc_->setAccelerationsWanted(propertiesSeen_);
   centres_->refresh();
   inspector_->refreshMotion();
 }
@@ -380,6 +385,8 @@ void MainWindow::readSettings() {
   action("showGrid")->setChecked(s.value(QStringLiteral("grid"), true).toBool());
   action("showCentres")->setChecked(s.value(QStringLiteral("centres"), false).toBool());
   action("showTraces")->setChecked(s.value(QStringLiteral("traces"), true).toBool());
+  action("showExtremes")->setChecked(s.value(QStringLiteral("extremes"), false).toBool());
+  action("showTransmission")->setChecked(s.value(QStringLiteral("transmission"), false).toBool());
   action("darkPalette")->setChecked(s.value(QStringLiteral("dark"), false).toBool());
   crankBar_->setSpeedIndex(s.value(QStringLiteral("speed"), 3).toInt());
   animator_->setIncrementDeg(s.value(QStringLiteral("increment"), 1.0).toDouble());
@@ -396,6 +403,8 @@ void MainWindow::writeSettings() const {
   s.setValue(QStringLiteral("grid"), action("showGrid")->isChecked());
   s.setValue(QStringLiteral("centres"), action("showCentres")->isChecked());
   s.setValue(QStringLiteral("traces"), action("showTraces")->isChecked());
+  s.setValue(QStringLiteral("extremes"), action("showExtremes")->isChecked());
+  s.setValue(QStringLiteral("transmission"), action("showTransmission")->isChecked());
   s.setValue(QStringLiteral("dark"), action("darkPalette")->isChecked());
   s.setValue(QStringLiteral("increment"), animator_->incrementDeg());
   s.endGroup();

@@ -20,12 +20,16 @@ class Animator;
 class CanvasScene;
 class CanvasView;
 class CentresPanel;
+class ChecksPanel;
 class CrankBar;
+class DesignChoices;
+class DesignOverlays;
 class Document;
 class InspectorPanel;
 class PropertiesPanel;
 class PlotsPanel;
 class Selection;
+class StudyDialog;
 class ToolOverlay;
 class Toolbox;
 
@@ -47,6 +51,11 @@ class MainWindow : public QMainWindow {
   CrankBar* crankBar() const { return crankBar_; }
   Toolbox* toolbox() const { return toolbox_; }
   Selection* selection() const { return selection_; }
+  DesignChoices* designChoices() const { return choices_; }
+  DesignOverlays* designOverlays() const { return designOverlays_; }
+  ChecksPanel* checksPanel() const { return checks_; }
+  // The parameter-study dialog, made on first use (Analysis > Parameter Study).
+  StudyDialog* studyDialog();
   QDockWidget* dock(const QString& objectName) const;
   // An action by its object name ("play", "open", "showCentres", ...), for tests and scripts.
   QAction* action(const QString& objectName) const;
@@ -83,6 +92,8 @@ class MainWindow : public QMainWindow {
   void createToolBars();
   void createDocks();
   void createStatusBar();
+  void createDesignChecks();  // main_window_design.cpp
+  void addAnalysisMenu();
   void connectDocument();
   QAction* makeAction(const QString& name, const QString& text, const QKeySequence& key,
                       const QString& tip);
@@ -122,6 +133,7 @@ class MainWindow : public QMainWindow {
   ToolOverlay* overlay_ = nullptr;
   Toolbox* toolbox_ = nullptr;
   QLabel* hint_ = nullptr;
+  bool propertiesSeen_ = false;
   std::unique_ptr<CanvasScene> frameScene_;
   std::unique_ptr<CanvasView> frameView_;
   QMenu* recentMenu_ = nullptr;
@@ -131,6 +143,10 @@ class MainWindow : public QMainWindow {
   QLabel* cursor_ = nullptr;
   QLabel* crank_ = nullptr;
   QLabel* dof_ = nullptr;
+  DesignChoices* choices_ = nullptr;
+  DesignOverlays* designOverlays_ = nullptr;
+  ChecksPanel* checks_ = nullptr;
+  StudyDialog* study_ = nullptr;
 };
 
 }  // namespace linkage::ui

@@ -176,10 +176,11 @@ void MainWindow::createMenus() {
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (const char* a : {"fit", "zoomIn", "zoomOut", "actualSize"}) view->addAction(action(a));
   view->addSeparator();
-  for (const char* a : {"showGrid", "showCentres", "showTraces", "darkPalette"})
+  for (const char* a :
+       {"showGrid", "showCentres", "showTraces", "showExtremes", "showTransmission", "darkPalette"})
     view->addAction(action(a));
   view->addSeparator();
-  for (const char* d : {"properties", "centres", "plots"})
+  for (const char* d : {"properties", "centres", "plots", "designChecks"})
     view->addAction(dock(d)->toggleViewAction());
 
   QMenu* anim = menuBar()->addMenu(tr("&Animation"));
@@ -187,6 +188,8 @@ void MainWindow::createMenus() {
   anim->addSeparator();
   anim->addAction(action("slower"));
   anim->addAction(action("faster"));
+
+  addAnalysisMenu();
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(action("about"));

@@ -31,7 +31,7 @@ struct LimitMeasure {
 // gives no fixed direction, so it is not used.
 Vec2 defaultDirection(const Mechanism& m, PointId p);
 
-struct Extreme {
+struct LocalExtreme {
   bool max = false;  // else a minimum
   double crankDeg = 0;
   double value = 0;  // mm, or degrees for a body
@@ -42,8 +42,8 @@ struct Limits {
   // solver's status where the crank cannot turn fully (Unreachable, Singular): then nothing
   // else is set.
   Status status;
-  std::vector<Extreme> extremes;  // every local extreme, crank order, angles in [0, 360)
-  double min = 0, minDeg = 0;     // the smallest and largest value over the turn
+  std::vector<LocalExtreme> extremes;  // every local extreme, crank order, angles in [0, 360)
+  double min = 0, minDeg = 0;          // the smallest and largest value over the turn
   double max = 0, maxDeg = 0;
   double stroke = 0;  // max - min (a body that turns fully: 360)
   // False when the quantity does not change with the crank (no extremes, stroke 0).

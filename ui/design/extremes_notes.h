@@ -1,0 +1,29 @@
+// What the extreme positions say, drawn over the mechanism (the ghosts are under it): each
+// position of the point marked; for a point, the stroke as a dimension beside it, on the side
+// away from the mechanism, with every extreme's value and crank angle ("max 131.20 mm (crank
+// 87.3°)") at its place along it, in the order of the values; for a body's angle, each
+// extreme's value at the body's mark. Labels go on the overlays' board, off the others.
+#pragma once
+
+#include <memory>
+
+#include "canvas/canvas_item.h"
+#include "design/overlay_labels.h"
+
+namespace linkage::ui {
+
+class ExtremesItem;
+
+class ExtremesNotes : public CanvasItem {
+ public:
+  ExtremesNotes(const CanvasContext* ctx, const ExtremesItem* extremes,
+                std::shared_ptr<LabelBoard> board);
+  QRectF boundingRect() const override;
+  void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
+
+ private:
+  const ExtremesItem* extremes_;
+  std::shared_ptr<LabelBoard> board_;
+};
+
+}  // namespace linkage::ui
