@@ -110,3 +110,33 @@ TEST(Drag, StartsOnlyAfterAFewPixels) {
 
 }  // namespace
 }  // namespace linkage::ui
+
+namespace linkage::ui {
+namespace {
+
+// Flip Assembly (X) on the coupler: the four-bar takes its crossed assembly, the mirror of B
+// in the line from A to the rocker's pivot; the file keeps it; undo puts the open one back.
+TEST(Drag, FlipPutsTheDyadOnItsOtherAssemblyAndUndoBringsItBack) {
+  FourBarWindow f;
+  const std::string before = serializeMechanism(f.doc->design());
+  const Vec2 a = f.at("crank.A"), b = f.at("rocker.B"), o4(60, 0);
+  // B mirrored in the line A-O4: the other intersection of the circles about A and O4.
+  const Vec2 u = (o4 - a).normalized();
+  const Vec2 mirrored = a + 2 * (b - a).dot(u) * u - (b - a);
+  f.d.click(40, 40);  // the coupler plate
+  ASSERT_EQ(f.w.selection()->bodies.size(), 1u);
+  f.d.key("X");
+  EXPECT_LT((f.at("rocker.B") - mirrored).norm(), 1e-9);
+  EXPECT_EQ(f.doc->undoStack()->count(), 1);
+  // The file holds the flipped drawing: opened afresh, it moves on the new branch.
+  Kinematics fresh;
+  ASSERT_TRUE(fresh.load(f.doc->design()).ok());
+  ASSERT_TRUE(fresh.moveTo(f.doc->crankDeg()).ok());
+  EXPECT_LT((fresh.position(*f.doc->design().findPoint("rocker.B")) - mirrored).norm(), 1e-9);
+  f.w.action("undo")->trigger();
+  EXPECT_EQ(serializeMechanism(f.doc->design()), before);
+  EXPECT_LT((f.at("rocker.B") - b).norm(), 1e-12);
+}
+
+}  // namespace
+}  // namespace linkage::ui
