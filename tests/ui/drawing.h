@@ -32,6 +32,12 @@ struct Draw {
     move(x, y);
     QTest::mouseClick(w.canvas()->viewport(), Qt::RightButton, {}, at(x, y));
   }
+  // The Link tool: a click at each point, Enter.
+  void link(std::initializer_list<std::pair<double, double>> points) const {
+    key("L");
+    for (const auto& [x, y] : points) click(x, y);
+    key(Qt::Key_Return);
+  }
   // A press, moves in steps and a release: a drag as a hand makes it.
   void drag(double x0, double y0, double x1, double y1, Qt::KeyboardModifiers mods = {},
             int steps = 10) const {

@@ -37,18 +37,9 @@ void drawFourBar(MainWindow& w) {
   d.key("G");
   d.click(0, 0);
   d.click(60, 0);
-  d.key("L");
-  d.click(0, 0);
-  d.click(10, 20);
-  d.key(Qt::Key_Return);
-  d.key("L");
-  d.click(10, 20);
-  d.click(70, 50);
-  d.key(Qt::Key_Return);
-  d.key("L");
-  d.click(70, 50);
-  d.click(60, 0);
-  d.key(Qt::Key_Return);
+  d.link({{0, 0}, {10, 20}});
+  d.link({{10, 20}, {70, 50}});
+  d.link({{70, 50}, {60, 0}});
   d.key("M");
   d.click(0, 0);
   d.key("O");
@@ -101,21 +92,11 @@ TEST(Draw, UndoAndRedoOfEveryEditGiveBackTheIdenticalFile) {
   record();
   d.click(60, 0);
   record();
-  d.key("L");
-  d.click(0, 0);
-  d.click(10, 20);
-  d.key(Qt::Key_Return);
+  d.link({{0, 0}, {10, 20}});
   record();
-  d.key("L");
-  d.click(10, 20);
-  d.click(70, 50);
-  d.click(40, 60);  // three points: a plate
-  d.key(Qt::Key_Return);
+  d.link({{10, 20}, {70, 50}, {40, 60}});  // three points: a plate
   record();
-  d.key("L");
-  d.click(70, 50);
-  d.click(60, 0);
-  d.key(Qt::Key_Return);
+  d.link({{70, 50}, {60, 0}});
   record();
   d.key("M");
   d.click(0, 0);
@@ -282,10 +263,7 @@ TEST(Draw, RedundantJointsAndFreeBodiesAreNamedAndShown) {
   w.canvas()->centerOn(30, 25);
   drawFourBar(w);
   test::Draw d{w};
-  d.key("L");
-  d.click(10, 20);
-  d.click(70, 50);
-  d.key(Qt::Key_Return);
+  d.link({{10, 20}, {70, 50}});
   Document* doc = w.document();
   ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
   const StructureReport r = doc->kinematics().structure();
@@ -299,10 +277,7 @@ TEST(Draw, RedundantJointsAndFreeBodiesAreNamedAndShown) {
   EXPECT_NE(statusText(w).indexOf("Gruebler 0"), -1) << statusText(w).toStdString();
   w.action("undo")->trigger();
   // A link hanging from the crank's pin, its other end free.
-  d.key("L");
-  d.click(10, 20);
-  d.click(-20, 40);
-  d.key(Qt::Key_Return);
+  d.link({{10, 20}, {-20, 40}});
   ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
   const StructureReport u = doc->kinematics().structure();
   ASSERT_EQ(u.freeBodies.size(), 1u);

@@ -111,18 +111,28 @@ SlotId addBodySlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& p1) {
   return m.addSlot(body, newSlotName(m, body), p0, p1);
 }
 
-BodyId addBlock(Mechanism& m, PointId point, SlotId slot, const Vec2& at, std::string* why) {
+namespace {
+
+// A point and a slot of two different bodies: what runs in a slot and the slot it runs in.
+bool pointAndSlot(const Mechanism& m, PointId point, SlotId slot, std::string* why) {
   const Point* p = m.point(point);
   const Slot* s = m.slot(slot);
   if (!p || !s) {
     fail(why, "pick a point, then a slot");
-    return {};
+    return false;
   }
   if (p->body == s->body) {
-    fail(why, "the point and the slot are on the same body: a block there could not move");
-    return {};
+    fail(why, "the point and the slot are on the same body: it could not move in it");
+    return false;
   }
-  const std::string name = p->name;
+  return true;
+}
+
+}  // namespace
+
+BodyId addBlock(Mechanism& m, PointId point, SlotId slot, const Vec2& at, std::string* why) {
+  if (!pointAndSlot(m, point, slot, why)) return {};
+  const std::string name = m.point(point)->name;
   const BodyId block = m.addBody(newBodyName(m, "block"));
   const PointId bp = m.addPoint(block, name, at);
   m.addPin(point, bp);
@@ -131,16 +141,7 @@ BodyId addBlock(Mechanism& m, PointId point, SlotId slot, const Vec2& at, std::s
 }
 
 JointId addPinInSlot(Mechanism& m, PointId point, SlotId slot, std::string* why) {
-  const Point* p = m.point(point);
-  const Slot* s = m.slot(slot);
-  if (!p || !s) {
-    fail(why, "pick a point, then a slot");
-    return {};
-  }
-  if (p->body == s->body) {
-    fail(why, "the point and the slot are on the same body");
-    return {};
-  }
+  if (!pointAndSlot(m, point, slot, why)) return {};
   return m.addPinInSlot(point, slot);
 }
 
