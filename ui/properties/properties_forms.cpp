@@ -1,0 +1,343 @@
+// The forms of the properties panel, one per kind of selection (properties_panel.h).
+#include "properties/properties_panel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "document/commands.h"
+#include "document/document.h"
+#include "document/edits.h"
+#include "linkage/io/numbers.h"
+#include "tools/selection.h"
+
+namespace linkage::ui {
+
+namespace {
+constexpr double kDeg = M_PI / 180;
+}  // namespace
+
+void PropertiesPanel::fillMechanism() {
+  title_->setText(tr("<b>Mechanism</b>"));
+  addText(
+      tr("Name"), [this] { return QString::fromStdString(doc_->design().name); },
+      [this](const QString& t, QString* why) {
+        return change(
+            tr("Rename the mechanism"),
+            [&](Mechanism& m, QString*) {
+              m.name = t.toStdString();
+              return true;
+            },
+            why);
+      });
+  if (doc_->design().driver) fillDriver();
+}
+
+void PropertiesPanel::fillDriver() {
+  addNumber(
+      tr("Driver speed"), [this] { return doc_->design().driver->rpm; },
+      [this](double v, QString* why) {
+        if (!(v > 0)) {
+          *why = tr("the speed must be positive");
+          return false;
+        }
+        return change(
+            tr("Driver speed"),
+            [&](Mechanism& m, QString*) {
+              m.driver->rpm = v;
+              return true;
+            },
+            why);
+      },
+      tr("rpm"));
+  auto* dir = new QComboBox;
+  dir->addItems({tr("counter-clockwise"), tr("clockwise")});
+  form_->addRow(tr("Direction"), dir);
+  auto current = [this] { return doc_->design().driver->direction == Direction::Cw ? 1 : 0; };
+  dir->setCurrentIndex(current());
+  rows_.push_back({tr("Direction"), dir, [dir, current] {
+                     QSignalBlocker b(dir);
+                     dir->setCurrentIndex(current());
+                   }});
+  connect(dir, &QComboBox::activated, this, [this](int i) {
+    QString why;
+    change(
+        tr("Driver direction"),
+        [&](Mechanism& m, QString*) {
+          m.driver->direction = i == 1 ? Direction::Cw : Direction::Ccw;
+          return true;
+        },
+        &why);
+  });
+  addNumber(
+      tr("Start angle"), [this] { return doc_->design().driver->startDeg; },
+      [this](double v, QString* why) {
+        return change(
+            tr("Driver start angle"),
+            [&](Mechanism& m, QString*) {
+              m.driver->startDeg = v;
+              return true;
+            },
+            why);
+      },
+      QStringLiteral("\u00b0"));
+}
+
+void PropertiesPanel::fillBody(BodyId id) {
+  const Body* b = doc_->design().body(id);
+  title_->setText(tr("<b>Link</b> %1").arg(QString::fromStdString(b->name).toHtmlEscaped()));
+  addText(
+      tr("Name"), [this, id] { return QString::fromStdString(doc_->design().body(id)->name); },
+      [this, id](const QString& t, QString* why) {
+        if (!bodyNameFree(doc_->design(), t.toStdString(), id)) {
+          *why = tr("another link is called \"%1\"").arg(t);
+          return false;
+        }
+        return change(
+            tr("Rename link"),
+            [&](Mechanism& m, QString*) {
+              m.body(id)->name = t.toStdString();
+              return true;
+            },
+            why);
+      });
+  std::vector<PointId> pts;
+  for (const Point& p : doc_->design().points)
+    if (p.body == id) pts.push_back(p.id);
+  addInfo(tr("Points"), [this, id] {
+    QStringList names;
+    for (const Point& p : doc_->design().points)
+      if (p.body == id) names << QString::fromStdString(p.name);
+    return names.join(QStringLiteral(", "));
+  });
+  if (pts.size() != 2 || b->ground) return;
+  // A bar: its length and angle, measured from its first point; editing them moves the second.
+  const PointId p0 = pts[0], p1 = pts[1];
+  auto ends = [this, p0, p1] {
+    return std::make_pair(doc_->design().point(p0)->pos, doc_->design().point(p1)->pos);
+  };
+  auto moveSecond = [this, p0, p1](const QString& text, const Vec2& to, QString* why) {
+    return change(
+        text,
+        [&](Mechanism& m, QString*) {
+          for (PointId q : pinnedTogether(m, p1)) m.point(q)->pos = to;
+          (void)p0;
+          return true;
+        },
+        why);
+  };
+  addNumber(
+      tr("Length"), [ends] { return (ends().second - ends().first).norm(); },
+      [ends, moveSecond](double v, QString* why) {
+        if (!(v > 0)) {
+          *why = tr("a length must be positive");
+          return false;
+        }
+        const auto [a, b] = ends();
+        const Vec2 d = (b - a).normalized();
+        return moveSecond(tr("Bar length"), a + v * d, why);
+      },
+      tr("mm"));
+  addNumber(
+      tr("Angle"),
+      [ends] {
+        const Vec2 d = ends().second - ends().first;
+        return std::atan2(d.y(), d.x()) / kDeg;
+      },
+      [ends, moveSecond](double v, QString* why) {
+        const auto [a, b] = ends();
+        const double r = (b - a).norm();
+        return moveSecond(tr("Bar angle"), a + r * Vec2(std::cos(v * kDeg), std::sin(v * kDeg)),
+                          why);
+      },
+      QStringLiteral("\u00b0"));
+}
+
+void PropertiesPanel::fillPoint(PointId id) {
+  const Mechanism& m0 = doc_->design();
+  title_->setText(
+      tr("<b>Point</b> %1").arg(QString::fromStdString(m0.pointLabel(id)).toHtmlEscaped()));
+  addText(
+      tr("Name"), [this, id] { return QString::fromStdString(doc_->design().point(id)->name); },
+      [this, id](const QString& t, QString* why) {
+        const Mechanism& m = doc_->design();
+        if (!pointNameFree(m, m.point(id)->body, t.toStdString(), id)) {
+          *why = tr("the link has another point \"%1\" (or the name has a dot)").arg(t);
+          return false;
+        }
+        return change(
+            tr("Rename point"),
+            [&](Mechanism& n, QString*) {
+              n.point(id)->name = t.toStdString();
+              return true;
+            },
+            why);
+      });
+  // The point and the points pinned to it are one place: they move together.
+  for (int axis = 0; axis < 2; ++axis)
+    addNumber(
+        axis ? QStringLiteral("y") : QStringLiteral("x"),
+        [this, id, axis] { return doc_->design().point(id)->pos[axis]; },
+        [this, id, axis](double v, QString* why) {
+          return change(
+              tr("Move point"),
+              [&](Mechanism& m, QString*) {
+                for (PointId q : pinnedTogether(m, id)) m.point(q)->pos[axis] = v;
+                return true;
+              },
+              why);
+        },
+        tr("mm"));
+  auto* out = new QCheckBox(tr("traced, plotted, exported"));
+  auto isOut = [this, id] {
+    const auto& o = doc_->design().outputs;
+    return std::find(o.begin(), o.end(), id) != o.end();
+  };
+  out->setChecked(isOut());
+  form_->addRow(tr("Output"), out);
+  rows_.push_back({tr("Output"), out, [out, isOut] {
+                     QSignalBlocker b(out);
+                     out->setChecked(isOut());
+                   }});
+  connect(out, &QCheckBox::clicked, this, [this, id](bool) {
+    QString why;
+    change(
+        tr("Output point"),
+        [&](Mechanism& m, QString*) {
+          toggleOutput(m, id);
+          return true;
+        },
+        &why);
+  });
+}
+
+void PropertiesPanel::fillJoint(JointId id) {
+  const Mechanism& m0 = doc_->design();
+  const Joint* j = m0.joint(id);
+  title_->setText(
+      tr("<b>Joint</b> %1").arg(QString::fromStdString(m0.jointLabel(id)).toHtmlEscaped()));
+  if (j->type == JointType::Pin) {
+    addInfo(tr("Type"), [] { return tr("pin"); });
+  } else {
+    auto* type = new QComboBox;
+    type->addItems({tr("slider (the block keeps its angle)"), tr("pin in slot (turns freely)")});
+    auto current = [this, id] {
+      return doc_->design().joint(id)->type == JointType::Slider ? 0 : 1;
+    };
+    type->setCurrentIndex(current());
+    form_->addRow(tr("Type"), type);
+    rows_.push_back({tr("Type"), type, [type, current] {
+                       QSignalBlocker b(type);
+                       type->setCurrentIndex(current());
+                     }});
+    connect(type, &QComboBox::activated, this, [this, id](int i) {
+      QString why;
+      if (!change(
+              tr("Joint type"),
+              [&](Mechanism& m, QString* w) {
+                std::string s;
+                const bool ok =
+                    changeJointType(m, id, i == 0 ? JointType::Slider : JointType::PinInSlot, &s);
+                *w = QString::fromStdString(s);
+                return ok;
+              },
+              &why))
+        emit message(why, true);
+    });
+  }
+  const PointId a = j->a;
+  for (int axis = 0; axis < 2; ++axis)
+    addNumber(
+        axis ? QStringLiteral("y") : QStringLiteral("x"),
+        [this, a, axis] { return doc_->design().point(a)->pos[axis]; },
+        [this, a, axis](double v, QString* why) {
+          return change(
+              tr("Move joint"),
+              [&](Mechanism& m, QString*) {
+                for (PointId q : pinnedTogether(m, a)) m.point(q)->pos[axis] = v;
+                return true;
+              },
+              why);
+        },
+        tr("mm"));
+  if (j->type == JointType::Pin) {
+    auto* drives = new QCheckBox(tr("drives the mechanism (the crank)"));
+    auto isDriver = [this, id] {
+      return doc_->design().driver && doc_->design().driver->joint == id;
+    };
+    drives->setChecked(isDriver());
+    drives->setEnabled(!isDriver());
+    form_->addRow(tr("Driver"), drives);
+    rows_.push_back({tr("Driver"), drives, [drives, isDriver] {
+                       QSignalBlocker b(drives);
+                       drives->setChecked(isDriver());
+                       drives->setEnabled(!isDriver());
+                     }});
+    connect(drives, &QCheckBox::clicked, this, [this, id](bool) {
+      QString why;
+      change(
+          tr("Driver"),
+          [&](Mechanism& m, QString* w) {
+            std::string s;
+            const bool ok = setDriver(m, id, &s);
+            *w = QString::fromStdString(s);
+            return ok;
+          },
+          &why);
+    });
+    if (isDriver()) fillDriver();
+  }
+}
+
+void PropertiesPanel::fillSlot(SlotId id) {
+  const Mechanism& m0 = doc_->design();
+  title_->setText(
+      tr("<b>Slot</b> %1").arg(QString::fromStdString(m0.slotLabel(id)).toHtmlEscaped()));
+  addText(
+      tr("Name"), [this, id] { return QString::fromStdString(doc_->design().slot(id)->name); },
+      [this, id](const QString& t, QString* why) {
+        const Mechanism& m = doc_->design();
+        if (!slotNameFree(m, m.slot(id)->body, t.toStdString(), id)) {
+          *why = tr("the link has another slot \"%1\" (or the name has a dot)").arg(t);
+          return false;
+        }
+        return change(
+            tr("Rename slot"),
+            [&](Mechanism& n, QString*) {
+              n.slot(id)->name = t.toStdString();
+              return true;
+            },
+            why);
+      });
+  const char* names[4] = {"x0", "y0", "x1", "y1"};
+  for (int k = 0; k < 4; ++k)
+    addNumber(
+        QString::fromLatin1(names[k]),
+        [this, id, k] {
+          const Slot* s = doc_->design().slot(id);
+          return (k < 2 ? s->p0 : s->p1)[k % 2];
+        },
+        [this, id, k](double v, QString* why) {
+          Vec2 p0 = doc_->design().slot(id)->p0, p1 = doc_->design().slot(id)->p1;
+          (k < 2 ? p0 : p1)[k % 2] = v;
+          if (p0 == p1) {
+            *why = tr("a slot's ends must differ");
+            return false;
+          }
+          return change(
+              tr("Slot end"),
+              [&](Mechanism& m, QString*) {
+                m.slot(id)->p0 = p0;
+                m.slot(id)->p1 = p1;
+                return true;
+              },
+              why);
+        },
+        tr("mm"));
+}
+
+}  // namespace linkage::ui
