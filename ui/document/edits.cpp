@@ -60,7 +60,9 @@ std::string newPointName(const Mechanism& m, BodyId body) {
 
 std::string newSlotName(const Mechanism& m, BodyId body) {
   for (int n = 1;; ++n) {
-    const std::string name = "s" + std::to_string(n);
+    // Built in two steps: "s" + to_string(n) trips GCC 12's -Wrestrict (a false alarm, bug 105329).
+    std::string name = "s";
+    name += std::to_string(n);
     if (slotNameFree(m, body, name)) return name;
   }
 }
