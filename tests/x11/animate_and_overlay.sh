@@ -11,25 +11,18 @@ start_x11
 start_linkage "$linkage" wanzer-inversion-2
 
 xdotool mousemove 300 300 click 1   # the canvas has the keyboard
-shot 1
+wait_still 1 || fail "the picture does not settle after start"
 xdotool key space
-sleep 0.4
-shot 2
-sleep 0.4
-shot 3
-changed 2 3 || fail "the picture did not change while playing"
+wait_changed 1 2 || fail "pressing Space did not start the animation"
+sleep 0.3
+wait_changed 2 3 || fail "the picture did not change while playing"
 xdotool key space                   # pause
+wait_still 5 || fail "the picture still changes after pausing"
 sleep 0.3
 shot 4
-sleep 0.3
-shot 5
 same 4 5 || fail "the picture changed while paused"
 xdotool key i
-sleep 0.3
-shot 6
-changed 5 6 || fail "pressing I did not show the instant centres"
+wait_changed 5 6 || fail "pressing I did not show the instant centres"
 xdotool key i
-sleep 0.3
-shot 7
-same 5 7 || fail "pressing I again did not hide the instant centres"
+wait_same 5 7 || fail "pressing I again did not hide the instant centres"
 echo "ok: animates, pauses, overlay toggles"

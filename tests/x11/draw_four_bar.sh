@@ -16,7 +16,7 @@ start_linkage "$linkage"
 xdotool mousemove 400 300 click 1   # an empty place on the canvas: it has the keyboard
 xdotool key ctrl+1
 sleep 0.3
-shot origin
+wait_still origin || fail "the canvas does not settle"
 read -r ox oy < <(axes_of "$work/shotorigin.png") || fail "no axes found on the canvas"
 echo "canvas origin at $ox,$oy"
 mm() { awk -v ox="$ox" -v oy="$oy" -v x="$1" -v y="$2" \
@@ -30,17 +30,17 @@ xdotool key l; at 70 50; at 60 0; xdotool key Return
 xdotool key m; at 0 0
 xdotool key o; at 70 50
 xdotool key s
-sleep 0.3
-shot drawn
+wait_still drawn || fail "the canvas does not settle after drawing"
 
 out="$work/four-bar.linkage.json"
 xdotool key ctrl+s
-sleep 1
+wait_window "Save Mechanism As" || fail "Ctrl+S did not open the save dialog"
+sleep 0.5
 # Qt's own file dialog: its file name field has the keyboard; a full path is taken as typed.
 xdotool key ctrl+a
 xdotool type --delay 15 "$out"
 xdotool key Return
-for _ in $(seq 50); do [ -s "$out" ] && break; sleep 0.1; done
+for _ in $(seq 100); do [ -s "$out" ] && break; sleep 0.1; done
 shot saved
 [ -s "$out" ] || fail "the file was not saved through the dialog"
 

@@ -53,6 +53,34 @@ shot() { import -window root "$work/shot$1.png"; }
 diffpixels() { compare -metric AE "$work/shot$1.png" "$work/shot$2.png" null: 2>&1 || true; }
 changed() { [ "$(diffpixels "$1" "$2")" != "0" ]; }
 same() { [ "$(diffpixels "$1" "$2")" = "0" ]; }
+# A loaded machine handles keys late: poll for what a key must do, for up to 10 s, rather than
+# trusting a fixed pause. Each takes shot $2 (or $1) as the picture it waited for.
+wait_changed() {  # until shot $2 differs from shot $1
+  for _ in $(seq 50); do shot "$2"; changed "$1" "$2" && return 0; sleep 0.2; done
+  return 1
+}
+wait_same() {  # until shot $2 equals shot $1
+  for _ in $(seq 50); do shot "$2"; same "$1" "$2" && return 0; sleep 0.2; done
+  return 1
+}
+wait_still() {  # until two shots 0.3 s apart are the same; shot $1 is the second
+  shot "$1"
+  for _ in $(seq 30); do
+    sleep 0.3
+    cp "$work/shot$1.png" "$work/shot$1-before.png"
+    shot "$1"
+    same "$1-before" "$1" && return 0
+  done
+  return 1
+}
+# Until a window with this title is shown (a dialog), for up to 10 s.
+wait_window() {
+  for _ in $(seq 100); do
+    xdotool search --onlyvisible --name "$1" >/dev/null 2>&1 && return 0
+    sleep 0.1
+  done
+  return 1
+}
 
 # The canvas's origin in a screenshot: where its two axes cross. The axes are one pixel wide,
 # the longest straight runs of mid grey on the canvas (darker than the grid, lighter than text).

@@ -76,6 +76,7 @@ class PlotsPanel : public QWidget {
   QString cursorText() const;    // the values at the cursor, as shown
   QString extremesText() const;  // the extremes list, one line per row
   int computations() const { return computations_; }  // curve sets sampled so far
+  bool redrawPending() const { return pending_; }     // a throttled redraw is yet to run
   const CurveSet* curves(int i) const;  // 0: the document's; then the comparisons shown
 
  Q_SIGNALS:
