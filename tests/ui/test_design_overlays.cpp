@@ -8,6 +8,7 @@
 #include "ui_test.h"
 
 #include <QAction>
+#include <QDoubleSpinBox>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
@@ -17,6 +18,7 @@
 
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
+#include "design/checks_panel.h"
 #include "design/design_choices.h"
 #include "design/design_overlays.h"
 #include "design/extremes_item.h"
@@ -346,6 +348,17 @@ TEST(DesignOverlays, TheBandIsRemembered) {
   EXPECT_EQ(c.band().lo, 35);
   EXPECT_EQ(c.band().hi, 145);
   ASSERT_TRUE(c.setBand({30, 150}));
+}
+
+// The band is the user's: typed in one window's Design Checks, every open window takes it.
+TEST(DesignOverlays, TheBandTypedInOneWindowReachesTheOthers) {
+  MainWindow a, b;
+  a.checksPanel()->bandLo()->setValue(40);
+  EXPECT_EQ(a.designChoices()->band().lo, 40);
+  EXPECT_EQ(b.designChoices()->band().lo, 40);
+  EXPECT_EQ(b.checksPanel()->bandLo()->value(), 40);
+  ASSERT_TRUE(a.designChoices()->setBand({30, 150}));
+  EXPECT_EQ(b.checksPanel()->bandLo()->value(), 30);
 }
 
 }  // namespace

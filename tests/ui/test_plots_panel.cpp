@@ -320,5 +320,31 @@ TEST_F(PlotsPanelTest, CrankThatStopsPlotsThePartThatExistsAndClicksStayInIt) {
   shot(panel, "plots-panel-partial");
 }
 
+// Under the canvas (wide) the units and the comparison share the first row, which leaves the
+// plots a row more; beside it (narrow) they take a row of their own, and the dock can still be
+// narrowed from wide to narrow.
+TEST_F(PlotsPanelTest, ControlsTakeTwoRowsWhenWideAndThreeWhenNarrow) {
+  panel.setDocument(&doc);
+  panel.resize(1000, 500);
+  showAndSettle();
+  QComboBox *target = nullptr, *units = nullptr;
+  for (QComboBox* c : panel.findChildren<QComboBox*>()) {
+    if (c->findText("m/s") >= 0) units = c;
+    if (c->findText("needlebar.G") >= 0) target = c;
+  }
+  ASSERT_TRUE(target && units);
+  auto row = [](QWidget* w) { return w->mapTo(w->window(), QPoint(0, w->height() / 2)).y(); };
+  EXPECT_EQ(row(units), row(target));
+  const int plotTopWide = panel.plotWidget()->mapTo(&panel, QPoint()).y();
+  // No wider a minimum than with three rows (the orders' row sets it).
+  const int narrowest = panel.minimumSizeHint().width();
+  panel.resize(narrowest + 10, 500);
+  QTest::qWait(20);  // the layouts redo themselves from posted events
+  EXPECT_EQ(panel.minimumSizeHint().width(), narrowest);
+  EXPECT_GT(row(units), row(target) + target->height() / 2);
+  EXPECT_GT(panel.plotWidget()->mapTo(&panel, QPoint()).y(), plotTopWide);
+  EXPECT_LE(units->mapTo(&panel, QPoint(units->width(), 0)).x(), panel.width());
+}
+
 }  // namespace
 }  // namespace linkage::ui

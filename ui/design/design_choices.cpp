@@ -1,5 +1,6 @@
 #include "design/design_choices.h"
 
+#include <QList>
 #include <QSettings>
 #include <cmath>
 
@@ -8,6 +9,13 @@ namespace linkage::ui {
 namespace {
 const QString kLo = QStringLiteral("design/bandLo");
 const QString kHi = QStringLiteral("design/bandHi");
+
+// Every window's choices: the band is the user's, not a document's, so a change in one window
+// shows in all (as it would after a restart, from QSettings).
+QList<DesignChoices*>& everyChoices() {
+  static QList<DesignChoices*> all;
+  return all;
+}
 
 bool validBand(const TransmissionBand& b) {
   return std::isfinite(b.lo) && std::isfinite(b.hi) && b.lo >= 0 && b.lo < b.hi && b.hi <= 180;
@@ -18,16 +26,24 @@ DesignChoices::DesignChoices(QObject* parent) : QObject(parent) {
   QSettings s;
   const TransmissionBand b{s.value(kLo, band_.lo).toDouble(), s.value(kHi, band_.hi).toDouble()};
   if (validBand(b)) band_ = b;
+  everyChoices().append(this);
+}
+
+DesignChoices::~DesignChoices() {
+  everyChoices().removeOne(this);
 }
 
 bool DesignChoices::setBand(const TransmissionBand& b) {
   if (!validBand(b)) return false;
   if (b.lo == band_.lo && b.hi == band_.hi) return true;
-  band_ = b;
   QSettings s;
   s.setValue(kLo, b.lo);
   s.setValue(kHi, b.hi);
-  emit bandChanged();
+  for (DesignChoices* c : everyChoices()) {
+    if (c->band_.lo == b.lo && c->band_.hi == b.hi) continue;
+    c->band_ = b;
+    emit c->bandChanged();
+  }
   return true;
 }
 

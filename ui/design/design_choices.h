@@ -27,9 +27,10 @@ class DesignChoices : public QObject {
 
  public:
   explicit DesignChoices(QObject* parent = nullptr);
+  ~DesignChoices() override;
 
   const TransmissionBand& band() const { return band_; }
-  // Refused (false, nothing changed) unless 0 <= lo < hi <= 180.
+  // Refused (false, nothing changed) unless 0 <= lo < hi <= 180. Every window's choices follow.
   bool setBand(const TransmissionBand& b);
   bool outside(double muDeg) const { return muDeg < band_.lo || muDeg > band_.hi; }
 

@@ -13,11 +13,13 @@
 namespace linkage::ui {
 
 PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
-  auto* rows = new QVBoxLayout(this);
-  rows->setContentsMargins(0, 0, 0, 0);
-  rows->setSpacing(3);
+  rows_ = new QVBoxLayout(this);
+  rows_->setContentsMargins(0, 0, 0, 0);
+  rows_->setSpacing(3);
 
-  auto* row1 = new QHBoxLayout;
+  plotRow_ = new QWidget;
+  auto* row1 = new QHBoxLayout(plotRow_);
+  row1->setContentsMargins(0, 0, 0, 0);
   target_ = new QComboBox;
   target_->setToolTip("The point (or body) whose motion is plotted");
   target_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
@@ -35,7 +37,10 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   row1->addWidget(target_, 1);
   row1->addWidget(component_);
   row1->addWidget(direction_);
-  rows->addLayout(row1);
+  row1_ = new QHBoxLayout;
+  row1_->setSpacing(12);
+  row1_->addWidget(plotRow_, 1);
+  rows_->addLayout(row1_);
 
   auto* row2 = new QHBoxLayout;
   const char* names[] = {"Position", "Velocity", "Acceleration", "Jerk"};
@@ -54,9 +59,11 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   row2->addStretch(1);
   row2->addWidget(revs_);
   row2->addWidget(steps_);
-  rows->addLayout(row2);
+  rows_->addLayout(row2);
 
-  auto* row3 = new QHBoxLayout;
+  unitsRow_ = new QWidget;
+  auto* row3 = new QHBoxLayout(unitsRow_);
+  row3->setContentsMargins(0, 0, 0, 0);
   velocityUnit_ = new QComboBox;
   velocityUnit_->addItems({"mm/s", "m/s"});
   accelerationUnit_ = new QComboBox;
@@ -75,7 +82,7 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   row3->addStretch(1);
   row3->addWidget(compare_);
   row3->addWidget(harmonics_);
-  rows->addLayout(row3);
+  rows_->addWidget(unitsRow_);
 
   auto request = [this] {
     if (quiet_) return;
@@ -106,6 +113,27 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   connect(harmonics_, &QToolButton::toggled, this, [this](bool on) {
     if (!quiet_) Q_EMIT harmonicsToggled(on);
   });
+}
+
+void PlotControls::resizeEvent(QResizeEvent* e) {
+  QWidget::resizeEvent(e);
+  // A wide dock (under the canvas) puts the units and the comparison beside the point chosen:
+  // a row more for the plots, which a laptop's screen needs. A narrow one (beside the canvas)
+  // keeps three rows.
+  const int need = plotRow_->sizeHint().width() + unitsRow_->sizeHint().width() + 24;
+  const bool one = width() >= need;
+  if (one == oneRow_) return;
+  oneRow_ = one;
+  if (one) {
+    rows_->removeWidget(unitsRow_);
+    row1_->addWidget(unitsRow_);
+    // Not a minimum of its own: the dock can still be narrowed, and then it moves back.
+    unitsRow_->setMinimumWidth(1);
+  } else {
+    row1_->removeWidget(unitsRow_);
+    unitsRow_->setMinimumWidth(0);
+    rows_->addWidget(unitsRow_);
+  }
 }
 
 void PlotControls::display(const CurveRequest& r, const PlotUnits& u, int compare,

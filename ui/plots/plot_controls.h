@@ -11,8 +11,10 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QHBoxLayout;
 class QSpinBox;
 class QToolButton;
+class QVBoxLayout;
 
 namespace linkage::ui {
 
@@ -35,6 +37,9 @@ class PlotControls : public QWidget {
   void compareChanged(int mode);
   void harmonicsToggled(bool on);
 
+ protected:
+  void resizeEvent(QResizeEvent* e) override;
+
  private:
   CurveRequest read() const;
 
@@ -48,6 +53,11 @@ class PlotControls : public QWidget {
   QCheckBox* orders_[kOrders];
   QSpinBox *revs_, *steps_;
   QToolButton* harmonics_;
+  QVBoxLayout* rows_;
+  QHBoxLayout* row1_;  // the point chosen (plotRow_), then unitsRow_ when it fits
+  QWidget *plotRow_,
+      *unitsRow_;  // units, comparison, harmonics: a row of their own, or row 1's end
+  bool oneRow_ = false;
 };
 
 }  // namespace linkage::ui
