@@ -73,8 +73,10 @@ int info(int argc, char** argv) {
     std::cout << "driver: none\n";
   Kinematics k;
   const int e = prepare(k, *m);
+  // At the assembled pose when there is one: a drawing in line is singular where it is drawn,
+  // not where it is assembled. Else at the drawing, for what the failure leaves to say.
   Status compiled;
-  const StructureReport s = analyzeDrawing(*m, compiled);
+  const StructureReport s = k.valid() ? k.structure() : analyzeDrawing(*m, compiled);
   if (compiled.ok() && (s.coordinates > 0 || e == kOk)) {
     std::cout << "coordinates: " << s.coordinates << ", joint equations: " << s.jointEquations
               << "\n";

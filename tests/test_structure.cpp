@@ -2,6 +2,8 @@
 // driver that cannot turn, freedoms the driver leaves, drawings that do not close.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
 
@@ -101,6 +103,54 @@ TEST(Structure, RedundantJointThatCannotHoldIsConflicting) {
   EXPECT_NE(s.message.find("conflicts"), std::string::npos) << s.message;
   ASSERT_FALSE(s.joints.empty());
   EXPECT_EQ(s.joints[0], p.extra);
+  EXPECT_FALSE(k.valid());
+}
+
+// A four-bar drawn with every pivot on the x axis: crank O2 A = 20, coupler A B = 30, rocker
+// B O4 drawn `rocker` long, frame 100, the rocker's B drawn away from the coupler's. In line the
+// rows of the last pin look dependent on the others; they are not anywhere else.
+Mechanism inLineFourBar(double rocker) {
+  Mechanism m;
+  const BodyId g = m.addBody("ground", true), c = m.addBody("crank"), k = m.addBody("coupler"),
+               r = m.addBody("rocker");
+  const JointId d = m.addPin(m.addPoint(g, "O2", {0, 0}), m.addPoint(c, "O2", {0, 0}));
+  m.addPin(m.addPoint(c, "A", {20, 0}), m.addPoint(k, "A", {20, 0}));
+  m.addPin(m.addPoint(k, "B", {50, 0}), m.addPoint(r, "B", {100 - rocker, 0}));
+  m.addPin(m.addPoint(r, "O4", {100, 0}), m.addPoint(g, "O4", {100, 0}));
+  m.driver = Driver{d, 60, Direction::Ccw, 0, ""};
+  return m;
+}
+
+TEST(Structure, InLineDrawingThatCanCloseAssemblesOffTheLine) {
+  const Mechanism m = inLineFourBar(55);
+  Kinematics k;
+  const Status s = k.load(m);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_EQ(k.structure().mobility, 1);
+  EXPECT_EQ(k.structure().rank, 8);
+  EXPECT_TRUE(k.structure().redundantJoints.empty());
+  EXPECT_TRUE(k.assembly().moved);
+  // B where the circles |B - A| = 30 about A = (20, 0) and |B - O4| = 55 about O4 = (100, 0)
+  // cross: 2 x - 120 = (900 - 3025) / 80.
+  const Vec2 B = k.position(*m.findPoint("coupler.B"));
+  const double x = (120 + (900.0 - 3025.0) / 80) / 2;
+  EXPECT_NEAR(B.x(), x, 1e-9 * x);
+  EXPECT_NEAR(std::abs(B.y()), std::sqrt(900 - (x - 20) * (x - 20)), 1e-9 * 14);
+  EXPECT_NEAR((k.position(*m.findPoint("rocker.B")) - B).norm(), 0, 1e-9);
+  EXPECT_NEAR(k.position(*m.findPoint("crank.A")).y(), 0, 1e-12);  // the crank stays at 0
+  // It moves on from there as the four-bar it is, up to its limit.
+  ASSERT_TRUE(k.moveTo(30).ok());
+  EXPECT_NEAR((k.position(*m.findPoint("rocker.B")) - k.position(*m.findPoint("ground.O4"))).norm(),
+              55, 1e-9);
+}
+
+TEST(Structure, InLineDrawingTooShortToCloseIsAnAssemblyFailureNotAConflict) {
+  Kinematics k;
+  const Status s = k.load(inLineFourBar(45));  // 20 + 30 + 45 < 100
+  EXPECT_EQ(s.code, StatusCode::AssemblyFailed) << s.message;
+  EXPECT_NE(s.message.find("cannot assemble"), std::string::npos) << s.message;
+  EXPECT_EQ(s.message.find("conflicts"), std::string::npos) << s.message;
+  EXPECT_FALSE(s.joints.empty());
   EXPECT_FALSE(k.valid());
 }
 

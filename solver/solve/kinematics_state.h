@@ -36,6 +36,7 @@ struct KinematicsState {
   Status analyse(const Mechanism& m, const Eigen::VectorXd& q);
   void resetSolver(const Eigen::VectorXd& q);
   Status start(const Eigen::VectorXd& q, double phi);
+  bool assembleOffLine(const Eigen::VectorXd& drawn, Eigen::VectorXd& q, double phi, Status& s);
   // Edits of an already valid state, cheapest first; each changes nothing when it fails.
   // Dimensions only, on the closed-form path: the groups the edit touches (load.cpp).
   bool editInPlace(const Mechanism& m, const std::vector<BodyId>& reshaped);

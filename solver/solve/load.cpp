@@ -108,6 +108,41 @@ Status KinematicsState::start(const Eigen::VectorXd& q, double phi) {
   return Status::success();
 }
 
+bool KinematicsState::assembleOffLine(const Eigen::VectorXd& drawn, Eigen::VectorXd& q, double phi,
+                                      Status& s) {
+  // Links drawn in line (a four-bar with every pivot on one line) make rows dependent there that
+  // are not dependent anywhere else: a joint they leave open is then a loop that is too short or
+  // too long at that pose, or one that closes off the line, not a redundant joint in conflict.
+  // Turning the bodies a little (alternate ways, so that no two stay in line) tells the two
+  // apart: if fewer rows are dependent there, assemble again from there with those rows. Which
+  // side of the line the mechanism closes on is then the turn's, as a hand pushing a drawing off
+  // a dead point would choose; the note says how far it moved.
+  Eigen::VectorXd off = q;
+  for (int k = 0; k < sys.nBodies; ++k) off[3 * k + 2] += 1e-3 * (k % 2 ? -1 : 1) * (1 + k % 3);
+  if (analyzeStructure(sys, off, opt.sparseFrom).dependentRows.size() >=
+      structure.dependentRows.size())
+    return false;
+  notes.clear();
+  assembly = {};
+  Status again = analyse(mech, off);
+  if (again.ok()) {
+    resetSolver(off);
+    again = assemble(mech, sys, structure, newton, off, phi, assembly);
+  }
+  if (again.ok()) again = checkRedundant(mech, sys, structure, off, phi);
+  if (!again.ok()) {
+    // A loop that cannot close off the line either: that is the cause. Anything else (the
+    // driver locked: a structure whose redundancy is real, as a parallelogram's fifth link
+    // that is drawn too long) leaves the conflict as the first analysis found it.
+    if (again.code == StatusCode::AssemblyFailed) s = again;
+    return false;
+  }
+  q = off;
+  assembly.maxMove = largestMove(mech, sys, drawn, q, &assembly.body);
+  assembly.moved = assembly.maxMove > 1e-9 * sys.size;
+  return true;
+}
+
 Status KinematicsState::prepare(const Mechanism& m, const Eigen::VectorXd* warm, double warmPhi) {
   valid = false;
   notes.clear();
@@ -120,10 +155,14 @@ Status KinematicsState::prepare(const Mechanism& m, const Eigen::VectorXd* warm,
   sys = std::move(*compiled);
 
   Eigen::VectorXd q = warm ? *warm : sketchCoordinates(sys);
+  const Eigen::VectorXd drawn = q;
   const double phi = warm ? warmPhi : 0.0;
   if (s = analyse(mech, q); !s.ok()) return s;
   resetSolver(q);
   if (s = assemble(mech, sys, structure, newton, q, phi, assembly); !s.ok()) return s;
+  if (s = checkRedundant(mech, sys, structure, q, phi);
+      !s.ok() && !assembleOffLine(drawn, q, phi, s))
+    return s;
   if (!warm && assembly.moved) {
     const Body* b = mech.body(assembly.body);
     char buf[160];
@@ -133,7 +172,6 @@ Status KinematicsState::prepare(const Mechanism& m, const Eigen::VectorXd* warm,
                   b ? b->name.c_str() : "?", assembly.maxMove);
     notes.push_back(Note{Note::Kind::AssemblyMoved, buf, {}, {assembly.body}});
   }
-  if (s = checkRedundant(mech, sys, structure, q, phi); !s.ok()) return s;
   if (s = start(q, phi); !s.ok()) return s;
   if (!warm && sys.hasDriver && sys.startRad != 0) {
     s = moveToPhi(sys.startRad);
