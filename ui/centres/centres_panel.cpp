@@ -101,18 +101,26 @@ void CentresPanel::setDocument(Document* doc) {
 }
 
 void CentresPanel::rebuildPoints() {
-  const QString was = point_->currentText();
-  QSignalBlocker block(point_);
-  point_->clear();
-  point_->addItem(tr("(none)"));
+  QStringList labels{tr("(none)")};
   if (doc_) {
     const Mechanism& m = doc_->kinematics().mechanism();
     // Output points first: the ones a user checks.
-    for (PointId p : m.outputs) point_->addItem(QString::fromStdString(m.pointLabel(p)));
+    for (PointId p : m.outputs) labels << QString::fromStdString(m.pointLabel(p));
     for (const Point& p : m.points)
       if (std::find(m.outputs.begin(), m.outputs.end(), p.id) == m.outputs.end())
-        point_->addItem(QString::fromStdString(m.pointLabel(p.id)));
+        labels << QString::fromStdString(m.pointLabel(p.id));
   }
+  // A design dragged with Ctrl changes many times a second and keeps its points: the choice
+  // stays as it is (refilling the box cost a frame a millisecond).
+  if (labels == pointLabels_) {
+    refresh();
+    return;
+  }
+  pointLabels_ = labels;
+  const QString was = point_->currentText();
+  QSignalBlocker block(point_);
+  point_->clear();
+  point_->addItems(labels);
   // The same point again after an edit; otherwise the first output point, unless the user
   // chose none.
   int i = point_->findText(was);
@@ -164,7 +172,13 @@ void CentresPanel::fillTable(const InstantCentres& ics) {
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < 6; ++c) table_->setItem(r, c, new QTableWidgetItem);
   }
-  const bool fresh = sizedFor_ != doc_->kinematics().revision();
+  // Sized again when the rows say other things (bodies renamed, added), not on every edit: a
+  // design dragged with Ctrl is an edit a frame.
+  QString rows;
+  for (const InstantCentre& c : ics.centres)
+    rows +=
+        bodyName(*doc_, ics, c.i) + QLatin1Char('-') + bodyName(*doc_, ics, c.j) + QLatin1Char(';');
+  const bool fresh = rows != sizedFor_;
   for (int r = 0; r < n; ++r) {
     const InstantCentre& c = ics.centres[r];
     const bool inf = c.atInfinity();
@@ -192,7 +206,7 @@ void CentresPanel::fillTable(const InstantCentres& ics) {
     // Room for coordinates that grow while the mechanism moves (a centre far away).
     const int wide = table_->fontMetrics().horizontalAdvance(QStringLiteral("-00000.000  "));
     for (int c : {2, 3}) table_->setColumnWidth(c, std::max(table_->columnWidth(c), wide));
-    sizedFor_ = doc_->kinematics().revision();
+    sizedFor_ = rows;
   }
 }
 

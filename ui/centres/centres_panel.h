@@ -6,6 +6,7 @@
 
 #include <QElapsedTimer>
 #include <QPointer>
+#include <QStringList>
 #include <QTimer>
 #include <QWidget>
 #include <optional>
@@ -56,7 +57,8 @@ class CentresPanel : public QWidget {
   QLineEdit* via_;
   QTextBrowser* steps_;
   std::optional<VelocityChain> chain_;
-  std::uint64_t sizedFor_ = 0;
+  QString sizedFor_;         // the rows' bodies when the columns were sized
+  QStringList pointLabels_;  // the choices of point_
   bool choseNone_ = false;
   bool pending_ = false;
   // The written-out chain is laid out as rich text, which costs more than a frame: while the

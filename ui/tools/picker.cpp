@@ -56,17 +56,16 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
         pick.joint = j.id;
         break;
       }
-  // The top body whose drawn shape holds the point.
+  // The top body whose drawn shape holds the point. Bounding rectangles first, shapes of the
+  // bodies only: a Kennedy line's shape is its stroked outline, which cost a mouse move with the
+  // instant centres shown a millisecond or more.
   const QPointF q(world.x(), world.y());
-  for (QGraphicsItem* item : s.items(q, Qt::IntersectsItemShape, Qt::DescendingOrder)) {
-    if (auto* b = dynamic_cast<BodyItem*>(item)) {
-      pick.body = b->id();
-      break;
-    }
-    if (auto* bl = dynamic_cast<BlockItem*>(item)) {
-      pick.body = bl->body();
-      break;
-    }
+  for (QGraphicsItem* item : s.items(q, Qt::IntersectsItemBoundingRect, Qt::DescendingOrder)) {
+    auto* b = dynamic_cast<BodyItem*>(item);
+    auto* bl = b ? nullptr : dynamic_cast<BlockItem*>(item);
+    if ((!b && !bl) || !item->contains(item->mapFromScene(q))) continue;
+    pick.body = b ? b->id() : bl->body();
+    break;
   }
   if (!pick.body && pick.point) pick.body = m.point(pick.point)->body;
   if (!pick.body && pick.slot) pick.body = m.slot(pick.slot)->body;
