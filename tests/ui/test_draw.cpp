@@ -5,12 +5,14 @@
 #include "ui_test.h"
 
 #include <QComboBox>
+#include <QDockWidget>
 #include <QLabel>
 #include <QProcess>
 #include <QStatusBar>
 #include <QTemporaryDir>
 
 #include "canvas/canvas_scene.h"
+#include "document/commands.h"
 #include "document/document.h"
 #include "drawing.h"
 #include "linkage/io/model_file.h"
@@ -283,6 +285,41 @@ TEST(Draw, RedundantJointsAndFreeBodiesAreNamedAndShown) {
   ASSERT_EQ(u.freeBodies.size(), 1u);
   EXPECT_TRUE(w.scene()->bodyItem(u.freeBodies[0])->flagged());
   EXPECT_EQ(doc->design().body(u.freeBodies[0])->name, "link5");
+}
+
+// The panel's rows are made for what is selected: a bar shows its length; when an edit or an
+// undo turns it into a plate, or takes one of its points, the rows are made again (the old ones
+// read the bar's second point: after Ctrl+Z of a new point they read a point that was gone; the
+// random-input test found it).
+TEST(Draw, PropertiesFollowABarThatBecomesAPlateOrLosesAPoint) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
+  w.show();
+  w.dock("properties")->raise();
+  Document* doc = w.document();
+  const BodyId crank = doc->design().bodyNamed("crank")->id;
+  w.selection()->add(crank);
+  QApplication::processEvents();
+  ASSERT_NE(w.properties()->field("Length [mm]"), nullptr);
+  // A third point: a plate, no length.
+  Mechanism plate = doc->design();
+  plate.addPoint(crank, "C", Vec2(5, 5));
+  editDesign(doc, "Add point", plate);
+  QApplication::processEvents();
+  EXPECT_EQ(w.properties()->field("Length [mm]"), nullptr);
+  doc->undoStack()->undo();
+  QApplication::processEvents();
+  ASSERT_NE(w.properties()->field("Length [mm]"), nullptr);
+  // The bar's second point gone (and its pin with it), the link kept: one point, no length.
+  Mechanism lost = doc->design();
+  lost.remove(*lost.findPoint("crank.A"));
+  editDesign(doc, "Remove point", lost);
+  w.selection()->add(crank);
+  QApplication::processEvents();
+  EXPECT_EQ(w.properties()->field("Length [mm]"), nullptr);
+  doc->undoStack()->undo();
+  QApplication::processEvents();
+  EXPECT_NE(w.properties()->field("Length [mm]"), nullptr);
 }
 
 }  // namespace

@@ -80,16 +80,28 @@ void PropertiesPanel::rebuild() {
   if (!doc_ || !selection_) return;
   const Mechanism& m = doc_->design();
   // One thing selected is edited; several or none: the mechanism.
+  // The rows are made for a shape and only refreshed while it stays: the shape says everything
+  // the rows are made from (a bar's two points, a joint's type), so that an edit or an undo that
+  // changes it (a bar turned plate, a point gone) makes them again, never reads what is gone.
   QString shape = QStringLiteral("mechanism");
   if (selection_->size() == 1) {
-    if (!selection_->bodies.empty() && m.contains(selection_->bodies[0]))
-      shape = QStringLiteral("body %1").arg(selection_->bodies[0].value);
-    else if (!selection_->points.empty() && m.contains(selection_->points[0]))
+    if (!selection_->bodies.empty() && m.contains(selection_->bodies[0])) {
+      const BodyId b = selection_->bodies[0];
+      shape =
+          QStringLiteral("body %1%2 points").arg(b.value).arg(m.body(b)->ground ? " ground" : "");
+      for (const Point& p : m.points)
+        if (p.body == b) shape += QStringLiteral(" %1").arg(p.id.value);
+    } else if (!selection_->points.empty() && m.contains(selection_->points[0])) {
       shape = QStringLiteral("point %1").arg(selection_->points[0].value);
-    else if (!selection_->joints.empty() && m.contains(selection_->joints[0]))
-      shape = QStringLiteral("joint %1").arg(selection_->joints[0].value);
-    else if (!selection_->slots_.empty() && m.contains(selection_->slots_[0]))
+    } else if (!selection_->joints.empty() && m.contains(selection_->joints[0])) {
+      const Joint* j = m.joint(selection_->joints[0]);
+      shape = QStringLiteral("joint %1 type %2 at %3")
+                  .arg(j->id.value)
+                  .arg(static_cast<int>(j->type))
+                  .arg(j->a.value);
+    } else if (!selection_->slots_.empty() && m.contains(selection_->slots_[0])) {
       shape = QStringLiteral("slot %1").arg(selection_->slots_[0].value);
+    }
   }
   // A driver that appears or goes changes the rows too.
   shape += m.driver ? QStringLiteral(" driven %1").arg(m.driver->joint.value) : QString();

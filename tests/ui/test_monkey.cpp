@@ -1,0 +1,235 @@
+// A user's every kind of input at random, as a stress test of the editor: tool keys, clicks and
+// drags on and beside the mechanism's points, Ctrl+drags, right-click menus and one of their
+// commands, Enter, Escape, Delete, flip, play, steps, undo and redo, on each example. After every
+// action the window has answered within seconds, and the document is either solved with finite
+// positions everywhere or says why not; at the end, undoing everything gives back the file as it
+// was opened, and so does redoing everything and undoing it again. The seeds are fixed: a
+// failure is reproducible, and its action is printed.
+#include <gtest/gtest.h>
+
+#include "ui_test.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QMenu>
+#include <QTimer>
+#include <algorithm>
+#include <cstdio>
+#include <random>
+
+#include "document/document.h"
+#include "drawing.h"
+#include "linkage/io/model_file.h"
+
+namespace linkage::ui {
+namespace {
+
+struct Monkey {
+  MainWindow w;
+  test::Draw d{w};
+  std::mt19937 rng;
+  std::vector<std::string> log;
+
+  explicit Monkey(unsigned seed) : rng(seed) {}
+
+  double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
+  int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); }
+
+  // Somewhere a user would click: on a point of the mechanism (to snap), near one, or anywhere
+  // in the mechanism's neighbourhood.
+  Vec2 place() {
+    Document* doc = w.document();
+    const Mechanism& m = doc->design();
+    if (doc->solved() && !m.points.empty() && pick(3) > 0) {
+      const Point& p = m.points[pick(static_cast<int>(m.points.size()))];
+      const Vec2 at = doc->kinematics().contains(p.id) ? doc->kinematics().position(p.id) : p.pos;
+      return pick(2) ? at : at + Vec2(uniform(-4, 4), uniform(-4, 4));
+    }
+    return Vec2(uniform(-60, 60), uniform(-80, 40));
+  }
+
+  // One action; its description is logged first, so that a crash names it.
+  void act() {
+    static const char* tools[] = {"S", "L", "G", "T", "B", "P", "M", "O"};
+    const int kind = pick(14);
+    std::string what;
+    switch (kind) {
+      case 0:
+      case 1: {
+        const char* t = tools[pick(8)];
+        what = std::string("key ") + t;
+        log.push_back(what);
+        d.key(t);
+        break;
+      }
+      case 2:
+      case 3:
+      case 4: {
+        const Vec2 p = place();
+        what = "click " + std::to_string(p.x()) + "," + std::to_string(p.y());
+        log.push_back(what);
+        d.click(p.x(), p.y());
+        break;
+      }
+      case 5:
+      case 6: {
+        const Vec2 a = place(), b = place();
+        const bool ctrl = pick(2);
+        what = std::string(ctrl ? "ctrl+" : "") + "drag " + std::to_string(a.x()) + "," +
+               std::to_string(a.y()) + " to " + std::to_string(b.x()) + "," + std::to_string(b.y());
+        log.push_back(what);
+        d.drag(a.x(), a.y(), b.x(), b.y(), ctrl ? Qt::ControlModifier : Qt::NoModifier, 6);
+        break;
+      }
+      case 7: {
+        const Vec2 p = place();
+        what = "right click " + std::to_string(p.x()) + "," + std::to_string(p.y());
+        log.push_back(what);
+        d.rightClick(p.x(), p.y());
+        QApplication::processEvents();
+        if (auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget())) {
+          std::vector<QAction*> choices;
+          for (QAction* a : menu->actions())
+            if (a->isEnabled() && !a->isSeparator() && !a->menu()) choices.push_back(a);
+          if (!choices.empty() && pick(3) > 0) {
+            QAction* a = choices[pick(static_cast<int>(choices.size()))];
+            log.push_back("  menu: " + a->text().toStdString());
+            menu->close();
+            a->trigger();
+          } else {
+            menu->close();
+          }
+        }
+        break;
+      }
+      case 8: {
+        static const Qt::Key keys[] = {Qt::Key_Return, Qt::Key_Escape, Qt::Key_Delete,
+                                       Qt::Key_X,      Qt::Key_Right,  Qt::Key_Left};
+        const Qt::Key k = keys[pick(6)];
+        log.push_back("key " + QKeySequence(k).toString().toStdString());
+        d.key(k);
+        break;
+      }
+      case 9:
+      case 10:
+        log.push_back("undo");
+        d.key("Z", Qt::ControlModifier);
+        break;
+      case 11:
+        log.push_back("redo");
+        d.key("Z", Qt::ControlModifier | Qt::ShiftModifier);
+        break;
+      case 12: {
+        log.push_back("play a moment");
+        d.key(Qt::Key_Space);
+        QTest::qWait(30);
+        d.key(Qt::Key_Space);
+        break;
+      }
+      default: {
+        // Select everything under a rubber band, then delete it or flip it.
+        const Vec2 a = place(), b = place();
+        log.push_back("band and " + std::string(kind % 2 ? "delete" : "flip"));
+        d.key("S");
+        d.drag(a.x() + 30, a.y() + 30, b.x() - 30, b.y() - 30, Qt::NoModifier, 4);
+        d.key(kind % 2 ? Qt::Key_Delete : Qt::Key_X);
+        break;
+      }
+    }
+    QApplication::processEvents();
+  }
+
+  std::string recent() const {
+    std::string s;
+    for (size_t i = log.size() > 12 ? log.size() - 12 : 0; i < log.size(); ++i)
+      s += "\n  " + log[i];
+    return s;
+  }
+};
+
+void checkState(Monkey& k, int step) {
+  Document* doc = k.w.document();
+  if (!doc->solved()) {
+    ASSERT_FALSE(doc->solveStatus().ok() && doc->solveStatus().message.empty())
+        << "not solved and no reason, step " << step << k.recent();
+    return;
+  }
+  const Kinematics& kin = doc->kinematics();
+  for (const Point& p : kin.mechanism().points)
+    ASSERT_TRUE(kin.position(p.id).allFinite())
+        << kin.mechanism().pointLabel(p.id) << " not finite, step " << step << k.recent();
+  ASSERT_TRUE(std::isfinite(doc->crankDeg())) << "step " << step << k.recent();
+}
+
+void runMonkey(const char* example, unsigned seed, int steps) {
+  // A dialog or a menu left open by an action is closed, as a user would, so that no nested
+  // event loop waits for a hand.
+  QTimer closer;
+  QObject::connect(&closer, &QTimer::timeout, [] {
+    if (QWidget* m = QApplication::activeModalWidget()) m->close();
+    if (QWidget* p = QApplication::activePopupWidget()) p->close();
+  });
+  closer.start(50);
+
+  Monkey k(seed);
+  k.w.resize(1200, 800);
+  ASSERT_TRUE(k.w.openExample(example));
+  k.w.show();
+  QApplication::processEvents();
+  k.w.canvas()->setZoom(4);
+  k.w.canvas()->centerOn(0, -20);
+  Document* doc = k.w.document();
+  const std::string opened = serializeMechanism(doc->design());
+
+  int changes = 0;
+  QObject::connect(doc, &Document::designChanged, [&changes] { ++changes; });
+  QElapsedTimer t;
+  int unsolved = 0;
+  for (int i = 0; i < steps; ++i) {
+    t.start();
+    k.act();
+    // Seconds, not a frame: the sanitizer build is slow, and this is about hangs.
+    ASSERT_LT(t.elapsed(), 5000) << "the window did not answer, step " << i << k.recent();
+    checkState(k, i);
+    if (::testing::Test::HasFatalFailure()) return;
+    unsolved += !doc->solved();
+  }
+  // The input did something: the design changed many times (edits, undos and redos).
+  std::printf("%s seed %u: %d design changes, %d in the history, %d of %d steps unsolved\n",
+              example, seed, changes, doc->undoStack()->count(), unsolved, steps);
+  EXPECT_GT(changes, 20);
+  // Leave any tool's half-made edit, then walk the history.
+  k.d.key(Qt::Key_Escape);
+  QUndoStack* undo = doc->undoStack();
+  const int edits = undo->count();
+  undo->setIndex(0);
+  EXPECT_EQ(serializeMechanism(doc->design()), opened) << "undo all, " << edits << " edits";
+  undo->setIndex(undo->count());
+  checkState(k, steps);
+  undo->setIndex(0);
+  EXPECT_EQ(serializeMechanism(doc->design()), opened) << "redo all and undo all again";
+  checkState(k, steps + 1);
+}
+
+// LINKAGE_MONKEY_SEEDS=N runs N seeds on each example instead of one (a longer hunt).
+void runSeeds(const char* example, unsigned first) {
+  const int n = std::max(1, qEnvironmentVariableIntValue("LINKAGE_MONKEY_SEEDS"));
+  for (int s = 0; s < n && !::testing::Test::HasFatalFailure(); ++s)
+    runMonkey(example, first + 100 * s, 300);
+}
+
+TEST(Monkey, RandomInputOnTheWanzer) {
+  runSeeds("wanzer-inversion-2", 1);
+}
+TEST(Monkey, RandomInputOnTheFourBar) {
+  runSeeds("four-bar-crank-rocker", 2);
+}
+TEST(Monkey, RandomInputOnTheSliderCrank) {
+  runSeeds("slider-crank-22a-lambda-0.3", 3);
+}
+TEST(Monkey, RandomInputOnThe876Needle) {
+  runSeeds("needle-876-alpha-35", 4);
+}
+
+}  // namespace
+}  // namespace linkage::ui
