@@ -110,8 +110,19 @@ Status KinematicsState::skipWholeTurns(double target) {
     const double dth = perTurn[3 * k + 2];
     const double whole = turn * std::round(dth / turn);
     if (std::abs(perTurn[3 * k]) > 1e-9 * sys.size ||
-        std::abs(perTurn[3 * k + 1]) > 1e-9 * sys.size || std::abs(dth - whole) > 1e-9)
-      return Status::success();  // not periodic in one turn: tracked the whole way
+        std::abs(perTurn[3 * k + 1]) > 1e-9 * sys.size || std::abs(dth - whole) > 1e-9) {
+      // Not periodic in one turn: tracked the whole way, step by step, which a thousand turns
+      // (a few seconds of steps) bound, so that a typed angle never stalls an editor.
+      constexpr double kMaxTrackedTurns = 1000;
+      if (std::abs(target - reg.phi) <= kMaxTrackedTurns * turn) return Status::success();
+      Status s = Status::failure(
+          StatusCode::BadModel,
+          "crank angle " + deg((target - sys.startRad) / kDeg) +
+              " is refused: the motion does not repeat after one turn, and tracking it more "
+              "than 1000 turns step by step would take too long");
+      s.crankDeg = (target - sys.startRad) / kDeg;
+      return s;
+    }
     perTurn[3 * k] = perTurn[3 * k + 1] = 0;
     perTurn[3 * k + 2] = whole;
   }
@@ -125,6 +136,21 @@ Status KinematicsState::skipWholeTurns(double target) {
 }
 
 Status KinematicsState::moveToPhi(double target) {
+  // Crank angles are counted in a double: up to 1e9 degrees from the start (2.8 million turns)
+  // a step of a hundredth of a degree still moves it by many ulps (1e-7 of a step at the far
+  // end). Beyond, a step could round to no motion at all and the tracker would never arrive.
+  constexpr double kMaxFromStartRad = 1e9 * kDeg;
+  const bool farFromStart = std::abs(target - sys.startRad) > kMaxFromStartRad;
+  if (!std::isfinite(target) || farFromStart || std::abs(target) > kMaxFromStartRad) {
+    Status s = Status::failure(
+        StatusCode::BadModel,
+        "crank angle " + deg((target - sys.startRad) / kDeg) +
+            (farFromStart ? "" : " (" + deg(target / kDeg) + " from the drawing, with start_deg)") +
+            " is beyond the 1e9 degrees (2.8 million turns) either way from the start that the "
+            "crank angle is counted to");
+    s.crankDeg = (target - sys.startRad) / kDeg;
+    return s;
+  }
   // Far targets: one turn shows whether the motion repeats; if it does, whole turns are skipped
   // exactly (angles advance by whole turns), so a large angle costs no more than one turn.
   if (std::abs(target - reg.phi) > 4 * M_PI) {
@@ -159,6 +185,7 @@ bool KinematicsState::trackClosedForm(double target) {
     const double remaining = target - reg.phi;
     const double phiNext =
         std::abs(remaining) <= hMax ? target : reg.phi + std::copysign(hMax, remaining);
+    if (phiNext == reg.phi) return false;  // no step left in a double (moveToPhi bounds it)
     if (!plan->solve(sys, reg, phiNext, next, opt.accelerations)) {
       atSingular = false;
       return false;
@@ -184,6 +211,7 @@ Status KinematicsState::trackGeneral(double target) {
     }
     const bool last = std::abs(remaining) <= hTry;
     const double phiNext = last ? target : reg.phi + std::copysign(hTry, remaining);
+    if (phiNext == reg.phi) return explainFailure(target, false);  // as above
     Snapshot next;
     switch (tryStep(phiNext, next)) {
       case StepResult::Accepted:

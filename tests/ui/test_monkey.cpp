@@ -11,6 +11,7 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QLineEdit>
 #include <QMenu>
 #include <QTimer>
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include "document/document.h"
 #include "drawing.h"
 #include "linkage/io/model_file.h"
+#include "properties/properties_panel.h"
 
 namespace linkage::ui {
 namespace {
@@ -51,7 +53,7 @@ struct Monkey {
   // One action; its description is logged first, so that a crash names it.
   void act() {
     static const char* tools[] = {"S", "L", "G", "T", "B", "P", "M", "O"};
-    const int kind = pick(14);
+    const int kind = pick(17);
     std::string what;
     switch (kind) {
       case 0:
@@ -124,6 +126,39 @@ struct Monkey {
         d.key(Qt::Key_Space);
         QTest::qWait(30);
         d.key(Qt::Key_Space);
+        break;
+      }
+      case 14: {
+        // A value typed into a field of the properties panel: numbers a user may type, and
+        // some no one should.
+        static const char* texts[] = {"0",   "-5",     "12.5", "1e6", "1e-12", "abc",  "nan",
+                                      "inf", "-1e300", "",     "7,5", "360",   "-720", "0.001"};
+        std::vector<QLineEdit*> fields;
+        for (QLineEdit* e : w.properties()->findChildren<QLineEdit*>())
+          if (e->isVisible() && e->isEnabled() && !e->isReadOnly()) fields.push_back(e);
+        if (fields.empty()) {
+          const Vec2 p = place();
+          log.push_back("select at " + std::to_string(p.x()) + "," + std::to_string(p.y()));
+          d.key("S");
+          d.click(p.x(), p.y());
+          break;
+        }
+        QLineEdit* e = fields[pick(static_cast<int>(fields.size()))];
+        const char* text = texts[pick(14)];
+        log.push_back("type \"" + std::string(text) + "\" into a field");
+        e->setFocus();
+        e->selectAll();
+        QTest::keyClicks(e, QString::fromLatin1(text));
+        QTest::keyClick(e, Qt::Key_Return);
+        w.canvas()->setFocus();
+        break;
+      }
+      case 15: {
+        static const char* views[] = {"I", "Shift+E", "Shift+A", "Shift+T", "#", "F", "Home"};
+        const char* k = views[pick(7)];
+        log.push_back(std::string("key ") + k);
+        const QKeyCombination c = QKeySequence(QString::fromLatin1(k))[0];
+        QTest::keyClick(w.canvas(), c.key(), c.keyboardModifiers());
         break;
       }
       default: {
