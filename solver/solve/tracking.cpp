@@ -136,17 +136,17 @@ Status KinematicsState::skipWholeTurns(double target) {
 }
 
 Status KinematicsState::moveToPhi(double target) {
-  // Crank angles are counted in a double: up to 1e9 degrees from the start (2.8 million turns)
-  // a step of a hundredth of a degree still moves it by many ulps (1e-7 of a step at the far
-  // end). Beyond, a step could round to no motion at all and the tracker would never arrive.
-  constexpr double kMaxFromStartRad = 1e9 * kDeg;
+  // Crank angles are counted in a double: up to 1e12 degrees from the start (2.8 billion
+  // turns) its rounding stays under 3e-4 degrees, a ten-thousandth of a step. Far beyond, a step
+  // rounds to nothing and the tracker would never arrive: refused, naming the angle.
+  constexpr double kMaxFromStartRad = 1e12 * kDeg;
   const bool farFromStart = std::abs(target - sys.startRad) > kMaxFromStartRad;
   if (!std::isfinite(target) || farFromStart || std::abs(target) > kMaxFromStartRad) {
     Status s = Status::failure(
         StatusCode::BadModel,
         "crank angle " + deg((target - sys.startRad) / kDeg) +
             (farFromStart ? "" : " (" + deg(target / kDeg) + " from the drawing, with start_deg)") +
-            " is beyond the 1e9 degrees (2.8 million turns) either way from the start that the "
+            " is beyond the 1e12 degrees (2.8 billion turns) either way from the start that the "
             "crank angle is counted to");
     s.crankDeg = (target - sys.startRad) / kDeg;
     return s;
