@@ -261,5 +261,41 @@ TEST(Canvas, AccelerationsOnlyWhileShown) {
   EXPECT_TRUE(w.document()->kinematics().accelerations());
 }
 
+// A plate a kilometre long (a point typed 1e6 mm away) at 4 pixels a millimetre: it is drawn
+// where it is and nowhere else. Its polygon is cut to the painted area first (at full size the
+// raster engine took 0.4 s a paint on its slow path; the random-input test found it).
+TEST(Canvas, APlateFarLargerThanTheViewIsDrawnWhereItIs) {
+  MainWindow w;
+  w.resize(1200, 800);
+  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
+  w.show();
+  QApplication::processEvents();
+  CanvasView* v = w.canvas();
+  v->setZoom(4);
+  Document* doc = w.document();
+  const Vec2 a = doc->kinematics().position(*doc->design().findPoint("coupler.A"));
+  v->centerOn(a.x() + 30, a.y());
+  QApplication::processEvents();
+  const QImage before = v->viewport()->grab().toImage();
+  Mechanism m = doc->design();
+  m.addPoint(m.bodyNamed("coupler")->id, "far", a + Vec2(1e6, 0));
+  doc->setDesign(m);
+  ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
+  QApplication::processEvents();
+  const QImage after = v->viewport()->grab().toImage();
+  // Just above the plate's lower edge (the line from A to the far point), 30 mm along: inside
+  // the plate now, outside the coupler before. Just below it: outside both.
+  const QPoint inside = v->mapFromScene(QPointF(a.x() + 30, a.y() + 2));
+  const QPoint outside = v->mapFromScene(QPointF(a.x() + 30, a.y() - 2));
+  ASSERT_TRUE(before.rect().contains(inside) && before.rect().contains(outside));
+  EXPECT_NE(after.pixel(inside), before.pixel(inside));
+  EXPECT_EQ(after.pixel(outside), before.pixel(outside));
+  // And the plate runs on to the right edge of the view.
+  const QPoint edge =
+      v->mapFromScene(v->mapToScene(QPoint(v->viewport()->width() - 5, 0)).x(), a.y() + 2);
+  EXPECT_NE(after.pixel(edge), before.pixel(edge));
+  shot(v->viewport(), "canvas-kilometre-plate");
+}
+
 }  // namespace
 }  // namespace linkage::ui

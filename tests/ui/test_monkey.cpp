@@ -10,7 +10,9 @@
 #include "ui_test.h"
 
 #include <QApplication>
+#include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QLineEdit>
 #include <QMenu>
 #include <QTimer>
@@ -221,10 +223,20 @@ void runMonkey(const char* example, unsigned seed, int steps) {
   QElapsedTimer t;
   int unsolved = 0;
   for (int i = 0; i < steps; ++i) {
+    const std::string before = serializeMechanism(doc->design());
+    const double crankBefore = doc->crankDeg();
     t.start();
     k.act();
-    // Seconds, not a frame: the sanitizer build is slow, and this is about hangs.
-    ASSERT_LT(t.elapsed(), 5000) << "the window did not answer, step " << i << k.recent();
+    // Seconds, not a frame: the sanitizer build is slow, and this is about hangs. The design
+    // before the step is kept, to reproduce it.
+    if (t.elapsed() >= 5000) {
+      const QString path = QDir::temp().filePath(QStringLiteral("monkey-slow.linkage.json"));
+      QFile f(path);
+      if (f.open(QIODevice::WriteOnly)) f.write(before.c_str());
+      FAIL() << "the window did not answer, step " << i << " (" << t.elapsed()
+             << " ms), from the design in " << path.toStdString() << " at crank " << crankBefore
+             << k.recent();
+    }
     checkState(k, i);
     if (::testing::Test::HasFatalFailure()) return;
     unsolved += !doc->solved();

@@ -32,6 +32,19 @@ void arc(QPolygonF& out, const Vec2& c, double r, double a0, double sweep, doubl
   }
 }
 
+// A polygon far larger than what is painted on is cut to that area (and as much again on every
+// side) first: Qt's raster engine strokes coordinates beyond its fast path's range on a slow
+// one, and a plate typed a metre long cost 0.4 s a paint at 4 pixels a millimetre. Convex or
+// not, the cut polygon covers the same pixels; its new edges lie outside what is seen.
+QPolygonF cutToDevice(const QPolygonF& poly, const QPainter* p) {
+  const QRectF device(0, 0, p->device()->width(), p->device()->height());
+  const QRectF b = p->worldTransform().mapRect(poly.boundingRect());
+  if (b.width() <= 4 * device.width() && b.height() <= 4 * device.height()) return poly;
+  const QRectF around =
+      device.adjusted(-device.width(), -device.height(), device.width(), device.height());
+  return poly.intersected(p->worldTransform().inverted().map(QPolygonF(around)));
+}
+
 }  // namespace
 
 QPolygonF capsule(const Vec2& a, const Vec2& b, double r, double px) {
@@ -121,7 +134,9 @@ void BodyItem::rebuild() {
     if (g_.body.shape != Drawing::Shape::Ground || a == b) continue;
     // The frame's slots: short strokes along both walls, as a fixed guide is drawn.
     const Vec2 d = (b - a).normalized(), n = perp(d);
-    const double step = 6 * px(), len = (b - a).norm();
+    // A stroke every 6 pixels, and no more than 2000 along a wall (a slot typed a kilometre
+    // long would otherwise make a million).
+    const double len = (b - a).norm(), step = std::max(6 * px(), len / 2000);
     for (double s = 0; s <= len; s += step)
       for (int side : {-1, 1}) {
         const Vec2 base = a + s * d + side * (w + 0.5 * px()) * n;
@@ -148,7 +163,8 @@ void BodyItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
   // Fills without antialiasing, then antialiased one-pixel outlines over their edges: the
   // outline hides the stair steps, and an aliased fill of a large plate costs a fraction of an
   // antialiased one (plates and channels are most of a frame's pixels).
-  auto shape = [&](const QPolygonF& poly, const QColor& fill, const QPen& outline) {
+  auto shape = [&](const QPolygonF& whole, const QColor& fill, const QPen& outline) {
+    const QPolygonF poly = cutToDevice(whole, p);
     p->setRenderHint(QPainter::Antialiasing, false);
     p->setPen(Qt::NoPen);
     p->setBrush(fill);
