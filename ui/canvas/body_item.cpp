@@ -4,6 +4,7 @@
 #include <QPainterPathStroker>
 #include <QStyleOptionGraphicsItem>
 #include <QtMath>
+#include <algorithm>
 #include <cmath>
 
 namespace linkage::ui {
@@ -30,19 +31,6 @@ void arc(QPolygonF& out, const Vec2& c, double r, double a0, double sweep, doubl
     const double a = a0 + sweep * k / n;
     out << QPointF(c.x() + r * std::cos(a), c.y() + r * std::sin(a));
   }
-}
-
-// A polygon far larger than what is painted on is cut to that area (and as much again on every
-// side) first: Qt's raster engine strokes coordinates beyond its fast path's range on a slow
-// one, and a plate typed a metre long cost 0.4 s a paint at 4 pixels a millimetre. Convex or
-// not, the cut polygon covers the same pixels; its new edges lie outside what is seen.
-QPolygonF cutToDevice(const QPolygonF& poly, const QPainter* p) {
-  const QRectF device(0, 0, p->device()->width(), p->device()->height());
-  const QRectF b = p->worldTransform().mapRect(poly.boundingRect());
-  if (b.width() <= 4 * device.width() && b.height() <= 4 * device.height()) return poly;
-  const QRectF around =
-      device.adjusted(-device.width(), -device.height(), device.width(), device.height());
-  return poly.intersected(p->worldTransform().inverted().map(QPolygonF(around)));
 }
 
 }  // namespace
@@ -122,12 +110,28 @@ QPolygonF bodyOutline(const Drawing::Body& b, double px) {
   return QPolygonF();
 }
 
+// What the solver refuses to compute with (a coordinate beyond 1e12 mm, typed or in a file) is
+// not drawn either: the design stays as typed, the status bar says why, and no length is
+// squared into infinity here (a hatching loop with an infinite length never ended).
+static bool drawable(const BodyGeometry& g) {
+  auto ok = [](const Vec2& v) { return v.allFinite() && v.cwiseAbs().maxCoeff() <= 1e12; };
+  bool all = std::all_of(g.body.outline.begin(), g.body.outline.end(), ok) &&
+             std::all_of(g.points.begin(), g.points.end(), ok) && std::isfinite(g.body.radius) &&
+             std::abs(g.body.radius) <= 1e12;
+  for (const auto& [a, b] : g.slots) all = all && ok(a) && ok(b);
+  return all;
+}
+
 void BodyItem::rebuild() {
-  body_ = bodyOutline(g_.body, px());
   shape_ = QPainterPath();
-  shape_.addPolygon(body_);
   channels_.clear();
   hatch_.clear();
+  if (!drawable(g_)) {
+    body_.clear();
+    return;
+  }
+  body_ = bodyOutline(g_.body, px());
+  shape_.addPolygon(body_);
   const double w = CanvasStyle::channelWidth / 2 * px();
   for (const auto& [a, b] : g_.slots) {
     channels_.push_back(capsule(a, b, w, px()));
@@ -190,7 +194,8 @@ void BodyItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
     p->setPen(Qt::NoPen);
     p->setBrush(line);
     const double r = CanvasStyle::pointRadius * px();
-    for (const Vec2& pt : g_.points) p->drawEllipse(toQt(pt), r, r);
+    if (drawable(g_))
+      for (const Vec2& pt : g_.points) p->drawEllipse(toQt(pt), r, r);
   }
 }
 

@@ -31,6 +31,7 @@ class BodyItem : public CanvasItem {
 
   QRectF boundingRect() const override;
   QPainterPath shape() const override { return shape_; }
+  const QPolygonF& outline() const { return body_; }  // as drawn, in the body's frame
   void paint(QPainter* p, const QStyleOptionGraphicsItem* o, QWidget*) override;
 
  protected:

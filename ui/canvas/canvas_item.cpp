@@ -5,6 +5,15 @@
 
 namespace linkage::ui {
 
+QPolygonF cutToDevice(const QPolygonF& poly, const QPainter* p) {
+  const QRectF device(0, 0, p->device()->width(), p->device()->height());
+  const QRectF b = p->worldTransform().mapRect(poly.boundingRect());
+  if (b.width() <= 4 * device.width() && b.height() <= 4 * device.height()) return poly;
+  const QRectF around =
+      device.adjusted(-device.width(), -device.height(), device.width(), device.height());
+  return poly.intersected(p->worldTransform().inverted().map(QPolygonF(around)));
+}
+
 LabelItem::LabelItem(const QString& text, QGraphicsItem* parent)
     : QGraphicsItem(parent), text_(text) {
   setFlag(ItemIgnoresTransformations);

@@ -6,6 +6,7 @@
 #include <QGraphicsItem>
 #include <QPainterPath>
 #include <QPen>
+#include <QPolygonF>
 
 #include "canvas/style.h"
 
@@ -18,6 +19,12 @@ inline QPen cosmetic(const QColor& c, double width, Qt::PenStyle style = Qt::Sol
   p.setCosmetic(true);
   return p;
 }
+
+// A polygon far larger than what the painter paints on, cut to that area and as much again on
+// every side: Qt's raster engine strokes coordinates beyond its fast path's range on a slow one
+// (a plate typed a kilometre long cost 0.4 s a paint at 4 pixels a millimetre). The cut covers
+// the same pixels; its new edges lie outside what is seen.
+QPolygonF cutToDevice(const QPolygonF& poly, const QPainter* p);
 
 struct CanvasContext {
   double px = 0.1;  // mm per screen pixel

@@ -74,7 +74,7 @@ void ToolOverlay::paintSelection(QPainter* p) const {
   for (BodyId b : selection_->bodies)
     if (const BodyItem* item = scene_->bodyItem(b)) {
       p->setPen(cosmetic(st.highlight, 3));
-      p->drawPath(item->sceneTransform().map(item->shape()));
+      p->drawPolygon(cutToDevice(item->sceneTransform().map(item->outline()), p));
     }
   const Mechanism& m = scene_->shownMechanism();
   p->setPen(ring);
@@ -91,7 +91,8 @@ void ToolOverlay::paintSelection(QPainter* p) const {
   for (SlotId s : selection_->slots_)
     if (const Slot* sl = m.slot(s)) {
       const Transform T = scene_->poseOf(sl->body);
-      p->drawPolygon(capsule(T * sl->p0, T * sl->p1, (CanvasStyle::channelWidth / 2 + 3) * u, u));
+      p->drawPolygon(cutToDevice(
+          capsule(T * sl->p0, T * sl->p1, (CanvasStyle::channelWidth / 2 + 3) * u, u), p));
     }
 }
 
@@ -106,7 +107,7 @@ void ToolOverlay::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) 
     if (const BodyItem* item = scene_->bodyItem(hover_.body)) {
       p->setPen(cosmetic(st.highlight, 1.5, Qt::DashLine));
       p->setBrush(Qt::NoBrush);
-      p->drawPath(item->sceneTransform().map(item->shape()));
+      p->drawPolygon(cutToDevice(item->sceneTransform().map(item->outline()), p));
     }
   // The link being drawn.
   if (!path_.empty()) {
