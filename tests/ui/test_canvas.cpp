@@ -297,5 +297,26 @@ TEST(Canvas, APlateFarLargerThanTheViewIsDrawnWhereItIs) {
   shot(v->viewport(), "canvas-kilometre-plate");
 }
 
+// Coordinates the solver refuses (beyond 1e12 mm) are kept in the design, as typed, and the
+// document says why it cannot solve; the canvas draws nothing of them and does not stall (a
+// ground slot whose length overflowed to infinity once hatched it forever).
+TEST(Canvas, GeometryTheSolverRefusesIsNotDrawnAndSaysWhy) {
+  MainWindow w;
+  w.resize(1200, 800);
+  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
+  w.show();
+  QApplication::processEvents();
+  Document* doc = w.document();
+  Mechanism m = doc->design();
+  m.addSlot(m.ground()->id, "far", Vec2(-1e300, 0), Vec2(1e300, 1e300));
+  doc->setDesign(m);
+  QApplication::processEvents();
+  EXPECT_FALSE(doc->solved());
+  EXPECT_NE(doc->solveStatus().message.find("1e12"), std::string::npos)
+      << doc->solveStatus().message;
+  EXPECT_EQ(doc->design().slots.size(), 1u);  // kept as typed
+  w.canvas()->viewport()->repaint();          // and painted, with the far slot left out
+}
+
 }  // namespace
 }  // namespace linkage::ui
