@@ -9,6 +9,15 @@
 
 namespace linkage::ui::test {
 
+// The window most tests start from: 1200 x 800, `example` open, shown and laid out.
+inline bool showExample(MainWindow& w, const char* example) {
+  w.resize(1200, 800);
+  if (!w.openExample(example)) return false;
+  w.show();
+  QApplication::processEvents();
+  return true;
+}
+
 struct Draw {
   MainWindow& w;
   QPoint at(double x, double y) const { return w.canvas()->mapFromScene(QPointF(x, y)); }

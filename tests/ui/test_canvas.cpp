@@ -15,6 +15,7 @@
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
 #include "document/document.h"
+#include "drawing.h"
 #include "linkage/io/model_lookup.h"
 #include "window/main_window.h"
 
@@ -266,10 +267,7 @@ TEST(Canvas, AccelerationsOnlyWhileShown) {
 // raster engine took 0.4 s a paint on its slow path; the random-input test found it).
 TEST(Canvas, APlateFarLargerThanTheViewIsDrawnWhereItIs) {
   MainWindow w;
-  w.resize(1200, 800);
-  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
-  w.show();
-  QApplication::processEvents();
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
   CanvasView* v = w.canvas();
   v->setZoom(4);
   Document* doc = w.document();
@@ -302,10 +300,7 @@ TEST(Canvas, APlateFarLargerThanTheViewIsDrawnWhereItIs) {
 // ground slot whose length overflowed to infinity once hatched it forever).
 TEST(Canvas, GeometryTheSolverRefusesIsNotDrawnAndSaysWhy) {
   MainWindow w;
-  w.resize(1200, 800);
-  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
-  w.show();
-  QApplication::processEvents();
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
   Document* doc = w.document();
   Mechanism m = doc->design();
   m.addSlot(m.ground()->id, "far", Vec2(-1e300, 0), Vec2(1e300, 1e300));

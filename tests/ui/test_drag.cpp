@@ -19,10 +19,7 @@ struct FourBarWindow {
   test::Draw d{w};
   Document* doc;
   FourBarWindow() {
-    w.resize(1200, 800);
-    EXPECT_TRUE(w.openExample("four-bar-crank-rocker"));
-    w.show();
-    QApplication::processEvents();
+    EXPECT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
     w.canvas()->setZoom(5);
     w.canvas()->centerOn(30, 30);
     doc = w.document();

@@ -209,10 +209,7 @@ void runMonkey(const char* example, unsigned seed, int steps) {
   closer.start(50);
 
   Monkey k(seed);
-  k.w.resize(1200, 800);
-  ASSERT_TRUE(k.w.openExample(example));
-  k.w.show();
-  QApplication::processEvents();
+  ASSERT_TRUE(test::showExample(k.w, example));
   k.w.canvas()->setZoom(4);
   k.w.canvas()->centerOn(0, -20);
   Document* doc = k.w.document();

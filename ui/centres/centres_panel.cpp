@@ -172,13 +172,9 @@ void CentresPanel::fillTable(const InstantCentres& ics) {
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < 6; ++c) table_->setItem(r, c, new QTableWidgetItem);
   }
-  // Sized again when the rows say other things (bodies renamed, added), not on every edit: a
-  // design dragged with Ctrl is an edit a frame.
-  QString rows;
-  for (const InstantCentre& c : ics.centres)
-    rows +=
-        bodyName(*doc_, ics, c.i) + QLatin1Char('-') + bodyName(*doc_, ics, c.j) + QLatin1Char(';');
-  const bool fresh = rows != sizedFor_;
+  // Sized again when the rows name other centres or bodies (the first two columns change), not
+  // on every edit: a design dragged with Ctrl is an edit a frame.
+  bool relabelled = false;
   for (int r = 0; r < n; ++r) {
     const InstantCentre& c = ics.centres[r];
     const bool inf = c.atInfinity();
@@ -199,14 +195,16 @@ void CentresPanel::fillTable(const InstantCentres& ics) {
                   .arg(c.lines[0].k ? QString::number(c.lines[0].k) : tr("slot"))
             : QString::fromUtf8(toString(c.status))};
     for (int k = 0; k < 6; ++k)
-      if (table_->item(r, k)->text() != cells[k]) table_->item(r, k)->setText(cells[k]);
+      if (table_->item(r, k)->text() != cells[k]) {
+        table_->item(r, k)->setText(cells[k]);
+        relabelled = relabelled || k < 2;
+      }
   }
-  if (fresh) {
+  if (relabelled) {
     table_->resizeColumnsToContents();
     // Room for coordinates that grow while the mechanism moves (a centre far away).
     const int wide = table_->fontMetrics().horizontalAdvance(QStringLiteral("-00000.000  "));
     for (int c : {2, 3}) table_->setColumnWidth(c, std::max(table_->columnWidth(c), wide));
-    sizedFor_ = rows;
   }
 }
 

@@ -57,7 +57,6 @@ class CentresPanel : public QWidget {
   QLineEdit* via_;
   QTextBrowser* steps_;
   std::optional<VelocityChain> chain_;
-  QString sizedFor_;         // the rows' bodies when the columns were sized
   QStringList pointLabels_;  // the choices of point_
   bool choseNone_ = false;
   bool pending_ = false;
