@@ -5,8 +5,8 @@
 #include <string>
 
 #include "cli_common.h"
-#include "linkage/io/motion_table.h"
 #include "linkage/io/numbers.h"
+#include "linkage/tables/motion_table.h"
 
 namespace linkage::cli {
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli_common.h"
+#include "linkage/elements.h"
 #include "linkage/instant_centres.h"
 #include "linkage/io/numbers.h"
 #include "linkage/velocity_chain.h"
@@ -119,7 +120,7 @@ std::string jsonCentreValue(const Eigen::Vector3d& h, bool determined) {
 }
 
 std::string jsonLine(const Mechanism& m, const InstantCentre& c, const CentreLine& l) {
-  if (l.k == 0) return "{\"joint\": " + jsonString(m.jointLabel(l.joint)) + "}";
+  if (l.k == 0) return "{\"joint\": " + jsonString(jointLabel(m, l.joint)) + "}";
   return "{\"through\": [[" + std::to_string(std::min(c.i, l.k)) + ", " +
          std::to_string(std::max(c.i, l.k)) + "], [" + std::to_string(std::min(c.j, l.k)) + ", " +
          std::to_string(std::max(c.j, l.k)) + "]]}";
@@ -142,7 +143,7 @@ std::string json(const Mechanism& m, const InstantCentres& ics, double angle) {
          ", \"body_j\": " + jsonString(bodyName(m, c.bodyJ)) + ", \"status\": \"" +
          toString(c.status) + "\", " + jsonCentreValue(c.h, c.determined);
     if (c.status == CentreStatus::Primary && c.joint && !c.lines[0].joint)
-      s += ", \"joint\": " + jsonString(m.jointLabel(c.joint));
+      s += ", \"joint\": " + jsonString(jointLabel(m, c.joint));
     if (c.status == CentreStatus::Kennedy || c.lines[0].joint) {
       s += ", \"lines\": [" + jsonLine(m, c, c.lines[0]) + ", " + jsonLine(m, c, c.lines[1]) + "]";
       if (c.status == CentreStatus::Kennedy) s += ", \"round\": " + std::to_string(c.round);

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli_common.h"
+#include "linkage/elements.h"
 #include "linkage/grashof.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
@@ -64,9 +65,9 @@ int info(int argc, char** argv) {
   if (!m) return kBadInput;
   std::cout << "name: " << m->name << "\n";
   std::cout << "bodies: " << m->bodies.size() << ", joints: " << m->joints.size() << "\n";
-  for (const Joint& j : m->joints) std::cout << "  " << m->jointLabel(j.id) << "\n";
+  for (const Joint& j : m->joints) std::cout << "  " << jointLabel(*m, j.id) << "\n";
   if (m->driver)
-    std::cout << "driver: " << m->jointLabel(m->driver->joint) << " at "
+    std::cout << "driver: " << jointLabel(*m, m->driver->joint) << " at "
               << formatNumber(m->driver->rpm, 6) << " rpm "
               << (m->driver->direction == Direction::Cw ? "cw" : "ccw") << "\n";
   else
@@ -82,7 +83,7 @@ int info(int argc, char** argv) {
               << "\n";
     std::cout << "degrees of freedom: " << s.mobility << " (Gruebler count " << s.gruebler
               << ", rank " << s.rank << ")\n";
-    for (JointId j : s.redundantJoints) std::cout << "redundant: " << m->jointLabel(j) << "\n";
+    for (JointId j : s.redundantJoints) std::cout << "redundant: " << jointLabel(*m, j) << "\n";
   }
   if (e == kOk)
     std::cout << "assembly: moved up to " << formatNumber(k.assembly().maxMove, 6) << " mm\n";

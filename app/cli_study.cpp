@@ -6,8 +6,8 @@
 #include "cli_common.h"
 #include "design_options.h"
 #include "linkage/io/numbers.h"
-#include "linkage/io/study_table.h"
 #include "linkage/study.h"
+#include "linkage/tables/study_table.h"
 
 namespace linkage::cli {
 

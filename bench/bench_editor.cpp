@@ -10,9 +10,9 @@
 #include <string>
 
 #include "bench_common.h"
+#include "kinematics/kinematics_state.h"
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
-#include "solve/kinematics_state.h"
 
 namespace {
 

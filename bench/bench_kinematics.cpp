@@ -10,8 +10,8 @@
 #include <string>
 
 #include "bench_common.h"
+#include "kinematics/kinematics_state.h"
 #include "linkage/kinematics.h"
-#include "solve/kinematics_state.h"
 
 namespace {
 

@@ -7,9 +7,9 @@
 
 #include <climits>
 
+#include "kinematics/kinematics_state.h"
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
-#include "solve/kinematics_state.h"
 
 namespace {
 

@@ -24,6 +24,13 @@ const Drawing::Body& bodyNamed(const Drawing& d, const std::string& name) {
   throw std::runtime_error("no body " + name);
 }
 
+std::vector<JointSymbol> symbols(const Drawing& d, JointType t) {
+  std::vector<JointSymbol> out;
+  for (const JointSymbol& s : d.joints)
+    if (s.type == t) out.push_back(s);
+  return out;
+}
+
 TEST(Drawing, WanzerShapesAreTheTextbooks) {
   Kinematics k;
   ASSERT_TRUE(k.load(example("wanzer-inversion-2")).ok());
@@ -37,8 +44,9 @@ TEST(Drawing, WanzerShapesAreTheTextbooks) {
   EXPECT_EQ(bodyNamed(d, "triangle").outline.size(), 3u);
   for (const char* block : {"slider4", "slider5", "needlebar"})
     EXPECT_EQ(bodyNamed(d, block).shape, Drawing::Shape::Block) << block;
-  EXPECT_EQ(d.pins.size(), 4u);  // disk, and the triangle to each block
-  EXPECT_EQ(d.blocks.size(), 3u);
+  EXPECT_EQ(symbols(d, JointType::Pin).size(), 4u);  // disk, and the triangle to each block
+  EXPECT_EQ(symbols(d, JointType::Slider).size(), 3u);
+  EXPECT_EQ(d.joints.size(), k.mechanism().joints.size());
   EXPECT_EQ(d.channels.size(), 3u);
   ASSERT_EQ(d.drivers.size(), 1u);
   EXPECT_FALSE(d.drivers[0].ccw);
@@ -54,7 +62,7 @@ TEST(Drawing, FourBarIsBarsWithTwoGroundPivots) {
   EXPECT_EQ(bodyNamed(d, "crank").shape, Drawing::Shape::Bar);
   EXPECT_EQ(bodyNamed(d, "rocker").shape, Drawing::Shape::Bar);
   int pivots = 0;
-  for (const Drawing::Pin& p : d.pins) pivots += p.groundPivot;
+  for (const JointSymbol& p : symbols(d, JointType::Pin)) pivots += p.groundPivot;
   EXPECT_EQ(pivots, 2);
 }
 
@@ -77,8 +85,8 @@ TEST(Drawing, EveryPositionIsTheSolversAlongARevolution) {
         ASSERT_TRUE(b);
         EXPECT_LT((b->pose * p.pos - k.position(p.id)).norm(), 1e-9) << name << " " << deg;
       }
-      for (const Drawing::Pin& p : d.pins) EXPECT_EQ(p.at, k.position(m.joint(p.joint)->a));
-      for (const Drawing::Block& b : d.blocks) {
+      for (const JointSymbol& p : d.joints) EXPECT_EQ(p.at, k.position(m.joint(p.joint)->a));
+      for (const JointSymbol& b : symbols(d, JointType::Slider)) {
         EXPECT_EQ(b.at, k.position(m.joint(b.joint)->a));
         const Kinematics::Segment s = k.slotEnds(b.slot);
         EXPECT_LT(std::abs(cross(b.direction, s.p1 - s.p0)), 1e-12 * (s.p1 - s.p0).norm());

@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "examples.h"
+#include "kinematics/kinematics_state.h"
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
-#include "solve/kinematics_state.h"
 
 namespace linkage {
 namespace {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "linkage/elements.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
@@ -166,14 +167,14 @@ TEST(Gaps, ALoopTooShortReportsEachJointsGapWithItsId) {
   std::vector<JointId> ids;
   for (const JointGap& gap : s.gaps) {
     ids.push_back(gap.joint);
-    EXPECT_NEAR(gap.gap, 0.75, 1e-9) << m.jointLabel(gap.joint);
+    EXPECT_NEAR(gap.gap, 0.75, 1e-9) << jointLabel(m, gap.joint);
   }
   std::sort(ids.begin(), ids.end());
   EXPECT_EQ(ids, (std::vector<JointId>{drive, a, b, o4}));
   // The message names the worst (first) gap's joint; joints lists them all.
   EXPECT_EQ(s.joints.size(), 4u);
   EXPECT_EQ(s.joints[0], s.gaps[0].joint);
-  EXPECT_NE(s.message.find(m.jointLabel(s.gaps[0].joint)), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find(jointLabel(m, s.gaps[0].joint)), std::string::npos) << s.message;
 }
 
 TEST(Gaps, AConflictingRedundantJointReportsItsGap) {

@@ -8,6 +8,7 @@
 
 #include "examples.h"
 #include "four_bar_reference.h"
+#include "linkage/elements.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
@@ -260,13 +261,13 @@ TEST(Flip, TheWanzerTriangleGoesToTheOtherRootOfItsCoreGroup) {
     ASSERT_TRUE(k.moveTo(deg).ok()) << deg;
     for (const Joint& j : m.joints) {
       if (j.type == JointType::Pin) {
-        EXPECT_LT((k.position(j.a) - k.position(j.b)).norm(), 1e-10 * L) << m.jointLabel(j.id);
+        EXPECT_LT((k.position(j.a) - k.position(j.b)).norm(), 1e-10 * L) << jointLabel(m, j.id);
       } else {
         const Kinematics::Segment slot = k.slotEnds(j.slot);
         const Vec2 d = (slot.p1 - slot.p0).normalized();
-        EXPECT_LT(std::abs(cross(d, k.position(j.a) - slot.p0)), 1e-10 * L) << m.jointLabel(j.id);
+        EXPECT_LT(std::abs(cross(d, k.position(j.a) - slot.p0)), 1e-10 * L) << jointLabel(m, j.id);
         const BodyId block = m.point(j.a)->body, slotBody = m.slot(j.slot)->body;
-        EXPECT_NEAR(k.bodyAngle(block), k.bodyAngle(slotBody), 1e-12) << m.jointLabel(j.id);
+        EXPECT_NEAR(k.bodyAngle(block), k.bodyAngle(slotBody), 1e-12) << jointLabel(m, j.id);
       }
     }
   }

@@ -67,12 +67,14 @@ TEST(AssurGroups, TheNeedleMechanismIsTheGroupsOfThePaper) {
 }
 
 TEST(AssurGroups, TriadsSlotsAndUnreachedBodies) {
-  // Wanzer: the triangle and its three blocks are one class-III group of four bodies.
+  // Wanzer: the triangle and its three blocks are one class-III group of four bodies, the
+  // triangle (its core) first.
   Mechanism w = example("wanzer-inversion-2");
   AssurDecomposition d = decomposeAssur(w);
   ASSERT_EQ(d.groups.size(), 2u);
-  EXPECT_EQ(d.groups[1].kind, AssurGroup::Kind::Other);
-  EXPECT_EQ(d.groups[1].bodies.size(), 4u);
+  EXPECT_EQ(d.groups[1].kind, AssurGroup::Kind::Triad);
+  ASSERT_EQ(d.groups[1].bodies.size(), 4u);
+  EXPECT_EQ(d.groups[1].bodies[0], w.bodyNamed("triangle")->id);
   EXPECT_TRUE(d.unresolved.empty());
   // A rod whose end runs in a ground slot: RP.
   test::SliderCrank s = test::sliderCrank(15, 50, 5, 30, Direction::Ccw, 60, true);

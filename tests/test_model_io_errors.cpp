@@ -150,9 +150,9 @@ TEST(ModelFileErrors, PointsAndSlots) {
             "bodies[1].slots.B: zero-length slot");
   EXPECT_EQ(refusedEdit("[[10, -31], [10, 31]]", "[[1e6, -31], [1e6, -31.0000000000001]]"),
             "bodies[1].slots.B: zero-length slot");
-  EXPECT_EQ(
-      refusedEdit("[[10, -31], [10, 31]]", "[[10, -31], 5]"),
-      "bodies[1].slots.B: expected [[x0, y0], [x1, y1]] with finite numbers, got [[10, -31], 5]");
+  EXPECT_EQ(refusedEdit("[[10, -31], [10, 31]]", "[[10, -31], 5]"),
+            "bodies[1].slots.B: expected [[x0, y0], [x1, y1]] (or an arc [[x0, y0], [xm, ym], [x1, "
+            "y1]]) with finite numbers, got [[10, -31], 5]");
   // Tiny but real: well above rounding for coordinates this size.
   EXPECT_TRUE(parseMechanism(replaceOnce(kValid, "[[10, -31], [10, 31]]", "[[0, 0], [0, 1e-9]]"))
                   .mechanism);
@@ -172,7 +172,8 @@ TEST(ModelFileErrors, ExactlyOneGround) {
 
 TEST(ModelFileErrors, JointReferences) {
   EXPECT_EQ(refusedEdit(R"("type": "slider")", R"("type": "hinge")"),
-            "joints[1].type: expected \"pin\", \"slider\" or \"pin-in-slot\", got \"hinge\"");
+            "joints[1].type: expected \"pin\", \"slider\", \"pin-in-slot\" or \"gear\", got "
+            "\"hinge\"");
   EXPECT_EQ(refusedEdit(R"("a": "ground.A")", R"("a": "X.A")"), "joints[0].a: no body \"X\"");
   EXPECT_EQ(refusedEdit(R"("b": "disk.A")", R"("b": "disk.Q")"),
             "joints[0].b: no point \"Q\" on body \"disk\"");

@@ -7,13 +7,13 @@
 #include <climits>
 #include <random>
 
-#include "analysis/independent_rows.h"
+#include "elements/body_view.h"
+#include "kinematics/kinematics_state.h"
 #include "linkage/kinematics.h"
 #include "mechanisms.h"
-#include "solve/body_view.h"
-#include "solve/dense_lu.h"
-#include "solve/kinematics_state.h"
-#include "solve/sparse_lu.h"
+#include "structure/independent_rows.h"
+#include "system/dense_lu.h"
+#include "system/sparse_lu.h"
 
 namespace linkage {
 namespace {

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "elements/guide.h"
+
 namespace linkage {
 
 namespace {
@@ -33,9 +35,19 @@ std::vector<Vec2> convexHull(std::vector<Vec2> p) {
   return h;
 }
 
+// Whether the points and the slot a joint's kind reads are in the mechanism (a design being
+// drawn is not checked).
+bool resolves(const Mechanism& m, const Joint& j) {
+  const ElementKind& k = kindOf(j);
+  return m.contains(j.a) && (!k.reads(JointField::B) || m.contains(j.b)) &&
+         (!k.reads(JointField::Slot) || m.contains(j.slot));
+}
+
+// Drawn as the block of a prismatic joint it is the point of.
 bool slidesIn(const Mechanism& m, const Point& p) {
-  return std::any_of(m.joints.begin(), m.joints.end(),
-                     [&](const Joint& j) { return j.type == JointType::Slider && j.a == p.id; });
+  return std::any_of(m.joints.begin(), m.joints.end(), [&](const Joint& j) {
+    return kindOf(j).role == Role::Prismatic && j.a == p.id;
+  });
 }
 
 // A slotted disk: every slot end at one distance from one of the body's points (the slots are
@@ -83,6 +95,7 @@ Drawing::Body describeBody(const Mechanism& m, const Body& b, int number) {
     if (s.body == b.id) {
       geometry.push_back(s.p0);
       geometry.push_back(s.p1);
+      if (s.mid) geometry.push_back(*s.mid);
       ++slots;
     }
   if (b.ground) {
@@ -145,12 +158,14 @@ void placeCentres(Drawing& d, const Kinematics& k, const InstantCentres& ics) {
         line.through[0] = homogeneous(ics, c.i, l.k);
         line.through[1] = homogeneous(ics, l.k, c.j);
       } else if (const Joint* j = m.joint(l.joint)) {
-        // A pin-in-slot's own line: the normal to the slot through the pin.
-        const Vec2 pin = k.position(j->a);
-        const Kinematics::Segment s = k.slotEnds(j->slot);
-        const Vec2 n = perp(s.p1 - s.p0).normalized();
-        line.through[0] = Eigen::Vector3d(pin.x(), pin.y(), 1);
-        line.through[1] = Eigen::Vector3d(n.x(), n.y(), 0);
+        // A joint's own line (a pin in a slot: the normal to the slot through the pin).
+        struct At : Pose {
+          const Kinematics& k;
+          explicit At(const Kinematics& kin) : k(kin) {}
+          Vec2 point(PointId p) const override { return k.position(p); }
+          Transform body(BodyId b) const override { return k.bodyTransform(b); }
+        } pose(k);
+        centreLineAt(kindOf(*j).centre(m, *j), pose, line.through);
       }
       out.lines.push_back(line);
     }
@@ -159,8 +174,8 @@ void placeCentres(Drawing& d, const Kinematics& k, const InstantCentres& ics) {
 
 // Puts every part where `at` says: at(PointId) a point's position, ends(SlotId) a slot's
 // ends, pose(BodyId) a body's transform.
-template <class At, class Ends, class Pose>
-void place(Drawing& d, const Mechanism& m, At at, Ends ends, Pose pose, double crankDeg) {
+template <class At_, class Ends, class Pose_>
+void place(Drawing& d, const Mechanism& m, At_ at, Ends ends, Pose_ pose, double crankDeg) {
   bool first = true;
   for (Drawing::Body& b : d.bodies) {
     b.pose = pose(b.id);
@@ -173,21 +188,35 @@ void place(Drawing& d, const Mechanism& m, At at, Ends ends, Pose pose, double c
         }
     }
   }
-  for (Drawing::Pin& p : d.pins) {
-    p.at = at(m.joint(p.joint)->a);
-    extend(d, p.at, first);
+  struct At : Pose {
+    const At_& at_;
+    const Pose_& pose_;
+    At(const At_& a, const Pose_& p) : at_(a), pose_(p) {}
+    Vec2 point(PointId p) const override { return at_(p); }
+    Transform body(BodyId b) const override { return pose_(b); }
+  } poseView(at, pose);
+  for (size_t i = 0; i < d.joints.size(); ++i) {
+    const Joint& j = m.joints[d.jointIndex[i]];
+    kindOf(j).place(m, j, poseView, d.joints[i]);
+    extend(d, d.joints[i].at, first);
   }
   for (Drawing::Channel& c : d.channels) {
     std::tie(c.p0, c.p1) = ends(c.slot);
     extend(d, c.p0, first);
     extend(d, c.p1, first);
+    if (!c.arc) continue;
+    const Transform T = pose(c.body);
+    const Slot* s = m.slot(c.slot);
+    const std::optional<Guide> g = s ? guideOf(*s) : std::nullopt;
+    if (!g) continue;
+    c.centre = T * g->centre;
+    c.radius = g->radius;
+    c.a0 = g->a0 + T.R.angle();
+    c.sweep = g->sweep;
+    extend(d,
+           c.centre + c.radius * Vec2(std::cos(c.a0 + c.sweep / 2), std::sin(c.a0 + c.sweep / 2)),
+           first);
   }
-  for (Drawing::Block& b : d.blocks) {
-    b.at = at(m.joint(b.joint)->a);
-    const auto [p0, p1] = ends(b.slot);
-    b.direction = (p1 - p0).normalized();
-  }
-  for (Drawing::SlotPin& p : d.slotPins) p.at = at(m.joint(p.joint)->a);
   for (Drawing::Driver& r : d.drivers) {
     r.at = at(m.joint(r.joint)->a);
     r.crankDeg = crankDeg;
@@ -209,33 +238,30 @@ Drawing describeShapes(const Mechanism& m) {
   if (const Body* g = m.ground()) d.bodies.push_back(describeBody(m, *g, 1));
   for (const Body& b : m.bodies)
     if (!b.ground) d.bodies.push_back(describeBody(m, b, numberOf(b.id)));
-  const BodyId ground = m.ground() ? m.ground()->id : BodyId{};
-  for (const Joint& j : m.joints) {
-    const Point* a = m.point(j.a);
-    if (!a) continue;
-    if (j.type == JointType::Pin) {
-      const Point* b = m.point(j.b);
-      Drawing::Pin p;
-      p.joint = j.id;
-      p.a = a->body;
-      p.b = b ? b->body : BodyId{};
-      p.groundPivot = p.a == ground || p.b == ground;
-      p.driver = m.driver && m.driver->joint == j.id;
-      d.pins.push_back(p);
-      if (p.driver) {
-        Drawing::Driver r;
-        r.joint = j.id;
-        r.crank = p.b;
-        r.ccw = m.driver->direction == Direction::Ccw;
-        d.drivers.push_back(r);
-      }
-    } else if (j.type == JointType::Slider) {
-      if (m.contains(j.slot)) d.blocks.push_back(Drawing::Block{j.id, a->body, j.slot});
-    } else if (m.contains(j.slot)) {
-      d.slotPins.push_back(Drawing::SlotPin{j.id, j.slot});
+  for (size_t i = 0; i < m.joints.size(); ++i) {
+    const Joint& j = m.joints[i];
+    if (!resolves(m, j)) continue;
+    JointSymbol sym;
+    sym.joint = j.id;
+    sym.type = j.type;
+    kindOf(j).symbol(m, j, sym);
+    d.joints.push_back(sym);
+    d.jointIndex.push_back(static_cast<int>(i));
+    if (m.driver && m.driver->joint == j.id) {
+      Drawing::Driver r;
+      r.joint = j.id;
+      r.crank = sym.bodies[1];
+      r.ccw = m.driver->direction == Direction::Ccw;
+      d.drivers.push_back(r);
     }
   }
-  for (const Slot& s : m.slots) d.channels.push_back(Drawing::Channel{s.id, s.body});
+  for (const Slot& s : m.slots) {
+    Drawing::Channel c;
+    c.slot = s.id;
+    c.body = s.body;
+    c.arc = s.arc() && guideOf(s).has_value();
+    d.channels.push_back(c);
+  }
   for (PointId p : m.outputs)
     if (m.contains(p)) d.outputs.push_back(Drawing::Output{p, m.pointLabel(p)});
   return d;

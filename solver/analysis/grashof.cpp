@@ -6,6 +6,7 @@
 #include <set>
 
 #include "analysis/assur_groups.h"
+#include "linkage/elements.h"
 
 namespace linkage {
 
@@ -55,7 +56,7 @@ std::vector<Pin> pins(const Mechanism& m) {
   std::vector<Pin> out;
   for (size_t i = 0; i < m.joints.size(); ++i) {
     const Joint& j = m.joints[i];
-    if (j.type != JointType::Pin) continue;
+    if (kindOf(j).role != Role::Revolute) continue;
     const Point *a = m.point(j.a), *b = m.point(j.b);
     if (!a || !b || a->body == b->body) continue;
     out.push_back({j.id, static_cast<int>(i), a->body, b->body, a->pos, b->pos});

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "joints/registry.h"
-#include "solve/kinematics_state.h"
+#include "kinematics/kinematics_state.h"
+#include "linkage/elements.h"
 
 namespace linkage {
 
@@ -124,6 +124,36 @@ int InstantCentreSolver::pair(int a, int b) const {
   return a * n_ - a * (a + 1) / 2 + (b - a - 1);
 }
 
+// What each joint says about the centre of the two bodies it joins (its kind's rule), with its
+// points and direction in body frames, and the pair it is about.
+std::vector<std::pair<int, InstantCentreSolver::Primary>> InstantCentreSolver::primaries(
+    const Mechanism& m, const System& sys) const {
+  std::vector<std::pair<int, Primary>> found;
+  auto local = [&](BodyId b, const Vec2& sketch, int& index) {
+    index = sys.bodyIndex(b);
+    return index >= 0 ? Vec2(sketch - sys.frameOrigin[index]) : sketch;
+  };
+  for (size_t ji = 0; ji < m.joints.size(); ++ji) {
+    const Joint& j = m.joints[ji];
+    const CentreData c = kindOf(j).centre(m, j);
+    Primary p;
+    p.rule = c.rule;
+    p.joint = static_cast<int>(ji);
+    for (int k = 0; k < 2; ++k)
+      if (c.pBody[k]) p.p[k] = local(c.pBody[k], c.p[k], p.pBody[k]);
+    if (c.nBody) {
+      p.nBody = sys.bodyIndex(c.nBody);
+      p.n = c.n;  // bodies are at angle 0 as drawn
+    }
+    p.ratio = c.ratio;
+    const int ta = textbookOf_[sys.bodyIndex(c.bodies[0]) + 1];
+    const int tb = textbookOf_[sys.bodyIndex(c.bodies[1]) + 1];
+    if (ta == tb) continue;
+    found.emplace_back(pair(ta, tb), p);
+  }
+  return found;
+}
+
 Status InstantCentreSolver::prepare(const Kinematics& k) {
   out_ = InstantCentres{};
   n_ = 0;
@@ -156,33 +186,7 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
     lo = lo.cwiseMin(s.p0).cwiseMin(s.p1), hi = hi.cwiseMax(s.p0).cwiseMax(s.p1);
   centre_ = lo.allFinite() && hi.allFinite() ? Vec2((lo + hi) / 2) : Vec2::Zero();
 
-  // What each joint says about the centre of the two bodies it joins.
-  std::vector<std::pair<int, Primary>> found;
-  for (size_t ji = 0; ji < m.joints.size(); ++ji) {
-    const Joint& j = m.joints[ji];
-    const PointLocation* a = sys.point(j.a);
-    if (!a) continue;  // compile() refuses these; nothing to say about them here
-    Primary p;
-    p.joint = static_cast<int>(ji);
-    p.body = a->body;
-    p.s = a->s;
-    int other = -1;
-    const JointKind& kind = jointKind(j.type);
-    p.rule = kind.centre;
-    if (kind.onSlot) {
-      const Slot* s = m.slot(j.slot);
-      if (!s) continue;
-      p.slotBody = other = sys.bodyIndex(s->body);
-      p.n = perp((s->p1 - s->p0).normalized());  // bodies are at angle 0 as drawn
-    } else {
-      const PointLocation* b = sys.point(j.b);
-      if (!b) continue;
-      other = b->body;
-    }
-    const int ta = textbookOf_[p.body + 1], tb = textbookOf_[other + 1];
-    if (ta == tb) continue;
-    found.emplace_back(pair(ta, tb), p);
-  }
+  std::vector<std::pair<int, Primary>> found = primaries(m, sys);
   std::stable_sort(found.begin(), found.end(),
                    [](const auto& x, const auto& y) { return x.first < y.first; });
   const int pairs = n_ * (n_ - 1) / 2;
@@ -244,6 +248,38 @@ Vec3 InstantCentreSolver::toPublic(const Vec3& h) const {
   return Vec3(p.x(), p.y(), 1.0);
 }
 
+Vec3 InstantCentreSolver::primaryLine(const Primary& pr) const {
+  const Vec3 p = scaled(global(pr.pBody[0], pr.p[0]));
+  if (pr.rule == CentreRule::LineThrough) return p.cross(scaled(global(pr.pBody[1], pr.p[1])));
+  const Vec2 n = turn(pr.nBody, pr.n);
+  return p.cross(Vec3(n.x(), n.y(), 0.0));
+}
+
+void InstantCentreSolver::primaryPoint(const Primary& pr, Vec3& h, Vec3& mm, double& err) const {
+  err = 1;
+  if (pr.rule == CentreRule::AtPoint) {
+    const Vec2 x = global(pr.pBody[0], pr.p[0]);
+    h = scaled(x);
+    mm = Vec3(x.x(), x.y(), 1.0);
+  } else if (pr.rule == CentreRule::AtInfinity) {
+    // Relative translation normal to n: the centre at infinity along n.
+    const Vec2 n = turn(pr.nBody, pr.n);
+    h = Vec3(n.x(), n.y(), 0.0);
+    mm = toPublic(h);
+  } else {
+    // Weighted: (A - r B) / (1 - r), about the middle of the drawing in units of L; its error
+    // grows as 1 - r shrinks (the centre runs off to infinity at r = 1).
+    const Vec2 a = global(pr.pBody[0], pr.p[0]), b = global(pr.pBody[1], pr.p[1]);
+    const double r = pr.ratio, z = 1 - r;
+    const Vec2 xy = (a - centre_ - r * (b - centre_)) / L_;
+    const Vec3 raw(xy.x(), xy.y(), z);
+    const double norm = raw.norm();
+    h = raw / norm;
+    mm = toPublic(h);
+    err = (1 + std::abs(r)) / norm;
+  }
+}
+
 void InstantCentreSolver::primaryCentres() {
   for (int p = 0; p < static_cast<int>(work_.size()); ++p) {
     Work& w = work_[p];
@@ -261,10 +297,9 @@ void InstantCentreSolver::primaryCentres() {
     bool fromLines = false;
     for (int e = w.firstPrimary; e < w.firstPrimary + w.primaryCount; ++e) {
       const Primary& pr = primaries_[e];
-      if (pr.rule == CentreRule::OnNormal) {
+      if (pr.rule == CentreRule::LineAlong || pr.rule == CentreRule::LineThrough) {
         // Only a line: the centre is on the normal to the slot through the pin.
-        const Vec2 n = turn(pr.slotBody, pr.n);
-        const Vec3 l = scaled(global(pr.body, pr.s)).cross(Vec3(n.x(), n.y(), 0.0));
+        const Vec3 l = primaryLine(pr);
         const double s = l.norm();
         if (!w.hasLine) {
           w.hasLine = true;
@@ -288,22 +323,14 @@ void InstantCentreSolver::primaryCentres() {
         continue;
       }
       Vec3 h, mm;
-      if (pr.rule == CentreRule::AtPoint) {
-        const Vec2 x = global(pr.body, pr.s);
-        h = scaled(x);
-        mm = Vec3(x.x(), x.y(), 1.0);
-      } else {
-        // A slider: relative translation along the slot, centre at infinity normal to it.
-        const Vec2 n = turn(pr.slotBody, pr.n);
-        h = Vec3(n.x(), n.y(), 0.0);
-        mm = toPublic(h);
-      }
+      double err = 1;
+      primaryPoint(pr, h, mm, err);
       if (points == 0 || fromLines) {
         // The first point (a joint's own point replaces an intersection of two slot normals).
         w.h = h;
         w.mm = mm;
         w.exact = true;
-        w.err = 1;
+        w.err = err;
         c.joint = jointIds_[pr.joint];
         c.lines = {};
         points = 1;

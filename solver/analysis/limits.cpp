@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "analysis/measure_track.h"
+#include "linkage/elements.h"
 
 namespace linkage {
 
@@ -40,16 +41,16 @@ Vec2 defaultDirection(const Mechanism& m, PointId p) {
   const Body* g = m.ground();
   if (!pt || !g) return Vec2(0, 1);
   for (const Joint& j : m.joints) {
-    if (j.type == JointType::Pin) continue;
+    const Role role = kindOf(j).role;
+    if (role != Role::Prismatic && role != Role::PointOnCurve) continue;
     const Slot* s = m.slot(j.slot);
     const Point* a = m.point(j.a);
     if (!s || !a) continue;
     // The point itself in a ground slot, or its body carried along one by a slider (the block
     // in a ground slot, or the ground's point in the body's slot).
     const bool own = j.a == p && s->body == g->id;
-    const bool carried =
-        j.type == JointType::Slider &&
-        ((a->body == pt->body && s->body == g->id) || (s->body == pt->body && a->body == g->id));
+    const bool carried = role == Role::Prismatic && ((a->body == pt->body && s->body == g->id) ||
+                                                     (s->body == pt->body && a->body == g->id));
     if (!own && !carried) continue;
     Vec2 d = (s->p1 - s->p0).normalized();
     if (std::abs(d.y()) >= std::abs(d.x()) ? d.y() < 0 : d.x() < 0) d = -d;

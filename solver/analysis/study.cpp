@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "analysis/study_variant.h"
+#include "linkage/elements.h"
 
 namespace linkage {
 
@@ -34,7 +35,7 @@ std::vector<PointId> movedTogether(const Mechanism& m, PointId p) {
   for (size_t i = 0; i < found.size(); ++i) {
     const Point* at = m.point(found[i]);
     for (const Joint& j : m.joints) {
-      if (j.type != JointType::Pin || (j.a != found[i] && j.b != found[i])) continue;
+      if (kindOf(j).role != Role::Revolute || (j.a != found[i] && j.b != found[i])) continue;
       const PointId other = j.a == found[i] ? j.b : j.a;
       const Point* o = m.point(other);
       if (!o || (o->pos - at->pos).norm() > tol) continue;

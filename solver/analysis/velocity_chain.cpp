@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "linkage/elements.h"
+
 namespace linkage {
 
 namespace {
@@ -141,7 +143,7 @@ VelocityChain velocityChain(const Kinematics& k, const InstantCentres& ics, Poin
 
   // The crank: the driven body pivoted to the ground, at the driver's speed and direction.
   const Joint* dj = m.driver ? m.joint(m.driver->joint) : nullptr;
-  if (!dj || dj->type != JointType::Pin || !m.point(dj->a) || !m.point(dj->b)) {
+  if (!dj || kindOf(*dj).role != Role::Revolute || !m.point(dj->a) || !m.point(dj->b)) {
     ch.status = fail(StatusCode::BadModel, "the mechanism has no driver to start the chain from");
     return ch;
   }
@@ -158,7 +160,7 @@ VelocityChain velocityChain(const Kinematics& k, const InstantCentres& ics, Poin
     ch.crankMotion.omega = -sigma * k.omega();
   } else {
     ch.status = fail(StatusCode::BadModel,
-                     "the driver at " + m.jointLabel(dj->id) +
+                     "the driver at " + jointLabel(m, dj->id) +
                          " turns one moving body relative to another: the chain starts from a "
                          "crank pivoted to the ground");
     return ch;

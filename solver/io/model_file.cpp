@@ -9,11 +9,13 @@
 #include <cstdio>
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "elements/guide.h"
 #include "io/json_tree.h"
-#include "joints/registry.h"
+#include "linkage/elements.h"
 #include "linkage/io/model_file.h"
 
 namespace linkage {
@@ -147,6 +149,9 @@ class Reader {
     if (!joints.is_array())
       refuse("joints", "expected an array of joints, got " + describe(joints));
     for (size_t i = 0; i < joints.size(); ++i) readJoint(joints[i], element("joints", i));
+    // What each kind checks beyond its references (a gear on its carrier's pins), now that
+    // every joint is read.
+    if (std::string why = checkJoints(m_); !why.empty()) throw Refusal{why};
     if (const Json* d = find(root, "driver")) readDriver(*d);
     if (const Json* o = find(root, "outputs")) readOutputs(*o);
     m_.extras = unknownFields(
@@ -235,20 +240,8 @@ class Reader {
       }
       if (const Json* slots = find(b, "slots")) {
         requireObject(*slots, path + ".slots");
-        for (auto it = slots->begin(); it != slots->end(); ++it) {
-          const std::string spath = member(path + ".slots", it.key());
-          checkName(it.key(), spath, "slot");
-          const Json& s = it.value();
-          std::optional<Vec2> p0, p1;
-          if (s.is_array() && s.size() == 2) p0 = asPair(s[0]), p1 = asPair(s[1]);
-          if (!p0 || !p1)
-            refuse(spath, "expected [[x0, y0], [x1, y1]] with finite numbers, got " + describe(s));
-          // Relative to the coordinates' size: two ends that differ only by rounding are one point.
-          double length = std::hypot((*p1 - *p0).x(), (*p1 - *p0).y());
-          double scale = std::max(p0->cwiseAbs().maxCoeff(), p1->cwiseAbs().maxCoeff());
-          if (length == 0 || length < 1e-12 * scale) refuse(spath, "zero-length slot");
-          names.slots[it.key()] = m_.addSlot(id, it.key(), *p0, *p1);
-        }
+        for (auto it = slots->begin(); it != slots->end(); ++it)
+          readSlot(id, it.key(), it.value(), member(path + ".slots", it.key()), names);
       }
     }
     if (grounds.empty()) refuse("bodies", "no body has \"ground\": true; exactly one must");
@@ -260,6 +253,27 @@ class Reader {
       }
       refuse("bodies", "exactly one body may have \"ground\": true, but " + list + " do");
     }
+  }
+
+  // Two points: a straight slot; three: the arc from the first through the second to the third.
+  void readSlot(BodyId body, const std::string& name, const Json& s, const std::string& spath,
+                BodyNames& names) {
+    checkName(name, spath, "slot");
+    std::optional<Vec2> p[3];
+    const size_t n = s.is_array() ? s.size() : 0;
+    if (n == 2 || n == 3)
+      for (size_t k = 0; k < n; ++k) p[k] = asPair(s[k]);
+    if (n < 2 || n > 3 || !p[0] || !p[1] || (n == 3 && !p[2]))
+      refuse(spath,
+             "expected [[x0, y0], [x1, y1]] (or an arc [[x0, y0], [xm, ym], [x1, y1]]) with finite "
+             "numbers, got " +
+                 describe(s));
+    Slot slot{{}, body, name, *p[0], *p[n - 1], std::nullopt};
+    if (n == 3) slot.mid = *p[1];
+    std::string why;
+    if (!guideOf(slot, &why)) refuse(spath, why);
+    names.slots[name] = slot.mid ? m_.addArcSlot(body, name, slot.p0, *slot.mid, slot.p1)
+                                 : m_.addSlot(body, name, slot.p0, slot.p1);
   }
 
   // "body.name" to the body and the name after the dot.
@@ -292,30 +306,70 @@ class Reader {
     return {it->second, body};
   }
 
+  // The fields its kind reads (linkage/elements.h); a field only other kinds read is refused.
   void readJoint(const Json& j, const std::string& path) {
     requireObject(j, path);
     const Json& type = require(j, "type", path);
-    const JointKind* kind = type.is_string() ? jointKindNamed(type.get<std::string>()) : nullptr;
-    if (!kind) refuse(path + ".type", "expected " + jointKindNames() + ", got " + describe(type));
-    auto [a, bodyA] = readPointRef(require(j, "a", path), path + ".a");
-    const BodyNames* other = nullptr;
-    if (!kind->onSlot) {
-      if (find(j, "slot"))
-        refuse(path + ".slot",
-               std::string("a ") + kind->name + " joins points \"a\" and \"b\"; it has no slot");
-      auto [b, bodyB] = readPointRef(require(j, "b", path), path + ".b");
-      m_.addJoint(kind->type, a, b, {});
-      other = bodyB;
-    } else {
-      if (find(j, "b"))
-        refuse(path + ".b", std::string("a ") + kind->name +
-                                " joins point \"a\" to a \"slot\"; it has no point \"b\"");
-      auto [s, bodyS] = readSlotRef(require(j, "slot", path), path + ".slot");
-      m_.addJoint(kind->type, a, {}, s);
-      other = bodyS;
+    const ElementKind* kind =
+        type.is_string() ? elementKindNamed(type.get<std::string>()) : nullptr;
+    if (!kind) refuse(path + ".type", "expected " + elementKindNames() + ", got " + describe(type));
+    for (JointField f : kAllFields)
+      if (!kind->reads(f) && find(j, fieldKey(f)))
+        refuse(path + "." + fieldKey(f),
+               std::string("a ") + kind->name + " " + kind->joins + "; it has no " + noun(f));
+    Joint joint;
+    joint.type = kind->type;
+    const BodyNames* sides[2] = {nullptr, nullptr};
+    for (const FieldSpec& f : kind->fields) {
+      const Json* v =
+          f.required ? &require(j, fieldKey(f.field), path) : find(j, fieldKey(f.field));
+      if (v) readField(joint, f.field, *v, path + "." + fieldKey(f.field), sides);
     }
-    if (bodyA == other) refuse(path, "both sides are on body " + literal(bodyA->name));
-    m_.joints.back().extras = unknownFields(j, {"type", "a", "b", "slot"});
+    if (sides[0] && sides[0] == sides[1])
+      refuse(path, "both sides are on body " + literal(sides[0]->name));
+    joint.extras = unknownFields(j, {"type", "a", "b", "slot", "carrier", "ratio"});
+    m_.addJoint(std::move(joint));
+  }
+
+  static constexpr JointField kAllFields[] = {JointField::A, JointField::B, JointField::Slot,
+                                              JointField::Carrier, JointField::Ratio};
+  static std::string noun(JointField f) {
+    switch (f) {
+      case JointField::A:
+        return "point \"a\"";
+      case JointField::B:
+        return "point \"b\"";
+      case JointField::Slot:
+        return "slot";
+      default:
+        return literal(fieldKey(f));
+    }
+  }
+
+  // One field into the joint; the bodies of what it joins (a, and b or the slot) to `sides`.
+  void readField(Joint& joint, JointField f, const Json& v, const std::string& path,
+                 const BodyNames* sides[2]) {
+    switch (f) {
+      case JointField::A:
+        std::tie(joint.a, sides[0]) = readPointRef(v, path);
+        break;
+      case JointField::B:
+        std::tie(joint.b, sides[1]) = readPointRef(v, path);
+        break;
+      case JointField::Slot:
+        std::tie(joint.slot, sides[1]) = readSlotRef(v, path);
+        break;
+      case JointField::Carrier: {
+        const std::string& name = getString(v, path);
+        auto it = bodies_.find(name);
+        if (it == bodies_.end()) refuse(path, "no body " + literal(name));
+        joint.carrier = it->second.id;
+        break;
+      }
+      case JointField::Ratio:
+        joint.ratio = getNumber(v, path);
+        break;
+    }
   }
 
   void readDriver(const Json& d) {
@@ -331,7 +385,7 @@ class Reader {
                                  ")");
     }
     const Joint& joint = m_.joints[static_cast<size_t>(i)];
-    if (joint.type != JointType::Pin)
+    if (kindOf(joint).role != Role::Revolute)
       refuse("driver.joint", element("joints", static_cast<size_t>(i)) + " is a " +
                                  toString(joint.type) + ", a driver needs a pin");
     driver.joint = joint.id;

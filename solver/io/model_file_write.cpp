@@ -5,7 +5,7 @@
 #include <unordered_map>
 
 #include "io/json_tree.h"
-#include "joints/registry.h"
+#include "linkage/elements.h"
 #include "linkage/io/model_file.h"
 
 namespace linkage {
@@ -124,7 +124,9 @@ Json bodyJson(const Body& b, const BodyContents& contents) {
   j["points"] = std::move(points);
   Json slots = Json::object();
   for (const Slot* s : contents.slots)
-    json_tree::appendMember(slots, s->name, Json::array({pair(s->p0), pair(s->p1)}));
+    json_tree::appendMember(slots, s->name,
+                            s->mid ? Json::array({pair(s->p0), pair(*s->mid), pair(s->p1)})
+                                   : Json::array({pair(s->p0), pair(s->p1)}));
   if (!slots.empty()) j["slots"] = std::move(slots);
   appendExtras(j, b.extras, {"name", "ground", "number", "points", "slots"});
   return j;
@@ -132,8 +134,9 @@ Json bodyJson(const Body& b, const BodyContents& contents) {
 
 // "body.name" for every point and slot at once: Mechanism's own lookups are linear.
 struct Labels {
-  std::unordered_map<std::uint32_t, std::string> points, slots;
+  std::unordered_map<std::uint32_t, std::string> points, slots, bodies;
   explicit Labels(const Mechanism& m) {
+    for (const Body& b : m.bodies) bodies[b.id.value] = b.name;
     std::unordered_map<std::uint32_t, const std::string*> bodyNames;
     for (const Body& b : m.bodies) bodyNames[b.id.value] = &b.name;
     auto label = [&](BodyId b, const std::string& name) {
@@ -151,15 +154,31 @@ struct Labels {
   }
 };
 
+// The fields the joint's kind reads, in its order (an optional body left out when unset).
 Json jointJson(const Labels& labels, const Joint& jt) {
   Json j = Json::object();
   j["type"] = toString(jt.type);
-  j["a"] = Labels::of(labels.points, jt.a.value);
-  if (jointKind(jt.type).onSlot)
-    j["slot"] = Labels::of(labels.slots, jt.slot.value);
-  else
-    j["b"] = Labels::of(labels.points, jt.b.value);
-  appendExtras(j, jt.extras, {"type", "a", "b", "slot"});
+  for (const FieldSpec& f : kindOf(jt).fields) {
+    const char* key = fieldKey(f.field);
+    switch (f.field) {
+      case JointField::A:
+        j[key] = Labels::of(labels.points, jt.a.value);
+        break;
+      case JointField::B:
+        j[key] = Labels::of(labels.points, jt.b.value);
+        break;
+      case JointField::Slot:
+        j[key] = Labels::of(labels.slots, jt.slot.value);
+        break;
+      case JointField::Carrier:
+        if (jt.carrier) j[key] = Labels::of(labels.bodies, jt.carrier.value);
+        break;
+      case JointField::Ratio:
+        j[key] = number(jt.ratio);
+        break;
+    }
+  }
+  appendExtras(j, jt.extras, {"type", "a", "b", "slot", "carrier", "ratio"});
   return j;
 }
 
@@ -262,6 +281,9 @@ std::string compareBody(const Mechanism& ma, const Body& a, const Mechanism& mb,
       return w + ": \"" + sa[i]->name + "\" vs \"" + sb[i]->name + "\"";
     if (auto d = compareVec(sa[i]->p0, sb[i]->p0, w + ".p0"); !d.empty()) return d;
     if (auto d = compareVec(sa[i]->p1, sb[i]->p1, w + ".p1"); !d.empty()) return d;
+    if (sa[i]->arc() != sb[i]->arc()) return w + ": an arc in only one";
+    if (sa[i]->mid)
+      if (auto d = compareVec(*sa[i]->mid, *sb[i]->mid, w + ".mid"); !d.empty()) return d;
   }
   return {};
 }
@@ -285,9 +307,16 @@ std::string mechanismDifference(const Mechanism& a, const Mechanism& b) {
     std::string w = "joints[" + std::to_string(i) + "]";
     if (ja.type != jb.type) return w + ".type differs";
     if (a.pointLabel(ja.a) != b.pointLabel(jb.a)) return w + ".a differs";
-    const bool onSlot = jointKind(ja.type).onSlot;
-    if (!onSlot && a.pointLabel(ja.b) != b.pointLabel(jb.b)) return w + ".b differs";
-    if (onSlot && a.slotLabel(ja.slot) != b.slotLabel(jb.slot)) return w + ".slot differs";
+    const ElementKind& kind = kindOf(ja);
+    if (kind.reads(JointField::B) && a.pointLabel(ja.b) != b.pointLabel(jb.b))
+      return w + ".b differs";
+    if (kind.reads(JointField::Slot) && a.slotLabel(ja.slot) != b.slotLabel(jb.slot))
+      return w + ".slot differs";
+    const Body *ca = a.body(ja.carrier), *cb = b.body(jb.carrier);
+    if (kind.reads(JointField::Carrier) && (ca ? ca->name : "") != (cb ? cb->name : ""))
+      return w + ".carrier differs";
+    if (kind.reads(JointField::Ratio) && ja.ratio != jb.ratio)
+      return w + ".ratio: " + shortest(ja.ratio) + " vs " + shortest(jb.ratio);
     if (auto d = compareExtras(ja.extras, jb.extras, w); !d.empty()) return d;
   }
   if (a.driver.has_value() != b.driver.has_value()) return "driver: present in only one";

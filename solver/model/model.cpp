@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <atomic>
 
-#include "joints/registry.h"
-
 namespace linkage {
 
 namespace {
@@ -65,29 +63,31 @@ SlotId Mechanism::addSlot(BodyId bodyId, std::string name, Vec2 p0, Vec2 p1) {
   return slots.back().id;
 }
 
-JointId Mechanism::addJoint(JointType type, PointId a, PointId b, SlotId s) {
-  Joint j;
+SlotId Mechanism::addArcSlot(BodyId bodyId, std::string name, Vec2 p0, Vec2 mid, Vec2 p1) {
+  slots.push_back(Slot{make<SlotId>(), bodyId, std::move(name), p0, p1, mid});
+  return slots.back().id;
+}
+
+JointId Mechanism::addJoint(Joint j) {
   j.id = make<JointId>();
-  j.type = type;
-  j.a = a;
-  if (jointKind(type).onSlot)
-    j.slot = s;
-  else
-    j.b = b;
   joints.push_back(std::move(j));
   return joints.back().id;
 }
 
 JointId Mechanism::addPin(PointId a, PointId b) {
-  return addJoint(JointType::Pin, a, b, {});
+  return addJoint(Joint{{}, JointType::Pin, a, b, {}, {}, 0, {}});
 }
 
 JointId Mechanism::addSlider(PointId a, SlotId s) {
-  return addJoint(JointType::Slider, a, {}, s);
+  return addJoint(Joint{{}, JointType::Slider, a, {}, s, {}, 0, {}});
 }
 
 JointId Mechanism::addPinInSlot(PointId a, SlotId s) {
-  return addJoint(JointType::PinInSlot, a, {}, s);
+  return addJoint(Joint{{}, JointType::PinInSlot, a, {}, s, {}, 0, {}});
+}
+
+JointId Mechanism::addGear(PointId a, PointId b, double ratio, BodyId carrier) {
+  return addJoint(Joint{{}, JointType::Gear, a, b, {}, carrier, ratio, {}});
 }
 
 Removal Mechanism::remove(const std::vector<BodyId>& bodyIds, const std::vector<PointId>& pointIds,
@@ -108,7 +108,7 @@ Removal Mechanism::remove(const std::vector<BodyId>& bodyIds, const std::vector<
       joints,
       [&](const Joint& j) {
         return listed(jointIds, j.id) || listed(goneP, j.a) || listed(goneP, j.b) ||
-               listed(goneS, j.slot);
+               listed(goneS, j.slot) || listed(bodyIds, j.carrier);
       },
       r.joints);
   take(points, pointGone, r.points);
@@ -205,17 +205,6 @@ int Mechanism::jointIndex(JointId id) const {
   return -1;
 }
 
-std::string Mechanism::jointLabel(JointId id) const {
-  const Joint* j = joint(id);
-  if (!j) return "unknown joint";
-  std::string s = "joints[" + std::to_string(jointIndex(id)) + "] (" + toString(j->type) + " ";
-  if (jointKind(j->type).onSlot)
-    s += pointLabel(j->a) + " in " + slotLabel(j->slot);
-  else
-    s += pointLabel(j->a) + " - " + pointLabel(j->b);
-  return s + ")";
-}
-
 std::optional<PointId> Mechanism::findPoint(const std::string& dotted) const {
   // Body names may themselves contain dots; the point name is what follows the last one.
   size_t dot = dotted.rfind('.');
@@ -225,10 +214,6 @@ std::optional<PointId> Mechanism::findPoint(const std::string& dotted) const {
   const Point* p = pointNamed(b->id, dotted.substr(dot + 1));
   if (!p) return std::nullopt;
   return p->id;
-}
-
-const char* toString(JointType t) {
-  return jointKind(t).name;
 }
 
 bool sameTopology(const Mechanism& a, const Mechanism& b, std::vector<BodyId>& reshaped) {
@@ -250,11 +235,13 @@ bool sameTopology(const Mechanism& a, const Mechanism& b, std::vector<BodyId>& r
   for (size_t i = 0; i < a.slots.size(); ++i) {
     const Slot &p = a.slots[i], &q = b.slots[i];
     if (p.id != q.id || p.body != q.body) return false;
-    if (p.p0 != q.p0 || p.p1 != q.p1) reshape(p.body);
+    if (p.arc() != q.arc()) return false;
+    if (p.p0 != q.p0 || p.p1 != q.p1 || p.mid != q.mid) reshape(p.body);
   }
   for (size_t i = 0; i < a.joints.size(); ++i) {
     const Joint &p = a.joints[i], &q = b.joints[i];
-    if (p.id != q.id || p.type != q.type || p.a != q.a || p.b != q.b || p.slot != q.slot)
+    if (p.id != q.id || p.type != q.type || p.a != q.a || p.b != q.b || p.slot != q.slot ||
+        p.carrier != q.carrier || p.ratio != q.ratio)
       return false;
   }
   if (a.driver &&

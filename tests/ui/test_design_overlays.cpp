@@ -56,7 +56,7 @@ void expectPosesAtLimits(const Document& d, const ExtremePoses& shown, const Lim
       EXPECT_NEAR(b.pose.R.s, t.R.s, 1e-9) << name << " " << b.name;
       EXPECT_LT((b.pose.t - t.t).norm(), 1e-9) << name << " " << b.name;
     }
-    for (const Drawing::Pin& pin : p.drawing.pins)
+    for (const JointSymbol& pin : p.drawing.joints)
       EXPECT_LT((pin.at - k.position(d.design().joint(pin.joint)->a)).norm(), 1e-9) << name;
     if (what.body) {
       EXPECT_NEAR(k.bodyAngle(what.body) / kDeg, l.extremes[i].value, 1e-9) << name;

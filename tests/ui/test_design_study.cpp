@@ -23,7 +23,7 @@
 #include "design/study_runner.h"
 #include "design/study_table_model.h"
 #include "document/document.h"
-#include "linkage/io/study_table.h"
+#include "linkage/tables/study_table.h"
 #include "window/main_window.h"
 
 namespace linkage::ui {

@@ -19,8 +19,8 @@
 #include "export/motion_table_export.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
-#include "linkage/io/motion_table.h"
 #include "linkage/io/numbers.h"
+#include "linkage/tables/motion_table.h"
 #include "plots/plots_panel.h"
 
 namespace linkage::ui {

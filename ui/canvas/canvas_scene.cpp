@@ -4,14 +4,15 @@
 
 #include "canvas/traces.h"
 #include "document/document.h"
+#include "elements/element_ui.h"
+#include "linkage/elements.h"
 
 namespace linkage::ui {
 
 namespace {
 
 // Z order, bottom to top.
-constexpr double kTraceZ = -10, kGroundZ = -5, kBodyZ = 0, kBlockZ = 20, kPinZ = 30, kDriverZ = 35,
-                 kOutputZ = 40;
+constexpr double kTraceZ = -10, kGroundZ = -5, kBodyZ = 0, kDriverZ = 35, kOutputZ = 40;
 
 BodyGeometry geometryOf(const Mechanism& m, const Drawing::Body& b) {
   BodyGeometry g;
@@ -132,9 +133,7 @@ void CanvasScene::clearItems() {
     delete i;
   }
   bodies_.clear();
-  pins_.clear();
-  slotPins_.clear();
-  blocks_.clear();
+  joints_.clear();
   outputs_.clear();
   traces_.clear();
   driver_ = nullptr;
@@ -160,27 +159,13 @@ void CanvasScene::rebuild() {
     addItem(item);
     bodies_.push_back(item);
   }
-  for (const Drawing::Block& b : drawing_.blocks) {
-    auto* item = new BlockItem(&ctx_, b.joint, b.body, number[b.body]);
-    item->setToolTip(bodyItem(b.body) ? bodyItem(b.body)->toolTip() : QString());
-    item->setZValue(kBlockZ);
+  // Each joint as its kind draws it (ui/elements/element_ui.h).
+  for (const JointSymbol& sym : drawing_.joints) {
+    JointItem* item = elementUi(sym.type).item(&ctx_, sym, drawing_);
+    item->setToolTip(QString::fromStdString(jointLabel(m, sym.joint)));
+    item->place(sym);
     addItem(item);
-    blocks_.push_back(item);
-  }
-  for (const Drawing::Pin& p : drawing_.pins) {
-    auto* item = new PinItem(&ctx_, p.joint,
-                             p.groundPivot ? PinItem::Kind::GroundPivot : PinItem::Kind::Pin);
-    item->setToolTip(QString::fromStdString(m.jointLabel(p.joint)));
-    item->setZValue(kPinZ);
-    addItem(item);
-    pins_.push_back(item);
-  }
-  for (const Drawing::SlotPin& p : drawing_.slotPins) {
-    auto* item = new PinItem(&ctx_, p.joint, PinItem::Kind::InSlot);
-    item->setToolTip(QString::fromStdString(m.jointLabel(p.joint)));
-    item->setZValue(kPinZ);
-    addItem(item);
-    slotPins_.push_back(item);
+    joints_.push_back(item);
   }
   for (const Drawing::Driver& d : drawing_.drivers) {
     const QString tip =
@@ -220,10 +205,7 @@ void CanvasScene::updatePose() {
     return;
   }
   for (size_t i = 0; i < bodies_.size(); ++i) bodies_[i]->setPose(drawing_.bodies[i].pose);
-  for (size_t i = 0; i < pins_.size(); ++i) pins_[i]->setAt(drawing_.pins[i].at);
-  for (size_t i = 0; i < slotPins_.size(); ++i) slotPins_[i]->setAt(drawing_.slotPins[i].at);
-  for (size_t i = 0; i < blocks_.size(); ++i)
-    blocks_[i]->setPlacement(drawing_.blocks[i].at, drawing_.blocks[i].direction);
+  for (size_t i = 0; i < joints_.size(); ++i) joints_[i]->place(drawing_.joints[i]);
   if (driver_ && !drawing_.drivers.empty()) driver_->setAt(drawing_.drivers[0].at);
   for (size_t i = 0; i < outputs_.size(); ++i) outputs_[i]->setAt(drawing_.outputs[i].at);
   centres_->setCentres(ics ? drawing_.centres : std::vector<Drawing::Centre>{});
@@ -253,9 +235,7 @@ void CanvasScene::updateFlags() {
     }
     return false;
   };
-  for (PinItem* p : pins_) p->setFlagged(listed(p->joint()));
-  for (PinItem* p : slotPins_) p->setFlagged(listed(p->joint()));
-  for (BlockItem* b : blocks_) b->setFlagged(listed(b->joint()));
+  for (JointItem* j : joints_) j->setFlagged(listed(j->joint()));
   for (BodyItem* b : bodies_) {
     bool named = false;
     for (BodyId x : s.bodies) named = named || x == b->id();

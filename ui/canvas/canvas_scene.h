@@ -57,8 +57,10 @@ class CanvasScene : public QGraphicsScene {
   const Mechanism& shownMechanism() const;
   Vec2 worldOf(PointId p) const;
   Transform poseOf(BodyId b) const;  // sketch -> world as drawn
-  const std::vector<BlockItem*>& blockItems() const { return blocks_; }
-  const std::vector<PinItem*>& pinItems() const { return pins_; }
+  // One item per symbol of the drawing's joints, in their order.
+  const std::vector<JointItem*>& jointItems() const { return joints_; }
+  std::vector<BlockItem*> blockItems() const { return itemsOf<BlockItem>(); }
+  std::vector<PinItem*> pinItems() const { return itemsOf<PinItem>(); }
   const std::vector<OutputItem*>& outputItems() const { return outputs_; }
   // Traced path of each output point (scene coordinates), in the order of the outputs.
   const std::vector<QGraphicsPathItem*>& traceItems() const { return traces_; }
@@ -79,10 +81,16 @@ class CanvasScene : public QGraphicsScene {
   Drawing drawing_;
   QRectF extent_;
   bool solverShown_ = false;
+  template <class T>
+  std::vector<T*> itemsOf() const {
+    std::vector<T*> out;
+    for (JointItem* j : joints_)
+      if (auto* t = dynamic_cast<T*>(j)) out.push_back(t);
+    return out;
+  }
+
   std::vector<BodyItem*> bodies_;
-  std::vector<PinItem*> pins_;
-  std::vector<PinItem*> slotPins_;
-  std::vector<BlockItem*> blocks_;
+  std::vector<JointItem*> joints_;
   std::vector<OutputItem*> outputs_;
   std::vector<QGraphicsPathItem*> traces_;
   DriverItem* driver_ = nullptr;

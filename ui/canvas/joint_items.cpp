@@ -5,19 +5,20 @@
 
 namespace linkage::ui {
 
+void JointItem::setFlagged(bool on) {
+  if (on == flagged_) return;
+  flagged_ = on;
+  update();
+}
+
 PinItem::PinItem(const CanvasContext* ctx, JointId joint, Kind kind)
-    : CanvasItem(ctx), joint_(joint), kind_(kind) {
+    : JointItem(ctx, joint), kind_(kind) {
   setAcceptedMouseButtons(Qt::NoButton);
+  setZValue(kPinZ);
 }
 
 void PinItem::setAt(const Vec2& at) {
   setPos(at.x(), at.y());
-}
-
-void PinItem::setFlagged(bool on) {
-  if (on == flagged_) return;
-  flagged_ = on;
-  update();
 }
 
 QRectF PinItem::boundingRect() const {
@@ -31,7 +32,7 @@ void PinItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
   const CanvasStyle& st = style();
   const double u = px();
   p->setRenderHint(QPainter::Antialiasing);
-  const QColor ink = flagged_ ? st.warning : st.ink;
+  const QColor ink = flagged() ? st.warning : st.ink;
   if (kind_ == Kind::GroundPivot) {
     // A triangle under the pin standing on a hatched base (y is up in the scene).
     const double h = CanvasStyle::pivotSize * u, b = 0.75 * h;
@@ -46,10 +47,10 @@ void PinItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
       p->drawLine(QPointF(x, -h), QPointF(x - 4.5 * u, -h - 5 * u));
   }
   const double r = CanvasStyle::pinRadius * u;
-  p->setPen(cosmetic(ink, flagged_ ? 2.4 : CanvasStyle::outline));
+  p->setPen(cosmetic(ink, flagged() ? 2.4 : CanvasStyle::outline));
   p->setBrush(kind_ == Kind::InSlot ? st.ink : st.paper);
   p->drawEllipse(QPointF(0, 0), r, r);
-  if (flagged_) {
+  if (flagged()) {
     p->setPen(cosmetic(st.warning, 2));
     p->setBrush(Qt::NoBrush);
     p->drawEllipse(QPointF(0, 0), 2.6 * r, 2.6 * r);
@@ -57,19 +58,14 @@ void PinItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
 }
 
 BlockItem::BlockItem(const CanvasContext* ctx, JointId joint, BodyId body, int number)
-    : CanvasItem(ctx), joint_(joint), body_(body), number_(number) {
+    : JointItem(ctx, joint), body_(body), number_(number) {
   setAcceptHoverEvents(true);
+  setZValue(kBlockZ);
 }
 
 void BlockItem::setPlacement(const Vec2& at, const Vec2& direction) {
   setPos(at.x(), at.y());
   setRotation(qRadiansToDegrees(std::atan2(direction.y(), direction.x())));
-}
-
-void BlockItem::setFlagged(bool on) {
-  if (on == flagged_) return;
-  flagged_ = on;
-  update();
 }
 
 QRectF BlockItem::boundingRect() const {
@@ -84,7 +80,7 @@ void BlockItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
   p->setRenderHint(QPainter::Antialiasing);
   QColor fill = st.body(number_);
   fill.setAlphaF(st.dark ? 0.55 : 0.45);
-  p->setPen(cosmetic(flagged_ ? st.warning : st.body(number_), CanvasStyle::outline));
+  p->setPen(cosmetic(flagged() ? st.warning : st.body(number_), CanvasStyle::outline));
   p->setBrush(fill);
   p->drawRoundedRect(QRectF(-l, -w, 2 * l, 2 * w), 1.5 * px(), 1.5 * px());
 }

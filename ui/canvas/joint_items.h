@@ -1,6 +1,7 @@
-// The symbols drawn over the bodies, each placed at its world position: pins (a ground pivot
-// with its hatched base), slider blocks aligned with their slot, the driver's rotation arrow,
-// output points with their labels. Sizes are in screen pixels (CanvasStyle).
+// The symbols drawn over the bodies, each placed at its world position: the joints as their
+// kinds draw them (ui/elements/element_ui.h makes them: pins, a ground pivot with its hatched
+// base, slider blocks aligned with their slot, gear pairs and belts), the driver's rotation
+// arrow, output points with their labels. Sizes are in screen pixels (CanvasStyle).
 #pragma once
 
 #include "canvas/canvas_item.h"
@@ -8,39 +9,49 @@
 
 namespace linkage::ui {
 
-class PinItem : public CanvasItem {
+// Stacking of the joints' symbols: over the bodies (at 0), under the driver and outputs.
+constexpr double kGearZ = 10, kBlockZ = 20, kPinZ = 30;
+
+// A joint's symbol: placed from its JointSymbol at each pose; flagged (the warning colour) when
+// a failure or the structure analysis names it.
+class JointItem : public CanvasItem {
  public:
-  enum class Kind { Pin, GroundPivot, InSlot };
-  PinItem(const CanvasContext* ctx, JointId joint, Kind kind);
+  JointItem(const CanvasContext* ctx, JointId joint) : CanvasItem(ctx), joint_(joint) {}
   JointId joint() const { return joint_; }
-  void setAt(const Vec2& at);
+  virtual void place(const JointSymbol& s) = 0;
   void setFlagged(bool on);
   bool flagged() const { return flagged_; }
-  QRectF boundingRect() const override;
-  void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
 
  private:
   JointId joint_;
-  Kind kind_;
   bool flagged_ = false;
 };
 
-class BlockItem : public CanvasItem {
+class PinItem : public JointItem {
  public:
-  BlockItem(const CanvasContext* ctx, JointId joint, BodyId body, int number);
-  JointId joint() const { return joint_; }
-  BodyId body() const { return body_; }
-  void setPlacement(const Vec2& at, const Vec2& direction);
-  void setFlagged(bool on);
-  bool flagged() const { return flagged_; }
+  enum class Kind { Pin, GroundPivot, InSlot };
+  PinItem(const CanvasContext* ctx, JointId joint, Kind kind);
+  void place(const JointSymbol& s) override { setAt(s.at); }
+  void setAt(const Vec2& at);
   QRectF boundingRect() const override;
   void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
 
  private:
-  JointId joint_;
+  Kind kind_;
+};
+
+class BlockItem : public JointItem {
+ public:
+  BlockItem(const CanvasContext* ctx, JointId joint, BodyId body, int number);
+  BodyId body() const { return body_; }
+  void place(const JointSymbol& s) override { setPlacement(s.at, s.direction); }
+  void setPlacement(const Vec2& at, const Vec2& direction);
+  QRectF boundingRect() const override;
+  void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
+
+ private:
   BodyId body_;
   int number_;
-  bool flagged_ = false;
 };
 
 class DriverItem : public CanvasItem {

@@ -8,6 +8,7 @@
 
 #include "canvas/body_item.h"
 #include "design/extremes_notes.h"
+#include "linkage/elements.h"
 
 namespace linkage::ui {
 
@@ -70,16 +71,20 @@ void ExtremesItem::rebuild() {
       const QPolygonF o = bodyOutline(b, u);
       if (!o.isEmpty()) g.outlines.emplace_back(toQt(b.pose).map(o), b.number);
     }
-    for (const Drawing::Block& b : d.blocks) {
-      const Vec2 l = b.direction * (CanvasStyle::blockLength / 2 * u);
-      const Vec2 w = perp(b.direction) * (CanvasStyle::blockWidth / 2 * u);
-      g.outlines.emplace_back(QPolygonF({toQt(b.at - l - w), toQt(b.at + l - w), toQt(b.at + l + w),
-                                         toQt(b.at - l + w), toQt(b.at - l - w)}),
-                              number[b.body]);
+    // Blocks as their outlines, moving pins as dots (by the joints' structural roles).
+    for (const JointSymbol& b : d.joints) {
+      const Role role = elementKind(b.type).role;
+      if (role == Role::Prismatic) {
+        const Vec2 l = b.direction * (CanvasStyle::blockLength / 2 * u);
+        const Vec2 w = perp(b.direction) * (CanvasStyle::blockWidth / 2 * u);
+        g.outlines.emplace_back(
+            QPolygonF({toQt(b.at - l - w), toQt(b.at + l - w), toQt(b.at + l + w),
+                       toQt(b.at - l + w), toQt(b.at - l - w)}),
+            number[b.bodies[0]]);
+      } else if ((role == Role::Revolute && !b.groundPivot) || role == Role::PointOnCurve) {
+        g.pins.push_back(toQt(b.at));
+      }
     }
-    for (const Drawing::Pin& p : d.pins)
-      if (!p.groundPivot) g.pins.push_back(toQt(p.at));
-    for (const Drawing::SlotPin& p : d.slotPins) g.pins.push_back(toQt(p.at));
     ghosts_.push_back(std::move(g));
   }
 }

@@ -24,7 +24,7 @@
 #include "document/document.h"
 #include "linkage/io/atomic_file.h"
 #include "linkage/io/numbers.h"
-#include "linkage/io/study_table.h"
+#include "linkage/tables/study_table.h"
 
 namespace linkage::ui {
 

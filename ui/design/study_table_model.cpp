@@ -1,6 +1,6 @@
 #include "design/study_table_model.h"
 
-#include "linkage/io/study_table.h"
+#include "linkage/tables/study_table.h"
 
 namespace linkage::ui {
 

@@ -2,7 +2,7 @@
 
 #include "document/document.h"
 #include "linkage/io/atomic_file.h"
-#include "linkage/io/motion_table.h"
+#include "linkage/tables/motion_table.h"
 
 namespace linkage::ui {
 

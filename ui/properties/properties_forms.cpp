@@ -11,7 +11,9 @@
 
 #include "document/commands.h"
 #include "document/document.h"
-#include "document/edits.h"
+#include "elements/element_ui.h"
+#include "linkage/edits.h"
+#include "linkage/elements.h"
 #include "linkage/io/numbers.h"
 #include "tools/selection.h"
 
@@ -215,82 +217,12 @@ void PropertiesPanel::fillPoint(PointId id) {
   });
 }
 
+// The title, then the rows the joint's kind puts there (ui/elements/).
 void PropertiesPanel::fillJoint(JointId id) {
   const Mechanism& m0 = doc_->design();
-  const Joint* j = m0.joint(id);
   title_->setText(
-      tr("<b>Joint</b> %1").arg(QString::fromStdString(m0.jointLabel(id)).toHtmlEscaped()));
-  if (j->type == JointType::Pin) {
-    addInfo(tr("Type"), [] { return tr("pin"); });
-  } else {
-    auto* type = new QComboBox;
-    type->addItems({tr("slider (the block keeps its angle)"), tr("pin in slot (turns freely)")});
-    auto current = [this, id] {
-      return doc_->design().joint(id)->type == JointType::Slider ? 0 : 1;
-    };
-    type->setCurrentIndex(current());
-    form_->addRow(tr("Type"), type);
-    rows_.push_back({tr("Type"), type, [type, current] {
-                       QSignalBlocker b(type);
-                       type->setCurrentIndex(current());
-                     }});
-    connect(type, &QComboBox::activated, this, [this, id](int i) {
-      QString why;
-      if (!change(
-              tr("Joint type"),
-              [&](Mechanism& m, QString* w) {
-                std::string s;
-                const bool ok =
-                    changeJointType(m, id, i == 0 ? JointType::Slider : JointType::PinInSlot, &s);
-                *w = QString::fromStdString(s);
-                return ok;
-              },
-              &why))
-        emit message(why, true);
-    });
-  }
-  const PointId a = j->a;
-  for (int axis = 0; axis < 2; ++axis)
-    addNumber(
-        axis ? QStringLiteral("y") : QStringLiteral("x"),
-        [this, a, axis] { return doc_->design().point(a)->pos[axis]; },
-        [this, a, axis](double v, QString* why) {
-          return change(
-              tr("Move joint"),
-              [&](Mechanism& m, QString*) {
-                for (PointId q : pinnedTogether(m, a)) m.point(q)->pos[axis] = v;
-                return true;
-              },
-              why);
-        },
-        tr("mm"));
-  if (j->type == JointType::Pin) {
-    auto* drives = new QCheckBox(tr("drives the mechanism (the crank)"));
-    auto isDriver = [this, id] {
-      return doc_->design().driver && doc_->design().driver->joint == id;
-    };
-    drives->setChecked(isDriver());
-    drives->setEnabled(!isDriver());
-    form_->addRow(tr("Driver"), drives);
-    rows_.push_back({tr("Driver"), drives, [drives, isDriver] {
-                       QSignalBlocker b(drives);
-                       drives->setChecked(isDriver());
-                       drives->setEnabled(!isDriver());
-                     }});
-    connect(drives, &QCheckBox::clicked, this, [this, id](bool) {
-      QString why;
-      change(
-          tr("Driver"),
-          [&](Mechanism& m, QString* w) {
-            std::string s;
-            const bool ok = setDriver(m, id, &s);
-            *w = QString::fromStdString(s);
-            return ok;
-          },
-          &why);
-    });
-    if (isDriver()) fillDriver();
-  }
+      tr("<b>Joint</b> %1").arg(QString::fromStdString(jointLabel(m0, id)).toHtmlEscaped()));
+  elementUi(m0.joint(id)->type).form(*this, id);
 }
 
 void PropertiesPanel::fillSlot(SlotId id) {

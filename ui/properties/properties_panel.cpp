@@ -10,7 +10,7 @@
 
 #include "document/commands.h"
 #include "document/document.h"
-#include "document/edits.h"
+#include "linkage/edits.h"
 #include "linkage/io/numbers.h"
 #include "tools/selection.h"
 
@@ -138,6 +138,32 @@ void PropertiesPanel::addInfo(const QString& label, std::function<QString()> val
   l->setTextInteractionFlags(Qt::TextSelectableByMouse);
   form_->addRow(label, l);
   rows_.push_back({label, l, [l, value] { l->setText(value()); }});
+}
+
+void PropertiesPanel::addChoice(const QString& label, QComboBox* box, std::function<int()> current,
+                                std::function<void(int)> activated) {
+  box->setCurrentIndex(current());
+  form_->addRow(label, box);
+  rows_.push_back({label, box, [box, current] {
+                     QSignalBlocker b(box);
+                     box->setCurrentIndex(current());
+                   }});
+  connect(box, &QComboBox::activated, this, std::move(activated));
+}
+
+void PropertiesPanel::addCheck(const QString& label, const QString& text,
+                               std::function<bool()> checked, std::function<bool()> enabled,
+                               std::function<void(bool)> clicked) {
+  auto* box = new QCheckBox(text);
+  box->setChecked(checked());
+  box->setEnabled(enabled());
+  form_->addRow(label, box);
+  rows_.push_back({label, box, [box, checked, enabled] {
+                     QSignalBlocker b(box);
+                     box->setChecked(checked());
+                     box->setEnabled(enabled());
+                   }});
+  connect(box, &QCheckBox::clicked, this, std::move(clicked));
 }
 
 void PropertiesPanel::addText(const QString& label, std::function<QString()> value,

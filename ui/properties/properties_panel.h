@@ -13,6 +13,7 @@
 
 #include "linkage/model.h"
 
+class QComboBox;
 class QFormLayout;
 class QLabel;
 class QLineEdit;
@@ -32,6 +33,26 @@ class PropertiesPanel : public QWidget {
   QWidget* field(const QString& label) const;
   QString title() const;
 
+  // What the element kinds' forms (ui/elements/) build their rows with.
+  Document* document() const { return doc_; }
+  // Editors that commit on Enter or leaving the field; a refused value turns the field red and
+  // puts the old one back.
+  void addText(const QString& label, std::function<QString()> value,
+               std::function<bool(const QString&, QString*)> commit);
+  void addNumber(const QString& label, std::function<double()> value,
+                 std::function<bool(double, QString*)> commit, const QString& unit);
+  void addInfo(const QString& label, std::function<QString()> value);
+  // A choice (its items already in `box`), set from current() and acting on activation.
+  void addChoice(const QString& label, QComboBox* box, std::function<int()> current,
+                 std::function<void(int)> activated);
+  void addCheck(const QString& label, const QString& text, std::function<bool()> checked,
+                std::function<bool()> enabled, std::function<void(bool)> clicked);
+  // Applies a change to a copy of the design as one undo step.
+  bool change(const QString& text, const std::function<bool(Mechanism&, QString*)>& edit,
+              QString* why);
+  // The driver's speed, direction and start angle.
+  void fillDriver();
+
  Q_SIGNALS:
   void message(const QString& text, bool warning);
 
@@ -49,17 +70,6 @@ class PropertiesPanel : public QWidget {
   void fillPoint(PointId id);
   void fillJoint(JointId id);
   void fillSlot(SlotId id);
-  void fillDriver();
-  // Editors that commit on Enter or leaving the field; a refused value turns the field red and
-  // puts the old one back.
-  void addText(const QString& label, std::function<QString()> value,
-               std::function<bool(const QString&, QString*)> commit);
-  void addNumber(const QString& label, std::function<double()> value,
-                 std::function<bool(double, QString*)> commit, const QString& unit);
-  void addInfo(const QString& label, std::function<QString()> value);
-  // Applies a change to a copy of the design as one undo step.
-  bool change(const QString& text, const std::function<bool(Mechanism&, QString*)>& edit,
-              QString* why);
 
   QPointer<Document> doc_;
   Selection* selection_ = nullptr;

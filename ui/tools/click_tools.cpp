@@ -3,7 +3,8 @@
 #include "canvas/canvas_scene.h"
 #include "document/commands.h"
 #include "document/document.h"
-#include "document/edits.h"
+#include "linkage/edits.h"
+#include "linkage/elements.h"
 
 namespace linkage::ui {
 
@@ -49,7 +50,7 @@ void DriverTool::press(const CanvasMouse& e) {
   Document* doc = ctx().doc;
   Mechanism m = doc->design();
   const Joint* j = m.joint(e.pick.joint);
-  if (!j || j->type != JointType::Pin) {
+  if (!j || kindOf(*j).role != Role::Revolute) {
     say(tr("Click a pin: the driver is a pin joint"), true);
     return;
   }
@@ -59,7 +60,7 @@ void DriverTool::press(const CanvasMouse& e) {
     say(QString::fromStdString(why), true);
     return;
   }
-  const QString what = QString::fromStdString(m.jointLabel(id));
+  const QString what = QString::fromStdString(jointLabel(m, id));
   commitEdit(doc, tr("Driver at %1").arg(what), std::move(m));
   say(tr("%1 drives the mechanism").arg(what));
 }

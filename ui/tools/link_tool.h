@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "document/edits.h"
+#include "linkage/edits.h"
 #include "tools/tool.h"
 
 namespace linkage::ui {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "canvas/canvas_scene.h"
+#include "linkage/elements.h"
 
 namespace linkage::ui {
 
@@ -33,7 +34,7 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   }
   if (pick.point)
     for (const Joint& j : m.joints)
-      if (j.type == JointType::Pin && (j.a == pick.point || j.b == pick.point)) {
+      if (kindOf(j).role == Role::Revolute && (j.a == pick.point || j.b == pick.point)) {
         pick.joint = j.id;
         break;
       }
@@ -51,7 +52,7 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   // Blocks and slot pins under the cursor are their joints.
   if (!pick.joint)
     for (const Joint& j : m.joints)
-      if (j.type != JointType::Pin &&
+      if (kindOf(j).reads(JointField::Slot) &&
           (s.worldOf(j.a) - world).norm() < CanvasStyle::blockLength / 2 * px) {
         pick.joint = j.id;
         break;
@@ -114,7 +115,7 @@ Snap snapAt(const CanvasScene& s, const Pick& pick, const Vec2& world, double px
 
 QString describePick(const Mechanism& m, const Pick& p) {
   if (p.point) return QString::fromStdString(m.pointLabel(p.point));
-  if (p.joint) return QString::fromStdString(m.jointLabel(p.joint));
+  if (p.joint) return QString::fromStdString(jointLabel(m, p.joint));
   if (p.slot) return QStringLiteral("slot %1").arg(QString::fromStdString(m.slotLabel(p.slot)));
   if (const Body* b = m.body(p.body))
     return b->ground ? QStringLiteral("the ground")

@@ -3,7 +3,7 @@
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "document/commands.h"
-#include "document/edits.h"
+#include "linkage/edits.h"
 #include "tools/selection.h"
 #include "tools/tool_overlay.h"
 

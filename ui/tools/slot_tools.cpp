@@ -3,7 +3,8 @@
 #include "canvas/canvas_scene.h"
 #include "document/commands.h"
 #include "document/document.h"
-#include "document/edits.h"
+#include "linkage/edits.h"
+#include "linkage/elements.h"
 #include "tools/tool_overlay.h"
 
 namespace linkage::ui {
@@ -89,7 +90,7 @@ void SlotTool::finish(const Vec2& end) {
 }
 
 QString SlotJointTool::hint() const {
-  const bool block = type_ == JointType::Slider;
+  const bool block = elementKind(type_).role == Role::Prismatic;
   if (!point_)
     return block ? tr("Block: click the point where the slider block goes")
                  : tr("Pin in slot: click the point that runs in a slot");
@@ -134,7 +135,7 @@ void SlotJointTool::press(const CanvasMouse& e) {
   Mechanism m = doc->design();
   std::string why;
   QString text;
-  if (type_ == JointType::Slider) {
+  if (elementKind(type_).role == Role::Prismatic) {
     const BodyId b = addBlock(m, point_, e.pick.slot, ctx().scene->worldOf(point_), &why);
     if (b) text = tr("Add block %1").arg(QString::fromStdString(m.body(b)->name));
   } else {

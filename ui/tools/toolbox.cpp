@@ -8,7 +8,8 @@
 #include "canvas/canvas_view.h"
 #include "document/commands.h"
 #include "document/document.h"
-#include "document/edits.h"
+#include "elements/element_ui.h"
+#include "linkage/edits.h"
 #include "tools/click_tools.h"
 #include "tools/link_tool.h"
 #include "tools/select_tool.h"
@@ -56,17 +57,34 @@ Toolbox::Toolbox(ToolContext ctx, QWidget* actionParent) : QObject(actionParent)
        tr("Pin a point to the ground, or put a ground point on the canvas"), new GroundTool(&ctx_));
   tool("slot", tr("Sl&ot"), QKeySequence(tr("T")),
        tr("Draw a slot on the link under the first click, or in the ground"), new SlotTool(&ctx_));
-  tool("block", tr("Slider &Block"), QKeySequence(tr("B")),
-       tr("Put a slider block at a point, sliding in a slot"),
-       new SlotJointTool(&ctx_, JointType::Slider));
-  tool("pinInSlot", tr("&Pin in Slot"), QKeySequence(tr("P")),
-       tr("Let a point run in a slot, turning freely"),
-       new SlotJointTool(&ctx_, JointType::PinInSlot));
+  // The element kinds' own tools, in the kinds' order (ui/elements/element_ui.h).
+  for (const ElementUi* k : elementUis()) {
+    const ToolSpec& t = k->tool;
+    if (!t.make) continue;
+    tool(QString::fromLatin1(t.name), tr(t.text), QKeySequence(tr(t.key)), tr(t.tip),
+         t.make(&ctx_));
+  }
   tool("driver", tr("&Driver"), QKeySequence(tr("M")), tr("Make a pin the driver (the crank)"),
        new DriverTool(&ctx_));
   tool("output", tr("O&utput Point"), QKeySequence(tr("O")), tr("Trace, plot and export a point"),
        new OutputTool(&ctx_));
 
+  makeCommands(make);
+  connect(ctx_.selection, &Selection::changed, this, &Toolbox::updateCommands);
+  connect(ctx_.doc, &Document::designChanged, this, [this] {
+    ctx_.selection->prune(ctx_.doc->design());
+    updateCommands();
+  });
+  ctx_.view->viewport()->installEventFilter(this);
+  ctx_.view->installEventFilter(this);
+  setTool(QStringLiteral("select"));
+}
+
+Toolbox::~Toolbox() = default;
+
+// Delete, Flip Assembly and Snap to Grid.
+template <class Make>
+void Toolbox::makeCommands(Make make) {
   delete_ = make(QStringLiteral("delete"), tr("&Delete"), QKeySequence::Delete,
                  tr("Delete the selection and what depends on it"));
   connect(delete_, &QAction::triggered, this, &Toolbox::deleteSelection);
@@ -91,17 +109,23 @@ Toolbox::Toolbox(ToolContext ctx, QWidget* actionParent) : QObject(actionParent)
   snap_->setCheckable(true);
   snap_->setChecked(true);
 
-  connect(ctx_.selection, &Selection::changed, this, &Toolbox::updateCommands);
-  connect(ctx_.doc, &Document::designChanged, this, [this] {
-    ctx_.selection->prune(ctx_.doc->design());
-    updateCommands();
-  });
-  ctx_.view->viewport()->installEventFilter(this);
-  ctx_.view->installEventFilter(this);
-  setTool(QStringLiteral("select"));
 }
 
-Toolbox::~Toolbox() = default;
+void Toolbox::editWith(const QString& text,
+                       const std::function<bool(Mechanism&, std::string&)>& change) {
+  Mechanism next = ctx_.doc->design();
+  std::string why;
+  if (!change(next, why)) {
+    ctx_.message(QString::fromStdString(why), true);
+    return;
+  }
+  commitEdit(ctx_.doc, text, std::move(next));
+}
+
+Tool* Toolbox::switchTo(const QString& name) {
+  setTool(name);
+  return current_;
+}
 
 void Toolbox::setTool(const QString& name) {
   for (size_t i = 0; i < actions_.size(); ++i)

@@ -5,6 +5,7 @@
 
 #include <QActionGroup>
 #include <QObject>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -34,6 +35,13 @@ class Toolbox : public QObject {
   // The menu a right click at `e` opens (what can be done with what is there).
   QMenu* contextMenu(const CanvasMouse& e, QWidget* parent);
 
+  // What the element kinds' menus (ui/elements/) work with: the document; an edit of a copy
+  // of the design made as one undo step (drawn where the mechanism is now), or refused with
+  // the reason on the status bar; a tool made current, returned.
+  Document* document() const { return ctx_.doc; }
+  void editWith(const QString& text, const std::function<bool(Mechanism&, std::string&)>& change);
+  Tool* switchTo(const QString& name);
+
  Q_SIGNALS:
   void hintChanged(const QString& hint);
 
@@ -46,6 +54,10 @@ class Toolbox : public QObject {
   void add(const QString& name, const QString& text, const QKeySequence& key, const QString& tip,
            Tool* tool);
   void updateCommands();
+  template <class Make>
+  void makeCommands(Make make);
+  void pointMenu(QMenu& menu, const Point& point, const Vec2& at);
+  void bodyMenu(QMenu& menu, const Body& body, const Vec2& at);
 
   ToolContext ctx_;
   std::vector<std::unique_ptr<Tool>> tools_;

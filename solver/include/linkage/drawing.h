@@ -1,9 +1,11 @@
 // What to paint of a mechanism at its current pose, as a textbook draws it, in a list any front
 // end can draw (the editor's canvas, an SVG writer, a test): bodies as bars, plates or slider
-// blocks, pins, slots as channels, the driver, output points, and optionally the instant centres
-// with the Kennedy lines that found them. Geometry only, in millimetres (sketch coordinates for
-// a body's own outline, world coordinates at the pose for everything else): line widths, colours
-// and symbol sizes are the front end's, so that it can keep them constant on screen at any zoom.
+// blocks, every joint by its kind's symbol (linkage/elements.h: pins, blocks, pins in slots,
+// gear pairs and belts), slots as channels, the driver, output points, and optionally the
+// instant centres with the Kennedy lines that found them. Geometry only, in millimetres (sketch
+// coordinates for a body's own outline, world coordinates at the pose for everything else): line
+// widths, colours and symbol sizes are the front end's, so that it can keep them constant on screen
+// at any zoom.
 #pragma once
 
 #include <Eigen/Core>
@@ -11,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "linkage/elements.h"
 #include "linkage/instant_centres.h"
 #include "linkage/kinematics.h"
 
@@ -37,29 +40,15 @@ struct Drawing {
     std::vector<Vec2> outline;
     double radius = 0;  // Disc
   };
-  struct Pin {
-    JointId joint;
-    Vec2 at = Vec2::Zero();
-    BodyId a, b;               // the bodies of its a and b points
-    bool groundPivot = false;  // one side is the ground
-    bool driver = false;
-  };
   struct Channel {
     SlotId slot;
     BodyId body;
     Vec2 p0 = Vec2::Zero(), p1 = Vec2::Zero();  // the slot's ends now
-  };
-  struct Block {  // a slider joint: the block at its point, aligned with the slot
-    JointId joint;
-    BodyId body;  // the body of the joint's a point (the block)
-    SlotId slot;
-    Vec2 at = Vec2::Zero();
-    Vec2 direction = Vec2::UnitX();  // unit, along the slot now
-  };
-  struct SlotPin {  // a pin-in-slot joint: a pin inside the channel
-    JointId joint;
-    SlotId slot;
-    Vec2 at = Vec2::Zero();
+    // An arc slot: its centre now, radius, the angle of p0 about the centre now and the signed
+    // sweep to p1 (radians, counter-clockwise positive).
+    bool arc = false;
+    Vec2 centre = Vec2::Zero();
+    double radius = 0, a0 = 0, sweep = 0;
   };
   struct Driver {
     JointId joint;
@@ -90,10 +79,10 @@ struct Drawing {
   };
 
   std::vector<Body> bodies;  // ground first, then file order
-  std::vector<Pin> pins;
+  // Every joint whose references resolve, in file order, as its kind draws it.
+  std::vector<JointSymbol> joints;
+  std::vector<int> jointIndex;  // of each symbol, in Mechanism::joints
   std::vector<Channel> channels;
-  std::vector<Block> blocks;
-  std::vector<SlotPin> slotPins;
   std::vector<Driver> drivers;  // none or one
   std::vector<Output> outputs;
   std::vector<Centre> centres;  // when asked for

@@ -14,13 +14,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "linkage/elements.h"
 #include "linkage/kinematics.h"
 
 namespace linkage {
 
-// What a joint says by itself about the centre of the bodies it joins (defined with the joint
-// types, internally).
-enum class CentreRule : unsigned char;
+struct System;  // the compiled mechanism (internal)
 
 // How a centre was found. Velocity: Kennedy's lines do not fix it at this position (too few
 // lines, or the lines coincide), so it is taken from the solved velocities, and said so.
@@ -36,9 +35,8 @@ enum class KennedyFailure : unsigned char {
 const char* toString(KennedyFailure f);
 
 // One line a centre IC(i, j) was found from: the line through IC(i, k) and IC(k, j) (k is the
-// textbook number of the third body), or, with k = 0, the line a pin-in-slot joint between i and
-// j gives by itself (the normal to the slot through the pin; joint = its index in
-// Mechanism::joints).
+// textbook number of the third body), or, with k = 0, the line a joint between i and j gives by
+// itself (a pin in a slot: the normal to the slot through the pin; joint = its id).
 struct CentreLine {
   int k = 0;
   JointId joint;
@@ -144,13 +142,14 @@ class InstantCentreSolver {
   const InstantCentres& result() const { return out_; }
 
  private:
-  struct Primary {
-    CentreRule rule{};  // what the joint says of the centre
+  struct Primary {  // what a joint says of the centre (its kind's CentreData), in body frames
+    CentreRule rule = CentreRule::AtPoint;
     int joint = -1;
-    int body = -1;  // system body index of the point (pin: point a), -1 ground
-    Vec2 s = Vec2::Zero();
-    int slotBody = -1;      // slider, pin-in-slot: system body index of the slot
-    Vec2 n = Vec2::Zero();  // slot normal in the slot body's frame
+    int pBody[2] = {-1, -1};  // system body indices, -1 ground
+    Vec2 p[2] = {Vec2::Zero(), Vec2::Zero()};
+    int nBody = -1;
+    Vec2 n = Vec2::Zero();
+    double ratio = 0;
   };
   struct Work {  // per pair, scaled homogeneous (unit 3-vectors); what Kennedy reads first
     Eigen::Vector3d h;
@@ -171,10 +170,14 @@ class InstantCentreSolver {
   };
 
   int pair(int a, int b) const;  // a != b, textbook indices
+  std::vector<std::pair<int, Primary>> primaries(const Mechanism& m,
+                                                 const System& sys) const;
   Eigen::Vector3d scaled(const Vec2& p) const;
   Eigen::Vector3d toPublic(const Eigen::Vector3d& h) const;
   Vec2 global(int body, const Vec2& s) const;  // system body index
   Vec2 turn(int body, const Vec2& v) const;
+  Eigen::Vector3d primaryLine(const Primary& pr) const;  // LineAlong, LineThrough
+  void primaryPoint(const Primary& pr, Eigen::Vector3d& h, Eigen::Vector3d& mm, double& err) const;
   void primaryCentres();
   void kennedy();
   bool kennedyPass(int round, double limit);

@@ -53,22 +53,31 @@ struct Point {
   Vec2 pos;
 };
 
-// A straight slot: the line through p0 and p1 (which also bound its drawn length).
+// A slot: the straight line through p0 and p1 (which also bound its drawn length), or, with a
+// point `mid` on the way, the circular arc from p0 through mid to p1 (elements/guide.h).
 struct Slot {
   SlotId id;
   BodyId body;
   std::string name;  // unique within its body
   Vec2 p0, p1;
+  std::optional<Vec2> mid;
+  bool arc() const { return mid.has_value(); }
 };
 
-enum class JointType { Pin, Slider, PinInSlot };
+// The element kinds a joint can be: an index into the element table (linkage/elements.h), where
+// each kind is described once (its fields, equations, instant centre and symbol). The model
+// itself knows nothing of them.
+enum class JointType : unsigned char { Pin, Slider, PinInSlot, Gear };
 
+// A joint of any kind, with the fields its kind reads (linkage/elements.h lists which).
 struct Joint {
   JointId id;
   JointType type = JointType::Pin;
-  PointId a;    // all types
-  PointId b;    // pin only
-  SlotId slot;  // slider and pin-in-slot only
+  PointId a;         // every kind
+  PointId b;         // a second point (pin, gear)
+  SlotId slot;       // the slot it runs in (slider, pin-in-slot)
+  BodyId carrier;    // a body it is carried by (gear; none: the ground)
+  double ratio = 0;  // a number it takes (gear)
   Extras extras;
 };
 
@@ -117,17 +126,21 @@ struct Mechanism {
   BodyId addBody(std::string name, bool ground = false);
   PointId addPoint(BodyId body, std::string name, Vec2 pos);
   SlotId addSlot(BodyId body, std::string name, Vec2 p0, Vec2 p1);
+  // An arc slot from p0 through mid to p1.
+  SlotId addArcSlot(BodyId body, std::string name, Vec2 p0, Vec2 mid, Vec2 p1);
   JointId addPin(PointId a, PointId b);
   JointId addSlider(PointId a, SlotId slot);
   JointId addPinInSlot(PointId a, SlotId slot);
-  // Any type: point a to point b, or to a slot, as the type joins (the other is left unset).
-  JointId addJoint(JointType type, PointId a, PointId b, SlotId slot);
+  // theta_b - theta_c = ratio (theta_a - theta_c), c the carrier (none: the ground).
+  JointId addGear(PointId a, PointId b, double ratio, BodyId carrier = {});
+  // A joint with its fields as given (what a kind does not read is left unset by the caller).
+  JointId addJoint(Joint j);
 
   // Removal cascades to what cannot stand without the entity: a joint takes the driver along if
   // it is the driver's; a point its joints and its place among the outputs; a slot its joints;
-  // a body its points and slots (and so their joints). Ids this mechanism does not hold are
-  // ignored. The Removal undoes it exactly with restore(), as long as nothing else changed in
-  // between (what an undo stack guarantees).
+  // a body its points and slots (and so their joints) and the joints it carries. Ids this mechanism
+  // does not hold are ignored. The Removal undoes it exactly with restore(), as long as nothing
+  // else changed in between (what an undo stack guarantees).
   Removal remove(const std::vector<BodyId>& bodies, const std::vector<PointId>& points = {},
                  const std::vector<SlotId>& slots = {}, const std::vector<JointId>& joints = {});
   // (Spelled out: remove({id}) would call this overload again.)
@@ -159,8 +172,7 @@ struct Mechanism {
   // "body.point" as the file and the command line spell it.
   std::string pointLabel(PointId id) const;
   std::string slotLabel(SlotId id) const;
-  // A short description for messages, e.g. `joints[2] (slider slider4.E in disk.B)`.
-  std::string jointLabel(JointId id) const;
+  // (A joint's label names its kind: jointLabel() in linkage/elements.h.)
   int jointIndex(JointId id) const;  // -1 when unknown
 
   // Resolves "body.point"; nullopt when either name is unknown.
@@ -177,8 +189,6 @@ struct Mechanism {
   std::uint32_t owner_;
   std::uint32_t nextId_ = 1;
 };
-
-const char* toString(JointType t);
 
 // Whether b is a with other dimensions only: the same bodies, points, slots, joints and driver
 // (ids, kinds, connections, start angle and direction), with points or slots moved. The bodies

@@ -1,0 +1,265 @@
+#include "linkage/edits.h"
+
+#include <algorithm>
+
+#include "elements/guide.h"
+#include "linkage/elements.h"
+
+namespace linkage {
+
+namespace {
+
+void fail(std::string* why, const std::string& text) {
+  if (why) *why = text;
+}
+
+// Spreadsheet-style letters: A..Z, AA, AB, ...
+std::string letters(int n) {
+  std::string s;
+  for (++n; n > 0; n = (n - 1) / 26) s.insert(s.begin(), char('A' + (n - 1) % 26));
+  return s;
+}
+
+bool pointNameUsed(const Mechanism& m, const std::string& name) {
+  return std::any_of(m.points.begin(), m.points.end(),
+                     [&](const Point& p) { return p.name == name; });
+}
+
+}  // namespace
+
+bool bodyNameFree(const Mechanism& m, const std::string& name, BodyId self) {
+  if (name.empty()) return false;
+  const Body* b = m.bodyNamed(name);
+  return !b || b->id == self;
+}
+
+bool pointNameFree(const Mechanism& m, BodyId body, const std::string& name, PointId self) {
+  if (name.empty() || name.find('.') != std::string::npos) return false;
+  const Point* p = m.pointNamed(body, name);
+  return !p || p->id == self;
+}
+
+bool slotNameFree(const Mechanism& m, BodyId body, const std::string& name, SlotId self) {
+  if (name.empty() || name.find('.') != std::string::npos) return false;
+  const Slot* s = m.slotNamed(body, name);
+  return !s || s->id == self;
+}
+
+std::string newBodyName(const Mechanism& m, const std::string& stem) {
+  // link2, link3, ...: the textbook numbers the ground 1.
+  for (int n = static_cast<int>(m.bodies.size()) + 1;; ++n) {
+    const std::string name = stem + std::to_string(n);
+    if (bodyNameFree(m, name)) return name;
+  }
+}
+
+std::string newPointName(const Mechanism& m, BodyId body) {
+  // A letter no point of the mechanism has: a new place in the drawing.
+  for (int n = 0;; ++n) {
+    const std::string name = letters(n);
+    if (!pointNameUsed(m, name) && pointNameFree(m, body, name)) return name;
+  }
+}
+
+std::string newSlotName(const Mechanism& m, BodyId body) {
+  for (int n = 1;; ++n) {
+    // Built in two steps: "s" + to_string(n) trips GCC 12's -Wrestrict (a false alarm, bug 105329).
+    std::string name = "s";
+    name += std::to_string(n);
+    if (slotNameFree(m, body, name)) return name;
+  }
+}
+
+BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::string* why) {
+  if (vertices.size() < 2) {
+    fail(why, "a link needs two points at least");
+    return {};
+  }
+  for (const LinkVertex& v : vertices)
+    if (v.pinTo && !m.contains(v.pinTo)) {
+      fail(why, "a point it is pinned to is gone");
+      return {};
+    }
+  const BodyId b = m.addBody(newBodyName(m));
+  for (const LinkVertex& v : vertices) {
+    if (v.pinTo) {
+      const Point target = *m.point(v.pinTo);
+      // The pin's two points share the name (textbook: one letter, one place), when free.
+      const std::string name = pointNameFree(m, b, target.name) ? target.name : newPointName(m, b);
+      const PointId p = m.addPoint(b, name, v.at);
+      m.addPin(v.pinTo, p);
+    } else {
+      m.addPoint(b, newPointName(m, b), v.at);
+    }
+  }
+  return b;
+}
+
+PointId addGroundPoint(Mechanism& m, const Vec2& at, PointId point) {
+  const Body* g = m.ground();
+  if (!g) return {};
+  const BodyId ground = g->id;
+  std::string name = newPointName(m, ground);
+  if (const Point* p = m.point(point); p && pointNameFree(m, ground, p->name)) name = p->name;
+  const PointId gp = m.addPoint(ground, name, at);
+  if (point) m.addPin(gp, point);
+  return gp;
+}
+
+PointId addBodyPoint(Mechanism& m, BodyId body, const Vec2& at) {
+  if (!m.contains(body)) return {};
+  return m.addPoint(body, newPointName(m, body), at);
+}
+
+SlotId addBodySlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& p1) {
+  if (!m.contains(body) || p0 == p1) return {};
+  return m.addSlot(body, newSlotName(m, body), p0, p1);
+}
+
+SlotId addBodyArcSlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& mid, const Vec2& p1) {
+  if (!m.contains(body)) return {};
+  Slot probe{{}, body, "", p0, p1, mid};
+  if (!guideOf(probe)) return {};
+  return m.addArcSlot(body, newSlotName(m, body), p0, mid, p1);
+}
+
+namespace {
+
+// The point of `body` where a pin joins it to `carrier`, or none.
+PointId pivotOn(const Mechanism& m, BodyId body, BodyId carrier) {
+  for (const Joint& j : m.joints) {
+    if (kindOf(j).role != Role::Revolute) continue;
+    const Point *a = m.point(j.a), *b = m.point(j.b);
+    if (!a || !b) continue;
+    if (a->body == body && b->body == carrier) return a->id;
+    if (b->body == body && a->body == carrier) return b->id;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::vector<BodyId> pivotsOf(const Mechanism& m, BodyId body) {
+  std::vector<BodyId> out;
+  const Body* g = m.ground();
+  if (g && pivotOn(m, body, g->id)) out.push_back(g->id);
+  for (const Body& c : m.bodies)
+    if (c.id != body && !c.ground && pivotOn(m, body, c.id)) out.push_back(c.id);
+  return out;
+}
+
+JointId addCoupling(Mechanism& m, BodyId a, BodyId b, double ratio, std::string* why) {
+  if (!m.contains(a) || !m.contains(b) || a == b) {
+    fail(why, "pick two different bodies, each pivoted where it turns");
+    return {};
+  }
+  const std::vector<BodyId> carriers = pivotsOf(m, a);
+  for (BodyId c : carriers) {
+    if (c == b) continue;
+    const PointId pb = pivotOn(m, b, c);
+    if (!pb) continue;
+    const Body* cb = m.body(c);
+    const JointId id = m.addGear(pivotOn(m, a, c), pb, ratio, cb->ground ? BodyId{} : c);
+    if (const std::string problem = checkJoints(m); !problem.empty()) {
+      m.remove(id);
+      fail(why, problem);
+      return {};
+    }
+    return id;
+  }
+  fail(why,
+       "the two bodies are not pivoted on one body: a gear or belt couples two bodies that "
+       "turn about pins on the same carrier (the frame, or an arm)");
+  return {};
+}
+
+namespace {
+
+// A point and a slot of two different bodies: what runs in a slot and the slot it runs in.
+bool pointAndSlot(const Mechanism& m, PointId point, SlotId slot, std::string* why) {
+  const Point* p = m.point(point);
+  const Slot* s = m.slot(slot);
+  if (!p || !s) {
+    fail(why, "pick a point, then a slot");
+    return false;
+  }
+  if (p->body == s->body) {
+    fail(why, "the point and the slot are on the same body: it could not move in it");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+BodyId addBlock(Mechanism& m, PointId point, SlotId slot, const Vec2& at, std::string* why) {
+  if (!pointAndSlot(m, point, slot, why)) return {};
+  const std::string name = m.point(point)->name;
+  const BodyId block = m.addBody(newBodyName(m, "block"));
+  const PointId bp = m.addPoint(block, name, at);
+  m.addPin(point, bp);
+  m.addSlider(bp, slot);
+  return block;
+}
+
+JointId addPinInSlot(Mechanism& m, PointId point, SlotId slot, std::string* why) {
+  if (!pointAndSlot(m, point, slot, why)) return {};
+  return m.addPinInSlot(point, slot);
+}
+
+bool setDriver(Mechanism& m, JointId pin, std::string* why) {
+  Joint* j = m.joint(pin);
+  if (!j || kindOf(*j).role != Role::Revolute) {
+    fail(why, "the driver is a pin joint: pick a pin");
+    return false;
+  }
+  const Point* a = m.point(j->a);
+  const Point* b = m.point(j->b);
+  const Body* ba = a ? m.body(a->body) : nullptr;
+  const Body* bb = b ? m.body(b->body) : nullptr;
+  // The body of b turns relative to the body of a: the frame on the a side.
+  if (bb && bb->ground && !(ba && ba->ground)) std::swap(j->a, j->b);
+  Driver d;
+  if (m.driver) d = *m.driver;
+  d.joint = pin;
+  m.driver = d;
+  return true;
+}
+
+void toggleOutput(Mechanism& m, PointId p) {
+  auto it = std::find(m.outputs.begin(), m.outputs.end(), p);
+  if (it != m.outputs.end())
+    m.outputs.erase(it);
+  else if (m.contains(p))
+    m.outputs.push_back(p);
+}
+
+bool changeJointType(Mechanism& m, JointId id, JointType type, std::string* why) {
+  Joint* j = m.joint(id);
+  if (!j) return false;
+  if (!sameFields(j->type, type)) {
+    fail(why, std::string("a ") + toString(j->type) + " cannot become a " + toString(type) +
+                  ": they join different things (a slider and a pin-in-slot change into each "
+                  "other; a pin needs a slot first)");
+    return false;
+  }
+  j->type = type;
+  return true;
+}
+
+std::vector<PointId> pinnedTogether(const Mechanism& m, PointId p) {
+  std::vector<PointId> out;
+  if (!m.contains(p)) return out;
+  out.push_back(p);
+  for (size_t i = 0; i < out.size(); ++i)
+    for (const Joint& j : m.joints) {
+      if (kindOf(j).role != Role::Revolute) continue;
+      PointId other;
+      if (j.a == out[i]) other = j.b;
+      if (j.b == out[i]) other = j.a;
+      if (other && std::find(out.begin(), out.end(), other) == out.end()) out.push_back(other);
+    }
+  return out;
+}
+
+}  // namespace linkage

@@ -1,0 +1,151 @@
+// Gear and belt coupling: the body of b turns relative to the carrier `ratio` times as fast as
+// the body of a does, both angles counted from the drawing:
+//
+//   theta_b - theta_c = ratio (theta_a - theta_c)         (c: the carrier; none: the ground)
+//
+//   file:     {"type": "gear", "a": "armshaft.U", "b": "hook.L", "ratio": 2, "carrier": "arm"}
+//   rows:     Angles(theta_b - ratio theta_a + (ratio - 1) theta_c = 0)   1 equation, 3 bodies
+//   checks:   ratio finite, non-zero and within 1e-6 to 1e6 in size; a and b on two bodies, neither
+//             the carrier; each of a and b where its body is pinned to the carrier (a pin joins
+//             that body to the carrier at that point).
+//   centre:   on the line of the centres A, B where the two bodies' velocities are equal:
+//             (A - ratio B) / (1 - ratio): the pitch point of a gear pair (ratio < 0, between
+//             the centres), outside them for a belt or an internal pair (ratio > 0), at
+//             infinity for ratio 1 (the bodies translate relative to each other).
+//   drawn:    ratio < 0, an external pair: pitch circles touching at the pitch point, radii
+//             |ratio| d / (1 + |ratio|) about A and d / (1 + |ratio|) about B (d = |AB|);
+//             ratio > 0: two pulleys with radii in the ratio, the larger d / 3, and the belt.
+#include "elements/gear.h"
+
+#include <cmath>
+
+#include "elements/frames.h"
+#include "elements/rows.h"
+
+namespace linkage {
+
+namespace {
+
+constexpr FieldSpec kFields[] = {{JointField::A, true},
+                                 {JointField::B, true},
+                                 {JointField::Ratio, true},
+                                 {JointField::Carrier, false}};
+
+BodyId carrierOf(const Mechanism& m, const Joint& j) {
+  if (j.carrier) return j.carrier;
+  const Body* g = m.ground();
+  return g ? g->id : BodyId{};
+}
+
+// Is p (on its body) where that body is pinned to `carrier`: a revolute joint between the two
+// bodies whose point on p's body is p, or at p's place.
+bool pinnedThere(const Mechanism& m, const Point& p, BodyId carrier) {
+  const double tol = 1e-9 * std::max(1.0, p.pos.cwiseAbs().maxCoeff());
+  for (const Joint& k : m.joints) {
+    if (kindOf(k).role != Role::Revolute) continue;
+    const Point *x = m.point(k.a), *y = m.point(k.b);
+    if (!x || !y) continue;
+    for (const auto& [on, other] : {std::pair{x, y}, std::pair{y, x}})
+      if (on->body == p.body && other->body == carrier &&
+          (on->id == p.id || (on->pos - p.pos).norm() <= tol))
+        return true;
+  }
+  return false;
+}
+
+std::string check(const Mechanism& m, const Joint& j, JointField& where) {
+  where = JointField::Ratio;
+  if (!std::isfinite(j.ratio) || j.ratio == 0)
+    return "expected a finite number other than 0 (the speed of b relative to a)";
+  if (std::abs(j.ratio) > 1e6 || std::abs(j.ratio) < 1e-6)
+    return "a ratio beyond 1e6 (or below 1e-6) in size is no gear: the equations would drown "
+           "in rounding";
+  const Point *a = m.point(j.a), *b = m.point(j.b);
+  const BodyId c = carrierOf(m, j);
+  const Body* cb = m.body(c);
+  const std::string carrier = cb ? "\"" + cb->name + "\"" : "the ground";
+  where = JointField::B;
+  if (a->body == b->body) return "a and b are on one body: a gear couples two bodies";
+  for (const auto& [p, field] : {std::pair{a, JointField::A}, std::pair{b, JointField::B}}) {
+    where = field;
+    if (p->body == c)
+      return "\"" + m.pointLabel(p->id) + "\" is on the carrier " + carrier +
+             " itself: a gear turns relative to its carrier";
+    if (!pinnedThere(m, *p, c)) {
+      const Body* pb = m.body(p->body);
+      return "\"" + m.pointLabel(p->id) + "\" is not where body \"" + (pb ? pb->name : "?") +
+             "\" is pinned to the carrier " + carrier +
+             ": a gear's centres are its bodies' pivots on the carrier";
+    }
+  }
+  return {};
+}
+
+bool compile(const Mechanism& m, const Joint& j, const Frames& f, std::vector<Row>& rows,
+             std::string& why) {
+  const int c = f.body(carrierOf(m, j));
+  if (c < -1) {
+    why = "unknown carrier";
+    return false;
+  }
+  Row r;
+  r.kind = Primitive::Angles;
+  r.body[0] = f.point(j.b)->body;
+  r.body[1] = f.point(j.a)->body;
+  r.body[2] = c;
+  r.c[0] = 1;
+  r.c[1] = -j.ratio;
+  r.c[2] = j.ratio - 1;
+  rows.push_back(r);
+  return true;
+}
+
+CentreData centre(const Mechanism& m, const Joint& j) {
+  const Point *a = m.point(j.a), *b = m.point(j.b);
+  CentreData c;
+  c.rule = CentreRule::Weighted;
+  c.bodies[0] = c.pBody[0] = a->body;
+  c.bodies[1] = c.pBody[1] = b->body;
+  c.p[0] = a->pos;
+  c.p[1] = b->pos;
+  c.ratio = j.ratio;
+  return c;
+}
+
+void symbol(const Mechanism& m, const Joint& j, JointSymbol& s) {
+  const Point *a = m.point(j.a), *b = m.point(j.b);
+  s.bodies[0] = a ? a->body : BodyId{};
+  s.bodies[1] = b ? b->body : BodyId{};
+  s.carrier = carrierOf(m, j);
+  if (!a || !b) return;
+  const double d = (a->pos - b->pos).norm(), r = std::abs(j.ratio);
+  if (d > 0) s.direction = (b->pos - a->pos) / d;
+  s.belt = j.ratio > 0;
+  if (!s.belt) {
+    s.radius[0] = r * d / (1 + r);
+    s.radius[1] = d / (1 + r);
+  } else {
+    // Pulleys turn in the ratio of their radii: |ratio| = radius at a / radius at b.
+    s.radius[0] = r >= 1 ? d / 3 : r * d / 3;
+    s.radius[1] = r >= 1 ? d / (3 * r) : d / 3;
+  }
+}
+
+void place(const Mechanism&, const Joint& j, const Pose& pose, JointSymbol& s) {
+  s.at = pose.point(j.a);
+  s.at2 = pose.point(j.b);
+  for (int k = 0; k < 2; ++k) s.angle[k] = pose.body(s.bodies[k]).R.angle();
+}
+
+}  // namespace
+
+const ElementKind& gearElement() {
+  static const ElementKind kind{
+      JointType::Gear, "gear",  "couples the bodies of points \"a\" and \"b\"",
+      Role::Coupling,  1,       kFields,
+      check,           compile, centre,
+      symbol,          place};
+  return kind;
+}
+
+}  // namespace linkage

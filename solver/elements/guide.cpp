@@ -1,0 +1,80 @@
+#include "elements/guide.h"
+
+#include <cmath>
+
+namespace linkage {
+
+namespace {
+// Beyond this the arc is a straight line to every digit a drawing carries.
+constexpr double kLargestRadius = 1e12;  // mm
+}  // namespace
+
+bool circleThrough(const Vec2& a, const Vec2& b, const Vec2& c, Vec2& centre, double& radius) {
+  // Relative to a: the centre x solves 2 (b - a) . x = |b - a|^2, 2 (c - a) . x = |c - a|^2.
+  const Vec2 u = b - a, v = c - a;
+  const double det = 2 * cross(u, v);
+  if (!(std::abs(det) > 1e-12 * u.norm() * v.norm())) return false;
+  const Vec2 x((v.y() * u.squaredNorm() - u.y() * v.squaredNorm()) / det,
+               (u.x() * v.squaredNorm() - v.x() * u.squaredNorm()) / det);
+  centre = a + x;
+  radius = x.norm();
+  return std::isfinite(radius);
+}
+
+std::optional<Guide> guideOf(const Slot& s, std::string* why) {
+  auto fail = [&](const char* text) -> std::optional<Guide> {
+    if (why) *why = text;
+    return std::nullopt;
+  };
+  Guide g;
+  g.p0 = s.p0;
+  g.p1 = s.p1;
+  if (!s.mid) {
+    const Vec2 d = s.p1 - s.p0;
+    const double scale = std::max(s.p0.cwiseAbs().maxCoeff(), s.p1.cwiseAbs().maxCoeff());
+    if (!(d.norm() > 1e-12 * scale) || !(d.norm() > 0)) return fail("zero-length slot");
+    g.direction = d.normalized();
+    g.normal = perp(g.direction);
+    return g;
+  }
+  const Vec2 m = *s.mid;
+  if (s.p0 == s.p1 || s.p0 == m || m == s.p1) return fail("two of the arc's three points coincide");
+  if (!circleThrough(s.p0, m, s.p1, g.centre, g.radius) || g.radius > kLargestRadius)
+    return fail("its three points lie on one line: an arc needs them off it");
+  g.arc = true;
+  const Vec2 e0 = s.p0 - g.centre, em = m - g.centre, e1 = s.p1 - g.centre;
+  g.a0 = std::atan2(e0.y(), e0.x());
+  // Counter-clockwise from p0, mid comes before p1 exactly when the arc runs that way.
+  auto ccwAngle = [&](const Vec2& e) {
+    double a = std::atan2(cross(e0, e), e0.dot(e));
+    return a < 0 ? a + 2 * M_PI : a;
+  };
+  const double toMid = ccwAngle(em), toEnd = ccwAngle(e1);
+  g.sweep = toMid < toEnd ? toEnd : toEnd - 2 * M_PI;
+  return g;
+}
+
+double Guide::length() const {
+  return arc ? radius * std::abs(sweep) : (p1 - p0).norm();
+}
+
+Vec2 Guide::normalAt(const Vec2& p) const {
+  if (!arc) return normal;
+  const Vec2 d = p - centre;
+  const double n = d.norm();
+  return n > 0 ? Vec2(d / n) : Vec2(Rot::of(a0) * Vec2::UnitX());
+}
+
+Vec2 Guide::tangentAt(const Vec2& p) const {
+  if (!arc) return direction;
+  const Vec2 t = perp(normalAt(p));
+  return sweep >= 0 ? t : Vec2(-t);
+}
+
+Vec2 Guide::at(double t) const {
+  if (!arc) return p0 + t * direction;
+  const double a = a0 + (sweep >= 0 ? t : -t) / radius;
+  return centre + radius * Vec2(std::cos(a), std::sin(a));
+}
+
+}  // namespace linkage

@@ -1,0 +1,10 @@
+// The pin-in-slot element: see pin_in_slot.cpp (its equations on top) and linkage/elements.h.
+#pragma once
+
+#include "linkage/elements.h"
+
+namespace linkage {
+
+const ElementKind& pinInSlotElement();
+
+}  // namespace linkage

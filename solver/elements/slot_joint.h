@@ -1,0 +1,28 @@
+// What the kinds that run in a slot (slider, pin-in-slot) share: their fields, the guide of
+// their slot, the bodies they join and where they are drawn.
+#pragma once
+
+#include <optional>
+
+#include "elements/guide.h"
+#include "linkage/elements.h"
+
+namespace linkage::slot_joint {
+
+inline constexpr FieldSpec kFields[] = {{JointField::A, true}, {JointField::Slot, true}};
+
+inline std::string noCheck(const Mechanism&, const Joint&, JointField&) {
+  return {};
+}
+
+// The guide of the joint's slot (its drawn curve), or none with why.
+std::optional<Guide> guide(const Frames& f, const Joint& j, std::string& why);
+
+// The pair the joint is about (the body of a, the slot's body), for its centre's data.
+CentreData pair(const Mechanism& m, const Joint& j);
+
+// The bodies and the slot; placed at a (a block along its slot there).
+void symbol(const Mechanism& m, const Joint& j, JointSymbol& s);
+void place(const Mechanism& m, const Joint& j, const Pose& pose, JointSymbol& s);
+
+}  // namespace linkage::slot_joint

@@ -1,0 +1,62 @@
+// Edits of a mechanism as the drawing tools make them, on a copy of the design, in sketch
+// coordinates (the tools convert from the view). Names follow the textbook: links `link2`,
+// `link3`... by their number, points by letters shared by the two points of a pin, slots `s1`...
+// Each returns what it made, or an empty id with `why` set when the edit makes no sense.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linkage/model.h"
+
+namespace linkage {
+
+// A fresh, unique name of each kind.
+std::string newBodyName(const Mechanism& m, const std::string& stem = "link");
+std::string newPointName(const Mechanism& m, BodyId body);
+std::string newSlotName(const Mechanism& m, BodyId body);
+// Is `name` free for a body (other than `self`)? Names are what the file refers to.
+bool bodyNameFree(const Mechanism& m, const std::string& name, BodyId self = {});
+bool pointNameFree(const Mechanism& m, BodyId body, const std::string& name, PointId self = {});
+bool slotNameFree(const Mechanism& m, BodyId body, const std::string& name, SlotId self = {});
+
+// A link through the given points, at `at` (where it is drawn now), each pinned to an existing
+// point of another body when `pinTo` is set (drawn where that point is now).
+struct LinkVertex {
+  Vec2 at = Vec2::Zero();
+  PointId pinTo;
+};
+BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::string* why = nullptr);
+
+// A ground point at `at`, pinned to `point` when one is given (a ground pivot; `at` is where
+// the point is now).
+PointId addGroundPoint(Mechanism& m, const Vec2& at, PointId point = {});
+// A point added to a body (a bar becomes a plate).
+PointId addBodyPoint(Mechanism& m, BodyId body, const Vec2& at);
+SlotId addBodySlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& p1);
+// A slider block at `point` (drawn at `at`, where the point is now) sliding in `slot`: a body
+// of its own with its point pinned to `point` and a slider joint in the slot.
+BodyId addBlock(Mechanism& m, PointId point, SlotId slot, const Vec2& at,
+                std::string* why = nullptr);
+JointId addPinInSlot(Mechanism& m, PointId point, SlotId slot, std::string* why = nullptr);
+// A gear or belt between two bodies pivoted on one body, the carrier (the ground preferred):
+// b's body turns `ratio` times as fast as a's relative to it (negative: gears in mesh, positive:
+// a belt), with the centres at their pivots. The pivots: the points where each is pinned to
+// the carrier. Refused with `why` when they share no carrier or are one body.
+JointId addCoupling(Mechanism& m, BodyId a, BodyId b, double ratio, std::string* why = nullptr);
+// The bodies `body` is pinned to (its possible carriers), the ground first.
+std::vector<BodyId> pivotsOf(const Mechanism& m, BodyId body);
+// An arc slot from p0 through mid to p1 on a body; none when the three points are on a line.
+SlotId addBodyArcSlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& mid, const Vec2& p1);
+// Makes a pin the driver (its ground side, if it has one, becomes `a`, so the body turns
+// relative to the frame); keeps the rpm and direction of a previous driver.
+bool setDriver(Mechanism& m, JointId pin, std::string* why = nullptr);
+// Toggles a point among the outputs.
+void toggleOutput(Mechanism& m, PointId p);
+// A slider becomes a pin-in-slot and back.
+bool changeJointType(Mechanism& m, JointId j, JointType type, std::string* why = nullptr);
+// The points pinned to `p` (and theirs, transitively), `p` included: one place in the drawing.
+std::vector<PointId> pinnedTogether(const Mechanism& m, PointId p);
+
+}  // namespace linkage

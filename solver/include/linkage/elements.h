@@ -1,0 +1,127 @@
+// The element kinds a joint can be (pin, slider, pin-in-slot, gear), each described once, in
+// its own files under solver/elements/ (equations on top), and registered in one table
+// (elements/registry.cpp). Everything else asks this table; nothing else branches on the kind.
+//
+// A kind is: its file fields (which it reads, which it needs, and what it checks beyond the
+// references), its rows (what it compiles to: elements/rows.h), what it says of the instant
+// centre of the bodies it joins, its structural role and equation count, and the symbol it is
+// drawn with. docs/solver.md says how to add one.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "linkage/model.h"
+
+namespace linkage {
+
+struct Row;    // elements/rows.h
+class Frames;  // elements/frames.h: how the compiler places points in body frames
+
+// Positions at a pose, as a drawing or the instant centres see them.
+struct Pose {
+  virtual ~Pose() = default;
+  virtual Vec2 point(PointId p) const = 0;
+  virtual Transform body(BodyId b) const = 0;
+};
+
+// The fields of a joint object in a file, and where each goes in a Joint.
+enum class JointField : unsigned char { A, B, Slot, Carrier, Ratio };
+const char* fieldKey(JointField f);  // "a", "b", "slot", "carrier", "ratio"
+struct FieldSpec {
+  JointField field;
+  bool required;
+};
+
+// What a kind does structurally. Revolute: two points are one (relative rotation free; the only
+// role a driver can have). Prismatic: a block keeps its angle to a slot (drawn as a block).
+// PointOnCurve: a point runs in a slot, rotation free. Coupling: the bodies' rotations are tied
+// (gears, belts).
+enum class Role : unsigned char { Revolute, Prismatic, PointOnCurve, Coupling };
+
+// What a joint says by itself about the instant centre of two bodies, from sketch data: points
+// p[k] fixed in body pBody[k], a direction n fixed in body nBody. At a pose (world coordinates):
+//   AtPoint:     the centre is p[0].
+//   AtInfinity:  the centre is at infinity in the direction n (relative translation normal to it).
+//   LineAlong:   the centre is on the line through p[0] along n.
+//   LineThrough: the centre is on the line through p[0] and p[1].
+//   Weighted:    the centre is (p[0] - ratio p[1]) / (1 - ratio) (homogeneous: at infinity when
+//                ratio = 1): where the two bodies' velocities are equal for a coupling.
+enum class CentreRule : unsigned char { AtPoint, AtInfinity, LineAlong, LineThrough, Weighted };
+struct CentreData {
+  CentreRule rule = CentreRule::AtPoint;
+  BodyId bodies[2];  // the pair it is a centre of
+  BodyId pBody[2];
+  Vec2 p[2] = {Vec2::Zero(), Vec2::Zero()};
+  BodyId nBody;
+  Vec2 n = Vec2::Zero();
+  double ratio = 0;
+};
+
+// A Line rule at a pose: a point of the line and its direction (z = 0), or two points
+// (homogeneous, z = 1); false for the rules that give a point.
+bool centreLineAt(const CentreData& c, const Pose& pose, Eigen::Vector3d through[2]);
+
+// How a joint is drawn, in world millimetres at a pose: the kind's symbol() fills what does not
+// move, its place() the rest at each pose.
+struct JointSymbol {
+  JointId joint;
+  JointType type = JointType::Pin;
+  BodyId bodies[2];  // the bodies it joins: of a and b, or of a and the slot
+  BodyId carrier;    // a coupling's carrier (the ground's id when it has none)
+  SlotId slot;
+  bool groundPivot = false;  // one side is the ground
+  Vec2 at = Vec2::Zero();    // the joint's point; a coupling: the centre of a
+  Vec2 at2 = Vec2::Zero();   // a coupling: the centre of b
+  // A block: along its slot where it is (an arc's tangent); a coupling: from a to b as drawn.
+  Vec2 direction = Vec2::UnitX();
+  double radius[2] = {0, 0};  // a coupling: pitch radii at a and b (pulleys for a belt)
+  double angle[2] = {0, 0};   // a coupling: each body's rotation from the drawing (rad)
+  bool belt = false;          // a coupling drawn as two pulleys and a belt
+};
+
+struct ElementKind {
+  JointType type;
+  const char* name;   // in files, messages and the command line
+  const char* joins;  // what it joins, for messages: `joins points "a" and "b"`
+  Role role;
+  int equations;  // scalar equations (its rows)
+  std::span<const FieldSpec> fields;
+
+  // What the references alone do not check (a ratio of 0, a gear not on its carrier's pins):
+  // the field it is about and why, or an empty string when the joint is sound. The references
+  // are known to resolve when it is called.
+  std::string (*check)(const Mechanism& m, const Joint& j, JointField& where);
+  // Its rows (elements/rows.h), appended to `rows`; false with `why` where it cannot have any.
+  bool (*compile)(const Mechanism& m, const Joint& j, const Frames& f, std::vector<Row>& rows,
+                  std::string& why);
+  CentreData (*centre)(const Mechanism& m, const Joint& j);
+  void (*symbol)(const Mechanism& m, const Joint& j, JointSymbol& s);
+  void (*place)(const Mechanism& m, const Joint& j, const Pose& pose, JointSymbol& s);
+
+  bool reads(JointField f) const;
+};
+
+const ElementKind& elementKind(JointType t);
+// nullptr for a name no kind has.
+const ElementKind* elementKindNamed(std::string_view name);
+// Every kind, in JointType order.
+std::span<const ElementKind* const> elementKinds();
+// The names for a message: "pin", "slider", "pin-in-slot" or "gear" (quoted).
+std::string elementKindNames();
+const char* toString(JointType t);
+inline const ElementKind& kindOf(const Joint& j) {
+  return elementKind(j.type);
+}
+
+// A short description for messages, e.g. `joints[2] (slider slider4.E in disk.B)`.
+std::string jointLabel(const Mechanism& m, JointId id);
+// Checks every joint's kind-specific rules (check()) in file order: "" when all hold, else the
+// first problem as `joints[3].ratio: ...`, with the joint's index in `index`.
+std::string checkJoints(const Mechanism& m, int* index = nullptr);
+// Whether two kinds read the same fields (a joint can change from one into the other).
+bool sameFields(JointType a, JointType b);
+
+}  // namespace linkage

@@ -1,0 +1,148 @@
+// Closed-form kinematics for mechanisms built from a driven crank, gear-coupled bodies and dyads
+// (Assur groups of class II), solved one group after another from the ground outwards, in the
+// order of the structural decomposition (structure/decomposition.h), as a designer does by hand.
+// The same equations as the general solve, ordered into a block-triangular sequence:
+//
+//   crank  body B pinned to a known body K at the driver:  theta_B = theta_K +- sigma phi,
+//          r_B from the pin.
+//   geared body B pinned to a known body K, its angle fixed by a coupling's row (a gear or belt)
+//          over known bodies: theta_B = (value - sum of c_k theta_k over the others) / c_B, and
+//          likewise its rates; r_B from the pin.
+//   RRR    bodies B1, B2: B1 pinned to known K1 at P1, B2 to known K2 at P2, B1-B2 pinned at C.
+//          C = intersection of circles (P1, d1) and (P2, d2), on the side the drawing chose.
+//          Velocities: w1 perp(C - P1) - w2 perp(C - P2) = v_P2 - v_P1 (2 x 2), and likewise
+//          for accelerations with the centripetal terms on the right.
+//   RRP    rod B1 pinned to known K1 at P1, block B2 pinned to B1 at C and sliding in a slot of
+//          known K2 (angle of B2 = angle of K2): C = intersection of circle (P1, d1) with the
+//          slot's line shifted by the block's offset; w1 perp(C - P1) - s' dir = V0 - v_P1.
+//   RP     body B1 pinned to known K1 at P1 with a point C in a slot of known K2 (pin-in-slot):
+//          the RRP equations without a block.
+//   RC     the same in an arc slot: C on the circle (centre P2 on K2, radius d2), the RRR
+//          equations with the radius as the second link (its angle is not a body's).
+//   core   one body held by three scalar conditions to known bodies, its slider blocks
+//          eliminated (core_group.h): a 3 x 3 Newton, the one group here that iterates.
+// Every group's unknowns follow from known bodies, so no factorisation of the whole system is
+// needed: a step costs a few dozen flops per body. The branch (which of the two
+// intersections) is the drawn one and never changes: where a group cannot close (a negative
+// discriminant) or its 2 x 2 system is singular, the plan reports failure and the general solver
+// takes over and explains it.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "kinematics/core_group.h"
+#include "kinematics/motion.h"
+#include "linkage/model.h"
+#include "structure/decomposition.h"
+#include "system/system.h"
+
+namespace linkage {
+
+class ClosedFormPlan {
+ public:
+  // A plan when every group of the decomposition `d` of `sys` is of these kinds (no redundant
+  // joints, no held coordinates), with branches taken from the assembled configuration `at`
+  // (its positions); nullopt otherwise (closed_form_build.cpp). `joints`: Mechanism::joints'
+  // size.
+  static std::optional<ClosedFormPlan> build(const Decomposition& d, const System& sys, int joints,
+                                             const Motion& at);
+
+  // The motion at driver angle phi (positions, d/dphi and d2/dphi2 of every coordinate) from the
+  // previous one (whole turns are counted from it, branch crossings and core groups predicted
+  // from its rates). False where a group cannot close or is singular; next is then partial and
+  // must be discarded.
+  // With accelerations false, the groups' acceleration solves are left out (NaN instead).
+  bool solve(const System& sys, const Motion& prev, double phi, Motion& next,
+             bool accelerations = true) const;
+
+  // After an edit of dimensions (the same topology, so the same groups in the same order) whose
+  // plan before the edit was `before`: the groups whose geometry changed, and those that
+  // depend on one, are solved again at prev.phi from prev (the pose before the edit, in the
+  // new body frames), on the branches of `before`; every other group keeps its bodies'
+  // motion from prev exactly. Returns the number of groups solved; -1 where the plans differ
+  // in their groups, or a group cannot close or is singular there.
+  int resolveEdited(const System& sys, const ClosedFormPlan& before, const Motion& prev,
+                    Motion& next);
+
+  int groups() const { return static_cast<int>(groups_.size()); }
+  // The group that solves body b (a system body index), -1 for none; the group a joint (an
+  // index in Mechanism::joints) belongs to.
+  int groupOfBody(int b) const { return b >= 0 ? bodyGroup_[b] : -1; }
+  int groupOfJoint(int j) const { return j >= 0 ? jointGroup_[j] : -1; }
+  // Whether a group has a second assembly (its mirror closure): every kind but the crank and a
+  // geared body. A
+  // dyad's joint C is the other intersection of its two circles (RRR) or of its circle and line
+  // (RRP, RP); a core's pose the other root of its rows (core_group.h: corePose).
+  bool hasMirror(int g) const {
+    return g >= 0 && groups_[g].kind != Kind::Crank && groups_[g].kind != Kind::Geared;
+  }
+  // The group's unknown bodies.
+  std::vector<int> bodiesOf(int g) const;
+
+  // Puts group g on its other assembly at prev.phi: g is solved again on the other branch, and
+  // every group that depends on it on its own branch, from prev (the motion now); other bodies
+  // keep prev's motion. The plan keeps the new branch. False, with the plan unchanged, where
+  // g has no mirror, or a group cannot close or is singular on the other assembly there.
+  bool flip(int g, const System& sys, const Motion& prev, Motion& next);
+
+ private:
+  class Builder;
+  enum class Kind { Crank, Geared, RRR, RRP, RP, RC, Core };
+  struct Group {
+    Kind kind = Kind::Crank;
+    int b1 = -1, b2 = -1;  // unknown bodies (b2 only for RRR and RRP)
+    int k1 = -1, k2 = -1;  // known bodies they attach to (-1 ground)
+    int k3 = -1;           // Geared: k2, k3 the other bodies of the coupling's row
+    int angles = -1;       // Geared: the coupling's row (System::cons)
+    Vec2 p1k = Vec2::Zero(), p1 = Vec2::Zero();  // pin to k1: on k1, on b1
+    Vec2 c1 = Vec2::Zero(), c2 = Vec2::Zero();   // the joint C: on b1 (and on b2 for RRR, RRP)
+    Vec2 p2 = Vec2::Zero(), p2k = Vec2::Zero();  // RRR: pin to k2: on b2, on k2 (RC: centre)
+    Vec2 u = Vec2::Zero(), n = Vec2::Zero(),
+         d = Vec2::Zero();   // RRP, RP: slot point, unit normal and direction on k2
+    Vec2 q2 = Vec2::Zero();  // RRP: the block's point on the slot line
+    Rot rot1, rot2;          // directions of (c1 - p1) and (c2 - p2) on their bodies
+    double d1 = 0, d2 = 0;   // and their lengths
+    double sign = 1;         // Crank: +-sigma; RRR, RRP, RP, RC: the drawn branch
+    int core = -1;           // Core: index into cores_
+  };
+  // Solves one group into next from prev (h radians of crank later, crank rotation `crank`).
+  // A jump (h = 0, another assembly of it or of a group it depends on): no continuity with
+  // prev is asked for; whole turns are the nearest to prev's angles.
+  bool solveGroup(const Group& g, const System& sys, const Motion& prev, double h, const Rot& crank,
+                  Motion& next, bool jump = false) const;
+  // The dyads' joint C from the pin P1 on k1 (p1: its position, velocity, acceleration) and
+  // `Cpred` (where the motion carries C; refused when it is on the other side of the branch
+  // line): on two circles (RRR, RC) or a circle and a line (RRP, RP). b1's motion follows
+  // from out; the second body's, when there is one, is set here.
+  struct Dyad {
+    Vec2 u1 = Vec2::Zero();  // C - P1
+    double w1 = 0, al1 = 0;
+  };
+  // (Inlined into solveGroup: a call each would cost the slider-crank's step 5%.)
+  [[gnu::always_inline]] inline bool circles(const Group& g, const Motion& prev, const Vec2& Cpred,
+                                             const PointState& p1, Motion& next, bool jump,
+                                             Dyad& out) const;
+  [[gnu::always_inline]] inline bool line(const Group& g, const Vec2& Cpred, const PointState& p1,
+                                          Motion& next, bool jump, Dyad& out) const;
+  // Solves again, at prev.phi, the groups from `first` on that are `first` or depend on a body
+  // marked in `moved` (which gets their bodies); the others keep next's motion. The number of
+  // groups solved, -1 where one cannot be.
+  int resolveFrom(size_t first, const System& sys, const Motion& prev, Motion& next,
+                  std::vector<char>& moved, bool jump,
+                  const ClosedFormPlan* before = nullptr) const;
+  static bool sameGeometry(const Group& a, const Group& b, const ClosedFormPlan& pa,
+                           const ClosedFormPlan& pb);
+  // The group's unknown bodies, then the known bodies it reads (-1 for ground).
+  void bodiesOf(const Group& g, std::vector<int>& unknown, std::vector<int>& known) const;
+  // Geared: theta, its rate and acceleration from the coupling's row over the known bodies.
+  static void coupledAngle(const Group& g, const System& sys, const Motion& next, double& theta,
+                           double& w, double& al);
+
+  std::vector<Group> groups_;
+  std::vector<CoreGroup> cores_;
+  std::vector<int> bodyGroup_, jointGroup_;
+};
+
+}  // namespace linkage

@@ -1,0 +1,299 @@
+// Loading and editing a mechanism (KinematicsState): compile, analyse, assemble, start; and the
+// three ways an edit is re-solved from the current pose, cheapest first.
+#include <cmath>
+#include <cstdio>
+
+#include "kinematics/kinematics_state.h"
+#include "linkage/elements.h"
+
+namespace linkage {
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+// q of `next` (a compiled edit) that puts every body `old` also has where it is now: the rigid
+// displacement from the drawing (rotation, translation) carried over to its new frame.
+Eigen::VectorXd carriedPose(const System& old, const Eigen::VectorXd& oldQ, const System& next) {
+  Eigen::VectorXd warm = sketchCoordinates(next);
+  for (int k = 0; k < next.nBodies; ++k) {
+    const int o = old.bodyIndex(next.bodyIds[k]);
+    if (o < 0) continue;
+    const double th = oldQ[3 * o + 2];
+    const Rot R = Rot::of(th);
+    const Vec2 t = Vec2(oldQ[3 * o], oldQ[3 * o + 1]) - R * old.frameOrigin[o];
+    const Vec2 r = R * next.frameOrigin[k] + t;
+    warm.segment<3>(3 * k) << r.x(), r.y(), th;
+  }
+  return warm;
+}
+
+}  // namespace
+
+Status KinematicsState::load(const Mechanism& m) {
+  return prepare(m, nullptr, 0.0);
+}
+
+Status KinematicsState::analyse(const Mechanism& m, const Eigen::VectorXd& q) {
+  structure = analyzeStructure(sys, q, opt.sparseFrom);
+  decomposition = decompose(sys);
+  if (sys.hasDriver && !structure.driverMoves) {
+    const JointId dj = m.driver->joint;
+    Status s = Status::failure(StatusCode::Locked, "");
+    s.joints.push_back(dj);
+    s.message = "the driver at " + jointLabel(m, dj) + " cannot turn: " +
+                (structure.mobility == 0
+                     ? "the mechanism has no degree of freedom (it is a structure)"
+                     : "either the other joints hold the two bodies it joins rigidly together, "
+                       "or the mechanism is drawn at a dead point (a limit position of the crank, "
+                       "where links line up): draw it a little away from there");
+    return s;
+  }
+  if (!structure.redundantJoints.empty()) {
+    Note n{Note::Kind::RedundantJoints, "redundant joint(s): ", {}, {}};
+    for (int j : structure.redundantJoints) {
+      n.joints.push_back(m.joints[j].id);
+      n.text += (n.joints.size() > 1 ? ", " : "") + jointLabel(m, m.joints[j].id);
+    }
+    n.text += " repeat constraints of the others; checked, not needed by the solve";
+    notes.push_back(std::move(n));
+  }
+  if (structure.freeAfterDriver > 0) {
+    Note n{Note::Kind::FreedomsHeld, "", {}, {}};
+    n.text = std::to_string(structure.freeAfterDriver) +
+             (sys.hasDriver ? " degree(s) of freedom the driver does not determine"
+                            : " degree(s) of freedom and no driver") +
+             " (bodies " + bodyList(structure.freeBodies) + "): held where they are drawn";
+    for (int k : structure.freeBodies) n.bodies.push_back(sys.bodyIds[k]);
+    notes.push_back(std::move(n));
+  }
+  return Status::success();
+}
+
+void KinematicsState::resetSolver(const Eigen::VectorXd& q) {
+  std::vector<int> active = structure.activeRows;
+  for (int col : structure.holdCoordinates) {
+    addHold(sys, col, q[col]);
+    active.push_back(sys.nRows - 1);
+  }
+  newton.reset(sys, active, opt.sparseFrom);
+}
+
+Status KinematicsState::start(const Eigen::VectorXd& q, double phi) {
+  Snapshot snap;
+  snap.q = q;
+  if (!newton.derivatives(sys, q, snap.dq, snap.ddq)) {
+    Status s = Status::failure(
+        StatusCode::Singular,
+        "the mechanism is drawn in a singular position (links in line: a dead point or a "
+        "change point): velocities are not determined there; draw it a little away from it");
+    s.crankDeg = (phi - sys.startRad) / kDeg;
+    return s;
+  }
+  snap.fromCoordinates(phi, snap.q, snap.dq, snap.ddq);
+  snap.coordinates = true;
+  snap.regular = true;
+  reg = snap;
+  atSingular = false;
+  regSign = newton.detSign();
+  valid = true;
+  plan.reset();
+  if (opt.closedForm) {
+    plan = ClosedFormPlan::build(decomposition, sys, static_cast<int>(mech.joints.size()), reg);
+    // The plan must reproduce the configuration just solved, or it is not used.
+    next.coordinates = false;  // whatever next held before is not what the plan writes
+    if (plan && !(plan->solve(sys, reg, phi, next) &&
+                  (coordinates(next).q - reg.q).cwiseAbs().maxCoeff() <= 1e-9 * sys.size &&
+                  (next.dq - reg.dq).cwiseAbs().maxCoeff() <= 1e-7 * (1 + reg.dq.norm())))
+      plan.reset();
+  }
+  return Status::success();
+}
+
+bool KinematicsState::assembleOffLine(const Eigen::VectorXd& drawn, Eigen::VectorXd& q, double phi,
+                                      Status& s) {
+  // Links drawn in line (a four-bar with every pivot on one line) make rows dependent there that
+  // are not dependent anywhere else: a joint they leave open is then a loop that is too short or
+  // too long at that pose, or one that closes off the line, not a redundant joint in conflict.
+  // Turning the bodies a little (alternate ways, so that no two stay in line) tells the two
+  // apart: if fewer rows are dependent there, assemble again from there with those rows. Which
+  // side of the line the mechanism closes on is then the turn's, as a hand pushing a drawing off
+  // a dead point would choose; the note says how far it moved.
+  Eigen::VectorXd off = q;
+  for (int k = 0; k < sys.nBodies; ++k) off[3 * k + 2] += 1e-3 * (k % 2 ? -1 : 1) * (1 + k % 3);
+  if (analyzeStructure(sys, off, opt.sparseFrom).dependentRows.size() >=
+      structure.dependentRows.size())
+    return false;
+  notes.clear();
+  assembly = {};
+  Status again = analyse(mech, off);
+  if (again.ok()) {
+    resetSolver(off);
+    again = assemble(mech, sys, structure, newton, off, phi, assembly);
+  }
+  if (again.ok()) again = checkRedundant(mech, sys, structure, off, phi);
+  if (!again.ok()) {
+    // A loop that cannot close off the line either: that is the cause. Anything else (the
+    // driver locked: a structure whose redundancy is real, as a parallelogram's fifth link
+    // that is drawn too long) leaves the conflict as the first analysis found it.
+    if (again.code == StatusCode::AssemblyFailed) s = again;
+    return false;
+  }
+  q = off;
+  assembly.maxMove = largestMove(mech, sys, drawn, q, &assembly.body);
+  assembly.moved = assembly.maxMove > 1e-9 * sys.size;
+  return true;
+}
+
+Status KinematicsState::prepare(const Mechanism& m, const Eigen::VectorXd* warm, double warmPhi) {
+  valid = false;
+  notes.clear();
+  assembly = {};
+  plan.reset();
+  Status s;
+  std::optional<System> compiled = compile(m, s);
+  if (!compiled) return s;
+  mech = m;
+  sys = std::move(*compiled);
+
+  Eigen::VectorXd q = warm ? *warm : sketchCoordinates(sys);
+  const Eigen::VectorXd drawn = q;
+  const double phi = warm ? warmPhi : 0.0;
+  if (s = analyse(mech, q); !s.ok()) return s;
+  resetSolver(q);
+  if (s = assemble(mech, sys, structure, newton, q, phi, assembly); !s.ok()) return s;
+  if (s = checkRedundant(mech, sys, structure, q, phi);
+      !s.ok() && !assembleOffLine(drawn, q, phi, s))
+    return s;
+  if (!warm && assembly.moved) {
+    const Body* b = mech.body(assembly.body);
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "the drawing does not close exactly: assembled by moving body '%s' by up to "
+                  "%.6g mm (bodies keep their shape)",
+                  b ? b->name.c_str() : "?", assembly.maxMove);
+    notes.push_back(Note{Note::Kind::AssemblyMoved, buf, {}, {assembly.body}});
+  }
+  if (s = start(q, phi); !s.ok()) return s;
+  if (!warm && sys.hasDriver && sys.startRad != 0) {
+    s = moveToPhi(sys.startRad);
+    if (!s.ok()) {
+      valid = false;
+      s.message = "cannot turn the crank to its start angle (start_deg): " + s.message;
+      return s;
+    }
+  }
+  return Status::success();
+}
+
+bool KinematicsState::editInPlace(const Mechanism& m, const std::vector<BodyId>& reshaped) {
+  if (!plan || atSingular) return false;
+  Status s;
+  std::optional<System> edited = compile(m, s);
+  if (!edited || edited->nRows != sys.nRows || edited->nBodies != sys.nBodies) return false;
+  // The current pose in the new body frames: a reshaped body keeps its rigid displacement from
+  // the drawing (its frame origin, the centroid of its points, moved with the points).
+  Motion warm = reg;
+  for (BodyId id : reshaped) {
+    const int k = edited->bodyIndex(id);
+    if (k < 0) continue;  // ground: no frame to move
+    BodyState& b = warm.body[k];
+    const Vec2 shift = b.R * (edited->frameOrigin[k] - sys.frameOrigin[k]);
+    b.r += shift;
+    b.v += b.w * perp(shift);
+    b.a += b.al * perp(shift) - b.w * b.w * shift;
+  }
+  // The same topology: the same decomposition.
+  std::optional<ClosedFormPlan> editedPlan =
+      ClosedFormPlan::build(decomposition, *edited, static_cast<int>(m.joints.size()), warm);
+  if (!editedPlan) return false;
+  Motion solved;
+  const int groups = editedPlan->resolveEdited(*edited, *plan, warm, solved);
+  if (groups < 0) return false;
+  mech = m;
+  sys = std::move(*edited);
+  plan = std::move(editedPlan);
+  static_cast<Motion&>(reg) = std::move(solved);
+  reg.regular = true;
+  reg.coordinates = false;
+  // The same rows, so the structure and the Newton solver's row map stay as they are.
+  assembly = {};
+  notes.erase(std::remove_if(notes.begin(), notes.end(),
+                             [](const Note& n) { return n.kind == Note::Kind::AssemblyMoved; }),
+              notes.end());
+  lastEditGroups = groups;
+  lastEdit = EditPath::InPlace;
+  return true;
+}
+
+bool KinematicsState::editKeepingAnalysis(const Mechanism& m) {
+  // The same joints and bodies: the structure analysis (which rows are independent, which
+  // coordinates are held) is kept, and so is the Newton solver (its row map and the sparse
+  // LU's analysis of J's pattern, which the joints fix); the edited drawing is re-assembled
+  // from the current pose at the current crank angle by Newton, or the damped assembly where
+  // the edit moved too much for it. It must land on the same branch, regular: the same sign of
+  // det J. Anything else (a rank that the edit changed shows as a singular J, or as redundant
+  // rows that no longer hold) is left to the whole analysis.
+  if (atSingular) return false;
+  Status s;
+  std::optional<System> edited = compile(m, s);
+  const int holds = static_cast<int>(structure.holdCoordinates.size());
+  if (!edited || edited->nRows != sys.nRows - holds) return false;
+  const Snapshot& now = coordinates(cur());
+  Eigen::VectorXd q = carriedPose(sys, now.q, *edited);
+  for (int col : structure.holdCoordinates) addHold(*edited, col, q[col]);
+  KinematicsState trial(opt);
+  trial.mech = m;
+  trial.sys = std::move(*edited);
+  trial.structure = structure;
+  trial.decomposition = decomposition;
+  trial.newton = std::move(newton);
+  const bool ok = trial.reassemble(q, now.phi) && trial.regSign == regSign;
+  if (!ok) {
+    newton = std::move(trial.newton);
+    return false;
+  }
+  trial.notes = notes;
+  trial.notes.erase(
+      std::remove_if(trial.notes.begin(), trial.notes.end(),
+                     [](const Note& n) { return n.kind == Note::Kind::AssemblyMoved; }),
+      trial.notes.end());
+  trial.revision = revision;
+  trial.lastEditGroups = -1;
+  trial.lastEdit = EditPath::KeptAnalysis;
+  *this = std::move(trial);
+  return true;
+}
+
+bool KinematicsState::reassemble(Eigen::VectorXd& q, double phi) {
+  const Eigen::VectorXd from = q;
+  if (!newton.solve(sys, q, phi, opt.newton).converged) {
+    q = from;
+    AssemblyReport moved;
+    if (!assemble(mech, sys, structure, newton, q, phi, moved).ok()) return false;
+  }
+  return checkRedundant(mech, sys, structure, q, phi).ok() && start(q, phi).ok();
+}
+
+Status KinematicsState::editFrom(const KinematicsState& old, const Mechanism& m) {
+  lastEditGroups = -1;
+  lastEdit = EditPath::Whole;
+  const Snapshot& now = old.coordinates(old.cur());
+  const double phi = now.phi;
+  Status s;
+  std::optional<System> next = compile(m, s);
+  if (!next) return s;
+  const Eigen::VectorXd warm = carriedPose(old.sys, now.q, *next);
+  if (s = prepare(m, &warm, phi); s.ok()) return s;
+  // The edit moved things too far for a warm start: assemble the drawing and turn the crank.
+  if (s = load(m); !s.ok()) return s;
+  if (s = moveToPhi(phi); !s.ok()) {
+    notes.push_back(
+        Note{Note::Kind::CrankMoved,
+             "the edited mechanism cannot be turned to the crank angle it was at: " + s.message,
+             s.joints, s.bodies});
+  }
+  return Status::success();
+}
+
+}  // namespace linkage

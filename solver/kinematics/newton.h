@@ -1,0 +1,80 @@
+// The position solve (Newton-Raphson on the independent equations, analytic Jacobian) and the
+// exact velocity and acceleration solves with the same Jacobian. Kinematics are in the crank
+// angle phi: J q' = -Phi_phi and J q'' = gamma(q'), so q' and q'' do not depend on the speed.
+//
+// J is factored with its theta columns divided by the mechanism size L (every entry O(1)), so
+// that the pivot ratio used to detect singular positions means the same at any scale.
+// Newton reuses the factorisation of its first iterate (chord steps) while the corrections
+// shrink at least fourfold; a poorer contraction refactors once, and a second one fails: near a
+// solution Newton contracts far faster, so a slow contraction means the start was not close.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <vector>
+
+#include "system/dense_lu.h"
+#include "system/sparse_lu.h"
+#include "system/system.h"
+
+namespace linkage {
+
+enum class NewtonFailure { None, Singular, Diverged, TooFar, MaxIterations };
+
+struct NewtonResult {
+  bool converged = false;
+  NewtonFailure failure = NewtonFailure::None;
+  int iterations = 0;
+  int factorizations = 0;
+  double residual = 0;  // max |Phi| at the end, mm
+};
+
+class NewtonSolver {
+ public:
+  // Prepares for the given rows (they must be independent and as many as coordinates). J is
+  // factored as a sparse matrix from `sparseFrom` coordinates on.
+  void reset(const System& sys, const std::vector<int>& activeRows, int sparseFrom = kSparseFrom);
+  bool sparse() const { return sparse_; }
+
+  // Every call takes the system it was reset for: the solver keeps no pointer to it, so the
+  // objects that own both can be copied and moved freely.
+  NewtonResult solve(const System& sys, Eigen::VectorXd& q, double phi, const NewtonOptions& opt);
+
+  // Factors J at q and solves q' and q''. False when J is singular there.
+  bool derivatives(const System& sys, const Eigen::VectorXd& q, Eigen::VectorXd& dq,
+                   Eigen::VectorXd& ddq);
+
+  // Of the last factorisation: sign of det J and min/max pivot magnitude.
+  int detSign() const { return sparse_ ? slu_.detSign() : lu_.detSign(); }
+  double pivotRatio() const { return sparse_ ? slu_.pivotRatio() : lu_.pivotRatio(); }
+  // Of the last derivatives(): the smaller of the pivot ratio and an inverse-iteration estimate
+  // of the smallest singular value of the scaled J (how close to singular the position is).
+  double nearness() const { return std::min(pivotRatio(), estimate_); }
+
+  // One full Newton correction at q (J factored there): q_next = q - delta. False if singular.
+  bool correction(const System& sys, const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta);
+
+  // Residual of the active rows at q (mm), for reports.
+  double residualNorm(const System& sys, const Eigen::VectorXd& q, double phi);
+  const std::vector<int>& rowMap() const { return rowMap_; }
+
+ private:
+  double inverseEstimate();
+  double estimate_ = 1;
+  bool factor(const System& sys, const Eigen::VectorXd& q);
+  void solveInPlace(Eigen::VectorXd& b) const;
+  // Body views at q; sin and cos are evaluated again only when q changed.
+  void viewsAt(const System& sys, const Eigen::VectorXd& q);
+  double tolerance(const System& sys, const Eigen::VectorXd& q, double relTol) const;
+
+  std::vector<int> rowMap_;
+  std::vector<BodyView> views_;
+  bool sparse_ = false;
+  Eigen::MatrixXd J_;
+  DenseLU lu_;
+  SparseJacobian Js_;
+  SparseLU slu_;
+  Eigen::VectorXd phi_, delta_, rhs_, viewsQ_;
+};
+
+}  // namespace linkage

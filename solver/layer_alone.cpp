@@ -1,0 +1,1 @@
+// Nothing: a layer of the solver linked on its own (CMakeLists.txt) needs a source of its own.

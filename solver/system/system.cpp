@@ -1,0 +1,284 @@
+#include "system/system.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "elements/coincident.h"
+#include "elements/on_circle.h"
+#include "elements/on_line.h"
+
+namespace linkage {
+
+int System::bodyIndex(BodyId id) const {
+  return id.owner == owner && id.value < bodyIndexById.size() ? bodyIndexById[id.value] : -1;
+}
+
+const PointLocation* System::point(PointId id) const {
+  return id.owner == owner && id.value < hasPoint.size() && hasPoint[id.value] ? &points[id.value]
+                                                                               : nullptr;
+}
+
+void addHold(System& sys, int col, double value) {
+  Row h;
+  h.kind = Primitive::Hold;
+  h.col = col;
+  h.value = value;
+  h.row = sys.nRows++;
+  sys.cons.push_back(h);
+}
+
+void makeViews(const System& sys, const Eigen::VectorXd& q, const Eigen::VectorXd* v,
+               std::vector<BodyView>& views) {
+  views.resize(sys.nBodies + 1);
+  views[0] = BodyView{};
+  for (int k = 0; k < sys.nBodies; ++k) {
+    BodyView& b = views[k + 1];
+    b.col = 3 * k;
+    b.r = Vec2(q[3 * k], q[3 * k + 1]);
+    b.theta = q[3 * k + 2];
+    b.R = Rot{std::cos(b.theta), std::sin(b.theta)};
+    if (v) {
+      b.v = Vec2((*v)[3 * k], (*v)[3 * k + 1]);
+      b.w = (*v)[3 * k + 2];
+    }
+  }
+}
+
+void setVelocities(const System& sys, const Eigen::VectorXd& v, std::vector<BodyView>& views) {
+  for (int k = 0; k < sys.nBodies; ++k) {
+    views[k + 1].v = Vec2(v[3 * k], v[3 * k + 1]);
+    views[k + 1].w = v[3 * k + 2];
+  }
+}
+
+namespace {
+
+double holdScale(const System& sys, int col) {
+  return col % 3 == 2 ? sys.size : 1.0;
+}
+
+double coordinate(const std::vector<BodyView>& views, int col) {
+  const BodyView& b = views[col / 3 + 1];
+  switch (col % 3) {
+    case 0:
+      return b.r.x();
+    case 1:
+      return b.r.y();
+    default:
+      return b.theta;
+  }
+}
+
+}  // namespace
+
+// The angle combination of an Angles row at the views' angles.
+static double angleSum(const Row& c, const std::vector<BodyView>& views) {
+  double sum = 0;
+  for (int k = 0; k < 3; ++k)
+    if (c.c[k] != 0) sum += c.c[k] * views[c.body[k] + 1].theta;
+  return sum;
+}
+
+void evalResidual(const System& sys, const std::vector<BodyView>& views, double phi,
+                  const std::vector<int>& rowMap, Eigen::VectorXd& out) {
+  const double L = sys.size;
+  for (const Row& c : sys.cons) {
+    const int r = rowMap[c.row];
+    if (r < 0 && (c.kind != Primitive::Coincident || rowMap[c.row + 1] < 0)) continue;
+    const BodyView& i = views[c.body[0] + 1];
+    const BodyView& j = views[c.body[1] + 1];
+    switch (c.kind) {
+      case Primitive::Coincident: {
+        const Vec2 e = coincident::residual(i, c.s[0], j, c.s[1]);
+        if (r >= 0) out[r] = e.x();
+        if (rowMap[c.row + 1] >= 0) out[rowMap[c.row + 1]] = e.y();
+        break;
+      }
+      case Primitive::OnLine:
+        out[r] = on_line::residual(i, c.s[0], j, c.s[1], c.n);
+        break;
+      case Primitive::OnCircle:
+        out[r] = on_circle::residual(i, c.s[0], j, c.s[1], c.c[0]);
+        break;
+      case Primitive::Angles:
+        out[r] = L * (angleSum(c, views) - c.value - c.driven * phi);
+        break;
+      case Primitive::Hold:
+        out[r] = holdScale(sys, c.col) * (coordinate(views, c.col) - c.value);
+        break;
+    }
+  }
+}
+
+namespace {
+
+// Writes into a row-mapped view of J (dense, sparse, or a pattern recorder): rows the map skips
+// are dropped.
+template <class Target>
+struct MappedRows {
+  Target& J;
+  const std::vector<int>& map;
+  int base;
+  double sink = 0;
+  double& operator()(int row, int col) {
+    const int r = map[base + row];
+    return r < 0 ? sink : J.coeffRef(r, col);
+  }
+};
+
+// Accumulates into entries of J that must be zero on entry.
+template <class Target>
+void addJacobian(const System& sys, const std::vector<BodyView>& views,
+                 const std::vector<int>& rowMap, Target& J) {
+  const double L = sys.size;
+  for (const Row& c : sys.cons) {
+    MappedRows<Target> rows{J, rowMap, c.row};
+    const BodyView& i = views[c.body[0] + 1];
+    const BodyView& j = views[c.body[1] + 1];
+    switch (c.kind) {
+      case Primitive::Coincident:
+        coincident::jacobian(rows, 0, i, c.s[0], j, c.s[1]);
+        break;
+      case Primitive::OnLine:
+        on_line::jacobian(rows, 0, i, c.s[0], j, c.n);
+        break;
+      case Primitive::OnCircle:
+        on_circle::jacobian(rows, 0, i, c.s[0], j, c.s[1], c.c[0]);
+        break;
+      case Primitive::Angles:
+        for (int k = 0; k < 3; ++k)
+          if (c.c[k] != 0 && c.body[k] >= 0) rows(0, 3 * c.body[k] + 2) += L * c.c[k];
+        break;
+      case Primitive::Hold:
+        rows(0, c.col) += holdScale(sys, c.col);
+        break;
+    }
+  }
+}
+
+// Records where addJacobian writes.
+struct PatternRecorder {
+  std::vector<Eigen::Triplet<double>> entries;
+  double sink = 0;
+  double& coeffRef(int row, int col) {
+    entries.emplace_back(row, col, 0.0);
+    return sink;
+  }
+};
+
+// Replays the recorded writes into their slots.
+struct SlotWriter {
+  Eigen::SparseMatrix<double>& J;
+  const int* slot;
+  double& coeffRef([[maybe_unused]] int row, [[maybe_unused]] int col) {
+    const int s = *slot++;
+    assert(J.innerIndexPtr()[s] == row && s >= J.outerIndexPtr()[col] &&
+           s < J.outerIndexPtr()[col + 1] && "the joints wrote in another order than recorded");
+    return J.valuePtr()[s];
+  }
+};
+
+}  // namespace
+
+void evalJacobian(const System& sys, const std::vector<BodyView>& views,
+                  const std::vector<int>& rowMap, Eigen::MatrixXd& J) {
+  J.setZero();
+  addJacobian(sys, views, rowMap, J);
+}
+
+SparseJacobian sparseJacobian(const System& sys, const std::vector<int>& rowMap, int rows) {
+  std::vector<BodyView> views;
+  makeViews(sys, sketchCoordinates(sys), nullptr, views);
+  PatternRecorder rec;
+  addJacobian(sys, views, rowMap, rec);
+  SparseJacobian out;
+  out.J.resize(rows, sys.nCoords());
+  out.J.setFromTriplets(rec.entries.begin(), rec.entries.end());
+  out.J.makeCompressed();
+  out.slot.reserve(rec.entries.size());
+  const int* start = out.J.outerIndexPtr();
+  const int* inner = out.J.innerIndexPtr();
+  for (const auto& e : rec.entries) {
+    const int* p = std::lower_bound(inner + start[e.col()], inner + start[e.col() + 1], e.row());
+    out.slot.push_back(static_cast<int>(p - inner));
+  }
+  return out;
+}
+
+void evalJacobian(const System& sys, const std::vector<BodyView>& views,
+                  const std::vector<int>& rowMap, SparseJacobian& J) {
+  J.J.coeffs().setZero();
+  SlotWriter w{J.J, J.slot.data()};
+  addJacobian(sys, views, rowMap, w);
+  assert(w.slot == J.slot.data() + J.slot.size());
+}
+
+void evalGamma(const System& sys, const std::vector<BodyView>& views,
+               const std::vector<int>& rowMap, Eigen::VectorXd& out) {
+  for (const Row& c : sys.cons) {
+    const int r = rowMap[c.row];
+    const BodyView& i = views[c.body[0] + 1];
+    const BodyView& j = views[c.body[1] + 1];
+    switch (c.kind) {
+      case Primitive::Coincident: {
+        const Vec2 g = coincident::gamma(i, c.s[0], j, c.s[1]);
+        if (r >= 0) out[r] = g.x();
+        if (rowMap[c.row + 1] >= 0) out[rowMap[c.row + 1]] = g.y();
+        break;
+      }
+      case Primitive::OnLine:
+        if (r >= 0) out[r] = on_line::gamma(i, c.s[0], j, c.s[1], c.n);
+        break;
+      case Primitive::OnCircle:
+        if (r >= 0) out[r] = on_circle::gamma(i, c.s[0], j, c.s[1], c.c[0]);
+        break;
+      case Primitive::Angles:
+      case Primitive::Hold:
+        if (r >= 0) out[r] = 0;
+        break;
+    }
+  }
+}
+
+Vec2 pointPosition(const System&, const Eigen::VectorXd& q, const PointLocation& p) {
+  if (p.body < 0) return p.s;
+  const int k = 3 * p.body;
+  const Rot R{std::cos(q[k + 2]), std::sin(q[k + 2])};
+  return Vec2(q[k], q[k + 1]) + R * p.s;
+}
+
+Vec2 pointVelocity(const System&, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                   const PointLocation& p) {
+  if (p.body < 0) return Vec2::Zero();
+  const int k = 3 * p.body;
+  const Rot R{std::cos(q[k + 2]), std::sin(q[k + 2])};
+  return Vec2(v[k], v[k + 1]) + v[k + 2] * perp(R * p.s);
+}
+
+Vec2 pointAcceleration(const System&, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                       const Eigen::VectorXd& a, const PointLocation& p) {
+  if (p.body < 0) return Vec2::Zero();
+  const int k = 3 * p.body;
+  const Rot R{std::cos(q[k + 2]), std::sin(q[k + 2])};
+  const Vec2 s = R * p.s;
+  return Vec2(a[k], a[k + 1]) + a[k + 2] * perp(s) - v[k + 2] * v[k + 2] * s;
+}
+
+std::vector<Rot> rotations(const System& sys, const Eigen::VectorXd& q) {
+  std::vector<Rot> rot(sys.nBodies);
+  for (int k = 0; k < sys.nBodies; ++k)
+    rot[k] = Rot{std::cos(q[3 * k + 2]), std::sin(q[3 * k + 2])};
+  return rot;
+}
+
+Eigen::VectorXd sketchCoordinates(const System& sys) {
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(sys.nCoords());
+  for (int k = 0; k < sys.nBodies; ++k) {
+    q[3 * k] = sys.frameOrigin[k].x();
+    q[3 * k + 1] = sys.frameOrigin[k].y();
+  }
+  return q;
+}
+
+}  // namespace linkage

@@ -1,0 +1,23 @@
+// A gear or belt coupling (the gear element, solver/elements/gear.cpp): an external gear pair as
+// its two pitch circles touching at the pitch point, a belt as two pulleys and the belt's two
+// straight runs; a radial tick on each circle turns with its body, so that the ratio shows as
+// the animation runs.
+#pragma once
+
+#include "canvas/joint_items.h"
+
+namespace linkage::ui {
+
+class GearItem : public JointItem {
+ public:
+  GearItem(const CanvasContext* ctx, const JointSymbol& s, QColor colourA, QColor colourB);
+  void place(const JointSymbol& s) override;
+  QRectF boundingRect() const override;
+  void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
+
+ private:
+  JointSymbol s_;
+  QColor colour_[2];
+};
+
+}  // namespace linkage::ui

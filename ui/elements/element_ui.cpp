@@ -1,0 +1,123 @@
+#include "elements/element_ui.h"
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QMenu>
+
+#include "document/document.h"
+#include "linkage/edits.h"
+#include "properties/properties_panel.h"
+#include "tools/slot_tools.h"
+#include "tools/toolbox.h"
+
+namespace linkage::ui {
+
+const ElementUi& pinUi();
+const ElementUi& sliderUi();
+const ElementUi& pinInSlotUi();
+const ElementUi& gearUi();
+
+std::span<const ElementUi* const> elementUis() {
+  static const ElementUi* const table[] = {&pinUi(), &sliderUi(), &pinInSlotUi(), &gearUi()};
+  return table;
+}
+
+const ElementUi& elementUi(JointType t) {
+  return *elementUis()[static_cast<size_t>(t)];
+}
+
+QString describe(JointType t) {
+  return QCoreApplication::translate("Element", elementUi(t).describe);
+}
+
+int bodyNumber(const Drawing& d, BodyId b) {
+  for (const Drawing::Body& x : d.bodies)
+    if (x.id == b) return x.number;
+  return 0;
+}
+
+namespace {
+// The kinds a joint of kind t can change into (t among them), in table order.
+std::vector<JointType> sameKinds(JointType t) {
+  std::vector<JointType> out;
+  for (const ElementKind* k : elementKinds())
+    if (sameFields(k->type, t)) out.push_back(k->type);
+  return out;
+}
+}  // namespace
+
+void addTypeChoice(PropertiesPanel& panel, JointId id) {
+  Document* doc = panel.document();
+  const std::vector<JointType> kinds = sameKinds(doc->design().joint(id)->type);
+  if (kinds.size() < 2) {
+    panel.addInfo(PropertiesPanel::tr("Type"),
+                  [doc, id] { return describe(doc->design().joint(id)->type); });
+    return;
+  }
+  auto* type = new QComboBox;
+  for (JointType t : kinds) type->addItem(describe(t));
+  auto current = [doc, id, kinds] {
+    const JointType t = doc->design().joint(id)->type;
+    return int(std::find(kinds.begin(), kinds.end(), t) - kinds.begin());
+  };
+  panel.addChoice(PropertiesPanel::tr("Type"), type, current, [&panel, id, kinds](int i) {
+    QString why;
+    if (!panel.change(
+            PropertiesPanel::tr("Joint type"),
+            [&](Mechanism& m, QString* w) {
+              std::string s;
+              const bool ok = changeJointType(m, id, kinds[i], &s);
+              *w = QString::fromStdString(s);
+              return ok;
+            },
+            &why))
+      emit panel.message(why, true);
+  });
+}
+
+void addTypeMenu(Toolbox& box, QMenu& menu, const Joint& j) {
+  const std::vector<JointType> kinds = sameKinds(j.type);
+  if (kinds.size() < 2) return;
+  QMenu* type = menu.addMenu(Toolbox::tr("Change Type"));
+  const JointId id = j.id;
+  const QString label = QString::fromStdString(jointLabel(box.document()->design(), id));
+  for (JointType t : kinds) {
+    QAction* a = type->addAction(describe(t), &box, [&box, id, t, label] {
+      box.editWith(Toolbox::tr("Change type of %1").arg(label),
+                   [&](Mechanism& n, std::string& why) { return changeJointType(n, id, t, &why); });
+    });
+    a->setCheckable(true);
+    a->setChecked(j.type == t);
+  }
+}
+
+void addSlotJointStart(Toolbox& box, QMenu& menu, PointId p, const char* tool, const char* text) {
+  menu.addAction(QCoreApplication::translate("Toolbox", text), &box, [&box, p, tool] {
+    static_cast<SlotJointTool*>(box.switchTo(QString::fromLatin1(tool)))->startAt(p);
+  });
+}
+
+void slotJointForm(PropertiesPanel& panel, JointId id) {
+  addTypeChoice(panel, id);
+  addPointPlace(panel, panel.document()->design().joint(id)->a);
+}
+
+void addPointPlace(PropertiesPanel& panel, PointId a) {
+  Document* doc = panel.document();
+  for (int axis = 0; axis < 2; ++axis)
+    panel.addNumber(
+        axis ? QStringLiteral("y") : QStringLiteral("x"),
+        [doc, a, axis] { return doc->design().point(a)->pos[axis]; },
+        [&panel, a, axis](double v, QString* why) {
+          return panel.change(
+              PropertiesPanel::tr("Move joint"),
+              [&](Mechanism& m, QString*) {
+                for (PointId q : pinnedTogether(m, a)) m.point(q)->pos[axis] = v;
+                return true;
+              },
+              why);
+        },
+        PropertiesPanel::tr("mm"));
+}
+
+}  // namespace linkage::ui

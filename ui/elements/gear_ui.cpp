@@ -1,0 +1,103 @@
+// The gear in the editor: pitch circles (a belt: pulleys and the belt), the Gear tool (E: two
+// pivoted bodies; Shift for a belt), its ratio, carrier and centres in the panel, "Gears in
+// Mesh" / "Belt" on its menu, and "Couple to..." on a pivoted body's menu.
+#include <QMenu>
+
+#include "canvas/canvas_item.h"
+#include "canvas/gear_item.h"
+#include "document/document.h"
+#include "elements/element_ui.h"
+#include "linkage/edits.h"
+#include "properties/properties_panel.h"
+#include "tools/gear_tool.h"
+#include "tools/toolbox.h"
+
+namespace linkage::ui {
+
+namespace {
+
+JointItem* item(const CanvasContext* ctx, const JointSymbol& s, const Drawing& d) {
+  return new GearItem(ctx, s, ctx->style.body(bodyNumber(d, s.bodies[0])),
+                      ctx->style.body(bodyNumber(d, s.bodies[1])));
+}
+
+Tool* tool(ToolContext* ctx) {
+  return new GearTool(ctx);
+}
+
+void form(PropertiesPanel& panel, JointId id) {
+  Document* doc = panel.document();
+  auto joint = [doc, id] { return *doc->design().joint(id); };
+  panel.addInfo(PropertiesPanel::tr("Type"), [joint] {
+    return joint().ratio < 0 ? PropertiesPanel::tr("gears in mesh (turn opposite ways)")
+                             : PropertiesPanel::tr("belt or chain (turn the same way)");
+  });
+  panel.addNumber(
+      PropertiesPanel::tr("Ratio"), [joint] { return joint().ratio; },
+      [&panel, id](double v, QString* why) {
+        return panel.change(
+            PropertiesPanel::tr("Gear ratio"),
+            [&](Mechanism& m, QString* w) {
+              m.joint(id)->ratio = v;
+              const std::string problem = checkJoints(m);
+              *w = QString::fromStdString(problem);
+              return problem.empty();
+            },
+            why);
+      },
+      QString());
+  panel.addInfo(PropertiesPanel::tr("Carrier"), [doc, joint] {
+    const Body* c = doc->design().body(joint().carrier);
+    return c ? QString::fromStdString(c->name) : PropertiesPanel::tr("the ground");
+  });
+  panel.addInfo(PropertiesPanel::tr("Centres"), [doc, joint] {
+    const Mechanism& m = doc->design();
+    return QStringLiteral("%1, %2").arg(QString::fromStdString(m.pointLabel(joint().a)),
+                                        QString::fromStdString(m.pointLabel(joint().b)));
+  });
+}
+
+void jointMenu(Toolbox& box, QMenu& menu, const Joint& j) {
+  const JointId id = j.id;
+  const QString label = QString::fromStdString(jointLabel(box.document()->design(), id));
+  for (bool belt : {false, true}) {
+    QAction* a = menu.addAction(
+        belt ? Toolbox::tr("Belt (the same way)") : Toolbox::tr("Gears in Mesh (opposite ways)"),
+        &box, [&box, id, label, belt] {
+          box.editWith(Toolbox::tr("Change %1").arg(label), [&](Mechanism& n, std::string&) {
+            double& r = n.joint(id)->ratio;
+            if ((r > 0) != belt) r = -r;
+            return true;
+          });
+        });
+    a->setCheckable(true);
+    a->setChecked((j.ratio > 0) == belt);
+  }
+}
+
+void bodyMenu(Toolbox& box, QMenu& menu, BodyId body) {
+  if (pivotsOf(box.document()->design(), body).empty()) return;
+  menu.addAction(Toolbox::tr("Couple to (Gear or Belt)..."), &box, [&box, body] {
+    static_cast<GearTool*>(box.switchTo(QStringLiteral("gear")))->startAt(body);
+  });
+}
+
+}  // namespace
+
+const ElementUi& gearUi() {
+  static const ElementUi ui{
+      JointType::Gear,
+      QT_TRANSLATE_NOOP("Element", "gear or belt"),
+      item,
+      {"gear", QT_TRANSLATE_NOOP("Toolbox", "G&ear or Belt"), "E",
+       QT_TRANSLATE_NOOP("Toolbox",
+                         "Couple two pivoted bodies by gears in mesh, or a belt (Shift)"),
+       tool},
+      form,
+      jointMenu,
+      bodyMenu,
+      nullptr};
+  return ui;
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,42 @@
+// The pin in a slot in the editor: a filled pin in the channel, the Pin in Slot tool (P: a
+// point, then the slot), its type (it changes into a slider) and place in the panel and menu.
+#include <QMenu>
+
+#include "canvas/joint_items.h"
+#include "elements/element_ui.h"
+#include "tools/slot_tools.h"
+
+namespace linkage::ui {
+
+namespace {
+
+JointItem* item(const CanvasContext* ctx, const JointSymbol& s, const Drawing&) {
+  return new PinItem(ctx, s.joint, PinItem::Kind::InSlot);
+}
+
+Tool* tool(ToolContext* ctx) {
+  return new SlotJointTool(ctx, JointType::PinInSlot);
+}
+
+void pointMenu(Toolbox& box, QMenu& menu, PointId p) {
+  addSlotJointStart(box, menu, p, "pinInSlot",
+                    QT_TRANSLATE_NOOP("Toolbox", "Pin in a Slot Here..."));
+}
+
+}  // namespace
+
+const ElementUi& pinInSlotUi() {
+  static const ElementUi ui{
+      JointType::PinInSlot,
+      QT_TRANSLATE_NOOP("Element", "pin in slot (turns freely)"),
+      item,
+      {"pinInSlot", QT_TRANSLATE_NOOP("Toolbox", "&Pin in Slot"), "P",
+       QT_TRANSLATE_NOOP("Toolbox", "Let a point run in a slot, turning freely"), tool},
+      slotJointForm,
+      addTypeMenu,
+      nullptr,
+      pointMenu};
+  return ui;
+}
+
+}  // namespace linkage::ui
