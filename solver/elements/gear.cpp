@@ -63,7 +63,7 @@ std::string check(const Mechanism& m, const Joint& j, JointField& where) {
   const Point *a = m.point(j.a), *b = m.point(j.b);
   const BodyId c = carrierOf(m, j);
   const Body* cb = m.body(c);
-  const std::string carrier = cb ? "\"" + cb->name + "\"" : "the ground";
+  const std::string carrier = cb ? "\"" + cb->name + "\"" : "(none)";
   where = JointField::B;
   if (a->body == b->body) return "a and b are on one body: a gear couples two bodies";
   for (const auto& [p, field] : {std::pair{a, JointField::A}, std::pair{b, JointField::B}}) {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "linkage/edits.h"
+
 namespace linkage::ui {
 
 EditCommand::EditCommand(Document* doc, const QString& text, Mechanism next)
@@ -37,67 +39,19 @@ void editDesign(Document* doc, const QString& text, Mechanism next) {
   doc->undoStack()->push(new EditCommand(doc, text, std::move(next)));
 }
 
-namespace {
-
-void transformBody(Mechanism& m, BodyId b, const Transform& T) {
-  for (Point& p : m.points)
-    if (p.body == b) p.pos = T * p.pos;
-  for (Slot& s : m.slots)
-    if (s.body == b) {
-      s.p0 = T * s.p0;
-      s.p1 = T * s.p1;
-    }
-}
-
-bool isIdentity(const Transform& T, double size) {
-  return std::abs(T.R.s) <= 1e-15 && T.R.c > 0 && T.t.norm() <= 1e-15 * size;
-}
-
-// `solved` holds `m` solved at the current pose; redraws m at `k`'s pose.
-void redraw(Mechanism& m, const Kinematics& k) {
-  for (const Body& b : m.bodies)
-    if (!b.ground && k.contains(b.id)) {
-      const Transform T = k.bodyTransform(b.id);
-      if (!isIdentity(T, k.size())) transformBody(m, b.id, T);
-    }
-}
-
-}  // namespace
-
 void commitEdit(Document* doc, const QString& text, Mechanism next) {
   commitEdit(doc, text, std::move(next), doc->state());
 }
 
 void commitEdit(Document* doc, const QString& text, Mechanism next, const DocumentState& before) {
-  // Solved from the pose before the edit (the current one): where the user drew it.
-  Kinematics trial = before.kinematics;
-  const bool solved = before.kinematics.valid() && trial.edit(next).ok();
-  if (solved && next.driver) {
-    const double sketchDeg = -next.driver->startDeg;
-    if (std::abs(trial.crankDeg() - sketchDeg) > 1e-12) {
-      Kinematics atSketch = trial;
-      if (atSketch.moveTo(sketchDeg).ok()) {
-        redraw(next, atSketch);
-      } else {
-        // The sketch's pose is out of reach now: the drawing becomes this pose.
-        redraw(next, trial);
-        next.driver->startDeg = -trial.crankDeg();
-      }
-      // The same shapes moved rigidly: the solution here does not change.
-      if (!trial.edit(next).ok()) {
-        doc->restore(before);
-        editDesign(doc, text, std::move(next));
-        return;
-      }
-    }
-  }
-  if (!solved) {
+  PoseEdit e = editAtPose(before.kinematics, std::move(next));
+  doc->restore(before);
+  if (!e.solved) {
     // Refused (or nothing solved yet): the design is kept with the solver's reason.
-    doc->restore(before);
-    editDesign(doc, text, std::move(next));
+    editDesign(doc, text, std::move(e.design));
     return;
   }
-  DocumentState after{std::move(next), std::move(trial), Status::success()};
+  DocumentState after{std::move(e.design), std::move(e.kinematics), Status::success()};
   doc->restore(after);
   doc->undoStack()->push(new EditCommand(doc, text, before, doc->state()));
 }

@@ -29,14 +29,9 @@ class EditCommand : public QUndoCommand {
 // Pushes an edit of the design onto the document's undo stack (and so makes it).
 void editDesign(Document* doc, const QString& text, Mechanism next);
 
-// An edit drawn on the mechanism as it is shown, at the current crank angle, where a user
-// draws: new links, pivots and joints placed where they are now. The file holds one drawing,
-// at the pose of the sketch (crank angle -start_deg), so when the crank is elsewhere the
-// edited mechanism is solved here first, turned back along its motion to the sketch's pose,
-// and every body redrawn where it is there (bodies that did not move keep their numbers to the
-// last bit). Where the sketch's pose cannot be reached any more, the drawing becomes the
-// current pose and the start offset says so (the crank angle is unchanged). One undo step,
-// made from `before` (the state when the user began, for a drag).
+// An edit drawn on the mechanism as it is shown, at the current crank angle, redrawn at the
+// sketch's pose (linkage/edits.h: editAtPose). One undo step, made from `before` (the state
+// when the user began, for a drag).
 void commitEdit(Document* doc, const QString& text, Mechanism next);
 void commitEdit(Document* doc, const QString& text, Mechanism next, const DocumentState& before);
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "linkage/kinematics.h"
 #include "linkage/model.h"
 
 namespace linkage {
@@ -56,6 +57,22 @@ bool setDriver(Mechanism& m, JointId pin, std::string* why = nullptr);
 void toggleOutput(Mechanism& m, PointId p);
 // A slider becomes a pin-in-slot and back.
 bool changeJointType(Mechanism& m, JointId j, JointType type, std::string* why = nullptr);
+// An edit drawn on the mechanism as it is shown, at the current crank angle, where a user
+// draws: new links, pivots and joints placed where they are now. The file holds one drawing, at
+// the pose of the sketch (crank angle -start_deg), so when the crank is elsewhere the edited
+// mechanism is solved here first (from `current`, the solver before the edit), turned back
+// along its motion to the sketch's pose, and every body redrawn where it is there (bodies that
+// did not move keep their numbers to the last bit). Where the sketch's pose cannot be reached
+// any more, the drawing becomes the current pose and the start offset says so (the crank angle
+// is unchanged). Not solved: `design` is the edit as given, for the caller to keep with the
+// solver's reason.
+struct PoseEdit {
+  Mechanism design;
+  Kinematics kinematics;  // solved at the current crank angle (when `solved`)
+  bool solved = false;
+};
+PoseEdit editAtPose(const Kinematics& current, Mechanism next);
+
 // The points pinned to `p` (and theirs, transitively), `p` included: one place in the drawing.
 std::vector<PointId> pinnedTogether(const Mechanism& m, PointId p);
 
