@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "elements/guide.h"
+#include "linkage/guide.h"
 
 namespace linkage {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "elements/guide.h"
+#include "linkage/guide.h"
 #include "linkage/elements.h"
 
 namespace linkage {

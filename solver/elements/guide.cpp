@@ -1,5 +1,6 @@
-#include "elements/guide.h"
+#include "linkage/guide.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace linkage {
@@ -75,6 +76,28 @@ Vec2 Guide::at(double t) const {
   if (!arc) return p0 + t * direction;
   const double a = a0 + (sweep >= 0 ? t : -t) / radius;
   return centre + radius * Vec2(std::cos(a), std::sin(a));
+}
+
+double Guide::along(const Vec2& p) const {
+  if (!arc) return (p - p0).dot(direction);
+  const Vec2 e0 = p0 - centre, e = p - centre;
+  // The angle from p0 in the arc's direction, put where the gap past the ends is split evenly.
+  double a = std::atan2(cross(e0, e), e0.dot(e)) * (sweep >= 0 ? 1 : -1);
+  const double span = std::abs(sweep), gap = 2 * M_PI - span;
+  if (a < -gap / 2) a += 2 * M_PI;
+  if (a > span + gap / 2) a -= 2 * M_PI;
+  return a * radius;
+}
+
+Vec2 Guide::nearest(const Vec2& p) const {
+  return at(std::clamp(along(p), 0.0, length()));
+}
+
+Vec2 Guide::project(const Vec2& p) const {
+  if (!arc) return p0 + (p - p0).dot(direction) * direction;
+  const Vec2 e = p - centre;
+  const double n = e.norm();
+  return n > 0 ? Vec2(centre + radius * e / n) : p0;
 }
 
 }  // namespace linkage

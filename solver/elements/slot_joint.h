@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "elements/guide.h"
+#include "linkage/guide.h"
 #include "linkage/elements.h"
 
 namespace linkage::slot_joint {

@@ -13,7 +13,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "elements/guide.h"
+#include "linkage/guide.h"
 #include "io/json_tree.h"
 #include "linkage/elements.h"
 #include "linkage/io/model_file.h"

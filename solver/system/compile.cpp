@@ -6,7 +6,7 @@
 
 #include "elements/angles.h"
 #include "elements/frames.h"
-#include "elements/guide.h"
+#include "linkage/guide.h"
 #include "linkage/elements.h"
 #include "system/system.h"
 

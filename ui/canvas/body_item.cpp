@@ -45,6 +45,36 @@ QPolygonF capsule(const Vec2& a, const Vec2& b, double r, double px) {
   return p;
 }
 
+QPolygonF channel(const Guide& g, double r, double px) {
+  if (!g.arc) return capsule(g.p0, g.p1, r, px);
+  // Outer wall from p0 to p1, a round end, the inner wall back, a round end: enough vertices
+  // that no chord strays more than a quarter pixel from the circle.
+  const double span = std::abs(g.sweep), dir = g.sweep >= 0 ? 1 : -1;
+  const double outer = g.radius + r;
+  const int n =
+      std::clamp(int(span / (2 * std::acos(std::max(0.0, 1 - 0.25 * px / outer)))) + 2, 8, 4000);
+  QPolygonF poly;
+  auto onCircle = [&](double radius, double a) {
+    poly << toQt(g.centre + radius * Vec2(std::cos(a), std::sin(a)));
+  };
+  for (int i = 0; i <= n; ++i) onCircle(outer, g.a0 + dir * span * i / n);
+  const Vec2 e1 = g.p1 - g.centre, e0 = g.p0 - g.centre;
+  auto cap = [&](const Vec2& c, const Vec2& out, double from) {
+    // The half of a small circle about c facing away from the arc, from the outer wall round.
+    const int m = 12;
+    const double base = std::atan2(out.y(), out.x());
+    for (int i = 1; i < m; ++i) {
+      const double a = base + from * M_PI * i / m;
+      poly << toQt(c + r * Vec2(std::cos(a), std::sin(a)));
+    }
+  };
+  cap(g.p1, e1, dir);
+  for (int i = n; i >= 0; --i) onCircle(std::max(0.0, g.radius - r), g.a0 + dir * span * i / n);
+  cap(g.p0, -e0, dir);
+  poly << poly.front();
+  return poly;
+}
+
 QPolygonF roundedHull(const std::vector<Vec2>& hull, double r, double px) {
   // Counter-clockwise convex polygon grown by r: each edge moved out along its normal, the
   // corners rounded by arcs about the vertices.
@@ -118,7 +148,8 @@ static bool drawable(const BodyGeometry& g) {
   bool all = std::all_of(g.body.outline.begin(), g.body.outline.end(), ok) &&
              std::all_of(g.points.begin(), g.points.end(), ok) && std::isfinite(g.body.radius) &&
              std::abs(g.body.radius) <= 1e12;
-  for (const auto& [a, b] : g.slots) all = all && ok(a) && ok(b);
+  for (const Guide& s : g.slots)
+    all = all && ok(s.p0) && ok(s.p1) && ok(s.centre) && std::abs(s.radius) <= 1e12;
   return all;
 }
 
@@ -133,19 +164,20 @@ void BodyItem::rebuild() {
   body_ = bodyOutline(g_.body, px());
   shape_.addPolygon(body_);
   const double w = CanvasStyle::channelWidth / 2 * px();
-  for (const auto& [a, b] : g_.slots) {
-    channels_.push_back(capsule(a, b, w, px()));
-    if (g_.body.shape != Drawing::Shape::Ground || a == b) continue;
+  for (const Guide& g : g_.slots) {
+    channels_.push_back(channel(g, w, px()));
+    if (g_.body.shape != Drawing::Shape::Ground) continue;
     // The frame's slots: short strokes along both walls, as a fixed guide is drawn.
-    const Vec2 d = (b - a).normalized(), n = perp(d);
     // A stroke every 6 pixels, and no more than 2000 along a wall (a slot typed a kilometre
     // long would otherwise make a million).
-    const double len = (b - a).norm(), step = std::max(6 * px(), len / 2000);
-    for (double s = 0; s <= len; s += step)
+    const double len = g.length(), step = std::max(6 * px(), len / 2000);
+    for (double s = 0; s <= len; s += step) {
+      const Vec2 at = g.at(s), d = g.tangentAt(at), n = perp(d);
       for (int side : {-1, 1}) {
-        const Vec2 base = a + s * d + side * (w + 0.5 * px()) * n;
+        const Vec2 base = at + side * (w + 0.5 * px()) * n;
         hatch_ << QLineF(toQt(base), toQt(base + side * 4 * px() * n - 4 * px() * d));
       }
+    }
   }
   if (label_) label_->setColours(style().body(g_.body.number), style().paper);
 }

@@ -9,13 +9,14 @@
 
 #include "canvas/canvas_item.h"
 #include "linkage/drawing.h"
+#include "linkage/guide.h"
 
 namespace linkage::ui {
 
 struct BodyGeometry {
   Drawing::Body body;
-  std::vector<std::pair<Vec2, Vec2>> slots;  // sketch coordinates
-  std::vector<Vec2> points;                  // sketch coordinates
+  std::vector<Guide> slots;  // sketch coordinates: straight, or arcs
+  std::vector<Vec2> points;  // sketch coordinates
 };
 
 class BodyItem : public CanvasItem {
@@ -52,6 +53,9 @@ class BodyItem : public CanvasItem {
 // The outline with rounded ends around the segment a-b at distance r (a disc when a = b), as a
 // polygon fine enough for `px` millimetres per pixel.
 QPolygonF capsule(const Vec2& a, const Vec2& b, double r, double px);
+// The outline around a slot's curve at distance r (a capsule for a straight slot; for an arc,
+// the band between radii R - r and R + r with round ends).
+QPolygonF channel(const Guide& g, double r, double px);
 // A counter-clockwise convex polygon grown by r, its corners rounded.
 QPolygonF roundedHull(const std::vector<Vec2>& hull, double r, double px);
 // A body's outline as BodyItem draws it (sketch coordinates); empty for the ground and blocks.

@@ -18,7 +18,8 @@ BodyGeometry geometryOf(const Mechanism& m, const Drawing::Body& b) {
   BodyGeometry g;
   g.body = b;
   for (const Slot& s : m.slots)
-    if (s.body == b.id) g.slots.emplace_back(s.p0, s.p1);
+    if (s.body == b.id)
+      if (const std::optional<Guide> guide = guideOf(s)) g.slots.push_back(*guide);
   for (const Point& p : m.points)
     if (p.body == b.id) g.points.push_back(p.pos);
   return g;

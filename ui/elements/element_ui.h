@@ -27,6 +27,7 @@ struct ToolSpec {
   const char* text;                 // menu text (translated in the "Toolbox" context)
   const char* key;                  // its shortcut
   const char* tip;                  // status tip
+  const char* icon;                 // resources/icons/<icon>.svg
   Tool* (*make)(ToolContext* ctx);  // nullptr: another tool makes it (a pin: link, ground)
 };
 

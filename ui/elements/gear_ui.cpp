@@ -92,7 +92,7 @@ const ElementUi& gearUi() {
       {"gear", QT_TRANSLATE_NOOP("Toolbox", "G&ear or Belt"), "E",
        QT_TRANSLATE_NOOP("Toolbox",
                          "Couple two pivoted bodies by gears in mesh, or a belt (Shift)"),
-       tool},
+       "tool-gear", tool},
       form,
       jointMenu,
       bodyMenu,

@@ -57,7 +57,7 @@ void jointMenu(Toolbox& box, QMenu& menu, const Joint& j) {
 
 const ElementUi& pinUi() {
   static const ElementUi ui{JointType::Pin, QT_TRANSLATE_NOOP("Element", "pin"),
-                            item,           {nullptr, nullptr, nullptr, nullptr, nullptr},
+                            item,           {nullptr, nullptr, nullptr, nullptr, nullptr, nullptr},
                             form,           jointMenu,
                             nullptr,        nullptr};
   return ui;

@@ -14,6 +14,7 @@
 #include "elements/element_ui.h"
 #include "linkage/edits.h"
 #include "linkage/elements.h"
+#include "linkage/guide.h"
 #include "linkage/io/numbers.h"
 #include "tools/selection.h"
 
@@ -245,6 +246,59 @@ void PropertiesPanel::fillSlot(SlotId id) {
             },
             why);
       });
+  fillSlotShape(id);
+  if (doc_->design().slot(id)->arc())
+    fillArc(id);
+  else
+    fillSlotEnds(id);
+}
+
+// Straight or arc: an arc is bent through a point off the middle of the chord (a quarter of its
+// length out), a straight slot keeps the arc's ends.
+void PropertiesPanel::fillSlotShape(SlotId id) {
+  auto* shape = new QComboBox;
+  shape->addItems({tr("straight"), tr("arc (through three points)")});
+  addChoice(
+      tr("Shape"), shape, [this, id] { return doc_->design().slot(id)->arc() ? 1 : 0; },
+      [this, id](int i) {
+        QString why;
+        change(
+            tr("Slot shape"),
+            [&](Mechanism& m, QString*) {
+              Slot& s = *m.slot(id);
+              if (i == 0) {
+                s.mid.reset();
+              } else if (!s.mid) {
+                s.mid = (s.p0 + s.p1) / 2 + perp(s.p1 - s.p0) / 4;
+              }
+              return true;
+            },
+            &why);
+      });
+}
+
+// Sets the slot's points (mid only for an arc) as one edit, refused when they make no curve.
+bool PropertiesPanel::setSlot(SlotId id, const Vec2& p0, const std::optional<Vec2>& mid,
+                              const Vec2& p1, QString* why) {
+  Slot probe = *doc_->design().slot(id);
+  probe.p0 = p0;
+  probe.p1 = p1;
+  probe.mid = mid;
+  std::string problem;
+  if (!guideOf(probe, &problem)) {
+    *why = QString::fromStdString(problem);
+    return false;
+  }
+  return change(
+      tr("Slot"),
+      [&](Mechanism& m, QString*) {
+        *m.slot(id) = probe;
+        return true;
+      },
+      why);
+}
+
+void PropertiesPanel::fillSlotEnds(SlotId id) {
   const char* names[4] = {"x0", "y0", "x1", "y1"};
   for (int k = 0; k < 4; ++k)
     addNumber(
@@ -256,20 +310,58 @@ void PropertiesPanel::fillSlot(SlotId id) {
         [this, id, k](double v, QString* why) {
           Vec2 p0 = doc_->design().slot(id)->p0, p1 = doc_->design().slot(id)->p1;
           (k < 2 ? p0 : p1)[k % 2] = v;
-          if (p0 == p1) {
-            *why = tr("a slot's ends must differ");
-            return false;
-          }
-          return change(
-              tr("Slot end"),
-              [&](Mechanism& m, QString*) {
-                m.slot(id)->p0 = p0;
-                m.slot(id)->p1 = p1;
-                return true;
-              },
-              why);
+          return setSlot(id, p0, std::nullopt, p1, why);
         },
         tr("mm"));
+}
+
+// An arc's three points, or its centre, radius and the angles of its ends (degrees about the
+// centre): either set moves the others.
+void PropertiesPanel::fillArc(SlotId id) {
+  const char* names[6] = {"x0", "y0", "xm", "ym", "x1", "y1"};
+  auto point = [](Slot& s, int k) -> Vec2& { return k < 2 ? s.p0 : k < 4 ? *s.mid : s.p1; };
+  for (int k = 0; k < 6; ++k)
+    addNumber(
+        QString::fromLatin1(names[k]),
+        [this, id, k, point] {
+          Slot s = *doc_->design().slot(id);
+          return point(s, k)[k % 2];
+        },
+        [this, id, k, point](double v, QString* why) {
+          Slot s = *doc_->design().slot(id);
+          point(s, k)[k % 2] = v;
+          return setSlot(id, s.p0, s.mid, s.p1, why);
+        },
+        tr("mm"));
+  auto guide = [this, id] { return *guideOf(*doc_->design().slot(id)); };
+  const char* circle[5] = {QT_TR_NOOP("Centre x"), QT_TR_NOOP("Centre y"), QT_TR_NOOP("Radius"),
+                           QT_TR_NOOP("From"), QT_TR_NOOP("To")};
+  for (int k = 0; k < 5; ++k)
+    addNumber(
+        tr(circle[k]),
+        [guide, k] {
+          const Guide g = guide();
+          const double values[5] = {g.centre.x(), g.centre.y(), g.radius, g.a0 / kDeg,
+                                    (g.a0 + g.sweep) / kDeg};
+          return values[k];
+        },
+        [this, id, guide, k](double v, QString* why) {
+          const Guide g = guide();
+          double c[5] = {g.centre.x(), g.centre.y(), g.radius, g.a0, g.a0 + g.sweep};
+          c[k] = k < 3 ? v : v * kDeg;
+          // The arc keeps its turning direction, less than a full turn from its start.
+          double sweep = std::remainder(c[4] - c[3], 2 * M_PI);
+          if ((sweep < 0) != (g.sweep < 0)) sweep += g.sweep < 0 ? -2 * M_PI : 2 * M_PI;
+          auto at = [&](double a) {
+            return Vec2(c[0] + c[2] * std::cos(a), c[1] + c[2] * std::sin(a));
+          };
+          if (!(c[2] > 0)) {
+            *why = tr("the radius must be positive");
+            return false;
+          }
+          return setSlot(id, at(c[3]), at(c[3] + sweep / 2), at(c[3] + sweep), why);
+        },
+        k < 3 ? tr("mm") : tr("deg"));
 }
 
 }  // namespace linkage::ui

@@ -100,7 +100,8 @@ void PropertiesPanel::rebuild() {
                   .arg(static_cast<int>(j->type))
                   .arg(j->a.value);
     } else if (!selection_->slots_.empty() && m.contains(selection_->slots_[0])) {
-      shape = QStringLiteral("slot %1").arg(selection_->slots_[0].value);
+      const Slot* sl = m.slot(selection_->slots_[0]);
+      shape = QStringLiteral("slot %1%2").arg(sl->id.value).arg(sl->arc() ? " arc" : "");
     }
   }
   // A driver that appears or goes changes the rows too.

@@ -9,6 +9,7 @@
 #include <QPointer>
 #include <QWidget>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "linkage/model.h"
@@ -70,6 +71,11 @@ class PropertiesPanel : public QWidget {
   void fillPoint(PointId id);
   void fillJoint(JointId id);
   void fillSlot(SlotId id);
+  void fillSlotShape(SlotId id);
+  void fillSlotEnds(SlotId id);
+  void fillArc(SlotId id);
+  bool setSlot(SlotId id, const Vec2& p0, const std::optional<Vec2>& mid, const Vec2& p1,
+               QString* why);
 
   QPointer<Document> doc_;
   Selection* selection_ = nullptr;

@@ -4,19 +4,9 @@
 
 #include "canvas/canvas_scene.h"
 #include "linkage/elements.h"
+#include "linkage/guide.h"
 
 namespace linkage::ui {
-
-namespace {
-
-double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double t =
-      d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-  return (a + t * d - p).norm();
-}
-
-}  // namespace
 
 Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   Pick pick;
@@ -42,8 +32,9 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   const double reach = (CanvasStyle::channelWidth / 2 + 3) * px;
   double bestSlot = reach;
   for (const Slot& sl : m.slots) {
-    const Transform T = s.poseOf(sl.body);
-    const double d = segmentDistance(world, T * sl.p0, T * sl.p1);
+    const std::optional<Guide> g = guideOf(sl);
+    if (!g) continue;
+    const double d = g->distance(s.poseOf(sl.body).inverse(world));
     if (d < bestSlot) {
       bestSlot = d;
       pick.slot = sl.id;
@@ -91,9 +82,8 @@ Snap snapAt(const CanvasScene& s, const Pick& pick, const Vec2& world, double px
   if (pick.slot) {
     const Slot* sl = m.slot(pick.slot);
     const Transform T = s.poseOf(sl->body);
-    const Vec2 a = T * sl->p0, d = (T * sl->p1 - a).normalized();
     snap.kind = Snap::Kind::Slot;
-    snap.at = a + (world - a).dot(d) * d;
+    snap.at = T * guideOf(*sl)->project(T.inverse(world));
     snap.slot = pick.slot;
     snap.label = QStringLiteral("on slot %1").arg(QString::fromStdString(m.slotLabel(pick.slot)));
     return snap;

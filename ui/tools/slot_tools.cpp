@@ -5,6 +5,7 @@
 #include "document/document.h"
 #include "linkage/edits.h"
 #include "linkage/elements.h"
+#include "linkage/guide.h"
 #include "tools/tool_overlay.h"
 
 namespace linkage::ui {
@@ -14,7 +15,8 @@ QString SlotTool::hint() const {
     return tr(
         "Slot: click where it starts, on the link it is cut in (on empty canvas: in the "
         "ground)");
-  return tr("Slot: click where it ends; Esc cancels");
+  if (end_) return tr("Arc slot: click a point it passes through; Esc cancels");
+  return tr("Slot: click where it ends (Shift: an arc, bent by a third click); Esc cancels");
 }
 
 void SlotTool::deactivate() {
@@ -23,6 +25,7 @@ void SlotTool::deactivate() {
 
 void SlotTool::cancel() {
   start_.reset();
+  end_.reset();
   body_ = {};
   dragged_ = false;
   ctx().overlay->clearPreview();
@@ -31,8 +34,12 @@ void SlotTool::cancel() {
 
 void SlotTool::press(const CanvasMouse& e) {
   if (e.button != Qt::LeftButton) return;
+  if (end_) {
+    finish(*end_, e.snap.at);
+    return;
+  }
   if (start_) {
-    finish(e.snap.at);
+    end(e.snap.at, e.modifiers & Qt::ShiftModifier);
     return;
   }
   start_ = e.snap.at;
@@ -54,13 +61,43 @@ void SlotTool::startAt(const Vec2& at, BodyId body) {
 
 void SlotTool::move(const CanvasMouse& e) {
   if (!start_) return;
-  ctx().overlay->setPath({*start_}, e.snap.at);
-  if ((e.buttons & Qt::LeftButton) && (e.viewPos - pressAt_).manhattanLength() > 6) dragged_ = true;
+  preview(e.snap.at);
+  if (!end_ && (e.buttons & Qt::LeftButton) && (e.viewPos - pressAt_).manhattanLength() > 6)
+    dragged_ = true;
 }
 
 void SlotTool::release(const CanvasMouse& e) {
-  // A press and drag draws the slot at once.
-  if (start_ && dragged_ && e.button == Qt::LeftButton) finish(e.snap.at);
+  // A press and drag draws the slot (or the arc's chord) at once.
+  if (start_ && !end_ && dragged_ && e.button == Qt::LeftButton)
+    end(e.snap.at, e.modifiers & Qt::ShiftModifier);
+}
+
+void SlotTool::end(const Vec2& at, bool arc) {
+  if (!arc) {
+    finish(at);
+    return;
+  }
+  if ((at - *start_).norm() < 1e-9) return;
+  end_ = at;
+  dragged_ = false;
+  emit hintChanged();
+}
+
+void SlotTool::preview(const Vec2& cursor) {
+  if (!end_) {
+    ctx().overlay->setPath({*start_}, cursor);
+    return;
+  }
+  // The arc from the start through the cursor to the end, as it would be made.
+  const std::optional<Guide> g = guideOf(Slot{{}, {}, "", *start_, *end_, cursor});
+  if (!g) {
+    ctx().overlay->setPath({*start_, *end_}, std::nullopt);
+    return;
+  }
+  std::vector<Vec2> arc;
+  const int n = 64;
+  for (int i = 0; i <= n; ++i) arc.push_back(g->at(g->length() * i / n));
+  ctx().overlay->setPath(arc, std::nullopt);
 }
 
 bool SlotTool::key(QKeyEvent* e) {
@@ -71,7 +108,7 @@ bool SlotTool::key(QKeyEvent* e) {
   return false;
 }
 
-void SlotTool::finish(const Vec2& end) {
+void SlotTool::finish(const Vec2& end, const std::optional<Vec2>& mid) {
   if (!start_ || (end - *start_).norm() < 1e-9) return;
   Document* doc = ctx().doc;
   Mechanism m = doc->design();
@@ -81,9 +118,14 @@ void SlotTool::finish(const Vec2& end) {
   }
   // The ends in the body's own drawing: where it is drawn now, mapped back.
   const Transform T = ctx().scene->poseOf(body_);
-  const SlotId s = addBodySlot(m, body_, T.inverse(*start_), T.inverse(end));
+  const SlotId s =
+      mid ? addBodyArcSlot(m, body_, T.inverse(*start_), T.inverse(*mid), T.inverse(end))
+          : addBodySlot(m, body_, T.inverse(*start_), T.inverse(end));
   cancel();
-  if (!s) return;
+  if (!s) {
+    if (mid) say(tr("No arc: the three points are on one line"), true);
+    return;
+  }
   const QString what = QString::fromStdString(m.slotLabel(s));
   commitEdit(doc, tr("Add slot %1").arg(what), std::move(m));
   say(tr("Added slot %1").arg(what));

@@ -1,6 +1,7 @@
-// Slot (T): two clicks, or a press and drag, draw a slot on the body under the first click (on
-// the ground over empty canvas). Block (B) and Pin in slot (P): a point, then the slot it runs
-// in.
+// Slot (T): two clicks, or a press and drag, draw a straight slot on the body under the first
+// click (on the ground over empty canvas); with Shift held at the second click (or the drag's
+// release), that is the arc's end and a third click the point it passes through on the way.
+// Block (B) and Pin in slot (P): a point, then the slot it runs in.
 #pragma once
 
 #include <optional>
@@ -23,9 +24,12 @@ class SlotTool : public Tool {
   void startAt(const Vec2& at, BodyId body);
 
  private:
-  void finish(const Vec2& end);
+  // The end is given: a straight slot, or with `arc` wait for the point on the way.
+  void end(const Vec2& at, bool arc);
+  void finish(const Vec2& end, const std::optional<Vec2>& mid = std::nullopt);
+  void preview(const Vec2& cursor);
   void cancel();
-  std::optional<Vec2> start_;
+  std::optional<Vec2> start_, end_;
   BodyId body_;
   QPoint pressAt_;
   bool dragged_ = false;

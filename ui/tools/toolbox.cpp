@@ -108,7 +108,6 @@ void Toolbox::makeCommands(Make make) {
                tr("New points snap to the grid (hold Alt to place them freely)"));
   snap_->setCheckable(true);
   snap_->setChecked(true);
-
 }
 
 void Toolbox::editWith(const QString& text,

@@ -23,6 +23,7 @@
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
 #include "document/document.h"
+#include "elements/element_ui.h"
 #include "plots/plots_panel.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
@@ -329,8 +330,6 @@ void MainWindow::applyIcons() {
       {"tool:link", "tool-link"},
       {"tool:ground", "tool-ground"},
       {"tool:slot", "tool-slot"},
-      {"tool:block", "tool-block"},
-      {"tool:pinInSlot", "tool-pin-in-slot"},
       {"tool:driver", "tool-driver"},
       {"tool:output", "tool-output"},
       {"delete", "delete"},
@@ -338,6 +337,11 @@ void MainWindow::applyIcons() {
   };
   for (const auto& [action, icon] : icons)
     if (QAction* a = this->action(action)) a->setIcon(themedIcon(icon, palette()));
+  // The element kinds' tools bring their own icons (ui/elements/element_ui.h).
+  for (const ElementUi* k : elementUis())
+    if (k->tool.make)
+      if (QAction* a = this->action(QStringLiteral("tool:") + k->tool.name))
+        a->setIcon(themedIcon(QString::fromLatin1(k->tool.icon), palette()));
   action("play")->setIcon(themedIcon(
       animator_->playing() ? QStringLiteral("pause") : QStringLiteral("play"), palette()));
 }

@@ -170,8 +170,7 @@ class InstantCentreSolver {
   };
 
   int pair(int a, int b) const;  // a != b, textbook indices
-  std::vector<std::pair<int, Primary>> primaries(const Mechanism& m,
-                                                 const System& sys) const;
+  std::vector<std::pair<int, Primary>> primaries(const Mechanism& m, const System& sys) const;
   Eigen::Vector3d scaled(const Vec2& p) const;
   Eigen::Vector3d toPublic(const Eigen::Vector3d& h) const;
   Vec2 global(int body, const Vec2& s) const;  // system body index

@@ -30,6 +30,15 @@ struct Guide {
   Vec2 tangentAt(const Vec2& p) const;
   // The point at arc length t from p0 (any t: beyond the ends on the curve's continuation).
   Vec2 at(double t) const;
+  // Arc length from p0 of the point of the curve (its continuation included) nearest to p:
+  // for an arc, in (-(2 pi r - |sweep| r) / 2, |sweep| r + the same], so that a point beyond
+  // either end is measured from that end.
+  double along(const Vec2& p) const;
+  // The point of the slot (between its ends) nearest to p, and its distance.
+  Vec2 nearest(const Vec2& p) const;
+  double distance(const Vec2& p) const { return (nearest(p) - p).norm(); }
+  // The point of the whole line or circle nearest to p (a snap onto the slot's curve).
+  Vec2 project(const Vec2& p) const;
 };
 
 // The curve of a slot as drawn; nullopt with `why` when it has none: two ends in one place, or
