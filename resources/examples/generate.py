@@ -12,7 +12,6 @@ Run from anywhere:  python3 resources/examples/generate.py
 
 import json
 import os
-import re
 from decimal import Decimal, getcontext
 
 getcontext().prec = 50
@@ -224,14 +223,52 @@ def four_bar_file():
     return data, (A, B, P)
 
 
+def scalar(v):
+    """A number, string or boolean as the program writes it (Python's float repr, like the
+    program's, is the shortest text that reads back to the same double)."""
+    return json.dumps(v, ensure_ascii=False)
+
+
+def inline(v):
+    """An array of scalars, or of arrays of scalars, on one line when that line is at most 80
+    characters long ([x, y], [[x0, y0], [x1, y1]], a list of output names); None otherwise."""
+    parts = []
+    for e in v:
+        if isinstance(e, dict):
+            return None
+        if isinstance(e, list):
+            if any(isinstance(x, (list, dict)) for x in e):
+                return None
+            parts.append("[" + ", ".join(scalar(x) for x in e) + "]")
+        else:
+            parts.append(scalar(e))
+    text = "[" + ", ".join(parts) + "]"
+    return text if len(text) <= 80 else None
+
+
+def emit(v, indent=0):
+    """The program's layout of a mechanism file (solver/io/model_file_write.cpp): two spaces of
+    indentation, short arrays on one line."""
+    pad = " " * (indent + 2)
+    if isinstance(v, dict):
+        if not v:
+            return "{}"
+        items = [pad + scalar(k) + ": " + emit(x, indent + 2) for k, x in v.items()]
+        return "{\n" + ",\n".join(items) + "\n" + " " * indent + "}"
+    if isinstance(v, list):
+        if not v:
+            return "[]"
+        one_line = inline(v)
+        if one_line is not None:
+            return one_line
+        return "[\n" + ",\n".join(pad + emit(x, indent + 2) for x in v) + "\n" + " " * indent + "]"
+    return scalar(v)
+
+
 def write(name, data):
-    # json.dump writes each float as its repr, which reads back to the same double. Coordinate
-    # arrays and the output list are then put on one line, as in the format spec and as the program
-    # saves them, so that opening and saving an example changes nothing.
-    text = json.dumps(data, indent=2)
-    text = re.sub(r"\[\s*(-?[0-9][0-9.eE+-]*)\s*,\s*(-?[0-9][0-9.eE+-]*)\s*\]", r"[\1, \2]", text)
-    text = re.sub(r"\[\s*(\[[^\[\]]*\])\s*,\s*(\[[^\[\]]*\])\s*\]", r"[\1, \2]", text)
-    text = re.sub(r"\[\s*(\"[^\"]*\")\s*\]", r"[\1]", text)
+    # Floats are written as their repr, which reads back to the same double, and laid out as the
+    # program saves them, so that opening and saving an example changes nothing.
+    text = emit(data)
     assert json.loads(text) == data
     with open(os.path.join(HERE, name), "w", encoding="utf-8") as f:
         f.write(text + "\n")

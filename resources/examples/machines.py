@@ -1,0 +1,254 @@
+#!/usr/bin/env python3
+"""Writes the examples of gear and belt couplings and of arc slots (see README.md):
+
+  lockstitch-arm-shaft   a lockstitch machine's arm shaft: needle bar, take-up lever and a hook
+                         shaft belted 2:1 (dimensions representative, ours)
+  gear-four-bar          a pinion and gear (ratio -1/2) cranking the four-bar-crank-rocker example
+  planet-epicycloid      a planet of radius 10 on an arm around a fixed sun of radius 20
+  curved-guide           a slider-crank whose block runs in an arc slot of the ground
+
+Every coordinate is computed in 50-digit decimal arithmetic (only square roots are needed) and
+stored as the correctly rounded double, as generate.py does for the other examples; each file is
+drawn at crank angle 0, exactly closed.
+
+Run from anywhere:  python3 resources/examples/machines.py
+"""
+
+import math
+from decimal import Decimal, getcontext
+
+from generate import four_bar_sketch, linkage_file, plain, write
+
+getcontext().prec = 50
+D = Decimal
+
+
+def rounded(p):
+    """A point as stored: each coordinate the correctly rounded double (whole numbers as ints)."""
+    return [plain(float(v)) for v in p]
+
+
+def circles(c0, r0, c1, r1, left):
+    """An intersection of the circles (c0, r0) and (c1, r1): the one to the left of c0 -> c1 when
+    `left`, else the one to its right."""
+    e = (c1[0] - c0[0], c1[1] - c0[1])
+    d = (e[0] * e[0] + e[1] * e[1]).sqrt()
+    m = (r0 * r0 - r1 * r1 + d * d) / (2 * d)
+    h = (r0 * r0 - m * m).sqrt()
+    if not left:
+        h = -h
+    u = (e[0] / d, e[1] / d)
+    return (c0[0] + m * u[0] - h * u[1], c0[1] + m * u[1] + h * u[0])
+
+
+def along(p, q, length, t, n=D(0)):
+    """The point t along p -> q (|pq| = length) and n to its left."""
+    u = ((q[0] - p[0]) / length, (q[1] - p[1]) / length)
+    return (p[0] + t * u[0] - n * u[1], p[1] + t * u[1] + n * u[0])
+
+
+def bodies(*specs):
+    """Bodies from (name, number, points, slots): the ground first."""
+    out = []
+    for name, number, points, slots in specs:
+        b = {"name": name}
+        if number == 1:
+            b["ground"] = True
+        b["number"] = number
+        b["points"] = {k: rounded(v) for k, v in points.items()}
+        if slots:
+            b["slots"] = {k: [rounded(p) for p in v] for k, v in slots.items()}
+        out.append(b)
+    return out
+
+
+def pin(a, b):
+    return {"type": "pin", "a": a, "b": b}
+
+
+# ----------------------------------------------------------------------------------------------
+# Lockstitch arm shaft (representative dimensions, ours). Arm shaft O at the origin, 1200 rpm ccw.
+# Needle bar: a central slider-crank hanging below the shaft, crank 16, rod 45 (stroke 32), the
+# needle point 131 mm below the rod's pin on the needle bar; drawn at its top dead centre.
+# Take-up lever: a crank-rocker on a second crank pin T of the arm shaft (radius 16, 36.87 degrees
+# from the x axis: 16 (4/5, 3/5)), lever T-R 45, link R-Q 55 to the pivot Q = (-20, 48) on the
+# ground (|OQ| = 52; 16 + 55 < 45 + 52: Grashof, the crank shortest), the eye 80 along T -> R.
+# Hook shaft L 200 mm below the arm shaft, belted to it 2:1 (gear, ratio +2); hook point 15 from
+# its axis, drawn at (12, 9) from L: it passes over the needle's line 26.57 degrees of crank after
+# the needle's bottom dead centre, when the needle has risen 2.3 mm (the loop-taking position).
+NR, NL, NEEDLE = D(16), D(45), D(131)
+TR, TL, TQ, TEYE = D(16), D(45), D(55), D(80)
+Q, L = (D(-20), D(48)), (D(0), D(-200))
+HOOK = (D(12), D(9))
+
+
+def lockstitch_sketch():
+    A = (D(0), NR)
+    B = (D(0), NR - NL)
+    N = (D(0), B[1] - NEEDLE)
+    T = (TR * 4 / 5, TR * 3 / 5)
+    R = circles(T, TL, Q, TQ, left=False)
+    E = along(T, R, TL, TEYE)
+    K = (L[0] + HOOK[0], L[1] + HOOK[1])
+    return {"A": A, "B": B, "N": N, "T": T, "R": R, "E": E, "K": K}
+
+
+def lockstitch_file(s):
+    O = (0, 0)
+    return linkage_file(
+        "Lockstitch arm shaft: needle bar, take-up lever, hook shaft belted 2:1",
+        bodies(
+            ("ground", 1, {"O": O, "Q": Q, "L": L}, {"needle": [(0, -20), (0, -170)]}),
+            ("armshaft", 2, {"O": O, "A": s["A"], "T": s["T"]}, None),
+            ("rod", 3, {"A": s["A"], "B": s["B"]}, None),
+            ("needlebar", 4, {"B": s["B"], "N": s["N"]}, None),
+            ("takeup", 5, {"T": s["T"], "R": s["R"], "E": s["E"]}, None),
+            ("link", 6, {"R": s["R"], "Q": Q}, None),
+            ("hook", 7, {"L": L, "K": s["K"]}, None),
+        ),
+        [
+            pin("ground.O", "armshaft.O"),
+            pin("armshaft.A", "rod.A"),
+            pin("rod.B", "needlebar.B"),
+            {"type": "slider", "a": "needlebar.B", "slot": "ground.needle"},
+            pin("armshaft.T", "takeup.T"),
+            pin("takeup.R", "link.R"),
+            pin("link.Q", "ground.Q"),
+            pin("ground.L", "hook.L"),
+            {"type": "gear", "a": "armshaft.O", "b": "hook.L", "ratio": 2},
+        ],
+        {"joint": 0, "rpm": 1200, "direction": "ccw"},
+        ["needlebar.N", "takeup.E", "hook.K"])
+
+
+def lockstitch_timing():
+    """Printed for README.md: where the hook point meets the needle's line after the needle's
+    bottom dead centre (crank 180 degrees), and the take-up eye's highest position."""
+    r, l, n = float(NR), float(NL), float(NEEDLE)
+
+    def needle_y(t):  # crank pin at (-r sin t, r cos t)
+        return r * math.cos(t) - math.sqrt(l * l - (r * math.sin(t)) ** 2) - n
+
+    hook0 = math.atan2(float(HOOK[1]), float(HOOK[0]))
+    meet = math.pi + (math.pi / 2 - hook0) / 2  # the hook turns twice as fast
+    rise = needle_y(meet) - needle_y(math.pi)
+    below = float(L[1]) + 15 - needle_y(meet)
+    print(f"  hook point over the needle at crank {math.degrees(meet):.2f} deg: the needle point "
+          f"{rise:.2f} mm above its lowest ({needle_y(math.pi):g}), {below:.2f} mm below the hook "
+          f"point")
+    best = max(range(3600), key=lambda k: takeup_eye(k / 10)[1])
+    print(f"  take-up eye highest at crank {best / 10:.1f} deg: {takeup_eye(best / 10)}")
+
+
+def takeup_eye(deg):
+    t = math.radians(deg) + math.atan2(3, 4)
+    T = (float(TR) * math.cos(t), float(TR) * math.sin(t))
+    R = circles(tuple(D(v) for v in T), TL, Q, TQ, left=False)
+    E = along(tuple(D(v) for v in T), R, TL, TEYE)
+    return tuple(round(float(v), 2) for v in E)
+
+
+# ----------------------------------------------------------------------------------------------
+# A pinion I = (-45, 0), driven at 120 rpm clockwise, meshing with a gear on O2 = (0, 0) at ratio
+# -1/2 (pitch radii 15 and 30); the gear is the crank of the four-bar-crank-rocker example (crank
+# 20 at 60 degrees, coupler 70, rocker 50, O4 = (60, 0), coupler point 35 along and 25 left of
+# A -> B), which so turns counter-clockwise at 60 rpm as that example does.
+def gear_four_bar_file():
+    A, B, P = (rounded(pt) for pt in four_bar_sketch(Decimal))
+    I, O2, O4 = (-45, 0), (0, 0), (60, 0)
+    return linkage_file(
+        "Gear pair cranking a four-bar",
+        bodies(
+            ("ground", 1, {"I": I, "O2": O2, "O4": O4}, None),
+            ("pinion", 2, {"I": I}, None),
+            ("gear", 3, {"O2": O2, "A": A}, None),
+            ("coupler", 4, {"A": A, "B": B, "P": P}, None),
+            ("rocker", 5, {"B": B, "O4": O4}, None),
+        ),
+        [
+            pin("ground.I", "pinion.I"),
+            pin("ground.O2", "gear.O2"),
+            {"type": "gear", "a": "pinion.I", "b": "gear.O2", "ratio": -0.5},
+            pin("gear.A", "coupler.A"),
+            pin("coupler.B", "rocker.B"),
+            pin("rocker.O4", "ground.O4"),
+        ],
+        {"joint": 0, "rpm": 120, "direction": "cw"},
+        ["coupler.P"])
+
+
+# ----------------------------------------------------------------------------------------------
+# A planet of pitch radius 10 on an arm (the driven crank, 60 rpm ccw) around a fixed sun of pitch
+# radius 20 at the origin: gear ratio -2 with the arm as carrier. The planet turns 3 times per turn
+# of the arm; its rim point P, drawn at (40, 0), traces the epicycloid 30 e^{it} + 10 e^{3it}.
+def planet_file():
+    S, Bc, P = (0, 0), (30, 0), (40, 0)
+    return linkage_file(
+        "Planet gear on a fixed sun: epicycloid",
+        bodies(
+            ("ground", 1, {"S": S}, None),
+            ("arm", 2, {"S": S, "B": Bc}, None),
+            ("planet", 3, {"B": Bc, "P": P}, None),
+        ),
+        [
+            pin("ground.S", "arm.S"),
+            pin("arm.B", "planet.B"),
+            {"type": "gear", "a": "ground.S", "b": "planet.B", "ratio": -2, "carrier": "arm"},
+        ],
+        {"joint": 0, "rpm": 60, "direction": "ccw"},
+        ["planet.P"])
+
+
+# ----------------------------------------------------------------------------------------------
+# A slider-crank, crank 15 (drawn straight up) and rod 45, whose block runs in an arc slot of the
+# ground: radius 100 about C = (-100, 45), from (-4, 17) through (0, 45) to (-4, 73) (all three on
+# the circle: 96^2 + 28^2 = 100^2). The block turns about C, a rocker of 100: a four-bar 15, 45,
+# 100 on |OC| = 109.66 (15 + 109.66 < 45 + 100: the crank turns fully). 1000 rpm ccw.
+CG_R, CG_L, ARC_R = D(15), D(45), D(100)
+ARC_C = (D(-100), D(45))
+
+
+def curved_guide_sketch():
+    A = (D(0), CG_R)
+    B = circles(A, CG_L, ARC_C, ARC_R, left=False)  # the upper intersection
+    assert B[1] > A[1]
+    return A, B
+
+
+def curved_guide_file():
+    A, B = curved_guide_sketch()
+    O = (0, 0)
+    return linkage_file(
+        "Slider-crank in a curved guide",
+        bodies(
+            ("ground", 1, {"O": O}, {"guide": [(-4, 17), (0, 45), (-4, 73)]}),
+            ("crank", 2, {"O": O, "A": A}, None),
+            ("rod", 3, {"A": A, "B": B}, None),
+            ("block", 4, {"B": B}, None),
+        ),
+        [
+            pin("ground.O", "crank.O"),
+            pin("crank.A", "rod.A"),
+            pin("rod.B", "block.B"),
+            {"type": "slider", "a": "block.B", "slot": "ground.guide"},
+        ],
+        {"joint": 0, "rpm": 1000, "direction": "ccw"},
+        ["block.B"])
+
+
+def main():
+    s = lockstitch_sketch()
+    write("lockstitch-arm-shaft.linkage.json", lockstitch_file(s))
+    print("lockstitch-arm-shaft: " + ", ".join(f"{k} = {tuple(rounded(v))}" for k, v in s.items()))
+    lockstitch_timing()
+    write("gear-four-bar.linkage.json", gear_four_bar_file())
+    print("gear-four-bar: the four-bar-crank-rocker four-bar on a gear, pinion at (-45, 0)")
+    write("planet-epicycloid.linkage.json", planet_file())
+    print("planet-epicycloid: sun 20, planet 10, P = (40, 0)")
+    A, B = curved_guide_sketch()
+    write("curved-guide.linkage.json", curved_guide_file())
+    print(f"curved-guide: A = {tuple(rounded(A))}, B = {tuple(rounded(B))}")
+
+
+if __name__ == "__main__":
+    main()
