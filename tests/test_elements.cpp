@@ -11,6 +11,7 @@
 #include "linkage/elements.h"
 #include "linkage/instant_centres.h"
 #include "linkage/kinematics.h"
+#include "linkage/transmission.h"
 #include "mechanisms.h"
 #include "structure/decomposition.h"
 #include "system/system.h"
@@ -327,6 +328,29 @@ TEST(Elements, ArcSlotCentresAreOnTheRadiusAndAtTheCentre) {
     EXPECT_EQ(z->status, CentreStatus::Primary);
     EXPECT_LT((z->point() - Vec2(40, -60)).norm(), 1e-12 * 100);
     EXPECT_TRUE(ig.disagreements.empty());
+  }
+}
+
+// The transmission angle of a block in a curved guide is the rocker's, of a pin in an arc slot
+// the four-bar's: the same angle and rates at every pose (the radius is the rocker).
+TEST(Elements, ArcTransmissionAnglesAreTheEquivalentLinkages) {
+  const CurvedGuide c = curvedGuide();
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 30, true, 25, -10);
+  const Mechanism arcFourBar = fourBarWithArc(f, 50);
+  for (const auto& [a, b] : {std::pair{&c.guide, &c.rocker}, std::pair{&arcFourBar, &f.m}}) {
+    const std::vector<TransmissionJoint> ta = transmissionJoints(*a), tb = transmissionJoints(*b);
+    ASSERT_EQ(ta.size(), 1u);
+    ASSERT_EQ(tb.size(), 1u);
+    EXPECT_EQ(ta[0].kind, TransmissionKind::Dyad);
+    Kinematics ka = loaded(*a), kb = loaded(*b);
+    for (double deg = 0; deg < 360; deg += 9) {
+      ASSERT_TRUE(ka.moveTo(deg).ok() && kb.moveTo(deg).ok());
+      const TransmissionReading x = transmissionAngle(ka, ta[0]),
+                                y = transmissionAngle(kb, tb[0]);
+      EXPECT_NEAR(x.deg, y.deg, 1e-10) << deg;
+      EXPECT_NEAR(x.perDeg, y.perDeg, 1e-12) << deg;
+      EXPECT_NEAR(x.perDeg2, y.perDeg2, 1e-12) << deg;
+    }
   }
 }
 

@@ -6,6 +6,8 @@
 
 #include "analysis/assur_groups.h"
 #include "analysis/transmission_track.h"
+#include "linkage/elements.h"
+#include "linkage/guide.h"
 
 namespace linkage {
 
@@ -27,6 +29,7 @@ PointId pointOn(const Mechanism& m, JointId joint, BodyId body) {
   return b && b->body == body ? j->b : PointId{};
 }
 
+
 // theta (degrees, see transmission_track.h), its derivatives per degree of crank, and for a
 // rod sin(2 theta) and cos(2 theta), from the lines' directions (no sine evaluated). `slot` is
 // the slot's direction as drawn, on its body.
@@ -34,29 +37,48 @@ struct Signed {
   double deg = 0, perDeg = 0, perDeg2 = 0, sin2 = 0, cos2 = 0;
 };
 
-Signed signedAngle(const Kinematics& k, const TransmissionJoint& t, const Vec2& slot) {
+// A line from anchor `from` to anchor `to`: its rate of turning per radian of crank and the
+// rate's derivative, from its ends' exact velocities and accelerations (per second, divided by
+// the driver's speed): d/dt atan2(u) = u x u' / |u|^2.
+struct LineTurn {
+  Vec2 u = Vec2::Zero();
+  double rate = 0, accel = 0;
+};
+
+LineTurn lineTurn(const Kinematics& k, const Anchor& from, const Anchor& to) {
+  const Kinematics::PointMotion a = from.motion(k), b = to.motion(k);
   const double w = k.omega();
+  const Vec2 u = b.position - a.position, du = (b.velocity - a.velocity) / w,
+             ddu = (b.acceleration - a.acceleration) / (w * w);
+  const double n2 = u.squaredNorm(), c = cross(u, du);
+  return {u, c / n2, (cross(u, ddu) * n2 - 2 * c * u.dot(du)) / (n2 * n2)};
+}
+
+Signed signedAngle(const Kinematics& k, const TransmissionJoint& t, const Vec2& slot) {
   Signed out;
+  double rate = 0, accel = 0;  // of theta, per radian of crank
   if (t.kind == TransmissionKind::Dyad) {
-    const Vec2 u = k.position(t.linkOuter) - k.position(t.linkAt);
-    const Vec2 v = k.position(t.otherOuter) - k.position(t.otherAt);
-    out.deg = std::atan2(cross(u, v), u.dot(v)) / kDeg;
+    // From the link's line (joint -> its outer pin) to the other's.
+    const LineTurn u = lineTurn(k, t.linkAt, t.linkOuter), v = lineTurn(k, t.otherAt, t.otherOuter);
+    out.deg = std::atan2(cross(u.u, v.u), u.u.dot(v.u)) / kDeg;
+    rate = v.rate - u.rate;
+    accel = v.accel - u.accel;
   } else {
+    // From the slot's line (fixed in `other`) to the rod.
+    const LineTurn u = lineTurn(k, t.linkOuter, t.linkAt);
     const Vec2 d = k.bodyTransform(t.other).R * slot;
-    const Vec2 u = k.position(t.linkAt) - k.position(t.linkOuter);
-    const double c = d.dot(u), s = cross(d, u), n = c * c + s * s;
+    const double c = d.dot(u.u), s = cross(d, u.u), n = c * c + s * s;
     double theta = std::atan2(s, c);
     if (theta > M_PI / 2) theta -= M_PI;
     if (theta <= -M_PI / 2) theta += M_PI;
     out.deg = theta / kDeg;
     out.sin2 = 2 * s * c / n;
     out.cos2 = (c * c - s * s) / n;
+    rate = u.rate - k.bodyOmega(t.other) / k.omega();
+    accel = u.accel - k.bodyAlpha(t.other) / (k.omega() * k.omega());
   }
-  // A line fixed in a body turns with it: theta turns at the difference of the two bodies'
-  // rates (the rod's minus the slot's, the second link's minus the first's).
-  const double sign = isRod(t) ? 1 : -1;
-  out.perDeg = sign * (k.bodyOmega(t.link) - k.bodyOmega(t.other)) / w;
-  out.perDeg2 = sign * (k.bodyAlpha(t.link) - k.bodyAlpha(t.other)) / (w * w) * kDeg;
+  out.perDeg = rate;
+  out.perDeg2 = accel * kDeg;
   return out;
 }
 
@@ -89,35 +111,84 @@ const char* toString(TransmissionKind k) {
   return "?";
 }
 
+namespace {
+
+// The arc guide of a slot joint (a slider or a pin in a slot on an arc), if it is one.
+std::optional<Guide> arcOf(const Mechanism& m, JointId joint) {
+  const Joint* j = m.joint(joint);
+  if (!j || !kindOf(*j).reads(JointField::Slot)) return std::nullopt;
+  const Slot* s = m.slot(j->slot);
+  std::optional<Guide> g = s ? guideOf(*s) : std::nullopt;
+  return g && g->arc ? g : std::nullopt;
+}
+
+// Where an anchor is as drawn, and on which body (NaN where it names nothing).
+std::pair<BodyId, Vec2> anchored(const Mechanism& m, const Anchor& a) {
+  const Point* p = m.point(a.point);
+  const Slot* s = m.slot(a.arc);
+  const std::optional<Guide> g = s ? guideOf(*s) : std::nullopt;
+  if (!g) return {p ? p->body : BodyId{}, p ? p->pos : Vec2(NAN, NAN)};
+  if (!p) return {s->body, g->centre};
+  const Vec2 d = p->pos - g->centre;
+  return {p->body, Vec2(p->pos - g->radius * d.normalized())};
+}
+
+Vec2 sketchOf(const Mechanism& m, const Anchor& a) {
+  return anchored(m, a).second;
+}
+
+// The joint's angle as the group's kind gives it; false when the group has none.
+bool fromGroup(const Mechanism& m, const AssurGroup& g, TransmissionJoint& t) {
+  using K = AssurGroup::Kind;
+  if (g.kind != K::RRR && g.kind != K::RRP && g.kind != K::RP) return false;
+  t.link = g.bodies[0];
+  t.linkOuter = {pointOn(m, g.joints[0], t.link), {}};
+  t.joint = g.joints[1];
+  t.linkAt = {pointOn(m, t.joint, t.link), {}};
+  if (g.kind == K::RRR) {
+    t.kind = TransmissionKind::Dyad;
+    t.other = g.bodies[1];
+    t.otherAt = {pointOn(m, t.joint, t.other), {}};
+    if (arcOf(m, g.joints[2])) {
+      // A block in a curved guide: its line to the arc's centre, as the slider compiles it.
+      t.slot = m.joint(g.joints[2])->slot;
+      t.otherOuter = {m.joint(g.joints[2])->a, t.slot};
+    } else {
+      t.otherOuter = {pointOn(m, g.joints[2], t.other), {}};
+    }
+    return true;
+  }
+  const Joint* slide = m.joint(g.kind == K::RRP ? g.joints[2] : g.joints[1]);
+  t.slot = slide->slot;
+  t.other = m.slot(t.slot)->body;
+  if (const std::optional<Guide> arc = g.kind == K::RP ? arcOf(m, slide->id) : std::nullopt) {
+    // A pin in an arc slot: the radius from the pin to the centre, as the four-bar's rocker.
+    t.kind = TransmissionKind::Dyad;
+    t.otherAt = t.linkAt;
+    t.otherOuter = {{}, t.slot};
+    return true;
+  }
+  t.kind = g.kind == K::RRP ? TransmissionKind::RodSlider : TransmissionKind::RodInSlot;
+  return true;
+}
+
+}  // namespace
+
+Kinematics::PointMotion Anchor::motion(const Kinematics& k) const {
+  if (!arc) return k.motion(point);
+  const auto [body, sketch] = anchored(k.mechanism(), *this);
+  return k.motionOf(body, sketch);
+}
+
 std::vector<TransmissionJoint> transmissionJoints(const Mechanism& m) {
   std::vector<TransmissionJoint> out;
   for (const AssurGroup& g : decomposeAssur(m).groups) {
-    using K = AssurGroup::Kind;
-    if (g.kind != K::RRR && g.kind != K::RRP && g.kind != K::RP) continue;
     TransmissionJoint t;
-    t.link = g.bodies[0];
-    t.linkOuter = pointOn(m, g.joints[0], t.link);
-    t.joint = g.joints[1];
-    if (g.kind == K::RRR) {
-      t.kind = TransmissionKind::Dyad;
-      t.other = g.bodies[1];
-      t.linkAt = pointOn(m, t.joint, t.link);
-      t.otherAt = pointOn(m, t.joint, t.other);
-      t.otherOuter = pointOn(m, g.joints[2], t.other);
-    } else {
-      const Joint* slide = m.joint(g.kind == K::RRP ? g.joints[2] : g.joints[1]);
-      t.kind = g.kind == K::RRP ? TransmissionKind::RodSlider : TransmissionKind::RodInSlot;
-      t.slot = slide->slot;
-      t.other = m.slot(t.slot)->body;
-      t.linkAt = pointOn(m, t.joint, t.link);
-    }
-    // A link whose two pins are drawn at one place has no direction.
-    const Point *lo = m.point(t.linkOuter), *la = m.point(t.linkAt);
-    if (!lo || !la || lo->pos == la->pos) continue;
-    if (t.kind == TransmissionKind::Dyad) {
-      const Point *oo = m.point(t.otherOuter), *oa = m.point(t.otherAt);
-      if (!oo || !oa || oo->pos == oa->pos) continue;
-    }
+    if (!fromGroup(m, g, t)) continue;
+    // A line whose two ends are drawn at one place has no direction.
+    if (sketchOf(m, t.linkOuter) == sketchOf(m, t.linkAt)) continue;
+    if (t.kind == TransmissionKind::Dyad && sketchOf(m, t.otherOuter) == sketchOf(m, t.otherAt))
+      continue;
     t.label = "mu:" + m.pointLabel(m.joint(t.joint)->a);
     out.push_back(t);
   }

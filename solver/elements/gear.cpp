@@ -14,7 +14,7 @@
 //             infinity for ratio 1 (the bodies translate relative to each other).
 //   drawn:    ratio < 0, an external pair: pitch circles touching at the pitch point, radii
 //             |ratio| d / (1 + |ratio|) about A and d / (1 + |ratio|) about B (d = |AB|);
-//             ratio > 0: two pulleys with radii in the ratio, the larger d / 3, and the belt.
+//             ratio > 0: two pulleys with radii in the ratio, the larger d / 6, and the belt.
 #include "elements/gear.h"
 
 #include <cmath>
@@ -125,9 +125,10 @@ void symbol(const Mechanism& m, const Joint& j, JointSymbol& s) {
     s.radius[0] = r * d / (1 + r);
     s.radius[1] = d / (1 + r);
   } else {
-    // Pulleys turn in the ratio of their radii: |ratio| = radius at a / radius at b.
-    s.radius[0] = r >= 1 ? d / 3 : r * d / 3;
-    s.radius[1] = r >= 1 ? d / (3 * r) : d / 3;
+    // Pulleys turn in the ratio of their radii: |ratio| = radius at a / radius at b; the
+    // larger a sixth of the centre distance, clear of the cranks on the shafts.
+    s.radius[0] = r >= 1 ? d / 6 : r * d / 6;
+    s.radius[1] = r >= 1 ? d / (6 * r) : d / 6;
   }
 }
 

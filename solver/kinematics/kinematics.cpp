@@ -210,15 +210,28 @@ Vec2 Kinematics::acceleration(PointId p) const {
   return w * w * d_->cur().of(l->body).acc(l->s);
 }
 
+namespace {
+// Position, velocity and acceleration of the local point s of body index `body` (-1 ground).
+Kinematics::PointMotion motionAt(const KinematicsState& k, double w, int body, const Vec2& s) {
+  const auto& cur = k.cur();
+  const BodyState& b = cur.of(body);
+  const Vec2 g = b.R * s;
+  return {b.r + g, w * (b.v + b.w * perp(g)),
+          cur.accelerations ? Vec2(w * w * (b.a + b.al * perp(g) - b.w * b.w * g)) : kNaN2};
+}
+}  // namespace
+
 Kinematics::PointMotion Kinematics::motion(PointId p) const {
   const PointLocation* l = valid() ? d_->sys.point(p) : nullptr;
   if (!l) return {kNaN2, kNaN2, kNaN2};
-  const auto& cur = d_->cur();
-  const BodyState& b = cur.of(l->body);
-  const Vec2 g = b.R * l->s;
-  const double w = omega();
-  return {b.r + g, w * (b.v + b.w * perp(g)),
-          cur.accelerations ? Vec2(w * w * (b.a + b.al * perp(g) - b.w * b.w * g)) : kNaN2};
+  return motionAt(*d_, omega(), l->body, l->s);
+}
+
+Kinematics::PointMotion Kinematics::motionOf(BodyId b, const Vec2& sketch) const {
+  if (!valid() || !(b == d_->sys.groundId || d_->sys.bodyIndex(b) >= 0))
+    return {kNaN2, kNaN2, kNaN2};
+  const int k = d_->sys.bodyIndex(b);
+  return motionAt(*d_, omega(), k, k >= 0 ? Vec2(sketch - d_->sys.frameOrigin[k]) : sketch);
 }
 
 namespace {

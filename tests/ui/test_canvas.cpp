@@ -12,6 +12,7 @@
 #include <QDockWidget>
 #include "animation/animator.h"
 #include "canvas/canvas_scene.h"
+#include "linkage/guide.h"
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
 #include "document/document.h"
@@ -41,8 +42,10 @@ void expectDrawnAtSolver(const CanvasScene& s, const Kinematics& k, const std::s
   for (const BlockItem* b : s.blockItems()) {
     const Joint* j = m.joint(b->joint());
     EXPECT_LT((fromQt(b->pos()) - k.position(j->a)).norm(), 1e-9) << where;
-    const Kinematics::Segment slot = k.slotEnds(j->slot);
-    const Vec2 along = (slot.p1 - slot.p0).normalized();
+    // Along the slot where the block is: its line, or an arc's tangent there.
+    const Slot* sl = m.slot(j->slot);
+    const Transform T = k.bodyTransform(sl->body);
+    const Vec2 along = T.R * guideOf(*sl)->tangentAt(T.inverse(k.position(j->a)));
     const double a = b->rotation() * M_PI / 180;
     EXPECT_LT(std::abs(cross(Vec2(std::cos(a), std::sin(a)), along)), 1e-9) << where;
   }

@@ -154,13 +154,13 @@ void expectArcsAtPose(const Kinematics& k, const TransmissionItem& item, const s
     EXPECT_EQ(a.index, static_cast<int>(i));
     EXPECT_EQ(a.mu, transmissionAngle(k, t).deg) << at << " " << t.label;
     EXPECT_NEAR(a.sweepDeg, a.mu, 1e-9) << at << " " << t.label;
-    EXPECT_LT((a.centre - k.position(t.linkAt)).norm(), 1e-12) << at;
+    EXPECT_LT((a.centre - t.linkAt.at(k)).norm(), 1e-12) << at;
     const Vec2 start = a.from;
     const double end = std::atan2(a.from.y(), a.from.x()) + a.sweepDeg * kDeg;
     const Vec2 stop(std::cos(end), std::sin(end));
-    const Vec2 rod = (k.position(t.linkOuter) - a.centre).normalized();
+    const Vec2 rod = (t.linkOuter.at(k) - a.centre).normalized();
     const Vec2 other = t.kind == TransmissionKind::Dyad
-                           ? Vec2((k.position(t.otherOuter) - k.position(t.otherAt)).normalized())
+                           ? Vec2((t.otherOuter.at(k) - t.otherAt.at(k)).normalized())
                            : a.normal;
     if (t.kind != TransmissionKind::Dyad) {
       const Kinematics::Segment s = k.slotEnds(t.slot);

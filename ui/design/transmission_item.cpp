@@ -58,10 +58,10 @@ void TransmissionItem::setPose(const Kinematics& k) {
     const TransmissionJoint& t = joints_[i];
     TransmissionArc a;
     a.index = static_cast<int>(i);
-    a.centre = k.position(t.linkAt);
-    const Vec2 rod = unit(k.position(t.linkOuter) - a.centre);
+    a.centre = t.linkAt.at(k);
+    const Vec2 rod = unit(t.linkOuter.at(k) - a.centre);
     if (t.kind == TransmissionKind::Dyad) {
-      span(a, rod, unit(k.position(t.otherOuter) - k.position(t.otherAt)));
+      span(a, rod, unit(t.otherOuter.at(k) - t.otherAt.at(k)));
     } else {
       const Kinematics::Segment s = k.slotEnds(t.slot);
       a.normal = perp(unit(s.p1 - s.p0));

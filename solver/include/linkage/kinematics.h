@@ -188,6 +188,9 @@ class Kinematics {
     Vec2 position, velocity, acceleration;
   };
   PointMotion motion(PointId p) const;
+  // The same of any point fixed in a body, given in the body's sketch coordinates (an arc
+  // slot's centre, a point being drawn); NaN for an unknown body.
+  PointMotion motionOf(BodyId b, const Vec2& sketch) const;
   Vec2 velocity(PointId p) const;
   Vec2 acceleration(PointId p) const;
   // Body angle (rad, relative to the drawing, whole turns counted), angular velocity and

@@ -10,11 +10,15 @@
 // - RodSlider: a rod pinned to a known body at P1 and to a slider block at C, the block in a
 //   slot: 90 degrees minus the angle between the rod and the slot's line (mu_3, formula 11).
 // - RodInSlot: the same with the rod's own point C in a known body's slot (pin-in-slot).
+// In an arc slot the slot's line is its radius: a block in a curved guide turns about the arc's
+// centre as a rocker would (a Dyad whose second line runs from the block to the centre), and a
+// pin in an arc slot makes a Dyad with the radius from the arc's centre to the pin, as the
+// four-bar it is equivalent to.
 // Other groups (the Wanzer triangle's class-III group, a block sliding along a rotating link)
 // have no such joint and are not reported.
 //
-// Each angle is read from the solved pose, and its rate from the bodies' angular velocities
-// (the angle between two lines fixed in two bodies changes at the difference of their rates),
+// Each angle is read from the solved pose, and its rate from the lines' (the angle between two
+// lines changes at the difference of their rates, each from its ends' exact velocities),
 // so its extremes and its crossings of the band are found by root finding to 1e-9 degree of
 // crank, as limit positions are (linkage/limits.h): the minimum and maximum are exact, not
 // the best of the samples.
@@ -30,15 +34,29 @@ namespace linkage {
 enum class TransmissionKind { Dyad, RodSlider, RodInSlot };
 const char* toString(TransmissionKind k);  // "dyad", "rod-slider", "rod-in-slot"
 
+// A point fixed in a body, read from the mechanism as it is (a study moves points): a point of
+// the mechanism; or an arc slot's centre, on the slot's body; or, with both, the point of the
+// point's body that stays at that centre (a block in a curved guide turns about it).
+struct Anchor {
+  PointId point;
+  SlotId arc;
+  Kinematics::PointMotion motion(const Kinematics& k) const;
+  Vec2 at(const Kinematics& k) const { return motion(k).position; }
+  bool operator==(const Anchor&) const = default;
+};
+
 struct TransmissionJoint {
   TransmissionKind kind = TransmissionKind::Dyad;
-  JointId joint;                // the middle pin (Dyad), the rod-block pin, or the pin-in-slot
-  BodyId link;                  // B1, or the rod
-  BodyId other;                 // B2 (Dyad) or the body that holds the slot
-  PointId linkOuter, linkAt;    // on `link`: its pin to a known body, its point at the joint
-  PointId otherOuter, otherAt;  // Dyad: on `other`, likewise
-  SlotId slot;                  // RodSlider, RodInSlot
-  std::string label;            // "mu:" and the joint's `a` point as in the file
+  JointId joint;  // the middle pin (Dyad), the rod-block pin, or the pin-in-slot
+  BodyId link;    // B1, or the rod
+  BodyId other;   // B2 (Dyad) or the body that holds the slot
+  // The link's line: from its pin to a known body to its point at the joint.
+  Anchor linkOuter, linkAt;
+  // Dyad: the second line, from its end at the joint to its outer end (on `other`; for a pin in
+  // an arc slot, the radius: from the pin to the arc's centre).
+  Anchor otherAt, otherOuter;
+  SlotId slot;        // RodSlider, RodInSlot; the arc slot of an arc's Dyad
+  std::string label;  // "mu:" and the joint's `a` point as in the file
 };
 
 // In the order the structure solves the groups (the paper's mu_1, mu_2, mu_3 for its mechanism).
