@@ -6,6 +6,7 @@
 #include "cli_common.h"
 #include "linkage/elements.h"
 #include "linkage/grashof.h"
+#include "linkage/groups.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
 
@@ -37,6 +38,22 @@ void printFourBarLoops(const Mechanism& m) {
               << "p + q = " << formatNumber(s[1] + s[2], 6) << ")\n";
   }
 }
+// The structural decomposition, group by group from the ground outwards, and how it is solved.
+void printGroups(const Mechanism& m, const Kinematics& k) {
+  const AssurDecomposition d = decomposeAssur(m);
+  for (size_t i = 0; i < d.groups.size(); ++i) {
+    std::cout << "group " << i + 1 << ": " << toString(d.groups[i].kind);
+    for (BodyId b : d.groups[i].bodies) std::cout << " " << m.body(b)->name;
+    std::cout << "\n";
+  }
+  for (BodyId b : d.unresolved) std::cout << "no group: " << m.body(b)->name << "\n";
+  if (k.valid())
+    std::cout << "solve: "
+              << (k.closedForm() ? "in closed form, group by group"
+                                 : "by Newton on all coordinates (the general solve)")
+              << "\n";
+}
+
 }  // namespace
 
 int info(int argc, char** argv) {
@@ -87,6 +104,7 @@ int info(int argc, char** argv) {
   }
   if (e == kOk)
     std::cout << "assembly: moved up to " << formatNumber(k.assembly().maxMove, 6) << " mm\n";
+  printGroups(*m, k);
   printFourBarLoops(*m);
   return e;
 }

@@ -5,9 +5,9 @@
 #include <random>
 #include <string>
 
-#include "analysis/assur_groups.h"
 #include "examples.h"
 #include "linkage/grashof.h"
+#include "linkage/groups.h"
 #include "linkage/io/model_file.h"
 #include "mechanisms.h"
 #include "reference/four_bar.h"

@@ -5,8 +5,8 @@
 #include <map>
 #include <set>
 
-#include "analysis/assur_groups.h"
 #include "linkage/elements.h"
+#include "linkage/groups.h"
 
 namespace linkage {
 

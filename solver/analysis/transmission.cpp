@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/assur_groups.h"
 #include "analysis/transmission_track.h"
 #include "linkage/elements.h"
+#include "linkage/groups.h"
 #include "linkage/guide.h"
 
 namespace linkage {
@@ -28,7 +28,6 @@ PointId pointOn(const Mechanism& m, JointId joint, BodyId body) {
   const Point* b = m.point(j->b);
   return b && b->body == body ? j->b : PointId{};
 }
-
 
 // theta (degrees, see transmission_track.h), its derivatives per degree of crank, and for a
 // rod sin(2 theta) and cos(2 theta), from the lines' directions (no sine evaluated). `slot` is

@@ -53,6 +53,14 @@ bool pinnedThere(const Mechanism& m, const Point& p, BodyId carrier) {
   return false;
 }
 
+// Appended in steps: "\"" + s trips GCC 12's -Wrestrict (a false alarm, its bug 105329).
+std::string quoted(const std::string& s) {
+  std::string q = "\"";
+  q += s;
+  q += '"';
+  return q;
+}
+
 std::string check(const Mechanism& m, const Joint& j, JointField& where) {
   where = JointField::Ratio;
   if (!std::isfinite(j.ratio) || j.ratio == 0)
@@ -63,18 +71,18 @@ std::string check(const Mechanism& m, const Joint& j, JointField& where) {
   const Point *a = m.point(j.a), *b = m.point(j.b);
   const BodyId c = carrierOf(m, j);
   const Body* cb = m.body(c);
-  const std::string carrier = cb ? "\"" + cb->name + "\"" : "(none)";
+  const std::string carrier = cb ? quoted(cb->name) : "(none)";
   where = JointField::B;
   if (a->body == b->body) return "a and b are on one body: a gear couples two bodies";
   for (const auto& [p, field] : {std::pair{a, JointField::A}, std::pair{b, JointField::B}}) {
     where = field;
     if (p->body == c)
-      return "\"" + m.pointLabel(p->id) + "\" is on the carrier " + carrier +
+      return quoted(m.pointLabel(p->id)) + " is on the carrier " + carrier +
              " itself: a gear turns relative to its carrier";
     if (!pinnedThere(m, *p, c)) {
       const Body* pb = m.body(p->body);
-      return "\"" + m.pointLabel(p->id) + "\" is not where body \"" + (pb ? pb->name : "?") +
-             "\" is pinned to the carrier " + carrier +
+      return quoted(m.pointLabel(p->id)) + " is not where body " + quoted(pb ? pb->name : "?") +
+             " is pinned to the carrier " + carrier +
              ": a gear's centres are its bodies' pivots on the carrier";
     }
   }

@@ -1,8 +1,19 @@
-#include "analysis/assur_groups.h"
+#include "linkage/groups.h"
 
+#include "structure/decomposition.h"
 #include "system/system.h"
 
 namespace linkage {
+
+const char* toString(GroupKind k) {
+  static const char* const names[] = {"crank", "geared", "RRR", "RRP", "RP", "triad", "other"};
+  return names[static_cast<int>(k)];
+}
+
+// The same kinds in the same order as the decomposition's.
+static_assert(static_cast<int>(GroupKind::Other) == static_cast<int>(Group::Kind::Other) &&
+              static_cast<int>(GroupKind::Geared) == static_cast<int>(Group::Kind::Geared) &&
+              static_cast<int>(GroupKind::Triad) == static_cast<int>(Group::Kind::Triad));
 
 int AssurDecomposition::groupOf(BodyId b) const {
   if (b == ground) return -1;
@@ -20,7 +31,7 @@ AssurDecomposition decomposeAssur(const Mechanism& m) {
   const Decomposition d = decompose(*sys);
   for (const Group& g : d.groups) {
     AssurGroup a;
-    a.kind = g.kind;
+    a.kind = static_cast<GroupKind>(g.kind);
     for (int b : g.bodies) a.bodies.push_back(sys->bodyIds[b]);
     for (int j : g.joints) a.joints.push_back(m.joints[j].id);
     for (int b : g.bodies) out.solvedBy.emplace_back(sys->bodyIds[b], out.groups.size());

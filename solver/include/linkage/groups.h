@@ -1,0 +1,42 @@
+// The structural decomposition of a mechanism as drawn, by ids: the driven crank, then groups
+// attached one after another to bodies already known, from the ground outwards (the one
+// decomposition, structure/decomposition.h, that the closed-form solve uses too): what the
+// transmission angles and the four-bar loops read (linkage/transmission.h, linkage/grashof.h)
+// and what `linkage-cli info` lists.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "linkage/model.h"
+
+namespace linkage {
+
+// Crank: the driven body. Geared: a body pinned to a known one whose angle a gear or belt fixes.
+// RRR: two links and three pins (a block in an arc slot counts as pinned at the arc's centre).
+// RRP: a rod and a block in a straight slot. RP: a body pinned to a known one with a point in a
+// known body's slot (straight or arc). Triad: one body held by three conditions, with its
+// slider blocks (the Wanzer triangle). Other: anything else (solved by the general Newton).
+enum class GroupKind { Crank, Geared, RRR, RRP, RP, Triad, Other };
+const char* toString(GroupKind k);  // "crank", "geared", "RRR", "RRP", "RP", "triad", "other"
+
+struct AssurGroup {
+  using Kind = GroupKind;
+  Kind kind = Kind::Other;
+  std::vector<BodyId> bodies;   // in the kind's order (structure/decomposition.h)
+  std::vector<JointId> joints;  // the elements of its rows, in their order
+};
+
+struct AssurDecomposition {
+  std::vector<AssurGroup> groups;  // in solving order
+  std::vector<BodyId> unresolved;  // moving bodies no group reached, file order
+  // The group that solves a body: -1 for the ground, groups.size() when unresolved or unknown.
+  int groupOf(BodyId b) const;
+  std::vector<std::pair<BodyId, int>> solvedBy;  // every moving body a group solves, and which
+  BodyId ground;
+};
+
+// Empty when the mechanism does not compile (a reference or a slot it cannot use).
+AssurDecomposition decomposeAssur(const Mechanism& m);
+
+}  // namespace linkage
