@@ -44,13 +44,16 @@ PoseEdit editAtPose(const Kinematics& current, Mechanism next) {
       Kinematics atSketch = out.kinematics;
       if (atSketch.moveTo(sketchDeg).ok()) {
         redraw(next, atSketch);
+        // The same shapes moved rigidly to the same sketch pose: the solution here does not
+        // change, nor does the crank angle.
+        out.solved = out.kinematics.edit(next).ok();
       } else {
-        // The sketch's pose is out of reach now: the drawing becomes this pose.
+        // The sketch's pose is out of reach now: the drawing becomes this pose, and crank
+        // angle 0 with it (a file must reach its crank angle 0 to load).
         redraw(next, out.kinematics);
-        next.driver->startDeg = -out.kinematics.crankDeg();
+        next.driver->startDeg = 0;
+        out.solved = out.kinematics.load(next).ok();
       }
-      // The same shapes moved rigidly: the solution here does not change.
-      out.solved = out.kinematics.edit(next).ok();
     }
   }
   out.design = std::move(next);

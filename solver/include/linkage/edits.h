@@ -63,9 +63,9 @@ bool changeJointType(Mechanism& m, JointId j, JointType type, std::string* why =
 // mechanism is solved here first (from `current`, the solver before the edit), turned back
 // along its motion to the sketch's pose, and every body redrawn where it is there (bodies that
 // did not move keep their numbers to the last bit). Where the sketch's pose cannot be reached
-// any more, the drawing becomes the current pose and the start offset says so (the crank angle
-// is unchanged). Not solved: `design` is the edit as given, for the caller to keep with the
-// solver's reason.
+// any more, the drawing becomes the current pose, and so does crank angle 0 (start offset 0: a
+// file must reach its crank angle 0 to load). Not solved: `design` is the edit as given, for
+// the caller to keep with the solver's reason.
 struct PoseEdit {
   Mechanism design;
   Kinematics kinematics;  // solved at the current crank angle (when `solved`)

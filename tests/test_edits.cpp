@@ -1,0 +1,116 @@
+// The editing operations the editor's tools make (linkage/edits.h), without Qt: links pinned
+// where they are drawn, ground pivots, blocks and pins in slots, the driver, joint types, gears,
+// arc slots, and an edit made at the current pose redrawn at the sketch's (editAtPose).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "linkage/edits.h"
+#include "linkage/elements.h"
+#include "mechanisms.h"
+
+namespace linkage {
+namespace {
+
+TEST(Edits, LinksPinWhereTheyAreDrawnAndTakeTextbookNames) {
+  Mechanism m;
+  m.addBody("ground", true);
+  const PointId g = addGroundPoint(m, Vec2(0, 0));
+  const BodyId crank = addLink(m, {{Vec2(0, 0), g}, {Vec2(20, 0), {}}});
+  ASSERT_TRUE(crank);
+  EXPECT_EQ(m.body(crank)->name, "link2");
+  ASSERT_EQ(m.joints.size(), 1u);
+  EXPECT_EQ(jointLabel(m, m.joints[0].id), "joints[0] (pin ground.A - link2.A)");
+  std::string why;
+  EXPECT_FALSE(addLink(m, {{Vec2(0, 0), {}}}, &why));
+  EXPECT_EQ(why, "a link needs two points at least");
+  // The pin's points are one place: moving one moves the other with it.
+  EXPECT_EQ(pinnedTogether(m, g).size(), 2u);
+  // The driver is a pin, its ground side made `a`; a slider is refused.
+  EXPECT_TRUE(setDriver(m, m.joints[0].id, &why));
+  EXPECT_EQ(m.point(m.joints[0].a)->body, m.ground()->id);
+  const SlotId slot = addBodySlot(m, m.ground()->id, Vec2(40, -20), Vec2(40, 20));
+  const PointId tip = m.pointNamed(crank, "B")->id;
+  const BodyId block = addBlock(m, tip, slot, Vec2(20, 0), &why);
+  ASSERT_TRUE(block) << why;
+  const JointId slider = m.joints.back().id;
+  EXPECT_EQ(m.joint(slider)->type, JointType::Slider);
+  EXPECT_FALSE(setDriver(m, slider, &why));
+  EXPECT_EQ(why, "the driver is a pin joint: pick a pin");
+  // A slider and a pin in a slot change into each other; a pin cannot become either.
+  EXPECT_TRUE(changeJointType(m, slider, JointType::PinInSlot, &why));
+  EXPECT_TRUE(changeJointType(m, slider, JointType::Slider, &why));
+  EXPECT_FALSE(changeJointType(m, m.joints[0].id, JointType::Slider, &why));
+  EXPECT_NE(why.find("a pin cannot become a slider"), std::string::npos) << why;
+  // A point and a slot of one body cannot make a joint.
+  EXPECT_FALSE(addPinInSlot(m, m.pointNamed(m.ground()->id, "A")->id, slot, &why));
+  toggleOutput(m, tip);
+  EXPECT_EQ(m.outputs, std::vector<PointId>{tip});
+  toggleOutput(m, tip);
+  EXPECT_TRUE(m.outputs.empty());
+}
+
+TEST(Edits, AnEditAtTheCurrentPoseIsRedrawnAtTheSketchs) {
+  // A four-bar turned to crank 90: a point added to the coupler where it is now is drawn, in the
+  // file, where the coupler is at crank 0; the bodies the edit did not move keep their numbers
+  // to the last bit.
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 0);
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  ASSERT_TRUE(k.moveTo(90).ok());
+  const Vec2 now = k.position(f.B) + Vec2(0, 10);  // 10 mm above B, where it is now
+  Mechanism next = f.m;
+  const PointId q = addBodyPoint(next, f.coupler, k.toSketch(f.coupler, now));
+  ASSERT_TRUE(q);
+  // As the tools do: the new point in the coupler's drawing, from where it is now.
+  const PoseEdit e = editAtPose(k, next);
+  ASSERT_TRUE(e.solved);
+  EXPECT_EQ(e.kinematics.crankDeg(), 90);
+  EXPECT_LT((e.kinematics.position(q) - now).norm(), 1e-9);
+  // The file's drawing is the sketch's pose: the crank back at 0 puts the point there.
+  Kinematics atZero;
+  ASSERT_TRUE(atZero.load(e.design).ok());
+  EXPECT_LT((atZero.position(q) - e.design.point(q)->pos).norm(), 1e-9);
+  for (const Point& p : f.m.points) EXPECT_EQ(e.design.point(p.id)->pos, p.pos);
+  // An edit the solver refuses is handed back as given, unsolved.
+  Mechanism broken = f.m;
+  broken.point(f.O4)->pos = Vec2(500, 0);
+  const PoseEdit refused = editAtPose(k, broken);
+  EXPECT_FALSE(refused.solved);
+  EXPECT_EQ(refused.design.point(f.O4)->pos, Vec2(500, 0));
+}
+
+TEST(Edits, AnEditWhoseSketchPoseIsOutOfReachBecomesTheDrawing) {
+  // A crank-rocker turned to crank 90 (A = (0, 20)); its rocker pivot moved, where it is now, to
+  // O4 = (-80, 70) with a rocker of 40: the loop closes here (|A O4| = 94.3 < 70 + 40) but not at
+  // crank 0 (|A O4| = 122 > 110). The drawing becomes this pose, and crank angle 0 with it.
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 0);
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  ASSERT_TRUE(k.moveTo(90).ok());
+  const Vec2 A(0, 20), O4(-80, 70);
+  ASSERT_LT((k.position(f.A) - A).norm(), 1e-12);
+  // B: on the circles of 70 about A and 40 about O4.
+  const Vec2 e = O4 - A;
+  const double d = e.norm(), a = (70 * 70 - 40 * 40 + d * d) / (2 * d);
+  const Vec2 B = A + a * e / d + std::sqrt(70 * 70 - a * a) * perp(e / d);
+  Mechanism next = f.m;
+  for (const Point& p : f.m.points) {
+    const bool pivot = p.name == "O4", pin = p.name == "B";
+    if (pivot || pin) next.point(p.id)->pos = k.toSketch(p.body, pivot ? O4 : B);
+  }
+  const PoseEdit edit = editAtPose(k, next);
+  ASSERT_TRUE(edit.solved);
+  ASSERT_TRUE(edit.design.driver);
+  EXPECT_EQ(edit.design.driver->startDeg, 0);
+  EXPECT_EQ(edit.kinematics.crankDeg(), 0);
+  // Loaded, the file starts where the edit was made.
+  Kinematics loaded;
+  ASSERT_TRUE(loaded.load(edit.design).ok());
+  for (const Point& p : edit.design.points)
+    EXPECT_LT((loaded.position(p.id) - edit.kinematics.position(p.id)).norm(), 1e-9) << p.name;
+  EXPECT_LT((loaded.position(f.O4) - O4).norm(), 1e-9);
+}
+
+}  // namespace
+}  // namespace linkage
