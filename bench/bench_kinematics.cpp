@@ -19,10 +19,12 @@ using namespace linkage;
 
 using bench::example;
 
-void kinematicStep(benchmark::State& state, const std::string& name, bool accelerations) {
+void kinematicStep(benchmark::State& state, const std::string& name, bool accelerations,
+                   bool closedForm = true) {
   const Mechanism m = example(name);
   KinematicsOptions opt;
   opt.accelerations = accelerations;
+  opt.closedForm = closedForm;
   Kinematics k(opt);
   if (!k.load(m).ok()) std::abort();
   const PointId out = m.outputs.at(0);
@@ -64,6 +66,24 @@ BENCHMARK_CAPTURE(kinematicStep, four_bar, std::string("four-bar-crank-rocker"),
     ->Name("step/four_bar");
 BENCHMARK_CAPTURE(kinematicStep, wanzer, std::string("wanzer-inversion-2"), true)
     ->Name("step/wanzer");
+// The gear, belt and arc examples, in closed form (geared bodies, a pin in an arc, a block in a
+// curved guide) and by the general Newton, for the comparison.
+BENCHMARK_CAPTURE(kinematicStep, lockstitch, std::string("lockstitch-arm-shaft"), true)
+    ->Name("step/lockstitch");
+BENCHMARK_CAPTURE(kinematicStep, gear_four_bar, std::string("gear-four-bar"), true)
+    ->Name("step/gear_four_bar");
+BENCHMARK_CAPTURE(kinematicStep, planet, std::string("planet-epicycloid"), true)
+    ->Name("step/planet");
+BENCHMARK_CAPTURE(kinematicStep, curved_guide, std::string("curved-guide"), true)
+    ->Name("step/curved_guide");
+BENCHMARK_CAPTURE(kinematicStep, lockstitch, std::string("lockstitch-arm-shaft"), true, false)
+    ->Name("step_general/lockstitch");
+BENCHMARK_CAPTURE(kinematicStep, gear_four_bar, std::string("gear-four-bar"), true, false)
+    ->Name("step_general/gear_four_bar");
+BENCHMARK_CAPTURE(kinematicStep, planet, std::string("planet-epicycloid"), true, false)
+    ->Name("step_general/planet");
+BENCHMARK_CAPTURE(kinematicStep, curved_guide, std::string("curved-guide"), true, false)
+    ->Name("step_general/curved_guide");
 // The same steps without accelerations (positions and velocities only): what leaving them out
 // saves.
 BENCHMARK_CAPTURE(kinematicStep, slider_crank, std::string("slider-crank-22a-lambda-0.5"), false)

@@ -221,17 +221,17 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
   return Status::success();
 }
 
-Vec3 InstantCentreSolver::scaled(const Vec2& p) const {
+inline Vec3 InstantCentreSolver::scaled(const Vec2& p) const {
   const Vec2 u = (p - centre_) / L_;
   return Vec3(u.x(), u.y(), 1.0).normalized();
 }
 
-Vec2 InstantCentreSolver::turn(int body, const Vec2& v) const {
+inline Vec2 InstantCentreSolver::turn(int body, const Vec2& v) const {
   const int b = body + 1;
   return Vec2(cos_[b] * v.x() - sin_[b] * v.y(), sin_[b] * v.x() + cos_[b] * v.y());
 }
 
-Vec2 InstantCentreSolver::global(int body, const Vec2& s) const {
+inline Vec2 InstantCentreSolver::global(int body, const Vec2& s) const {
   return origin_[body + 1] + turn(body, s);
 }
 
@@ -248,14 +248,14 @@ Vec3 InstantCentreSolver::toPublic(const Vec3& h) const {
   return Vec3(p.x(), p.y(), 1.0);
 }
 
-Vec3 InstantCentreSolver::primaryLine(const Primary& pr) const {
+inline Vec3 InstantCentreSolver::primaryLine(const Primary& pr) const {
   const Vec3 p = scaled(global(pr.pBody[0], pr.p[0]));
   if (pr.rule == CentreRule::LineThrough) return p.cross(scaled(global(pr.pBody[1], pr.p[1])));
   const Vec2 n = turn(pr.nBody, pr.n);
   return p.cross(Vec3(n.x(), n.y(), 0.0));
 }
 
-void InstantCentreSolver::primaryPoint(const Primary& pr, Vec3& h, Vec3& mm, double& err) const {
+inline void InstantCentreSolver::primaryPoint(const Primary& pr, Vec3& h, Vec3& mm, double& err) const {
   err = 1;
   if (pr.rule == CentreRule::AtPoint) {
     const Vec2 x = global(pr.pBody[0], pr.p[0]);

@@ -171,12 +171,14 @@ class InstantCentreSolver {
 
   int pair(int a, int b) const;  // a != b, textbook indices
   std::vector<std::pair<int, Primary>> primaries(const Mechanism& m, const System& sys) const;
-  Eigen::Vector3d scaled(const Vec2& p) const;
+  [[gnu::always_inline]] inline Eigen::Vector3d scaled(const Vec2& p) const;
   Eigen::Vector3d toPublic(const Eigen::Vector3d& h) const;
-  Vec2 global(int body, const Vec2& s) const;  // system body index
-  Vec2 turn(int body, const Vec2& v) const;
-  Eigen::Vector3d primaryLine(const Primary& pr) const;  // LineAlong, LineThrough
-  void primaryPoint(const Primary& pr, Eigen::Vector3d& h, Eigen::Vector3d& mm, double& err) const;
+  [[gnu::always_inline]] inline Vec2 global(int body, const Vec2& s) const;  // system index
+  [[gnu::always_inline]] inline Vec2 turn(int body, const Vec2& v) const;
+  // (Inlined into primaryCentres, which runs for every pair at every frame.)
+  [[gnu::always_inline]] inline Eigen::Vector3d primaryLine(const Primary& pr) const;
+  [[gnu::always_inline]] inline void primaryPoint(const Primary& pr, Eigen::Vector3d& h,
+                                                  Eigen::Vector3d& mm, double& err) const;
   void primaryCentres();
   void kennedy();
   bool kennedyPass(int round, double limit);
