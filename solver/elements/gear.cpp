@@ -26,6 +26,8 @@ namespace linkage {
 
 namespace {
 
+constexpr const char* kForceColumns[] = {"fx_N", "fy_N"};
+
 constexpr FieldSpec kFields[] = {{JointField::A, true},
                                  {JointField::B, true},
                                  {JointField::Ratio, true},
@@ -146,14 +148,76 @@ void place(const Mechanism&, const Joint& j, const Pose& pose, JointSymbol& s) {
   for (int k = 0; k < 2; ++k) s.angle[k] = pose.body(s.bodies[k]).R.angle();
 }
 
+// The pin joining p's body to the carrier at p (see pinnedThere), or -1.
+int pivotIndex(const Mechanism& m, const Point& p, BodyId carrier) {
+  for (size_t i = 0; i < m.joints.size(); ++i) {
+    const Joint& k = m.joints[i];
+    if (kindOf(k).role != Role::Revolute) continue;
+    const Point *x = m.point(k.a), *y = m.point(k.b);
+    if (x && y &&
+        ((x->body == p.body && y->body == carrier) || (y->body == p.body && x->body == carrier)))
+      return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// Its rows apply couples to the bodies of a, b and the carrier. A gear pair does it as the tooth
+// force F at the pitch point (normal to the line of centres, its moment about a's centre the
+// couple on a's body), -F on b's body there; a belt as the pull of a run, F along the run where
+// it leaves a's pulley, -F where it meets b's (the drawn pulleys, radii in the ratio, the run
+// their outer tangent; the pretension, which pulls the shafts together, is not in the model).
+// Either way the shafts' pins carry what F pushes them by; the carrier then takes the pins' forces
+// only.
+void react(const Mechanism& m, int index, const Pose& pose, std::vector<JointReaction>& all) {
+  const Joint& j = m.joints[index];
+  JointReaction& r = all[index];
+  const Point *a = m.point(j.a), *b = m.point(j.b);
+  const Vec2 A = pose.point(j.a), B = pose.point(j.b);
+  const double M = r.coupleNm * 1000;  // N mm, on a's body about A
+  const double d = (B - A).norm();
+  if (!(d > 0)) return;  // coaxial: a couple is all there is
+  const Vec2 u = (B - A) / d;
+  if (j.ratio > 0) {
+    JointSymbol s;
+    symbol(m, j, s);
+    // The run: tangent to both pulleys on the same side, n its normal from the centres.
+    const double along = (s.radius[0] - s.radius[1]) / d;
+    const Vec2 n = along * u - std::sqrt(1 - along * along) * perp(u);
+    r.at = A + s.radius[0] * n;
+    const Vec2 run = (B + s.radius[1] * n - r.at).normalized();
+    r.force = M / cross(r.at - A, run) * run;  // cross(at - A, F) = M
+  } else {
+    const double toPitch = std::abs(j.ratio) * d / (1 + std::abs(j.ratio));
+    r.at = A + toPitch * u;
+    r.force = M / toPitch * perp(u);
+  }
+  r.coupleNm = 0;
+  const BodyId c = carrierOf(m, j);
+  for (const auto& [p, sign] : {std::pair{a, 1.0}, std::pair{b, -1.0}}) {
+    const int pin = pivotIndex(m, *p, c);
+    if (pin < 0) continue;
+    // The force on p's body from its pin changes by -(the coupling's force on that body).
+    const bool onGearSide = m.point(m.joints[pin].a)->body == p->body;
+    all[pin].force -= (onGearSide ? 1.0 : -1.0) * sign * r.force;
+  }
+}
+
 }  // namespace
 
 const ElementKind& gearElement() {
-  static const ElementKind kind{
-      JointType::Gear, "gear",  "couples the bodies of points \"a\" and \"b\"",
-      Role::Coupling,  1,       kFields,
-      check,           compile, centre,
-      symbol,          place};
+  static const ElementKind kind{JointType::Gear,
+                                "gear",
+                                "couples the bodies of points \"a\" and \"b\"",
+                                Role::Coupling,
+                                1,
+                                kFields,
+                                check,
+                                compile,
+                                centre,
+                                symbol,
+                                place,
+                                kForceColumns,
+                                react};
   return kind;
 }
 

@@ -13,6 +13,8 @@ namespace linkage {
 
 namespace {
 
+constexpr const char* kForceColumns[] = {"fx_N", "fy_N"};
+
 constexpr FieldSpec kFields[] = {{JointField::A, true}, {JointField::B, true}};
 
 std::string check(const Mechanism&, const Joint&, JointField&) {
@@ -60,7 +62,8 @@ const ElementKind& pinElement() {
   static const ElementKind kind{JointType::Pin, "pin",   "joins points \"a\" and \"b\"",
                                 Role::Revolute, 2,       kFields,
                                 check,          compile, centre,
-                                symbol,         place};
+                                symbol,         place,
+                                kForceColumns,  nullptr};
   return kind;
 }
 

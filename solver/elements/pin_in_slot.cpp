@@ -16,6 +16,8 @@ namespace linkage {
 
 namespace {
 
+constexpr const char* kForceColumns[] = {"fx_N", "fy_N"};
+
 bool compile(const Mechanism&, const Joint& j, const Frames& f, std::vector<Row>& rows,
              std::string& why) {
   const PointLocation* a = f.point(j.a);
@@ -71,7 +73,9 @@ const ElementKind& pinInSlotElement() {
                                 compile,
                                 centre,
                                 slot_joint::symbol,
-                                slot_joint::place};
+                                slot_joint::place,
+                                kForceColumns,
+                                nullptr};
   return kind;
 }
 

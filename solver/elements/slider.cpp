@@ -20,6 +20,8 @@ namespace linkage {
 
 namespace {
 
+constexpr const char* kColumns[] = {"fx_N", "fy_N", "m_Nm"};
+
 bool compile(const Mechanism& m, const Joint& j, const Frames& f, std::vector<Row>& rows,
              std::string& why) {
   const PointLocation* a = f.point(j.a);
@@ -86,7 +88,9 @@ const ElementKind& sliderElement() {
                                 compile,
                                 centre,
                                 slot_joint::symbol,
-                                slot_joint::place};
+                                slot_joint::place,
+                                kColumns,
+                                nullptr};
   return kind;
 }
 

@@ -13,131 +13,18 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "linkage/guide.h"
+#include "io/forces_read.h"
+#include "io/json_read.h"
 #include "io/json_tree.h"
 #include "linkage/elements.h"
+#include "linkage/guide.h"
 #include "linkage/io/model_file.h"
 
 namespace linkage {
 
 namespace {
 
-using Json = nlohmann::ordered_json;
-
-std::string literal(std::string_view s) {
-  return json_tree::literal<Json>(s);
-}
-std::string member(const std::string& path, const std::string& key) {
-  return json_tree::member<Json>(path, key);
-}
-
-// Written the way the messages spell the expected shape: [x, y], [[x0, y0], [x1, y1]].
-std::string inlineArray(const Json& v, int depth) {
-  std::string text = "[";
-  for (size_t i = 0; i < v.size() && text.size() <= 60; ++i) {
-    const Json& e = v[i];
-    text += i > 0 ? ", " : "";
-    if (e.is_array())
-      text += depth < 2 ? inlineArray(e, depth + 1) : "[...]";
-    else if (e.is_object())
-      text += "{...}";
-    else
-      text += e.dump(-1, ' ', false, Json::error_handler_t::replace);
-  }
-  return text + "]";
-}
-
-// What was found instead: scalars as written, containers by kind.
-std::string describe(const Json& v) {
-  switch (v.type()) {
-    case Json::value_t::string:
-      return literal(v.get_ref<const std::string&>());
-    case Json::value_t::object:
-      return v.empty() ? "an empty object" : "an object";
-    case Json::value_t::array: {
-      if (v.empty()) return "an empty array";
-      std::string text = inlineArray(v, 0);
-      return text.size() <= 60 ? text : "an array of " + std::to_string(v.size()) + " elements";
-    }
-    default:
-      return v.dump();
-  }
-}
-
-struct Refusal {
-  std::string message;
-};
-
-[[noreturn]] void refuse(const std::string& path, const std::string& what) {
-  throw Refusal{(path.empty() ? std::string("top level") : path) + ": " + what};
-}
-
-std::string element(const std::string& path, size_t i) {
-  return path + "[" + std::to_string(i) + "]";
-}
-
-const Json* find(const Json& obj, const char* key) {
-  auto it = obj.find(key);
-  return it == obj.end() ? nullptr : &*it;
-}
-
-const Json& require(const Json& obj, const char* key, const std::string& path) {
-  const Json* v = find(obj, key);
-  if (!v) refuse(path, std::string("missing required field ") + literal(key));
-  return *v;
-}
-
-void requireObject(const Json& v, const std::string& path) {
-  if (!v.is_object()) refuse(path, "expected an object {...}, got " + describe(v));
-}
-
-const std::string& getString(const Json& v, const std::string& path) {
-  if (!v.is_string()) refuse(path, "expected a string, got " + describe(v));
-  return v.get_ref<const std::string&>();
-}
-
-double getNumber(const Json& v, const std::string& path, const char* expected = "a number") {
-  // The reader refused non-finite values already; this guards hand-made trees.
-  if (!v.is_number() || !std::isfinite(v.get<double>()))
-    refuse(path, std::string("expected ") + expected + ", got " + describe(v));
-  return v.get<double>();
-}
-
-// Integers must be written as such: 2.0 or 2e0 is refused rather than silently truncated.
-long long getInteger(const Json& v, const std::string& path, const char* expected) {
-  if (v.is_number_integer() && !v.is_number_unsigned()) return v.get<long long>();
-  if (v.is_number_unsigned()) {
-    auto u = v.get<unsigned long long>();
-    return u > static_cast<unsigned long long>(LLONG_MAX) ? LLONG_MAX : static_cast<long long>(u);
-  }
-  refuse(path, std::string("expected ") + expected + ", got " + describe(v));
-}
-
-std::optional<Vec2> asPair(const Json& v) {
-  if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number()) return {};
-  Vec2 p(v[0].get<double>(), v[1].get<double>());
-  if (!p.allFinite()) return {};
-  return p;
-}
-
-// Keys outside `known` in their original order, as compact JSON object text; "" when none.
-Extras unknownFields(const Json& obj, std::initializer_list<const char*> known) {
-  Json extras = Json::object();
-  for (auto it = obj.begin(); it != obj.end(); ++it) {
-    bool isKnown = false;
-    for (const char* k : known) isKnown = isKnown || it.key() == k;
-    if (!isKnown) json_tree::appendMember(extras, it.key(), it.value());
-  }
-  return extras.empty() ? Extras() : extras.dump();
-}
-
-// References are "body.point" and names are checked to have no '.', so the first dot splits.
-void checkName(const std::string& name, const std::string& path, const char* kind) {
-  if (name.empty()) refuse(path, std::string("a ") + kind + " name may not be empty");
-  if (name.find('.') != std::string::npos)
-    refuse(path, std::string(kind) + " names may not contain '.' (references are \"body." +
-                     (std::strcmp(kind, "slot") == 0 ? "slot" : "point") + "\"): " + literal(name));
-}
+using namespace json_read;
 
 class Reader {
  public:
@@ -154,8 +41,19 @@ class Reader {
     if (std::string why = checkJoints(m_); !why.empty()) throw Refusal{why};
     if (const Json* d = find(root, "driver")) readDriver(*d);
     if (const Json* o = find(root, "outputs")) readOutputs(*o);
-    m_.extras = unknownFields(
-        root, {"format", "version", "name", "units", "bodies", "joints", "driver", "outputs"});
+    if (const Json* g = find(root, "gravity")) m_.gravity = readGravity(*g, "gravity");
+    if (const Json* l = find(root, "loads"))
+      readLoads(
+          *l, "loads", m_,
+          [this](const Json& v, const std::string& at) { return readPointRef(v, at).first; },
+          [this](const Json& v, const std::string& at) {
+            const std::string& name = getString(v, at);
+            auto it = bodies_.find(name);
+            if (it == bodies_.end()) refuse(at, "no body " + literal(name));
+            return it->second.id;
+          });
+    m_.extras = unknownFields(root, {"format", "version", "name", "units", "bodies", "joints",
+                                     "driver", "outputs", "gravity", "loads"});
     return std::move(m_);
   }
 
@@ -226,7 +124,8 @@ class Reader {
                  n->dump() + " is already the number of body " + literal(it->second));
         body.number = static_cast<int>(num);
       }
-      body.extras = unknownFields(b, {"name", "ground", "number", "points", "slots"});
+      if (const Json* mass = find(b, "mass")) body.mass = readMass(*mass, path + ".mass");
+      body.extras = unknownFields(b, {"name", "ground", "number", "points", "slots", "mass"});
 
       const Json& points = require(b, "points", path);
       requireObject(points, path + ".points");

@@ -128,7 +128,15 @@ Json bodyJson(const Body& b, const BodyContents& contents) {
                             s->mid ? Json::array({pair(s->p0), pair(*s->mid), pair(s->p1)})
                                    : Json::array({pair(s->p0), pair(s->p1)}));
   if (!slots.empty()) j["slots"] = std::move(slots);
-  appendExtras(j, b.extras, {"name", "ground", "number", "points", "slots"});
+  if (b.mass) {
+    Json mass = Json::object();
+    mass["kg"] = number(b.mass->kg);
+    mass["com"] = pair(b.mass->com);
+    mass["j_kg_mm2"] = number(b.mass->jKgMm2);
+    appendExtras(mass, b.mass->extras, {"kg", "com", "j_kg_mm2"});
+    j["mass"] = std::move(mass);
+  }
+  appendExtras(j, b.extras, {"name", "ground", "number", "points", "slots", "mass"});
   return j;
 }
 
@@ -182,6 +190,23 @@ Json jointJson(const Labels& labels, const Joint& jt) {
   return j;
 }
 
+Json loadJson(const Labels& labels, const Load& l) {
+  Json j = Json::object();
+  if (l.point) {
+    j["point"] = Labels::of(labels.points, l.point.value);
+    j["force_N"] = pair(l.forceN);
+  } else {
+    j["body"] = Labels::of(labels.bodies, l.body.value);
+    j["torque_Nm"] = number(l.torqueNm);
+  }
+  if (l.fromDeg && l.toDeg) {
+    j["from_deg"] = number(*l.fromDeg);
+    j["to_deg"] = number(*l.toDeg);
+  }
+  appendExtras(j, l.extras, {"point", "body", "force_N", "torque_Nm", "from_deg", "to_deg"});
+  return j;
+}
+
 }  // namespace
 
 std::string serializeMechanism(const Mechanism& m) {
@@ -219,8 +244,15 @@ std::string serializeMechanism(const Mechanism& m) {
   outputs["points"] = std::move(points);
   appendExtras(outputs, m.outputsExtras, {"points"});
   if (!m.outputs.empty() || outputs.size() > 1) doc["outputs"] = std::move(outputs);
+  if (m.gravity) doc["gravity"] = pair(*m.gravity);
+  if (!m.loads.empty()) {
+    Json loads = Json::array();
+    for (const Load& l : m.loads) loads.push_back(loadJson(labels, l));
+    doc["loads"] = std::move(loads);
+  }
   appendExtras(doc, m.extras,
-               {"format", "version", "name", "units", "bodies", "joints", "driver", "outputs"});
+               {"format", "version", "name", "units", "bodies", "joints", "driver", "outputs",
+                "gravity", "loads"});
   std::string out;
   emit(doc, 0, out);
   out += "\n";
@@ -288,6 +320,26 @@ std::string compareBody(const Mechanism& ma, const Body& a, const Mechanism& mb,
   return {};
 }
 
+// Masses, gravity, loads.
+std::string compareForces(const Mechanism& a, const Mechanism& b) {
+  for (size_t i = 0; i < a.bodies.size(); ++i)
+    if (a.bodies[i].mass != b.bodies[i].mass)
+      return "bodies[" + std::to_string(i) + "].mass differs";
+  if (a.gravity != b.gravity) return "gravity differs";
+  if (a.loads.size() != b.loads.size()) return "loads: different lengths";
+  for (size_t i = 0; i < a.loads.size(); ++i) {
+    const Load &x = a.loads[i], &y = b.loads[i];
+    const std::string w = "loads[" + std::to_string(i) + "]";
+    const Body *bx = a.body(x.body), *by = b.body(y.body);
+    if (a.pointLabel(x.point) != b.pointLabel(y.point) ||
+        (bx ? bx->name : "") != (by ? by->name : "") || x.forceN != y.forceN ||
+        x.torqueNm != y.torqueNm || x.fromDeg != y.fromDeg || x.toDeg != y.toDeg)
+      return w + " differs";
+    if (auto d = compareExtras(x.extras, y.extras, w); !d.empty()) return d;
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string mechanismDifference(const Mechanism& a, const Mechanism& b) {
@@ -334,7 +386,7 @@ std::string mechanismDifference(const Mechanism& a, const Mechanism& b) {
     if (a.pointLabel(a.outputs[i]) != b.pointLabel(b.outputs[i]))
       return "outputs.points[" + std::to_string(i) + "] differs";
   if (auto d = compareExtras(a.outputsExtras, b.outputsExtras, "outputs"); !d.empty()) return d;
-  return {};
+  return compareForces(a, b);
 }
 
 }  // namespace linkage

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 
 namespace linkage {
 
@@ -117,6 +118,9 @@ Removal Mechanism::remove(const std::vector<BodyId>& bodyIds, const std::vector<
       bodies, [&](const Body& b) { return listed(bodyIds, b.id); }, r.bodies);
   take(
       outputs, [&](const PointId& p) { return listed(goneP, p); }, r.outputs);
+  take(
+      loads, [&](const Load& l) { return listed(goneP, l.point) || listed(bodyIds, l.body); },
+      r.loads);
   const bool driverGone =
       driver && std::any_of(r.joints.begin(), r.joints.end(),
                             [&](const auto& j) { return j.value.id == driver->joint; });
@@ -133,7 +137,20 @@ void Mechanism::restore(const Removal& r) {
   putBack(slots, r.slots);
   putBack(joints, r.joints);
   putBack(outputs, r.outputs);
+  putBack(loads, r.loads);
   if (r.driver) driver = r.driver;
+}
+
+bool Load::activeAt(double crankDeg) const {
+  if (!fromDeg || !toDeg) return true;
+  // Angles modulo 360 in [0, 360); a window whose end is below its start wraps past 360.
+  auto wrap = [](double a) {
+    const double w = std::fmod(a, 360.0);
+    return w < 0 ? w + 360 : w;
+  };
+  const double a = wrap(crankDeg), from = wrap(*fromDeg), to = wrap(*toDeg);
+  if (*toDeg - *fromDeg >= 360) return true;
+  return from <= to ? (a >= from && a <= to) : (a >= from || a <= to);
 }
 
 const Body* Mechanism::body(BodyId id) const {

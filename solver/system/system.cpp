@@ -214,6 +214,36 @@ void evalJacobian(const System& sys, const std::vector<BodyView>& views,
   assert(w.slot == J.slot.data() + J.slot.size());
 }
 
+Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<BodyView>& views,
+                                        const Row& r) {
+  Eigen::Matrix<double, 2, 9> J = Eigen::Matrix<double, 2, 9>::Zero();
+  BodyView v[3];
+  for (int k = 0; k < 3; ++k) {
+    if (r.body[k] < 0) continue;
+    v[k] = views[r.body[k] + 1];
+    v[k].col = 3 * k;
+  }
+  switch (r.kind) {
+    case Primitive::Coincident:
+      coincident::jacobian(J, 0, v[0], r.s[0], v[1], r.s[1]);
+      break;
+    case Primitive::OnLine:
+      on_line::jacobian(J, 0, v[0], r.s[0], v[1], r.n);
+      break;
+    case Primitive::OnCircle:
+      on_circle::jacobian(J, 0, v[0], r.s[0], v[1], r.s[1], r.c[0]);
+      break;
+    case Primitive::Angles:
+      for (int k = 0; k < 3; ++k)
+        if (r.body[k] >= 0) J(0, 3 * k + 2) = sys.size * r.c[k];
+      break;
+    case Primitive::Hold:
+      J(0, r.col % 3) = holdScale(sys, r.col);
+      break;
+  }
+  return J;
+}
+
 void evalGamma(const System& sys, const std::vector<BodyView>& views,
                const std::vector<int>& rowMap, Eigen::VectorXd& out) {
   for (const Row& c : sys.cons) {

@@ -82,6 +82,10 @@ struct SparseJacobian {
 SparseJacobian sparseJacobian(const System& sys, const std::vector<int>& rowMap, int rows);
 void evalJacobian(const System& sys, const std::vector<BodyView>& views,
                   const std::vector<int>& rowMap, SparseJacobian& J);
+// One row block's Jacobian at the views: its rows() rows, three columns (x, y, theta) for each of
+// body[0..2] in order, zero for the ground and unused bodies (forces, group by group).
+Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<BodyView>& views,
+                                        const Row& r);
 // gamma with the views' velocities; J qdd = gamma.
 void evalGamma(const System& sys, const std::vector<BodyView>& views,
                const std::vector<int>& rowMap, Eigen::VectorXd& out);

@@ -82,6 +82,16 @@ struct JointSymbol {
   bool belt = false;          // a coupling drawn as two pulleys and a belt
 };
 
+// A joint's reaction at a pose (linkage/dynamics.h): the force on the body of its point a from
+// the other side (N), where it acts (world mm) and the couple with it (N m, about `at`). Made
+// from the joint's rows (a force at its point, a couple); a kind may state it otherwise
+// (react(): a gear's couple as the tooth force at the pitch point).
+struct JointReaction {
+  Vec2 force = Vec2::Zero();
+  Vec2 at = Vec2::Zero();
+  double coupleNm = 0;
+};
+
 struct ElementKind {
   JointType type;
   const char* name;   // in files, messages and the command line
@@ -100,6 +110,11 @@ struct ElementKind {
   CentreData (*centre)(const Mechanism& m, const Joint& j);
   void (*symbol)(const Mechanism& m, const Joint& j, JointSymbol& s);
   void (*place)(const Mechanism& m, const Joint& j, const Pose& pose, JointSymbol& s);
+  // The columns of its reaction in `linkage-cli dynamics`, after "<name>:<a>." (fx_N, ...),
+  // and a restatement of its reaction (nullptr: as its rows make it), which may also adjust
+  // others' (`all`, in Mechanism::joints order; `index` its own).
+  std::span<const char* const> reactionColumns;
+  void (*react)(const Mechanism& m, int index, const Pose& pose, std::vector<JointReaction>& all);
 
   bool reads(JointField f) const;
 };

@@ -38,11 +38,22 @@ using JointId = Id<struct JointTag>;
 // JSON object ("" when there were none), and written back on save.
 using Extras = std::string;
 
+// A body's mass properties: its mass, its centre of mass in sketch coordinates (the drawing's
+// pose, like its points) and its moment of inertia about that centre.
+struct Mass {
+  double kg = 0;
+  Vec2 com = Vec2::Zero();
+  double jKgMm2 = 0;
+  Extras extras;
+  bool operator==(const Mass&) const = default;
+};
+
 struct Body {
   BodyId id;
   std::string name;
   bool ground = false;
   std::optional<int> number;  // textbook number for instant centres (ground is 1)
+  std::optional<Mass> mass;   // none: massless (the ground's is not used)
   Extras extras;
 };
 
@@ -81,6 +92,19 @@ struct Joint {
   Extras extras;
 };
 
+// An external load: a force on a point's body at the point (N, in sketch axes), or a torque on
+// a body (N m, counter-clockwise positive); acting while the crank angle modulo 360 lies in the
+// closed window [fromDeg, toDeg] (which may wrap past 360), or always without a window.
+struct Load {
+  PointId point;  // a force at this point
+  BodyId body;    // or a torque on this body
+  Vec2 forceN = Vec2::Zero();
+  double torqueNm = 0;
+  std::optional<double> fromDeg, toDeg;
+  Extras extras;
+  bool activeAt(double crankDeg) const;
+};
+
 enum class Direction { Cw, Ccw };
 
 struct Driver {
@@ -104,6 +128,7 @@ struct Removal {
   std::vector<At<Slot>> slots;
   std::vector<At<Joint>> joints;
   std::vector<At<PointId>> outputs;
+  std::vector<At<Load>> loads;
   std::optional<Driver> driver;  // set when the driver's joint was removed
   bool empty() const { return bodies.empty() && points.empty() && slots.empty() && joints.empty(); }
 };
@@ -117,6 +142,8 @@ struct Mechanism {
   std::vector<Joint> joints;  // file order: the driver's "joint" index counts in it
   std::optional<Driver> driver;
   std::vector<PointId> outputs;
+  std::optional<Vec2> gravity;  // m/s^2 in sketch axes; none: no gravity
+  std::vector<Load> loads;
   Extras extras;         // unknown top-level fields
   Extras unitsExtras;    // unknown fields of "units"
   Extras outputsExtras;  // unknown fields of "outputs"
@@ -138,7 +165,8 @@ struct Mechanism {
 
   // Removal cascades to what cannot stand without the entity: a joint takes the driver along if
   // it is the driver's; a point its joints and its place among the outputs; a slot its joints;
-  // a body its points and slots (and so their joints) and the joints it carries. Ids this mechanism
+  // a body its points and slots (and so their joints) and the joints it carries; a point or a
+  // body the loads on it. Ids this mechanism
   // does not hold are ignored. The Removal undoes it exactly with restore(), as long as nothing
   // else changed in between (what an undo stack guarantees).
   Removal remove(const std::vector<BodyId>& bodies, const std::vector<PointId>& points = {},

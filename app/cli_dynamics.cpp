@@ -1,0 +1,163 @@
+// linkage-cli dynamics: forces over crank angles at the driver's constant speed.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "cli_common.h"
+#include "linkage/dynamics.h"
+#include "linkage/elements.h"
+#include "linkage/io/numbers.h"
+
+namespace linkage::cli {
+
+namespace {
+
+const char* kHelp =
+    R"(usage: linkage-cli dynamics MODEL [--steps N] [--revs R] [--rpm RPM] [--out FILE]
+
+Writes the forces of MODEL at its driver's constant speed (kinetostatics: from the exact
+accelerations, one linear solve with the transpose of the constraint Jacobian per crank angle),
+from the bodies' masses, the gravity and the loads of the file: a header row, then one row per
+crank angle 0, 360/N, ..., 360*R with
+
+  t_s,crank_deg,driver_torque_Nm,shaking_fx_N,shaking_fy_N,shaking_moment_Nm
+
+then for each joint in file order its reaction, the force on the body of its point a from the
+other side: pin:<a>.fx_N,pin:<a>.fy_N; slider:<a>.fx_N,slider:<a>.fy_N,slider:<a>.m_Nm (with
+the couple about a); pin-in-slot:<a>.fx_N,pin-in-slot:<a>.fy_N; gear:<a>.fx_N,gear:<a>.fy_N
+(a gear pair's tooth force at the pitch point; a belt's pull along its run): <a> is the joint's
+point a as "body.point". 17 significant digits. Reactions that the joints do not determine
+(redundant joints) are left empty, and the joints are named on standard error.
+
+  --steps N         steps per revolution (default 360)
+  --revs R          revolutions (default 1); N * R must be a whole number
+  --rpm RPM         driver speed instead of the file's
+  --out FILE        write the table to FILE (atomically) instead of standard output
+
+Exit status: 0 success, 2 bad input (options, file, masses or loads, or a mechanism the driver
+does not determine), 3 the mechanism cannot reach some crank angle: the rows up to there are
+written, then the reason on standard error.
+)";
+
+struct Options {
+  std::string model, out;
+  long long steps = 360;
+  double revs = 1, rpm = 0;
+};
+
+std::optional<int> readOptions(int argc, char** argv, Options& o) {
+  Arguments args("dynamics", kHelp);
+  args.value("--steps",
+             [&](const std::string& a, const std::string& v) {
+               const std::optional<long long> n = wholeNumber(a, v);
+               if (n && *n < 1) error("--steps: must be at least 1");
+               if (n && *n >= 1) o.steps = *n;
+               return n && *n >= 1;
+             })
+      .value("--revs",
+             [&](const std::string& a, const std::string& v) {
+               const std::optional<double> r = positiveNumber(a, v);
+               if (r) o.revs = *r;
+               return r.has_value();
+             })
+      .value("--rpm",
+             [&](const std::string& a, const std::string& v) {
+               const std::optional<double> r = positiveNumber(a, v);
+               if (r) o.rpm = *r;
+               return r.has_value();
+             })
+      .value("--out", [&](const std::string&, const std::string& v) {
+        o.out = v;
+        return true;
+      });
+  if (std::optional<int> e = args.read(argc, argv, o.model)) return e;
+  const double rows = o.steps * o.revs;
+  if (std::abs(rows - std::round(rows)) > 1e-9 * rows || rows > 5e7) {
+    error("dynamics: --steps " + std::to_string(o.steps) + " times --revs " + formatNumber(o.revs) +
+          " is not a whole number of steps (or over 50 million)");
+    return kBadInput;
+  }
+  return std::nullopt;
+}
+
+std::string header(const Mechanism& m) {
+  std::string h = "t_s,crank_deg,driver_torque_Nm,shaking_fx_N,shaking_fy_N,shaking_moment_Nm";
+  for (const Joint& j : m.joints) {
+    const ElementKind& kind = kindOf(j);
+    for (const char* c : kind.reactionColumns)
+      h += std::string(",") + kind.name + ":" + m.pointLabel(j.a) + "." + c;
+  }
+  return h;
+}
+
+std::string row(const Mechanism& m, const Forces& f, double t, double deg,
+                const std::vector<char>& undetermined) {
+  std::string r = formatNumber(t) + "," + formatNumber(deg) + "," + formatNumber(f.driverTorqueNm) +
+                  "," + formatNumber(f.shakingForceN.x()) + "," +
+                  formatNumber(f.shakingForceN.y()) + "," + formatNumber(f.shakingMomentNm);
+  for (size_t i = 0; i < m.joints.size(); ++i) {
+    const JointReaction& x = f.joints[i];
+    const double values[3] = {x.force.x(), x.force.y(), x.coupleNm};
+    const size_t n = kindOf(m.joints[i]).reactionColumns.size();
+    for (size_t c = 0; c < n; ++c) r += "," + (undetermined[i] ? "" : formatNumber(values[c]));
+  }
+  return r;
+}
+
+}  // namespace
+
+int dynamics(int argc, char** argv) {
+  Options o;
+  if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
+  std::optional<Mechanism> m = openDrivenModel(o.model);
+  if (!m) return kBadInput;
+  Kinematics k;
+  if (int e = prepare(k, *m); e != kOk) return e;
+  if (o.rpm > 0) k.setRpm(o.rpm);
+  ForceSolver solver;
+  if (Status s = solver.prepare(k); !s.ok()) {
+    error(s.message);
+    return kBadInput;
+  }
+  const bool anything = m->gravity || !m->loads.empty() ||
+                        std::any_of(m->bodies.begin(), m->bodies.end(),
+                                    [](const Body& b) { return !b.ground && b.mass; });
+  if (!anything)
+    error(
+        "note: no moving body has a mass, and there is no gravity and no load: every force is "
+        "zero (masses: \"mass\" on a body, see docs/dynamics.md)");
+  std::vector<char> undetermined(m->joints.size(), 0);
+  if (!solver.result().undetermined.empty()) {
+    std::string names;
+    for (JointId j : solver.result().undetermined) {
+      undetermined[m->jointIndex(j)] = 1;
+      names += (names.empty() ? "" : ", ") + jointLabel(*m, j);
+    }
+    error("note: the reactions of " + names +
+          " are not determined (redundant joints share them in more than one way): their "
+          "columns are left empty");
+  }
+  std::string out = header(*m) + "\n";
+  const long long rows = std::llround(o.steps * o.revs);
+  Status s;
+  for (long long i = 0; i <= rows; ++i) {
+    const double deg = 360.0 * static_cast<double>(i) / static_cast<double>(o.steps);
+    if (s = k.moveTo(deg); !s.ok()) break;
+    const Forces& f = solver.compute(k);
+    if (!(s = f.status).ok()) break;
+    out += row(*m, f, deg / 360 * 60 / k.rpm(), deg, undetermined) + "\n";
+    if (o.out.empty() && out.size() > (1 << 16)) {
+      std::fwrite(out.data(), 1, out.size(), stdout);
+      out.clear();
+    }
+  }
+  if (int e = writeOutput(o.out, out); e != kOk) return e;
+  if (!s.ok()) {
+    error(s.message);
+    return exitFor(s);
+  }
+  return kOk;
+}
+
+}  // namespace linkage::cli

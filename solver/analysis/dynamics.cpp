@@ -1,0 +1,373 @@
+// Forces at the driver's constant speed: see linkage/dynamics.h.
+#include "linkage/dynamics.h"
+
+#include <Eigen/LU>
+#include <Eigen/SparseLU>
+#include <cmath>
+
+#include "kinematics/kinematics_state.h"
+
+namespace linkage {
+
+namespace {
+
+constexpr double kNaN = NAN;
+
+// Positions at k's pose, for the kinds' react().
+struct KinematicsPose : Pose {
+  const Kinematics& k;
+  explicit KinematicsPose(const Kinematics& kin) : k(kin) {}
+  Vec2 point(PointId p) const override { return k.position(p); }
+  Transform body(BodyId b) const override { return k.bodyTransform(b); }
+};
+
+}  // namespace
+
+struct ForceSolver::Impl {
+  struct BodyMass {
+    double kg = 0, j = 0;   // kg, kg mm^2
+    Vec2 c = Vec2::Zero();  // the centre of mass in the body's frame
+  };
+  struct LoadAt {
+    const Load* load;
+    int body = -1;
+    Vec2 s = Vec2::Zero();  // the point in the body's frame (a force)
+  };
+  std::uint64_t revision = 0;
+  std::vector<std::optional<BodyMass>> mass;  // by system body index
+  std::vector<LoadAt> loads;                  // on moving bodies
+  Vec2 gravity = Vec2::Zero();                // m/s^2
+  bool grouped = false;
+  std::vector<char> rowDetermined;  // by scalar row
+  std::vector<BodyView> views;
+  Eigen::VectorXd Q, S, lambda;
+
+  void bodies(const KinematicsState& s);
+  void undetermined(const KinematicsState& s, Forces& out);
+  void appliedAndInertia(const KinematicsState& s, double omega, double crankDeg);
+  bool solveByGroups(const KinematicsState& s);
+  bool solveWhole(const KinematicsState& s);
+  void reactions(const KinematicsState& s, const Kinematics& k, Forces& out) const;
+  void shakingOf(const System& sys, Vec2& force, double& moment) const;
+};
+
+void ForceSolver::ImplDeleter::operator()(Impl* p) const {
+  delete p;
+}
+
+void ForceSolver::Impl::bodies(const KinematicsState& s) {
+  const System& sys = s.sys;
+  mass.assign(sys.nBodies, std::nullopt);
+  for (const Body& b : s.mech.bodies) {
+    const int k = sys.bodyIndex(b.id);
+    if (k < 0 || !b.mass) continue;
+    mass[k] = BodyMass{b.mass->kg, b.mass->jKgMm2, Vec2(b.mass->com - sys.frameOrigin[k])};
+  }
+  loads.clear();
+  for (const Load& l : s.mech.loads) {
+    if (l.point) {
+      const PointLocation* p = sys.point(l.point);
+      if (p && p->body >= 0) loads.push_back({&l, p->body, p->s});
+    } else if (const int k = sys.bodyIndex(l.body); k >= 0) {
+      loads.push_back({&l, k, Vec2::Zero()});
+    }
+  }
+  gravity = s.mech.gravity.value_or(Vec2::Zero());
+}
+
+// Q: per body, at its frame origin, the force (N) and the moment (N mm) of its weight, its
+// inertia (-m a_com, -J alpha) and its loads. Lengths in mm, accelerations per second squared.
+void ForceSolver::Impl::appliedAndInertia(const KinematicsState& s, double omega, double crankDeg) {
+  const Motion& m = s.cur();
+  const int n = s.sys.nBodies;
+  Q.setZero(3 * n);
+  const double w2 = omega * omega;
+  for (int k = 0; k < n; ++k) {
+    if (!mass[k]) continue;
+    const BodyMass& bm = *mass[k];
+    const BodyState& b = m.body[k];
+    const Vec2 g = b.R * bm.c;
+    const Vec2 acc = w2 * (b.a + b.al * perp(g) - b.w * b.w * g);  // mm/s^2
+    const Vec2 F = bm.kg * (gravity - acc / 1000);                 // N
+    Q.segment<2>(3 * k) += F;
+    Q[3 * k + 2] += cross(g, F) - bm.j * w2 * b.al / 1000;  // N mm (kg mm^2/s^2 = 1e-3 N mm)
+  }
+  for (const LoadAt& l : loads) {
+    if (!l.load->activeAt(crankDeg)) continue;
+    if (l.load->point) {
+      const Vec2 g = m.body[l.body].R * l.s;
+      Q.segment<2>(3 * l.body) += l.load->forceN;
+      Q[3 * l.body + 2] += cross(g, l.load->forceN);
+    } else {
+      Q[3 * l.body + 2] += 1000 * l.load->torqueNm;
+    }
+  }
+}
+
+void ForceSolver::Impl::shakingOf(const System& sys, Vec2& force, double& moment) const {
+  force.setZero();
+  moment = 0;
+  for (int k = 0; k < sys.nBodies; ++k) {
+    const Vec2 F = Q.segment<2>(3 * k);
+    force += F;
+    moment += Q[3 * k + 2] + cross(views[k + 1].r, F);  // about the sketch origin, N mm
+  }
+  moment /= 1000;
+}
+
+// Group by group, the outermost first: each group's rows from its bodies' balance, less what
+// the rows of the groups after it (already solved) put on them.
+bool ForceSolver::Impl::solveByGroups(const KinematicsState& s) {
+  const System& sys = s.sys;
+  S.setZero(3 * sys.nBodies);
+  lambda.setConstant(sys.nRows, kNaN);
+  const std::vector<Group>& groups = s.decomposition.groups;
+  std::vector<Eigen::Matrix<double, 2, 9>> blocks;
+  for (auto g = groups.rbegin(); g != groups.rend(); ++g) {
+    const int m = 3 * static_cast<int>(g->bodies.size());
+    auto local = [&](int body) {
+      for (size_t i = 0; i < g->bodies.size(); ++i)
+        if (g->bodies[i] == body) return static_cast<int>(i);
+      return -1;
+    };
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(m, m);
+    blocks.clear();
+    int o = 0;
+    for (int r : g->rows) {
+      const Row& row = sys.cons[r];
+      blocks.push_back(rowJacobian(sys, views, row));
+      for (int k = 0; k < 3; ++k)
+        if (const int i = row.body[k] >= 0 ? local(row.body[k]) : -1; i >= 0)
+          A.block(o, 3 * i, row.rows(), 3) = blocks.back().block(0, 3 * k, row.rows(), 3);
+      o += row.rows();
+    }
+    if (o != m) return false;
+    Eigen::VectorXd rhs(m);
+    for (size_t i = 0; i < g->bodies.size(); ++i)
+      rhs.segment<3>(3 * i) = Q.segment<3>(3 * g->bodies[i]) - S.segment<3>(3 * g->bodies[i]);
+    const Eigen::VectorXd x = A.transpose().partialPivLu().solve(rhs);
+    if (!x.allFinite()) return false;
+    o = 0;
+    for (size_t n = 0; n < g->rows.size(); ++n) {
+      const Row& row = sys.cons[g->rows[n]];
+      lambda.segment(row.row, row.rows()) = x.segment(o, row.rows());
+      for (int k = 0; k < 3; ++k)
+        if (row.body[k] >= 0)
+          S.segment<3>(3 * row.body[k]) +=
+              blocks[n].block(0, 3 * k, row.rows(), 3).transpose() * x.segment(o, row.rows());
+      o += row.rows();
+    }
+  }
+  return true;
+}
+
+// J^T lambda = Q with the independent rows; a sparse LU from the sizes the Newton goes sparse.
+bool ForceSolver::Impl::solveWhole(const KinematicsState& s) {
+  const System& sys = s.sys;
+  const std::vector<int>& active = s.structure.activeRows;
+  const int n = sys.nCoords();
+  std::vector<int> index(sys.nRows, -1);
+  for (size_t i = 0; i < active.size(); ++i) index[active[i]] = static_cast<int>(i);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (const Row& row : sys.cons) {
+    if (row.kind == Primitive::Hold) continue;
+    const Eigen::Matrix<double, 2, 9> B = rowJacobian(sys, views, row);
+    for (int i = 0; i < row.rows(); ++i) {
+      const int r = index[row.row + i];
+      if (r < 0) continue;
+      for (int k = 0; k < 3; ++k)
+        if (row.body[k] >= 0)
+          for (int c = 0; c < 3; ++c)
+            if (B(i, 3 * k + c) != 0) entries.emplace_back(3 * row.body[k] + c, r, B(i, 3 * k + c));
+    }
+  }
+  Eigen::SparseMatrix<double> JT(n, static_cast<int>(active.size()));
+  JT.setFromTriplets(entries.begin(), entries.end());
+  Eigen::VectorXd x;
+  if (n < s.opt.sparseFrom) {
+    x = Eigen::MatrixXd(JT).partialPivLu().solve(Q);
+  } else {
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(JT);
+    if (lu.info() != Eigen::Success) return false;
+    x = lu.solve(Q);
+  }
+  if (!x.allFinite()) return false;
+  lambda.setConstant(sys.nRows, kNaN);
+  for (size_t i = 0; i < active.size(); ++i) lambda[active[i]] = x[i];
+  return true;
+}
+
+namespace {
+
+void viewsOf(const KinematicsState& s, std::vector<BodyView>& views) {
+  const Motion& m = s.cur();
+  views.resize(s.sys.nBodies + 1);
+  views[0] = BodyView{};
+  for (int k = 0; k < s.sys.nBodies; ++k) {
+    const BodyState& b = m.body[k];
+    BodyView& v = views[k + 1];
+    v.col = 3 * k;
+    v.r = b.r;
+    v.R = b.R;
+    v.theta = b.angle();
+  }
+}
+
+}  // namespace
+
+// With redundant joints J^T lambda = Q has more unknowns than equations: the rows whose
+// multiplier varies along the null space of J^T (all rows, the driver's included) are those whose
+// share is not fixed. Their joints are named; the others' reactions are determined.
+void ForceSolver::Impl::undetermined(const KinematicsState& s, Forces& out) {
+  const System& sys = s.sys;
+  rowDetermined.assign(sys.nRows, 1);
+  if (s.structure.dependentRows.empty()) return;
+  viewsOf(s, views);
+  const int m = sys.nJointRows + (sys.driverRow >= 0 ? 1 : 0);
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(m, sys.nCoords());
+  for (const Row& row : sys.cons) {
+    if (row.kind == Primitive::Hold) continue;
+    const Eigen::Matrix<double, 2, 9> B = rowJacobian(sys, views, row);
+    for (int k = 0; k < 3; ++k)
+      if (row.body[k] >= 0)
+        J.block(row.row, 3 * row.body[k], row.rows(), 3) = B.block(0, 3 * k, row.rows(), 3);
+  }
+  for (int k = 0; k < sys.nBodies; ++k) J.col(3 * k + 2) /= sys.size;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(J.transpose());
+  lu.setThreshold(1e-9);
+  const Eigen::MatrixXd N = lu.kernel();
+  if (N.cols() == 0 || (N.cols() == 1 && N.isZero())) return;
+  for (int r = 0; r < m; ++r)
+    if (N.row(r).cwiseAbs().maxCoeff() > 1e-9 * N.cwiseAbs().maxCoeff()) rowDetermined[r] = 0;
+  for (const Row& row : sys.cons) {
+    if (row.joint < 0 || row.isDriver() || row.kind == Primitive::Hold) continue;
+    bool known = true;
+    for (int i = 0; i < row.rows(); ++i) known = known && rowDetermined[row.row + i];
+    const JointId id = s.mech.joints[row.joint].id;
+    if (!known && (out.undetermined.empty() || out.undetermined.back() != id))
+      out.undetermined.push_back(id);
+  }
+}
+
+Status ForceSolver::prepare(const Kinematics& k) {
+  out_ = Forces{};
+  d_.reset();
+  if (!k.valid()) return out_.status = Status::badModel("no mechanism is loaded");
+  const KinematicsState& s = internal::state(k);
+  if (!s.sys.hasDriver)
+    return out_.status = Status::badModel(
+               "the mechanism has no driver: forces are those at the driver's constant speed");
+  if (s.structure.freeAfterDriver > 0)
+    return out_.status = Status::failure(
+               StatusCode::Underconstrained,
+               "the motion is not determined (" + std::to_string(s.structure.freeAfterDriver) +
+                   " freedom(s) the driver leaves), so neither are its forces");
+  d_.reset(new Impl);
+  d_->revision = k.revision();
+  d_->bodies(s);
+  d_->grouped = s.plan.has_value() && s.decomposition.closedForm();
+  d_->undetermined(s, out_);
+  return out_.status;
+}
+
+// Each joint's reaction on the body of its point a, from its rows' multipliers: a force at each
+// row's point (Coincident, OnLine, OnCircle: on body[0], its opposite on body[1]) and couples
+// (Angles: -c_k L lambda on body k); then as its kind states it.
+void ForceSolver::Impl::reactions(const KinematicsState& s, const Kinematics& k,
+                                  Forces& out) const {
+  const System& sys = s.sys;
+  const Mechanism& m = s.mech;
+  out.joints.assign(m.joints.size(), JointReaction{});
+  std::vector<double> couple(m.joints.size(), 0.0);  // N mm
+  for (size_t j = 0; j < m.joints.size(); ++j) out.joints[j].at = k.position(m.joints[j].a);
+  for (const Row& row : sys.cons) {
+    if (row.joint < 0 || row.isDriver() || row.kind == Primitive::Hold) continue;
+    JointReaction& r = out.joints[row.joint];
+    const int a = sys.point(m.joints[row.joint].a)->body;
+    const Eigen::VectorXd lam = lambda.segment(row.row, row.rows());
+    if (row.kind == Primitive::Angles) {
+      for (int c = 0; c < 3; ++c)
+        if (row.body[c] == a && row.c[c] != 0) couple[row.joint] -= row.c[c] * sys.size * lam[0];
+      continue;
+    }
+    const BodyView &b0 = views[row.body[0] + 1], &b1 = views[row.body[1] + 1];
+    const Vec2 P = b0.r + b0.R * row.s[0];
+    Vec2 F0;
+    if (row.kind == Primitive::Coincident)
+      F0 = -Vec2(lam[0], lam[1]);
+    else if (row.kind == Primitive::OnLine)
+      F0 = -lam[0] * (b1.R * row.n);
+    else
+      F0 = -lam[0] / row.c[0] * (P - b1.r - b1.R * row.s[1]);
+    const Vec2 F = row.body[0] == a ? F0 : Vec2(-F0);
+    r.force += F;
+    couple[row.joint] += cross(P - r.at, F);
+  }
+  for (size_t j = 0; j < m.joints.size(); ++j) out.joints[j].coupleNm = couple[j] / 1000;
+  const KinematicsPose pose(k);
+  for (size_t j = 0; j < m.joints.size(); ++j)
+    if (const auto react = kindOf(m.joints[j]).react)
+      react(m, static_cast<int>(j), pose, out.joints);
+  for (JointId id : out.undetermined) {
+    JointReaction& r = out.joints[m.jointIndex(id)];
+    r.force = Vec2::Constant(kNaN);
+    r.coupleNm = kNaN;
+  }
+}
+
+const Forces& ForceSolver::compute(const Kinematics& k) {
+  if (!d_) return out_;
+  Forces& out = out_;
+  out.status = Status::success();
+  if (!k.valid() || k.revision() != d_->revision) {
+    out.status = Status::badModel(
+        "the kinematics hold another mechanism (or another revision of it) than the one "
+        "prepared: call prepare() again");
+    return out;
+  }
+  const KinematicsState& s = internal::state(k);
+  out.crankDeg = k.crankDeg();
+  if (!k.derivativesValid() || !s.cur().accelerations) {
+    out.status = Status::failure(StatusCode::Singular,
+                                 "no accelerations at this pose (a singular position, or not "
+                                 "computed): no forces");
+    out.driverTorqueNm = kNaN;
+    out.shakingForceN = Vec2::Constant(kNaN);
+    out.shakingMomentNm = kNaN;
+    for (JointReaction& r : out.joints) r = {Vec2::Constant(kNaN), Vec2::Constant(kNaN), kNaN};
+    return out;
+  }
+  viewsOf(s, d_->views);
+  d_->appliedAndInertia(s, k.omega(), out.crankDeg);
+  d_->shakingOf(s.sys, out.shakingForceN, out.shakingMomentNm);
+  if (!(d_->grouped && d_->solveByGroups(s)) && !d_->solveWhole(s)) {
+    out.status = Status::failure(StatusCode::Singular,
+                                 "the constraint forces cannot be solved at "
+                                 "this pose (a singular position)");
+    return out;
+  }
+  // The driver's couple on the body of its b point: -c L lambda, c = 1 there.
+  out.driverTorqueNm = -s.sys.size * d_->lambda[s.sys.driverRow] / 1000;
+  d_->reactions(s, k, out);
+  return out;
+}
+
+Forces computeForces(const Kinematics& k) {
+  ForceSolver f;
+  if (!f.prepare(k).ok()) return f.result();
+  return f.compute(k);
+}
+
+void shaking(const Kinematics& k, Vec2& forceN, double& momentNm) {
+  forceN = Vec2::Constant(kNaN);
+  momentNm = kNaN;
+  if (!k.valid() || !k.derivativesValid()) return;
+  const KinematicsState& s = internal::state(k);
+  ForceSolver::Impl d;
+  d.bodies(s);
+  viewsOf(s, d.views);
+  d.appliedAndInertia(s, k.omega(), k.crankDeg());
+  d.shakingOf(s.sys, forceN, momentNm);
+}
+
+}  // namespace linkage

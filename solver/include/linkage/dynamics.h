@@ -1,0 +1,72 @@
+// Forces at the driver's constant speed (kinetostatics): from the exact accelerations, the
+// driver's torque, every joint's reaction, the shaking force and moment on the frame, at one
+// pose, by one linear solve with the transpose of the constraint Jacobian the kinematics has:
+//
+//   J^T lambda = Q,   Q = the applied forces (gravity, loads) and the inertia forces
+//                        (-m a_com at the centre of mass, -J alpha) of each body,
+//
+// the constraint forces -J^T lambda balancing them. On the closed-form path it is solved group by
+// group in the structure's order reversed (from the outermost group to the crank, each group's
+// few rows from its own bodies' balance: what a designer does by hand); otherwise with J whole.
+// Units: masses kg, lengths mm, moments of inertia kg mm^2, forces N, torques N m.
+//
+// Where the reactions are not determined (redundant joints: more equations than the motion
+// needs, so the reactions can be shared between them in more than one way) those joints are
+// named and their reactions are NaN, never a number that means nothing; the driver's torque and
+// the shaking force and moment do not depend on it.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "linkage/elements.h"
+#include "linkage/kinematics.h"
+
+namespace linkage {
+
+struct Forces {
+  Status status;  // Ok; BadModel, Underconstrained as prepare() said; or the kinematics' state
+  double crankDeg = 0;
+  // The torque the driver applies to the body of its b point (relative to a's), + ccw.
+  double driverTorqueNm = 0;
+  // What the moving bodies exert on the ground through the joints and the driver:
+  //   sum(loads) + sum(m g) - sum(m a_com), and about the sketch origin
+  //   sum(r_load x F_load) + sum(torque loads) + sum(r_com x m (g - a_com)) - sum(J alpha).
+  Vec2 shakingForceN = Vec2::Zero();
+  double shakingMomentNm = 0;
+  // Mechanism::joints order: the force on the body of the joint's point a from the other side
+  // (its kind says how: linkage/elements.h); NaN for the undetermined.
+  std::vector<JointReaction> joints;
+  std::vector<JointId> undetermined;  // file order
+};
+
+void shaking(const Kinematics& k, Vec2& forceN, double& momentNm);
+
+class ForceSolver {
+ public:
+  // For k's mechanism (its masses, gravity and loads): BadModel without a driver or when the
+  // kinematics hold nothing; Underconstrained where the driver leaves freedoms (a motion not
+  // determined has no forces). Names the joints whose reactions are not determined.
+  Status prepare(const Kinematics& k);
+  // At k's pose (k holds the mechanism prepare() saw): NaN everywhere at a singular position.
+  const Forces& compute(const Kinematics& k);
+  const Forces& result() const { return out_; }
+
+ private:
+  friend void shaking(const Kinematics& k, Vec2& forceN, double& momentNm);
+  struct Impl;
+  struct ImplDeleter {
+    void operator()(Impl* p) const;
+  };
+  std::unique_ptr<Impl, ImplDeleter> d_;
+  Forces out_;
+};
+
+// One-off: prepared and computed at k's pose.
+Forces computeForces(const Kinematics& k);
+
+// The shaking force and moment alone, from the bodies' motion (no joint reaction needed): what
+// balancing sweeps.
+void shaking(const Kinematics& k, Vec2& forceN, double& momentNm);
+
+}  // namespace linkage
