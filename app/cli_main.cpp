@@ -15,6 +15,7 @@ int limits(int argc, char** argv);
 int transmission(int argc, char** argv);
 int study(int argc, char** argv);
 int dynamics(int argc, char** argv);
+int balance(int argc, char** argv);
 }  // namespace linkage::cli
 
 namespace {
@@ -30,6 +31,7 @@ Commands:
   transmission MODEL  transmission angles over a turn, checked against a band (30 to 150)
   study MODEL ...     one point moved over a range: stroke, swings, transmission, peaks
   dynamics MODEL ...  forces at the driver's speed: its torque, the joints' reactions, shaking
+  balance MODEL ...   counterweights that minimise the peak shaking force, exactly
   examples            list the example mechanisms that MODEL can name
 
 MODEL is a .linkage.json file or the name of an example (e.g. wanzer-inversion-2).
@@ -55,6 +57,7 @@ int main(int argc, char** argv) {
   if (cmd == "transmission") return transmission(argc - 2, argv + 2);
   if (cmd == "study") return study(argc - 2, argv + 2);
   if (cmd == "dynamics") return dynamics(argc - 2, argv + 2);
+  if (cmd == "balance") return balance(argc - 2, argv + 2);
   if (cmd == "examples") {
     if (argc > 2 && isHelp(argv[2])) {
       std::cout << "usage: linkage-cli examples\n\nLists the example mechanisms by name.\n";

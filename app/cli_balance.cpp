@@ -1,0 +1,138 @@
+// linkage-cli balance: counterweights that minimise the peak of the shaking force, exactly.
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "cli_common.h"
+#include "linkage/balance.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/numbers.h"
+
+namespace linkage::cli {
+
+namespace {
+
+const char* kHelp =
+    R"(usage: linkage-cli balance MODEL --counterweight BODY [--counterweight BODY ...]
+                           --minimize fx|fy|force [--max-kgmm M] [--steps N]
+                           [--out BALANCED.linkage.json]
+
+Finds the counterweights on the given bodies (each pinned to the ground) that minimise the peak
+over the whole cycle (continuous, not only at the samples) of |shaking fx|, |shaking fy| or
+|shaking force| of MODEL at its driver's speed. A counterweight is a point mass whose static
+moment s = m u (kg mm) is measured from the point where its body is pinned to the ground, u
+fixed in the body; its own weight is left out. The shaking force is linear in the static
+moments: a linear programme (COIN-OR CLP) on sampled angles, refined by exchange on the peaks'
+exact angles until the peak and the programme's lower bound agree. Writes CSV:
+
+  counterweight,BODY,KGMM,ANGLE_DEG    (ANGLE_DEG: of u in the body's sketch frame)
+  peak_before,,VALUE                   (N)
+  peak_after,,VALUE                    (N)
+
+and on standard error the optimality gap (the peak after less the programme's bound).
+
+  --counterweight BODY  a body to put a counterweight on (repeatable)
+  --minimize WHAT       fx, fy or force
+  --max-kgmm M          each counterweight's static moment at most M kg mm
+  --steps N             samples per turn of the first programme (default 360, at least 8)
+  --out FILE            also write MODEL with the counterweights added as masses (a point mass
+                        at the radius of the body's farthest point from its pivot)
+
+Exit status: 0 success, 2 bad input (options, file, a body not pinned to the ground), 3 the
+mechanism cannot turn through the cycle.
+)";
+
+struct Options {
+  std::string model, out;
+  std::vector<std::string> bodies;
+  std::optional<BalanceMeasure> measure;
+  BalanceOptions balance;
+};
+
+std::optional<int> readOptions(int argc, char** argv, Options& o) {
+  Arguments args("balance", kHelp);
+  args.value("--counterweight",
+             [&](const std::string&, const std::string& v) {
+               o.bodies.push_back(v);
+               return true;
+             })
+      .value("--minimize",
+             [&](const std::string&, const std::string& v) {
+               if (v == "fx") o.measure = BalanceMeasure::Fx;
+               if (v == "fy") o.measure = BalanceMeasure::Fy;
+               if (v == "force") o.measure = BalanceMeasure::Force;
+               if (!o.measure) error("--minimize: expected fx, fy or force, got '" + v + "'");
+               return o.measure.has_value();
+             })
+      .value("--max-kgmm",
+             [&](const std::string& a, const std::string& v) {
+               const std::optional<double> m = positiveNumber(a, v);
+               if (m) o.balance.maxKgMm = *m;
+               return m.has_value();
+             })
+      .value("--steps",
+             [&](const std::string& a, const std::string& v) {
+               const std::optional<long long> n = wholeNumber(a, v);
+               if (n && (*n < 8 || *n > 1'000'000)) error("--steps: from 8 to 1000000");
+               if (n && *n >= 8 && *n <= 1'000'000) o.balance.steps = static_cast<int>(*n);
+               return n && *n >= 8 && *n <= 1'000'000;
+             })
+      .value("--out", [&](const std::string&, const std::string& v) {
+        o.out = v;
+        return true;
+      });
+  if (std::optional<int> e = args.read(argc, argv, o.model)) return e;
+  if (o.bodies.empty() || !o.measure) {
+    error(std::string("balance: ") +
+          (o.bodies.empty() ? "no --counterweight BODY given" : "no --minimize fx|fy|force given"));
+    return kBadInput;
+  }
+  o.balance.measure = *o.measure;
+  return std::nullopt;
+}
+
+}  // namespace
+
+int balance(int argc, char** argv) {
+  Options o;
+  if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
+  std::optional<Mechanism> m = openDrivenModel(o.model);
+  if (!m) return kBadInput;
+  for (const std::string& name : o.bodies) {
+    const Body* b = m->bodyNamed(name);
+    if (!b) {
+      error("--counterweight: no body '" + name + "'");
+      return kBadInput;
+    }
+    o.balance.bodies.push_back(b->id);
+  }
+  Kinematics k;
+  if (int e = prepare(k, *m); e != kOk) return e;
+  const BalanceResult r = balanceShaking(k, o.balance);
+  if (!r.status.ok()) {
+    error(r.status.message);
+    return r.status.code == StatusCode::BadModel ? kBadInput : exitFor(r.status);
+  }
+  std::string out;
+  for (const Counterweight& c : r.counterweights)
+    out += "counterweight," + m->body(c.body)->name + "," + formatNumber(c.kgMm()) + "," +
+           formatNumber(c.angleDeg()) + "\n";
+  out += "peak_before,," + formatNumber(r.peakBefore) + "\npeak_after,," +
+         formatNumber(r.peakAfter) + "\n";
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  error("note: peak " + formatNumber(r.peakAfter, 10) + " N at crank " +
+        formatNumber(r.peakAfterDeg, 10) + " deg; optimality gap " + formatNumber(r.gap(), 3) +
+        " N (no counterweights within the bound do better than " + formatNumber(r.lowerBound, 10) +
+        " N), after " + std::to_string(r.exchanges) + " exchange(s)");
+  if (!o.out.empty()) {
+    addCounterweights(*m, r.counterweights);
+    const WriteResult w = saveMechanismFile(*m, o.out);
+    if (!w.ok) {
+      error(o.out + ": " + w.error);
+      return kFailure;
+    }
+  }
+  return kOk;
+}
+
+}  // namespace linkage::cli

@@ -1,0 +1,280 @@
+// Counterweights balancing the shaking force: see linkage/balance.h.
+#include "linkage/balance.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/brent.h"
+#include "analysis/chebyshev_lp.h"
+#include "linkage/dynamics.h"
+#include "linkage/elements.h"
+
+namespace linkage {
+
+namespace {
+
+constexpr double kDeg = M_PI / 180;
+
+// The shaking force at one crank angle, and what each counterweight's static moment adds to it:
+// F = F0 + sum A_k s_k, A_k = 1e-3 (omega^2 I - alpha perp) R(theta) (N per kg mm) for a point
+// mass turning about a fixed pivot with its body.
+struct Sample {
+  double deg = 0;
+  Vec2 F0 = Vec2::Zero();
+  std::vector<Eigen::Matrix2d> A;
+};
+
+// Where a peak is, and the force there.
+struct Peak {
+  double value = 0, deg = 0;
+  Vec2 F = Vec2::Zero();
+};
+
+class Balancer {
+ public:
+  Balancer(const Kinematics& k, const BalanceOptions& opt) : work_(k), opt_(opt) {}
+
+  BalanceResult run();
+
+ private:
+  bool pivots(BalanceResult& r);
+  bool sampleAt(double deg, Sample& s, Status& status);
+  Vec2 force(const Sample& s, const std::vector<double>& x) const;
+  double measure(const Vec2& F) const;
+  // Every local maximum of the measure over the cycle for static moments x, refined; the
+  // highest first.
+  std::vector<Peak> peaks(const std::vector<double>& x, Status& status);
+  void addRows(ChebyshevLP& lp, const Sample& s, const Vec2& F);
+  bool exchange(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r);
+
+  Kinematics work_;
+  const BalanceOptions& opt_;
+  std::vector<Sample> samples_;
+};
+
+bool Balancer::pivots(BalanceResult& r) {
+  const Mechanism& m = work_.mechanism();
+  const Body* g = m.ground();
+  for (BodyId b : opt_.bodies) {
+    const Body* body = m.body(b);
+    if (!body || body->ground) {
+      r.status = Status::badModel("a counterweight goes on a moving body");
+      return false;
+    }
+    for (const Counterweight& c : r.counterweights)
+      if (c.body == b) {
+        r.status = Status::badModel("body '" + body->name + "' is given twice");
+        return false;
+      }
+    Counterweight c;
+    c.body = b;
+    for (const Joint& j : m.joints) {
+      if (kindOf(j).role != Role::Revolute) continue;
+      const Point *a = m.point(j.a), *o = m.point(j.b);
+      if (a->body == b && o->body == g->id) c.pivot = j.a;
+      if (o->body == b && a->body == g->id) c.pivot = j.b;
+      if (c.pivot) break;
+    }
+    if (!c.pivot) {
+      r.status = Status::badModel("body '" + body->name +
+                                  "' is not pinned to the ground: a counterweight's static "
+                                  "moment is measured from that pivot");
+      return false;
+    }
+    r.counterweights.push_back(c);
+  }
+  return true;
+}
+
+bool Balancer::sampleAt(double deg, Sample& s, Status& status) {
+  if (status = work_.moveTo(deg); !status.ok()) return false;
+  double moment;
+  shaking(work_, s.F0, moment);
+  s.deg = deg;
+  s.A.clear();
+  for (BodyId b : opt_.bodies) {
+    const double w = work_.bodyOmega(b), al = work_.bodyAlpha(b);
+    const Rot R = Rot::of(work_.bodyAngle(b));
+    Eigen::Matrix2d M;
+    M << w * w, al, -al, w * w;  // omega^2 I - alpha perp
+    Eigen::Matrix2d Rm;
+    Rm << R.c, -R.s, R.s, R.c;
+    s.A.push_back(1e-3 * M * Rm);
+  }
+  return s.F0.allFinite();
+}
+
+Vec2 Balancer::force(const Sample& s, const std::vector<double>& x) const {
+  Vec2 F = s.F0;
+  for (size_t k = 0; k < s.A.size(); ++k) F += s.A[k] * Vec2(x[2 * k], x[2 * k + 1]);
+  return F;
+}
+
+double Balancer::measure(const Vec2& F) const {
+  switch (opt_.measure) {
+    case BalanceMeasure::Fx:
+      return std::abs(F.x());
+    case BalanceMeasure::Fy:
+      return std::abs(F.y());
+    case BalanceMeasure::Force:
+      break;
+  }
+  return F.norm();
+}
+
+// The samples' local maxima, each refined by Brent's method between its neighbours on the exact
+// motion.
+std::vector<Peak> Balancer::peaks(const std::vector<double>& x, Status& status) {
+  const int n = static_cast<int>(samples_.size());
+  std::vector<double> v(n);
+  for (int i = 0; i < n; ++i) v[i] = measure(force(samples_[i], x));
+  std::vector<Peak> out;
+  const double step = 360.0 / n;
+  Sample s;
+  for (int i = 0; i < n; ++i) {
+    const double prev = v[(i + n - 1) % n], next = v[(i + 1) % n];
+    if (v[i] < prev || v[i] < next) continue;
+    auto negative = [&](double deg) {
+      return sampleAt(deg, s, status) ? -measure(force(s, x)) : 0.0;
+    };
+    double fmin = -v[i];
+    const double deg =
+        brent::minimum(negative, samples_[i].deg - step, samples_[i].deg + step, 1e-9, &fmin);
+    if (!status.ok() || !sampleAt(deg, s, status)) return out;
+    out.push_back({measure(force(s, x)), deg, force(s, x)});
+  }
+  std::sort(out.begin(), out.end(), [](const Peak& a, const Peak& b) { return a.value > b.value; });
+  return out;
+}
+
+// The rows a sample gives: its component either way, or |F| <= t along directions (8 evenly,
+// and F's own when given).
+void Balancer::addRows(ChebyshevLP& lp, const Sample& s, const Vec2& F) {
+  std::vector<Vec2> dirs;
+  if (opt_.measure == BalanceMeasure::Fx) dirs = {Vec2(1, 0), Vec2(-1, 0)};
+  if (opt_.measure == BalanceMeasure::Fy) dirs = {Vec2(0, 1), Vec2(0, -1)};
+  if (opt_.measure == BalanceMeasure::Force) {
+    if (F.norm() > 0) {
+      dirs = {F.normalized()};
+    } else {
+      for (int j = 0; j < 8; ++j)
+        dirs.push_back(Vec2(std::cos(j * M_PI / 4), std::sin(j * M_PI / 4)));
+    }
+  }
+  std::vector<double> c(2 * s.A.size());
+  for (const Vec2& e : dirs) {
+    for (size_t k = 0; k < s.A.size(); ++k) {
+      const Vec2 a = s.A[k].transpose() * e;
+      c[2 * k] = a.x();
+      c[2 * k + 1] = a.y();
+    }
+    lp.addRow(c.data(), -e.dot(s.F0));
+  }
+}
+
+// Solves, finds the true peak and the bounds' violations, adds them; true when they agree.
+bool Balancer::exchange(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r) {
+  double t = 0;
+  if (!lp.solve(x, t)) {
+    r.status = Status::failure(StatusCode::NotConverged, "the linear programme has no optimum");
+    return true;
+  }
+  r.lowerBound = t;
+  bool done = true;
+  if (opt_.maxKgMm)
+    for (size_t k = 0; k < opt_.bodies.size(); ++k) {
+      const Vec2 s(x[2 * k], x[2 * k + 1]);
+      if (s.norm() > *opt_.maxKgMm * (1 + 1e-12)) {
+        lp.addBound(static_cast<int>(k), s.normalized(), *opt_.maxKgMm);
+        done = false;
+      }
+    }
+  const std::vector<Peak> found = peaks(x, r.status);
+  if (!r.status.ok() || found.empty()) return true;
+  r.peakAfter = found[0].value;
+  r.peakAfterDeg = found[0].deg;
+  // Every peak above the programme's optimum joins it (its exact angle, and direction for |F|).
+  const double tol = opt_.tolerance * std::max(r.peakBefore, 1e-300);
+  for (const Peak& p : found) {
+    if (p.value - t <= tol) break;
+    Sample s;
+    if (!sampleAt(p.deg, s, r.status)) return true;
+    addRows(lp, s, p.F);
+    done = false;
+  }
+  return done;
+}
+
+}  // namespace
+
+double Counterweight::angleDeg() const {
+  return std::atan2(staticMoment.y(), staticMoment.x()) / kDeg;
+}
+
+BalanceResult Balancer::run() {
+  BalanceResult r;
+  if (!work_.valid()) {
+    r.status = Status::badModel("no mechanism is loaded");
+    return r;
+  }
+  if (opt_.bodies.empty() || opt_.steps < 8 || (opt_.maxKgMm && !(*opt_.maxKgMm >= 0))) {
+    r.status = Status::badModel(opt_.bodies.empty() ? "no counterweight to place"
+                                : opt_.steps < 8    ? "at least 8 steps a turn"
+                                                    : "the bound must be a number >= 0");
+    return r;
+  }
+  if (!pivots(r)) return r;
+  samples_.resize(opt_.steps);
+  for (int i = 0; i < opt_.steps; ++i)
+    if (!sampleAt(360.0 * i / opt_.steps, samples_[i], r.status)) return r;
+  const int n = static_cast<int>(opt_.bodies.size());
+  std::vector<double> x(2 * n, 0.0);
+  const std::vector<Peak> before = peaks(x, r.status);
+  if (!r.status.ok() || before.empty()) return r;
+  r.peakBefore = before[0].value;
+  r.peakBeforeDeg = before[0].deg;
+  ChebyshevLP lp(2 * n);
+  for (const Sample& s : samples_)
+    addRows(lp, s, opt_.measure == BalanceMeasure::Force ? Vec2::Zero() : s.F0);
+  if (opt_.maxKgMm)
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < 16; ++j)
+        lp.addBound(k, Vec2(std::cos(j * M_PI / 8), std::sin(j * M_PI / 8)), *opt_.maxKgMm);
+  for (r.exchanges = 1; r.exchanges <= 200; ++r.exchanges)
+    if (exchange(lp, x, r)) break;
+  r.angles = lp.rows();
+  for (int k = 0; k < n; ++k) {
+    Vec2 s(x[2 * k], x[2 * k + 1]);
+    if (opt_.maxKgMm && s.norm() > *opt_.maxKgMm) s *= *opt_.maxKgMm / s.norm();
+    r.counterweights[k].staticMoment = s;
+  }
+  return r;
+}
+
+BalanceResult balanceShaking(const Kinematics& k, const BalanceOptions& opt) {
+  return Balancer(k, opt).run();
+}
+
+void addCounterweights(Mechanism& m, const std::vector<Counterweight>& cws) {
+  for (const Counterweight& c : cws) {
+    Body* b = m.body(c.body);
+    const Point* pivot = m.point(c.pivot);
+    if (!b || !pivot || c.kgMm() == 0) continue;
+    double radius = 0;
+    for (const Point& p : m.points)
+      if (p.body == c.body) radius = std::max(radius, (p.pos - pivot->pos).norm());
+    if (!(radius > 0)) radius = 20;
+    const double mc = c.kgMm() / radius;
+    const Vec2 at = pivot->pos + radius * c.staticMoment.normalized();
+    Mass mass = b->mass.value_or(Mass{});
+    const double total = mass.kg + mc;
+    const Vec2 com = (mass.kg * mass.com + mc * at) / total;
+    mass.jKgMm2 += mass.kg * (mass.com - com).squaredNorm() + mc * (at - com).squaredNorm();
+    mass.kg = total;
+    mass.com = com;
+    b->mass = mass;
+  }
+}
+
+}  // namespace linkage
