@@ -113,7 +113,7 @@ TEST(ElementsUi, CoupleToOnABodysMenuStartsTheGearToolFromIt) {
       if (menu->isVisible() && a->text().startsWith("Couple to")) couple = a;
   ASSERT_TRUE(couple) << "no \"Couple to\" on the body's menu";
   couple->trigger();
-  couple->parentWidget()->close();
+  qobject_cast<QWidget*>(couple->parent())->close();
   d.click(5, 0);
   const Joint* g = gearOf(doc->design());
   ASSERT_TRUE(g);
