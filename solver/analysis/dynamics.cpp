@@ -4,6 +4,7 @@
 #include <Eigen/LU>
 #include <Eigen/SparseLU>
 #include <cmath>
+#include <type_traits>
 
 #include "kinematics/kinematics_state.h"
 
@@ -23,6 +24,11 @@ struct KinematicsPose : Pose {
 
 }  // namespace
 
+// A group's unknowns: three a body, four bodies at most (structure/decomposition.h): storage
+// on the stack, no allocation per pose.
+using GroupMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
+using GroupVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 12, 1>;
+
 struct ForceSolver::Impl {
   struct BodyMass {
     double kg = 0, j = 0;   // kg, kg mm^2
@@ -41,13 +47,17 @@ struct ForceSolver::Impl {
   std::vector<char> rowDetermined;  // by scalar row
   std::vector<BodyView> views;
   Eigen::VectorXd Q, S, lambda;
+  std::vector<Eigen::Matrix<double, 2, 9>> blocks;  // scratch of solveByGroups
+  std::vector<double> couples;                     // scratch of reactions
 
   void bodies(const KinematicsState& s);
   void undetermined(const KinematicsState& s, Forces& out);
   void appliedAndInertia(const KinematicsState& s, double omega, double crankDeg);
   bool solveByGroups(const KinematicsState& s);
+  template <int N>
+  bool solveGroup(const System& sys, const Group& g);
   bool solveWhole(const KinematicsState& s);
-  void reactions(const KinematicsState& s, const Kinematics& k, Forces& out) const;
+  void reactions(const KinematicsState& s, const Kinematics& k, Forces& out);
   void shakingOf(const System& sys, Vec2& force, double& moment) const;
 };
 
@@ -122,41 +132,58 @@ bool ForceSolver::Impl::solveByGroups(const KinematicsState& s) {
   S.setZero(3 * sys.nBodies);
   lambda.setConstant(sys.nRows, kNaN);
   const std::vector<Group>& groups = s.decomposition.groups;
-  std::vector<Eigen::Matrix<double, 2, 9>> blocks;
   for (auto g = groups.rbegin(); g != groups.rend(); ++g) {
-    const int m = 3 * static_cast<int>(g->bodies.size());
-    auto local = [&](int body) {
-      for (size_t i = 0; i < g->bodies.size(); ++i)
-        if (g->bodies[i] == body) return static_cast<int>(i);
-      return -1;
-    };
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(m, m);
-    blocks.clear();
-    int o = 0;
-    for (int r : g->rows) {
-      const Row& row = sys.cons[r];
-      blocks.push_back(rowJacobian(sys, views, row));
-      for (int k = 0; k < 3; ++k)
-        if (const int i = row.body[k] >= 0 ? local(row.body[k]) : -1; i >= 0)
-          A.block(o, 3 * i, row.rows(), 3) = blocks.back().block(0, 3 * k, row.rows(), 3);
-      o += row.rows();
-    }
-    if (o != m) return false;
-    Eigen::VectorXd rhs(m);
-    for (size_t i = 0; i < g->bodies.size(); ++i)
-      rhs.segment<3>(3 * i) = Q.segment<3>(3 * g->bodies[i]) - S.segment<3>(3 * g->bodies[i]);
-    const Eigen::VectorXd x = A.transpose().partialPivLu().solve(rhs);
-    if (!x.allFinite()) return false;
-    o = 0;
-    for (size_t n = 0; n < g->rows.size(); ++n) {
-      const Row& row = sys.cons[g->rows[n]];
-      lambda.segment(row.row, row.rows()) = x.segment(o, row.rows());
-      for (int k = 0; k < 3; ++k)
-        if (row.body[k] >= 0)
-          S.segment<3>(3 * row.body[k]) +=
-              blocks[n].block(0, 3 * k, row.rows(), 3).transpose() * x.segment(o, row.rows());
-      o += row.rows();
-    }
+    const size_t n = g->bodies.size();
+    const bool ok = n == 1   ? solveGroup<3>(sys, *g)
+                    : n == 2 ? solveGroup<6>(sys, *g)
+                             : n <= 4 && solveGroup<Eigen::Dynamic>(sys, *g);
+    if (!ok) return false;
+  }
+  return true;
+}
+
+// One group's rows from its bodies' balance: A^T x = Q - S over its bodies' coordinates, A its
+// rows' Jacobian there; then what its rows put on every body they touch goes into S. N: the
+// size when fixed (Eigen unrolls the LU: a third of a pose's forces otherwise).
+template <int N>
+bool ForceSolver::Impl::solveGroup(const System& sys, const Group& g) {
+  using Mat = std::conditional_t<N == Eigen::Dynamic, GroupMatrix, Eigen::Matrix<double, N, N>>;
+  using Vec = std::conditional_t<N == Eigen::Dynamic, GroupVector, Eigen::Matrix<double, N, 1>>;
+  const int m = 3 * static_cast<int>(g.bodies.size());
+  auto local = [&](int body) {
+    for (size_t i = 0; i < g.bodies.size(); ++i)
+      if (g.bodies[i] == body) return static_cast<int>(i);
+    return -1;
+  };
+  Mat A = Mat::Zero(m, m);
+  blocks.clear();
+  int o = 0;
+  for (int r : g.rows) {
+    const Row& row = sys.cons[r];
+    if (o + row.rows() > m) return false;
+    blocks.push_back(rowJacobian(sys, views, row));
+    for (int k = 0; k < 3; ++k)
+      if (const int i = row.body[k] >= 0 ? local(row.body[k]) : -1; i >= 0)
+        A.block(o, 3 * i, row.rows(), 3) = blocks.back().block(0, 3 * k, row.rows(), 3);
+    o += row.rows();
+  }
+  if (o != m) return false;
+  Vec rhs(m);
+  for (size_t i = 0; i < g.bodies.size(); ++i)
+    rhs.template segment<3>(3 * i) =
+        Q.segment<3>(3 * g.bodies[i]) - S.segment<3>(3 * g.bodies[i]);
+  const Mat At = A.transpose();
+  const Vec x = Eigen::PartialPivLU<Mat>(At).solve(rhs);
+  if (!x.allFinite()) return false;
+  o = 0;
+  for (size_t n = 0; n < g.rows.size(); ++n) {
+    const Row& row = sys.cons[g.rows[n]];
+    for (int i = 0; i < row.rows(); ++i) lambda[row.row + i] = x[o + i];
+    for (int k = 0; k < 3; ++k)
+      if (row.body[k] >= 0)
+        S.segment<3>(3 * row.body[k]) +=
+            blocks[n].block(0, 3 * k, row.rows(), 3).transpose() * x.segment(o, row.rows());
+    o += row.rows();
   }
   return true;
 }
@@ -208,8 +235,7 @@ void viewsOf(const KinematicsState& s, std::vector<BodyView>& views) {
     BodyView& v = views[k + 1];
     v.col = 3 * k;
     v.r = b.r;
-    v.R = b.R;
-    v.theta = b.angle();
+    v.R = b.R;  // (theta is for residuals: not needed here)
   }
 }
 
@@ -273,18 +299,18 @@ Status ForceSolver::prepare(const Kinematics& k) {
 // Each joint's reaction on the body of its point a, from its rows' multipliers: a force at each
 // row's point (Coincident, OnLine, OnCircle: on body[0], its opposite on body[1]) and couples
 // (Angles: -c_k L lambda on body k); then as its kind states it.
-void ForceSolver::Impl::reactions(const KinematicsState& s, const Kinematics& k,
-                                  Forces& out) const {
+void ForceSolver::Impl::reactions(const KinematicsState& s, const Kinematics& k, Forces& out) {
   const System& sys = s.sys;
   const Mechanism& m = s.mech;
   out.joints.assign(m.joints.size(), JointReaction{});
-  std::vector<double> couple(m.joints.size(), 0.0);  // N mm
+  std::vector<double>& couple = couples;  // N mm
+  couple.assign(m.joints.size(), 0.0);
   for (size_t j = 0; j < m.joints.size(); ++j) out.joints[j].at = k.position(m.joints[j].a);
   for (const Row& row : sys.cons) {
     if (row.joint < 0 || row.isDriver() || row.kind == Primitive::Hold) continue;
     JointReaction& r = out.joints[row.joint];
     const int a = sys.point(m.joints[row.joint].a)->body;
-    const Eigen::VectorXd lam = lambda.segment(row.row, row.rows());
+    const double* lam = lambda.data() + row.row;
     if (row.kind == Primitive::Angles) {
       for (int c = 0; c < 3; ++c)
         if (row.body[c] == a && row.c[c] != 0) couple[row.joint] -= row.c[c] * sys.size * lam[0];
@@ -294,7 +320,7 @@ void ForceSolver::Impl::reactions(const KinematicsState& s, const Kinematics& k,
     const Vec2 P = b0.r + b0.R * row.s[0];
     Vec2 F0;
     if (row.kind == Primitive::Coincident)
-      F0 = -Vec2(lam[0], lam[1]);
+      F0 = Vec2(-lam[0], -lam[1]);
     else if (row.kind == Primitive::OnLine)
       F0 = -lam[0] * (b1.R * row.n);
     else
