@@ -48,7 +48,7 @@ struct ForceSolver::Impl {
   std::vector<BodyView> views;
   Eigen::VectorXd Q, S, lambda;
   std::vector<Eigen::Matrix<double, 2, 9>> blocks;  // scratch of solveByGroups
-  std::vector<double> couples;                     // scratch of reactions
+  std::vector<double> couples;                      // scratch of reactions
 
   void bodies(const KinematicsState& s);
   void undetermined(const KinematicsState& s, Forces& out);
@@ -170,8 +170,7 @@ bool ForceSolver::Impl::solveGroup(const System& sys, const Group& g) {
   if (o != m) return false;
   Vec rhs(m);
   for (size_t i = 0; i < g.bodies.size(); ++i)
-    rhs.template segment<3>(3 * i) =
-        Q.segment<3>(3 * g.bodies[i]) - S.segment<3>(3 * g.bodies[i]);
+    rhs.template segment<3>(3 * i) = Q.segment<3>(3 * g.bodies[i]) - S.segment<3>(3 * g.bodies[i]);
   const Mat At = A.transpose();
   const Vec x = Eigen::PartialPivLU<Mat>(At).solve(rhs);
   if (!x.allFinite()) return false;
