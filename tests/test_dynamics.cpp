@@ -293,6 +293,33 @@ TEST(Dynamics, RedundantJointsReactionsAreNotDeterminedAndSaySo) {
               1e-12 * (1 + std::abs(r.driverTorqueNm * driverSpeed(k))));
 }
 
+// The general path solves J^T lambda = Q with the factors its velocity solve made at the pose
+// (dense below 64 coordinates, sparse above); the closed-form path group by group: the same
+// reactions from two independent solves.
+TEST(Dynamics, TheKinematicsFactorsGiveWhatTheGroupsGive) {
+  for (const int loops : {3, 25}) {
+    const Mechanism m = withMasses(test::fourBarChain(loops), 13);
+    Kinematics general = loaded(m, false), grouped = loaded(m, true);
+    ASSERT_FALSE(general.closedForm());
+    ASSERT_TRUE(grouped.closedForm());
+    ForceSolver a, b;
+    ASSERT_TRUE(a.prepare(general).ok());
+    ASSERT_TRUE(b.prepare(grouped).ok());
+    for (double deg : {0.0, 95.0, 181.0, 333.0}) {
+      ASSERT_TRUE(general.moveTo(deg).ok());
+      ASSERT_TRUE(grouped.moveTo(deg).ok());
+      const Forces &x = a.compute(general), &y = b.compute(grouped);
+      ASSERT_TRUE(x.status.ok() && y.status.ok()) << x.status.message << y.status.message;
+      double peak = std::abs(y.driverTorqueNm);
+      for (const JointReaction& r : y.joints) peak = std::max(peak, r.force.norm());
+      EXPECT_NEAR(x.driverTorqueNm, y.driverTorqueNm, 1e-10 * peak) << loops << " " << deg;
+      for (size_t j = 0; j < m.joints.size(); ++j)
+        EXPECT_LT((x.joints[j].force - y.joints[j].force).norm(), 1e-10 * peak)
+            << loops << " loops, joint " << j << " at " << deg;
+    }
+  }
+}
+
 TEST(Dynamics, MassesGravityAndLoadsRoundTripAndBadOnesAreRefused) {
   const Mechanism m = withMasses(test::example("wanzer-inversion-2"), 5);
   const std::string text = serializeMechanism(m);

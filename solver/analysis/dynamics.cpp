@@ -42,11 +42,12 @@ struct ForceSolver::Impl {
   std::uint64_t revision = 0;
   std::vector<std::optional<BodyMass>> mass;  // by system body index
   std::vector<LoadAt> loads;                  // on moving bodies
+  std::vector<PointLocation> jointA;          // by joint: where its point a is
   Vec2 gravity = Vec2::Zero();                // m/s^2
   bool grouped = false;
   std::vector<char> rowDetermined;  // by scalar row
   std::vector<BodyView> views;
-  Eigen::VectorXd Q, S, lambda;
+  Eigen::VectorXd Q, S, lambda, x;
   std::vector<Eigen::Matrix<double, 2, 9>> blocks;  // scratch of solveByGroups
   std::vector<double> couples;                      // scratch of reactions
 
@@ -56,6 +57,7 @@ struct ForceSolver::Impl {
   bool solveByGroups(const KinematicsState& s);
   template <int N>
   bool solveGroup(const System& sys, const Group& g);
+  bool solveWithKinematics(const KinematicsState& s);
   bool solveWhole(const KinematicsState& s);
   void reactions(const KinematicsState& s, const Kinematics& k, Forces& out);
   void shakingOf(const System& sys, Vec2& force, double& moment) const;
@@ -83,6 +85,8 @@ void ForceSolver::Impl::bodies(const KinematicsState& s) {
     }
   }
   gravity = s.mech.gravity.value_or(Vec2::Zero());
+  jointA.clear();
+  for (const Joint& j : s.mech.joints) jointA.push_back(*sys.point(j.a));
 }
 
 // Q: per body, at its frame origin, the force (N) and the moment (N mm) of its weight, its
@@ -142,9 +146,44 @@ bool ForceSolver::Impl::solveByGroups(const KinematicsState& s) {
   return true;
 }
 
+namespace {
+
+// Solves A x = b in place (b becomes x) by Gaussian elimination with partial pivoting: at a
+// group's 3 to 12 unknowns a plain loop beats a general LU's dispatch (a fixed 6 x 6
+// PartialPivLU cost half a pose's forces). False at a zero pivot.
+template <int N, class Mat, class Vec>
+bool eliminate(Mat& A, Vec& b, int size) {
+  const int n = N == Eigen::Dynamic ? size : N;  // known at compile time: loops unrolled
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    for (int i = k + 1; i < n; ++i)
+      if (std::abs(A(i, k)) > std::abs(A(p, k))) p = i;
+    if (A(p, k) == 0) return false;
+    if (p != k) {
+      A.row(k).swap(A.row(p));
+      std::swap(b[k], b[p]);
+    }
+    const double inv = 1 / A(k, k);
+    for (int i = k + 1; i < n; ++i) {
+      const double f = A(i, k) * inv;
+      if (f == 0) continue;
+      for (int j = k + 1; j < n; ++j) A(i, j) -= f * A(k, j);
+      b[i] -= f * b[k];
+    }
+  }
+  for (int k = n - 1; k >= 0; --k) {
+    double v = b[k];
+    for (int j = k + 1; j < n; ++j) v -= A(k, j) * b[j];
+    b[k] = v / A(k, k);
+  }
+  return true;
+}
+
+}  // namespace
+
 // One group's rows from its bodies' balance: A^T x = Q - S over its bodies' coordinates, A its
 // rows' Jacobian there; then what its rows put on every body they touch goes into S. N: the
-// size when fixed (Eigen unrolls the LU: a third of a pose's forces otherwise).
+// size when fixed (storage and loops known at compile time).
 template <int N>
 bool ForceSolver::Impl::solveGroup(const System& sys, const Group& g) {
   using Mat = std::conditional_t<N == Eigen::Dynamic, GroupMatrix, Eigen::Matrix<double, N, N>>;
@@ -155,39 +194,57 @@ bool ForceSolver::Impl::solveGroup(const System& sys, const Group& g) {
       if (g.bodies[i] == body) return static_cast<int>(i);
     return -1;
   };
-  Mat A = Mat::Zero(m, m);
+  Mat At = Mat::Zero(m, m);  // A^T: the rows' Jacobian blocks written transposed
   blocks.clear();
   int o = 0;
   for (int r : g.rows) {
     const Row& row = sys.cons[r];
     if (o + row.rows() > m) return false;
     blocks.push_back(rowJacobian(sys, views, row));
+    const Eigen::Matrix<double, 2, 9>& B = blocks.back();
     for (int k = 0; k < 3; ++k)
       if (const int i = row.body[k] >= 0 ? local(row.body[k]) : -1; i >= 0)
-        A.block(o, 3 * i, row.rows(), 3) = blocks.back().block(0, 3 * k, row.rows(), 3);
+        for (int e = 0; e < row.rows(); ++e)
+          for (int c = 0; c < 3; ++c) At(3 * i + c, o + e) = B(e, 3 * k + c);
     o += row.rows();
   }
   if (o != m) return false;
-  Vec rhs(m);
+  Vec x(m);
   for (size_t i = 0; i < g.bodies.size(); ++i)
-    rhs.template segment<3>(3 * i) = Q.segment<3>(3 * g.bodies[i]) - S.segment<3>(3 * g.bodies[i]);
-  const Mat At = A.transpose();
-  const Vec x = Eigen::PartialPivLU<Mat>(At).solve(rhs);
+    x.template segment<3>(3 * i) = Q.segment<3>(3 * g.bodies[i]) - S.segment<3>(3 * g.bodies[i]);
+  if (!eliminate<N>(At, x, m)) return false;
   if (!x.allFinite()) return false;
   o = 0;
   for (size_t n = 0; n < g.rows.size(); ++n) {
     const Row& row = sys.cons[g.rows[n]];
-    for (int i = 0; i < row.rows(); ++i) lambda[row.row + i] = x[o + i];
-    for (int k = 0; k < 3; ++k)
-      if (row.body[k] >= 0)
-        S.segment<3>(3 * row.body[k]) +=
-            blocks[n].block(0, 3 * k, row.rows(), 3).transpose() * x.segment(o, row.rows());
+    const Eigen::Matrix<double, 2, 9>& B = blocks[n];
+    for (int e = 0; e < row.rows(); ++e) {
+      lambda[row.row + e] = x[o + e];
+      for (int k = 0; k < 3; ++k)
+        if (row.body[k] >= 0)
+          for (int c = 0; c < 3; ++c) S[3 * row.body[k] + c] += B(e, 3 * k + c) * x[o + e];
+    }
     o += row.rows();
   }
   return true;
 }
 
-// J^T lambda = Q with the independent rows; a sparse LU from the sizes the Newton goes sparse.
+// On the general path the kinematics factored J at this very pose for its velocities: J^T lambda
+// = Q is then two triangular solves with the same factors.
+bool ForceSolver::Impl::solveWithKinematics(const KinematicsState& s) {
+  const Eigen::VectorXd& q = s.coordinates(s.cur()).q;
+  if (!s.newton.factoredAt(q)) return false;
+  x = Q;
+  s.newton.solveTransposedInPlace(s.sys, x);
+  if (!x.allFinite()) return false;
+  const std::vector<int>& map = s.newton.rowMap();
+  lambda.resize(s.sys.nRows);
+  for (int r = 0; r < s.sys.nRows; ++r) lambda[r] = map[r] >= 0 ? x[map[r]] : kNaN;
+  return true;
+}
+
+// J^T lambda = Q with the independent rows, factored here (the kinematics' factors are of
+// another pose); a sparse LU from the sizes the Newton goes sparse.
 bool ForceSolver::Impl::solveWhole(const KinematicsState& s) {
   const System& sys = s.sys;
   const std::vector<int>& active = s.structure.activeRows;
@@ -209,7 +266,6 @@ bool ForceSolver::Impl::solveWhole(const KinematicsState& s) {
   }
   Eigen::SparseMatrix<double> JT(n, static_cast<int>(active.size()));
   JT.setFromTriplets(entries.begin(), entries.end());
-  Eigen::VectorXd x;
   if (n < s.opt.sparseFrom) {
     x = Eigen::MatrixXd(JT).partialPivLu().solve(Q);
   } else {
@@ -304,11 +360,14 @@ void ForceSolver::Impl::reactions(const KinematicsState& s, const Kinematics& k,
   out.joints.assign(m.joints.size(), JointReaction{});
   std::vector<double>& couple = couples;  // N mm
   couple.assign(m.joints.size(), 0.0);
-  for (size_t j = 0; j < m.joints.size(); ++j) out.joints[j].at = k.position(m.joints[j].a);
+  for (size_t j = 0; j < m.joints.size(); ++j) {
+    const BodyView& v = views[jointA[j].body + 1];
+    out.joints[j].at = v.r + v.R * jointA[j].s;
+  }
   for (const Row& row : sys.cons) {
     if (row.joint < 0 || row.isDriver() || row.kind == Primitive::Hold) continue;
     JointReaction& r = out.joints[row.joint];
-    const int a = sys.point(m.joints[row.joint].a)->body;
+    const int a = jointA[row.joint].body;
     const double* lam = lambda.data() + row.row;
     if (row.kind == Primitive::Angles) {
       for (int c = 0; c < 3; ++c)
@@ -365,7 +424,9 @@ const Forces& ForceSolver::compute(const Kinematics& k) {
   viewsOf(s, d_->views);
   d_->appliedAndInertia(s, k.omega(), out.crankDeg);
   d_->shakingOf(s.sys, out.shakingForceN, out.shakingMomentNm);
-  if (!(d_->grouped && d_->solveByGroups(s)) && !d_->solveWhole(s)) {
+  const bool solved = d_->grouped ? d_->solveByGroups(s) || d_->solveWhole(s)
+                                  : d_->solveWithKinematics(s) || d_->solveWhole(s);
+  if (!solved) {
     out.status = Status::failure(StatusCode::Singular,
                                  "the constraint forces cannot be solved at "
                                  "this pose (a singular position)");

@@ -35,6 +35,7 @@ void NewtonSolver::reset(const System& sys, const std::vector<int>& activeRows, 
   delta_.resize(n);
   rhs_.resize(n);
   viewsQ_.resize(0);
+  factoredQ_.resize(0);
 }
 
 void NewtonSolver::viewsAt(const System& sys, const Eigen::VectorXd& q) {
@@ -53,6 +54,7 @@ double NewtonSolver::tolerance(const System& sys, const Eigen::VectorXd& q, doub
 
 bool NewtonSolver::factor(const System& sys, const Eigen::VectorXd& q) {
   viewsAt(sys, q);
+  factoredQ_ = q;
   const double invL = 1.0 / sys.size;
   if (sparse_) {
     evalJacobian(sys, views_, rowMap_, Js_);
@@ -74,6 +76,16 @@ void NewtonSolver::solveInPlace(Eigen::VectorXd& b) const {
     slu_.solveInPlace(b);
   } else {
     lu_.solveInPlace(b);
+  }
+}
+
+void NewtonSolver::solveTransposedInPlace(const System& sys, Eigen::VectorXd& b) const {
+  const double invL = 1.0 / sys.size;
+  for (int k = 0; k < sys.nBodies; ++k) b[3 * k + 2] *= invL;
+  if (sparse_) {
+    slu_.solveTransposedInPlace(b);
+  } else {
+    lu_.solveTransposedInPlace(b);
   }
 }
 

@@ -54,6 +54,15 @@ class NewtonSolver {
   // One full Newton correction at q (J factored there): q_next = q - delta. False if singular.
   bool correction(const System& sys, const Eigen::VectorXd& q, double phi, Eigen::VectorXd& delta);
 
+  // Was J last factored at q (exactly)? Then the forces at q can reuse the factors.
+  bool factoredAt(const Eigen::VectorXd& q) const {
+    return factoredQ_.size() == q.size() && factoredQ_ == q;
+  }
+  // Solves J^T lambda = b with the last factors, in place: b by coordinates (forces in N, moments
+  // in N mm), lambda by active row (rowMap()). J here is unscaled: J_s = J D, D dividing theta
+  // columns by L, so J_s^T lambda = D b.
+  void solveTransposedInPlace(const System& sys, Eigen::VectorXd& b) const;
+
   // Residual of the active rows at q (mm), for reports.
   double residualNorm(const System& sys, const Eigen::VectorXd& q, double phi);
   const std::vector<int>& rowMap() const { return rowMap_; }
@@ -74,7 +83,7 @@ class NewtonSolver {
   DenseLU lu_;
   SparseJacobian Js_;
   SparseLU slu_;
-  Eigen::VectorXd phi_, delta_, rhs_, viewsQ_;
+  Eigen::VectorXd phi_, delta_, rhs_, viewsQ_, factoredQ_;
 };
 
 }  // namespace linkage

@@ -6,8 +6,8 @@
 
 #include "elements/angles.h"
 #include "elements/frames.h"
-#include "linkage/guide.h"
 #include "linkage/elements.h"
+#include "linkage/guide.h"
 #include "system/system.h"
 
 namespace linkage {

@@ -93,4 +93,18 @@ void DenseLU::solveInPlace(Eigen::VectorXd& b) const {
   b = tmp_;
 }
 
+// P A = L U, so A^T = U^T L^T P: U^T w = b (forward), L^T y = w (back), x[perm[k]] = y[k]. Both
+// run down the factors' columns, contiguous in memory.
+void DenseLU::solveTransposedInPlace(Eigen::VectorXd& b) const {
+  const int n = n_;
+  if (n >= kBlockedFrom) {
+    tmp_ = blocked_.transpose().solve(b);
+    b = tmp_;
+    return;
+  }
+  for (int j = 0; j < n; ++j) tmp_[j] = (b[j] - lu_.col(j).head(j).dot(tmp_.head(j))) / lu_(j, j);
+  for (int j = n - 2; j >= 0; --j) tmp_[j] -= lu_.col(j).tail(n - 1 - j).dot(tmp_.tail(n - 1 - j));
+  for (int k = 0; k < n; ++k) b[perm_[k]] = tmp_[k];
+}
+
 }  // namespace linkage

@@ -21,6 +21,8 @@ class DenseLU {
   void compute(const Eigen::MatrixXd& A);
   // x = A^-1 b, in place.
   void solveInPlace(Eigen::VectorXd& b) const;
+  // x = A^-T b, in place (the same factors: forces from the kinematics' Jacobian).
+  void solveTransposedInPlace(Eigen::VectorXd& b) const;
 
   double pivotRatio() const { return pivotRatio_; }
   int detSign() const { return detSign_; }

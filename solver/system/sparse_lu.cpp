@@ -73,4 +73,13 @@ void SparseLU::solveInPlace(Eigen::VectorXd& b) const {
   b = tmp_;
 }
 
+void SparseLU::solveTransposedInPlace(Eigen::VectorXd& b) const {
+  if (!factored_) {
+    b.setConstant(NAN);
+    return;
+  }
+  tmp_ = lu_->transpose().solve(b);
+  b = tmp_;
+}
+
 }  // namespace linkage

@@ -38,6 +38,8 @@ class SparseLU {
   void compute(const Eigen::SparseMatrix<double>& A);
   // x = A^-1 b, in place.
   void solveInPlace(Eigen::VectorXd& b) const;
+  // x = A^-T b, in place.
+  void solveTransposedInPlace(Eigen::VectorXd& b) const;
 
   double pivotRatio() const { return pivotRatio_; }
   int detSign() const { return detSign_; }
