@@ -8,6 +8,7 @@
 #include "linkage/dynamics.h"
 #include "linkage/elements.h"
 #include "linkage/io/numbers.h"
+#include "linkage/tables/force_table.h"
 
 namespace linkage::cli {
 
@@ -81,30 +82,6 @@ std::optional<int> readOptions(int argc, char** argv, Options& o) {
   return std::nullopt;
 }
 
-std::string header(const Mechanism& m) {
-  std::string h = "t_s,crank_deg,driver_torque_Nm,shaking_fx_N,shaking_fy_N,shaking_moment_Nm";
-  for (const Joint& j : m.joints) {
-    const ElementKind& kind = kindOf(j);
-    for (const char* c : kind.reactionColumns)
-      h += std::string(",") + kind.name + ":" + m.pointLabel(j.a) + "." + c;
-  }
-  return h;
-}
-
-std::string row(const Mechanism& m, const Forces& f, double t, double deg,
-                const std::vector<char>& undetermined) {
-  std::string r = formatNumber(t) + "," + formatNumber(deg) + "," + formatNumber(f.driverTorqueNm) +
-                  "," + formatNumber(f.shakingForceN.x()) + "," +
-                  formatNumber(f.shakingForceN.y()) + "," + formatNumber(f.shakingMomentNm);
-  for (size_t i = 0; i < m.joints.size(); ++i) {
-    const JointReaction& x = f.joints[i];
-    const double values[3] = {x.force.x(), x.force.y(), x.coupleNm};
-    const size_t n = kindOf(m.joints[i]).reactionColumns.size();
-    for (size_t c = 0; c < n; ++c) r += "," + (undetermined[i] ? "" : formatNumber(values[c]));
-  }
-  return r;
-}
-
 }  // namespace
 
 int dynamics(int argc, char** argv) {
@@ -127,18 +104,16 @@ int dynamics(int argc, char** argv) {
     error(
         "note: no moving body has a mass, and there is no gravity and no load: every force is "
         "zero (masses: \"mass\" on a body, see docs/dynamics.md)");
-  std::vector<char> undetermined(m->joints.size(), 0);
+  const std::vector<char> undetermined = undeterminedJoints(*m, solver.result().undetermined);
   if (!solver.result().undetermined.empty()) {
     std::string names;
-    for (JointId j : solver.result().undetermined) {
-      undetermined[m->jointIndex(j)] = 1;
+    for (JointId j : solver.result().undetermined)
       names += (names.empty() ? "" : ", ") + jointLabel(*m, j);
-    }
     error("note: the reactions of " + names +
           " are not determined (redundant joints share them in more than one way): their "
           "columns are left empty");
   }
-  std::string out = header(*m) + "\n";
+  std::string out = forceTableHeader(*m) + "\n";
   const long long rows = std::llround(o.steps * o.revs);
   Status s;
   for (long long i = 0; i <= rows; ++i) {
@@ -146,7 +121,7 @@ int dynamics(int argc, char** argv) {
     if (s = k.moveTo(deg); !s.ok()) break;
     const Forces& f = solver.compute(k);
     if (!(s = f.status).ok()) break;
-    out += row(*m, f, deg / 360 * 60 / k.rpm(), deg, undetermined) + "\n";
+    out += forceTableRow(*m, f, deg / 360 * 60 / k.rpm(), deg, undetermined) + "\n";
     if (o.out.empty() && out.size() > (1 << 16)) {
       std::fwrite(out.data(), 1, out.size(), stdout);
       out.clear();

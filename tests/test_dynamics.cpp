@@ -11,6 +11,7 @@
 #include "examples.h"
 #include "linkage/dynamics.h"
 #include "linkage/elements.h"
+#include "linkage/force_samples.h"
 #include "linkage/io/model_file.h"
 #include "mechanisms.h"
 
@@ -35,8 +36,8 @@ Mechanism withMasses(Mechanism m, unsigned seed, bool loads = true) {
   if (loads)
     for (const Point& p : m.points)
       if (!m.body(p.body)->ground) {
-        m.loads.push_back(Load{p.id, {}, Vec2(3, -7), 0, 40.0, 200.0, ""});
-        m.loads.push_back(Load{{}, p.body, Vec2::Zero(), 0.05, std::nullopt, std::nullopt, ""});
+        m.addLoad(Load{p.id, {}, Vec2(3, -7), 0, 40.0, 200.0, ""});
+        m.addLoad(Load{{}, p.body, Vec2::Zero(), 0.05, std::nullopt, std::nullopt, ""});
         break;
       }
   return m;
@@ -321,7 +322,8 @@ TEST(Dynamics, TheKinematicsFactorsGiveWhatTheGroupsGive) {
 }
 
 TEST(Dynamics, MassesGravityAndLoadsRoundTripAndBadOnesAreRefused) {
-  const Mechanism m = withMasses(test::example("wanzer-inversion-2"), 5);
+  Mechanism m = withMasses(test::example("wanzer-inversion-2"), 5);
+  m.bodies[1].mass->counterweights = {{0.125, Vec2(3, -4.5)}, {0.25, Vec2(-1, 2)}};
   const std::string text = serializeMechanism(m);
   const LoadResult back = parseMechanism(text);
   ASSERT_TRUE(back.mechanism) << back.error;
@@ -346,6 +348,54 @@ TEST(Dynamics, MassesGravityAndLoadsRoundTripAndBadOnesAreRefused) {
             "loads[1]: missing required field \"torque_Nm\"");
   EXPECT_NE(refused("\"point\": \"", "\"point\": \"x").find("loads[0].point: no body"),
             std::string::npos);
+  EXPECT_EQ(refused("\"kg\": 0.125", "\"kg\": -0.125"),
+            "bodies[1].mass.counterweights[0].kg: expected a number >= 0, got -0.125");
+  EXPECT_EQ(refused("\"counterweights\": [", "\"counterweights\": 3, \"x\": ["),
+            "bodies[1].mass.counterweights: expected an array of {\"kg\", \"at\"}, got 3");
+}
+
+TEST(Dynamics, SamplesCoverWholeTurnsAndStopWhereTheCrankCannotPass) {
+  const Mechanism m = withMasses(test::example("wanzer-inversion-2"), 11);
+  Kinematics k = loaded(m, true);
+  const double before = k.crankDeg();
+  const ForceSamples s = sampleForces(k, 72, 2, 300);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  ASSERT_TRUE(s.complete);
+  ASSERT_EQ(s.size(), 145u);
+  EXPECT_EQ(s.rpm, 300);
+  EXPECT_EQ(s.crankDeg.back(), 720);
+  ASSERT_EQ(s.reactionN.size(), m.joints.size());
+  // At another speed every inertia force scales with its square; gravity and loads do not,
+  // so compare with a solver at that speed, pose by pose.
+  Kinematics probe = k;
+  probe.setRpm(300);
+  ForceSolver f;
+  ASSERT_TRUE(f.prepare(probe).ok());
+  for (size_t i = 0; i < s.size(); i += 7) {
+    ASSERT_TRUE(probe.moveTo(s.crankDeg[i]).ok());
+    const Forces& r = f.compute(probe);
+    // The same pose reached in other steps: equal to the solver's last digits.
+    const double scale = 1 + r.shakingForceN.norm();
+    EXPECT_LT(std::abs(s.driverTorqueNm[i] - r.driverTorqueNm), 1e-9 * scale);
+    EXPECT_LT((s.shakingN[i] - r.shakingForceN).norm(), 1e-9 * scale);
+    for (size_t j = 0; j < m.joints.size(); ++j)
+      EXPECT_LT((s.reactionN[j][i] - r.joints[j].force).norm(), 1e-9 * scale);
+  }
+  // Periodic: a turn later, the same forces (loads switch by the angle within the turn).
+  for (size_t i = 0; i <= 72; i += 9)
+    EXPECT_LT(std::abs(s.driverTorqueNm[i] - s.driverTorqueNm[i + 72]),
+              1e-9 * (1 + std::abs(s.driverTorqueNm[i])));
+  EXPECT_EQ(k.crankDeg(), before) << "the caller's kinematics is not moved";
+
+  // A crank-rocker drawn too long to turn (non-Grashof: 30 + 60 > 45 + 50) stops on its way.
+  const test::FourBar fb = test::fourBar(60, 45, 30, 50, 60);
+  Kinematics nk = loaded(withMasses(fb.m, 3, false), true);
+  const ForceSamples part = sampleForces(nk, 360);
+  EXPECT_FALSE(part.complete);
+  EXPECT_FALSE(part.status.ok());
+  EXPECT_GT(part.size(), 1u);
+  EXPECT_LT(part.size(), 361u);
+  for (double t : part.driverTorqueNm) EXPECT_TRUE(std::isfinite(t));
 }
 
 }  // namespace

@@ -273,6 +273,7 @@ void addCounterweights(Mechanism& m, const std::vector<Counterweight>& cws) {
     mass.jKgMm2 += mass.kg * (mass.com - com).squaredNorm() + mc * (at - com).squaredNorm();
     mass.kg = total;
     mass.com = com;
+    mass.counterweights.push_back({mc, at});
     b->mass = mass;
   }
 }

@@ -35,7 +35,17 @@ Mass readMass(const Json& v, const std::string& path) {
   m.kg = nonNegative(require(v, "kg", path), path + ".kg");
   m.com = finitePair(require(v, "com", path), path + ".com");
   if (const Json* j = find(v, "j_kg_mm2")) m.jKgMm2 = nonNegative(*j, path + ".j_kg_mm2");
-  m.extras = unknownFields(v, {"kg", "com", "j_kg_mm2"});
+  if (const Json* c = find(v, "counterweights")) {
+    const std::string at = path + ".counterweights";
+    if (!c->is_array()) refuse(at, "expected an array of {\"kg\", \"at\"}, got " + describe(*c));
+    for (size_t i = 0; i < c->size(); ++i) {
+      const std::string e = element(at, i);
+      requireObject((*c)[i], e);
+      m.counterweights.push_back({nonNegative(require((*c)[i], "kg", e), e + ".kg"),
+                                  finitePair(require((*c)[i], "at", e), e + ".at")});
+    }
+  }
+  m.extras = unknownFields(v, {"kg", "com", "j_kg_mm2", "counterweights"});
   return m;
 }
 
@@ -67,7 +77,7 @@ void readLoads(const Json& v, const std::string& path, Mechanism& m, const Point
     }
     readWindow(l, at, load);
     load.extras = unknownFields(l, {"point", "body", "force_N", "torque_Nm", "from_deg", "to_deg"});
-    m.loads.push_back(std::move(load));
+    m.addLoad(std::move(load));
   }
 }
 

@@ -133,7 +133,17 @@ Json bodyJson(const Body& b, const BodyContents& contents) {
     mass["kg"] = number(b.mass->kg);
     mass["com"] = pair(b.mass->com);
     mass["j_kg_mm2"] = number(b.mass->jKgMm2);
-    appendExtras(mass, b.mass->extras, {"kg", "com", "j_kg_mm2"});
+    if (!b.mass->counterweights.empty()) {
+      Json list = Json::array();
+      for (const PointMass& c : b.mass->counterweights) {
+        Json e = Json::object();
+        e["kg"] = number(c.kg);
+        e["at"] = pair(c.at);
+        list.push_back(std::move(e));
+      }
+      mass["counterweights"] = std::move(list);
+    }
+    appendExtras(mass, b.mass->extras, {"kg", "com", "j_kg_mm2", "counterweights"});
     j["mass"] = std::move(mass);
   }
   appendExtras(j, b.extras, {"name", "ground", "number", "points", "slots", "mass"});

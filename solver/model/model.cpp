@@ -75,6 +75,12 @@ JointId Mechanism::addJoint(Joint j) {
   return joints.back().id;
 }
 
+LoadId Mechanism::addLoad(Load l) {
+  l.id = make<LoadId>();
+  loads.push_back(std::move(l));
+  return loads.back().id;
+}
+
 JointId Mechanism::addPin(PointId a, PointId b) {
   return addJoint(Joint{{}, JointType::Pin, a, b, {}, {}, 0, {}});
 }
@@ -176,6 +182,12 @@ Slot* Mechanism::slot(SlotId id) {
 }
 Joint* Mechanism::joint(JointId id) {
   return findById(joints, id);
+}
+const Load* Mechanism::load(LoadId id) const {
+  return const_cast<Mechanism*>(this)->load(id);
+}
+Load* Mechanism::load(LoadId id) {
+  return id ? findById(loads, id) : nullptr;
 }
 
 const Body* Mechanism::bodyNamed(const std::string& n) const {

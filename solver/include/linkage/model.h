@@ -33,10 +33,18 @@ using BodyId = Id<struct BodyTag>;
 using PointId = Id<struct PointTag>;
 using SlotId = Id<struct SlotTag>;
 using JointId = Id<struct JointTag>;
+using LoadId = Id<struct LoadTag>;
 
 // Fields of a file object that this program does not know are kept, verbatim, as the text of a
 // JSON object ("" when there were none), and written back on save.
 using Extras = std::string;
+
+// A point mass in sketch coordinates.
+struct PointMass {
+  double kg = 0;
+  Vec2 at = Vec2::Zero();
+  bool operator==(const PointMass&) const = default;
+};
 
 // A body's mass properties: its mass, its centre of mass in sketch coordinates (the drawing's
 // pose, like its points) and its moment of inertia about that centre.
@@ -45,6 +53,9 @@ struct Mass {
   Vec2 com = Vec2::Zero();
   double jKgMm2 = 0;
   Extras extras;
+  // Of the mass above, the counterweights a balance added (already in kg, com and j: what an
+  // editor draws as disks, and what a user may want to take out again).
+  std::vector<PointMass> counterweights;
   bool operator==(const Mass&) const = default;
 };
 
@@ -102,6 +113,7 @@ struct Load {
   double torqueNm = 0;
   std::optional<double> fromDeg, toDeg;
   Extras extras;
+  LoadId id;  // given by Mechanism::addLoad (last: a load can be written as {point, ...})
   bool activeAt(double crankDeg) const;
 };
 
@@ -162,6 +174,8 @@ struct Mechanism {
   JointId addGear(PointId a, PointId b, double ratio, BodyId carrier = {});
   // A joint with its fields as given (what a kind does not read is left unset by the caller).
   JointId addJoint(Joint j);
+  // A load as given, with a new id.
+  LoadId addLoad(Load l);
 
   // Removal cascades to what cannot stand without the entity: a joint takes the driver along if
   // it is the driver's; a point its joints and its place among the outputs; a slot its joints;
@@ -187,6 +201,8 @@ struct Mechanism {
   Point* point(PointId id);
   Slot* slot(SlotId id);
   Joint* joint(JointId id);
+  const Load* load(LoadId id) const;
+  Load* load(LoadId id);
   bool contains(BodyId id) const { return body(id) != nullptr; }
   bool contains(PointId id) const { return point(id) != nullptr; }
   bool contains(SlotId id) const { return slot(id) != nullptr; }
