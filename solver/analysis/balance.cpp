@@ -182,10 +182,13 @@ bool Balancer::exchange(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& 
   }
   r.lowerBound = t;
   bool done = true;
+  // A bound is kept when it is exceeded by no more than the programme can resolve: CLP keeps
+  // rows to its primal tolerance (1e-11, absolute), so asking for less added the same tangent
+  // again at every round until the round limit.
   if (opt_.maxKgMm)
     for (size_t k = 0; k < opt_.bodies.size(); ++k) {
       const Vec2 s(x[2 * k], x[2 * k + 1]);
-      if (s.norm() > *opt_.maxKgMm * (1 + 1e-12)) {
+      if (s.norm() - *opt_.maxKgMm > std::max(opt_.tolerance * *opt_.maxKgMm, 1e-10)) {
         lp.addBound(static_cast<int>(k), s.normalized(), *opt_.maxKgMm);
         done = false;
       }

@@ -1,0 +1,136 @@
+// linkage-cli dynamics and balance on the examples with masses, as a user and a script see them:
+// the table's header and rows, a value against the 22-A's closed form, the balance's lines and
+// its counterweights put back into the model, exit codes and the place named in bad input.
+#ifdef LINKAGE_CLI
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_harness.h"
+#include "linkage/io/numbers.h"
+
+namespace linkage {
+namespace {
+
+using test::CliResult;
+
+std::vector<std::string> split(const std::string& row) {
+  std::vector<std::string> v;
+  std::istringstream s(row);
+  for (std::string f; std::getline(s, f, ',');) v.push_back(f);
+  if (!row.empty() && row.back() == ',') v.push_back("");
+  return v;
+}
+
+double number(const std::string& field) {
+  const std::optional<double> x = parseNumber(field);
+  EXPECT_TRUE(x.has_value()) << "not a number: '" << field << "'";
+  return x.value_or(NAN);
+}
+
+std::string example(const std::string& name) {
+  return "'" + std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json'";
+}
+
+class CliForces : public test::CliTest {};
+
+TEST_F(CliForces, DynamicsWritesAHeaderAndARowPerStepForEachExample) {
+  const std::string head =
+      "t_s,crank_deg,driver_torque_Nm,shaking_fx_N,shaking_fy_N,shaking_moment_Nm,";
+  for (const char* name : {"slider-crank-22a-masses", "wanzer-inversion-2-masses", "drop-feed"}) {
+    const CliResult r = run(std::string("dynamics ") + name + " --steps 36");
+    ASSERT_EQ(r.exit, 0) << name << ": " << r.err;
+    const std::vector<std::string> lines = r.lines();
+    ASSERT_EQ(lines.size(), 38u) << name;  // header + 0, 10, ..., 360
+    EXPECT_EQ(lines[0].substr(0, head.size()), head) << name;
+    const size_t columns = split(lines[0]).size();
+    for (size_t i = 1; i < lines.size(); ++i) {
+      const std::vector<std::string> f = split(lines[i]);
+      ASSERT_EQ(f.size(), columns) << name << " row " << i;
+      for (const std::string& x : f) EXPECT_TRUE(std::isfinite(number(x))) << name << " " << i;
+      EXPECT_EQ(number(f[1]), 10.0 * (i - 1)) << name;
+    }
+  }
+  const CliResult feed = run("dynamics drop-feed --steps 4");
+  EXPECT_NE(feed.out.find(",gear:armshaft.M.fx_N,gear:armshaft.M.fy_N,"), std::string::npos);
+}
+
+// At crank 0 the 22-A's needle bar is at its outer dead centre: a_B = -r w^2 (1 + lambda), the
+// crank pin's a_A = -r w^2 along the guide, the rod's centre of mass (a third of the way from A)
+// (2 a_A + a_B) / 3; shaking fy = -(m_rod a_rod + m_bar a_B) = (0.04 * 17.5 + 0.1 * 22.5) w^2
+// (kg mm / s^2 = 1e-3 N), fx = 0.
+TEST_F(CliForces, DynamicsOf22AAtTheDeadCentreIsTheClosedForm) {
+  const CliResult r = run("dynamics slider-crank-22a-masses --steps 4");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const std::vector<std::string> f = split(r.lines().at(1));
+  const double w = 3000 * 2 * M_PI / 60, fy = (0.04 * 17.5 + 0.1 * 22.5) * w * w / 1000;
+  EXPECT_NEAR(number(f[3]), 0, 1e-12 * fy);
+  EXPECT_NEAR(number(f[4]), fy, 1e-12 * fy);
+  EXPECT_NEAR(number(f[2]), 0, 1e-12 * fy);  // no power at a dead centre
+}
+
+TEST_F(CliForces, BalanceOfTheDropFeedAndItsCounterweightsPutBack) {
+  const std::string out = (dir_ / "balanced.linkage.json").string();
+  const CliResult r =
+      run("balance drop-feed --counterweight lowershaft --counterweight feedrock "
+          "--minimize fx --out '" +
+          out + "'");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const std::vector<std::string> lines = r.lines();
+  ASSERT_EQ(lines.size(), 4u) << r.out;
+  EXPECT_EQ(lines[0].substr(0, 25), "counterweight,lowershaft,");
+  EXPECT_EQ(lines[1].substr(0, 23), "counterweight,feedrock,");
+  EXPECT_EQ(lines[2].substr(0, 13), "peak_before,,");
+  EXPECT_EQ(lines[3].substr(0, 12), "peak_after,,");
+  const double before = number(lines[2].substr(13)), after = number(lines[3].substr(12));
+  EXPECT_LT(after, before / 100);
+  EXPECT_NE(r.err.find("optimality gap"), std::string::npos) << r.err;
+  // The balanced model, through the forces' own path: its largest |fx| over 3,600 steps is the
+  // peak the balance reported (from below: the samples may miss the peak's exact angle).
+  const CliResult d = run("dynamics '" + out + "' --steps 3600");
+  ASSERT_EQ(d.exit, 0) << d.err;
+  double peak = 0;
+  const std::vector<std::string> rows = d.lines();
+  for (size_t i = 1; i < rows.size(); ++i)
+    peak = std::max(peak, std::abs(number(split(rows[i])[3])));
+  EXPECT_LE(peak, after * (1 + 1e-8));
+  EXPECT_GE(peak, after * (1 - 1e-3));
+}
+
+TEST_F(CliForces, BadInputExitsTwoNamingThePlace) {
+  std::string text = test::slurp(std::string(LINKAGE_EXAMPLES_DIR) + "/drop-feed.linkage.json");
+  const size_t at = text.find("\"kg\": 0.7");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 9, "\"kg\": -0.7");
+  const std::string bad = "'" + writeFile("negative.linkage.json", text) + "'";
+  for (const std::string cmd :
+       {"dynamics " + bad, "balance " + bad + " --counterweight lowershaft --minimize fx"}) {
+    const CliResult r = run(cmd);
+    EXPECT_EQ(r.exit, 2) << cmd;
+    EXPECT_NE(r.err.find("bodies[2].mass.kg"), std::string::npos) << r.err;
+  }
+  CliResult r = run("balance drop-feed --counterweight advancerod --minimize fx");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("body 'advancerod' is not pinned to the ground"), std::string::npos)
+      << r.err;
+  r = run("balance drop-feed --counterweight lowershaft");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("--minimize"), std::string::npos) << r.err;
+  r = run("balance drop-feed --counterweight nosuchbody --minimize fx");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("no body 'nosuchbody'"), std::string::npos) << r.err;
+  r = run("balance drop-feed --minimize fx");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("--counterweight"), std::string::npos) << r.err;
+  r = run("dynamics " + example("drop-feed") + " --steps 0");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("--steps"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace linkage
+#endif
