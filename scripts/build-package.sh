@@ -2,20 +2,25 @@
 # Builds the Debian package, BUILD_DIR/linkage_<version>_<arch>.deb (CPack, cmake/Package.cmake),
 # and prints its path as the last line of standard output: the programs' packages and build
 # (scripts/setup.sh, without the tests), dpkg-dev for dpkg-shlibdeps, which finds the package's
-# dependencies from the libraries the programs load.
+# dependencies from the libraries the programs load, and file, with which CPack finds the programs
+# to give it (neither is in a minimal Debian).
 #
 #   scripts/build-package.sh [BUILD_DIR]      (default: build; as root, or with sudo)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${1:-build}
 scripts/setup.sh "$BUILD_DIR" >&2
-if ! dpkg-query -W -f='${Status}' dpkg-dev 2>/dev/null | grep -q "install ok installed"; then
+missing=()
+for p in dpkg-dev file; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
   SUDO=""
   [ "$(id -u)" -eq 0 ] || SUDO=sudo
-  echo "build-package: installing dpkg-dev" >&2
+  echo "build-package: installing ${missing[*]}" >&2
   $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends dpkg-dev \
-    >/dev/null
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
 fi
 rm -f "$BUILD_DIR"/linkage_*.deb
 cmake --build "$BUILD_DIR" --target package >&2

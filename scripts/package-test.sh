@@ -15,8 +15,9 @@ if [ $# -ge 1 ]; then
 else
   echo "== building the package (build log in build/package.log)"
   mkdir -p build
-  deb=$(scripts/build-package.sh build 2>build/package.log | tail -1) ||
+  scripts/build-package.sh build >build/package.path 2>build/package.log ||
     { tail -30 build/package.log; exit 1; }
+  deb=$(tail -1 build/package.path)
   echo "package-test: built $deb ($(( $(date +%s) - start )) s)"
 fi
 [ -s "$deb" ] || { echo "package-test: no package $deb"; exit 1; }
