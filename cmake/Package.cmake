@@ -21,15 +21,23 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Debian's extended description: CPack puts the summary above it as the synopsis line and keeps
-# these lines as they are (under 80 characters).
+# these lines as they are (lintian: under 80 characters with the leading space).
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
-    "Draw links, pins and slots; a constraint solver moves the mechanism, and the position,
-velocity and acceleration of any point come out exact, from linear solves with the constraint
-Jacobian. The editor (linkage) draws and edits mechanisms live, animates them, shows every
-instant centre with its Kennedy lines, plots motion curves and checks designs (transmission
-angles, limit positions, Grashof, parameter studies); linkage-cli writes motion tables, instant
-centres, design checks and figures for scripts. Example mechanisms include the Wanzer needle bar,
-slider-cranks, four-bars and a lockstitch arm shaft.")
-# Debian policy: every package has /usr/share/doc/<package>/copyright.
+    "Draw links, pins and slots; a constraint solver moves the mechanism, and the
+position, velocity and acceleration of any point come out exact, from linear
+solves with the constraint Jacobian. The editor (linkage) draws and edits
+mechanisms live, animates them, shows every instant centre with its Kennedy
+lines, plots motion curves and checks designs (transmission angles, limit
+positions, Grashof, parameter studies); linkage-cli writes motion tables,
+instant centres, design checks and figures for scripts. Example mechanisms
+include the Wanzer needle bar, slider-cranks, four-bars and a lockstitch arm
+shaft.")
+# Debian policy: every package has /usr/share/doc/<package>/copyright, and a native package (no
+# Debian revision) its changelog.gz, compressed with gzip -9n (no name, no time: reproducible).
 install(FILES ${PROJECT_SOURCE_DIR}/cmake/copyright DESTINATION share/doc/linkage)
+# Made when configuring, so that `cmake --install` needs no build target for it.
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/cmake/changelog)
+execute_process(COMMAND gzip -9n -c ${PROJECT_SOURCE_DIR}/cmake/changelog
+                OUTPUT_FILE ${PROJECT_BINARY_DIR}/changelog.gz COMMAND_ERROR_IS_FATAL ANY)
+install(FILES ${PROJECT_BINARY_DIR}/changelog.gz DESTINATION share/doc/linkage)
 include(CPack)
