@@ -26,11 +26,11 @@ for f in /usr/bin/linkage /usr/bin/linkage-cli /usr/bin/linkage-plot \
   /usr/share/icons/hicolor/scalable/apps/io.github.linkage.Linkage.svg \
   /usr/share/mime/packages/linkage.xml \
   /usr/share/metainfo/io.github.linkage.Linkage.metainfo.xml \
-  /usr/share/doc/linkage/copyright \
+  /usr/share/doc/linkage/copyright /usr/share/doc/linkage/changelog.gz \
   /usr/share/linkage/examples/wanzer-inversion-2.linkage.json; do
   [ -s "$f" ] || fail "$f is not installed"
 done
-step "programs, desktop entry, icon, MIME type, metainfo, copyright and examples installed"
+step "programs, desktop entry, icon, MIME type, metainfo, copyright, changelog and examples installed"
 
 # From an empty directory, with no display: nothing may come from a working or source tree.
 work=$(mktemp -d)
