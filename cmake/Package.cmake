@@ -1,9 +1,10 @@
 # The Debian package (CPack, DEB generator): `cmake --build build --target package` makes
 # linkage_<version>_amd64.deb in the build directory, installing to /usr what `cmake --install`
 # installs. Its dependencies are the shared libraries the programs load, found by dpkg-shlibdeps
-# (package dpkg-dev): Qt 6 Core, Gui (with its platform plugins), Widgets, Svg and PrintSupport,
-# QCustomPlot's Qt 6 build, giflib, the C++ runtime. Fonts come with them (libqt6gui6 needs
-# fontconfig, whose configuration needs a font package, fonts-dejavu-core first).
+# (package dpkg-dev, with file): Qt 6 Core, Gui (with its platform plugins), Widgets and Svg,
+# QCustomPlot's Qt 6 build (which brings PrintSupport), giflib, the C++ runtime. Fonts come with
+# them (libqt6gui6 needs fontconfig, whose configuration needs a font package, fonts-dejavu-core
+# first). README.md, "Debian package", says why each one is there.
 set(LINKAGE_PACKAGE_MAINTAINER
     "Seed 8f76a2ca maintainers <maintainers@users.noreply.h-seed-8f76a2ca.example>"
     CACHE STRING "The Debian package's Maintainer field")
@@ -36,7 +37,8 @@ shaft.")
 # Debian revision) its changelog.gz, compressed with gzip -9n (no name, no time: reproducible).
 install(FILES ${PROJECT_SOURCE_DIR}/cmake/copyright DESTINATION share/doc/linkage)
 # Made when configuring, so that `cmake --install` needs no build target for it.
-set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/cmake/changelog)
+set_property(DIRECTORY APPEND
+             PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/cmake/changelog)
 execute_process(COMMAND gzip -9n -c ${PROJECT_SOURCE_DIR}/cmake/changelog
                 OUTPUT_FILE ${PROJECT_BINARY_DIR}/changelog.gz COMMAND_ERROR_IS_FATAL ANY)
 install(FILES ${PROJECT_BINARY_DIR}/changelog.gz DESTINATION share/doc/linkage)

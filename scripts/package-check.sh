@@ -17,7 +17,9 @@ t0=$(date +%s)
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends "$deb" >/tmp/package-check-apt.log 2>&1 ||
   { tail -30 /tmp/package-check-apt.log; fail "apt-get install $deb failed"; }
-step "installed $(dpkg-query -W -f='${Package} ${Version} (${Installed-Size} KiB)' linkage) and $(grep -c '^Setting up' /tmp/package-check-apt.log) packages in $(( $(date +%s) - t0 )) s"
+installed=$(dpkg-query -W -f='${Package} ${Version} (${Installed-Size} KiB)' linkage)
+step "installed $installed and $(grep -c '^Setting up' /tmp/package-check-apt.log) packages" \
+  "in $(( $(date +%s) - t0 )) s"
 step "Depends: $(dpkg-query -W -f='${Depends}' linkage)"
 version=$(dpkg-query -W -f='${Version}' linkage)
 
@@ -30,7 +32,7 @@ for f in /usr/bin/linkage /usr/bin/linkage-cli /usr/bin/linkage-plot \
   /usr/share/linkage/examples/wanzer-inversion-2.linkage.json; do
   [ -s "$f" ] || fail "$f is not installed"
 done
-step "programs, desktop entry, icon, MIME type, metainfo, copyright, changelog and examples installed"
+step "installed: programs, desktop entry, icon, MIME type, metainfo, copyright, changelog, examples"
 
 # From an empty directory, with no display: nothing may come from a working or source tree.
 work=$(mktemp -d)
@@ -60,7 +62,8 @@ QT_QPA_PLATFORM=offscreen linkage --screenshot /tmp/shot.png wanzer-inversion-2 
   { cat shot.log; fail "linkage --screenshot failed"; }
 [ "$(head -c 8 /tmp/shot.png | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] ||
   fail "the screenshot is no PNG"
-if grep -E "Could not (load|find) the Qt platform plugin|Cannot find font|QFontDatabase" shot.log; then
+if grep -E "Could not (load|find) the Qt platform plugin|Cannot find font|QFontDatabase" \
+  shot.log; then
   fail "Qt could not find its platform plugin or fonts"
 fi
 size=$(od -An -tu1 -j16 -N8 /tmp/shot.png | awk '{ print $3 * 256 + $4 "x" $7 * 256 + $8 }')
