@@ -17,7 +17,8 @@ enum Exit { kOk = 0, kFailure = 1, kBadInput = 2, kUnreachable = 3 };
 // cannot reach (or where it is singular) is 3.
 int exitFor(const Status& s);
 
-// argv[0], to find the examples installed next to the executable.
+// This program's path (linkage::runningExecutable), to find the examples installed with it and
+// linkage-plot next to it.
 extern std::string executablePath;
 
 // Prints "linkage-cli: <message>" to standard error.

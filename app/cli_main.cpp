@@ -35,20 +35,24 @@ Commands:
   examples            list the example mechanisms that MODEL can name
 
 MODEL is a .linkage.json file or the name of an example (e.g. wanzer-inversion-2).
-Run 'linkage-cli COMMAND --help' for a command's options. Numbers are written with '.' as the
-decimal point whatever the locale.
+Run 'linkage-cli COMMAND --help' for a command's options, 'linkage-cli --version' for the
+version. Numbers are written with '.' as the decimal point whatever the locale.
 )";
 
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace linkage::cli;
-  executablePath = argc > 0 ? argv[0] : "";
+  executablePath = linkage::runningExecutable(argc > 0 ? argv[0] : "");
   if (argc < 2 || isHelp(argv[1])) {
     std::cout << kHelp;
     return argc < 2 ? kBadInput : kOk;
   }
   const std::string cmd = argv[1];
+  if (cmd == "--version") {
+    std::cout << "linkage-cli " LINKAGE_VERSION "\n";
+    return kOk;
+  }
   if (cmd == "analyze") return analyze(argc - 2, argv + 2);
   if (cmd == "info") return info(argc - 2, argv + 2);
   if (cmd == "ics") return ics(argc - 2, argv + 2);

@@ -14,20 +14,10 @@
 
 namespace linkage::cli {
 
-namespace {
-
-// This program's directory: /proc/self/exe, else the directory of argv[0].
-std::filesystem::path ownDirectory() {
-  std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) return self.parent_path();
-  return std::filesystem::path(executablePath).parent_path();
-}
-
-}  // namespace
-
 int plot(int argc, char** argv) {
-  const std::filesystem::path helper = ownDirectory() / "linkage-plot";
+  // executablePath is /proc/self/exe (main), so this is the directory linkage-cli runs from.
+  const std::filesystem::path helper =
+      std::filesystem::path(executablePath).parent_path() / "linkage-plot";
   if (::access(helper.c_str(), X_OK) != 0) {
     error("plot: " + helper.string() +
           " is not there; it draws the figures (built with the editor's libraries, "

@@ -5,23 +5,94 @@
 //   linkage --benchmark-frames N [FILE|EXAMPLE] [--ics] [--plots] [--size WxH]
 //   linkage --benchmark-drag N [FILE|EXAMPLE] [--ctrl] [--ics] [--plots] [--size WxH]
 //   (all three also [--extremes] [--transmission] [--checks]: the design checks)
+//   linkage --version | --help
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 
 #include "window/headless.h"
 #include "window/main_window.h"
 
 namespace {
 
-bool wantsHeadless(int argc, char** argv) {
+bool hasArgument(int argc, char** argv, std::initializer_list<const char*> names) {
   for (int i = 1; i < argc; ++i)
-    if (!std::strcmp(argv[i], "--screenshot") || !std::strcmp(argv[i], "--benchmark-frames") ||
-        !std::strcmp(argv[i], "--benchmark-drag"))
-      return true;
+    for (const char* n : names)
+      if (!std::strcmp(argv[i], n)) return true;
   return false;
+}
+
+bool wantsHeadless(int argc, char** argv) {
+  return hasArgument(argc, argv, {"--screenshot", "--benchmark-frames", "--benchmark-drag"});
+}
+
+// --version and --help print and exit: they need no display either.
+bool onlyPrints(int argc, char** argv) {
+  return hasArgument(argc, argv, {"--version", "-v", "--help", "-h", "-?", "--help-all"});
+}
+
+// The editor's options besides --help and --version.
+struct Options {
+  const QCommandLineOption screenshot{QStringLiteral("screenshot"),
+                                      QStringLiteral("Render the window to a PNG and exit."),
+                                      QStringLiteral("OUT.png")};
+  const QCommandLineOption bench{QStringLiteral("benchmark-frames"),
+                                 QStringLiteral("Animate N frames as fast as possible in the "
+                                                "offscreen window and print frame times."),
+                                 QStringLiteral("N")};
+  const QCommandLineOption drag{QStringLiteral("benchmark-drag"),
+                                QStringLiteral("Drag the first output point with N mouse moves "
+                                               "in the offscreen window; print the time from "
+                                               "each move to the redrawn frame."),
+                                QStringLiteral("N")};
+  const QCommandLineOption ctrl{QStringLiteral("ctrl"),
+                                QStringLiteral("With --benchmark-drag: hold Ctrl (the design "
+                                               "changes while dragging).")};
+  const QCommandLineOption angle{QStringLiteral("angle"),
+                                 QStringLiteral("Crank angle for the screenshot (degrees)."),
+                                 QStringLiteral("DEG")};
+  const QCommandLineOption ics{QStringLiteral("ics"),
+                               QStringLiteral("Show the instant centres (overlay and panel).")};
+  const QCommandLineOption plots{QStringLiteral("plots"), QStringLiteral("Show the plots dock.")};
+  const QCommandLineOption size{QStringLiteral("size"),
+                                QStringLiteral("Window size (default 1280x800)."),
+                                QStringLiteral("WxH")};
+  const QCommandLineOption dark{QStringLiteral("dark"), QStringLiteral("Use the dark palette.")};
+  const QCommandLineOption extremes{QStringLiteral("extremes"),
+                                    QStringLiteral("Draw the extreme positions of the output.")};
+  const QCommandLineOption transmission{QStringLiteral("transmission"),
+                                        QStringLiteral("Show the transmission angles.")};
+  const QCommandLineOption checks{QStringLiteral("checks"),
+                                  QStringLiteral("Show the design-checks dock.")};
+
+  void addTo(QCommandLineParser& cli) const {
+    cli.addOptions({screenshot, bench, drag, ctrl, angle, ics, plots, size, dark, extremes,
+                    transmission, checks});
+  }
+};
+
+// --screenshot, --benchmark-frames, --benchmark-drag: the window offscreen, no event loop.
+int runOffscreen(const QCommandLineParser& cli, const Options& opt, const QString& model) {
+  linkage::ui::HeadlessOptions o;
+  o.model = model;
+  o.screenshot = cli.value(opt.screenshot);
+  o.ics = cli.isSet(opt.ics);
+  o.plots = cli.isSet(opt.plots);
+  o.dark = cli.isSet(opt.dark);
+  o.reshape = cli.isSet(opt.ctrl);
+  o.extremes = cli.isSet(opt.extremes);
+  o.transmission = cli.isSet(opt.transmission);
+  o.checks = cli.isSet(opt.checks);
+  QString why;
+  if (!linkage::ui::parseHeadless(cli.value(opt.bench), cli.value(opt.angle), cli.value(opt.size),
+                                  o, &why, cli.value(opt.drag))) {
+    std::fprintf(stderr, "linkage: %s\n", qPrintable(why));
+    return 2;
+  }
+  return linkage::ui::runHeadless(o);
 }
 
 }  // namespace
@@ -29,10 +100,13 @@ bool wantsHeadless(int argc, char** argv) {
 int main(int argc, char** argv) {
   const bool headless = wantsHeadless(argc, argv);
   // No display needed for pictures and measurements (unless one is asked for explicitly).
-  if (headless && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+  if ((headless || onlyPrints(argc, argv)) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
     qputenv("QT_QPA_PLATFORM", "offscreen");
   QApplication app(argc, argv);
   QApplication::setApplicationName(QStringLiteral("linkage"));
+  QApplication::setApplicationVersion(QStringLiteral(LINKAGE_VERSION));
+  // The installed desktop entry (share/applications), so that the desktop shows its name and icon.
+  QGuiApplication::setDesktopFileName(QStringLiteral("io.github.linkage.Linkage"));
   // Headless runs start from the default layout and leave the user's settings alone.
   QApplication::setOrganizationName(headless ? QStringLiteral("linkage-headless")
                                              : QStringLiteral("linkage"));
@@ -41,43 +115,13 @@ int main(int argc, char** argv) {
   cli.setApplicationDescription(
       QStringLiteral("Planar linkage editor: draw, animate, instant centres, plots."));
   cli.addHelpOption();
+  cli.addVersionOption();
   cli.addPositionalArgument(QStringLiteral("model"),
                             QStringLiteral("A .linkage.json file or an example's name "
                                            "(e.g. wanzer-inversion-2)."),
                             QStringLiteral("[FILE | EXAMPLE-NAME]"));
-  const QCommandLineOption screenshot(QStringLiteral("screenshot"),
-                                      QStringLiteral("Render the window to a PNG and exit."),
-                                      QStringLiteral("OUT.png"));
-  const QCommandLineOption bench(QStringLiteral("benchmark-frames"),
-                                 QStringLiteral("Animate N frames as fast as possible in the "
-                                                "offscreen window and print frame times."),
-                                 QStringLiteral("N"));
-  const QCommandLineOption drag(QStringLiteral("benchmark-drag"),
-                                QStringLiteral("Drag the first output point with N mouse moves "
-                                               "in the offscreen window; print the time from "
-                                               "each move to the redrawn frame."),
-                                QStringLiteral("N"));
-  const QCommandLineOption ctrl(QStringLiteral("ctrl"),
-                                QStringLiteral("With --benchmark-drag: hold Ctrl (the design "
-                                               "changes while dragging)."));
-  const QCommandLineOption angle(QStringLiteral("angle"),
-                                 QStringLiteral("Crank angle for the screenshot (degrees)."),
-                                 QStringLiteral("DEG"));
-  const QCommandLineOption ics(QStringLiteral("ics"),
-                               QStringLiteral("Show the instant centres (overlay and panel)."));
-  const QCommandLineOption plots(QStringLiteral("plots"), QStringLiteral("Show the plots dock."));
-  const QCommandLineOption size(QStringLiteral("size"),
-                                QStringLiteral("Window size (default 1280x800)."),
-                                QStringLiteral("WxH"));
-  const QCommandLineOption dark(QStringLiteral("dark"), QStringLiteral("Use the dark palette."));
-  const QCommandLineOption extremes(QStringLiteral("extremes"),
-                                    QStringLiteral("Draw the extreme positions of the output."));
-  const QCommandLineOption transmission(QStringLiteral("transmission"),
-                                        QStringLiteral("Show the transmission angles."));
-  const QCommandLineOption checks(QStringLiteral("checks"),
-                                  QStringLiteral("Show the design-checks dock."));
-  cli.addOptions({screenshot, bench, drag, ctrl, angle, ics, plots, size, dark, extremes,
-                  transmission, checks});
+  const Options opt;
+  opt.addTo(cli);
   cli.process(app);
 
   const QStringList args = cli.positionalArguments();
@@ -85,25 +129,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "linkage: give one model, not %lld\n", (long long)args.size());
     return 2;
   }
-  if (headless) {
-    linkage::ui::HeadlessOptions o;
-    o.model = args.value(0);
-    o.screenshot = cli.value(screenshot);
-    o.ics = cli.isSet(ics);
-    o.plots = cli.isSet(plots);
-    o.dark = cli.isSet(dark);
-    o.reshape = cli.isSet(ctrl);
-    o.extremes = cli.isSet(extremes);
-    o.transmission = cli.isSet(transmission);
-    o.checks = cli.isSet(checks);
-    QString why;
-    if (!linkage::ui::parseHeadless(cli.value(bench), cli.value(angle), cli.value(size), o, &why,
-                                    cli.value(drag))) {
-      std::fprintf(stderr, "linkage: %s\n", qPrintable(why));
-      return 2;
-    }
-    return linkage::ui::runHeadless(o);
-  }
+  if (headless) return runOffscreen(cli, opt, args.value(0));
 
   auto* w = new linkage::ui::MainWindow;
   if (!args.isEmpty()) {

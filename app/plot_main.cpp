@@ -16,6 +16,7 @@
 #include <QApplication>
 
 #include "export/figure_export.h"
+#include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
 #include "plots/curve_set.h"
 #include "plots/motion_figure.h"
@@ -267,6 +268,6 @@ int plot(int argc, char** argv) {
 }  // namespace linkage::cli
 
 int main(int argc, char** argv) {
-  linkage::cli::executablePath = argc > 0 ? argv[0] : "";
+  linkage::cli::executablePath = linkage::runningExecutable(argc > 0 ? argv[0] : "");
   return linkage::cli::plot(argc - 1, argv + 1);
 }

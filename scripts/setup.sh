@@ -24,9 +24,10 @@ packages=(cmake ninja-build g++ pkg-config libeigen3-dev nlohmann-json3-dev coin
   qt6-base-dev qt6-svg-dev libqcustomplot-dev libgif-dev fonts-dejavu-core)
 # The tests: GoogleTest and GoogleMock (separate packages on Debian 12), Google Benchmark, a real X
 # server and a way to drive it (Xvfb, xdotool, ImageMagick's import), a comma-decimal locale,
-# pdftotext (poppler-utils) to read the labels of exported PDF figures.
+# pdftotext (poppler-utils) to read the labels of exported PDF figures, the freedesktop validators
+# of the desktop entry and the AppStream metadata (desktop-file-utils, appstream).
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev locales xvfb xauth xdotool imagemagick
-  poppler-utils)
+  poppler-utils desktop-file-utils appstream)
 if [ $tests -eq 1 ]; then packages+=("${test_packages[@]}"); fi
 
 missing=()

@@ -53,6 +53,44 @@ TEST_F(Cli, HelpForEveryCommand) {
   EXPECT_EQ(run("frobnicate").exit, 2);
 }
 
+TEST_F(Cli, VersionIsTheProjects) {
+  CliRun r = run("--version");
+  EXPECT_EQ(r.exit, 0) << r.err;
+  EXPECT_EQ(r.out, "linkage-cli " LINKAGE_VERSION "\n");
+  EXPECT_EQ(r.err, "");
+  EXPECT_NE(run("--help").out.find("--version"), std::string::npos);
+}
+
+TEST_F(Cli, InstalledProgramFindsTheExamplesInstalledWithIt) {
+  // An installed layout, <prefix>/bin/linkage-cli and <prefix>/share/linkage/examples, with an
+  // example the source tree does not have; the program started through PATH from another
+  // directory (argv[0] a bare name), as a user starts it.
+  const fs::path prefix = dir_ / "prefix", examples = prefix / "share" / "linkage" / "examples";
+  fs::create_directories(prefix / "bin");
+  fs::create_directories(examples);
+  fs::copy_file(LINKAGE_CLI, prefix / "bin" / "linkage-cli");
+  fs::copy_file(fs::path(LINKAGE_EXAMPLES_DIR) / "four-bar-crank-rocker.linkage.json",
+                examples / "only-installed.linkage.json");
+  fs::create_directories(dir_ / "elsewhere");
+  auto runInstalled = [&](const std::string& args) {
+    const std::string cmd = "cd '" + (dir_ / "elsewhere").string() + "' && PATH='" +
+                            (prefix / "bin").string() + "':/usr/bin:/bin linkage-cli " + args +
+                            " 2>&1";
+    FILE* p = ::popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[256];
+    while (p && std::fgets(buf, sizeof buf, p)) out += buf;
+    const int status = p ? ::pclose(p) : -1;
+    return std::make_pair(WIFEXITED(status) ? WEXITSTATUS(status) : -1, out);
+  };
+  const auto [listed, names] = runInstalled("examples");
+  EXPECT_EQ(listed, 0);
+  EXPECT_EQ(names, "only-installed\n");
+  const auto [opened, info] = runInstalled("info only-installed");
+  EXPECT_EQ(opened, 0) << info;
+  EXPECT_NE(info.find("degrees of freedom: 1"), std::string::npos) << info;
+}
+
 TEST_F(Cli, ExamplesAreListedAndOpenByName) {
   CliRun r = run("examples");
   EXPECT_EQ(r.exit, 0);

@@ -17,16 +17,23 @@ bool isFile(const fs::path& p) {
 }
 }  // namespace
 
+std::string runningExecutable(const std::string& argv0) {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? argv0 : self.string();
+}
+
 std::vector<std::string> exampleDirectories(const std::string& executablePath) {
   std::vector<std::string> dirs;
   if (const char* env = std::getenv("LINKAGE_EXAMPLES_DIR"); env && *env) dirs.push_back(env);
+  // Installed (<prefix>/bin/linkage-cli): the examples installed with it, before the source tree
+  // it was built from, which may have moved on or be gone. A bare name (no directory) says
+  // nothing of where the program is: never search the working directory's ../share for it.
+  if (const fs::path bin = fs::path(executablePath).parent_path(); !bin.empty())
+    dirs.push_back((bin / ".." / "share" / "linkage" / "examples").lexically_normal().string());
 #ifdef LINKAGE_EXAMPLES_DIR
   dirs.push_back(LINKAGE_EXAMPLES_DIR);
 #endif
-  if (!executablePath.empty())
-    dirs.push_back(
-        (fs::path(executablePath).parent_path() / ".." / "share" / "linkage" / "examples")
-            .string());
   return dirs;
 }
 

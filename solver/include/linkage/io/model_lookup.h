@@ -7,8 +7,13 @@
 
 namespace linkage {
 
-// Directories searched for examples, in order: $LINKAGE_EXAMPLES_DIR, the source tree's
-// resources/examples (compiled in), and ../share/linkage/examples next to the executable.
+// The running program's path (/proc/self/exe), else argv0: a program started through PATH has
+// no directory in its argv[0].
+std::string runningExecutable(const std::string& argv0);
+
+// Directories searched for examples, in order: $LINKAGE_EXAMPLES_DIR, ../share/linkage/examples
+// next to the executable (an installed program: <prefix>/bin and <prefix>/share/linkage/examples),
+// and the source tree's resources/examples (compiled in, for programs run from the build tree).
 std::vector<std::string> exampleDirectories(const std::string& executablePath = "");
 
 // An existing file as given, else <dir>/<name>.linkage.json (or <dir>/<name>) in the example
