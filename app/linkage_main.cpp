@@ -13,6 +13,7 @@
 
 #include "window/headless.h"
 #include "window/main_window.h"
+#include "window/probe.h"
 
 namespace {
 
@@ -105,6 +106,7 @@ int main(int argc, char** argv) {
     return linkage::ui::runHeadless(o);
   }
 
+  linkage::ui::startProbeFromEnvironment();
   auto* w = new linkage::ui::MainWindow;
   if (!args.isEmpty()) {
     QString why;

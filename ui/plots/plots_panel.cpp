@@ -65,6 +65,8 @@ void PlotsPanel::buildWidgets() {
   values_ = new QLabel;
   values_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   values_->setWordWrap(true);
+  // However long a value, it does not widen the dock (nor the window).
+  values_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   extremes_ = new QTreeWidget;
   extremes_->setRootIsDecorated(false);
   extremes_->setMinimumHeight(48);

@@ -22,6 +22,9 @@ namespace linkage::ui {
 
 namespace {
 constexpr double kDeg = M_PI / 180;
+// Ten turns either way: enough for any start (a belt's slower shaft included); beyond it the
+// crank would be tracked for ages to reach angle 0.
+constexpr double kMaxStartDeg = 3600;
 }  // namespace
 
 void PropertiesPanel::fillMechanism() {
@@ -76,18 +79,38 @@ void PropertiesPanel::fillDriver() {
         },
         &why);
   });
+  // The file's start_deg, as the editor shows it: crank angle 0 is the drawing turned on by it
+  // in the driving direction. A new start angle turns the crank to 0 at once, so that the crank
+  // is seen to start there (the drawing itself stays as it is).
   addNumber(
       tr("Start angle"), [this] { return doc_->design().driver->startDeg; },
       [this](double v, QString* why) {
-        return change(
-            tr("Driver start angle"),
-            [&](Mechanism& m, QString*) {
-              m.driver->startDeg = v;
-              return true;
-            },
-            why);
+        if (!(std::abs(v) <= kMaxStartDeg)) {
+          *why = tr("the start angle must be between -%1 and %1 degrees").arg(kMaxStartDeg);
+          return false;
+        }
+        if (!change(
+                tr("Driver start angle"),
+                [&](Mechanism& m, QString*) {
+                  m.driver->startDeg = v;
+                  return true;
+                },
+                why))
+          return false;
+        if (doc_->solved()) doc_->setCrankDeg(0);
+        return true;
       },
       QStringLiteral("\u00b0"));
+  field(tr("Start angle [\u00b0]"))
+      ->setToolTip(tr("Crank angle 0 (Home, where the plots and tables start) is the drawing "
+                      "turned on by this angle in the driving direction"));
+  addInfo(tr("Crank 0 is"), [this] {
+    const Driver& d = *doc_->design().driver;
+    if (d.startDeg == 0) return tr("the drawing as it is");
+    return tr("the drawing turned %1\u00b0 %2")
+        .arg(exactText(d.startDeg))
+        .arg(d.direction == Direction::Cw ? tr("clockwise") : tr("counter-clockwise"));
+  });
 }
 
 void PropertiesPanel::fillBody(BodyId id) {

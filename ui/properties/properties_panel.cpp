@@ -63,6 +63,12 @@ QWidget* PropertiesPanel::field(const QString& label) const {
   return nullptr;
 }
 
+QString PropertiesPanel::labelOf(const QWidget* editor) const {
+  for (const Row& r : rows_)
+    if (r.editor == editor) return r.label;
+  return QString();
+}
+
 QString PropertiesPanel::title() const {
   return title_->text();
 }

@@ -32,6 +32,8 @@ class PropertiesPanel : public QWidget {
   void setDocument(Document* doc, Selection* selection);
   // The field with this label (for tests and scripts), or nullptr.
   QWidget* field(const QString& label) const;
+  // The label of a field (the inverse of field()), or empty.
+  QString labelOf(const QWidget* editor) const;
   QString title() const;
 
   // What the element kinds' forms (ui/elements/) build their rows with.

@@ -204,9 +204,11 @@ void SelectTool::endDrag(bool keep) {
   Document* doc = ctx().doc;
   if (mode_ == Mode::Reshape && before_) {
     if (keep) {
-      Mechanism m = doc->design();
-      commitEdit(doc, tr("Move %1").arg(QString::fromStdString(m.pointLabel(dragPoint_))),
-                 std::move(m), *before_);
+      // The label first: the design is moved into the call (in an order of evaluation the
+      // compiler chooses, which named a point of a moved-from design "?").
+      const QString text =
+          tr("Move %1").arg(QString::fromStdString(doc->design().pointLabel(dragPoint_)));
+      commitEdit(doc, text, doc->design(), *before_);
     } else {
       doc->restore(*before_);
     }

@@ -23,6 +23,7 @@
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
 #include "document/document.h"
+#include "document/shown_numbers.h"
 #include "elements/element_ui.h"
 #include "plots/plots_panel.h"
 #include "properties/inspector_panel.h"
@@ -31,6 +32,7 @@
 #include "tools/tool_overlay.h"
 #include "tools/toolbox.h"
 #include "window/icons.h"
+#include "window/message_strip.h"
 
 namespace linkage::ui {
 
@@ -54,6 +56,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   view_ = new CanvasView(scene_, this);
   animator_ = new Animator(this);
   setCentralWidget(view_);
+  strip_ = new MessageStrip(view_);
   createActions();
   createTools();
   createDocks();
@@ -234,43 +237,34 @@ void MainWindow::createTools() {
 }
 
 void MainWindow::createStatusBar() {
-  hint_ = new QLabel;
-  hint_->setText(toolbox_->hint());
-  connect(toolbox_, &Toolbox::hintChanged, hint_, &QLabel::setText);
-  statusBar()->addWidget(hint_);
-  problem_ = new QLabel;
-  problem_->setTextFormat(Qt::PlainText);
-  QPalette warn = problem_->palette();
-  warn.setColor(QPalette::WindowText, QColor(200, 30, 20));
-  problem_->setPalette(warn);
-  problem_->hide();
-  statusBar()->addWidget(problem_);
-  message_ = new QLabel;
-  message_->setTextFormat(Qt::PlainText);
-  message_->setMinimumWidth(100);
+  // The hint, the design's problem and the messages wrap under the canvas (MessageStrip); the
+  // status bar keeps the short readouts and the actions' status tips.
+  strip_->setHint(toolbox_->hint());
+  connect(toolbox_, &Toolbox::hintChanged, strip_, &MessageStrip::setHint);
   cursor_ = new QLabel;
   crank_ = new QLabel;
   dof_ = new QLabel;
   for (QLabel* l : {cursor_, crank_, dof_}) l->setMinimumWidth(90);
   cursor_->setMinimumWidth(170);
-  statusBar()->addWidget(message_, 1);
   statusBar()->addPermanentWidget(cursor_);
   statusBar()->addPermanentWidget(crank_);
   statusBar()->addPermanentWidget(dof_);
+  // A message goes when it stops being true: at the next edit, selection, or turn of the crank
+  // by the user (not at every frame of the animation, whose own messages stay while it plays).
+  connect(doc_, &Document::designChanged, strip_, &MessageStrip::clearMessage);
+  connect(selection_, &Selection::changed, strip_, &MessageStrip::clearMessage);
+  connect(doc_, &Document::poseChanged, this, [this] {
+    if (!animator_->playing()) strip_->clearMessage();
+  });
 }
 
 void MainWindow::showMessage(const QString& text, bool warning) {
-  message_->setText(text);
-  message_->setToolTip(text);
-  QPalette p = message_->palette();
-  p.setColor(QPalette::WindowText,
-             warning ? QColor(200, 30, 20) : palette().color(QPalette::WindowText));
-  message_->setPalette(p);
+  strip_->setMessage(text, warning);
 }
 
 void MainWindow::updateStatus() {
   const Kinematics& k = doc_->kinematics();
-  crank_->setText(k.valid() ? tr("crank %1\u00b0").arg(doc_->crankDeg(), 0, 'f', 2)
+  crank_->setText(k.valid() ? tr("crank %1\u00b0").arg(angleText(doc_->crankDeg(), 2))
                             : tr("crank \u2013"));
   if (k.valid()) {
     const StructureReport r = k.structure();
@@ -301,9 +295,7 @@ void MainWindow::showDesignStatus() {
         break;
       }
   }
-  problem_->setText(text);
-  problem_->setToolTip(text);
-  problem_->setVisible(!text.isEmpty());
+  strip_->setProblem(text);
 }
 
 void MainWindow::updateTitle() {

@@ -26,6 +26,7 @@ class DesignChoices;
 class DesignOverlays;
 class Document;
 class InspectorPanel;
+class MessageStrip;
 class PropertiesPanel;
 class PlotsPanel;
 class Selection;
@@ -54,6 +55,8 @@ class MainWindow : public QMainWindow {
   DesignChoices* designChoices() const { return choices_; }
   DesignOverlays* designOverlays() const { return designOverlays_; }
   ChecksPanel* checksPanel() const { return checks_; }
+  // Under the canvas: the tool's hint, what is wrong with the design, the last message.
+  MessageStrip* messageStrip() const { return strip_; }
   // The parameter-study dialog, made on first use (Analysis > Parameter Study).
   StudyDialog* studyDialog();
   QDockWidget* dock(const QString& objectName) const;
@@ -132,14 +135,12 @@ class MainWindow : public QMainWindow {
   Selection* selection_ = nullptr;
   ToolOverlay* overlay_ = nullptr;
   Toolbox* toolbox_ = nullptr;
-  QLabel* hint_ = nullptr;
   bool propertiesSeen_ = false;
   std::unique_ptr<CanvasScene> frameScene_;
   std::unique_ptr<CanvasView> frameView_;
   QMenu* recentMenu_ = nullptr;
   QMenu* examplesMenu_ = nullptr;
-  QLabel* message_ = nullptr;
-  QLabel* problem_ = nullptr;  // what is wrong with the design, while it is
+  MessageStrip* strip_ = nullptr;
   QLabel* cursor_ = nullptr;
   QLabel* crank_ = nullptr;
   QLabel* dof_ = nullptr;

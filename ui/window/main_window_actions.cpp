@@ -105,7 +105,11 @@ void MainWindow::createActions() {
   QAction* play =
       makeAction("play", tr("&Play"), QKeySequence(tr("Space")), tr("Play or pause the animation"));
   play->setCheckable(true);
-  connect(play, &QAction::triggered, this, [this](bool on) { animator_->setPlaying(on); });
+  connect(play, &QAction::triggered, this, [this, play](bool on) {
+    animator_->setPlaying(on);
+    // A refused start leaves the button unchecked (checked, the next press would pause).
+    play->setChecked(animator_->playing());
+  });
   connect(makeAction("stepForward", tr("Step &Forward"), QKeySequence(tr("Right")),
                      tr("Turn the crank one increment forward")),
           &QAction::triggered, this, [this] { animator_->step(+1); });
