@@ -8,9 +8,12 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
+#include <QTimer>
 #include <cstdio>
 #include <cstring>
 
+#include "document/autosave.h"
+#include "document/document.h"
 #include "window/headless.h"
 #include "window/main_window.h"
 #include "window/probe.h"
@@ -117,5 +120,18 @@ int main(int argc, char** argv) {
     }
   }
   w->show();
+  // Work an editor left unsaved when it stopped (a crash, kill -9): offered once the window is
+  // up, into this window while it is empty, else into a new one each.
+  QTimer::singleShot(0, w, [w] {
+    linkage::ui::offerRecovery(w, [w](const linkage::ui::Recovery& r) {
+      linkage::ui::MainWindow* into = w;
+      if (w->document()->isModified() || !w->document()->filePath().isEmpty() ||
+          w->document()->design().bodies.size() > 1) {
+        into = new linkage::ui::MainWindow;
+        into->show();
+      }
+      into->openRecovered(r);
+    });
+  });
   return app.exec();
 }

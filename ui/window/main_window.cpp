@@ -22,6 +22,7 @@
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
+#include "document/autosave.h"
 #include "document/document.h"
 #include "document/shown_numbers.h"
 #include "elements/element_ui.h"
@@ -52,6 +53,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setAcceptDrops(true);
   openWindows().append(this);
   doc_ = new Document(this);
+  autosave_ = new Autosaver(doc_, this);
   scene_ = new CanvasScene(this);
   view_ = new CanvasView(scene_, this);
   animator_ = new Animator(this);
@@ -340,6 +342,8 @@ void MainWindow::applyIcons() {
 
 void MainWindow::changeEvent(QEvent* e) {
   if (e->type() == QEvent::PaletteChange) applyIcons();
+  // The user turns to something else: a copy of the unsaved work now.
+  if (e->type() == QEvent::ActivationChange && !isActiveWindow()) autosave_->saveNow();
   QMainWindow::changeEvent(e);
 }
 

@@ -17,6 +17,8 @@ class QUndoView;
 namespace linkage::ui {
 
 class Animator;
+class Autosaver;
+struct Recovery;
 class CanvasScene;
 class CanvasView;
 class CentresPanel;
@@ -55,6 +57,10 @@ class MainWindow : public QMainWindow {
   DesignChoices* designChoices() const { return choices_; }
   DesignOverlays* designOverlays() const { return designOverlays_; }
   ChecksPanel* checksPanel() const { return checks_; }
+  Autosaver* autosaver() const { return autosave_; }
+  // Opens a recovered copy of unsaved work (document/autosave.h): as an unsaved edit of its
+  // file, one undo step back to what the file holds.
+  void openRecovered(const Recovery& r);
   // Under the canvas: the tool's hint, what is wrong with the design, the last message.
   MessageStrip* messageStrip() const { return strip_; }
   // The parameter-study dialog, made on first use (Analysis > Parameter Study).
@@ -141,6 +147,7 @@ class MainWindow : public QMainWindow {
   QMenu* recentMenu_ = nullptr;
   QMenu* examplesMenu_ = nullptr;
   MessageStrip* strip_ = nullptr;
+  Autosaver* autosave_ = nullptr;
   QLabel* cursor_ = nullptr;
   QLabel* crank_ = nullptr;
   QLabel* dof_ = nullptr;

@@ -9,6 +9,8 @@
 #include <QSettings>
 
 #include "canvas/canvas_view.h"
+#include "document/autosave.h"
+#include "document/commands.h"
 #include "document/document.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
@@ -56,6 +58,23 @@ bool MainWindow::openExample(const QString& name, QString* error) {
 bool MainWindow::openNameOrPath(const QString& arg, QString* error) {
   if (QFileInfo::exists(arg)) return openFile(arg, error);
   return openExample(arg, error);
+}
+
+void MainWindow::openRecovered(const Recovery& r) {
+  // The file as it is (or nothing, when there is none), then the recovered design as one edit:
+  // unsaved, and undone back to the file.
+  LoadResult file = r.path.isEmpty() ? LoadResult{} : loadMechanismFile(r.path.toStdString());
+  if (file.mechanism) {
+    doc_->setContents(std::move(*file.mechanism), r.path);
+  } else {
+    Mechanism none;
+    none.name = r.design.name;
+    none.addBody("ground", true);
+    doc_->setContents(std::move(none), QString(), r.title);
+  }
+  editDesign(doc_, tr("Recover unsaved work"), r.design);
+  view_->fitToMechanism();
+  autosave_->saveNow();
 }
 
 bool MainWindow::maybeSave() {

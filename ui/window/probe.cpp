@@ -2,6 +2,7 @@
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QCryptographicHash>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -16,6 +17,7 @@
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
 #include "document/document.h"
+#include "linkage/io/model_file.h"
 #include "plots/plots_panel.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
@@ -52,6 +54,12 @@ void windowText(MainWindow* w, QStringList& out) {
     }
   out << QStringLiteral("crank: %1").arg(w->document()->crankDeg());
   out << QStringLiteral("solved: %1").arg(w->document()->solved() ? 1 : 0);
+  out << QStringLiteral("modified: %1").arg(w->document()->isModified() ? 1 : 0);
+  // The design as Save would write it, by its SHA-1: what a script compares files with.
+  const QByteArray design = QByteArray::fromStdString(serializeMechanism(w->document()->design()));
+  out << QStringLiteral("design: ") +
+             QString::fromLatin1(
+                 QCryptographicHash::hash(design, QCryptographicHash::Sha1).toHex());
   out << QStringLiteral("playing: %1").arg(w->animator()->playing() ? 1 : 0);
   QWidget* f = QApplication::focusWidget();
   out << QStringLiteral("focus: ") + (f ? QString::fromLatin1(f->metaObject()->className()) : "");
