@@ -28,6 +28,20 @@ bool wantsHeadless(int argc, char** argv) {
   return false;
 }
 
+// Work an editor left unsaved when it stopped (a crash, kill -9): offered once the window is up,
+// into this window while it is empty, else into a new one each.
+void offerRecoveries(linkage::ui::MainWindow* w) {
+  linkage::ui::offerRecovery(w, [w](const linkage::ui::Recovery& r) {
+    linkage::ui::MainWindow* into = w;
+    if (w->document()->isModified() || !w->document()->filePath().isEmpty() ||
+        w->document()->design().bodies.size() > 1) {
+      into = new linkage::ui::MainWindow;
+      into->show();
+    }
+    into->openRecovered(r);
+  });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -120,18 +134,6 @@ int main(int argc, char** argv) {
     }
   }
   w->show();
-  // Work an editor left unsaved when it stopped (a crash, kill -9): offered once the window is
-  // up, into this window while it is empty, else into a new one each.
-  QTimer::singleShot(0, w, [w] {
-    linkage::ui::offerRecovery(w, [w](const linkage::ui::Recovery& r) {
-      linkage::ui::MainWindow* into = w;
-      if (w->document()->isModified() || !w->document()->filePath().isEmpty() ||
-          w->document()->design().bodies.size() > 1) {
-        into = new linkage::ui::MainWindow;
-        into->show();
-      }
-      into->openRecovered(r);
-    });
-  });
+  QTimer::singleShot(0, w, [w] { offerRecoveries(w); });
   return app.exec();
 }

@@ -79,6 +79,9 @@ class MainWindow : public QMainWindow {
   bool openExample(const QString& name, QString* error = nullptr);
   // A path or an example's name, as `linkage [FILE | EXAMPLE-NAME]` takes it.
   bool openNameOrPath(const QString& arg, QString* error = nullptr);
+  // Where the file dialogs open: beside the current file, else where a file was last opened
+  // or saved (QSettings "lastFolder"), else the home folder.
+  QString fileFolder() const;
   // Asks what to do with unsaved changes; true when it is all right to go on.
   bool maybeSave();
   // One frame of the animation as File > Export > Animation writes it: the mechanism at a crank

@@ -35,7 +35,7 @@ void MainWindow::createActions() {
           &QAction::triggered, this, [this] {
             if (!maybeSave()) return;
             const QString path = QFileDialog::getOpenFileName(
-                this, tr("Open Mechanism"), QString(),
+                this, tr("Open Mechanism"), fileFolder(),
                 tr("Mechanisms (*.linkage.json);;JSON files (*.json);;All files (*)"));
             if (!path.isEmpty()) openFile(path);
           });

@@ -21,6 +21,7 @@ namespace linkage::ui {
 namespace {
 constexpr int kMaxRecent = 10;
 const char* kRecentKey = "recentFiles";
+const char* kLastFolderKey = "lastFolder";
 }  // namespace
 
 bool MainWindow::openFile(const QString& path, QString* error) {
@@ -100,8 +101,8 @@ bool MainWindow::save() {
 bool MainWindow::saveAs() {
   QString start = doc_->filePath();
   if (start.isEmpty())
-    start = QDir::home().filePath(doc_->displayName().replace(' ', '-') +
-                                  QStringLiteral(".linkage.json"));
+    start = QDir(fileFolder())
+                .filePath(doc_->displayName().replace(' ', '-') + QStringLiteral(".linkage.json"));
   QFileDialog dialog(this, tr("Save Mechanism As"), start,
                      tr("Mechanisms (*.linkage.json);;All files (*)"));
   dialog.setAcceptMode(QFileDialog::AcceptSave);
@@ -117,8 +118,15 @@ bool MainWindow::saveAs() {
   return true;
 }
 
+QString MainWindow::fileFolder() const {
+  if (!doc_->filePath().isEmpty()) return QFileInfo(doc_->filePath()).absolutePath();
+  const QString last = QSettings().value(kLastFolderKey).toString();
+  return !last.isEmpty() && QFileInfo(last).isDir() ? last : QDir::homePath();
+}
+
 void MainWindow::addRecent(const QString& path) {
   QSettings s;
+  s.setValue(kLastFolderKey, QFileInfo(path).absolutePath());
   QStringList files = s.value(kRecentKey).toStringList();
   files.removeAll(path);
   files.prepend(path);
