@@ -4,6 +4,8 @@
 
 #include "ui_test.h"
 
+#include <QComboBox>
+#include <QDockWidget>
 #include <QFile>
 #include <QFileDialog>
 #include <QLabel>
@@ -15,7 +17,10 @@
 #include "dialogs.h"
 #include "document/document.h"
 #include "drawing.h"
+#include "linkage/edits.h"
 #include "linkage/io/model_lookup.h"
+#include "plots/curve_set.h"
+#include "plots/plots_panel.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
 #include "tools/toolbox.h"
@@ -109,6 +114,98 @@ TEST(Drafting, FileDialogsOpenBesideTheFile) {
   // An example (untitled): where the last file was.
   ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
   EXPECT_EQ(w.fileFolder(), QFileInfo(path).absolutePath());
+}
+
+void type(QLineEdit* field, const QString& text) {
+  field->setFocus();
+  field->selectAll();
+  QTest::keyClicks(field, text);
+  QTest::keyClick(field, Qt::Key_Return);
+}
+
+// The homework's triangle: sides typed, the mechanism re-solved at once.
+TEST(Drafting, APlateIsGivenByItsSideLengths) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  const Mechanism& m = w.document()->design();
+  const BodyId coupler = m.bodyNamed("coupler")->id;
+  w.selection()->add(coupler);
+  for (const char* side : {"Side AB [mm]", "Side BP [mm]", "Side AP [mm]"})
+    ASSERT_NE(fieldOf(w, side), nullptr) << side;
+  type(fieldOf(w, "Side BP [mm]"), "50");
+  type(fieldOf(w, "Side AP [mm]"), "40");
+  EXPECT_EQ(w.document()->undoStack()->count(), 2);
+  ASSERT_TRUE(w.document()->solved()) << w.document()->solveStatus().message;
+  const std::vector<double> sides = sideLengths(w.document()->design(), coupler);
+  EXPECT_NEAR(sides[1], 50, 1e-12);
+  EXPECT_NEAR(sides[2], 40, 1e-12);
+  // Solved: the moving plate has those sides where it is now.
+  const Kinematics& k = w.document()->kinematics();
+  auto at = [&](const char* p) { return k.position(*w.document()->design().findPoint(p)); };
+  EXPECT_NEAR((at("coupler.P") - at("coupler.A")).norm(), 40, 1e-9);
+  EXPECT_NEAR((at("coupler.P") - at("coupler.B")).norm(), 50, 1e-9);
+  EXPECT_EQ(fieldOf(w, "Side AP [mm]")->text(), "40");
+  // No triangle: refused, red, the value as it was.
+  type(fieldOf(w, "Side AP [mm]"), "500");
+  EXPECT_EQ(fieldOf(w, "Side AP [mm]")->text(), "40");
+  EXPECT_EQ(w.document()->undoStack()->count(), 2);
+}
+
+TEST(Drafting, APointIsPlacedByItsDistanceAndAngleFromAnother) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  const PointId p = *w.document()->design().findPoint("coupler.P");
+  const Vec2 a = w.document()->design().point(*w.document()->design().findPoint("coupler.A"))->pos;
+  w.selection()->add(p);
+  auto* from = qobject_cast<QComboBox*>(w.properties()->field("From"));
+  ASSERT_NE(from, nullptr);
+  EXPECT_EQ(from->currentText(), "A");
+  type(fieldOf(w, "Angle [\u00b0]"), "90");
+  type(fieldOf(w, "Distance [mm]"), "30");
+  EXPECT_EQ(w.document()->design().point(p)->pos, Vec2(a.x(), a.y() + 30));
+  EXPECT_TRUE(w.document()->solved());
+}
+
+TEST(Drafting, ASliderBlockIsSelectedByAClickAgainAndRenamed) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "slider-crank-22a-lambda-0.3"));
+  const BodyId block = w.document()->design().bodyNamed("needlebar")->id;
+  const Vec2 at =
+      w.document()->kinematics().position(*w.document()->design().findPoint("needlebar.B"));
+  test::Draw d{w};
+  d.click(at.x(), at.y());
+  EXPECT_EQ(w.selection()->joints.size(), 1u);  // first the pin
+  d.click(at.x(), at.y());
+  EXPECT_EQ(w.selection()->points.size(), 1u);  // then the point
+  d.click(at.x(), at.y());
+  ASSERT_EQ(w.selection()->bodies.size(), 1u);  // then the block
+  EXPECT_EQ(w.selection()->bodies[0], block);
+  EXPECT_TRUE(w.properties()->title().contains("needlebar"));
+  type(fieldOf(w, "Name"), "slider");
+  EXPECT_EQ(w.document()->design().body(block)->name, "slider");
+}
+
+TEST(Drafting, AnotherWindowIsComparedAtThePointChosen) {
+  MainWindow a;
+  ASSERT_TRUE(test::showExample(a, "four-bar-crank-rocker"));
+  auto* b = new MainWindow;
+  b->setAttribute(Qt::WA_DeleteOnClose, false);
+  ASSERT_TRUE(b->openExample("wanzer-inversion-2"));
+  a.dock("plots")->show();
+  a.plots()->setCompare(PlotsPanel::Compare::Overlay);
+  QTest::qWait(80);
+  // No point of the same name there: that mechanism's first output, not "no point".
+  ASSERT_NE(a.plots()->curves(1), nullptr);
+  EXPECT_EQ(a.plots()->curves(1)->request().target, "needlebar.G");
+  EXPECT_TRUE(a.plots()->curves(1)->status().ok()) << a.plots()->curves(1)->status().message;
+  // Another point chosen.
+  auto* against = a.plots()->findChild<QComboBox*>();
+  (void)against;
+  a.plots()->setComparisonTarget("triangle.G");
+  QTest::qWait(80);
+  EXPECT_EQ(a.plots()->curves(1)->request().target, "triangle.G");
+  EXPECT_TRUE(a.plots()->curves(1)->status().ok());
+  delete b;
 }
 
 }  // namespace

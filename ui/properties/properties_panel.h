@@ -1,5 +1,6 @@
-// Exact numbers for the selection: names (editable, unique), a point's coordinates, a bar's
-// length and angle (editing them moves its second point), a slot's ends, a joint's type, the
+// Exact numbers for the selection: names (editable, unique), a point's coordinates (or its
+// distance and angle from another point of its link), a bar's length and angle (editing them
+// moves its second point), a triangle plate's three sides, a slot's ends, a joint's type, the
 // driver's rpm, direction and start angle, whether a point is an output; the mechanism's own
 // name and driver when nothing is selected. Millimetres and degrees, in the drawing's
 // coordinates (the sketch, at crank angle -start), typed values taken exactly (never snapped).
@@ -71,6 +72,9 @@ class PropertiesPanel : public QWidget {
   void fillMechanism();
   void fillBody(BodyId id);
   void fillPoint(PointId id);
+  // A triangle's three sides; a point's distance and angle from another of its link.
+  void fillTriangle(BodyId id);
+  void fillPolar(PointId id);
   void fillJoint(JointId id);
   void fillSlot(SlotId id);
   void fillSlotShape(SlotId id);
