@@ -165,3 +165,41 @@ TEST(Recovery, DiscardRemovesTheCopyAndKeepAsksAgain) {
 
 }  // namespace
 }  // namespace linkage::ui
+
+namespace linkage::ui {
+namespace {
+
+// Another program writes the open file: the window says so and offers to reload it; its own
+// saves are not taken for another program's.
+TEST(Recovery, AFileChangedOnDiskIsOfferedForReload) {
+  QTemporaryDir dir;
+  MainWindow w;
+  const QString path = openFourBar(w, dir);
+  moveCouplerP(w.document(), 36);
+  ASSERT_TRUE(w.save());
+  QTest::qWait(400);  // no question for our own save
+  EXPECT_EQ(QApplication::activeModalWidget(), nullptr);
+  // Another program: coupler.P moved to x = 50.
+  Mechanism other = w.document()->design();
+  other.point(*other.findPoint("coupler.P"))->pos.x() = 50;
+  test::DialogAnswer answer;
+  answer.press(QMessageBox::Yes);
+  ASSERT_TRUE(saveMechanismFile(other, path.toStdString()).ok);
+  for (int i = 0; i < 50 && !answer.seen; ++i) QTest::qWait(50);
+  EXPECT_TRUE(answer.seen);
+  EXPECT_TRUE(answer.text.contains("changed on disk by another program")) << answer.text;
+  const Mechanism& m = w.document()->design();
+  EXPECT_EQ(m.point(*m.findPoint("coupler.P"))->pos.x(), 50);
+  EXPECT_FALSE(w.document()->isModified());
+  // Declined: asked once, the window says the file differs.
+  other.point(*other.findPoint("coupler.P"))->pos.x() = 51;
+  test::DialogAnswer no;
+  no.press(QMessageBox::No);
+  ASSERT_TRUE(saveMechanismFile(other, path.toStdString()).ok);
+  for (int i = 0; i < 50 && !no.seen; ++i) QTest::qWait(50);
+  EXPECT_TRUE(no.seen);
+  EXPECT_EQ(w.document()->design().point(*m.findPoint("coupler.P"))->pos.x(), 50);
+}
+
+}  // namespace
+}  // namespace linkage::ui

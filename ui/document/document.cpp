@@ -74,6 +74,7 @@ bool Document::save(const QString& path, QString* error) {
   title_.clear();
   undo_.setClean();
   emit fileStateChanged();
+  emit saved();
   return true;
 }
 

@@ -92,6 +92,8 @@ class Document : public QObject {
   void poseChanged();
   // The file path or the modified mark changed.
   void fileStateChanged();
+  // The design was written to its file (what is on disk now is this document's).
+  void saved();
 
  private:
   void replace(DocumentState s, const QString& path, const QString& title);

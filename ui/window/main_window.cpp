@@ -132,6 +132,11 @@ void MainWindow::connectDocument() {
   connect(properties_, &PropertiesPanel::message, this, &MainWindow::showMessage);
   history_->setStack(doc_->undoStack());
   connect(doc_, &Document::fileStateChanged, this, &MainWindow::updateTitle);
+  // Another file (New, an example), or this one written: the watch follows.
+  connect(doc_, &Document::fileStateChanged, this, [this] {
+    if (doc_->filePath() != watched_) watchFile();
+  });
+  connect(doc_, &Document::saved, this, &MainWindow::watchFile);
   connect(doc_, &Document::designChanged, this, &MainWindow::updateStatus);
   connect(doc_, &Document::designChanged, this, &MainWindow::showDesignStatus);
   // A new solver (a file, an edit) starts with the default: ask again what is shown.

@@ -10,6 +10,7 @@
 #include <memory>
 
 class QDockWidget;
+class QFileSystemWatcher;
 class QLabel;
 class QMenu;
 class QUndoView;
@@ -82,6 +83,9 @@ class MainWindow : public QMainWindow {
   // Where the file dialogs open: beside the current file, else where a file was last opened
   // or saved (QSettings "lastFolder"), else the home folder.
   QString fileFolder() const;
+  // A file changed on disk by another program: says so and offers to reload it (from the
+  // file system watcher; tests call it directly).
+  void fileChangedOnDisk();
   // Asks what to do with unsaved changes; true when it is all right to go on.
   bool maybeSave();
   // One frame of the animation as File > Export > Animation writes it: the mechanism at a crank
@@ -109,6 +113,8 @@ class MainWindow : public QMainWindow {
   void connectDocument();
   QAction* makeAction(const QString& name, const QString& text, const QKeySequence& key,
                       const QString& tip);
+  // Watches the document's file; what it holds now is taken as ours (opened or saved here).
+  void watchFile();
   void fillRecentMenu();
   void fillExamplesMenu();
   void addRecent(const QString& path);
@@ -151,6 +157,10 @@ class MainWindow : public QMainWindow {
   QMenu* examplesMenu_ = nullptr;
   MessageStrip* strip_ = nullptr;
   Autosaver* autosave_ = nullptr;
+  QFileSystemWatcher* watcher_ = nullptr;
+  QString watched_;
+  QByteArray onDisk_;    // the file's contents as this window last read or wrote them
+  bool asking_ = false;  // the reload question is open
   QLabel* cursor_ = nullptr;
   QLabel* crank_ = nullptr;
   QLabel* dof_ = nullptr;

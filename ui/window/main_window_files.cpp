@@ -4,9 +4,11 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFileSystemWatcher>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
+#include <QTimer>
 
 #include "canvas/canvas_view.h"
 #include "document/autosave.h"
@@ -34,6 +36,7 @@ bool MainWindow::openFile(const QString& path, QString* error) {
     return false;
   }
   addRecent(QFileInfo(path).absoluteFilePath());
+  watchFile();
   view_->fitToMechanism();
   return true;
 }
@@ -73,9 +76,54 @@ void MainWindow::openRecovered(const Recovery& r) {
     none.addBody("ground", true);
     doc_->setContents(std::move(none), QString(), r.title);
   }
+  watchFile();
   editDesign(doc_, tr("Recover unsaved work"), r.design);
   view_->fitToMechanism();
   autosave_->saveNow();
+}
+
+namespace {
+QByteArray contentsOf(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+}  // namespace
+
+void MainWindow::watchFile() {
+  if (!watcher_) {
+    watcher_ = new QFileSystemWatcher(this);
+    // Queued: a program writing the file in steps has finished by the time it is read.
+    connect(watcher_, &QFileSystemWatcher::fileChanged, this,
+            [this] { QTimer::singleShot(200, this, &MainWindow::fileChangedOnDisk); });
+  }
+  if (!watched_.isEmpty()) watcher_->removePath(watched_);
+  watched_ = doc_->filePath();
+  onDisk_ = watched_.isEmpty() ? QByteArray() : contentsOf(watched_);
+  if (!watched_.isEmpty()) watcher_->addPath(watched_);
+}
+
+void MainWindow::fileChangedOnDisk() {
+  if (watched_.isEmpty() || watched_ != doc_->filePath() || asking_) return;
+  // A file replaced by a rename (as editors and this program save) is watched anew.
+  if (!watcher_->files().contains(watched_) && QFileInfo::exists(watched_))
+    watcher_->addPath(watched_);
+  const QByteArray now = contentsOf(watched_);
+  if (now == onDisk_ || !QFileInfo::exists(watched_)) return;
+  asking_ = true;
+  const auto answer = QMessageBox::question(
+      this, tr("File Changed"),
+      tr("\"%1\" was changed on disk by another program.%2 Reload it?")
+          .arg(QFileInfo(watched_).fileName(),
+               doc_->isModified() ? tr(" Reloading it drops the changes made here.") : QString()),
+      QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+  asking_ = false;
+  if (answer == QMessageBox::Yes) {
+    QString why;
+    if (!openFile(watched_, &why)) QMessageBox::critical(this, tr("Cannot Reload"), why);
+  } else {
+    onDisk_ = now;  // asked once for this change
+    showMessage(tr("%1 differs from the file on disk").arg(doc_->displayName()), true);
+  }
 }
 
 bool MainWindow::maybeSave() {
@@ -95,6 +143,7 @@ bool MainWindow::save() {
     QMessageBox::critical(this, tr("Cannot Save"), why);
     return false;
   }
+  watchFile();
   return true;
 }
 
@@ -115,6 +164,7 @@ bool MainWindow::saveAs() {
     return false;
   }
   addRecent(QFileInfo(path).absoluteFilePath());
+  watchFile();
   return true;
 }
 
