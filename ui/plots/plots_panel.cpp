@@ -51,7 +51,7 @@ void PlotsPanel::buildWidgets() {
   auto* split = new QSplitter(Qt::Vertical);
   stack_ = new QStackedWidget;
   plot_ = new QCustomPlot;
-  plot_->setMinimumSize(200, 180);
+  plot_->setMinimumSize(200, 140);
   plot_->setCursor(Qt::CrossCursor);
   harmonicsPlot_ = new QCustomPlot;
   stack_->addWidget(plot_);

@@ -154,6 +154,7 @@ void PropertiesPanel::rebuild() {
     fillSlot(selection_->slots_[0]);
   else
     fillMechanism();
+  emit rebuilt();
 }
 
 bool PropertiesPanel::change(const QString& text,

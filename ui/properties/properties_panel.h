@@ -59,6 +59,8 @@ class PropertiesPanel : public QWidget {
 
  Q_SIGNALS:
   void message(const QString& text, bool warning);
+  // The rows were made anew (another kind of selection): their height may have changed.
+  void rebuilt();
 
  private:
   struct Row {

@@ -189,7 +189,17 @@ void MainWindow::createDocks() {
   split->addWidget(inspector_);
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 2);
+  split->setCollapsible(0, false);
   scroll->setMinimumHeight(140);
+  // The form whole when its rows change (up to 60 % of the dock; then it scrolls): it started
+  // cut off behind the splitter, its last rows out of sight.
+  connect(properties_, &PropertiesPanel::rebuilt, this, [split, scroll, this] {
+    const int want = properties_->sizeHint().height() + 2 * scroll->frameWidth();
+    const int total = split->height();
+    if (total <= 0 || scroll->height() >= want) return;
+    const int form = std::min(want, total * 6 / 10);
+    split->setSizes({form, total - form});
+  });
   QDockWidget* p = addDock("properties", tr("Properties"), split, Qt::RightDockWidgetArea);
   centres_ = new CentresPanel;
   QDockWidget* c = addDock("centres", tr("Instant Centres"), centres_, Qt::RightDockWidgetArea);
@@ -209,7 +219,12 @@ void MainWindow::createDocks() {
   tabifyDockWidget(p, c);
   p->raise();
   resizeDocks({p}, {400}, Qt::Horizontal);
-  resizeDocks({pl}, {320}, Qt::Vertical);
+  // The plots low enough to leave the canvas most of the height (at 1400 x 950 it had 440 px).
+  resizeDocks({pl}, {250}, Qt::Vertical);
+  // A title bar dragged a little moves a panel within the window, not out of it (View >
+  // Detachable Panels lets them float).
+  for (QDockWidget* d : {p, c, pl, h})
+    d->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
   // Work only while shown: the panels compute when they become visible.
   // Queued: a dock reports its visibility before its contents have changed theirs.
   // A dock's visibility says whether it is seen (a tab behind another is moved off the window
@@ -393,6 +408,7 @@ void MainWindow::readSettings() {
   action("showExtremes")->setChecked(s.value(QStringLiteral("extremes"), false).toBool());
   action("showTransmission")->setChecked(s.value(QStringLiteral("transmission"), false).toBool());
   action("darkPalette")->setChecked(s.value(QStringLiteral("dark"), false).toBool());
+  action("detachablePanels")->setChecked(s.value(QStringLiteral("detachable"), false).toBool());
   crankBar_->setSpeedIndex(s.value(QStringLiteral("speed"), 3).toInt());
   animator_->setIncrementDeg(s.value(QStringLiteral("increment"), 1.0).toDouble());
   s.endGroup();
@@ -411,6 +427,7 @@ void MainWindow::writeSettings() const {
   s.setValue(QStringLiteral("extremes"), action("showExtremes")->isChecked());
   s.setValue(QStringLiteral("transmission"), action("showTransmission")->isChecked());
   s.setValue(QStringLiteral("dark"), action("darkPalette")->isChecked());
+  s.setValue(QStringLiteral("detachable"), action("detachablePanels")->isChecked());
   s.setValue(QStringLiteral("increment"), animator_->incrementDeg());
   s.endGroup();
 }

@@ -101,6 +101,14 @@ void MainWindow::createActions() {
   dark->setCheckable(true);
   connect(dark, &QAction::toggled, this, &MainWindow::setDarkPalette);
 
+  QAction* detach = makeAction("detachablePanels", tr("&Detachable Panels"), QKeySequence(),
+                               tr("Let the panels float out of the window"));
+  detach->setCheckable(true);
+  connect(detach, &QAction::toggled, this, [this](bool on) {
+    for (QDockWidget* d : findChildren<QDockWidget*>())
+      d->setFeatures(d->features().setFlag(QDockWidget::DockWidgetFloatable, on));
+  });
+
   // Animation
   QAction* play =
       makeAction("play", tr("&Play"), QKeySequence(tr("Space")), tr("Play or pause the animation"));
@@ -180,8 +188,8 @@ void MainWindow::createMenus() {
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (const char* a : {"fit", "zoomIn", "zoomOut", "actualSize"}) view->addAction(action(a));
   view->addSeparator();
-  for (const char* a :
-       {"showGrid", "showCentres", "showTraces", "showExtremes", "showTransmission", "darkPalette"})
+  for (const char* a : {"showGrid", "showCentres", "showTraces", "showExtremes", "showTransmission",
+                        "darkPalette", "detachablePanels"})
     view->addAction(action(a));
   view->addSeparator();
   for (const char* d : {"properties", "centres", "plots", "designChecks"})
