@@ -9,12 +9,16 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
+#include <QTimer>
 #include <cstdio>
 #include <cstring>
 #include <initializer_list>
 
+#include "document/autosave.h"
+#include "document/document.h"
 #include "window/headless.h"
 #include "window/main_window.h"
+#include "window/probe.h"
 
 namespace {
 
@@ -95,6 +99,20 @@ int runOffscreen(const QCommandLineParser& cli, const Options& opt, const QStrin
   return linkage::ui::runHeadless(o);
 }
 
+// Work an editor left unsaved when it stopped (a crash, kill -9): offered once the window is up,
+// into this window while it is empty, else into a new one each.
+void offerRecoveries(linkage::ui::MainWindow* w) {
+  linkage::ui::offerRecovery(w, [w](const linkage::ui::Recovery& r) {
+    linkage::ui::MainWindow* into = w;
+    if (w->document()->isModified() || !w->document()->filePath().isEmpty() ||
+        w->document()->design().bodies.size() > 1) {
+      into = new linkage::ui::MainWindow;
+      into->show();
+    }
+    into->openRecovered(r);
+  });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -131,6 +149,7 @@ int main(int argc, char** argv) {
   }
   if (headless) return runOffscreen(cli, opt, args.value(0));
 
+  linkage::ui::startProbeFromEnvironment();
   auto* w = new linkage::ui::MainWindow;
   if (!args.isEmpty()) {
     QString why;
@@ -141,5 +160,6 @@ int main(int argc, char** argv) {
     }
   }
   w->show();
+  QTimer::singleShot(0, w, [w] { offerRecoveries(w); });
   return app.exec();
 }

@@ -112,5 +112,47 @@ TEST(Edits, AnEditWhoseSketchPoseIsOutOfReachBecomesTheDrawing) {
   EXPECT_LT((loaded.position(f.O4) - O4).norm(), 1e-9);
 }
 
+// A plate by its side lengths (the homework's triangle EF 16, FG 56, EG 62), a bar by its
+// length, a point by its distance and angle from another: exact, on the side it was drawn.
+TEST(Edits, TypedDimensionsPlaceThePointsExactly) {
+  Mechanism m;
+  m.addBody("ground", true);
+  const PointId g = addGroundPoint(m, Vec2(0, 0));
+  const BodyId plate = addLink(m, {{Vec2(0, 0), g}, {Vec2(10, 0), {}}, {Vec2(5, -8), {}}});
+  ASSERT_TRUE(plate);
+  const BodyId rod = addLink(m, {{Vec2(10, 0), m.pointNamed(plate, "B")->id}, {Vec2(20, 5), {}}});
+  ASSERT_TRUE(rod);
+  const Vec2 e = m.pointNamed(plate, "A")->pos;
+  std::string why;
+  ASSERT_TRUE(setSideLengths(m, plate, {16, 56, 62}, &why)) << why;
+  const std::vector<double> sides = sideLengths(m, plate);
+  ASSERT_EQ(sides.size(), 3u);
+  EXPECT_EQ(sides[0], 16);
+  EXPECT_NEAR(sides[1], 56, 1e-12);
+  EXPECT_NEAR(sides[2], 62, 1e-12);
+  EXPECT_EQ(m.pointNamed(plate, "A")->pos, e);            // the first point stays
+  EXPECT_EQ(m.pointNamed(plate, "B")->pos, Vec2(16, 0));  // the second on its direction
+  EXPECT_LT(m.pointNamed(plate, "C")->pos.y(), 0);        // the third on its side
+  EXPECT_EQ(m.pointNamed(rod, "B")->pos, Vec2(16, 0));    // a pinned point goes along
+  // No triangle: refused, nothing moved.
+  const Mechanism before = m;
+  EXPECT_FALSE(setSideLengths(m, plate, {16, 20, 62}, &why));
+  EXPECT_EQ(why, "these sides make no triangle: each must be shorter than the other two");
+  EXPECT_FALSE(setSideLengths(m, plate, {16, 0, 62}, &why));
+  EXPECT_EQ(why, "a length must be positive");
+  EXPECT_FALSE(setSideLengths(m, plate, {16}, &why));
+  EXPECT_EQ(m.pointNamed(plate, "C")->pos, before.pointNamed(plate, "C")->pos);
+  // A bar: its length along its direction.
+  ASSERT_TRUE(setSideLengths(m, rod, {25}, &why)) << why;
+  EXPECT_NEAR((m.pointNamed(rod, "D")->pos - m.pointNamed(rod, "B")->pos).norm(), 25, 1e-12);
+  // A point from another: exact at quarter turns.
+  ASSERT_TRUE(setPolar(m, m.pointNamed(rod, "D")->id, m.pointNamed(rod, "B")->id, 30, 90, &why));
+  EXPECT_EQ(m.pointNamed(rod, "D")->pos, Vec2(16, 30));
+  ASSERT_TRUE(setPolar(m, m.pointNamed(rod, "D")->id, m.pointNamed(rod, "B")->id, 10, 30, &why));
+  EXPECT_NEAR(m.pointNamed(rod, "D")->pos.x(), 16 + 10 * std::sqrt(3.0) / 2, 1e-12);
+  EXPECT_FALSE(setPolar(m, g, g, 1, 0, &why));
+  EXPECT_FALSE(setPolar(m, m.pointNamed(rod, "D")->id, g, -1, 0, &why));
+}
+
 }  // namespace
 }  // namespace linkage

@@ -1,9 +1,10 @@
 #include "linkage/edits.h"
 
 #include <algorithm>
+#include <cmath>
 
-#include "linkage/guide.h"
 #include "linkage/elements.h"
+#include "linkage/guide.h"
 
 namespace linkage {
 
@@ -260,6 +261,78 @@ std::vector<PointId> pinnedTogether(const Mechanism& m, PointId p) {
       if (other && std::find(out.begin(), out.end(), other) == out.end()) out.push_back(other);
     }
   return out;
+}
+
+namespace {
+
+std::vector<PointId> pointsOf(const Mechanism& m, BodyId body) {
+  std::vector<PointId> out;
+  for (const Point& p : m.points)
+    if (p.body == body) out.push_back(p.id);
+  return out;
+}
+
+void moveTogether(Mechanism& m, PointId p, const Vec2& to) {
+  for (PointId q : pinnedTogether(m, p)) m.point(q)->pos = to;
+}
+
+bool refuse(std::string* why, const std::string& text) {
+  if (why) *why = text;
+  return false;
+}
+
+}  // namespace
+
+std::vector<double> sideLengths(const Mechanism& m, BodyId body) {
+  const std::vector<PointId> p = pointsOf(m, body);
+  auto d = [&](int i, int j) { return (m.point(p[j])->pos - m.point(p[i])->pos).norm(); };
+  if (p.size() == 2) return {d(0, 1)};
+  if (p.size() == 3) return {d(0, 1), d(1, 2), d(0, 2)};
+  return {};
+}
+
+bool setSideLengths(Mechanism& m, BodyId body, const std::vector<double>& lengths,
+                    std::string* why) {
+  const std::vector<PointId> p = pointsOf(m, body);
+  // A bar has one side, a triangle three.
+  if ((p.size() != 2 || lengths.size() != 1) && (p.size() != 3 || lengths.size() != 3))
+    return refuse(why, "side lengths are typed for a bar or a triangle");
+  for (double l : lengths)
+    if (!(l > 0 && std::isfinite(l))) return refuse(why, "a length must be positive");
+  const Vec2 a = m.point(p[0])->pos, b = m.point(p[1])->pos;
+  const Vec2 dir = (b - a).norm() > 0 ? Vec2((b - a).normalized()) : Vec2(1, 0);
+  const Vec2 b1 = a + lengths[0] * dir;
+  if (p.size() == 2) {
+    moveTogether(m, p[1], b1);
+    return true;
+  }
+  // The third point where the circles about P0 (radius |P0P2|) and P1 (|P1P2|) meet, on the
+  // side of P0P1 it was drawn on.
+  const double c = lengths[0], r1 = lengths[1], r0 = lengths[2];
+  if (r0 + r1 <= c || c + r0 <= r1 || c + r1 <= r0)
+    return refuse(why, "these sides make no triangle: each must be shorter than the other two");
+  const double along = (c * c + r0 * r0 - r1 * r1) / (2 * c);
+  const double off = std::sqrt(std::max(0.0, r0 * r0 - along * along));
+  const Vec2 c0 = m.point(p[2])->pos - a;
+  const double side = dir.x() * c0.y() - dir.y() * c0.x() < 0 ? -1 : 1;
+  const Vec2 third = a + along * dir + side * off * Vec2(-dir.y(), dir.x());
+  moveTogether(m, p[1], b1);
+  moveTogether(m, p[2], third);
+  return true;
+}
+
+bool setPolar(Mechanism& m, PointId p, PointId from, double distance, double angleDeg,
+              std::string* why) {
+  if (!m.contains(p) || !m.contains(from) || p == from)
+    return refuse(why, "pick another point to measure from");
+  if (!(distance > 0 && std::isfinite(distance))) return refuse(why, "a distance must be positive");
+  if (!std::isfinite(angleDeg)) return refuse(why, "the angle must be a number");
+  const double a = angleDeg * M_PI / 180;
+  Vec2 u(std::cos(a), std::sin(a));
+  // A quarter turn exactly (0, 90, 180...): cos 90 deg is 6e-17, not 0.
+  if (std::remainder(angleDeg, 90.0) == 0) u = Vec2(std::round(u.x()), std::round(u.y()));
+  moveTogether(m, p, m.point(from)->pos + distance * u);
+  return true;
 }
 
 }  // namespace linkage

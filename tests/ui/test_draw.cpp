@@ -20,6 +20,7 @@
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
 #include "tools/toolbox.h"
+#include "window/message_strip.h"
 
 namespace linkage::ui {
 namespace {
@@ -250,7 +251,8 @@ namespace {
 QString statusText(const MainWindow& w) {
   QString all;
   for (QLabel* l : w.statusBar()->findChildren<QLabel*>()) all += l->text() + "\n";
-  return all;
+  const MessageStrip* m = w.messageStrip();
+  return all + m->hint() + "\n" + m->problem() + "\n" + m->message() + "\n";
 }
 
 // Over-constrained: a second coupler beside the first says the same thing twice; the solver

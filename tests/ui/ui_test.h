@@ -7,6 +7,10 @@
 inline void PrintTo(const QString& s, std::ostream* os) {
   *os << '"' << s.toStdString() << '"';
 }
+// `EXPECT_...(...) << someQString` in a failure message.
+inline std::ostream& operator<<(std::ostream& os, const QString& s) {
+  return os << s.toStdString();
+}
 
 #include <QWidget>
 

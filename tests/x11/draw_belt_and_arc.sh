@@ -75,6 +75,12 @@ rows=$("$cli" analyze "$out" --steps 36 | wc -l) || fail "analyze failed"
 
 # Opened again, it animates.
 kill "${pids[-1]}" 2>/dev/null || true
+wait "${pids[-1]}" 2>/dev/null || true
+# Its window gone first: the next start must not find the old one.
+for _ in $(seq 50); do
+  xdotool search --onlyvisible --name "Linkage" >/dev/null 2>&1 || break
+  sleep 0.1
+done
 start_linkage "$linkage" "$out"
 xdotool mousemove 300 300 click 1
 wait_still reopened || fail "the reopened design does not settle"

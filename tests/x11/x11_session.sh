@@ -94,3 +94,40 @@ axes_of() {
       print x, y
     }'
 }
+
+# What the editor shows, in words (LINKAGE_PROBE, ui/window/probe.h): set before start_linkage.
+use_probe() { export LINKAGE_PROBE="$work/probe.txt"; }
+# Until the probe holds this line fragment, for up to 10 s.
+wait_probe() {
+  for _ in $(seq 100); do
+    grep -qF -- "$1" "$work/probe.txt" 2>/dev/null && return 0
+    sleep 0.1
+  done
+  echo "--- probe:"; cat "$work/probe.txt" 2>/dev/null | head -80
+  return 1
+}
+# Until the probe no longer holds it.
+wait_probe_gone() {
+  for _ in $(seq 100); do
+    grep -qF -- "$1" "$work/probe.txt" 2>/dev/null || return 0
+    sleep 0.1
+  done
+  echo "--- probe:"; cat "$work/probe.txt" 2>/dev/null | head -80
+  return 1
+}
+# The value of the probe's first line "KEY: value".
+probe() { grep -m1 -F -- "$1: " "$work/probe.txt" | cut -d" " -f$(( $(wc -w <<<"$1") + 1 ))-; }
+# The screen position of millimetre (x, y) of the drawing, from the probe's canvas line.
+screen_of() {
+  read -r ox oy z < <(probe canvas)
+  awk -v ox="$ox" -v oy="$oy" -v z="$z" -v x="$1" -v y="$2" \
+    'BEGIN { printf "%d %d\n", ox + x * z + 0.5, oy - y * z + 0.5 }'
+}
+click_mm() {
+  local sx sy
+  read -r sx sy < <(screen_of "$1" "$2")
+  xdotool mousemove "$sx" "$sy"; sleep 0.1; xdotool click 1; sleep 0.2
+}
+# A Properties field (by its label) or a dock's tab (by its text), clicked.
+click_field() { xdotool mousemove $(probe "at field $1") click 1; sleep 0.2; }
+click_tab() { xdotool mousemove $(probe "tab $1") click 1; sleep 0.2; }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "document/document.h"
+#include "document/shown_numbers.h"
 
 namespace linkage::ui {
 
@@ -34,9 +35,9 @@ void Animator::resetLimits() {
 void Animator::setPlaying(bool on) {
   if (on == playing()) return;
   if (on) {
-    if (!doc_ || !doc_->solved()) {
-      emit message(doc_ ? QStringLiteral("Cannot play: %1")
-                              .arg(QString::fromStdString(doc_->solveStatus().message))
+    const Status s = doc_ ? doc_->motionStatus() : Status::success();
+    if (!doc_ || !s.ok()) {
+      emit message(doc_ ? QStringLiteral("Cannot play: %1").arg(QString::fromStdString(s.message))
                         : QString(),
                    true);
       return;
@@ -71,14 +72,19 @@ void Animator::tick() {
 
 void Animator::step(int direction) {
   setPlaying(false);
-  if (!doc_ || !doc_->solved()) return;
+  if (!doc_) return;
+  if (const Status m = doc_->motionStatus(); !m.ok()) {
+    emit message(QStringLiteral("Cannot turn the crank: %1").arg(QString::fromStdString(m.message)),
+                 true);
+    return;
+  }
   const double from = doc_->crankDeg();
   Status s = doc_->setCrankDeg(from + (direction >= 0 ? 1 : -1) * increment_);
   if (!s.ok()) emit message(QString::fromStdString(s.message), true);
 }
 
 void Animator::advance(double seconds) {
-  if (!doc_ || !doc_->solved()) {
+  if (!doc_ || !doc_->motionStatus().ok()) {
     setPlaying(false);
     return;
   }
@@ -93,11 +99,11 @@ void Animator::advance(double seconds) {
     QString text;
     if (low_ && high_)
       text = QStringLiteral("Swings between the limit positions at crank %1\u00b0 and %2\u00b0")
-                 .arg(*low_, 0, 'f', 2)
-                 .arg(*high_, 0, 'f', 2);
+                 .arg(angleText(*low_, 2))
+                 .arg(angleText(*high_, 2));
     else
       text = QStringLiteral("Limit position at crank %1\u00b0: turning back")
-                 .arg(doc_->crankDeg(), 0, 'f', 2);
+                 .arg(angleText(doc_->crankDeg(), 2));
     emit message(
         text + QStringLiteral(" (") + QString::fromStdString(s.message) + QStringLiteral(")"),
         false);
@@ -106,7 +112,7 @@ void Animator::advance(double seconds) {
   // A change point or a position the solver cannot pass: stop there and say why.
   setPlaying(false);
   emit message(QStringLiteral("Stopped at crank %1\u00b0: %2")
-                   .arg(doc_->crankDeg(), 0, 'f', 3)
+                   .arg(angleText(doc_->crankDeg(), 3))
                    .arg(QString::fromStdString(s.message)),
                true);
 }

@@ -209,9 +209,23 @@ void CanvasScene::updatePose() {
   for (size_t i = 0; i < joints_.size(); ++i) joints_[i]->place(drawing_.joints[i]);
   if (driver_ && !drawing_.drivers.empty()) driver_->setAt(drawing_.drivers[0].at);
   for (size_t i = 0; i < outputs_.size(); ++i) outputs_[i]->setAt(drawing_.outputs[i].at);
-  centres_->setCentres(ics ? drawing_.centres : std::vector<Drawing::Centre>{});
+  centres_->setCentres(ics ? determinedCentres(k) : std::vector<Drawing::Centre>{});
   updateFlags();
   emit redrawn();
+}
+
+std::vector<Drawing::Centre> CanvasScene::determinedCentres(const Kinematics& k) const {
+  // A body free with the crank held has no centre the driver determines: none is drawn.
+  const std::vector<BodyId> free = k.structure().freeBodies;
+  if (free.empty()) return drawing_.centres;
+  std::vector<int> numbers;
+  for (const Drawing::Body& b : drawing_.bodies)
+    if (std::find(free.begin(), free.end(), b.id) != free.end()) numbers.push_back(b.number);
+  auto held = [&](int n) { return std::find(numbers.begin(), numbers.end(), n) != numbers.end(); };
+  std::vector<Drawing::Centre> out;
+  for (const Drawing::Centre& c : drawing_.centres)
+    if (!held(c.i) && !held(c.j)) out.push_back(c);
+  return out;
 }
 
 void CanvasScene::updateFlags() {
@@ -252,7 +266,13 @@ void CanvasScene::updateTraces() {
   }
   traces_.clear();
   if (!tracesVisible_ || !doc_ || !solverShown_) return;
-  for (const std::vector<Vec2>& path : tracePaths(doc_->kinematics())) {
+  const Kinematics& k = doc_->kinematics();
+  const std::vector<PointId>& outputs = k.mechanism().outputs;
+  std::vector<std::vector<Vec2>> paths = tracePaths(k);
+  for (size_t i = 0; i < paths.size(); ++i) {
+    // A point the driver does not move has no path: it would be the solver's hold, made up.
+    std::vector<Vec2>& path = paths[i];
+    if (!k.checkDetermined({outputs[i]}).ok()) path.clear();
     QPainterPath pp;
     for (size_t i = 0; i < path.size(); ++i)
       i == 0 ? pp.moveTo(toQt(path[i])) : pp.lineTo(toQt(path[i]));

@@ -74,6 +74,7 @@ class CanvasScene : public QGraphicsScene {
   void updatePose();
   void updateTraces();
   void updateFlags();
+  std::vector<Drawing::Centre> determinedCentres(const Kinematics& k) const;
   void clearItems();
 
   QPointer<Document> doc_;

@@ -42,14 +42,22 @@ std::pair<Vec2, Vec2> motionExtent(const Kinematics& k, double stepDeg) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   };
-  sweep(k, stepDeg, [&](const Kinematics& c, bool) {
-    for (const Point& p : m.points) add(c.position(p.id));
+  // A body free with the crank held goes where the solver's hold puts it, which is no motion:
+  // only where it is drawn now counts (its sweep wandered metres off with a pin deleted).
+  const std::vector<BodyId> free = k.structure().freeBodies;
+  auto isFree = [&](BodyId b) { return std::find(free.begin(), free.end(), b) != free.end(); };
+  auto visit = [&](const Kinematics& c, bool moving) {
+    for (const Point& p : m.points)
+      if (moving != isFree(p.body)) add(c.position(p.id));
     for (const Slot& s : m.slots) {
+      if (moving == isFree(s.body)) continue;
       const Kinematics::Segment e = c.slotEnds(s.id);
       add(e.p0);
       add(e.p1);
     }
-  });
+  };
+  visit(k, false);
+  sweep(k, stepDeg, [&](const Kinematics& c, bool) { visit(c, true); });
   if (!lo.allFinite()) return {Vec2::Zero(), Vec2::Zero()};
   return {lo, hi};
 }

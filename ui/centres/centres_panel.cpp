@@ -11,13 +11,14 @@
 #include <cmath>
 
 #include "document/document.h"
+#include "document/shown_numbers.h"
 
 namespace linkage::ui {
 
 namespace {
 
 QString num(double v, int decimals = 3) {
-  return QString::number(v, 'f', decimals);
+  return fixedText(v, decimals);
 }
 
 QString pt(const Vec2& v) {
@@ -148,12 +149,21 @@ void CentresPanel::refresh() {
 void CentresPanel::update() {
   // Seen: not only visible, but on the window (a dock in a tab behind another is moved off it
   // and stays "visible").
-  if (!isVisible() || visibleRegion().isEmpty() || !doc_ || !doc_->kinematics().valid()) {
+  const bool seen = isVisible() && !visibleRegion().isEmpty() && doc_;
+  // Nothing of a design the solver has not taken: the last good state is another design, or
+  // another document's (a file that cannot be solved).
+  if (!seen || !doc_->solved()) {
     if (chain_) {
       chain_.reset();
       emit chainChanged();
     }
-    if (doc_ && !doc_->kinematics().valid()) table_->setRowCount(0);
+    if (doc_ && !doc_->solved()) {
+      table_->setRowCount(0);
+      textTimer_.stop();
+      steps_->setHtml(
+          tr("<p><b>Not solved:</b> %1</p>")
+              .arg(QString::fromStdString(doc_->solveStatus().message).toHtmlEscaped()));
+    }
     return;
   }
   const InstantCentres& ics = doc_->instantCentres();
@@ -175,8 +185,15 @@ void CentresPanel::fillTable(const InstantCentres& ics) {
   // Sized again when the rows name other centres or bodies (the first two columns change), not
   // on every edit: a design dragged with Ctrl is an edit a frame.
   bool relabelled = false;
+  // A body free with the crank held has no centre the driver determines.
+  const std::vector<BodyId> free = doc_->kinematics().structure().freeBodies;
+  auto isFree = [&](int n) {
+    return std::find(free.begin(), free.end(), ics.bodyNumbered(n)) != free.end();
+  };
   for (int r = 0; r < n; ++r) {
-    const InstantCentre& c = ics.centres[r];
+    InstantCentre c = ics.centres[r];
+    const bool held = isFree(c.i) || isFree(c.j);
+    if (held) c.determined = false;
     const bool inf = c.atInfinity();
     const QString cells[6] = {
         QStringLiteral("%1,%2").arg(c.i).arg(c.j),
@@ -188,7 +205,8 @@ void CentresPanel::fillTable(const InstantCentres& ics) {
         : inf         ? num(c.h.y(), 4)
                       : num(c.h.y()),
         inf ? tr("yes (direction)") : QString(),
-        !c.determined ? tr("none (no relative motion)")
+        held            ? tr("not determined (a body free with the crank held)")
+        : !c.determined ? tr("none (no relative motion)")
         : c.status == CentreStatus::Kennedy
             ? tr("Kennedy, round %1 (via %2)")
                   .arg(c.round)
@@ -219,6 +237,17 @@ void CentresPanel::fillChain(const InstantCentres& ics) {
     }
     return;
   }
+  // A point the driver does not move has no velocity to find: the reason instead.
+  if (const Status d = doc_->kinematics().checkDetermined({*p}); !d.ok()) {
+    textTimer_.stop();
+    steps_->setHtml(
+        tr("<p><b>No chain:</b> %1</p>").arg(QString::fromStdString(d.message).toHtmlEscaped()));
+    if (chain_) {
+      chain_.reset();
+      emit chainChanged();
+    }
+    return;
+  }
   std::vector<int> via;
   for (const QString& s : via_->text().split(',', Qt::SkipEmptyParts)) via.push_back(s.toInt());
   chain_ = velocityChain(doc_->kinematics(), ics, *p, via);
@@ -231,6 +260,10 @@ void CentresPanel::fillChain(const InstantCentres& ics) {
   } else if (!textTimer_.isActive()) {
     textTimer_.start(kTextMs - int(lastText_.elapsed()));
   }
+}
+
+QString CentresPanel::stepsText() const {
+  return steps_->toPlainText();
 }
 
 QString CentresPanel::chainText() const {

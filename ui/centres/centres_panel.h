@@ -35,6 +35,8 @@ class CentresPanel : public QWidget {
   const std::optional<VelocityChain>& chain() const { return chain_; }
   QTableWidget* table() const { return table_; }
   QString chainText() const;
+  // What the panel's text says now (the chain written out, or why there is none), plain.
+  QString stepsText() const;
 
  Q_SIGNALS:
   // A row was chosen: (0, 0) when none.

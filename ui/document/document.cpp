@@ -74,6 +74,7 @@ bool Document::save(const QString& path, QString* error) {
   title_.clear();
   undo_.setClean();
   emit fileStateChanged();
+  emit saved();
   return true;
 }
 
@@ -96,14 +97,32 @@ void Document::restore(const DocumentState& s) {
   const double deg = crankDeg();
   state_ = s;
   applyWants();
-  if (state_.kinematics.valid() && std::isfinite(deg) && state_.kinematics.crankDeg() != deg) {
-    Status moved = state_.kinematics.moveTo(deg);
-    if (state_.status.ok()) state_.status = moved;
-  }
   poseStatus_ = Status::success();
+  // The view's crank angle, if the restored state can turn there; if not (it was the angle of
+  // the edit being undone, which this state cannot reach: a start angle of 1e300), the state
+  // stays exactly as it was kept: it is still solved, and the pose says why it did not turn.
+  if (state_.kinematics.valid() && std::isfinite(deg) && state_.kinematics.crankDeg() != deg) {
+    Kinematics moved = state_.kinematics;
+    poseStatus_ = moved.moveTo(deg);
+    if (poseStatus_.ok()) state_.kinematics = std::move(moved);
+  }
   icFresh_ = false;
   emit designChanged();
   emit poseChanged();
+}
+
+Status Document::motionStatus() const {
+  if (!state_.status.ok()) return state_.status;
+  const Kinematics& k = state_.kinematics;
+  if (!k.valid()) return Status::failure(StatusCode::BadModel, "the mechanism is not solved");
+  for (const Note& n : k.notes())
+    if (n.kind == Note::Kind::FreedomsHeld) {
+      Status s =
+          Status::failure(StatusCode::Underconstrained, "the motion is not determined: " + n.text);
+      s.bodies = n.bodies;
+      return s;
+    }
+  return Status::success();
 }
 
 double Document::crankDeg() const {

@@ -57,6 +57,11 @@ class Document : public QObject {
   // Why the design is not the solved one (Ok when it is).
   const Status& solveStatus() const { return state_.status; }
   bool solved() const { return state_.status.ok() && state_.kinematics.valid(); }
+  // Ok when the design is solved and the driver determines the motion of every body;
+  // otherwise why not: the solve's failure, or Underconstrained naming the bodies free with the
+  // crank held (the solver holds them where they are drawn: a motion shown of them, a trace or
+  // an animation, would be made up).
+  Status motionStatus() const;
 
   // Replaces the design and re-solves it at the current crank angle (the solver's in-place
   // edit). Used by undo commands; an edit the solver refuses is kept as the design.
@@ -87,6 +92,8 @@ class Document : public QObject {
   void poseChanged();
   // The file path or the modified mark changed.
   void fileStateChanged();
+  // The design was written to its file (what is on disk now is this document's).
+  void saved();
 
  private:
   void replace(DocumentState s, const QString& path, const QString& title);

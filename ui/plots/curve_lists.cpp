@@ -4,6 +4,8 @@
 #include <QTreeWidget>
 #include <cmath>
 
+#include "document/shown_numbers.h"
+
 namespace linkage::ui {
 
 namespace {
@@ -27,7 +29,7 @@ QString formatValue(double v) {
 }
 
 QString formatDegrees(double deg) {
-  return std::isfinite(deg) ? QString::fromUtf8("%1°").arg(deg, 0, 'f', 2) : QString::fromUtf8("—");
+  return std::isfinite(deg) ? angleText(deg, 2) + QString::fromUtf8("°") : QString::fromUtf8("—");
 }
 
 QString cursorValues(const std::vector<CurveSet*>& sets, double deg, const PlotUnits& u) {

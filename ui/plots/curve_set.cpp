@@ -1,6 +1,9 @@
 #include "plots/curve_set.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "document/shown_numbers.h"
 
 namespace linkage::ui {
 
@@ -12,6 +15,23 @@ QString crankName(const Mechanism& m) {
       if (const Point* p = m.point(j->b))
         if (const Body* b = m.body(p->body)) return QString::fromStdString(b->name);
   return "crank";
+}
+
+// The scale next to which a value of this order is rounding (shown_numbers.h).
+double scaleOf(const Kinematics& k, bool body, int order) {
+  return (body ? M_PI : k.size()) * std::pow(std::abs(k.omega()), order);
+}
+
+// A curve whose whole swing is rounding (a fixed pivot's velocity computed through a turning
+// link: +-2.5e-14 mm/s) is the constant it rounds, plotted flat (exactly 0 when it is zero),
+// with the same extremes.
+void flattenRounding(Curve& c, Extremes& e, double scale) {
+  if (c.values.empty()) return;
+  const auto [lo, hi] = std::minmax_element(c.values.begin(), c.values.end());
+  if (!(*hi - *lo <= kRoundingFraction * scale)) return;
+  const double v = cleaned((*lo + *hi) / 2, scale);
+  std::fill(c.values.begin(), c.values.end(), v);
+  e.max.value = e.min.value = v;
 }
 
 }  // namespace
@@ -29,6 +49,15 @@ CurveSet::CurveSet(const Kinematics& k, const CurveRequest& r, const QString& ti
     const Body* b = k.mechanism().bodyNamed(target);
     if (!b) {
       status_ = Status::failure(StatusCode::BadModel, "no body \"" + target + "\"");
+      return;
+    }
+    // A body free with the crank held has no rotation the driver determines.
+    const std::vector<BodyId> free = k.structure().freeBodies;
+    if (std::find(free.begin(), free.end(), b->id) != free.end()) {
+      status_ = Status::failure(StatusCode::Underconstrained,
+                                "the rotation of " + target +
+                                    " is not determined by the driver (it turns with the crank "
+                                    "held)");
       return;
     }
     quantity_ = Quantity::ofBody(b->id);
@@ -53,6 +82,8 @@ CurveSet::CurveSet(const Kinematics& k, const CurveRequest& r, const QString& ti
     curves_[o] = curveOf(*samples_, quantity_, static_cast<Order>(o));
     if (curves_[o].status.ok())
       extremes_[o] = extremesOf(*samples_, quantity_, static_cast<Order>(o));
+    scales_[o] = scaleOf(k, r.body, o);
+    flattenRounding(curves_[o], extremes_[o], scales_[o]);
   }
   const Curve& j = curves_[3];
   if (r.orders[3] && j.status.ok())
@@ -70,8 +101,9 @@ std::array<double, kOrders> CurveSet::valuesAt(double deg) {
   if (empty() || !(deg >= 0 && deg <= lastDeg())) return v;
   const bool moved = probe_->moveTo(deg).ok() && probe_->derivativesValid();
   for (int o = 0; o < 3; ++o)
-    if (request_.orders[o] && moved) v[o] = valueAt(*probe_, quantity_, static_cast<Order>(o));
-  if (!jerk_.empty()) v[3] = jerk_(deg * M_PI / 180);
+    if (request_.orders[o] && moved)
+      v[o] = cleaned(valueAt(*probe_, quantity_, static_cast<Order>(o)), scales_[o]);
+  if (!jerk_.empty()) v[3] = cleaned(jerk_(deg * M_PI / 180), scales_[3]);
   return v;
 }
 

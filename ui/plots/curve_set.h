@@ -61,6 +61,7 @@ class CurveSet {
   std::shared_ptr<MotionSamples> samples_;
   std::array<Curve, kOrders> curves_;
   std::array<Extremes, kOrders> extremes_;
+  std::array<double, kOrders> scales_{};  // of each order: next to it, a value is rounding
   std::unique_ptr<Kinematics> probe_;
   PeriodicInterpolant jerk_;
 };

@@ -5,6 +5,7 @@
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -72,6 +73,12 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   compare_ = new QComboBox;
   compare_->addItems({"No comparison", "Overlay", "Side by side"});
   compare_->setToolTip("Curves of the other open documents");
+  against_ = new QComboBox;
+  against_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  against_->setMinimumContentsLength(10);
+  against_->setToolTip(
+      "The point of the other windows' mechanisms to compare with (by default the one of the "
+      "same name, else their first output)");
   harmonics_ = new QToolButton;
   harmonics_->setText("Harmonics");
   harmonics_->setCheckable(true);
@@ -81,6 +88,7 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   row3->addWidget(accelerationUnit_);
   row3->addStretch(1);
   row3->addWidget(compare_);
+  row3->addWidget(against_);
   row3->addWidget(harmonics_);
   rows_->addWidget(unitsRow_);
 
@@ -110,6 +118,8 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   connect(compare_, &QComboBox::currentIndexChanged, this, [this](int i) {
     if (!quiet_) Q_EMIT compareChanged(i);
   });
+  connect(against_, &QComboBox::activated, this,
+          [this] { Q_EMIT comparisonTargetChanged(against_->currentData().toString()); });
   connect(harmonics_, &QToolButton::toggled, this, [this](bool on) {
     if (!quiet_) Q_EMIT harmonicsToggled(on);
   });
@@ -152,6 +162,7 @@ void PlotControls::display(const CurveRequest& r, const PlotUnits& u, int compar
   accelerationUnit_->setCurrentIndex(static_cast<int>(u.acceleration));
   compare_->setCurrentIndex(compare);
   compare_->setEnabled(compareEnabled);
+  against_->setVisible(compare != 0 && compareEnabled);
   harmonics_->setChecked(harmonics);
   quiet_ = false;
 }
@@ -187,6 +198,14 @@ bool PlotControls::offerTargets(const Mechanism* m, CurveRequest& r) {
   target_->setCurrentIndex(i);
   quiet_ = false;
   return changed;
+}
+
+void PlotControls::offerComparisonTargets(const QStringList& labels, const QString& current) {
+  QSignalBlocker b(against_);
+  against_->clear();
+  against_->addItem("against: same name", QString());
+  for (const QString& l : labels) against_->addItem("against " + l, l);
+  against_->setCurrentIndex(std::max(0, against_->findData(current)));
 }
 
 CurveRequest PlotControls::read() const {

@@ -30,11 +30,16 @@ class PlotControls : public QWidget {
   // The points (outputs first) and bodies of `m` as choices (none for nullptr). If r's target is
   // not among them, r becomes the first choice (the first output); returns whether r changed.
   bool offerTargets(const Mechanism* m, CurveRequest& r);
+  // The points of the other windows' mechanisms to compare with ("body.point"), after the
+  // first choice, the point of the same name; `current` chosen ("" for the same name).
+  void offerComparisonTargets(const QStringList& labels, const QString& current);
 
  Q_SIGNALS:
   void requestChanged(const CurveRequest& r);
   void unitsChanged(const PlotUnits& u);
   void compareChanged(int mode);
+  // "" for the point of the same name.
+  void comparisonTargetChanged(const QString& target);
   void harmonicsToggled(bool on);
 
  protected:
@@ -48,7 +53,7 @@ class PlotControls : public QWidget {
   // The target was chosen for the user (no output yet), not by them: it gives way to the
   // first output point when the design gets one.
   bool autoTarget_ = true;
-  QComboBox *target_, *component_, *velocityUnit_, *accelerationUnit_, *compare_;
+  QComboBox *target_, *component_, *velocityUnit_, *accelerationUnit_, *compare_, *against_;
   QDoubleSpinBox* direction_;
   QCheckBox* orders_[kOrders];
   QSpinBox *revs_, *steps_;

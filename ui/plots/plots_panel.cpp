@@ -51,7 +51,7 @@ void PlotsPanel::buildWidgets() {
   auto* split = new QSplitter(Qt::Vertical);
   stack_ = new QStackedWidget;
   plot_ = new QCustomPlot;
-  plot_->setMinimumSize(200, 180);
+  plot_->setMinimumSize(200, 140);
   plot_->setCursor(Qt::CrossCursor);
   harmonicsPlot_ = new QCustomPlot;
   stack_->addWidget(plot_);
@@ -65,6 +65,8 @@ void PlotsPanel::buildWidgets() {
   values_ = new QLabel;
   values_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   values_->setWordWrap(true);
+  // However long a value, it does not widen the dock (nor the window).
+  values_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   extremes_ = new QTreeWidget;
   extremes_->setRootIsDecorated(false);
   extremes_->setMinimumHeight(48);
@@ -82,6 +84,8 @@ void PlotsPanel::buildWidgets() {
   connect(controls_, &PlotControls::compareChanged, this,
           [this](int i) { setCompare(static_cast<Compare>(i)); });
   connect(controls_, &PlotControls::harmonicsToggled, this, &PlotsPanel::setHarmonicsShown);
+  connect(controls_, &PlotControls::comparisonTargetChanged, this,
+          &PlotsPanel::setComparisonTarget);
 
   plot_->setInteractions({});  // a drag moves the crank, not the axes
   connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
@@ -157,12 +161,53 @@ void PlotsPanel::setComparisonDocuments(const QList<Document*>& docs) {
   for (Document* d : docs) {
     if (!d) continue;
     others_.push_back(d);
-    connect(d, &Document::designChanged, othersContext_, [this, d] { markStale(d); });
+    connect(d, &Document::designChanged, othersContext_, [this, d] {
+      offerComparisonTargets();
+      markStale(d);
+    });
     connect(d, &QObject::destroyed, othersContext_, [this] { schedule(); });
   }
   writeControls();
+  offerComparisonTargets();
   figureStale_ = true;
   schedule();
+}
+
+void PlotsPanel::setComparisonTarget(const QString& target) {
+  if (target == against_) return;
+  against_ = target;
+  for (auto& s : sets_)
+    if (s.first != doc_) s.second.reset();
+  offerComparisonTargets();
+  figureStale_ = true;
+  schedule();
+}
+
+void PlotsPanel::offerComparisonTargets() {
+  QStringList labels;
+  for (const QPointer<Document>& d : others_) {
+    if (!d || d == doc_) continue;
+    const Mechanism& m = d->design();
+    QStringList points;
+    for (PointId p : m.outputs) points << QString::fromStdString(m.pointLabel(p));
+    for (const Point& p : m.points) points << QString::fromStdString(m.pointLabel(p.id));
+    for (const QString& l : points)
+      if (!labels.contains(l)) labels << l;
+  }
+  controls_->offerComparisonTargets(labels, against_);
+}
+
+CurveRequest PlotsPanel::requestFor(const Document* d) const {
+  CurveRequest r = request_;
+  if (d == doc_ || r.body) return r;
+  const Mechanism& m = d->design();
+  if (!against_.isEmpty() && m.findPoint(against_.toStdString())) {
+    r.target = against_;
+  } else if (!m.findPoint(r.target.toStdString())) {
+    // No point of that name there: its first output, what that mechanism is about.
+    if (!m.outputs.empty()) r.target = QString::fromStdString(m.pointLabel(m.outputs[0]));
+  }
+  return r;
 }
 
 void PlotsPanel::setCompare(Compare c) {
@@ -242,7 +287,7 @@ void PlotsPanel::recompute() {
     for (auto& s : sets_)
       if (s.first == d && s.second) set = std::move(s.second);
     if (!set) {
-      set = std::make_unique<CurveSet>(d->kinematics(), request_, titleOf(d));
+      set = std::make_unique<CurveSet>(d->kinematics(), requestFor(d), titleOf(d));
       ++computations_;
     }
     next.emplace_back(d, std::move(set));

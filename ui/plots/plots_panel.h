@@ -55,6 +55,10 @@ class PlotsPanel : public QWidget {
   // Shown when the compare mode is not Off; a document deleted elsewhere drops out.
   void setComparisonDocuments(const QList<Document*>& docs);
   void setCompare(Compare c);
+  // The point of the other documents to compare with ("body.point"); "" for the point of the
+  // same name (or, where there is none, their first output).
+  void setComparisonTarget(const QString& target);
+  QString comparisonTarget() const { return against_; }
   Compare compare() const { return compare_; }
 
   // What is plotted; the controls follow.
@@ -99,12 +103,16 @@ class PlotsPanel : public QWidget {
   void updateExtremes();
   void mouseOnPlot(QMouseEvent* e, bool press);
   std::vector<Document*> shownDocuments() const;
+  // What is plotted of document d: the request, with another document's point chosen.
+  CurveRequest requestFor(const Document* d) const;
+  void offerComparisonTargets();
   std::vector<const CurveSet*> shownSets() const;
   void ensureComputed();
 
   QPointer<Document> doc_;
   QList<QPointer<Document>> others_;
   Compare compare_ = Compare::Off;
+  QString against_;
   CurveRequest request_;
   PlotUnits units_;
   bool harmonics_ = false;

@@ -6,8 +6,13 @@
 #include <QVBoxLayout>
 
 #include "document/document.h"
+#include "document/shown_numbers.h"
 
 namespace linkage::ui {
+
+namespace {
+const Vec2 kUnknown(NAN, NAN);
+}  // namespace
 
 InspectorPanel::InspectorPanel(QWidget* parent) : QWidget(parent) {
   summary_ = new QLabel;
@@ -27,6 +32,16 @@ InspectorPanel::InspectorPanel(QWidget* parent) : QWidget(parent) {
   l->addWidget(summary_);
   l->addWidget(new QLabel(tr("<b>Output points</b> (exact, at the current crank angle)")));
   l->addWidget(motion_, 1);
+  note_ = new QLabel;
+  note_->setWordWrap(true);
+  note_->setTextFormat(Qt::PlainText);
+  note_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  note_->hide();
+  l->addWidget(note_);
+}
+
+QString InspectorPanel::noteText() const {
+  return note_->isHidden() ? QString() : note_->text();
 }
 
 void InspectorPanel::setDocument(Document* doc) {
@@ -82,24 +97,37 @@ void InspectorPanel::refreshMotion() {
   if (!isVisible() || visibleRegion().isEmpty() || !doc_) return;
   const Kinematics& k = doc_->kinematics();
   const Mechanism& m = k.mechanism();
-  const int n = k.valid() ? static_cast<int>(m.outputs.size()) : 0;
+  // Only what the solver has determined: nothing of a design it has not solved (the last good
+  // state is another design), nothing of a point the driver does not move.
+  const bool solved = doc_->solved();
+  const int n = solved ? static_cast<int>(m.outputs.size()) : 0;
   const bool resize = motion_->rowCount() != n;
   if (resize) {
     motion_->setRowCount(n);
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < 4; ++c) motion_->setItem(r, c, new QTableWidgetItem);
   }
-  auto pair = [](const Vec2& v) {
-    if (!v.allFinite()) return QStringLiteral("\u2013");
-    return QStringLiteral("%1, %2").arg(v.x(), 0, 'f', 3).arg(v.y(), 0, 'f', 3);
-  };
+  QStringList why;
+  if (!solved && !doc_->design().outputs.empty()) why << tr("Not solved: no motion to show.");
   for (int r = 0; r < n; ++r) {
-    const Kinematics::PointMotion pm = k.motion(m.outputs[r]);
-    motion_->item(r, 0)->setText(QString::fromStdString(m.pointLabel(m.outputs[r])));
-    motion_->item(r, 1)->setText(pair(pm.position));
-    motion_->item(r, 2)->setText(pair(pm.velocity));
-    motion_->item(r, 3)->setText(pair(pm.acceleration));
+    const PointId p = m.outputs[r];
+    motion_->item(r, 0)->setText(QString::fromStdString(m.pointLabel(p)));
+    const Status determined = k.checkDetermined({p});
+    if (!determined.ok()) why << QString::fromStdString(determined.message);
+    const Kinematics::PointMotion pm =
+        determined.ok() ? k.motion(p) : Kinematics::PointMotion{kUnknown, kUnknown, kUnknown};
+    const Vec2* v[3] = {&pm.position, &pm.velocity, &pm.acceleration};
+    for (int c = 0; c < 3; ++c) {
+      const double scale = motionScale(k, c);
+      motion_->item(r, c + 1)->setText(
+          v[c]->allFinite() ? QStringLiteral("%1, %2").arg(fixedText(cleaned(v[c]->x(), scale), 3),
+                                                           fixedText(cleaned(v[c]->y(), scale), 3))
+          : determined.ok() ? QStringLiteral("\u2013")
+                            : tr("not determined"));
+    }
   }
+  note_->setText(why.join(QLatin1Char('\n')));
+  note_->setVisible(!why.isEmpty());
   if (resize) motion_->resizeColumnsToContents();
 }
 

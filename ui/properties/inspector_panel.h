@@ -1,6 +1,7 @@
 // The inspector: what the mechanism is (name, file, structure, degrees of freedom, how it is
 // solved, the solver's notes and any failure, with its place) and where its output points are
-// now: position, velocity and acceleration, exact, following the animation while visible.
+// now: position, velocity and acceleration, exact, following the animation while visible; for a
+// point the driver does not determine, or a design not solved, no numbers but the reason.
 #pragma once
 
 #include <QPointer>
@@ -23,6 +24,8 @@ class InspectorPanel : public QWidget {
   void refreshMotion();
   QTableWidget* motionTable() const { return motion_; }
   QString summaryText() const;
+  // Why some outputs show no numbers (not solved, not determined by the driver), or empty.
+  QString noteText() const;
 
  protected:
   void showEvent(QShowEvent* e) override;
@@ -33,6 +36,7 @@ class InspectorPanel : public QWidget {
   QPointer<Document> doc_;
   QLabel* summary_;
   QTableWidget* motion_;
+  QLabel* note_;
 };
 
 }  // namespace linkage::ui

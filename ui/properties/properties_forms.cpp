@@ -22,6 +22,15 @@ namespace linkage::ui {
 
 namespace {
 constexpr double kDeg = M_PI / 180;
+// Ten turns either way: enough for any start (a belt's slower shaft included); beyond it the
+// crank would be tracked for ages to reach angle 0.
+constexpr double kMaxStartDeg = 3600;
+
+// A length or angle measured between points, to 12 digits: the 40 typed comes back 40, not the
+// 39.99999999999999 that the coordinates' last bits make of it.
+double measured(double v) {
+  return std::isfinite(v) ? parseNumber(formatNumber(v, 12)).value_or(v) : v;
+}
 }  // namespace
 
 void PropertiesPanel::fillMechanism() {
@@ -76,18 +85,38 @@ void PropertiesPanel::fillDriver() {
         },
         &why);
   });
+  // The file's start_deg, as the editor shows it: crank angle 0 is the drawing turned on by it
+  // in the driving direction. A new start angle turns the crank to 0 at once, so that the crank
+  // is seen to start there (the drawing itself stays as it is).
   addNumber(
       tr("Start angle"), [this] { return doc_->design().driver->startDeg; },
       [this](double v, QString* why) {
-        return change(
-            tr("Driver start angle"),
-            [&](Mechanism& m, QString*) {
-              m.driver->startDeg = v;
-              return true;
-            },
-            why);
+        if (!(std::abs(v) <= kMaxStartDeg)) {
+          *why = tr("the start angle must be between -%1 and %1 degrees").arg(kMaxStartDeg);
+          return false;
+        }
+        if (!change(
+                tr("Driver start angle"),
+                [&](Mechanism& m, QString*) {
+                  m.driver->startDeg = v;
+                  return true;
+                },
+                why))
+          return false;
+        if (doc_->solved()) doc_->setCrankDeg(0);
+        return true;
       },
       QStringLiteral("\u00b0"));
+  field(tr("Start angle [\u00b0]"))
+      ->setToolTip(tr("Crank angle 0 (Home, where the plots and tables start) is the drawing "
+                      "turned on by this angle in the driving direction"));
+  addInfo(tr("Crank 0 is"), [this] {
+    const Driver& d = *doc_->design().driver;
+    if (d.startDeg == 0) return tr("the drawing as it is");
+    return tr("the drawing turned %1\u00b0 %2")
+        .arg(exactText(d.startDeg))
+        .arg(d.direction == Direction::Cw ? tr("clockwise") : tr("counter-clockwise"));
+  });
 }
 
 void PropertiesPanel::fillBody(BodyId id) {
@@ -117,6 +146,7 @@ void PropertiesPanel::fillBody(BodyId id) {
       if (p.body == id) names << QString::fromStdString(p.name);
     return names.join(QStringLiteral(", "));
   });
+  if (pts.size() == 3 && !b->ground) fillTriangle(id);
   if (pts.size() != 2 || b->ground) return;
   // A bar: its length and angle, measured from its first point; editing them moves the second.
   const PointId p0 = pts[0], p1 = pts[1];
@@ -195,6 +225,7 @@ void PropertiesPanel::fillPoint(PointId id) {
               why);
         },
         tr("mm"));
+  fillPolar(id);
   auto* out = new QCheckBox(tr("traced, plotted, exported"));
   auto isOut = [this, id] {
     const auto& o = doc_->design().outputs;
@@ -216,6 +247,82 @@ void PropertiesPanel::fillPoint(PointId id) {
         },
         &why);
   });
+}
+
+// Sides named by their points, in the order linkage/edits.h's setSideLengths takes them; each
+// typed side re-solves the mechanism at once.
+void PropertiesPanel::fillTriangle(BodyId id) {
+  std::vector<QString> names;
+  for (const Point& p : doc_->design().points)
+    if (p.body == id) names.push_back(QString::fromStdString(p.name));
+  const int ends[3][2] = {{0, 1}, {1, 2}, {0, 2}};
+  for (int k = 0; k < 3; ++k)
+    addNumber(
+        tr("Side %1%2").arg(names[ends[k][0]], names[ends[k][1]]),
+        [this, id, k] {
+          const std::vector<double> s = sideLengths(doc_->design(), id);
+          return s.size() == 3 ? measured(s[k]) : NAN;
+        },
+        [this, id, k](double v, QString* why) {
+          std::vector<double> sides = sideLengths(doc_->design(), id);
+          if (sides.size() != 3) return false;
+          sides[k] = v;
+          return change(
+              tr("Plate sides"),
+              [&](Mechanism& m, QString* w) {
+                std::string problem;
+                if (setSideLengths(m, id, sides, &problem)) return true;
+                *w = QString::fromStdString(problem);
+                return false;
+              },
+              why);
+        },
+        tr("mm"));
+}
+
+// The point's distance and angle (counter-clockwise from +x) from another point of its link,
+// chosen in "From"; typing either moves the point (and the points pinned to it).
+void PropertiesPanel::fillPolar(PointId id) {
+  const Mechanism& m0 = doc_->design();
+  std::vector<PointId> others;
+  for (const Point& p : m0.points)
+    if (p.body == m0.point(id)->body && p.id != id) others.push_back(p.id);
+  if (others.empty()) return;
+  auto* from = new QComboBox;
+  for (PointId o : others) from->addItem(QString::fromStdString(m0.point(o)->name));
+  form_->addRow(tr("From"), from);
+  rows_.push_back({tr("From"), from, [] {}});
+  auto base = [others, from] { return others[std::max(0, from->currentIndex())]; };
+  auto offset = [this, id, base] {
+    return Vec2(doc_->design().point(id)->pos - doc_->design().point(base())->pos);
+  };
+  auto place = [this, id, base](double distance, double angle, QString* why) {
+    return change(
+        tr("Move point"),
+        [&](Mechanism& m, QString* w) {
+          std::string problem;
+          if (setPolar(m, id, base(), distance, angle, &problem)) return true;
+          *w = QString::fromStdString(problem);
+          return false;
+        },
+        why);
+  };
+  addNumber(
+      tr("Distance"), [offset] { return measured(offset().norm()); },
+      [offset, place](double v, QString* why) {
+        const Vec2 d = offset();
+        return place(v, std::atan2(d.y(), d.x()) / kDeg, why);
+      },
+      tr("mm"));
+  addNumber(
+      tr("Angle"),
+      [offset] {
+        const Vec2 d = offset();
+        return measured(std::atan2(d.y(), d.x()) / kDeg);
+      },
+      [offset, place](double v, QString* why) { return place(offset().norm(), v, why); },
+      QStringLiteral("\u00b0"));
+  connect(from, &QComboBox::currentIndexChanged, this, [this] { refresh(); });
 }
 
 // The title, then the rows the joint's kind puts there (ui/elements/).

@@ -3,6 +3,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QVBoxLayout>
@@ -29,6 +30,31 @@ QString exactText(double v) {
 }
 
 namespace {
+
+// A number field keeps what can be part of a number; any other key a user types there (the
+// L of the Link tool after "-29.34") is meant for the window: its shortcut acts (the field is
+// committed as it leaves), and a key without one is dropped rather than corrupting the value.
+class NumberKeys : public QObject {
+ public:
+  using QObject::QObject;
+  bool eventFilter(QObject* watched, QEvent* e) override {
+    if (e->type() != QEvent::ShortcutOverride && e->type() != QEvent::KeyPress)
+      return QObject::eventFilter(watched, e);
+    auto* k = static_cast<QKeyEvent*>(e);
+    const QString text = k->text();
+    const bool plain =
+        !(k->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier));
+    if (!plain || text.size() != 1 || !text[0].isPrint() ||
+        QStringLiteral("0123456789.+-eE").contains(text[0]))
+      return QObject::eventFilter(watched, e);
+    if (e->type() == QEvent::ShortcutOverride) {
+      // The value as typed is committed first: the shortcut may take the keyboard away.
+      if (auto* field = qobject_cast<QLineEdit*>(watched)) Q_EMIT field->editingFinished();
+      e->ignore();  // the shortcut may act
+    }
+    return true;
+  }
+};
 
 void markBad(QWidget* w, bool bad) {
   w->setStyleSheet(bad ? QStringLiteral("background: rgba(220, 40, 30, 60);") : QString());
@@ -61,6 +87,12 @@ QWidget* PropertiesPanel::field(const QString& label) const {
   for (const Row& r : rows_)
     if (r.label == label) return r.editor;
   return nullptr;
+}
+
+QString PropertiesPanel::labelOf(const QWidget* editor) const {
+  for (const Row& r : rows_)
+    if (r.editor == editor) return r.label;
+  return QString();
 }
 
 QString PropertiesPanel::title() const {
@@ -122,6 +154,7 @@ void PropertiesPanel::rebuild() {
     fillSlot(selection_->slots_[0]);
   else
     fillMechanism();
+  emit rebuilt();
 }
 
 bool PropertiesPanel::change(const QString& text,
@@ -190,9 +223,9 @@ void PropertiesPanel::addText(const QString& label, std::function<QString()> val
 
 void PropertiesPanel::addNumber(const QString& label, std::function<double()> value,
                                 std::function<bool(double, QString*)> commit, const QString& unit) {
+  const QString full = unit.isEmpty() ? label : QStringLiteral("%1 [%2]").arg(label, unit);
   addText(
-      unit.isEmpty() ? label : QStringLiteral("%1 [%2]").arg(label, unit),
-      [value] { return exactText(value()); },
+      full, [value] { return exactText(value()); },
       [commit](const QString& text, QString* why) {
         const std::optional<double> v = parseNumber(text.toStdString());
         if (!v) {
@@ -201,6 +234,7 @@ void PropertiesPanel::addNumber(const QString& label, std::function<double()> va
         }
         return commit(*v, why);
       });
+  field(full)->installEventFilter(new NumberKeys(field(full)));
 }
 
 }  // namespace linkage::ui

@@ -1,5 +1,6 @@
-// Exact numbers for the selection: names (editable, unique), a point's coordinates, a bar's
-// length and angle (editing them moves its second point), a slot's ends, a joint's type, the
+// Exact numbers for the selection: names (editable, unique), a point's coordinates (or its
+// distance and angle from another point of its link), a bar's length and angle (editing them
+// moves its second point), a triangle plate's three sides, a slot's ends, a joint's type, the
 // driver's rpm, direction and start angle, whether a point is an output; the mechanism's own
 // name and driver when nothing is selected. Millimetres and degrees, in the drawing's
 // coordinates (the sketch, at crank angle -start), typed values taken exactly (never snapped).
@@ -32,6 +33,8 @@ class PropertiesPanel : public QWidget {
   void setDocument(Document* doc, Selection* selection);
   // The field with this label (for tests and scripts), or nullptr.
   QWidget* field(const QString& label) const;
+  // The label of a field (the inverse of field()), or empty.
+  QString labelOf(const QWidget* editor) const;
   QString title() const;
 
   // What the element kinds' forms (ui/elements/) build their rows with.
@@ -56,6 +59,8 @@ class PropertiesPanel : public QWidget {
 
  Q_SIGNALS:
   void message(const QString& text, bool warning);
+  // The rows were made anew (another kind of selection): their height may have changed.
+  void rebuilt();
 
  private:
   struct Row {
@@ -69,6 +74,9 @@ class PropertiesPanel : public QWidget {
   void fillMechanism();
   void fillBody(BodyId id);
   void fillPoint(PointId id);
+  // A triangle's three sides; a point's distance and angle from another of its link.
+  void fillTriangle(BodyId id);
+  void fillPolar(PointId id);
   void fillJoint(JointId id);
   void fillSlot(SlotId id);
   void fillSlotShape(SlotId id);

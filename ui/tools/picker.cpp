@@ -57,6 +57,7 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
     auto* bl = b ? nullptr : dynamic_cast<BlockItem*>(item);
     if ((!b && !bl) || !item->contains(item->mapFromScene(q))) continue;
     pick.body = b ? b->id() : bl->body();
+    pick.onBlock = bl != nullptr;
     break;
   }
   if (!pick.body && pick.point) pick.body = m.point(pick.point)->body;

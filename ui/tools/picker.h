@@ -19,6 +19,7 @@ struct Pick {
   SlotId slot;    // a slot under the cursor
   BodyId body;    // the top body under the cursor (the ground when nothing else)
   bool onGround = false;
+  bool onBlock = false;  // the body is a slider block under the cursor
   bool empty() const { return !point && !joint && !slot && (!body || onGround); }
 };
 

@@ -27,8 +27,8 @@ QString SelectTool::hint() const {
       return tr("Changing the design: the point moves in its link; release to keep, Esc to undo");
     default:
       return tr(
-          "Select: click a point, joint, slot or link (Shift adds); drag a point to move "
-          "the mechanism, Ctrl+drag to change the design");
+          "Select: click a point, joint, slot, block or link (again: what is under it; Shift "
+          "adds); drag a point to move the mechanism, Ctrl+drag to change the design");
   }
 }
 
@@ -104,24 +104,49 @@ bool SelectTool::key(QKeyEvent* e) {
 
 void SelectTool::select(const Pick& p, bool toggle) {
   Selection& s = *ctx().selection;
+  // What is under the cursor, the most specific first: a joint, a point, a slider block, a
+  // slot, a link. A click again on what is selected takes the next: things drawn on top of one
+  // another (a block on its pin and its slot) are each reached.
+  struct Candidate {
+    PointId point;
+    JointId joint;
+    SlotId slot;
+    BodyId body;
+  };
+  std::vector<Candidate> under;
+  if (p.joint) under.push_back({{}, p.joint, {}, {}});
+  if (p.point) under.push_back({p.point, {}, {}, {}});
+  if (p.body && p.onBlock) under.push_back({{}, {}, {}, p.body});
+  if (p.slot) under.push_back({{}, {}, p.slot, {}});
+  if (p.body && !p.onGround && !p.onBlock) under.push_back({{}, {}, {}, p.body});
+  size_t next = 0;
+  if (!toggle && s.size() == 1)
+    for (size_t i = 0; i < under.size(); ++i) {
+      const Candidate& c = under[i];
+      if ((c.joint && s.contains(c.joint)) || (c.point && s.contains(c.point)) ||
+          (c.slot && s.contains(c.slot)) || (c.body && s.contains(c.body)))
+        next = (i + 1) % under.size();
+    }
   if (!toggle) {
     const bool had = !s.empty();
     s.blockSignals(true);
     s.clear();
     s.blockSignals(false);
-    if (had && p.empty()) emit s.changed();
+    if (had && under.empty()) emit s.changed();
   }
-  // The most specific thing under the cursor: a joint, a point, a slot, a link.
-  if (p.joint)
-    s.add(p.joint, toggle);
-  else if (p.point)
-    s.add(p.point, toggle);
-  else if (p.slot)
-    s.add(p.slot, toggle);
-  else if (p.body && !p.onGround)
-    s.add(p.body, toggle);
-  else if (!toggle)
-    emit s.changed();
+  if (under.empty()) {
+    if (!toggle) emit s.changed();
+    return;
+  }
+  const Candidate& c = under[next];
+  if (c.joint)
+    s.add(c.joint, toggle);
+  else if (c.point)
+    s.add(c.point, toggle);
+  else if (c.slot)
+    s.add(c.slot, toggle);
+  else
+    s.add(c.body, toggle);
 }
 
 void SelectTool::selectBand(const QRectF& r, bool add) {
@@ -204,9 +229,11 @@ void SelectTool::endDrag(bool keep) {
   Document* doc = ctx().doc;
   if (mode_ == Mode::Reshape && before_) {
     if (keep) {
-      Mechanism m = doc->design();
-      commitEdit(doc, tr("Move %1").arg(QString::fromStdString(m.pointLabel(dragPoint_))),
-                 std::move(m), *before_);
+      // The label first: the design is moved into the call (in an order of evaluation the
+      // compiler chooses, which named a point of a moved-from design "?").
+      const QString text =
+          tr("Move %1").arg(QString::fromStdString(doc->design().pointLabel(dragPoint_)));
+      commitEdit(doc, text, doc->design(), *before_);
     } else {
       doc->restore(*before_);
     }

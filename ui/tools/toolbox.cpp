@@ -41,7 +41,11 @@ Toolbox::Toolbox(ToolContext ctx, QWidget* actionParent) : QObject(actionParent)
     group_->addAction(a);
     actions_.push_back(a);
     tools_.emplace_back(t);
-    connect(a, &QAction::triggered, this, [this, name] { setTool(name); });
+    // A tool chosen is work on the canvas: the keyboard goes there (from a Properties field).
+    connect(a, &QAction::triggered, this, [this, name] {
+      setTool(name);
+      ctx_.view->setFocus();
+    });
     connect(t, &Tool::hintChanged, this, [this, t] {
       if (t == current_) emit hintChanged(t->hint());
     });

@@ -22,7 +22,9 @@
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
+#include "document/autosave.h"
 #include "document/document.h"
+#include "document/shown_numbers.h"
 #include "elements/element_ui.h"
 #include "plots/plots_panel.h"
 #include "properties/inspector_panel.h"
@@ -31,6 +33,7 @@
 #include "tools/tool_overlay.h"
 #include "tools/toolbox.h"
 #include "window/icons.h"
+#include "window/message_strip.h"
 
 namespace linkage::ui {
 
@@ -50,10 +53,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setAcceptDrops(true);
   openWindows().append(this);
   doc_ = new Document(this);
+  autosave_ = new Autosaver(doc_, this);
   scene_ = new CanvasScene(this);
   view_ = new CanvasView(scene_, this);
   animator_ = new Animator(this);
   setCentralWidget(view_);
+  strip_ = new MessageStrip(view_);
   createActions();
   createTools();
   createDocks();
@@ -127,6 +132,11 @@ void MainWindow::connectDocument() {
   connect(properties_, &PropertiesPanel::message, this, &MainWindow::showMessage);
   history_->setStack(doc_->undoStack());
   connect(doc_, &Document::fileStateChanged, this, &MainWindow::updateTitle);
+  // Another file (New, an example), or this one written: the watch follows.
+  connect(doc_, &Document::fileStateChanged, this, [this] {
+    if (doc_->filePath() != watched_) watchFile();
+  });
+  connect(doc_, &Document::saved, this, &MainWindow::watchFile);
   connect(doc_, &Document::designChanged, this, &MainWindow::updateStatus);
   connect(doc_, &Document::designChanged, this, &MainWindow::showDesignStatus);
   // A new solver (a file, an edit) starts with the default: ask again what is shown.
@@ -179,7 +189,17 @@ void MainWindow::createDocks() {
   split->addWidget(inspector_);
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 2);
+  split->setCollapsible(0, false);
   scroll->setMinimumHeight(140);
+  // The form whole when its rows change (up to 60 % of the dock; then it scrolls): it started
+  // cut off behind the splitter, its last rows out of sight.
+  connect(properties_, &PropertiesPanel::rebuilt, this, [split, scroll, this] {
+    const int want = properties_->sizeHint().height() + 2 * scroll->frameWidth();
+    const int total = split->height();
+    if (total <= 0 || scroll->height() >= want) return;
+    const int form = std::min(want, total * 6 / 10);
+    split->setSizes({form, total - form});
+  });
   QDockWidget* p = addDock("properties", tr("Properties"), split, Qt::RightDockWidgetArea);
   centres_ = new CentresPanel;
   QDockWidget* c = addDock("centres", tr("Instant Centres"), centres_, Qt::RightDockWidgetArea);
@@ -199,7 +219,12 @@ void MainWindow::createDocks() {
   tabifyDockWidget(p, c);
   p->raise();
   resizeDocks({p}, {400}, Qt::Horizontal);
-  resizeDocks({pl}, {320}, Qt::Vertical);
+  // The plots low enough to leave the canvas most of the height (at 1400 x 950 it had 440 px).
+  resizeDocks({pl}, {250}, Qt::Vertical);
+  // A title bar dragged a little moves a panel within the window, not out of it (View >
+  // Detachable Panels lets them float).
+  for (QDockWidget* d : {p, c, pl, h})
+    d->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
   // Work only while shown: the panels compute when they become visible.
   // Queued: a dock reports its visibility before its contents have changed theirs.
   // A dock's visibility says whether it is seen (a tab behind another is moved off the window
@@ -234,43 +259,34 @@ void MainWindow::createTools() {
 }
 
 void MainWindow::createStatusBar() {
-  hint_ = new QLabel;
-  hint_->setText(toolbox_->hint());
-  connect(toolbox_, &Toolbox::hintChanged, hint_, &QLabel::setText);
-  statusBar()->addWidget(hint_);
-  problem_ = new QLabel;
-  problem_->setTextFormat(Qt::PlainText);
-  QPalette warn = problem_->palette();
-  warn.setColor(QPalette::WindowText, QColor(200, 30, 20));
-  problem_->setPalette(warn);
-  problem_->hide();
-  statusBar()->addWidget(problem_);
-  message_ = new QLabel;
-  message_->setTextFormat(Qt::PlainText);
-  message_->setMinimumWidth(100);
+  // The hint, the design's problem and the messages wrap under the canvas (MessageStrip); the
+  // status bar keeps the short readouts and the actions' status tips.
+  strip_->setHint(toolbox_->hint());
+  connect(toolbox_, &Toolbox::hintChanged, strip_, &MessageStrip::setHint);
   cursor_ = new QLabel;
   crank_ = new QLabel;
   dof_ = new QLabel;
   for (QLabel* l : {cursor_, crank_, dof_}) l->setMinimumWidth(90);
   cursor_->setMinimumWidth(170);
-  statusBar()->addWidget(message_, 1);
   statusBar()->addPermanentWidget(cursor_);
   statusBar()->addPermanentWidget(crank_);
   statusBar()->addPermanentWidget(dof_);
+  // A message goes when it stops being true: at the next edit, selection, or turn of the crank
+  // by the user (not at every frame of the animation, whose own messages stay while it plays).
+  connect(doc_, &Document::designChanged, strip_, &MessageStrip::clearMessage);
+  connect(selection_, &Selection::changed, strip_, &MessageStrip::clearMessage);
+  connect(doc_, &Document::poseChanged, this, [this] {
+    if (!animator_->playing()) strip_->clearMessage();
+  });
 }
 
 void MainWindow::showMessage(const QString& text, bool warning) {
-  message_->setText(text);
-  message_->setToolTip(text);
-  QPalette p = message_->palette();
-  p.setColor(QPalette::WindowText,
-             warning ? QColor(200, 30, 20) : palette().color(QPalette::WindowText));
-  message_->setPalette(p);
+  strip_->setMessage(text, warning);
 }
 
 void MainWindow::updateStatus() {
   const Kinematics& k = doc_->kinematics();
-  crank_->setText(k.valid() ? tr("crank %1\u00b0").arg(doc_->crankDeg(), 0, 'f', 2)
+  crank_->setText(k.valid() ? tr("crank %1\u00b0").arg(angleText(doc_->crankDeg(), 2))
                             : tr("crank \u2013"));
   if (k.valid()) {
     const StructureReport r = k.structure();
@@ -301,9 +317,7 @@ void MainWindow::showDesignStatus() {
         break;
       }
   }
-  problem_->setText(text);
-  problem_->setToolTip(text);
-  problem_->setVisible(!text.isEmpty());
+  strip_->setProblem(text);
 }
 
 void MainWindow::updateTitle() {
@@ -348,6 +362,8 @@ void MainWindow::applyIcons() {
 
 void MainWindow::changeEvent(QEvent* e) {
   if (e->type() == QEvent::PaletteChange) applyIcons();
+  // The user turns to something else: a copy of the unsaved work now.
+  if (e->type() == QEvent::ActivationChange && !isActiveWindow()) autosave_->saveNow();
   QMainWindow::changeEvent(e);
 }
 
@@ -392,6 +408,7 @@ void MainWindow::readSettings() {
   action("showExtremes")->setChecked(s.value(QStringLiteral("extremes"), false).toBool());
   action("showTransmission")->setChecked(s.value(QStringLiteral("transmission"), false).toBool());
   action("darkPalette")->setChecked(s.value(QStringLiteral("dark"), false).toBool());
+  action("detachablePanels")->setChecked(s.value(QStringLiteral("detachable"), false).toBool());
   crankBar_->setSpeedIndex(s.value(QStringLiteral("speed"), 3).toInt());
   animator_->setIncrementDeg(s.value(QStringLiteral("increment"), 1.0).toDouble());
   s.endGroup();
@@ -410,6 +427,7 @@ void MainWindow::writeSettings() const {
   s.setValue(QStringLiteral("extremes"), action("showExtremes")->isChecked());
   s.setValue(QStringLiteral("transmission"), action("showTransmission")->isChecked());
   s.setValue(QStringLiteral("dark"), action("darkPalette")->isChecked());
+  s.setValue(QStringLiteral("detachable"), action("detachablePanels")->isChecked());
   s.setValue(QStringLiteral("increment"), animator_->incrementDeg());
   s.endGroup();
 }

@@ -10,6 +10,7 @@
 #include <memory>
 
 class QDockWidget;
+class QFileSystemWatcher;
 class QLabel;
 class QMenu;
 class QUndoView;
@@ -17,6 +18,8 @@ class QUndoView;
 namespace linkage::ui {
 
 class Animator;
+class Autosaver;
+struct Recovery;
 class CanvasScene;
 class CanvasView;
 class CentresPanel;
@@ -26,6 +29,7 @@ class DesignChoices;
 class DesignOverlays;
 class Document;
 class InspectorPanel;
+class MessageStrip;
 class PropertiesPanel;
 class PlotsPanel;
 class Selection;
@@ -54,6 +58,12 @@ class MainWindow : public QMainWindow {
   DesignChoices* designChoices() const { return choices_; }
   DesignOverlays* designOverlays() const { return designOverlays_; }
   ChecksPanel* checksPanel() const { return checks_; }
+  Autosaver* autosaver() const { return autosave_; }
+  // Opens a recovered copy of unsaved work (document/autosave.h): as an unsaved edit of its
+  // file, one undo step back to what the file holds.
+  void openRecovered(const Recovery& r);
+  // Under the canvas: the tool's hint, what is wrong with the design, the last message.
+  MessageStrip* messageStrip() const { return strip_; }
   // The parameter-study dialog, made on first use (Analysis > Parameter Study).
   StudyDialog* studyDialog();
   QDockWidget* dock(const QString& objectName) const;
@@ -70,6 +80,12 @@ class MainWindow : public QMainWindow {
   bool openExample(const QString& name, QString* error = nullptr);
   // A path or an example's name, as `linkage [FILE | EXAMPLE-NAME]` takes it.
   bool openNameOrPath(const QString& arg, QString* error = nullptr);
+  // Where the file dialogs open: beside the current file, else where a file was last opened
+  // or saved (QSettings "lastFolder"), else the home folder.
+  QString fileFolder() const;
+  // A file changed on disk by another program: says so and offers to reload it (from the
+  // file system watcher; tests call it directly).
+  void fileChangedOnDisk();
   // Asks what to do with unsaved changes; true when it is all right to go on.
   bool maybeSave();
   // One frame of the animation as File > Export > Animation writes it: the mechanism at a crank
@@ -97,6 +113,8 @@ class MainWindow : public QMainWindow {
   void connectDocument();
   QAction* makeAction(const QString& name, const QString& text, const QKeySequence& key,
                       const QString& tip);
+  // Watches the document's file; what it holds now is taken as ours (opened or saved here).
+  void watchFile();
   void fillRecentMenu();
   void fillExamplesMenu();
   void addRecent(const QString& path);
@@ -132,14 +150,17 @@ class MainWindow : public QMainWindow {
   Selection* selection_ = nullptr;
   ToolOverlay* overlay_ = nullptr;
   Toolbox* toolbox_ = nullptr;
-  QLabel* hint_ = nullptr;
   bool propertiesSeen_ = false;
   std::unique_ptr<CanvasScene> frameScene_;
   std::unique_ptr<CanvasView> frameView_;
   QMenu* recentMenu_ = nullptr;
   QMenu* examplesMenu_ = nullptr;
-  QLabel* message_ = nullptr;
-  QLabel* problem_ = nullptr;  // what is wrong with the design, while it is
+  MessageStrip* strip_ = nullptr;
+  Autosaver* autosave_ = nullptr;
+  QFileSystemWatcher* watcher_ = nullptr;
+  QString watched_;
+  QByteArray onDisk_;    // the file's contents as this window last read or wrote them
+  bool asking_ = false;  // the reload question is open
   QLabel* cursor_ = nullptr;
   QLabel* crank_ = nullptr;
   QLabel* dof_ = nullptr;

@@ -35,7 +35,7 @@ void MainWindow::createActions() {
           &QAction::triggered, this, [this] {
             if (!maybeSave()) return;
             const QString path = QFileDialog::getOpenFileName(
-                this, tr("Open Mechanism"), QString(),
+                this, tr("Open Mechanism"), fileFolder(),
                 tr("Mechanisms (*.linkage.json);;JSON files (*.json);;All files (*)"));
             if (!path.isEmpty()) openFile(path);
           });
@@ -101,11 +101,23 @@ void MainWindow::createActions() {
   dark->setCheckable(true);
   connect(dark, &QAction::toggled, this, &MainWindow::setDarkPalette);
 
+  QAction* detach = makeAction("detachablePanels", tr("&Detachable Panels"), QKeySequence(),
+                               tr("Let the panels float out of the window"));
+  detach->setCheckable(true);
+  connect(detach, &QAction::toggled, this, [this](bool on) {
+    for (QDockWidget* d : findChildren<QDockWidget*>())
+      d->setFeatures(d->features().setFlag(QDockWidget::DockWidgetFloatable, on));
+  });
+
   // Animation
   QAction* play =
       makeAction("play", tr("&Play"), QKeySequence(tr("Space")), tr("Play or pause the animation"));
   play->setCheckable(true);
-  connect(play, &QAction::triggered, this, [this](bool on) { animator_->setPlaying(on); });
+  connect(play, &QAction::triggered, this, [this, play](bool on) {
+    animator_->setPlaying(on);
+    // A refused start leaves the button unchecked (checked, the next press would pause).
+    play->setChecked(animator_->playing());
+  });
   connect(makeAction("stepForward", tr("Step &Forward"), QKeySequence(tr("Right")),
                      tr("Turn the crank one increment forward")),
           &QAction::triggered, this, [this] { animator_->step(+1); });
@@ -176,8 +188,8 @@ void MainWindow::createMenus() {
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (const char* a : {"fit", "zoomIn", "zoomOut", "actualSize"}) view->addAction(action(a));
   view->addSeparator();
-  for (const char* a :
-       {"showGrid", "showCentres", "showTraces", "showExtremes", "showTransmission", "darkPalette"})
+  for (const char* a : {"showGrid", "showCentres", "showTraces", "showExtremes", "showTransmission",
+                        "darkPalette", "detachablePanels"})
     view->addAction(action(a));
   view->addSeparator();
   for (const char* d : {"properties", "centres", "plots", "designChecks"})

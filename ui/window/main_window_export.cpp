@@ -21,10 +21,11 @@ namespace linkage::ui {
 
 namespace {
 
-QString suggested(const Document& d, const QString& suffix) {
+// Beside the mechanism's file (MainWindow::fileFolder), named after it.
+QString suggested(const QString& folder, const Document& d, const QString& suffix) {
   QString base = d.displayName();
   base.remove(QStringLiteral(".linkage.json"));
-  return QDir::home().filePath(base + suffix);
+  return QDir(folder).filePath(base + suffix);
 }
 
 }  // namespace
@@ -53,9 +54,9 @@ void MainWindow::exportMotionTable() {
   connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
   connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
   if (dialog.exec() != QDialog::Accepted) return;
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export Motion Table"),
-                                                    suggested(*doc_, QStringLiteral(".csv")),
-                                                    tr("CSV tables (*.csv)"));
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Motion Table"), suggested(fileFolder(), *doc_, QStringLiteral(".csv")),
+      tr("CSV tables (*.csv)"));
   if (path.isEmpty()) return;
   QString why;
   if (!linkage::ui::exportMotionTable(
@@ -66,9 +67,9 @@ void MainWindow::exportMotionTable() {
 }
 
 void MainWindow::exportFigure() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export Plot Figure"),
-                                                    suggested(*doc_, QStringLiteral(".svg")),
-                                                    tr("SVG (*.svg);;PDF (*.pdf);;PNG (*.png)"));
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Plot Figure"), suggested(fileFolder(), *doc_, QStringLiteral(".svg")),
+      tr("SVG (*.svg);;PDF (*.pdf);;PNG (*.png)"));
   if (path.isEmpty()) return;
   QString why;
   if (!plots_->exportFigure(path, QSize(1200, 900), &why))

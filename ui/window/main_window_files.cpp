@@ -4,11 +4,15 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFileSystemWatcher>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
+#include <QTimer>
 
 #include "canvas/canvas_view.h"
+#include "document/autosave.h"
+#include "document/commands.h"
 #include "document/document.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
@@ -19,6 +23,7 @@ namespace linkage::ui {
 namespace {
 constexpr int kMaxRecent = 10;
 const char* kRecentKey = "recentFiles";
+const char* kLastFolderKey = "lastFolder";
 }  // namespace
 
 bool MainWindow::openFile(const QString& path, QString* error) {
@@ -31,6 +36,7 @@ bool MainWindow::openFile(const QString& path, QString* error) {
     return false;
   }
   addRecent(QFileInfo(path).absoluteFilePath());
+  watchFile();
   view_->fitToMechanism();
   return true;
 }
@@ -58,6 +64,68 @@ bool MainWindow::openNameOrPath(const QString& arg, QString* error) {
   return openExample(arg, error);
 }
 
+void MainWindow::openRecovered(const Recovery& r) {
+  // The file as it is (or nothing, when there is none), then the recovered design as one edit:
+  // unsaved, and undone back to the file.
+  LoadResult file = r.path.isEmpty() ? LoadResult{} : loadMechanismFile(r.path.toStdString());
+  if (file.mechanism) {
+    doc_->setContents(std::move(*file.mechanism), r.path);
+  } else {
+    Mechanism none;
+    none.name = r.design.name;
+    none.addBody("ground", true);
+    doc_->setContents(std::move(none), QString(), r.title);
+  }
+  watchFile();
+  editDesign(doc_, tr("Recover unsaved work"), r.design);
+  view_->fitToMechanism();
+  autosave_->saveNow();
+}
+
+namespace {
+QByteArray contentsOf(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+}  // namespace
+
+void MainWindow::watchFile() {
+  if (!watcher_) {
+    watcher_ = new QFileSystemWatcher(this);
+    // Queued: a program writing the file in steps has finished by the time it is read.
+    connect(watcher_, &QFileSystemWatcher::fileChanged, this,
+            [this] { QTimer::singleShot(200, this, &MainWindow::fileChangedOnDisk); });
+  }
+  if (!watched_.isEmpty()) watcher_->removePath(watched_);
+  watched_ = doc_->filePath();
+  onDisk_ = watched_.isEmpty() ? QByteArray() : contentsOf(watched_);
+  if (!watched_.isEmpty()) watcher_->addPath(watched_);
+}
+
+void MainWindow::fileChangedOnDisk() {
+  if (watched_.isEmpty() || watched_ != doc_->filePath() || asking_) return;
+  // A file replaced by a rename (as editors and this program save) is watched anew.
+  if (!watcher_->files().contains(watched_) && QFileInfo::exists(watched_))
+    watcher_->addPath(watched_);
+  const QByteArray now = contentsOf(watched_);
+  if (now == onDisk_ || !QFileInfo::exists(watched_)) return;
+  asking_ = true;
+  const auto answer = QMessageBox::question(
+      this, tr("File Changed"),
+      tr("\"%1\" was changed on disk by another program.%2 Reload it?")
+          .arg(QFileInfo(watched_).fileName(),
+               doc_->isModified() ? tr(" Reloading it drops the changes made here.") : QString()),
+      QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+  asking_ = false;
+  if (answer == QMessageBox::Yes) {
+    QString why;
+    if (!openFile(watched_, &why)) QMessageBox::critical(this, tr("Cannot Reload"), why);
+  } else {
+    onDisk_ = now;  // asked once for this change
+    showMessage(tr("%1 differs from the file on disk").arg(doc_->displayName()), true);
+  }
+}
+
 bool MainWindow::maybeSave() {
   if (!doc_->isModified()) return true;
   const auto answer = QMessageBox::warning(
@@ -75,14 +143,15 @@ bool MainWindow::save() {
     QMessageBox::critical(this, tr("Cannot Save"), why);
     return false;
   }
+  watchFile();
   return true;
 }
 
 bool MainWindow::saveAs() {
   QString start = doc_->filePath();
   if (start.isEmpty())
-    start = QDir::home().filePath(doc_->displayName().replace(' ', '-') +
-                                  QStringLiteral(".linkage.json"));
+    start = QDir(fileFolder())
+                .filePath(doc_->displayName().replace(' ', '-') + QStringLiteral(".linkage.json"));
   QFileDialog dialog(this, tr("Save Mechanism As"), start,
                      tr("Mechanisms (*.linkage.json);;All files (*)"));
   dialog.setAcceptMode(QFileDialog::AcceptSave);
@@ -95,11 +164,19 @@ bool MainWindow::saveAs() {
     return false;
   }
   addRecent(QFileInfo(path).absoluteFilePath());
+  watchFile();
   return true;
+}
+
+QString MainWindow::fileFolder() const {
+  if (!doc_->filePath().isEmpty()) return QFileInfo(doc_->filePath()).absolutePath();
+  const QString last = QSettings().value(kLastFolderKey).toString();
+  return !last.isEmpty() && QFileInfo(last).isDir() ? last : QDir::homePath();
 }
 
 void MainWindow::addRecent(const QString& path) {
   QSettings s;
+  s.setValue(kLastFolderKey, QFileInfo(path).absolutePath());
   QStringList files = s.value(kRecentKey).toStringList();
   files.removeAll(path);
   files.prepend(path);

@@ -76,4 +76,18 @@ PoseEdit editAtPose(const Kinematics& current, Mechanism next);
 // The points pinned to `p` (and theirs, transitively), `p` included: one place in the drawing.
 std::vector<PointId> pinnedTogether(const Mechanism& m, PointId p);
 
+// Typed dimensions (the drawing, sketch coordinates; the points pinned to a moved point move
+// with it). A body's side lengths: a bar's one, a triangle's three (its points in file order
+// P0, P1, P2: |P0P1|, |P1P2|, |P0P2|). P0 stays, P1 keeps its direction from P0, P2 keeps its
+// side of the line P0P1; refused with `why` when a length is not positive and finite or the
+// three do not make a triangle, or the body has not two or three points.
+bool setSideLengths(Mechanism& m, BodyId body, const std::vector<double>& lengths,
+                    std::string* why = nullptr);
+// The sides as setSideLengths takes them (empty for a body of another number of points).
+std::vector<double> sideLengths(const Mechanism& m, BodyId body);
+// Point p placed `distance` from point `from` at `angleDeg` (counter-clockwise from +x); refused
+// for a distance not positive and finite, an angle not finite, or p == from.
+bool setPolar(Mechanism& m, PointId p, PointId from, double distance, double angleDeg,
+              std::string* why = nullptr);
+
 }  // namespace linkage

@@ -1,0 +1,252 @@
+// What the editor shows is what the solver determined, and nothing else: no motion of a
+// mechanism the driver does not determine, no state left over from another design, no number
+// made of rounding, no window stretched by a number, the history naming what was moved.
+#include <gtest/gtest.h>
+
+#include "ui_test.h"
+
+#include <QDockWidget>
+#include <QLabel>
+#include <QLineEdit>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QUndoStack>
+
+#include "animation/animator.h"
+#include "canvas/canvas_scene.h"
+#include "canvas/canvas_view.h"
+#include "centres/centres_panel.h"
+#include "document/commands.h"
+#include "document/document.h"
+#include "document/shown_numbers.h"
+#include "drawing.h"
+#include "linkage/edits.h"
+#include "linkage/io/model_file.h"
+#include "plots/curve_set.h"
+#include "plots/plots_panel.h"
+#include "properties/inspector_panel.h"
+#include "properties/properties_panel.h"
+#include "tools/selection.h"
+#include "tools/toolbox.h"
+#include "window/main_window.h"
+#include "window/message_strip.h"
+
+namespace linkage::ui {
+namespace {
+
+JointId jointBetween(const Mechanism& m, const char* a, const char* b) {
+  const PointId pa = *m.findPoint(a), pb = *m.findPoint(b);
+  for (const Joint& j : m.joints)
+    if ((j.a == pa && j.b == pb) || (j.a == pb && j.b == pa)) return j.id;
+  return {};
+}
+
+// The four-bar with the coupler's pin to the rocker deleted: coupler and rocker hang free, two
+// degrees of freedom the driver does not determine.
+void deleteCouplerPin(MainWindow& w) {
+  w.selection()->add(jointBetween(w.document()->design(), "coupler.B", "rocker.B"));
+  w.toolbox()->deleteSelection();
+  QApplication::processEvents();
+  ASSERT_TRUE(w.document()->solved());
+  ASSERT_EQ(w.document()->kinematics().structure().freeAfterDriver, 2);
+}
+
+TEST(Displays, UndeterminedMotionShowsNoNumbersButWhy) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  w.action("showTraces")->setChecked(true);
+  QApplication::processEvents();
+  const QTableWidget* t = w.inspector()->motionTable();
+  ASSERT_EQ(t->rowCount(), 1);
+  ASSERT_FALSE(w.scene()->traceItems()[0]->path().isEmpty());
+  EXPECT_TRUE(t->item(0, 2)->text().contains(QLatin1Char(','))) << t->item(0, 2)->text();
+  deleteCouplerPin(w);
+
+  // The output points' table: no position, velocity or acceleration; the reason under it.
+  ASSERT_EQ(t->rowCount(), 1);
+  EXPECT_EQ(t->item(0, 0)->text(), "coupler.P");
+  for (int c = 1; c < 4; ++c) EXPECT_EQ(t->item(0, c)->text(), "not determined");
+  EXPECT_TRUE(w.inspector()->noteText().contains("coupler.P is not determined by the driver"))
+      << w.inspector()->noteText();
+  // No traced path.
+  ASSERT_EQ(w.scene()->traceItems().size(), 1u);
+  EXPECT_TRUE(w.scene()->traceItems()[0]->path().isEmpty());
+  // No animation, no steps: the crank stays and the message says why.
+  const double deg = w.document()->crankDeg();
+  w.action("play")->trigger();
+  EXPECT_FALSE(w.animator()->playing());
+  EXPECT_TRUE(w.messageStrip()->message().startsWith("Cannot play: the motion is not determined"))
+      << w.messageStrip()->message();
+  EXPECT_FALSE(w.action("play")->isChecked());
+  w.action("stepForward")->trigger();
+  EXPECT_EQ(w.document()->crankDeg(), deg);
+  EXPECT_TRUE(w.messageStrip()->message().contains("not determined"));
+  // The plot of the point: no curve, the reason.
+  w.dock("plots")->show();
+  QApplication::processEvents();
+  ASSERT_NE(w.plots()->curves(0), nullptr);
+  EXPECT_TRUE(w.plots()->curves(0)->empty());
+  EXPECT_TRUE(
+      QString::fromStdString(w.plots()->curves(0)->status().message).contains("not determined"));
+  EXPECT_TRUE(w.plots()->cursorText().contains(QString::fromUtf8("vy — mm/s")))
+      << w.plots()->cursorText();
+  shot(&w, "undetermined");
+}
+
+TEST(Displays, UndeterminedPointHasNoVelocityChainNorCentres) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  w.dock("centres")->raise();
+  w.action("showCentres")->setChecked(true);
+  QTest::qWait(20);
+  ASSERT_TRUE(w.centresPanel()->chain().has_value());
+  const size_t drawn = w.scene()->drawing().centres.size();
+  deleteCouplerPin(w);
+  QTest::qWait(20);
+  EXPECT_FALSE(w.centresPanel()->chain().has_value());
+  EXPECT_TRUE(w.centresPanel()->chainText().isEmpty());
+  // The chain's words say why (the point is chosen still).
+  const QTableWidget* t = w.centresPanel()->table();
+  bool any = false;
+  for (int r = 0; r < t->rowCount(); ++r) {
+    const QString bodies = t->item(r, 1)->text();
+    if (!bodies.contains("coupler") && !bodies.contains("rocker")) continue;
+    any = true;
+    EXPECT_EQ(t->item(r, 2)->text(), QStringLiteral("\u2013")) << bodies.toStdString();
+    EXPECT_TRUE(t->item(r, 5)->text().startsWith("not determined")) << bodies.toStdString();
+  }
+  EXPECT_TRUE(any);
+  // On the canvas only the centres of the crank and the ground: 1,2.
+  EXPECT_LT(w.scene()->centresItem()->centres().size(), drawn);
+  for (const Drawing::Centre& c : w.scene()->centresItem()->centres())
+    EXPECT_TRUE(c.i <= 2 && c.j <= 2) << c.i << "," << c.j;
+}
+
+TEST(Displays, FitOfAnUndeterminedMechanismShowsItWhereItIs) {
+  // The Wanzer with its needle bar's pin deleted: the free bodies' sweep wandered 30 m.
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "wanzer-inversion-2"));
+  const double fitted = w.canvas()->zoom();
+  w.selection()->add(w.document()->design().joints[2].id);
+  w.toolbox()->deleteSelection();
+  QApplication::processEvents();
+  ASSERT_GT(w.document()->kinematics().structure().freeAfterDriver, 0);
+  w.action("fit")->trigger();
+  const QRectF r = w.scene()->mechanismRect();
+  EXPECT_LT(std::max(r.width(), r.height()), 400) << r.width() << " x " << r.height();
+  EXPECT_GT(w.canvas()->zoom(), fitted / 2);
+}
+
+TEST(Displays, UndoOfAStartAngleBeyondReachLeavesTheDesignSolved) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  const int width = w.width();
+  // Typed: refused, with the reason, the field as it was.
+  auto* f = qobject_cast<QLineEdit*>(w.properties()->field(QStringLiteral("Start angle [\u00b0]")));
+  ASSERT_NE(f, nullptr);
+  f->setFocus();
+  f->setText("1e300");
+  QTest::keyClick(f, Qt::Key_Return);
+  EXPECT_EQ(f->text(), "0");
+  EXPECT_TRUE(w.messageStrip()->message().contains("between -3600 and 3600"))
+      << w.messageStrip()->message();
+  EXPECT_EQ(w.document()->undoStack()->count(), 0);
+  // In a design (a file, a script): undone, then Home: solved, playing, stepping.
+  Mechanism m = w.document()->design();
+  m.driver->startDeg = 1e300;
+  editDesign(w.document(), "start", m);
+  QApplication::processEvents();
+  EXPECT_EQ(w.width(), width);
+  w.action("undo")->trigger();
+  w.action("toStart")->trigger();
+  QApplication::processEvents();
+  EXPECT_TRUE(w.document()->solved()) << w.document()->solveStatus().message;
+  EXPECT_FALSE(w.inspector()->summaryText().contains("Not solved"));
+  EXPECT_EQ(w.document()->crankDeg(), 0);
+  w.action("stepForward")->trigger();
+  EXPECT_EQ(w.document()->crankDeg(), 1);
+  w.action("play")->trigger();
+  EXPECT_TRUE(w.animator()->playing());
+  w.animator()->setPlaying(false);
+  // No message, however long its number, widens the window.
+  w.messageStrip()->setMessage(QString(300, QLatin1Char('9')), true);
+  QApplication::processEvents();
+  EXPECT_EQ(w.width(), width);
+  EXPECT_LE(w.minimumSizeHint().width(), width);
+}
+
+TEST(Displays, AFileThatCannotBeSolvedLeavesNoVelocityChainBehind) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  w.dock("centres")->raise();
+  QTest::qWait(20);
+  ASSERT_TRUE(w.centresPanel()->chainText().contains("mm/s"));
+  // The same four-bar with a coupler too short to close: 1 mm, with a rocker of 51 mm, 53 mm
+  // from the crank pin.
+  Mechanism m = w.document()->design();
+  m.point(*m.findPoint("coupler.B"))->pos = Vec2(11, 17.320508075688775);
+  QTemporaryDir dir;
+  const QString path = dir.filePath("short.linkage.json");
+  ASSERT_TRUE(saveMechanismFile(m, path.toStdString()).ok);
+  QString why;
+  ASSERT_TRUE(w.openFile(path, &why)) << why.toStdString();
+  QTest::qWait(20);
+  ASSERT_FALSE(w.document()->solved());
+  EXPECT_EQ(w.centresPanel()->table()->rowCount(), 0);
+  EXPECT_FALSE(w.centresPanel()->chain().has_value());
+  EXPECT_FALSE(w.centresPanel()->chainText().contains("mm/s"));
+  w.dock("properties")->raise();
+  QTest::qWait(20);
+  EXPECT_EQ(w.inspector()->motionTable()->rowCount(), 0);
+  EXPECT_TRUE(w.inspector()->noteText().startsWith("Not solved"));
+}
+
+TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {
+  EXPECT_EQ(fixedText(-1e-9, 3), "0.000");
+  EXPECT_EQ(fixedText(-0.0, 3), "0.000");
+  EXPECT_EQ(fixedText(-0.0006, 3), "-0.001");
+  EXPECT_EQ(fixedText(NAN, 3), QStringLiteral("\u2013"));
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  w.dock("plots")->show();
+  // The rocker's pivot: fixed, its velocity computed through the turning rocker.
+  CurveRequest r = w.plots()->request();
+  r.target = "rocker.O4";
+  w.plots()->setRequest(r);
+  QTest::qWait(60);
+  const CurveSet* set = w.plots()->curves(0);
+  ASSERT_NE(set, nullptr);
+  for (Order o : {Order::Velocity, Order::Acceleration})
+    for (double v : set->curve(o).values) ASSERT_EQ(v, 0.0);
+  EXPECT_EQ(set->extremes(Order::Velocity).max.value, 0.0);
+  // A moving point's curve keeps its small values (no flattening of a real signal).
+  r.target = "coupler.P";
+  w.plots()->setRequest(r);
+  QTest::qWait(60);
+  int nonzero = 0;
+  for (double v : w.plots()->curves(0)->curve(Order::Velocity).values) nonzero += v != 0;
+  EXPECT_GT(nonzero, 300);
+  // The inspector prints no "-0.000".
+  Mechanism m = w.document()->design();
+  toggleOutput(m, *m.findPoint("rocker.O4"));
+  editDesign(w.document(), "output", m);
+  QApplication::processEvents();
+  const QTableWidget* t = w.inspector()->motionTable();
+  ASSERT_EQ(t->rowCount(), 2);
+  EXPECT_EQ(t->item(1, 2)->text(), "0.000, 0.000");
+  EXPECT_EQ(t->item(1, 3)->text(), "0.000, 0.000");
+}
+
+TEST(Displays, TheHistoryNamesTheDraggedPoint) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  test::Draw d{w};
+  const Vec2 p =
+      w.document()->kinematics().position(*w.document()->design().findPoint("coupler.P"));
+  d.drag(p.x(), p.y(), p.x() + 5, p.y() + 3, Qt::ControlModifier);
+  ASSERT_EQ(w.document()->undoStack()->count(), 1);
+  EXPECT_EQ(w.document()->undoStack()->text(0), "Move coupler.P");
+}
+
+}  // namespace
+}  // namespace linkage::ui

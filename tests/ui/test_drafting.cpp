@@ -1,0 +1,212 @@
+// Drafting comfort: tool keys where a user means them, the start angle's meaning shown, file
+// dialogs beside the file.
+#include <gtest/gtest.h>
+
+#include "ui_test.h"
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "canvas/canvas_view.h"
+#include "dialogs.h"
+#include "document/document.h"
+#include "drawing.h"
+#include "linkage/edits.h"
+#include "linkage/io/model_lookup.h"
+#include "plots/curve_set.h"
+#include "plots/plots_panel.h"
+#include "properties/properties_panel.h"
+#include "tools/selection.h"
+#include "tools/toolbox.h"
+#include "window/main_window.h"
+
+namespace linkage::ui {
+namespace {
+
+QLineEdit* fieldOf(MainWindow& w, const QString& label) {
+  return qobject_cast<QLineEdit*>(w.properties()->field(label));
+}
+
+TEST(Drafting, AToolKeyTypedInANumberFieldChoosesTheToolAndKeepsTheValue) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  const PointId p = *w.document()->design().findPoint("coupler.P");
+  w.selection()->add(p);
+  QLineEdit* x = fieldOf(w, "x [mm]");
+  ASSERT_NE(x, nullptr);
+  x->setFocus();
+  x->selectAll();
+  QTest::keyClicks(x, "-29.34");
+  QTest::keyClick(x, Qt::Key_L);  // meant for the Link tool
+  EXPECT_TRUE(w.action("tool:link")->isChecked());
+  EXPECT_TRUE(w.canvas()->hasFocus());
+  EXPECT_EQ(w.document()->design().point(p)->pos.x(), -29.34);
+  EXPECT_EQ(w.document()->undoStack()->count(), 1);
+  // A letter that is no shortcut is dropped, not typed into the number.
+  w.action("tool:select")->trigger();
+  x = fieldOf(w, "x [mm]");
+  x->setFocus();
+  x->selectAll();
+  QTest::keyClicks(x, "12q.5");
+  EXPECT_EQ(x->text(), "12.5");
+  QTest::keyClicks(x, "e1");  // an exponent stays a number
+  EXPECT_EQ(x->text(), "12.5e1");
+  QTest::keyClick(x, Qt::Key_Return);
+  EXPECT_EQ(w.document()->design().point(p)->pos.x(), 125);
+  // In a name, letters are the name's: no tool takes them.
+  QLineEdit* name = fieldOf(w, "Name");
+  name->setFocus();
+  name->selectAll();
+  QTest::keyClicks(name, "pl");
+  EXPECT_EQ(name->text(), "pl");
+  EXPECT_TRUE(w.action("tool:select")->isChecked());
+}
+
+TEST(Drafting, AStartAngleTurnsTheCrankThereAndSaysWhatItMeans) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  const BodyId crank = w.document()->design().bodyNamed("crank")->id;
+  QLineEdit* start = fieldOf(w, QStringLiteral("Start angle [\u00b0]"));
+  ASSERT_NE(start, nullptr);
+  EXPECT_FALSE(start->toolTip().isEmpty());
+  auto* meaning = qobject_cast<QLabel*>(w.properties()->field("Crank 0 is"));
+  ASSERT_NE(meaning, nullptr);
+  EXPECT_EQ(meaning->text(), "the drawing as it is");
+  start->setFocus();
+  start->selectAll();
+  QTest::keyClicks(start, "30");
+  QTest::keyClick(start, Qt::Key_Return);
+  // Crank angle 0, the disk 30 degrees on (counter-clockwise, its driving direction).
+  EXPECT_EQ(w.document()->crankDeg(), 0);
+  EXPECT_NEAR(w.document()->kinematics().bodyAngle(crank) * 180 / M_PI, 30, 1e-9);
+  EXPECT_EQ(w.properties()->field("Crank 0 is")
+                ? qobject_cast<QLabel*>(w.properties()->field("Crank 0 is"))->text()
+                : QString(),
+            QStringLiteral("the drawing turned 30\u00b0 counter-clockwise"));
+  // The drawing itself is as it was drawn.
+  EXPECT_EQ(w.document()->design().point(*w.document()->design().findPoint("crank.A"))->pos,
+            Vec2(10, 17.320508075688775));
+}
+
+TEST(Drafting, FileDialogsOpenBesideTheFile) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("m.linkage.json");
+  QFile::copy(QString::fromStdString(*resolveModel(
+                  "four-bar-crank-rocker", QApplication::applicationFilePath().toStdString())),
+              path);
+  MainWindow w;
+  ASSERT_TRUE(w.openFile(path));
+  EXPECT_EQ(w.fileFolder(), QFileInfo(path).absolutePath());
+  QString shown;
+  test::DialogAnswer answer;
+  answer.expect([&shown](QWidget* d) {
+    if (auto* f = qobject_cast<QFileDialog*>(d)) shown = f->directory().absolutePath();
+    static_cast<QDialog*>(d)->reject();
+  });
+  w.saveAs();
+  EXPECT_EQ(shown, QFileInfo(path).absolutePath());
+  // An example (untitled): where the last file was.
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
+  EXPECT_EQ(w.fileFolder(), QFileInfo(path).absolutePath());
+}
+
+void type(QLineEdit* field, const QString& text) {
+  field->setFocus();
+  field->selectAll();
+  QTest::keyClicks(field, text);
+  QTest::keyClick(field, Qt::Key_Return);
+}
+
+// The homework's triangle: sides typed, the mechanism re-solved at once.
+TEST(Drafting, APlateIsGivenByItsSideLengths) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  const Mechanism& m = w.document()->design();
+  const BodyId coupler = m.bodyNamed("coupler")->id;
+  w.selection()->add(coupler);
+  for (const char* side : {"Side AB [mm]", "Side BP [mm]", "Side AP [mm]"})
+    ASSERT_NE(fieldOf(w, side), nullptr) << side;
+  type(fieldOf(w, "Side BP [mm]"), "50");
+  type(fieldOf(w, "Side AP [mm]"), "40");
+  EXPECT_EQ(w.document()->undoStack()->count(), 2);
+  ASSERT_TRUE(w.document()->solved()) << w.document()->solveStatus().message;
+  const std::vector<double> sides = sideLengths(w.document()->design(), coupler);
+  EXPECT_NEAR(sides[1], 50, 1e-12);
+  EXPECT_NEAR(sides[2], 40, 1e-12);
+  // Solved: the moving plate has those sides where it is now.
+  const Kinematics& k = w.document()->kinematics();
+  auto at = [&](const char* p) { return k.position(*w.document()->design().findPoint(p)); };
+  EXPECT_NEAR((at("coupler.P") - at("coupler.A")).norm(), 40, 1e-9);
+  EXPECT_NEAR((at("coupler.P") - at("coupler.B")).norm(), 50, 1e-9);
+  EXPECT_EQ(fieldOf(w, "Side AP [mm]")->text(), "40");
+  // No triangle: refused, red, the value as it was.
+  type(fieldOf(w, "Side AP [mm]"), "500");
+  EXPECT_EQ(fieldOf(w, "Side AP [mm]")->text(), "40");
+  EXPECT_EQ(w.document()->undoStack()->count(), 2);
+}
+
+TEST(Drafting, APointIsPlacedByItsDistanceAndAngleFromAnother) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  const PointId p = *w.document()->design().findPoint("coupler.P");
+  const Vec2 a = w.document()->design().point(*w.document()->design().findPoint("coupler.A"))->pos;
+  w.selection()->add(p);
+  auto* from = qobject_cast<QComboBox*>(w.properties()->field("From"));
+  ASSERT_NE(from, nullptr);
+  EXPECT_EQ(from->currentText(), "A");
+  type(fieldOf(w, "Angle [\u00b0]"), "90");
+  type(fieldOf(w, "Distance [mm]"), "30");
+  EXPECT_EQ(w.document()->design().point(p)->pos, Vec2(a.x(), a.y() + 30));
+  EXPECT_TRUE(w.document()->solved());
+}
+
+TEST(Drafting, ASliderBlockIsSelectedByAClickAgainAndRenamed) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "slider-crank-22a-lambda-0.3"));
+  const BodyId block = w.document()->design().bodyNamed("needlebar")->id;
+  const Vec2 at =
+      w.document()->kinematics().position(*w.document()->design().findPoint("needlebar.B"));
+  test::Draw d{w};
+  d.click(at.x(), at.y());
+  EXPECT_EQ(w.selection()->joints.size(), 1u);  // first the pin
+  d.click(at.x(), at.y());
+  EXPECT_EQ(w.selection()->points.size(), 1u);  // then the point
+  d.click(at.x(), at.y());
+  ASSERT_EQ(w.selection()->bodies.size(), 1u);  // then the block
+  EXPECT_EQ(w.selection()->bodies[0], block);
+  EXPECT_TRUE(w.properties()->title().contains("needlebar"));
+  type(fieldOf(w, "Name"), "slider");
+  EXPECT_EQ(w.document()->design().body(block)->name, "slider");
+}
+
+TEST(Drafting, AnotherWindowIsComparedAtThePointChosen) {
+  MainWindow a;
+  ASSERT_TRUE(test::showExample(a, "four-bar-crank-rocker"));
+  auto* b = new MainWindow;
+  b->setAttribute(Qt::WA_DeleteOnClose, false);
+  ASSERT_TRUE(b->openExample("wanzer-inversion-2"));
+  a.dock("plots")->show();
+  a.plots()->setCompare(PlotsPanel::Compare::Overlay);
+  QTest::qWait(80);
+  // No point of the same name there: that mechanism's first output, not "no point".
+  ASSERT_NE(a.plots()->curves(1), nullptr);
+  EXPECT_EQ(a.plots()->curves(1)->request().target, "needlebar.G");
+  EXPECT_TRUE(a.plots()->curves(1)->status().ok()) << a.plots()->curves(1)->status().message;
+  // Another point chosen.
+  auto* against = a.plots()->findChild<QComboBox*>();
+  (void)against;
+  a.plots()->setComparisonTarget("triangle.G");
+  QTest::qWait(80);
+  EXPECT_EQ(a.plots()->curves(1)->request().target, "triangle.G");
+  EXPECT_TRUE(a.plots()->curves(1)->status().ok());
+  delete b;
+}
+
+}  // namespace
+}  // namespace linkage::ui

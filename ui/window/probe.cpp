@@ -1,0 +1,116 @@
+#include "window/probe.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QCryptographicHash>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSaveFile>
+#include <QTabBar>
+#include <QTableWidget>
+#include <QTextDocument>
+#include <QTimer>
+#include <QUndoStack>
+
+#include "animation/animator.h"
+#include "canvas/canvas_view.h"
+#include "centres/centres_panel.h"
+#include "document/document.h"
+#include "linkage/io/model_file.h"
+#include "plots/plots_panel.h"
+#include "properties/inspector_panel.h"
+#include "properties/properties_panel.h"
+#include "window/main_window.h"
+
+namespace linkage::ui {
+
+namespace {
+
+QString oneLine(QString s) {
+  s.replace(QLatin1Char('\n'), QLatin1Char(' '));
+  return s;
+}
+
+QString plain(const QString& rich) {
+  QTextDocument d;
+  d.setHtml(rich);
+  return oneLine(d.toPlainText());
+}
+
+void windowText(MainWindow* w, QStringList& out) {
+  out << QStringLiteral("title: ") + w->windowTitle();
+  out << QStringLiteral("size: %1x%2").arg(w->width()).arg(w->height());
+  out << QStringLiteral("zoom: %1").arg(w->canvas()->zoom());
+  // Where the drawing's origin is on the screen and pixels per mm (y up): what a script clicks
+  // a point of the mechanism by.
+  CanvasView* v = w->canvas();
+  const QPoint o = v->viewport()->mapToGlobal(v->mapFromScene(QPointF(0, 0)));
+  out << QStringLiteral("canvas: %1 %2 %3").arg(o.x()).arg(o.y()).arg(v->zoom(), 0, 'g', 12);
+  for (QTabBar* bar : w->findChildren<QTabBar*>())
+    for (int i = 0; i < bar->count(); ++i) {
+      const QPoint c = bar->mapToGlobal(bar->tabRect(i).center());
+      out << QStringLiteral("tab %1: %2 %3").arg(bar->tabText(i)).arg(c.x()).arg(c.y());
+    }
+  out << QStringLiteral("crank: %1").arg(w->document()->crankDeg());
+  out << QStringLiteral("solved: %1").arg(w->document()->solved() ? 1 : 0);
+  out << QStringLiteral("modified: %1").arg(w->document()->isModified() ? 1 : 0);
+  // The design as Save would write it, by its SHA-1: what a script compares files with.
+  const QByteArray design = QByteArray::fromStdString(serializeMechanism(w->document()->design()));
+  out << QStringLiteral("design: ") +
+             QString::fromLatin1(
+                 QCryptographicHash::hash(design, QCryptographicHash::Sha1).toHex());
+  out << QStringLiteral("playing: %1").arg(w->animator()->playing() ? 1 : 0);
+  QWidget* f = QApplication::focusWidget();
+  out << QStringLiteral("focus: ") + (f ? QString::fromLatin1(f->metaObject()->className()) : "");
+  for (const char* name : {"hint", "problem", "message"})
+    if (auto* l = w->findChild<QLabel*>(QString::fromLatin1(name)))
+      out << QString::fromLatin1(name) + ": " + (l->isVisible() ? oneLine(l->text()) : QString());
+  out << QStringLiteral("inspector: ") + plain(w->inspector()->summaryText());
+  const QTableWidget* t = w->inspector()->motionTable();
+  for (int r = 0; r < t->rowCount(); ++r) {
+    QStringList cells;
+    for (int c = 0; c < t->columnCount(); ++c)
+      cells << (t->item(r, c) ? t->item(r, c)->text() : "");
+    out << QStringLiteral("output: ") + cells.join(QStringLiteral(" | "));
+  }
+  out << QStringLiteral("outputs note: ") + oneLine(w->inspector()->noteText());
+  out << QStringLiteral("chain: ") + oneLine(w->centresPanel()->stepsText());
+  out << QStringLiteral("plots: ") + oneLine(w->plots()->cursorText());
+  out << QStringLiteral("properties: ") + plain(w->properties()->title());
+  for (QLineEdit* e : w->properties()->findChildren<QLineEdit*>()) {
+    const QString label = w->properties()->labelOf(e);
+    const QPoint c = e->mapToGlobal(e->rect().center());
+    out << QStringLiteral("field %1: %2").arg(label, e->text());
+    out << QStringLiteral("at field %1: %2 %3").arg(label).arg(c.x()).arg(c.y());
+  }
+  const QUndoStack* u = w->document()->undoStack();
+  for (int i = 0; i < u->count(); ++i) out << QStringLiteral("history: ") + u->text(i);
+}
+
+}  // namespace
+
+QString probeText() {
+  QStringList out;
+  for (MainWindow* w : MainWindow::windows()) {
+    out << QStringLiteral("window");
+    windowText(w, out);
+  }
+  return out.join(QLatin1Char('\n')) + QLatin1Char('\n');
+}
+
+void startProbeFromEnvironment() {
+  const QString path = qEnvironmentVariable("LINKAGE_PROBE");
+  if (path.isEmpty()) return;
+  auto* timer = new QTimer(qApp);
+  timer->setInterval(200);
+  QObject::connect(timer, &QTimer::timeout, qApp, [path] {
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) return;
+    f.write(probeText().toUtf8());
+    f.commit();
+  });
+  timer->start();
+}
+
+}  // namespace linkage::ui
