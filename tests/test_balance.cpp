@@ -52,6 +52,12 @@ TEST(Balance, FindsTheBerkofLowenCounterweightsOfAFourBar) {
   EXPECT_GT(r.peakBefore, 1);
   EXPECT_LT(r.peakAfter, 1e-9 * r.peakBefore);
   EXPECT_GE(r.gap(), -1e-12 * r.peakBefore);
+  // An editor's kinematics with accelerations off (no view shows them) balances the same.
+  Kinematics off = k;
+  off.setAccelerations(false);
+  const BalanceResult r2 = balanceShaking(off, opt);
+  ASSERT_TRUE(r2.status.ok()) << r2.status.message;
+  EXPECT_EQ(r2.counterweights[0].staticMoment, r.counterweights[0].staticMoment);
   // The balanced design, as --out writes it, shakes no more than that.
   addCounterweights(m, r.counterweights);
   Kinematics b = loaded(m);

@@ -386,6 +386,11 @@ TEST(Dynamics, SamplesCoverWholeTurnsAndStopWhereTheCrankCannotPass) {
     EXPECT_LT(std::abs(s.driverTorqueNm[i] - s.driverTorqueNm[i + 72]),
               1e-9 * (1 + std::abs(s.driverTorqueNm[i])));
   EXPECT_EQ(k.crankDeg(), before) << "the caller's kinematics is not moved";
+  // An editor's kinematics with accelerations switched off samples the same.
+  k.setAccelerations(false);
+  const ForceSamples off = sampleForces(k, 72, 2, 300);
+  ASSERT_TRUE(off.complete) << off.status.message;
+  EXPECT_EQ(off.driverTorqueNm, s.driverTorqueNm);
 
   // A crank-rocker drawn too long to turn (non-Grashof: 30 + 60 > 45 + 50) stops on its way.
   const test::FourBar fb = test::fourBar(60, 45, 30, 50, 60);

@@ -33,7 +33,9 @@ struct Peak {
 
 class Balancer {
  public:
-  Balancer(const Kinematics& k, const BalanceOptions& opt) : work_(k), opt_(opt) {}
+  Balancer(const Kinematics& k, const BalanceOptions& opt) : work_(k), opt_(opt) {
+    work_.setAccelerations(true);  // an editor may have them off while no view shows them
+  }
 
   BalanceResult run();
 

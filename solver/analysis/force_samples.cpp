@@ -7,6 +7,7 @@ namespace linkage {
 ForceSamples sampleForces(const Kinematics& k, long long steps, double revs, double rpm) {
   ForceSamples out;
   Kinematics probe = k;
+  probe.setAccelerations(true);  // an editor may have them off while no view shows them
   if (rpm > 0) probe.setRpm(rpm);
   out.rpm = probe.valid() ? probe.rpm() : 0;
   out.steps = steps;
