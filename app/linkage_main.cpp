@@ -4,7 +4,8 @@
 //   linkage --screenshot OUT.png [FILE|EXAMPLE] [--angle DEG] [--ics] [--size WxH] [--dark]
 //   linkage --benchmark-frames N [FILE|EXAMPLE] [--ics] [--plots] [--size WxH]
 //   linkage --benchmark-drag N [FILE|EXAMPLE] [--ctrl] [--ics] [--plots] [--size WxH]
-//   (all three also [--extremes] [--transmission] [--checks]: the design checks)
+//   (all three also [--extremes] [--transmission] [--checks]: the design checks; [--forces]:
+//   the joint reactions and the force plots)
 //   linkage --version | --help
 #include <QApplication>
 #include <QCommandLineParser>
@@ -69,12 +70,14 @@ struct Options {
                                     QStringLiteral("Draw the extreme positions of the output.")};
   const QCommandLineOption transmission{QStringLiteral("transmission"),
                                         QStringLiteral("Show the transmission angles.")};
+  const QCommandLineOption forces{QStringLiteral("forces"),
+                                  QStringLiteral("Show the joint reactions and the force plots.")};
   const QCommandLineOption checks{QStringLiteral("checks"),
                                   QStringLiteral("Show the design-checks dock.")};
 
   void addTo(QCommandLineParser& cli) const {
     cli.addOptions({screenshot, bench, drag, ctrl, angle, ics, plots, size, dark, extremes,
-                    transmission, checks});
+                    transmission, checks, forces});
   }
 };
 
@@ -84,6 +87,7 @@ int runOffscreen(const QCommandLineParser& cli, const Options& opt, const QStrin
   o.model = model;
   o.screenshot = cli.value(opt.screenshot);
   o.ics = cli.isSet(opt.ics);
+  o.forces = cli.isSet(opt.forces);
   o.plots = cli.isSet(opt.plots);
   o.dark = cli.isSet(opt.dark);
   o.reshape = cli.isSet(opt.ctrl);

@@ -12,6 +12,7 @@
 #include "canvas/canvas_item.h"
 #include "canvas/centres_item.h"
 #include "canvas/chain_item.h"
+#include "canvas/dynamics_item.h"
 #include "canvas/joint_items.h"
 #include "document/document.h"
 #include "linkage/drawing.h"
@@ -40,6 +41,9 @@ class CanvasScene : public QGraphicsScene {
 
   void setCentresVisible(bool on);
   bool centresVisible() const { return centresVisible_; }
+  // Joint reactions at the pose (the masses, counterweights and loads are always drawn).
+  void setForcesVisible(bool on);
+  bool forcesVisible() const { return forcesVisible_; }
   void setTracesVisible(bool on);
   bool tracesVisible() const { return tracesVisible_; }
 
@@ -49,6 +53,7 @@ class CanvasScene : public QGraphicsScene {
   QRectF mechanismRect() const;
   CentresItem* centresItem() const { return centres_; }
   ChainItem* chainItem() const { return chain_; }
+  DynamicsItem* dynamicsItem() const { return dynamics_; }
   BodyItem* bodyItem(BodyId id) const;
 
   // What is drawn: the solver's mechanism at its pose, or the design as drawn when the solver
@@ -74,6 +79,7 @@ class CanvasScene : public QGraphicsScene {
   void updatePose();
   void updateTraces();
   void updateFlags();
+  void updateScale();
   std::vector<Drawing::Centre> determinedCentres(const Kinematics& k) const;
   void clearItems();
 
@@ -97,8 +103,10 @@ class CanvasScene : public QGraphicsScene {
   DriverItem* driver_ = nullptr;
   CentresItem* centres_ = nullptr;
   ChainItem* chain_ = nullptr;
+  DynamicsItem* dynamics_ = nullptr;
+  double mmPerN_ = 0;  // the reactions' scale, fixed per design
   std::vector<QGraphicsItem*> overlays_;
-  bool centresVisible_ = false, tracesVisible_ = false;
+  bool centresVisible_ = false, tracesVisible_ = false, forcesVisible_ = false;
   std::vector<QMetaObject::Connection> connections_;
 };
 

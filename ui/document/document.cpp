@@ -59,6 +59,7 @@ void Document::replace(DocumentState s, const QString& path, const QString& titl
   poseStatus_ = Status::success();
   undo_.clear();
   icFresh_ = false;
+  forcesFresh_ = forcesPrepared_ = false;
   emit designChanged();
   emit poseChanged();
   emit fileStateChanged();
@@ -89,6 +90,7 @@ void Document::setDesign(const Mechanism& m) {
   applyWants();
   poseStatus_ = Status::success();
   icFresh_ = false;
+  forcesFresh_ = forcesPrepared_ = false;
   emit designChanged();
   emit poseChanged();
 }
@@ -107,6 +109,7 @@ void Document::restore(const DocumentState& s) {
     if (poseStatus_.ok()) state_.kinematics = std::move(moved);
   }
   icFresh_ = false;
+  forcesFresh_ = forcesPrepared_ = false;
   emit designChanged();
   emit poseChanged();
 }
@@ -134,6 +137,7 @@ Status Document::setCrankDeg(double deg) {
     return Status::failure(StatusCode::BadModel, "the mechanism is not solved");
   poseStatus_ = state_.kinematics.moveTo(deg);
   icFresh_ = false;
+  forcesFresh_ = false;
   emit poseChanged();
   return poseStatus_;
 }
@@ -147,6 +151,7 @@ Kinematics::DragResult Document::dragTo(PointId p, const Vec2& target) {
   r = state_.kinematics.dragTo(p, target);
   poseStatus_ = r.status;
   icFresh_ = false;
+  forcesFresh_ = false;
   emit poseChanged();
   return r;
 }
@@ -156,9 +161,17 @@ void Document::setAccelerationsWanted(bool on) {
   applyWants();
 }
 
+void Document::setForcesWanted(bool on) {
+  wantForces_ = on;
+  applyWants();
+}
+
 void Document::applyWants() {
-  if (state_.kinematics.accelerations() != wantAccelerations_)
-    state_.kinematics.setAccelerations(wantAccelerations_);
+  const bool want = wantAccelerations_ || wantForces_;
+  if (state_.kinematics.accelerations() != want) {
+    state_.kinematics.setAccelerations(want);
+    forcesFresh_ = false;
+  }
 }
 
 const InstantCentres& Document::instantCentres() {
@@ -170,6 +183,31 @@ const InstantCentres& Document::instantCentres() {
   }
   icFresh_ = true;
   return icSolver_.compute(k);
+}
+
+const Forces& Document::forces() {
+  const Kinematics& k = state_.kinematics;
+  if (forcesFresh_ && forcesRevision_ == k.revision())
+    return forcesPrepared_ ? forceSolver_.result() : forcesRefused_;
+  forcesFresh_ = true;
+  // The masses and loads are the design's: the solver's mechanism is the design when solved.
+  if (const Status m = motionStatus(); !m.ok()) {
+    forcesPrepared_ = false;
+    forcesRefused_ = Forces{};
+    forcesRefused_.status = m;
+    return forcesRefused_;
+  }
+  if (!forcesPrepared_ || forcesRevision_ != k.revision()) {
+    const Status s = forceSolver_.prepare(k);
+    forcesRevision_ = k.revision();
+    forcesPrepared_ = s.ok();
+    if (!s.ok()) {
+      forcesRefused_ = Forces{};
+      forcesRefused_.status = s;
+      return forcesRefused_;
+    }
+  }
+  return forceSolver_.compute(k);
 }
 
 }  // namespace linkage::ui

@@ -12,6 +12,7 @@
 #include <QUndoStack>
 #include <optional>
 
+#include "linkage/dynamics.h"
 #include "linkage/instant_centres.h"
 #include "linkage/kinematics.h"
 #include "linkage/model.h"
@@ -84,6 +85,11 @@ class Document : public QObject {
 
   // Instant centres at the current pose, computed on first request after a change.
   const InstantCentres& instantCentres();
+  // Forces at the current pose (linkage/dynamics.h), computed on first request after a change;
+  // their status says why there are none (the motion not determined, no driver, a singular
+  // pose). A view that shows them says so first: they need the accelerations.
+  void setForcesWanted(bool on);
+  const Forces& forces();
 
  Q_SIGNALS:
   // The design changed (an edit, an undo, a file): items are rebuilt.
@@ -108,6 +114,11 @@ class Document : public QObject {
   std::uint64_t icRevision_ = 0;
   double icCrankDeg_ = NAN;
   bool icFresh_ = false;
+  bool wantForces_ = false;
+  ForceSolver forceSolver_;
+  Forces forcesRefused_;  // what forces() gives when the solver cannot prepare
+  std::uint64_t forcesRevision_ = 0;
+  bool forcesPrepared_ = false, forcesFresh_ = false;
 };
 
 }  // namespace linkage::ui

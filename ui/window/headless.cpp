@@ -136,6 +136,7 @@ int runHeadless(const HeadlessOptions& o) {
     return 2;
   }
   w.action("showCentres")->setChecked(o.ics);
+  w.action("showForces")->setChecked(o.forces);
   if (o.ics) w.dock("centres")->raise();
   w.dock("plots")->setVisible(o.plots);
   w.action("showExtremes")->setChecked(o.extremes);

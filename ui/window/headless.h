@@ -14,7 +14,7 @@ struct HeadlessOptions {
   int dragMoves = 0;     // mouse moves of a drag to measure, or 0
   bool reshape = false;  // the drag with Ctrl held: the design changes
   double angleDeg = 0;
-  bool ics = false, plots = false, dark = false;
+  bool ics = false, plots = false, dark = false, forces = false;
   // The design checks: extreme positions, transmission arcs, the design-checks dock.
   bool extremes = false, transmission = false, checks = false;
   QSize size{1280, 800};

@@ -405,6 +405,7 @@ void MainWindow::readSettings() {
   action("showGrid")->setChecked(s.value(QStringLiteral("grid"), true).toBool());
   action("showCentres")->setChecked(s.value(QStringLiteral("centres"), false).toBool());
   action("showTraces")->setChecked(s.value(QStringLiteral("traces"), true).toBool());
+  action("showForces")->setChecked(s.value(QStringLiteral("forces"), false).toBool());
   action("showExtremes")->setChecked(s.value(QStringLiteral("extremes"), false).toBool());
   action("showTransmission")->setChecked(s.value(QStringLiteral("transmission"), false).toBool());
   action("darkPalette")->setChecked(s.value(QStringLiteral("dark"), false).toBool());
@@ -424,6 +425,7 @@ void MainWindow::writeSettings() const {
   s.setValue(QStringLiteral("grid"), action("showGrid")->isChecked());
   s.setValue(QStringLiteral("centres"), action("showCentres")->isChecked());
   s.setValue(QStringLiteral("traces"), action("showTraces")->isChecked());
+  s.setValue(QStringLiteral("forces"), action("showForces")->isChecked());
   s.setValue(QStringLiteral("extremes"), action("showExtremes")->isChecked());
   s.setValue(QStringLiteral("transmission"), action("showTransmission")->isChecked());
   s.setValue(QStringLiteral("dark"), action("darkPalette")->isChecked());

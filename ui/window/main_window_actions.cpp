@@ -96,6 +96,11 @@ void MainWindow::createActions() {
                                tr("Show the paths of the output points over a revolution"));
   traces->setCheckable(true);
   connect(traces, &QAction::toggled, scene_, &CanvasScene::setTracesVisible);
+  QAction* forces =
+      makeAction("showForces", tr("&Forces"), QKeySequence(tr("Shift+F")),
+                 tr("Show each joint's reaction at this angle, on one scale for the whole turn"));
+  forces->setCheckable(true);
+  connect(forces, &QAction::toggled, scene_, &CanvasScene::setForcesVisible);
   QAction* dark = makeAction("darkPalette", tr("&Dark Palette"), QKeySequence(),
                              tr("Light text on a dark background, for every window"));
   dark->setCheckable(true);
@@ -188,8 +193,8 @@ void MainWindow::createMenus() {
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (const char* a : {"fit", "zoomIn", "zoomOut", "actualSize"}) view->addAction(action(a));
   view->addSeparator();
-  for (const char* a : {"showGrid", "showCentres", "showTraces", "showExtremes", "showTransmission",
-                        "darkPalette", "detachablePanels"})
+  for (const char* a : {"showGrid", "showCentres", "showTraces", "showForces", "showExtremes",
+                        "showTransmission", "darkPalette", "detachablePanels"})
     view->addAction(action(a));
   view->addSeparator();
   for (const char* d : {"properties", "centres", "plots", "designChecks"})

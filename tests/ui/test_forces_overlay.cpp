@@ -1,0 +1,140 @@
+// The forces on the canvas: the joint reactions drawn are the solver's at the pose, on one
+// scale for the whole turn; centres of mass and counterweights where the bodies carry them;
+// loads marked active or not by their window; and no arrow where the motion or a reaction is
+// not determined, but a sentence saying why.
+#include <gtest/gtest.h>
+
+#include "ui_test.h"
+
+#include "canvas/canvas_scene.h"
+#include "canvas/dynamics_marks.h"
+#include "document/commands.h"
+#include "document/document.h"
+#include "linkage/balance.h"
+#include "linkage/dynamics.h"
+#include "linkage/force_samples.h"
+#include "window/main_window.h"
+
+namespace linkage::ui {
+namespace {
+
+QPointF qt(const Vec2& v) {
+  return QPointF(v.x(), v.y());
+}
+
+double distance(const QPointF& a, const QPointF& b) {
+  return std::hypot(a.x() - b.x(), a.y() - b.y());
+}
+
+TEST(ForcesOverlay, ReactionsAreTheSolversOnOneScaleForTheTurn) {
+  MainWindow w;
+  w.resize(1200, 800);
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2-masses"));
+  Document* d = w.document();
+  CanvasScene* s = w.scene();
+  EXPECT_TRUE(s->dynamicsItem()->marks().reactions.empty());  // hidden: nothing computed
+  w.action("showForces")->setChecked(true);
+  ASSERT_TRUE(s->forcesVisible());
+  const double scale = s->dynamicsItem()->marks().mmPerN;
+  ASSERT_GT(scale, 0);
+  const ForceSamples turn = sampleForces(d->kinematics(), 72);
+  ASSERT_TRUE(turn.complete);
+  double most = 0;
+  for (const auto& joint : turn.reactionN)
+    for (const Vec2& f : joint) most = std::max(most, f.norm());
+  const QRectF extent = s->mechanismRect();
+  EXPECT_LE(most * scale, 0.25 * std::hypot(extent.width(), extent.height()) * 1.0001);
+  EXPECT_GT(most * scale, 0.05 * std::hypot(extent.width(), extent.height()));
+  for (double deg : {0.0, 47.0, 181.0, 300.0}) {
+    ASSERT_TRUE(d->setCrankDeg(deg).ok());
+    const Forces ref = computeForces(d->kinematics());
+    const DynamicsMarks& m = s->dynamicsItem()->marks();
+    EXPECT_EQ(m.mmPerN, scale) << "one scale for the turn";
+    ASSERT_EQ(m.reactions.size(), ref.joints.size());
+    for (size_t j = 0; j < ref.joints.size(); ++j) {
+      EXPECT_TRUE(m.reactions[j].determined);
+      EXPECT_LT(distance(m.reactions[j].forceN, qt(ref.joints[j].force)),
+                1e-12 * (1 + ref.joints[j].force.norm()));
+      EXPECT_LT(distance(m.reactions[j].at, qt(ref.joints[j].at)), 1e-9);
+    }
+    EXPECT_TRUE(m.legend.contains(QString::number(ref.driverTorqueNm, 'g', 3))) << m.legend;
+    // Each load by its window of crank angles.
+    const Mechanism& design = d->design();
+    ASSERT_EQ(m.loads.size(), design.loads.size());
+    for (size_t i = 0; i < design.loads.size(); ++i)
+      EXPECT_EQ(m.loads[i].active, design.loads[i].activeAt(deg)) << deg;
+  }
+  // Centres of mass where the solver moved them.
+  const Mechanism& design = d->design();
+  size_t massive = 0;
+  for (const Body& b : design.bodies)
+    if (!b.ground && b.mass && b.mass->kg > 0) {
+      const QPointF want = qt(d->kinematics().bodyTransform(b.id) * b.mass->com);
+      EXPECT_LT(distance(s->dynamicsItem()->marks().masses.at(massive).com, want), 1e-9);
+      ++massive;
+    }
+  EXPECT_EQ(s->dynamicsItem()->marks().masses.size(), massive);
+  w.action("showForces")->setChecked(false);
+  EXPECT_TRUE(s->dynamicsItem()->marks().reactions.empty());
+  EXPECT_TRUE(s->dynamicsItem()->marks().legend.isEmpty());
+}
+
+TEST(ForcesOverlay, CounterweightsOfABalanceAreDrawnOnTheirBodies) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("slider-crank-22a-masses"));
+  Document* d = w.document();
+  BalanceOptions opt;
+  for (const Body& b : d->design().bodies)
+    if (b.name == "crank") opt.bodies.push_back(b.id);
+  ASSERT_EQ(opt.bodies.size(), 1u);
+  const BalanceResult r = balanceShaking(d->kinematics(), opt);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  Mechanism m = d->design();
+  addCounterweights(m, r.counterweights);
+  commitEdit(d, QStringLiteral("Balance"), m);
+  ASSERT_TRUE(d->setCrankDeg(35).ok());
+  const Body* crank = d->design().body(opt.bodies[0]);
+  ASSERT_EQ(crank->mass->counterweights.size(), 1u);
+  bool found = false;
+  for (const DynamicsMarks::Mass& mark : w.scene()->dynamicsItem()->marks().masses)
+    if (mark.counterweights.size() == 1) {
+      found = true;
+      const Vec2 at = d->kinematics().bodyTransform(crank->id) * crank->mass->counterweights[0].at;
+      EXPECT_LT(distance(mark.counterweights[0], qt(at)), 1e-9);
+      EXPECT_EQ(mark.counterweightKg[0], crank->mass->counterweights[0].kg);
+    }
+  EXPECT_TRUE(found);
+}
+
+TEST(ForcesOverlay, NoArrowWhereNothingIsDeterminedButASentence) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2-masses"));
+  Document* d = w.document();
+  w.action("showForces")->setChecked(true);
+  // A pin taken out: bodies free with the crank held.
+  Mechanism m = d->design();
+  m.joints.erase(m.joints.begin() + 2);
+  commitEdit(d, QStringLiteral("Delete"), m);
+  const DynamicsMarks& marks = w.scene()->dynamicsItem()->marks();
+  EXPECT_TRUE(marks.reactions.empty());
+  EXPECT_TRUE(marks.legend.startsWith(QStringLiteral("Forces not shown"))) << marks.legend;
+  // No masses: every force is zero, and the window says what to do.
+  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
+  EXPECT_TRUE(w.scene()->dynamicsItem()->marks().reactions.empty());
+  EXPECT_TRUE(w.scene()->dynamicsItem()->marks().legend.startsWith(QStringLiteral("No masses")));
+}
+
+TEST(ForcesOverlay, TheScaleIsAOneTwoFiveStepOfNewtonsPerTenMillimetres) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("drop-feed"));
+  w.action("showForces")->setChecked(true);
+  const double perTen = 10 / w.scene()->dynamicsItem()->marks().mmPerN;
+  const double decade = std::pow(10.0, std::floor(std::log10(perTen) + 1e-12));
+  const double digit = perTen / decade;
+  EXPECT_TRUE(std::abs(digit - 1) < 1e-9 || std::abs(digit - 2) < 1e-9 ||
+              std::abs(digit - 5) < 1e-9)
+      << perTen;
+}
+
+}  // namespace
+}  // namespace linkage::ui
