@@ -6,6 +6,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QVBoxLayout>
 #include <cmath>
 
@@ -123,8 +124,10 @@ void PropertiesPanel::rebuild() {
           QStringLiteral("body %1%2 points").arg(b.value).arg(m.body(b)->ground ? " ground" : "");
       for (const Point& p : m.points)
         if (p.body == b) shape += QStringLiteral(" %1").arg(p.id.value);
+      shape += loadsShape(m, b, PointId{});
     } else if (!selection_->points.empty() && m.contains(selection_->points[0])) {
-      shape = QStringLiteral("point %1").arg(selection_->points[0].value);
+      shape = QStringLiteral("point %1").arg(selection_->points[0].value) +
+              loadsShape(m, BodyId{}, selection_->points[0]);
     } else if (!selection_->joints.empty() && m.contains(selection_->joints[0])) {
       const Joint* j = m.joint(selection_->joints[0]);
       shape = QStringLiteral("joint %1 type %2 at %3")
@@ -183,6 +186,14 @@ void PropertiesPanel::addChoice(const QString& label, QComboBox* box, std::funct
                      box->setCurrentIndex(current());
                    }});
   connect(box, &QComboBox::activated, this, std::move(activated));
+}
+
+void PropertiesPanel::addButton(const QString& label, const QString& text,
+                                std::function<void()> clicked) {
+  auto* button = new QPushButton(text);
+  form_->addRow(label, button);
+  rows_.push_back({label, button, [] {}});
+  connect(button, &QPushButton::clicked, this, std::move(clicked));
 }
 
 void PropertiesPanel::addCheck(const QString& label, const QString& text,

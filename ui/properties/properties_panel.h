@@ -56,6 +56,8 @@ class PropertiesPanel : public QWidget {
               QString* why);
   // The driver's speed, direction and start angle.
   void fillDriver();
+  // A button that acts at once (a dialog, typically).
+  void addButton(const QString& label, const QString& text, std::function<void()> clicked);
 
  Q_SIGNALS:
   void message(const QString& text, bool warning);
@@ -77,6 +79,12 @@ class PropertiesPanel : public QWidget {
   // A triangle's three sides; a point's distance and angle from another of its link.
   void fillTriangle(BodyId id);
   void fillPolar(PointId id);
+  // A body's mass, centre of mass, moment of inertia, counterweights (dynamics_forms.cpp); the
+  // loads on a body (torques) or at a point (forces).
+  void fillMass(BodyId id);
+  void fillLoads(BodyId body, PointId point);
+  void fillLoad(LoadId id, int number);
+  void estimateMass(BodyId id);
   void fillJoint(JointId id);
   void fillSlot(SlotId id);
   void fillSlotShape(SlotId id);
@@ -92,6 +100,10 @@ class PropertiesPanel : public QWidget {
   std::vector<Row> rows_;
   QString shape_;  // what the rows are for: rebuilt when it changes, refreshed otherwise
 };
+
+// What of the loads and counterweights a form's rows depend on (rows are made anew when it
+// changes): the loads on `body` (torques) or at `point`, and the body's counterweights.
+QString loadsShape(const Mechanism& m, BodyId body, PointId point);
 
 // The shortest decimal text that reads back as exactly v ("0.1", not "0.10000000000000001").
 QString exactText(double v);

@@ -9,6 +9,7 @@
 #include "linkage/edits.h"
 #include "linkage/elements.h"
 #include "tools/link_tool.h"
+#include "tools/selection.h"
 #include "tools/slot_tools.h"
 #include "tools/toolbox.h"
 
@@ -32,6 +33,16 @@ void Toolbox::pointMenu(QMenu& menu, const Point& point, const Vec2& at) {
     });
   for (const ElementUi* k : elementUis())
     if (k->pointMenu) k->pointMenu(*this, menu, id);
+  if (!m.body(point.body)->ground)
+    menu.addAction(tr("Add a Load Here"), this, [this, id, label] {
+      // 10 N downwards to start with: its numbers are edited in the Properties.
+      editWith(tr("Add a load at %1").arg(label), [&](Mechanism& n, std::string&) {
+        n.addLoad(Load{id, {}, Vec2(0, -10), 0, std::nullopt, std::nullopt, ""});
+        return true;
+      });
+      ctx_.selection->clear();
+      ctx_.selection->add(id);
+    });
   QAction* out = menu.addAction(tr("Output Point"), this, [doc, id, label] {
     Mechanism n = doc->design();
     toggleOutput(n, id);
@@ -58,6 +69,14 @@ void Toolbox::bodyMenu(QMenu& menu, const Body& body, const Vec2& at) {
   });
   for (const ElementUi* k : elementUis())
     if (k->bodyMenu) k->bodyMenu(*this, menu, id);
+  menu.addAction(tr("Add a Torque"), this, [this, id, name] {
+    editWith(tr("Add a torque on %1").arg(name), [&](Mechanism& n, std::string&) {
+      n.addLoad(Load{{}, id, Vec2::Zero(), 0.1, std::nullopt, std::nullopt, ""});
+      return true;
+    });
+    ctx_.selection->clear();
+    ctx_.selection->add(id);
+  });
   QAction* flip = menu.addAction(tr("Flip Assembly"), this, [this, doc, id] {
     QString why;
     if (!flipAssembly(doc, id, &why)) ctx_.message(tr("Cannot flip: %1").arg(why), true);

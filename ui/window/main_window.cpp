@@ -6,6 +6,7 @@
 #include <QDockWidget>
 #include <QGuiApplication>
 #include <QLabel>
+#include <QLayout>
 #include <QMenuBar>
 #include <QMimeData>
 #include <QScreen>
@@ -193,13 +194,18 @@ void MainWindow::createDocks() {
   scroll->setMinimumHeight(140);
   // The form whole when its rows change (up to 60 % of the dock; then it scrolls): it started
   // cut off behind the splitter, its last rows out of sight.
-  connect(properties_, &PropertiesPanel::rebuilt, this, [split, scroll, this] {
-    const int want = properties_->sizeHint().height() + 2 * scroll->frameWidth();
-    const int total = split->height();
-    if (total <= 0 || scroll->height() >= want) return;
-    const int form = std::min(want, total * 6 / 10);
-    split->setSizes({form, total - form});
-  });
+  // Queued: the new rows' layout gives its size once the event loop has run it.
+  connect(
+      properties_, &PropertiesPanel::rebuilt, this,
+      [split, scroll, this] {
+        properties_->layout()->activate();
+        const int want = properties_->sizeHint().height() + 2 * scroll->frameWidth();
+        const int total = split->height();
+        if (total <= 0 || scroll->height() >= want) return;
+        const int form = std::min(want, total * 6 / 10);
+        split->setSizes({form, total - form});
+      },
+      Qt::QueuedConnection);
   QDockWidget* p = addDock("properties", tr("Properties"), split, Qt::RightDockWidgetArea);
   centres_ = new CentresPanel;
   QDockWidget* c = addDock("centres", tr("Instant Centres"), centres_, Qt::RightDockWidgetArea);
