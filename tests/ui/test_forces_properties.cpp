@@ -45,7 +45,7 @@ QPushButton* buttonNamed(MainWindow& w, const QString& text) {
 QAction* menuEntry(MainWindow& w, const QString& text) {
   for (QMenu* menu : w.canvas()->findChildren<QMenu*>())
     for (QAction* a : menu->actions())
-      if (menu->isVisible() && a->text().startsWith(text)) return a;
+      if (menu->isVisible() && a->text().remove(QLatin1Char('&')).startsWith(text)) return a;
   return nullptr;
 }
 

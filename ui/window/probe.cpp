@@ -14,6 +14,7 @@
 #include <QUndoStack>
 
 #include "animation/animator.h"
+#include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
 #include "document/document.h"
@@ -77,6 +78,12 @@ void windowText(MainWindow* w, QStringList& out) {
   out << QStringLiteral("outputs note: ") + oneLine(w->inspector()->noteText());
   out << QStringLiteral("chain: ") + oneLine(w->centresPanel()->stepsText());
   out << QStringLiteral("plots: ") + oneLine(w->plots()->cursorText());
+  const DynamicsMarks& forces = w->scene()->dynamicsItem()->marks();
+  out << QStringLiteral("forces: ") + forces.legend;
+  out << QStringLiteral("dynamics: masses %1 loads %2 reactions %3")
+             .arg(forces.masses.size())
+             .arg(forces.loads.size())
+             .arg(forces.reactions.size());
   out << QStringLiteral("properties: ") + plain(w->properties()->title());
   for (QLineEdit* e : w->properties()->findChildren<QLineEdit*>()) {
     const QString label = w->properties()->labelOf(e);

@@ -4,7 +4,7 @@
 # a file that cannot be solved leaves no velocity chain behind; a pin deleted: no numbers, no
 # play, Fit stays at millimetres; a start angle of 1e300 refused without widening the window;
 # a fixed pivot's velocity 0.000, not -0.000; a Ctrl+drag named in the history.
-#   tests/x11/displays.sh path/to/linkage
+#   tests/x11/determined_displays.sh path/to/linkage
 set -euo pipefail
 linkage=$1
 examples="$(cd "$(dirname "$0")/../../resources/examples" && pwd)"

@@ -3,7 +3,7 @@
 # and the file saved holds it; "-29.34" then L typed in a point's x field commits -29.34 and
 # takes the Link tool; a slider block selected by clicking on it again and renamed. Checked
 # through the editor's probe and the saved files.
-#   tests/x11/drafting.sh path/to/linkage
+#   tests/x11/drafting_fields.sh path/to/linkage
 set -euo pipefail
 linkage=$1
 examples="$(cd "$(dirname "$0")/../../resources/examples" && pwd)"
