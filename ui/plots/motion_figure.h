@@ -72,7 +72,8 @@ class MotionFigure {
   // true when a label changed (the caller replots).
   bool fitLabels();
 
-  // The smallest and largest value of a row's curves (none yet: empty).
+  // The smallest and largest value of a row's curves (none yet: empty); public for the
+  // helpers of motion_figure.cpp that scale the curves.
   struct ValueRange {
     double lo = INFINITY, hi = -INFINITY;
   };
@@ -94,6 +95,7 @@ class MotionFigure {
   void addLegendEntries();
   // A row's value axes over its range, padded.
   void setValueRange(int row, ValueRange range);
+
   std::vector<std::pair<QString, QString>> labels_;  // long and short, per axis rect
   struct GraphSlot {
     QCPGraph* curve;
