@@ -166,20 +166,9 @@ int parseOptions(int argc, char** argv, PlotOptions& o) {
   return kOk;
 }
 
-}  // namespace
-
-int plot(int argc, char** argv) {
-  for (int i = 0; i < argc; ++i)
-    if (isHelp(argv[i])) {
-      std::cout << kHelp;
-      return kOk;
-    }
-  PlotOptions o;
-  if (int e = parseOptions(argc, argv, o); e != kOk) return e;
-
-  // Every model loaded and solved before any window system is touched.
-  std::vector<Kinematics> solved;
-  std::vector<std::string> names;
+// Loads and solves every model, each with the point plotted (by default the first model's first
+// output), checked to be one the driver moves; their names for the titles.
+int loadModels(PlotOptions& o, std::vector<Kinematics>& solved, std::vector<std::string>& names) {
   for (const std::string& model : o.models) {
     std::optional<Mechanism> m = openModel(model);
     if (!m) return kBadInput;
@@ -207,15 +196,11 @@ int plot(int argc, char** argv) {
     names.push_back(m->name.empty() ? model : m->name);
     solved.push_back(std::move(k));
   }
+  return kOk;
+}
 
-  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-  static int qtArgc = 1;
-  static char qtName[] = "linkage-cli";
-  static char* qtArgv[] = {qtName, nullptr};
-  QApplication app(qtArgc, qtArgv);
-
-  using ui::CurveRequest;
-  CurveRequest req;
+ui::CurveRequest curveRequest(const PlotOptions& o) {
+  ui::CurveRequest req;
   req.target = QString::fromStdString(o.point);
   req.component = o.along                      ? Quantity::Component::Along
                   : o.component == "x"         ? Quantity::Component::X
@@ -225,25 +210,32 @@ int plot(int argc, char** argv) {
   req.orders = {true, true, true, o.jerk};
   req.revs = static_cast<int>(o.revs);
   req.steps = static_cast<int>(o.steps);
-  std::vector<std::unique_ptr<ui::CurveSet>> sets;
-  std::vector<const ui::CurveSet*> shown;
+  return req;
+}
+
+// Every model's curves; a crank that cannot turn the whole way is reported and its exit status
+// returned (the figure still shows the curves up to there).
+int sampleCurves(const PlotOptions& o, const std::vector<Kinematics>& solved,
+                 const std::vector<std::string>& names,
+                 std::vector<std::unique_ptr<ui::CurveSet>>& sets) {
+  const ui::CurveRequest req = curveRequest(o);
   int status = kOk;
   for (size_t i = 0; i < solved.size(); ++i) {
     sets.push_back(
         std::make_unique<ui::CurveSet>(solved[i], req, QString::fromStdString(names[i])));
-    shown.push_back(sets.back().get());
     if (!sets.back()->status().ok()) {
       error(o.models[i] + ": " + sets.back()->status().message +
             " (the figure shows the curves up to there)");
       status = exitFor(sets.back()->status());
     }
   }
+  return status;
+}
 
-  QCustomPlot plot;
-  ui::MotionFigure figure(&plot);
+ui::MotionFigure::Options figureOptions(const PlotOptions& o, size_t models) {
   ui::MotionFigure::Options fo;
-  fo.layout = o.overlay || shown.size() == 1 ? ui::MotionFigure::Layout::Overlay
-                                             : ui::MotionFigure::Layout::SideBySide;
+  fo.layout = o.overlay || models == 1 ? ui::MotionFigure::Layout::Overlay
+                                       : ui::MotionFigure::Layout::SideBySide;
   fo.cursor = false;
   if (o.units == "m") {
     fo.units.velocity = ui::VelocityUnit::MetrePerSecond;
@@ -251,6 +243,14 @@ int plot(int argc, char** argv) {
   } else if (o.units == "g") {
     fo.units.acceleration = ui::AccelerationUnit::G;
   }
+  return fo;
+}
+
+// The figure of the curves written to --out, at --size or a size for the columns and rows.
+int writeFigure(const PlotOptions& o, const std::vector<const ui::CurveSet*>& shown) {
+  QCustomPlot plot;
+  ui::MotionFigure figure(&plot);
+  const ui::MotionFigure::Options fo = figureOptions(o, shown.size());
   const int columns =
       fo.layout == ui::MotionFigure::Layout::SideBySide ? static_cast<int>(shown.size()) : 1;
   const int w = o.width > 0 ? o.width : (columns == 1 ? 900 : 700 * columns);
@@ -262,6 +262,35 @@ int plot(int argc, char** argv) {
     error(err.toStdString());
     return kFailure;
   }
+  return kOk;
+}
+
+}  // namespace
+
+int plot(int argc, char** argv) {
+  for (int i = 0; i < argc; ++i)
+    if (isHelp(argv[i])) {
+      std::cout << kHelp;
+      return kOk;
+    }
+  PlotOptions o;
+  if (int e = parseOptions(argc, argv, o); e != kOk) return e;
+  // Every model loaded and solved before any window system is touched.
+  std::vector<Kinematics> solved;
+  std::vector<std::string> names;
+  if (int e = loadModels(o, solved, names); e != kOk) return e;
+
+  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  static int qtArgc = 1;
+  static char qtName[] = "linkage-cli";
+  static char* qtArgv[] = {qtName, nullptr};
+  QApplication app(qtArgc, qtArgv);
+
+  std::vector<std::unique_ptr<ui::CurveSet>> sets;
+  const int status = sampleCurves(o, solved, names, sets);
+  std::vector<const ui::CurveSet*> shown;
+  for (const auto& s : sets) shown.push_back(s.get());
+  if (int e = writeFigure(o, shown); e != kOk) return e;
   return status;
 }
 

@@ -105,6 +105,67 @@ Status follow(const InstantCentres& ics, const std::vector<int>& bodies, const B
 
 }  // namespace
 
+namespace {
+
+// The crank: the driven body pivoted to the ground, at the driver's speed and direction.
+Status startFromCrank(const Kinematics& k, const InstantCentres& ics, VelocityChain& ch) {
+  const Mechanism& m = k.mechanism();
+  const Joint* dj = m.driver ? m.joint(m.driver->joint) : nullptr;
+  if (!dj || kindOf(*dj).role != Role::Revolute || !m.point(dj->a) || !m.point(dj->b))
+    return fail(StatusCode::BadModel, "the mechanism has no driver to start the chain from");
+  const BodyId ground = ics.bodies[0];
+  const BodyId ba = m.point(dj->a)->body, bb = m.point(dj->b)->body;
+  const double sigma = m.driver->direction == Direction::Cw ? -1.0 : 1.0;
+  ch.crankMotion.kind = BodyMotion::Kind::Turns;
+  ch.crankMotion.pivot = k.position(dj->a);
+  if (ba == ground) {
+    ch.crank = ics.numberOf(bb);
+    ch.crankMotion.omega = sigma * k.omega();
+  } else if (bb == ground) {
+    ch.crank = ics.numberOf(ba);
+    ch.crankMotion.omega = -sigma * k.omega();
+  } else {
+    return fail(StatusCode::BadModel,
+                "the driver at " + jointLabel(m, dj->id) +
+                    " turns one moving body relative to another: the chain starts from a "
+                    "crank pivoted to the ground");
+  }
+  return Status::success();
+}
+
+// The bodies the chain goes through: the crank, those of `via`, the point's body.
+Status chainBodies(const InstantCentres& ics, const VelocityChain& ch, const std::vector<int>& via,
+                   std::vector<int>& bodies) {
+  bodies = {ch.crank};
+  for (int v : via) {
+    if (v == 1 || !ics.bodyNumbered(v))
+      return fail(StatusCode::BadModel, v == 1 ? "the chain cannot go through the ground (body 1)"
+                                               : "no body numbered " + std::to_string(v));
+    if (v == bodies.back())
+      return fail(StatusCode::BadModel, "body " + std::to_string(v) + " twice in a row");
+    bodies.push_back(v);
+  }
+  if (bodies.back() != ch.body) bodies.push_back(ch.body);
+  return Status::success();
+}
+
+// Follows the chain through `bodies`; where the direct step (no `via`) does not work here,
+// through the first intermediate body that does.
+Status followChain(const InstantCentres& ics, const std::vector<int>& bodies, bool direct,
+                   VelocityChain& ch) {
+  Status status = follow(ics, bodies, ch.crankMotion, ch.steps, ch.bodyMotion);
+  if (status.ok() || !direct) return status;
+  for (int n : ics.numbers) {
+    if (n == 1 || n == ch.crank || n == ch.body) continue;
+    if (follow(ics, {ch.crank, n, ch.body}, ch.crankMotion, ch.steps, ch.bodyMotion).ok())
+      return Status::success();
+  }
+  ch.steps.clear();
+  return status;
+}
+
+}  // namespace
+
 Vec2 BodyMotion::velocityAt(const Vec2& x) const {
   switch (kind) {
     case Kind::Turns:
@@ -131,8 +192,7 @@ VelocityChain velocityChain(const Kinematics& k, const InstantCentres& ics, Poin
                      "another crank angle than the kinematics: compute them again");
     return ch;
   }
-  const Mechanism& m = k.mechanism();
-  const Point* pt = m.point(point);
+  const Point* pt = k.mechanism().point(point);
   if (!pt) {
     ch.status = fail(StatusCode::BadModel, "unknown point");
     return ch;
@@ -140,66 +200,15 @@ VelocityChain velocityChain(const Kinematics& k, const InstantCentres& ics, Poin
   ch.body = ics.numberOf(pt->body);
   ch.position = k.position(point);
   if (k.derivativesValid()) ch.solverVelocity = k.velocity(point);
-
-  // The crank: the driven body pivoted to the ground, at the driver's speed and direction.
-  const Joint* dj = m.driver ? m.joint(m.driver->joint) : nullptr;
-  if (!dj || kindOf(*dj).role != Role::Revolute || !m.point(dj->a) || !m.point(dj->b)) {
-    ch.status = fail(StatusCode::BadModel, "the mechanism has no driver to start the chain from");
-    return ch;
-  }
-  const BodyId ground = ics.bodies[0];
-  const BodyId ba = m.point(dj->a)->body, bb = m.point(dj->b)->body;
-  const double sigma = m.driver->direction == Direction::Cw ? -1.0 : 1.0;
-  ch.crankMotion.kind = BodyMotion::Kind::Turns;
-  ch.crankMotion.pivot = k.position(dj->a);
-  if (ba == ground) {
-    ch.crank = ics.numberOf(bb);
-    ch.crankMotion.omega = sigma * k.omega();
-  } else if (bb == ground) {
-    ch.crank = ics.numberOf(ba);
-    ch.crankMotion.omega = -sigma * k.omega();
-  } else {
-    ch.status = fail(StatusCode::BadModel,
-                     "the driver at " + jointLabel(m, dj->id) +
-                         " turns one moving body relative to another: the chain starts from a "
-                         "crank pivoted to the ground");
-    return ch;
-  }
-
+  if (ch.status = startFromCrank(k, ics, ch); !ch.status.ok()) return ch;
   if (ch.body == 1) {
     ch.bodyMotion.kind = BodyMotion::Kind::AtRest;
     if (!via.empty()) ch.status = fail(StatusCode::BadModel, "the point is on the ground");
     return ch;
   }
-  std::vector<int> bodies{ch.crank};
-  for (int v : via) {
-    if (v == 1 || !ics.bodyNumbered(v)) {
-      ch.status =
-          fail(StatusCode::BadModel, v == 1 ? "the chain cannot go through the ground (body 1)"
-                                            : "no body numbered " + std::to_string(v));
-      return ch;
-    }
-    if (v == bodies.back()) {
-      ch.status = fail(StatusCode::BadModel, "body " + std::to_string(v) + " twice in a row");
-      return ch;
-    }
-    bodies.push_back(v);
-  }
-  if (bodies.back() != ch.body) bodies.push_back(ch.body);
-
-  ch.status = follow(ics, bodies, ch.crankMotion, ch.steps, ch.bodyMotion);
-  if (!ch.status.ok() && via.empty()) {
-    // The direct step does not work here: the first intermediate body that does.
-    for (int n : ics.numbers) {
-      if (n == 1 || n == ch.crank || n == ch.body) continue;
-      if (follow(ics, {ch.crank, n, ch.body}, ch.crankMotion, ch.steps, ch.bodyMotion).ok()) {
-        ch.status = Status::success();
-        break;
-      }
-    }
-    if (!ch.status.ok()) ch.steps.clear();
-  }
-  if (!ch.status.ok()) return ch;
+  std::vector<int> bodies;
+  if (ch.status = chainBodies(ics, ch, via, bodies); !ch.status.ok()) return ch;
+  if (ch.status = followChain(ics, bodies, via.empty(), ch); !ch.status.ok()) return ch;
   ch.velocity = ch.bodyMotion.velocityAt(ch.position);
   if (ch.bodyMotion.kind == BodyMotion::Kind::Turns)
     ch.arm = (ch.position - ch.bodyMotion.pivot).norm();

@@ -144,18 +144,9 @@ void type(MainWindow& w, const QString& label, const QString& text) {
   QTest::keyClick(f, Qt::Key_Return);
 }
 
-// The Wanzer needle bar, inversion 2, drawn with the tools (a disk with two slots, the
-// triangle, two slider blocks, the needle bar in a ground slot) and its exact dimensions typed
-// in: its motion equals the example file's.
-TEST(Draw, WanzerInversion2DrawnWithTheToolsMovesAsTheExample) {
-  MainWindow w;
-  w.resize(1300, 900);
-  w.show();
-  QApplication::processEvents();
-  w.canvas()->setZoom(3.5);
-  w.canvas()->centerOn(0, -35);
-  test::Draw d{w};
-  Document* doc = w.document();
+// The Wanzer needle bar's bodies drawn with the tools at about their places: a disk pinned to
+// the ground with two slots, the triangle with its points on them, the needle bar's guide.
+void drawWanzerSketch(test::Draw& d) {
   d.key("G");
   d.click(0, 0);  // ground point A
   d.key("T");
@@ -176,27 +167,34 @@ TEST(Draw, WanzerInversion2DrawnWithTheToolsMovesAsTheExample) {
   d.click(22.5, 10);  // on slot C's line: F
   d.click(0, -40);    // on the guide's line: G
   d.key(Qt::Key_Return);
-  shot(&w, "wanzer-drawn");
-  // Exact numbers: the slots' ends and the triangle's points.
-  auto select = [&](double x, double y) {
-    d.key("S");
-    d.click(x, y);
-  };
-  select(10, -15);
+}
+
+void selectAt(test::Draw& d, double x, double y) {
+  d.key("S");
+  d.click(x, y);
+}
+
+// Exact numbers: the slots' ends and the triangle's points.
+void typeWanzerDimensions(MainWindow& w, test::Draw& d) {
+  selectAt(d, 10, -15);
   type(w, "x0 [mm]", "10");
   type(w, "y0 [mm]", "-31");
   type(w, "x1 [mm]", "10");
   type(w, "y1 [mm]", "31");
-  select(-20, 10);
+  selectAt(d, -20, 10);
   type(w, "x0 [mm]", "-31");
   type(w, "x1 [mm]", "31");
-  select(10, 20);
+  selectAt(d, 10, 20);
   type(w, "y [mm]", "19.927945624162106");
-  select(22.5, 10);
+  selectAt(d, 22.5, 10);
   type(w, "x [mm]", "22.547346160988806");
-  select(0, -40);
+  selectAt(d, 0, -40);
   type(w, "y [mm]", "-41.260288538951315");
-  // The blocks: a point, then the slot it slides in.
+}
+
+// The slider blocks (a point, then the slot it slides in), the motor at 240 rpm clockwise on
+// the disk, and the needle's point as the output.
+void addBlocksDriverAndOutput(MainWindow& w, test::Draw& d) {
   d.key("B");
   d.click(10, 19.93);
   d.click(10, -15);
@@ -208,7 +206,7 @@ TEST(Draw, WanzerInversion2DrawnWithTheToolsMovesAsTheExample) {
   d.click(0, -80);
   d.key("M");
   d.click(0, 0);
-  select(0, 0);
+  selectAt(d, 0, 0);
   type(w, "Driver speed [rpm]", "240");
   auto* dir = qobject_cast<QComboBox*>(w.properties()->field("Direction"));
   ASSERT_TRUE(dir);
@@ -216,16 +214,10 @@ TEST(Draw, WanzerInversion2DrawnWithTheToolsMovesAsTheExample) {
   QTest::keyClick(dir, Qt::Key_Down);  // clockwise
   d.key("O");
   d.click(0, -41.26);
-  shot(&w, "wanzer-done");
-  ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
-  const Mechanism& drawn = doc->design();
-  EXPECT_EQ(drawn.bodies.size(), 6u) << serializeMechanism(drawn);
-  EXPECT_EQ(drawn.joints.size(), 7u) << serializeMechanism(drawn);
-  ASSERT_TRUE(drawn.driver);
-  EXPECT_EQ(drawn.driver->direction, Direction::Cw);
-  EXPECT_EQ(drawn.driver->rpm, 240);
-  ASSERT_EQ(drawn.outputs.size(), 1u);
-  // The motion of G over a revolution, against the example's.
+}
+
+// The motion of the drawn mechanism's output over a revolution equals the example's.
+void expectMovesAsWanzerExample(const Mechanism& drawn) {
   const Mechanism ref = *loadMechanismFile(*resolveModel("wanzer-inversion-2")).mechanism;
   Kinematics a, b;
   ASSERT_TRUE(a.load(drawn).ok());
@@ -240,6 +232,34 @@ TEST(Draw, WanzerInversion2DrawnWithTheToolsMovesAsTheExample) {
     EXPECT_LT((ma.acceleration - mb.acceleration).norm(), 1e-9 * mb.acceleration.norm() + 1e-9)
         << deg;
   }
+}
+
+// The Wanzer needle bar, inversion 2, drawn with the tools (a disk with two slots, the
+// triangle, two slider blocks, the needle bar in a ground slot) and its exact dimensions typed
+// in: its motion equals the example file's.
+TEST(Draw, WanzerInversion2DrawnWithTheToolsMovesAsTheExample) {
+  MainWindow w;
+  w.resize(1300, 900);
+  w.show();
+  QApplication::processEvents();
+  w.canvas()->setZoom(3.5);
+  w.canvas()->centerOn(0, -35);
+  test::Draw d{w};
+  Document* doc = w.document();
+  drawWanzerSketch(d);
+  shot(&w, "wanzer-drawn");
+  typeWanzerDimensions(w, d);
+  ASSERT_NO_FATAL_FAILURE(addBlocksDriverAndOutput(w, d));
+  shot(&w, "wanzer-done");
+  ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
+  const Mechanism& drawn = doc->design();
+  EXPECT_EQ(drawn.bodies.size(), 6u) << serializeMechanism(drawn);
+  EXPECT_EQ(drawn.joints.size(), 7u) << serializeMechanism(drawn);
+  ASSERT_TRUE(drawn.driver);
+  EXPECT_EQ(drawn.driver->direction, Direction::Cw);
+  EXPECT_EQ(drawn.driver->rpm, 240);
+  ASSERT_EQ(drawn.outputs.size(), 1u);
+  expectMovesAsWanzerExample(drawn);
 }
 
 }  // namespace

@@ -54,66 +54,27 @@ struct Monkey {
 
   // One action; its description is logged first, so that a crash names it.
   void act() {
-    static const char* tools[] = {"S", "L", "G", "T", "B", "P", "M", "O"};
     const int kind = pick(17);
-    std::string what;
     switch (kind) {
       case 0:
-      case 1: {
-        const char* t = tools[pick(8)];
-        what = std::string("key ") + t;
-        log.push_back(what);
-        d.key(t);
+      case 1:
+        toolKey();
         break;
-      }
       case 2:
       case 3:
-      case 4: {
-        const Vec2 p = place();
-        what = "click " + std::to_string(p.x()) + "," + std::to_string(p.y());
-        log.push_back(what);
-        d.click(p.x(), p.y());
+      case 4:
+        click();
         break;
-      }
       case 5:
-      case 6: {
-        const Vec2 a = place(), b = place();
-        const bool ctrl = pick(2);
-        what = std::string(ctrl ? "ctrl+" : "") + "drag " + std::to_string(a.x()) + "," +
-               std::to_string(a.y()) + " to " + std::to_string(b.x()) + "," + std::to_string(b.y());
-        log.push_back(what);
-        d.drag(a.x(), a.y(), b.x(), b.y(), ctrl ? Qt::ControlModifier : Qt::NoModifier, 6);
+      case 6:
+        drag();
         break;
-      }
-      case 7: {
-        const Vec2 p = place();
-        what = "right click " + std::to_string(p.x()) + "," + std::to_string(p.y());
-        log.push_back(what);
-        d.rightClick(p.x(), p.y());
-        QApplication::processEvents();
-        if (auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget())) {
-          std::vector<QAction*> choices;
-          for (QAction* a : menu->actions())
-            if (a->isEnabled() && !a->isSeparator() && !a->menu()) choices.push_back(a);
-          if (!choices.empty() && pick(3) > 0) {
-            QAction* a = choices[pick(static_cast<int>(choices.size()))];
-            log.push_back("  menu: " + a->text().toStdString());
-            menu->close();
-            a->trigger();
-          } else {
-            menu->close();
-          }
-        }
+      case 7:
+        rightClickMenu();
         break;
-      }
-      case 8: {
-        static const Qt::Key keys[] = {Qt::Key_Return, Qt::Key_Escape, Qt::Key_Delete,
-                                       Qt::Key_X,      Qt::Key_Right,  Qt::Key_Left};
-        const Qt::Key k = keys[pick(6)];
-        log.push_back("key " + QKeySequence(k).toString().toStdString());
-        d.key(k);
+      case 8:
+        editKey();
         break;
-      }
       case 9:
       case 10:
         log.push_back("undo");
@@ -123,57 +84,121 @@ struct Monkey {
         log.push_back("redo");
         d.key("Z", Qt::ControlModifier | Qt::ShiftModifier);
         break;
-      case 12: {
-        log.push_back("play a moment");
-        d.key(Qt::Key_Space);
-        QTest::qWait(30);
-        d.key(Qt::Key_Space);
+      case 12:
+        playMoment();
         break;
-      }
-      case 14: {
-        // A value typed into a field of the properties panel: numbers a user may type, and
-        // some no one should.
-        static const char* texts[] = {"0",   "-5",     "12.5", "1e6", "1e-12", "abc",  "nan",
-                                      "inf", "-1e300", "",     "7,5", "360",   "-720", "0.001"};
-        std::vector<QLineEdit*> fields;
-        for (QLineEdit* e : w.properties()->findChildren<QLineEdit*>())
-          if (e->isVisible() && e->isEnabled() && !e->isReadOnly()) fields.push_back(e);
-        if (fields.empty()) {
-          const Vec2 p = place();
-          log.push_back("select at " + std::to_string(p.x()) + "," + std::to_string(p.y()));
-          d.key("S");
-          d.click(p.x(), p.y());
-          break;
-        }
-        QLineEdit* e = fields[pick(static_cast<int>(fields.size()))];
-        const char* text = texts[pick(14)];
-        log.push_back("type \"" + std::string(text) + "\" into a field");
-        e->setFocus();
-        e->selectAll();
-        QTest::keyClicks(e, QString::fromLatin1(text));
-        QTest::keyClick(e, Qt::Key_Return);
-        w.canvas()->setFocus();
+      case 14:
+        typeIntoField();
         break;
-      }
-      case 15: {
-        static const char* views[] = {"I", "Shift+E", "Shift+A", "Shift+T", "#", "F", "Home"};
-        const char* k = views[pick(7)];
-        log.push_back(std::string("key ") + k);
-        const QKeyCombination c = QKeySequence(QString::fromLatin1(k))[0];
-        QTest::keyClick(w.canvas(), c.key(), c.keyboardModifiers());
+      case 15:
+        viewKey();
         break;
-      }
-      default: {
-        // Select everything under a rubber band, then delete it or flip it.
-        const Vec2 a = place(), b = place();
-        log.push_back("band and " + std::string(kind % 2 ? "delete" : "flip"));
-        d.key("S");
-        d.drag(a.x() + 30, a.y() + 30, b.x() - 30, b.y() - 30, Qt::NoModifier, 4);
-        d.key(kind % 2 ? Qt::Key_Delete : Qt::Key_X);
+      default:
+        bandSelect(kind % 2);
         break;
-      }
     }
     QApplication::processEvents();
+  }
+
+  void toolKey() {
+    static const char* tools[] = {"S", "L", "G", "T", "B", "P", "M", "O"};
+    const char* t = tools[pick(8)];
+    log.push_back(std::string("key ") + t);
+    d.key(t);
+  }
+
+  void click() {
+    const Vec2 p = place();
+    log.push_back("click " + std::to_string(p.x()) + "," + std::to_string(p.y()));
+    d.click(p.x(), p.y());
+  }
+
+  // A drag from one place to another, with Ctrl (changing the design) or not.
+  void drag() {
+    const Vec2 a = place(), b = place();
+    const bool ctrl = pick(2);
+    log.push_back(std::string(ctrl ? "ctrl+" : "") + "drag " + std::to_string(a.x()) + "," +
+                  std::to_string(a.y()) + " to " + std::to_string(b.x()) + "," +
+                  std::to_string(b.y()));
+    d.drag(a.x(), a.y(), b.x(), b.y(), ctrl ? Qt::ControlModifier : Qt::NoModifier, 6);
+  }
+
+  // A right click, then mostly one of the menu's enabled commands, else the menu closed.
+  void rightClickMenu() {
+    const Vec2 p = place();
+    log.push_back("right click " + std::to_string(p.x()) + "," + std::to_string(p.y()));
+    d.rightClick(p.x(), p.y());
+    QApplication::processEvents();
+    auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+    if (!menu) return;
+    std::vector<QAction*> choices;
+    for (QAction* a : menu->actions())
+      if (a->isEnabled() && !a->isSeparator() && !a->menu()) choices.push_back(a);
+    if (!choices.empty() && pick(3) > 0) {
+      QAction* a = choices[pick(static_cast<int>(choices.size()))];
+      log.push_back("  menu: " + a->text().toStdString());
+      menu->close();
+      a->trigger();
+    } else {
+      menu->close();
+    }
+  }
+
+  void editKey() {
+    static const Qt::Key keys[] = {Qt::Key_Return, Qt::Key_Escape, Qt::Key_Delete,
+                                   Qt::Key_X,      Qt::Key_Right,  Qt::Key_Left};
+    const Qt::Key k = keys[pick(6)];
+    log.push_back("key " + QKeySequence(k).toString().toStdString());
+    d.key(k);
+  }
+
+  void playMoment() {
+    log.push_back("play a moment");
+    d.key(Qt::Key_Space);
+    QTest::qWait(30);
+    d.key(Qt::Key_Space);
+  }
+
+  // A value typed into a field of the properties panel: numbers a user may type, and some no
+  // one should. With no field shown, a click with the select tool instead.
+  void typeIntoField() {
+    static const char* texts[] = {"0",   "-5",     "12.5", "1e6", "1e-12", "abc",  "nan",
+                                  "inf", "-1e300", "",     "7,5", "360",   "-720", "0.001"};
+    std::vector<QLineEdit*> fields;
+    for (QLineEdit* e : w.properties()->findChildren<QLineEdit*>())
+      if (e->isVisible() && e->isEnabled() && !e->isReadOnly()) fields.push_back(e);
+    if (fields.empty()) {
+      const Vec2 p = place();
+      log.push_back("select at " + std::to_string(p.x()) + "," + std::to_string(p.y()));
+      d.key("S");
+      d.click(p.x(), p.y());
+      return;
+    }
+    QLineEdit* e = fields[pick(static_cast<int>(fields.size()))];
+    const char* text = texts[pick(14)];
+    log.push_back("type \"" + std::string(text) + "\" into a field");
+    e->setFocus();
+    e->selectAll();
+    QTest::keyClicks(e, QString::fromLatin1(text));
+    QTest::keyClick(e, Qt::Key_Return);
+    w.canvas()->setFocus();
+  }
+
+  void viewKey() {
+    static const char* views[] = {"I", "Shift+E", "Shift+A", "Shift+T", "#", "F", "Home"};
+    const char* k = views[pick(7)];
+    log.push_back(std::string("key ") + k);
+    const QKeyCombination c = QKeySequence(QString::fromLatin1(k))[0];
+    QTest::keyClick(w.canvas(), c.key(), c.keyboardModifiers());
+  }
+
+  // Selects everything under a rubber band, then deletes it or flips it.
+  void bandSelect(bool remove) {
+    const Vec2 a = place(), b = place();
+    log.push_back("band and " + std::string(remove ? "delete" : "flip"));
+    d.key("S");
+    d.drag(a.x() + 30, a.y() + 30, b.x() - 30, b.y() - 30, Qt::NoModifier, 4);
+    d.key(remove ? Qt::Key_Delete : Qt::Key_X);
   }
 
   std::string recent() const {

@@ -278,76 +278,87 @@ QString CentresPanel::chainText() const {
                   .arg(label)
                   .arg(ch.body)
                   .arg(num(ics.crankDeg));
-  const BodyMotion& c = ch.crankMotion;
-  s += tr("<li>Crank %1 (%2) turns about %3 = %4 mm: &omega;%1 = %5 rad/s (%6 rpm %7)</li>")
-           .arg(ch.crank)
-           .arg(bodyName(*doc_, ics, ch.crank))
-           .arg(ic(1, ch.crank))
-           .arg(pt(c.pivot))
-           .arg(num(c.omega, 4))
-           .arg(doc_->kinematics().rpm())
-           .arg(c.omega < 0 ? tr("cw") : tr("ccw"));
-  for (const ChainStep& st : ch.steps) {
-    const QString P = ic(st.from, st.to);
-    if (st.centreAtInfinity) {
-      s += tr("<li>%1 is at infinity: bodies %2 and %3 turn alike, &omega;%3 = &omega;%2 = %4 "
-              "rad/s</li>")
-               .arg(P)
-               .arg(st.from)
-               .arg(st.to)
-               .arg(num(st.toMotion.omega, 4));
-      continue;
-    }
-    s += tr("<li>P = %1 = %2 mm").arg(P, pt(st.centre));
-    if (st.fromMotion.kind == BodyMotion::Kind::Turns)
-      s += tr("<br>|%1 P| = %2 mm; v<sub>P</sub> = &omega;%3 &middot; |%1 P| = %4 &times; %2 = "
-              "<b>%5 mm/s</b>")
-               .arg(ic(1, st.from))
-               .arg(num(st.fromArm))
-               .arg(st.from)
-               .arg(num(std::abs(st.fromMotion.omega), 4))
-               .arg(num(st.vP.norm()));
-    else
-      s += tr("<br>v<sub>P</sub> = v%1 = %2 mm/s").arg(st.from).arg(num(st.vP.norm()));
-    s += tr("<br>P is also on body %1 (P = %2): v<sub>P</sub> is the same on both")
-             .arg(st.to)
-             .arg(P);
-    switch (st.toMotion.kind) {
-      case BodyMotion::Kind::Turns:
-        s += tr("<br>body %1 turns about %2 = %3 mm; |%2 P| = %4 mm; &omega;%1 = v<sub>P</sub> / "
-                "|%2 P| = %5 rad/s")
-                 .arg(st.to)
-                 .arg(ic(1, st.to))
-                 .arg(pt(st.toMotion.pivot))
-                 .arg(num(st.toArm))
-                 .arg(num(st.toMotion.omega, 4));
-        break;
-      case BodyMotion::Kind::Translates:
-        s += tr("<br>%1 is at infinity: body %2 translates with v<sub>P</sub>")
-                 .arg(ic(1, st.to))
-                 .arg(st.to);
-        break;
-      case BodyMotion::Kind::AtRest:
-        s += tr("<br>body %1 is at rest at this instant").arg(st.to);
-        break;
-    }
-    s += QStringLiteral("</li>");
-  }
-  if (ch.bodyMotion.kind == BodyMotion::Kind::Turns)
-    s += tr("<li>%1 = %2 mm: |%3 %1| = %4 mm; v = &omega;%5 &middot; %4</li>")
-             .arg(label, pt(ch.position), ic(1, ch.body), num(ch.arm))
-             .arg(ch.body);
-  else if (ch.bodyMotion.kind == BodyMotion::Kind::Translates)
-    s += tr("<li>%1 moves with body %2: v = v%2</li>").arg(label).arg(ch.body);
+  s += crankText(ch, ics);
+  for (const ChainStep& st : ch.steps) s += stepText(st);
+  s += pointText(ch, label);
   s += QStringLiteral("</ol>");
+  return s + comparisonText(ch);
+}
+
+QString CentresPanel::crankText(const VelocityChain& ch, const InstantCentres& ics) const {
+  const BodyMotion& c = ch.crankMotion;
+  return tr("<li>Crank %1 (%2) turns about %3 = %4 mm: &omega;%1 = %5 rad/s (%6 rpm %7)</li>")
+      .arg(ch.crank)
+      .arg(bodyName(*doc_, ics, ch.crank))
+      .arg(ic(1, ch.crank))
+      .arg(pt(c.pivot))
+      .arg(num(c.omega, 4))
+      .arg(doc_->kinematics().rpm())
+      .arg(c.omega < 0 ? tr("cw") : tr("ccw"));
+}
+
+QString CentresPanel::stepText(const ChainStep& st) const {
+  const QString P = ic(st.from, st.to);
+  if (st.centreAtInfinity)
+    return tr("<li>%1 is at infinity: bodies %2 and %3 turn alike, &omega;%3 = &omega;%2 = %4 "
+              "rad/s</li>")
+        .arg(P)
+        .arg(st.from)
+        .arg(st.to)
+        .arg(num(st.toMotion.omega, 4));
+  QString s = tr("<li>P = %1 = %2 mm").arg(P, pt(st.centre));
+  if (st.fromMotion.kind == BodyMotion::Kind::Turns)
+    s += tr("<br>|%1 P| = %2 mm; v<sub>P</sub> = &omega;%3 &middot; |%1 P| = %4 &times; %2 = "
+            "<b>%5 mm/s</b>")
+             .arg(ic(1, st.from))
+             .arg(num(st.fromArm))
+             .arg(st.from)
+             .arg(num(std::abs(st.fromMotion.omega), 4))
+             .arg(num(st.vP.norm()));
+  else
+    s += tr("<br>v<sub>P</sub> = v%1 = %2 mm/s").arg(st.from).arg(num(st.vP.norm()));
+  s += tr("<br>P is also on body %1 (P = %2): v<sub>P</sub> is the same on both").arg(st.to).arg(P);
+  return s + stepMotionText(st) + QStringLiteral("</li>");
+}
+
+QString CentresPanel::stepMotionText(const ChainStep& st) const {
+  switch (st.toMotion.kind) {
+    case BodyMotion::Kind::Turns:
+      return tr("<br>body %1 turns about %2 = %3 mm; |%2 P| = %4 mm; &omega;%1 = v<sub>P</sub> / "
+                "|%2 P| = %5 rad/s")
+          .arg(st.to)
+          .arg(ic(1, st.to))
+          .arg(pt(st.toMotion.pivot))
+          .arg(num(st.toArm))
+          .arg(num(st.toMotion.omega, 4));
+    case BodyMotion::Kind::Translates:
+      return tr("<br>%1 is at infinity: body %2 translates with v<sub>P</sub>")
+          .arg(ic(1, st.to))
+          .arg(st.to);
+    case BodyMotion::Kind::AtRest:
+      return tr("<br>body %1 is at rest at this instant").arg(st.to);
+  }
+  return QString();
+}
+
+QString CentresPanel::pointText(const VelocityChain& ch, const QString& label) const {
+  if (ch.bodyMotion.kind == BodyMotion::Kind::Turns)
+    return tr("<li>%1 = %2 mm: |%3 %1| = %4 mm; v = &omega;%5 &middot; %4</li>")
+        .arg(label, pt(ch.position), ic(1, ch.body), num(ch.arm))
+        .arg(ch.body);
+  if (ch.bodyMotion.kind == BodyMotion::Kind::Translates)
+    return tr("<li>%1 moves with body %2: v = v%2</li>").arg(label).arg(ch.body);
+  return QString();
+}
+
+QString CentresPanel::comparisonText(const VelocityChain& ch) const {
   const double diff = (ch.velocity - ch.solverVelocity).norm();
-  s += tr("<table><tr><td>by the chain</td><td><b>%1 mm/s</b></td><td>%2</td></tr>"
-          "<tr><td>exact (solver)</td><td><b>%3 mm/s</b></td><td>%4</td></tr>"
-          "<tr><td>difference</td><td>%5 mm/s</td><td></td></tr></table>")
-           .arg(num(ch.velocity.norm()), pt(ch.velocity), num(ch.solverVelocity.norm()),
-                pt(ch.solverVelocity))
-           .arg(diff, 0, 'g', 3);
-  return s;
+  return tr("<table><tr><td>by the chain</td><td><b>%1 mm/s</b></td><td>%2</td></tr>"
+            "<tr><td>exact (solver)</td><td><b>%3 mm/s</b></td><td>%4</td></tr>"
+            "<tr><td>difference</td><td>%5 mm/s</td><td></td></tr></table>")
+      .arg(num(ch.velocity.norm()), pt(ch.velocity), num(ch.solverVelocity.norm()),
+           pt(ch.solverVelocity))
+      .arg(diff, 0, 'g', 3);
 }
 
 }  // namespace linkage::ui

@@ -52,6 +52,14 @@ class CentresPanel : public QWidget {
   void update();
   void fillTable(const InstantCentres& ics);
   void fillChain(const InstantCentres& ics);
+  // chainText()'s parts: the crank's turning, each step from body to body (how v_P is found,
+  // then what it makes of the next body's motion), the point's velocity, the check against
+  // the solver.
+  QString crankText(const VelocityChain& ch, const InstantCentres& ics) const;
+  QString stepText(const ChainStep& st) const;
+  QString stepMotionText(const ChainStep& st) const;
+  QString pointText(const VelocityChain& ch, const QString& label) const;
+  QString comparisonText(const VelocityChain& ch) const;
 
   QPointer<Document> doc_;
   QTableWidget* table_;

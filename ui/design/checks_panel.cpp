@@ -79,6 +79,13 @@ ChecksPanel::ChecksPanel(DesignChoices* choices, QWidget* parent)
 }
 
 void ChecksPanel::buildWidgets() {
+  createResults();
+  QHBoxLayout* band = bandRow();
+  QFormLayout* form = subjectForm();
+  layOut(band, form);
+}
+
+void ChecksPanel::createResults() {
   grashof_ = makeTable({tr("Loop"), tr("Class"), tr("Links [mm]"), tr("Margin [mm]")});
   grashof_->setToolTip(
       tr("Each ring of four bodies joined by four pins: frame, input, coupler, "
@@ -96,7 +103,11 @@ void ChecksPanel::buildWidgets() {
       if (QTableWidgetItem* i = t->item(row, column); i && i->data(CrankRole).isValid())
         turnTo(i->data(CrankRole).toDouble());
     });
+  transmissionNote_ = note();
+  limitsNote_ = note();
+}
 
+QHBoxLayout* ChecksPanel::bandRow() {
   lo_ = new QDoubleSpinBox;
   hi_ = new QDoubleSpinBox;
   for (QDoubleSpinBox* s : {lo_, hi_}) {
@@ -107,8 +118,6 @@ void ChecksPanel::buildWidgets() {
   }
   lo_->setValue(choices_->band().lo);
   hi_->setValue(choices_->band().hi);
-  transmissionNote_ = note();
-  limitsNote_ = note();
   for (QDoubleSpinBox* s : {lo_, hi_})
     connect(s, &QDoubleSpinBox::valueChanged, this, [this] {
       if (!choices_->setBand({lo_->value(), hi_->value()}))
@@ -122,7 +131,10 @@ void ChecksPanel::buildWidgets() {
   band->addWidget(new QLabel(QStringLiteral("\u2013")));
   band->addWidget(hi_);
   band->addStretch();
+  return band;
+}
 
+QFormLayout* ChecksPanel::subjectForm() {
   subject_ = new QComboBox;
   subject_->setToolTip(tr("The point whose extreme positions are found, or a body's angle"));
   direction_ = new QLineEdit;
@@ -133,7 +145,10 @@ void ChecksPanel::buildWidgets() {
   auto* form = new QFormLayout;
   form->addRow(tr("Of"), subject_);
   form->addRow(tr("Along"), direction_);
+  return form;
+}
 
+void ChecksPanel::layOut(QHBoxLayout* band, QFormLayout* form) {
   auto* g = new QVBoxLayout;
   g->addWidget(grashof_);
   auto* t = new QVBoxLayout;

@@ -19,6 +19,8 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
+class QHBoxLayout;
 class QLabel;
 class QLineEdit;
 class QTableWidget;
@@ -54,7 +56,13 @@ class ChecksPanel : public QWidget {
   int computations() const { return computations_; }
 
  private:
+  // The tables and notes of the results, the transmission band's row, the form choosing the
+  // limits' subject, and all of them in three sections in a scroll area.
   void buildWidgets();
+  void createResults();
+  QHBoxLayout* bandRow();
+  QFormLayout* subjectForm();
+  void layOut(QHBoxLayout* band, QFormLayout* form);
   void offerSubjects();
   void subjectEdited();
   void markStale();

@@ -85,6 +85,21 @@ StudyDialog::~StudyDialog() {
 }
 
 void StudyDialog::buildForm() {
+  createFields();
+  QFormLayout* form = fieldsForm();
+  kindChanged();
+  QHBoxLayout* buttons = runButtons();
+  QWidget* left = formSide(form, buttons);
+  QWidget* right = resultsSide();
+  auto* split = new QSplitter;
+  split->addWidget(left);
+  split->addWidget(right);
+  split->setStretchFactor(1, 1);
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(split);
+}
+
+void StudyDialog::createFields() {
   move_ = new QComboBox;
   move_->setToolTip(
       tr("The design point moved; the points pinned to it where they are drawn "
@@ -117,7 +132,9 @@ void StudyDialog::buildForm() {
   steps_->setValue(360);
   steps_->setToolTip(tr("Samples per turn of the crank"));
   connect(kind_, &QComboBox::currentIndexChanged, this, &StudyDialog::kindChanged);
+}
 
+QFormLayout* StudyDialog::fieldsForm() {
   auto* form = new QFormLayout;
   form->addRow(tr("Move point"), move_);
   form->addRow(tr("How"), kind_);
@@ -131,8 +148,10 @@ void StudyDialog::buildForm() {
   form->addRow(tr("Along DX, DY"), direction_);
   form->addRow(tr("Swing of"), bodies_);
   form->addRow(tr("Crank steps"), steps_);
-  kindChanged();
+  return form;
+}
 
+QHBoxLayout* StudyDialog::runButtons() {
   runButton_ = new QPushButton(tr("&Run"));
   runButton_->setDefault(true);
   cancelButton_ = new QPushButton(tr("&Cancel Run"));
@@ -152,6 +171,10 @@ void StudyDialog::buildForm() {
   buttons->addWidget(runButton_);
   buttons->addWidget(cancelButton_);
   buttons->addWidget(exportButton_);
+  return buttons;
+}
+
+QWidget* StudyDialog::formSide(QFormLayout* form, QHBoxLayout* buttons) {
   progress_ = new QProgressBar;
   progress_->setValue(0);
   status_ = new QLabel;
@@ -168,7 +191,10 @@ void StudyDialog::buildForm() {
   l->addWidget(status_);
   l->addStretch();
   l->addWidget(close);
+  return left;
+}
 
+QWidget* StudyDialog::resultsSide() {
   table_ = new QTableView;
   table_->setModel(model_);
   table_->verticalHeader()->setDefaultSectionSize(20);
@@ -179,12 +205,7 @@ void StudyDialog::buildForm() {
   right->addWidget(plots_);
   right->setStretchFactor(0, 2);
   right->setStretchFactor(1, 3);
-  auto* split = new QSplitter;
-  split->addWidget(left);
-  split->addWidget(right);
-  split->setStretchFactor(1, 1);
-  auto* layout = new QVBoxLayout(this);
-  layout->addWidget(split);
+  return right;
 }
 
 void StudyDialog::kindChanged() {

@@ -14,6 +14,8 @@
 #include "linkage/study.h"
 
 class QComboBox;
+class QFormLayout;
+class QHBoxLayout;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -75,7 +77,14 @@ class StudyDialog : public QDialog {
   void closeEvent(QCloseEvent* e) override;
 
  private:
+  // The dialog's parts: the fields, their form, the run's buttons, the side with those, the
+  // progress and the status, and the side with the table and the plots.
   void buildForm();
+  void createFields();
+  QFormLayout* fieldsForm();
+  QHBoxLayout* runButtons();
+  QWidget* formSide(QFormLayout* form, QHBoxLayout* buttons);
+  QWidget* resultsSide();
   void offerPoints();
   void kindChanged();
   void finished();

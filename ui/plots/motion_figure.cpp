@@ -147,39 +147,56 @@ QString layoutKey(const std::vector<const CurveSet*>& sets, const MotionFigure::
 
 }  // namespace
 
+namespace {
+
+// The sets drawn in a column: all of them overlaid, else the column's own.
+std::vector<int> setsInColumn(size_t count, bool side, int column) {
+  std::vector<int> v;
+  for (int i = 0; i < static_cast<int>(count); ++i)
+    if (!side || i == column) v.push_back(i);
+  return v;
+}
+
+// A curve's values in the units shown, taken into the range of their row.
+QVector<double> scaled(const std::vector<double>& values, double scale,
+                       MotionFigure::ValueRange& range) {
+  QVector<double> out;
+  out.reserve(static_cast<qsizetype>(values.size()));
+  for (double v : values) {
+    out.push_back(v * scale);
+    range.lo = std::min(range.lo, out.back());
+    range.hi = std::max(range.hi, out.back());
+  }
+  return out;
+}
+
+// A curve's maximum and minimum marked on every turn plotted where the motion repeats.
+void markExtremes(QCPGraph* marks, const CurveSet& set, Order o, int revs, double scale) {
+  const int turns = set.periodic() ? revs : 1;
+  for (const Extreme* e : {&set.extremes(o).max, &set.extremes(o).min})
+    for (int t = 0; t < turns; ++t) marks->addData(e->crankDeg + 360.0 * t, e->value * scale);
+}
+
+}  // namespace
+
 bool MotionFigure::refresh(const std::vector<const CurveSet*>& sets, const Options& opt) {
   if (slots_.empty() || rects_.empty() || layoutKey(sets, opt) != key_) return false;
   const CurveRequest& req = sets[0]->request();
-  std::vector<double> lo(rows(), INFINITY), hi(rows(), -INFINITY);
+  std::vector<ValueRange> ranges(rows());
   for (const GraphSlot& slot : slots_) {
     const CurveSet& set = *sets[slot.set];
     const Curve& curve = set.curve(slot.order);
     const double scale = opt.units.scale(slot.order, req.body);
     const int row = static_cast<int>(std::find(rowOrders_.begin(), rowOrders_.end(), slot.order) -
                                      rowOrders_.begin());
-    QVector<double> keys(curve.crankDeg.begin(), curve.crankDeg.end()), values;
-    values.reserve(keys.size());
-    for (double v : curve.values) {
-      values.push_back(v * scale);
-      lo[row] = std::min(lo[row], values.back());
-      hi[row] = std::max(hi[row], values.back());
-    }
-    slot.curve->setData(keys, values, true);
+    QVector<double> keys(curve.crankDeg.begin(), curve.crankDeg.end());
+    slot.curve->setData(keys, scaled(curve.values, scale, ranges[row]), true);
     if (slot.marks) {
       slot.marks->data()->clear();
-      const int turns = set.periodic() ? req.revs : 1;
-      for (const Extreme* e : {&set.extremes(slot.order).max, &set.extremes(slot.order).min})
-        for (int t = 0; t < turns; ++t)
-          slot.marks->addData(e->crankDeg + 360.0 * t, e->value * scale);
+      markExtremes(slot.marks, set, slot.order, req.revs, scale);
     }
   }
-  for (int r = 0; r < rows(); ++r) {
-    double l = lo[r], h = hi[r];
-    if (!(l <= h)) l = -1, h = 1;
-    const double pad = h > l ? 0.06 * (h - l) : std::max(1.0, std::abs(h)) * 0.1;
-    for (int c = 0; c < columns_; ++c)
-      axisRect(r, c)->axis(QCPAxis::atLeft)->setRange(l - pad, h + pad);
-  }
+  for (int r = 0; r < rows(); ++r) setValueRange(r, ranges[r]);
   for (QCPItemTracer* t : tracers_) t->updatePosition();
   plot_->replot();
   return true;
@@ -195,166 +212,196 @@ void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options
   const CurveRequest& req = sets[0]->request();
   for (int o = 0; o < kOrders; ++o)
     if (req.orders[o]) rowOrders_.push_back(static_cast<Order>(o));
-  const bool side = opt.layout == Layout::SideBySide;
-  columns_ = side ? static_cast<int>(sets.size()) : 1;
+  columns_ = opt.layout == Layout::SideBySide ? static_cast<int>(sets.size()) : 1;
   xMax_ = 360.0 * req.revs;
-  QCPLayoutGrid* layout = plot_->plotLayout();
-  layout->setRowSpacing(0);
-  const QFont base = plot_->font();
-  QFont titleFont = base;
-  titleFont.setBold(true);
-  titleFont.setPointSizeF(base.pointSizeF() + 1);
-
-  // Row 0: titles; row 1: why curves stop early, if any do; then the plots; last row: the
-  // crank angle's label.
-  int firstRow = 1;
-  std::vector<QCPTextElement*> footer;
-  auto setsOf = [&](int column) {
-    std::vector<int> v;
-    for (int i = 0; i < static_cast<int>(sets.size()); ++i)
-      if (!side || i == column) v.push_back(i);
-    return v;
-  };
-  for (int c = 0; c < columns_; ++c) {
-    const QString target = req.target;
-    const QString title =
-        side || sets.size() == 1 ? QString("%1: %2").arg(sets[c]->title(), target) : target;
-    auto* head = new QCPTextElement(plot_, title, titleFont);
-    auto* foot = new QCPTextElement(plot_, sets[c]->crankLabel(), base);
-    head->setMargins(QMargins(2, 4, 2, 2));
-    foot->setMargins(QMargins(2, 0, 2, 6));
-    if (!side && sets.size() > 1) {
-      // Overlaid mechanisms: their names in a row beside the title, off the curves.
-      auto* legend = new QCPLegend;
-      legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-      legend->setBorderPen(Qt::NoPen);
-      legend->setBrush(Qt::NoBrush);
-      auto* top = new QCPLayoutGrid;
-      layout->addElement(0, c, top);
-      top->addElement(0, 0, head);
-      top->addElement(0, 1, legend);
-      legend->setLayer("legend");
-      legend_ = legend;
-    } else {
-      layout->addElement(0, c, head);
-    }
-    // Lines as long as the column is wide (at the size the figure is laid out for).
-    const int chars = std::max(
-        40, plot_->width() / columns_ / std::max(1, QFontMetrics(base).averageCharWidth()) - 4);
-    QStringList notes;
-    for (int i : setsOf(c))
-      if (!sets[i]->status().ok()) notes << statusNote(*sets[i], !side && sets.size() > 1, chars);
-    if (!notes.isEmpty()) {
-      auto* note = new QCPTextElement(plot_, notes.join('\n'), base);
-      note->setTextColor(QColor(150, 20, 20));
-      layout->addElement(1, c, note);
-      firstRow = 2;
-    }
-    footer.push_back(foot);
-  }
-  for (int c = 0; c < columns_; ++c) layout->addElement(firstRow + rows(), c, footer[c]);
-  auto* rowsGroup = new QCPMarginGroup(plot_);
-  groups_.push_back(rowsGroup);
-  for (int c = 0; c < columns_; ++c) groups_.push_back(new QCPMarginGroup(plot_));
-
-  auto ticker = QSharedPointer<QCPAxisTickerFixed>::create();
-  ticker->setTickStep(tickStep(xMax_));
-  ticker->setScaleStrategy(QCPAxisTickerFixed::ssNone);
-  for (int r = 0; r < rows(); ++r) {
-    const Order o = rowOrders_[r];
-    const double scale = opt.units.scale(o, req.body);
-    double lo = INFINITY, hi = -INFINITY;
-    for (int c = 0; c < columns_; ++c) {
-      auto* rect = new QCPAxisRect(plot_);
-      layout->addElement(firstRow + r, c, rect);
-      rects_.push_back(rect);
-      rect->setMarginGroup(QCP::msTop | QCP::msBottom, rowsGroup);
-      rect->setMarginGroup(QCP::msLeft | QCP::msRight, groups_[1 + c]);
-      QCPAxis* x = rect->axis(QCPAxis::atBottom);
-      QCPAxis* y = rect->axis(QCPAxis::atLeft);
-      x->setTicker(ticker);
-      x->setRange(0, xMax_);
-      // All rows keep room for tick labels (the margin group), so every plot is as tall;
-      // only the bottom row writes them.
-      x->setTickLabels(r + 1 == rows());
-      // The last tick label is centred on the right edge: leave room for its half.
-      rect->setMinimumMargins(QMargins(
-          0, 0, QFontMetrics(x->tickLabelFont()).horizontalAdvance(QString::number(xMax_)) / 2 + 6,
-          0));
-      labels_.emplace_back(axisLabel(req.body, req.component, req.directionDeg, o, opt.units),
-                           shortAxisLabel(req.body, req.component, req.directionDeg, o, opt.units));
-      y->setLabel(labels_.back().first);
-      int notes = 0;
-      for (int i : setsOf(c)) {
-        const CurveSet& set = *sets[i];
-        const Curve& curve = set.curve(o);
-        if (!set.empty() && !curve.status.ok()) {
-          addNote(plot_, rect, QString::fromStdString(curve.status.message), notes++);
-          continue;
-        }
-        if (curve.values.empty()) continue;
-        QVector<double> keys(curve.crankDeg.begin(), curve.crankDeg.end()), values;
-        values.reserve(keys.size());
-        for (double v : curve.values) {
-          values.push_back(v * scale);
-          lo = std::min(lo, values.back());
-          hi = std::max(hi, values.back());
-        }
-        QCPGraph* g = plot_->addGraph(x, y);
-        g->setData(keys, values, true);
-        slots_.push_back(GraphSlot{g, nullptr, i, o});
-        g->setPen(QPen(colour(i), 1.5));
-        // Adaptive sampling draws dense data as one min-max bar per pixel column, which makes
-        // steep parts look bold: only for curves far denser than any figure's pixels.
-        g->setAdaptiveSampling(keys.size() > 20000);
-        g->setName(set.title());
-        if (opt.extremes && set.extremes(o).status.ok()) {
-          QCPGraph* marks = plot_->addGraph(x, y);
-          slots_.back().marks = marks;
-          marks->setLineStyle(QCPGraph::lsNone);
-          marks->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, colour(i), 7));
-          const int turns = set.periodic() ? req.revs : 1;
-          for (const Extreme* e : {&set.extremes(o).max, &set.extremes(o).min})
-            for (int t = 0; t < turns; ++t)
-              marks->addData(e->crankDeg + 360.0 * t, e->value * scale);
-        }
-        auto* tracer = new QCPItemTracer(plot_);
-        tracer->setLayer(cursorLayer_);
-        tracer->setGraph(g);
-        tracer->setInterpolating(true);
-        tracer->setStyle(QCPItemTracer::tsCircle);
-        tracer->setSize(6);
-        tracer->setPen(QPen(colour(i).darker(130)));
-        tracer->setBrush(QBrush(Qt::white));
-        tracer->setClipAxisRect(rect);
-        tracers_.push_back(tracer);
-      }
-      auto* line = new QCPItemStraightLine(plot_);
-      line->setLayer(cursorLayer_);
-      line->setClipAxisRect(rect);
-      line->point1->setAxes(x, y);
-      line->point2->setAxes(x, y);
-      line->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
-      lines_.push_back(line);
-    }
-    if (!(lo <= hi)) lo = -1, hi = 1;
-    const double pad = hi > lo ? 0.06 * (hi - lo) : std::max(1.0, std::abs(hi)) * 0.1;
-    for (int c = 0; c < columns_; ++c)
-      axisRect(r, c)->axis(QCPAxis::atLeft)->setRange(lo - pad, hi + pad);
-  }
-  if (legend_) {
-    for (int i = 0; i < plot_->graphCount(); ++i) {
-      QCPGraph* g = plot_->graph(i);
-      if (rows() > 0 && g->keyAxis() == axisRect(0, 0)->axis(QCPAxis::atBottom) &&
-          g->lineStyle() != QCPGraph::lsNone)
-        g->addToLegend(legend_);
-    }
-  }
+  plot_->plotLayout()->setRowSpacing(0);
+  const int firstRow = addTitles(sets, opt.layout == Layout::SideBySide);
+  addPlots(sets, opt, firstRow);
+  addLegendEntries();
   cursorLayer_->setVisible(opt.cursor);
   setCursor(cursorDeg_);
   plot_->replot();
   // The rows' heights are known once laid out: labels that do not fit are shortened.
   if (fitLabels()) plot_->replot();
+}
+
+int MotionFigure::addTitles(const std::vector<const CurveSet*>& sets, bool side) {
+  // Row 0: titles; row 1: why curves stop early, if any do; then the plots; last row: the
+  // crank angle's label.
+  int firstRow = 1;
+  std::vector<QCPTextElement*> footer;
+  for (int c = 0; c < columns_; ++c) {
+    addTitle(sets, c, side);
+    auto* foot = new QCPTextElement(plot_, sets[c]->crankLabel(), plot_->font());
+    foot->setMargins(QMargins(2, 0, 2, 6));
+    if (addStatusNote(sets, c, side)) firstRow = 2;
+    footer.push_back(foot);
+  }
+  for (int c = 0; c < columns_; ++c)
+    plot_->plotLayout()->addElement(firstRow + rows(), c, footer[c]);
+  return firstRow;
+}
+
+void MotionFigure::addTitle(const std::vector<const CurveSet*>& sets, int column, bool side) {
+  QFont titleFont = plot_->font();
+  titleFont.setBold(true);
+  titleFont.setPointSizeF(plot_->font().pointSizeF() + 1);
+  const QString target = sets[0]->request().target;
+  const QString title =
+      side || sets.size() == 1 ? QString("%1: %2").arg(sets[column]->title(), target) : target;
+  auto* head = new QCPTextElement(plot_, title, titleFont);
+  head->setMargins(QMargins(2, 4, 2, 2));
+  QCPLayoutGrid* layout = plot_->plotLayout();
+  if (side || sets.size() == 1) {
+    layout->addElement(0, column, head);
+    return;
+  }
+  // Overlaid mechanisms: their names in a row beside the title, off the curves.
+  auto* legend = new QCPLegend;
+  legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+  legend->setBorderPen(Qt::NoPen);
+  legend->setBrush(Qt::NoBrush);
+  auto* top = new QCPLayoutGrid;
+  layout->addElement(0, column, top);
+  top->addElement(0, 0, head);
+  top->addElement(0, 1, legend);
+  legend->setLayer("legend");
+  legend_ = legend;
+}
+
+bool MotionFigure::addStatusNote(const std::vector<const CurveSet*>& sets, int column, bool side) {
+  const QFont base = plot_->font();
+  // Lines as long as the column is wide (at the size the figure is laid out for).
+  const int chars = std::max(
+      40, plot_->width() / columns_ / std::max(1, QFontMetrics(base).averageCharWidth()) - 4);
+  QStringList notes;
+  for (int i : setsInColumn(sets.size(), side, column))
+    if (!sets[i]->status().ok()) notes << statusNote(*sets[i], !side && sets.size() > 1, chars);
+  if (notes.isEmpty()) return false;
+  auto* note = new QCPTextElement(plot_, notes.join('\n'), base);
+  note->setTextColor(QColor(150, 20, 20));
+  plot_->plotLayout()->addElement(1, column, note);
+  return true;
+}
+
+void MotionFigure::addPlots(const std::vector<const CurveSet*>& sets, const Options& opt,
+                            int firstRow) {
+  // Plots in a row share their top and bottom margins, in a column their left and right ones.
+  groups_.push_back(new QCPMarginGroup(plot_));
+  for (int c = 0; c < columns_; ++c) groups_.push_back(new QCPMarginGroup(plot_));
+  auto ticker = QSharedPointer<QCPAxisTickerFixed>::create();
+  ticker->setTickStep(tickStep(xMax_));
+  ticker->setScaleStrategy(QCPAxisTickerFixed::ssNone);
+  const CurveRequest& req = sets[0]->request();
+  const bool side = opt.layout == Layout::SideBySide;
+  for (int r = 0; r < rows(); ++r) {
+    ValueRange range;
+    for (int c = 0; c < columns_; ++c) {
+      QCPAxisRect* rect = addAxisRect(req, opt.units, r, c, firstRow, ticker);
+      int notes = 0;
+      for (int i : setsInColumn(sets.size(), side, c)) {
+        const Curve& curve = sets[i]->curve(rowOrders_[r]);
+        // A set with samples but not this order's curve: why not, on the plot.
+        if (!sets[i]->empty() && !curve.status.ok())
+          addNote(plot_, rect, QString::fromStdString(curve.status.message), notes++);
+        else if (!curve.values.empty())
+          addCurve(*sets[i], i, rowOrders_[r], rect, req, opt, range);
+      }
+      addCursorLine(rect);
+    }
+    setValueRange(r, range);
+  }
+}
+
+QCPAxisRect* MotionFigure::addAxisRect(const CurveRequest& req, const PlotUnits& units, int row,
+                                       int column, int firstRow,
+                                       const QSharedPointer<QCPAxisTicker>& ticker) {
+  auto* rect = new QCPAxisRect(plot_);
+  plot_->plotLayout()->addElement(firstRow + row, column, rect);
+  rects_.push_back(rect);
+  rect->setMarginGroup(QCP::msTop | QCP::msBottom, groups_[0]);
+  rect->setMarginGroup(QCP::msLeft | QCP::msRight, groups_[1 + column]);
+  QCPAxis* x = rect->axis(QCPAxis::atBottom);
+  x->setTicker(ticker);
+  x->setRange(0, xMax_);
+  // All rows keep room for tick labels (the margin group), so every plot is as tall;
+  // only the bottom row writes them.
+  x->setTickLabels(row + 1 == rows());
+  // The last tick label is centred on the right edge: leave room for its half.
+  rect->setMinimumMargins(QMargins(
+      0, 0, QFontMetrics(x->tickLabelFont()).horizontalAdvance(QString::number(xMax_)) / 2 + 6, 0));
+  const Order o = rowOrders_[row];
+  labels_.emplace_back(axisLabel(req.body, req.component, req.directionDeg, o, units),
+                       shortAxisLabel(req.body, req.component, req.directionDeg, o, units));
+  rect->axis(QCPAxis::atLeft)->setLabel(labels_.back().first);
+  return rect;
+}
+
+void MotionFigure::addCurve(const CurveSet& set, int index, Order o, QCPAxisRect* rect,
+                            const CurveRequest& main, const Options& opt, ValueRange& range) {
+  const Curve& curve = set.curve(o);
+  const double scale = opt.units.scale(o, main.body);
+  QCPAxis* x = rect->axis(QCPAxis::atBottom);
+  QCPAxis* y = rect->axis(QCPAxis::atLeft);
+  QVector<double> keys(curve.crankDeg.begin(), curve.crankDeg.end());
+  QCPGraph* g = plot_->addGraph(x, y);
+  g->setData(keys, scaled(curve.values, scale, range), true);
+  slots_.push_back(GraphSlot{g, nullptr, index, o});
+  g->setPen(QPen(colour(index), 1.5));
+  // Adaptive sampling draws dense data as one min-max bar per pixel column, which makes
+  // steep parts look bold: only for curves far denser than any figure's pixels.
+  g->setAdaptiveSampling(keys.size() > 20000);
+  g->setName(set.title());
+  if (opt.extremes && set.extremes(o).status.ok()) {
+    QCPGraph* marks = plot_->addGraph(x, y);
+    slots_.back().marks = marks;
+    marks->setLineStyle(QCPGraph::lsNone);
+    marks->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, colour(index), 7));
+    markExtremes(marks, set, o, main.revs, scale);
+  }
+  addTracer(g, index, rect);
+}
+
+void MotionFigure::addTracer(QCPGraph* graph, int index, QCPAxisRect* rect) {
+  auto* tracer = new QCPItemTracer(plot_);
+  tracer->setLayer(cursorLayer_);
+  tracer->setGraph(graph);
+  tracer->setInterpolating(true);
+  tracer->setStyle(QCPItemTracer::tsCircle);
+  tracer->setSize(6);
+  tracer->setPen(QPen(colour(index).darker(130)));
+  tracer->setBrush(QBrush(Qt::white));
+  tracer->setClipAxisRect(rect);
+  tracers_.push_back(tracer);
+}
+
+void MotionFigure::addCursorLine(QCPAxisRect* rect) {
+  auto* line = new QCPItemStraightLine(plot_);
+  line->setLayer(cursorLayer_);
+  line->setClipAxisRect(rect);
+  line->point1->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+  line->point2->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+  line->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
+  lines_.push_back(line);
+}
+
+void MotionFigure::setValueRange(int row, ValueRange range) {
+  double lo = range.lo, hi = range.hi;
+  if (!(lo <= hi)) lo = -1, hi = 1;
+  const double pad = hi > lo ? 0.06 * (hi - lo) : std::max(1.0, std::abs(hi)) * 0.1;
+  for (int c = 0; c < columns_; ++c)
+    axisRect(row, c)->axis(QCPAxis::atLeft)->setRange(lo - pad, hi + pad);
+}
+
+void MotionFigure::addLegendEntries() {
+  if (!legend_ || rows() == 0) return;
+  // The top plot's curves, not their marks.
+  for (int i = 0; i < plot_->graphCount(); ++i) {
+    QCPGraph* g = plot_->graph(i);
+    if (g->keyAxis() == axisRect(0, 0)->axis(QCPAxis::atBottom) &&
+        g->lineStyle() != QCPGraph::lsNone)
+      g->addToLegend(legend_);
+  }
 }
 
 void MotionFigure::setCursor(double deg) {

@@ -7,6 +7,8 @@
 
 #include <QColor>
 #include <QPointF>
+#include <QSharedPointer>
+#include <cmath>
 #include <vector>
 
 #include "plots/curve_set.h"
@@ -14,6 +16,7 @@
 
 class QCustomPlot;
 class QCPAxisRect;
+class QCPAxisTicker;
 class QCPGraph;
 class QCPLegend;
 class QCPLayer;
@@ -69,8 +72,30 @@ class MotionFigure {
   // true when a label changed (the caller replots).
   bool fitLabels();
 
+  // The smallest and largest value of a row's curves (none yet: empty); public for the
+  // helpers of motion_figure.cpp that scale the curves.
+  struct ValueRange {
+    double lo = INFINITY, hi = -INFINITY;
+  };
+
  private:
   void clear();
+  // The parts build() lays out, in its order: titles, notes and crank-angle labels (returns
+  // the first row of plots), the plots and their curves, the legend's entries.
+  int addTitles(const std::vector<const CurveSet*>& sets, bool side);
+  void addTitle(const std::vector<const CurveSet*>& sets, int column, bool side);
+  bool addStatusNote(const std::vector<const CurveSet*>& sets, int column, bool side);
+  void addPlots(const std::vector<const CurveSet*>& sets, const Options& opt, int firstRow);
+  QCPAxisRect* addAxisRect(const CurveRequest& req, const PlotUnits& units, int row, int column,
+                           int firstRow, const QSharedPointer<QCPAxisTicker>& ticker);
+  void addCurve(const CurveSet& set, int index, Order o, QCPAxisRect* rect,
+                const CurveRequest& main, const Options& opt, ValueRange& range);
+  void addTracer(QCPGraph* graph, int index, QCPAxisRect* rect);
+  void addCursorLine(QCPAxisRect* rect);
+  void addLegendEntries();
+  // A row's value axes over its range, padded.
+  void setValueRange(int row, ValueRange range);
+
   std::vector<std::pair<QString, QString>> labels_;  // long and short, per axis rect
   struct GraphSlot {
     QCPGraph* curve;

@@ -17,7 +17,13 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   rows_ = new QVBoxLayout(this);
   rows_->setContentsMargins(0, 0, 0, 0);
   rows_->setSpacing(3);
+  addPlotRow();
+  addOrdersRow();
+  addUnitsRow();
+  connectInputs();
+}
 
+void PlotControls::addPlotRow() {
   plotRow_ = new QWidget;
   auto* row1 = new QHBoxLayout(plotRow_);
   row1->setContentsMargins(0, 0, 0, 0);
@@ -42,7 +48,9 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   row1_->setSpacing(12);
   row1_->addWidget(plotRow_, 1);
   rows_->addLayout(row1_);
+}
 
+void PlotControls::addOrdersRow() {
   auto* row2 = new QHBoxLayout;
   const char* names[] = {"Position", "Velocity", "Acceleration", "Jerk"};
   for (int o = 0; o < kOrders; ++o) {
@@ -61,7 +69,9 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   row2->addWidget(revs_);
   row2->addWidget(steps_);
   rows_->addLayout(row2);
+}
 
+void PlotControls::addUnitsRow() {
   unitsRow_ = new QWidget;
   auto* row3 = new QHBoxLayout(unitsRow_);
   row3->setContentsMargins(0, 0, 0, 0);
@@ -91,7 +101,9 @@ PlotControls::PlotControls(QWidget* parent) : QWidget(parent) {
   row3->addWidget(against_);
   row3->addWidget(harmonics_);
   rows_->addWidget(unitsRow_);
+}
 
+void PlotControls::connectInputs() {
   auto request = [this] {
     if (quiet_) return;
     const CurveRequest r = read();

@@ -46,6 +46,12 @@ class PlotControls : public QWidget {
   void resizeEvent(QResizeEvent* e) override;
 
  private:
+  // The rows of inputs: the point plotted; the orders and the range; the units, comparison
+  // and harmonics. Then their signals.
+  void addPlotRow();
+  void addOrdersRow();
+  void addUnitsRow();
+  void connectInputs();
   CurveRequest read() const;
 
   CurveRequest shown_;
