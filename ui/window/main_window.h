@@ -102,7 +102,12 @@ class MainWindow : public QMainWindow {
   void changeEvent(QEvent* e) override;
 
  private:
-  void createActions();
+  void createActions();  // main_window_actions.cpp, by menu
+  void createFileActions();
+  void createEditActions();
+  void createViewActions();
+  void createOverlayActions();
+  void createAnimationActions();
   void createTools();
   void createMenus();
   void createToolBars();

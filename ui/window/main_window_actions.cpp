@@ -20,7 +20,21 @@
 namespace linkage::ui {
 
 void MainWindow::createActions() {
-  // File
+  createFileActions();
+  createEditActions();
+  createViewActions();
+  createAnimationActions();
+  connect(makeAction("about", tr("&About Linkage"), QKeySequence(), tr("About this program")),
+          &QAction::triggered, this, [this] {
+            QMessageBox::about(this, tr("About Linkage"),
+                               tr("<b>Linkage</b><br>A planar linkage editor with an exact "
+                                  "kinematic core: positions, velocities and accelerations from "
+                                  "the constraint Jacobian, instant centres by "
+                                  "Kennedy-Aronhold."));
+          });
+}
+
+void MainWindow::createFileActions() {
   connect(makeAction("new", tr("&New"), QKeySequence::New, tr("Start a new mechanism")),
           &QAction::triggered, this, [this] {
             if (maybeSave()) doc_->clear();
@@ -59,8 +73,9 @@ void MainWindow::createActions() {
   QAction* quit = makeAction("quit", tr("&Quit"), QKeySequence::Quit, tr("Close every window"));
   quit->setMenuRole(QAction::QuitRole);
   connect(quit, &QAction::triggered, qApp, &QApplication::closeAllWindows);
+}
 
-  // Edit
+void MainWindow::createEditActions() {
   QAction* undo = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
   undo->setObjectName("undo");
   undo->setShortcut(QKeySequence::Undo);
@@ -71,8 +86,9 @@ void MainWindow::createActions() {
   redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
   redo->setStatusTip(tr("Redo the edit undone last"));
   addAction(redo);
+}
 
-  // View
+void MainWindow::createViewActions() {
   connect(
       makeAction("fit", tr("&Fit to View"), QKeySequence(tr("F")), tr("Show the whole mechanism")),
       &QAction::triggered, view_, &CanvasView::fitToMechanism);
@@ -84,6 +100,22 @@ void MainWindow::createActions() {
                      tr("A millimetre on the screen for a millimetre of the mechanism")),
           &QAction::triggered, this,
           [this] { view_->zoomBy(view_->actualSizeZoom() / view_->zoom()); });
+  createOverlayActions();
+  QAction* dark = makeAction("darkPalette", tr("&Dark Palette"), QKeySequence(),
+                             tr("Light text on a dark background, for every window"));
+  dark->setCheckable(true);
+  connect(dark, &QAction::toggled, this, &MainWindow::setDarkPalette);
+  QAction* detach = makeAction("detachablePanels", tr("&Detachable Panels"), QKeySequence(),
+                               tr("Let the panels float out of the window"));
+  detach->setCheckable(true);
+  connect(detach, &QAction::toggled, this, [this](bool on) {
+    for (QDockWidget* d : findChildren<QDockWidget*>())
+      d->setFeatures(d->features().setFlag(QDockWidget::DockWidgetFloatable, on));
+  });
+}
+
+// What is drawn over the mechanism, each toggled.
+void MainWindow::createOverlayActions() {
   QAction* grid =
       makeAction("showGrid", tr("&Grid"), QKeySequence(tr("#")), tr("Show the millimetre grid"));
   grid->setCheckable(true);
@@ -101,20 +133,9 @@ void MainWindow::createActions() {
                  tr("Show each joint's reaction at this angle, on one scale for the whole turn"));
   forces->setCheckable(true);
   connect(forces, &QAction::toggled, scene_, &CanvasScene::setForcesVisible);
-  QAction* dark = makeAction("darkPalette", tr("&Dark Palette"), QKeySequence(),
-                             tr("Light text on a dark background, for every window"));
-  dark->setCheckable(true);
-  connect(dark, &QAction::toggled, this, &MainWindow::setDarkPalette);
+}
 
-  QAction* detach = makeAction("detachablePanels", tr("&Detachable Panels"), QKeySequence(),
-                               tr("Let the panels float out of the window"));
-  detach->setCheckable(true);
-  connect(detach, &QAction::toggled, this, [this](bool on) {
-    for (QDockWidget* d : findChildren<QDockWidget*>())
-      d->setFeatures(d->features().setFlag(QDockWidget::DockWidgetFloatable, on));
-  });
-
-  // Animation
+void MainWindow::createAnimationActions() {
   QAction* play =
       makeAction("play", tr("&Play"), QKeySequence(tr("Space")), tr("Play or pause the animation"));
   play->setCheckable(true);
@@ -142,15 +163,6 @@ void MainWindow::createActions() {
                      tr("Faster slow motion, up to real time")),
           &QAction::triggered, this,
           [this] { crankBar_->setSpeedIndex(crankBar_->speedBox()->currentIndex() - 1); });
-
-  connect(makeAction("about", tr("&About Linkage"), QKeySequence(), tr("About this program")),
-          &QAction::triggered, this, [this] {
-            QMessageBox::about(this, tr("About Linkage"),
-                               tr("<b>Linkage</b><br>A planar linkage editor with an exact "
-                                  "kinematic core: positions, velocities and accelerations from "
-                                  "the constraint Jacobian, instant centres by "
-                                  "Kennedy-Aronhold."));
-          });
 }
 
 void MainWindow::createMenus() {
