@@ -256,6 +256,20 @@ TEST_F(ForcesPanelTest, TheTableIsTheCommandLinesByteForByte) {
 }
 #endif
 
+TEST_F(ForcesPanelTest, LaysTheExamplesOutInARowOrTwoByTwo) {
+  open("drop-feed");
+  showAndSettle();
+  ASSERT_TRUE(panel.samples()) << panel.message();
+  EXPECT_EQ(panel.figure().columns(), 4);  // the dock of a 1400 px window: one row
+  shot(&panel, "forces-panel-drop-feed");
+  panel.resize(620, 600);  // a dock at the side: two by two
+  settle();
+  EXPECT_EQ(panel.figure().columns(), 2);
+  const ForceFigure& f = panel.figure();
+  EXPECT_LT(f.rect(ForceFigure::Torque)->bottom(), f.rect(ForceFigure::Polar)->top());
+  shot(&panel, "forces-panel-drop-feed-narrow");
+}
+
 TEST_F(ForcesPanelTest, ExportsTheFigure) {
   open("wanzer-inversion-2-masses");
   QTemporaryDir dir;

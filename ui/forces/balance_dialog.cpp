@@ -333,7 +333,7 @@ void BalanceDialog::showResult() {
   summary_->setText(tr("Peak of %1 before: <b>%2 N</b> at %3°<br>after: %4<br>Certified gap %5 "
                        "N: no counterweights%6 do better than %7 N.")
                         .arg(what, number(r.peakBefore), QString::number(r.peakBeforeDeg, 'f', 2),
-                             after, number(cleaned(std::max(0.0, r.gap()), r.peakBefore), 2),
+                             after, number(std::max(0.0, r.gap()), 2),
                              bounded_->isChecked() ? tr(" within the bound") : QString(),
                              number(cleaned(r.lowerBound, r.peakBefore))));
   applyButton()->setEnabled(nonzero > 0);

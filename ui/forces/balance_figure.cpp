@@ -23,9 +23,13 @@ QString measureLabel(BalanceMeasure m) {
                                    : "Shaking |F| [N]";
 }
 
+struct Plots {
+  QCPAxisRect *curve, *polar;
+  QCPLayoutGrid* curveCell;
+};
+
 // Two plots side by side under their titles: the measure, the polar diagram.
-std::pair<QCPAxisRect*, QCPAxisRect*> layOut(QCustomPlot* plot, const QString& crankLabel,
-                                             BalanceMeasure m) {
+Plots layOut(QCustomPlot* plot, const QString& crankLabel, BalanceMeasure m) {
   plot->clearItems();
   plot->clearPlottables();
   plot->plotLayout()->clear();
@@ -36,7 +40,7 @@ std::pair<QCPAxisRect*, QCPAxisRect*> layOut(QCustomPlot* plot, const QString& c
   addTitle(plot->plotLayout(), 0, 1, "Polar diagrams");
   QCPAxisRect* curve = addCrankRect(plot, crankLabel, measureLabel(m));
   QCPAxisRect* polar = addPolarRect(plot);
-  plot->plotLayout()->addElement(1, 0, curve);
+  QCPLayoutGrid* cell = addPlotCell(plot->plotLayout(), 1, 0, curve);
   plot->plotLayout()->addElement(1, 1, polar);
   plot->plotLayout()->setRowStretchFactor(0, 0.01);
   auto* group = new QCPMarginGroup(plot);
@@ -44,7 +48,7 @@ std::pair<QCPAxisRect*, QCPAxisRect*> layOut(QCustomPlot* plot, const QString& c
   polar->setMarginGroup(QCP::msTop | QCP::msBottom, group);
   addZeroLines(curve, false);
   addZeroLines(polar, true);
-  return {curve, polar};
+  return {curve, polar, cell};
 }
 
 void replotEqual(QCustomPlot* plot, QCPAxisRect* polar) {
@@ -60,14 +64,14 @@ void replotEqual(QCustomPlot* plot, QCPAxisRect* polar) {
 }  // namespace
 
 void drawNoBalance(QCustomPlot* plot, const QString& crankLabel, const QString& note) {
-  auto [curve, polar] = layOut(plot, crankLabel, BalanceMeasure::Force);
+  auto [curve, polar, cell] = layOut(plot, crankLabel, BalanceMeasure::Force);
   addRectNote(curve, note);
   replotEqual(plot, polar);
 }
 
 void drawBalance(QCustomPlot* plot, const BalanceCurves& c, BalanceMeasure m,
                  const BalanceResult& r, const QString& crankLabel) {
-  auto [curve, polar] = layOut(plot, crankLabel, m);
+  auto [curve, polar, cell] = layOut(plot, crankLabel, m);
   QCPGraph* before = addCurve(curve, c.crankDeg, measured(c.before, m), forceColours::kBefore,
                               "before", Qt::SolidLine);
   QCPGraph* after =
@@ -84,7 +88,7 @@ void drawBalance(QCustomPlot* plot, const BalanceCurves& c, BalanceMeasure m,
     if (sign > 0) legend.push_back(band);
   }
   fitValues(curve, 1e-3 * r.peakBefore);
-  addLegend(curve, legend);
+  addLegend(curve, legend, cell);
   QCPCurve* pb = addPolarCurve(polar, c.before, forceColours::kBefore, "before");
   QCPCurve* pa = addPolarCurve(polar, c.after, forceColours::kAfter, "after", 2);
   // The legend where the diagrams leave room (fitEqualScales centres them when drawn).

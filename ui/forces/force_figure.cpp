@@ -39,6 +39,7 @@ void ForceFigure::clear() {
   plot_->clearPlottables();
   plot_->plotLayout()->clear();
   for (auto& r : rects_) r = nullptr;
+  for (auto& c : cells_) c = nullptr;
   for (auto& c : curves_) c = nullptr;
   polar_ = nullptr;
   polarDot_ = nullptr;
@@ -74,7 +75,7 @@ void ForceFigure::layOut(const QString& crankLabel, const JointChoice& joint,
     rects_[p] = p == Polar
                     ? addPolarRect(plot_)
                     : addCrankRect(plot_, crankLabel, p == Torque ? "Torque [N m]" : "Force [N]");
-    grid->addElement(row + 1, column, rects_[p]);
+    cells_[p] = addPlotCell(grid, row + 1, column, rects_[p]);
     rects_[p]->setMarginGroup(QCP::msTop | QCP::msBottom, rowGroup);
     addZeroLines(rects_[p], p == Polar);
   }
@@ -132,9 +133,10 @@ void ForceFigure::build(const ForceSamples& s, const QString& crankLabel, const 
   addReaction(s, joint);
   polar_ = addPolarCurve(rects_[Polar], s.shakingN, forceColours::kPolar, "shaking force");
   fitRanges(s, sizeMm);
-  addLegend(rects_[Shaking], {curves_[ShakingX], curves_[ShakingY]});
+  addLegend(rects_[Shaking], {curves_[ShakingX], curves_[ShakingY]}, cells_[Shaking]);
   if (curves_[ReactionX])
-    addLegend(rects_[Reaction], {curves_[ReactionX], curves_[ReactionY], curves_[ReactionNorm]});
+    addLegend(rects_[Reaction], {curves_[ReactionX], curves_[ReactionY], curves_[ReactionNorm]},
+              cells_[Reaction]);
   addCursor();
   setCursor(cursorDeg_);
   replot();

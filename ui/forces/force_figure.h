@@ -19,6 +19,7 @@ class QCPItemLine;
 class QCPItemStraightLine;
 class QCPItemTracer;
 class QCPLayer;
+class QCPLayoutGrid;
 
 namespace linkage::ui {
 
@@ -77,6 +78,7 @@ class ForceFigure {
   int columns_ = 4, layoutWidth_ = 0;
   double cursorDeg_ = 0;
   QCPAxisRect* rects_[kPlots] = {};
+  QCPLayoutGrid* cells_[kPlots] = {};  // each rect's grid, with its legend beside it
   QCPGraph* curves_[kCurves] = {};
   QCPCurve* polar_ = nullptr;
   std::vector<QCPItemStraightLine*> lines_;

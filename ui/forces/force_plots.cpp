@@ -129,13 +129,41 @@ Qt::Alignment emptiestCorner(QCPAxisRect* rect) {
 
 }  // namespace
 
-void addLegend(QCPAxisRect* rect, const std::vector<QCPAbstractPlottable*>& items) {
+QCPLayoutGrid* addPlotCell(QCPLayoutGrid* grid, int row, int column, QCPAxisRect* rect) {
+  auto* cell = new QCPLayoutGrid;
+  grid->addElement(row, column, cell);
+  cell->addElement(0, 0, rect);
+  cell->setColumnSpacing(2);
+  return cell;
+}
+
+void addLegend(QCPAxisRect* rect, const std::vector<QCPAbstractPlottable*>& items,
+               QCPLayoutGrid* cell) {
   auto* legend = new QCPLegend;
-  rect->insetLayout()->addElement(legend, emptiestCorner(rect));
+  if (cell) {
+    // Beside the plot, level with its top.
+    auto* column = new QCPLayoutGrid;
+    cell->addElement(0, 1, column);
+    cell->setColumnStretchFactor(1, 0.01);
+    column->addElement(0, 0, legend);
+    column->addElement(1, 0, new QCPLayoutElement(rect->parentPlot()));
+    column->setRowStretchFactor(0, 0.01);
+    column->setMargins(QMargins(0, 6, 0, 0));
+    // As wide as its widest entry (icon, gaps, text): the grid would squeeze it otherwise.
+    QFont f = rect->parentPlot()->font();
+    f.setPointSizeF(f.pointSizeF() - 1);
+    int text = 0;
+    for (QCPAbstractPlottable* p : items)
+      text = std::max(text, QFontMetrics(f).horizontalAdvance(p->name()));
+    column->setMinimumSize(22 + text + 24, 0);
+  } else {
+    rect->insetLayout()->addElement(legend, emptiestCorner(rect));
+  }
   legend->setLayer("legend");
   legend->setBrush(QColor(255, 255, 255, 210));
   legend->setBorderPen(QPen(QColor(200, 200, 200)));
-  legend->setRowSpacing(-3);
+  legend->setRowSpacing(0);
+  legend->setIconSize(22, 10);
   QFont f = rect->parentPlot()->font();
   f.setPointSizeF(f.pointSizeF() - 1);
   legend->setFont(f);

@@ -43,9 +43,13 @@ double peakOf(const std::vector<double>& v);
 double peakOf(const std::vector<Vec2>& v);
 // A line across the rect at y = 0 and (polar) at x = 0: where the force changes sign.
 void addZeroLines(QCPAxisRect* rect, bool vertical);
-// A legend of the graphs and curves given, in the corner of the rect its curves leave emptiest
-// (the axes' ranges set first).
-void addLegend(QCPAxisRect* rect, const std::vector<QCPAbstractPlottable*>& items);
+// A legend of the graphs and curves given: beside the rect, in column 1 of `cell` (the grid
+// holding the rect in its column 0: the legend hides no curve), or without a cell in the corner
+// of the rect its curves leave emptiest (the axes' ranges set first).
+void addLegend(QCPAxisRect* rect, const std::vector<QCPAbstractPlottable*>& items,
+               QCPLayoutGrid* cell = nullptr);
+// A grid in grid's cell (row, column) holding `rect` in its column 0, for a legend beside it.
+QCPLayoutGrid* addPlotCell(QCPLayoutGrid* grid, int row, int column, QCPAxisRect* rect);
 // A sentence in the rect in place of curves (the rect's value axis shows no numbers).
 void addRectNote(QCPAxisRect* rect, const QString& text);
 // A bold title in a cell of a layout grid (above a plot).

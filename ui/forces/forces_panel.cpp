@@ -75,6 +75,7 @@ void ForcesPanel::buildWidgets() {
   jointLabel->setBuddy(joints_);
   values_ = new QLabel;
   values_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  values_->setWordWrap(true);
   values_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   row->addWidget(jointLabel);
   row->addWidget(joints_);
