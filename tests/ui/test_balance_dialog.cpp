@@ -15,6 +15,7 @@
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
+#include "mechanisms.h"
 #include "plots/qcp.h"
 #include "ui_test.h"
 
@@ -115,6 +116,22 @@ TEST_F(BalanceDialogTest, ABoundIsKeptAndAnEditForgetsTheResult) {
   EXPECT_FALSE(d.result());
   EXPECT_FALSE(d.applyButton()->isEnabled());
   EXPECT_TRUE(d.message().contains("compute again")) << d.message();
+}
+
+TEST_F(BalanceDialogTest, ACrankThatCannotTurnIsASentence) {
+  // A four-bar whose crank locks before 180 degrees (there A is 100 mm from the rocker's pivot,
+  // beyond the coupler and rocker's 30 + 50): no cycle, no balance, and the dialog says why.
+  test::FourBar f = test::fourBar(60, 40, 30, 50, 70);
+  for (BodyId b : {f.crank, f.coupler, f.rocker})
+    f.m.body(b)->mass = Mass{0.1, f.m.point(f.A)->pos, 10, {}, {}};
+  doc.setContents(f.m, "", "locking");
+  BalanceDialog d(&doc);
+  EXPECT_EQ(d.offeredBodies(), (std::vector<BodyId>{f.crank, f.rocker}));
+  EXPECT_FALSE(d.compute());
+  EXPECT_FALSE(d.result());
+  EXPECT_TRUE(d.message().startsWith("No balance: ")) << d.message();
+  EXPECT_FALSE(d.applyButton()->isEnabled());
+  EXPECT_EQ(d.table()->rowCount(), 0);
 }
 
 #ifdef LINKAGE_CLI

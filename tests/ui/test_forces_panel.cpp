@@ -209,6 +209,14 @@ TEST_F(ForcesPanelTest, ARedundantJointsReactionIsASentence) {
     if (auto* t = qobject_cast<QCPItemText*>(panel.plotWidget()->item(i)))
       said = said || t->text().contains("Not determined");
   EXPECT_TRUE(said);
+  // This parallelogram reaches a change point: the curves stop there, and the figure says so.
+  ASSERT_FALSE(s->complete);
+  bool noted = false;
+  for (int i = 0; i < panel.plotWidget()->plotLayout()->elementCount(); ++i)
+    if (auto* t = qobject_cast<QCPTextElement*>(panel.plotWidget()->plotLayout()->elementAt(i)))
+      noted =
+          noted || t->text().startsWith(QString("Ends at %1").arg(s->crankDeg.back(), 0, 'f', 1));
+  EXPECT_TRUE(noted);
   // The values at the pose: the torque and shaking force, not the undetermined reaction.
   EXPECT_TRUE(panel.cursorText().contains("torque")) << panel.cursorText();
   EXPECT_FALSE(panel.cursorText().contains("; pin:")) << panel.cursorText();
