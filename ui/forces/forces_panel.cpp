@@ -136,7 +136,6 @@ int ForcesPanel::joint() const {
 
 void ForcesPanel::markStale() {
   stale_ = true;
-  poseReady_ = false;
   schedule();
 }
 
@@ -187,7 +186,6 @@ QString ForcesPanel::whyNoForces() const {
 void ForcesPanel::recompute() {
   pending_ = false;
   stale_ = false;
-  poseReady_ = false;
   samples_ = ForceSamples{};
   why_ = whyNoForces();
   if (why_.isEmpty()) {
@@ -197,8 +195,6 @@ void ForcesPanel::recompute() {
     ++computations_;
     if (samples_.size() == 0)
       why_ = tr("No forces: %1.").arg(QString::fromStdString(samples_.status.message));
-    else
-      poseReady_ = poseSolver_.prepare(k).ok();
     forceScale_ = peakOf(samples_.shakingN);
     for (const std::vector<Vec2>& r : samples_.reactionN)
       forceScale_ = std::max(forceScale_, peakOf(r));
@@ -251,13 +247,11 @@ void ForcesPanel::updateCursor() {
   if (!isVisible() || !doc_ || !samples()) return;
   const double c = doc_->crankDeg();
   figure_->setCursor(c - 360.0 * std::floor(c / 360.0));
-  if (!poseReady_) {
-    values_->clear();
-    return;
-  }
+  // The values at the pose exactly, not read off the curves: a solver of its own on a copy (a
+  // solver works on the kinematics it was prepared with; about as long as a kinematic step).
   Kinematics k = doc_->kinematics();
   k.setAccelerations(true);
-  const Forces& f = poseSolver_.compute(k);
+  const Forces f = computeForces(k);
   if (!f.status.ok()) {
     values_->setText(tr("At %1°: no forces (%2)")
                          .arg(c, 0, 'f', 1)

@@ -92,9 +92,6 @@ class ForcesPanel : public QWidget {
 
   QPointer<Document> doc_;
   ForceSamples samples_;
-  // Prepared for the design sampled: the values at the pose, exactly (not read off the curves).
-  ForceSolver poseSolver_;
-  bool poseReady_ = false;
   double forceScale_ = 0, torqueScale_ = 0;  // the peaks: what is rounding next to them
   QString why_;                              // the sentence in place of the curves
   QString jointName_;                        // the chosen joint, by the force table's name
