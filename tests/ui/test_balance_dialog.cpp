@@ -81,6 +81,17 @@ TEST_F(BalanceDialogTest, ApplyIsOneUndoStepThatUndoTakesBack) {
   BalanceDialog d(&doc);
   ASSERT_TRUE(d.compute()) << d.message();  // |F|, the default
   const BalanceResult r = *d.result();
+  // The figure's curve after is the balanced design's |F| on whole degrees: its largest is the
+  // certified peak (at 0 degrees, a sample), never above it.
+  QCPGraph* after = nullptr;
+  for (int i = 0; i < d.plotWidget()->graphCount(); ++i)
+    if (d.plotWidget()->graph(i)->name() == "after") after = d.plotWidget()->graph(i);
+  ASSERT_TRUE(after);
+  double drawn = 0;
+  for (auto it = after->data()->constBegin(); it != after->data()->constEnd(); ++it)
+    drawn = std::max(drawn, it->value);
+  EXPECT_LE(drawn, r.peakAfter * (1 + 1e-9));
+  EXPECT_GE(drawn, r.peakAfter * (1 - 1e-6));
   ASSERT_TRUE(d.apply());
   EXPECT_EQ(doc.undoStack()->count(), steps + 1);
   EXPECT_EQ(doc.undoStack()->text(steps), "Balance: 1 counterweight");

@@ -3,6 +3,7 @@
 // place of the curves otherwise), work only while shown, and its table is the command line's.
 #include <gtest/gtest.h>
 
+#include <QComboBox>
 #include <QFile>
 #include <QImage>
 #include <QProcess>
@@ -16,6 +17,7 @@
 #include "forces/forces_panel.h"
 #include "linkage/force_samples.h"
 #include "linkage/io/model_lookup.h"
+#include "linkage/tables/force_table.h"
 #include "mechanisms.h"
 #include "plots/qcp.h"
 #include "ui_test.h"
@@ -57,6 +59,14 @@ TEST_F(ForcesPanelTest, CurvesAreTheSampledForcesExactly) {
   const ForceSamples s = sampleForces(doc.kinematics());
   ASSERT_EQ(s.size(), 361u);
   const ForceFigure& f = panel.figure();
+  // The joints offered are named as the force table's columns name them.
+  const QComboBox* joints = panel.findChild<QComboBox*>();
+  ASSERT_TRUE(joints);
+  ASSERT_EQ(joints->count(), 4);
+  const QString header = QString::fromStdString(forceTableHeader(doc.design()));
+  for (int i = 0; i < joints->count(); ++i)
+    EXPECT_TRUE(header.contains("," + joints->itemText(i) + ".fx_N,")) << joints->itemText(i);
+  EXPECT_EQ(joints->itemText(2), "pin:rod.B");
   // The rod's pin to the needle bar (pin:rod.B): the force on the rod.
   const int joint = 2;
   panel.setJoint(joint);
