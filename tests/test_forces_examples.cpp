@@ -238,5 +238,29 @@ TEST(ForcesExamples, TheDropFeedsBoundedBalanceEnds) {
   EXPECT_LT(r.peakAfter, 0.6 * r.peakBefore);
 }
 
+TEST(ForcesExamples, ASolverOutlivesTheKinematicsItWasPreparedOn) {
+  // The editor prepares a solver on a copy of its kinematics and computes with later copies of
+  // the same revision: what the solver reads at each pose (the loads) must be its own, not read
+  // through the first copy, which is gone (a read after free: AddressSanitizer, which
+  // scripts/run-tests.sh runs every test under, catches it; a Release build may not).
+  const Mechanism m = test::example("wanzer-inversion-2-masses");
+  ASSERT_FALSE(m.loads.empty());
+  const Kinematics k = loaded(m);
+  ForceSolver solver;
+  {
+    const Kinematics first = k;
+    ASSERT_TRUE(solver.prepare(first).ok());
+  }
+  for (double deg : {60.0, 123.0}) {  // the needle's load acts at 60 degrees, not at 123
+    Kinematics later = k;
+    ASSERT_TRUE(later.moveTo(deg).ok());
+    const Forces& f = solver.compute(later);
+    ASSERT_TRUE(f.status.ok()) << f.status.message;
+    const Forces fresh = computeForces(later);
+    EXPECT_EQ(f.driverTorqueNm, fresh.driverTorqueNm) << deg;
+    EXPECT_EQ(f.shakingForceN, fresh.shakingForceN) << deg;
+  }
+}
+
 }  // namespace
 }  // namespace linkage

@@ -35,7 +35,8 @@ struct ForceSolver::Impl {
     Vec2 c = Vec2::Zero();  // the centre of mass in the body's frame
   };
   struct LoadAt {
-    const Load* load;
+    Load load;  // a copy: the solver may outlive the kinematics it was prepared on (a copy of
+                // them of the same revision is computed with)
     int body = -1;
     Vec2 s = Vec2::Zero();  // the point in the body's frame (a force)
   };
@@ -79,9 +80,9 @@ void ForceSolver::Impl::bodies(const KinematicsState& s) {
   for (const Load& l : s.mech.loads) {
     if (l.point) {
       const PointLocation* p = sys.point(l.point);
-      if (p && p->body >= 0) loads.push_back({&l, p->body, p->s});
+      if (p && p->body >= 0) loads.push_back({l, p->body, p->s});
     } else if (const int k = sys.bodyIndex(l.body); k >= 0) {
-      loads.push_back({&l, k, Vec2::Zero()});
+      loads.push_back({l, k, Vec2::Zero()});
     }
   }
   gravity = s.mech.gravity.value_or(Vec2::Zero());
@@ -107,13 +108,13 @@ void ForceSolver::Impl::appliedAndInertia(const KinematicsState& s, double omega
     Q[3 * k + 2] += cross(g, F) - bm.j * w2 * b.al / 1000;  // N mm (kg mm^2/s^2 = 1e-3 N mm)
   }
   for (const LoadAt& l : loads) {
-    if (!l.load->activeAt(crankDeg)) continue;
-    if (l.load->point) {
+    if (!l.load.activeAt(crankDeg)) continue;
+    if (l.load.point) {
       const Vec2 g = m.body[l.body].R * l.s;
-      Q.segment<2>(3 * l.body) += l.load->forceN;
-      Q[3 * l.body + 2] += cross(g, l.load->forceN);
+      Q.segment<2>(3 * l.body) += l.load.forceN;
+      Q[3 * l.body + 2] += cross(g, l.load.forceN);
     } else {
-      Q[3 * l.body + 2] += 1000 * l.load->torqueNm;
+      Q[3 * l.body + 2] += 1000 * l.load.torqueNm;
     }
   }
 }

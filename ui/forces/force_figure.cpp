@@ -1,0 +1,257 @@
+#include "forces/force_figure.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "forces/force_plots.h"
+#include "plots/qcp.h"
+
+namespace linkage::ui {
+
+namespace {
+
+std::vector<double> component(const std::vector<Vec2>& v, int c) {
+  std::vector<double> out;
+  out.reserve(v.size());
+  for (const Vec2& f : v) out.push_back(c == 0 ? f.x() : c == 1 ? f.y() : f.norm());
+  return out;
+}
+
+}  // namespace
+
+ForceFigure::ForceFigure(QCustomPlot* plot) : plot_(plot) {
+  plot_->setAutoAddPlottableToLegend(false);
+  plot_->setPlottingHint(QCP::phFastPolylines, true);
+  cursorLayer_ = cursorLayer(plot_);
+  // Every draw lays the plots out first (on the screen, or at an export's size): the polar
+  // diagram's scales are made equal for the size it is drawn at, before it is drawn.
+  QObject::connect(plot_, &QCustomPlot::afterLayout, plot_, [this] {
+    if (rects_[Polar]) fitEqualScales(rects_[Polar]);
+  });
+}
+
+int ForceFigure::columnsFor(int width) {
+  return width >= 900 ? 4 : 2;
+}
+
+void ForceFigure::clear() {
+  plot_->clearItems();
+  plot_->clearPlottables();
+  plot_->plotLayout()->clear();
+  for (auto& r : rects_) r = nullptr;
+  for (auto& c : cells_) c = nullptr;
+  for (auto& c : curves_) c = nullptr;
+  polar_ = nullptr;
+  polarDot_ = nullptr;
+  polarArrow_ = nullptr;
+  lines_.clear();
+  tracers_.clear();
+  samples_ = nullptr;
+}
+
+void ForceFigure::layOut(const QString& crankLabel, const JointChoice& joint,
+                         const QString& stopNote) {
+  QCPLayoutGrid* grid = plot_->plotLayout();
+  if (!stopNote.isEmpty()) {
+    // Why the curves end early, across the figure above the plots.
+    auto* note = new QCPTextElement(plot_, stopNote, plot_->font());
+    note->setTextColor(forceColours::kNote);
+    note->setMargins(QMargins(4, 3, 4, 0));
+    grid->addElement(0, 0, note);
+    grid->setRowStretchFactor(0, 0.01);
+    grid = new QCPLayoutGrid;
+    plot_->plotLayout()->addElement(1, 0, grid);
+  }
+  grid->setRowSpacing(0);
+  grid->setColumnSpacing(8);
+  const QString titles[kPlots] = {
+      "Driver torque", "Shaking force", "Polar diagram of the shaking force",
+      joint.index < 0 ? QString("Joint reaction")
+                      : QString("Reaction %1 (on %2)").arg(joint.label, joint.bodyName)};
+  auto* rowGroup = new QCPMarginGroup(plot_);
+  for (int p = 0; p < kPlots; ++p) {
+    const int row = 2 * (p / columns_), column = p % columns_;
+    addTitle(grid, row, column, titles[p]);
+    rects_[p] = p == Polar
+                    ? addPolarRect(plot_)
+                    : addCrankRect(plot_, crankLabel, p == Torque ? "Torque [N m]" : "Force [N]");
+    cells_[p] = addPlotCell(grid, row + 1, column, rects_[p]);
+    rects_[p]->setMarginGroup(QCP::msTop | QCP::msBottom, rowGroup);
+    addZeroLines(rects_[p], p == Polar);
+  }
+  // Titles take their height, the plots the rest.
+  for (int r = 0; r < grid->rowCount(); ++r) grid->setRowStretchFactor(r, r % 2 ? 1 : 0.01);
+}
+
+void ForceFigure::addReaction(const ForceSamples& s, const JointChoice& joint) {
+  if (joint.index < 0 || joint.index >= static_cast<int>(s.reactionN.size())) {
+    addRectNote(rects_[Reaction], "No joint chosen.");
+    return;
+  }
+  if (joint.undetermined) {
+    addRectNote(rects_[Reaction],
+                wrapped(QString("Not determined: %1 is a redundant joint; the joints share its "
+                                "reaction in more than one way, and the rigid-body model cannot "
+                                "tell how.")
+                            .arg(joint.label),
+                        30));
+    return;
+  }
+  const std::vector<Vec2>& r = s.reactionN[joint.index];
+  curves_[ReactionX] =
+      addCurve(rects_[Reaction], s.crankDeg, component(r, 0), forceColours::kX, "fx");
+  curves_[ReactionY] =
+      addCurve(rects_[Reaction], s.crankDeg, component(r, 1), forceColours::kY, "fy");
+  curves_[ReactionNorm] = addCurve(rects_[Reaction], s.crankDeg, component(r, 2),
+                                   forceColours::kNorm, "|F|", Qt::DashLine);
+}
+
+void ForceFigure::fitRanges(const ForceSamples& s, double sizeMm) {
+  // What is rounding of zero next to the figure's largest force (and its moment) is drawn flat:
+  // the value axes span at least a thousandth of it.
+  double force = peakOf(s.shakingN);
+  for (size_t j = 0; j < s.reactionN.size(); ++j) force = std::max(force, peakOf(s.reactionN[j]));
+  const double torque = std::max(peakOf(s.driverTorqueNm), force * sizeMm * 1e-3);
+  constexpr double kFlat = 1e-3;
+  fitValues(rects_[Torque], kFlat * torque);
+  fitValues(rects_[Shaking], kFlat * force);
+  if (curves_[ReactionX]) fitValues(rects_[Reaction], kFlat * force);
+}
+
+void ForceFigure::build(const ForceSamples& s, const QString& crankLabel, const JointChoice& joint,
+                        const QString& stopNote, double sizeMm) {
+  clear();
+  samples_ = &s;
+  columns_ = columnsFor(layoutWidth_ > 0 ? layoutWidth_ : plot_->width());
+  layOut(crankLabel, joint, stopNote);
+  curves_[TorqueCurve] =
+      addCurve(rects_[Torque], s.crankDeg, s.driverTorqueNm, forceColours::kX, "torque");
+  curves_[ShakingX] =
+      addCurve(rects_[Shaking], s.crankDeg, component(s.shakingN, 0), forceColours::kX, "fx");
+  curves_[ShakingY] =
+      addCurve(rects_[Shaking], s.crankDeg, component(s.shakingN, 1), forceColours::kY, "fy");
+  addReaction(s, joint);
+  polar_ = addPolarCurve(rects_[Polar], s.shakingN, forceColours::kPolar, "shaking force");
+  fitRanges(s, sizeMm);
+  addLegend(rects_[Shaking], {curves_[ShakingX], curves_[ShakingY]}, cells_[Shaking]);
+  if (curves_[ReactionX])
+    addLegend(rects_[Reaction], {curves_[ReactionX], curves_[ReactionY], curves_[ReactionNorm]},
+              cells_[Reaction]);
+  addCursor();
+  setCursor(cursorDeg_);
+  replot();
+}
+
+void ForceFigure::addCursor() {
+  for (Plot p : {Torque, Shaking, Reaction}) {
+    QCPAxisRect* rect = rects_[p];
+    auto* line = new QCPItemStraightLine(plot_);
+    line->setLayer(cursorLayer_);
+    line->setClipAxisRect(rect);
+    line->point1->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    line->point2->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    line->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
+    lines_.push_back(line);
+  }
+  for (QCPGraph* g : curves_) {
+    if (!g) continue;
+    auto* t = new QCPItemTracer(plot_);
+    t->setLayer(cursorLayer_);
+    t->setGraph(g);
+    t->setInterpolating(true);
+    t->setStyle(QCPItemTracer::tsCircle);
+    t->setSize(6);
+    t->setPen(QPen(g->pen().color().darker(130)));
+    t->setBrush(Qt::white);
+    t->setClipAxisRect(g->keyAxis()->axisRect());
+    tracers_.push_back(t);
+  }
+  QCPAxisRect* polar = rects_[Polar];
+  polarArrow_ = new QCPItemLine(plot_);
+  polarDot_ = new QCPItemTracer(plot_);
+  polarArrow_->setHead(QCPLineEnding(QCPLineEnding::esSpikeArrow, 9, 11));
+  polarArrow_->setPen(QPen(QColor(40, 40, 40), 1.2));
+  polarDot_->setStyle(QCPItemTracer::tsCircle);
+  polarDot_->setSize(7);
+  polarDot_->setPen(QPen(QColor(40, 40, 40)));
+  polarDot_->setBrush(QColor(255, 200, 40));
+  for (QCPAbstractItem* i :
+       {static_cast<QCPAbstractItem*>(polarArrow_), static_cast<QCPAbstractItem*>(polarDot_)}) {
+    i->setLayer(cursorLayer_);
+    i->setClipAxisRect(polar);
+    for (QCPItemPosition* p : i->positions())
+      p->setAxes(polar->axis(QCPAxis::atBottom), polar->axis(QCPAxis::atLeft));
+  }
+  polarArrow_->start->setCoords(0, 0);
+}
+
+QPointF ForceFigure::polarMark() const {
+  if (!samples_ || samples_->size() == 0) return {NAN, NAN};
+  const ForceSamples& s = *samples_;
+  const double step = 360.0 / static_cast<double>(s.steps);
+  const double at = cursorDeg_ / step;
+  const size_t i = static_cast<size_t>(std::max(0.0, std::floor(at)));
+  if (i + 1 >= s.size()) {
+    // At the last sample exactly, or past where the sweep stopped (nothing known there).
+    if (i + 1 == s.size() && std::abs(at - static_cast<double>(i)) < 1e-9)
+      return {s.shakingN[i].x(), s.shakingN[i].y()};
+    return {NAN, NAN};
+  }
+  const double t = at - static_cast<double>(i);
+  const Vec2 f = (1 - t) * s.shakingN[i] + t * s.shakingN[i + 1];
+  return {f.x(), f.y()};
+}
+
+void ForceFigure::setCursor(double deg) {
+  cursorDeg_ = deg;
+  for (QCPItemStraightLine* l : lines_) {
+    l->point1->setCoords(deg, 0);
+    l->point2->setCoords(deg, 1);
+  }
+  for (QCPItemTracer* t : tracers_) {
+    t->setGraphKey(deg);
+    const QCPGraph* g = t->graph();
+    t->setVisible(!g->data()->isEmpty() && deg >= g->data()->constBegin()->key &&
+                  deg <= (g->data()->constEnd() - 1)->key);
+  }
+  if (polarDot_) {
+    const QPointF f = polarMark();
+    const bool known = std::isfinite(f.x());
+    polarDot_->position->setCoords(f);
+    polarArrow_->end->setCoords(f);
+    polarDot_->setVisible(known);
+    polarArrow_->setVisible(known);
+  }
+  cursorLayer_->replot();
+}
+
+void ForceFigure::setCursorVisible(bool on) {
+  cursorLayer_->setVisible(on);
+  cursorLayer_->replot();
+}
+
+void ForceFigure::replot() {
+  plot_->replot();
+}
+
+double ForceFigure::crankAt(const QPointF& pixel, int* plot) const {
+  if (plot) *plot = -1;
+  for (Plot p : {Torque, Shaking, Reaction})
+    if (rects_[p] && rects_[p]->rect().contains(pixel.toPoint())) {
+      if (plot) *plot = p;
+      return crankAtX(p, pixel.x());
+    }
+  return NAN;
+}
+
+double ForceFigure::crankAtX(int plot, double pixelX) const {
+  if (plot < 0 || plot >= kPlots || plot == Polar || !rects_[plot]) return NAN;
+  return rects_[plot]->axis(QCPAxis::atBottom)->pixelToCoord(pixelX);
+}
+
+QPointF ForceFigure::pixelAt(Plot p, double x, double y) const {
+  QCPAxisRect* r = rects_[p];
+  return {r->axis(QCPAxis::atBottom)->coordToPixel(x), r->axis(QCPAxis::atLeft)->coordToPixel(y)};
+}
+
+}  // namespace linkage::ui

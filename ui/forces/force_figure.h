@@ -1,0 +1,90 @@
+// The forces panel's figure in a QCustomPlot: the driver's torque, the shaking force's fx and
+// fy and a joint's reaction against the crank angle over one turn, and the polar diagram of the
+// shaking force (fy against fx, equal scales); a cursor at the pose on a layer of its own (a
+// line on each crank-angle plot, the pose's point and force vector on the polar diagram).
+// Laid out in one row of four plots in a wide dock, two by two in a narrower one.
+#pragma once
+
+#include <QPointF>
+#include <QString>
+#include <vector>
+
+#include "linkage/force_samples.h"
+
+class QCustomPlot;
+class QCPAxisRect;
+class QCPCurve;
+class QCPGraph;
+class QCPItemLine;
+class QCPItemStraightLine;
+class QCPItemTracer;
+class QCPLayer;
+class QCPLayoutGrid;
+
+namespace linkage::ui {
+
+class ForceFigure {
+ public:
+  enum Plot { Torque, Shaking, Polar, Reaction, kPlots };
+  enum Curve { TorqueCurve, ShakingX, ShakingY, ReactionX, ReactionY, ReactionNorm, kCurves };
+  struct JointChoice {
+    int index = -1;           // into the mechanism's joints; -1: none
+    QString label, bodyName;  // "pin:rod.B" (the force table's name), the body it acts on
+    bool undetermined = false;
+  };
+
+  explicit ForceFigure(QCustomPlot* plot);
+
+  // Lays the figure out for the samples (which must outlive the next build and setCursor);
+  // `stopNote`, when not empty, says why the curves end before the turn does; `sizeMm`, the
+  // mechanism's size, scales what is rounding of a zero torque.
+  void build(const ForceSamples& s, const QString& crankLabel, const JointChoice& joint,
+             const QString& stopNote, double sizeMm);
+  // Nothing drawn (the panel shows a sentence instead).
+  void clear();
+  // Moves the cursor to a crank angle in [0, 360] and repaints the cursor layer only.
+  void setCursor(double deg);
+  double cursor() const { return cursorDeg_; }
+  void setCursorVisible(bool on);
+  // Plots across the figure for a plot `width` pixels wide: 4 or 2.
+  static int columnsFor(int width);
+  int columns() const { return columns_; }
+  // Lay the next builds out for this width rather than the plot's (an export); 0: the plot's.
+  void setLayoutWidth(int width) { layoutWidth_ = width; }
+
+  // The crank angle under a pixel of a crank-angle plot (NaN elsewhere), the plot in `plot`.
+  double crankAt(const QPointF& pixel, int* plot = nullptr) const;
+  double crankAtX(int plot, double pixelX) const;
+
+  // For tests and tools.
+  QCPAxisRect* rect(Plot p) const { return rects_[p]; }
+  QCPGraph* curve(Curve c) const { return curves_[c]; }
+  QCPCurve* polar() const { return polar_; }
+  QPointF pixelAt(Plot p, double x, double y) const;
+  // The pose's point on the polar diagram (N): the shaking force interpolated at the cursor.
+  QPointF polarMark() const;
+  // Replots with the polar diagram's scales made equal (the rects are laid out first).
+  void replot();
+
+ private:
+  void layOut(const QString& crankLabel, const JointChoice& joint, const QString& stopNote);
+  void addReaction(const ForceSamples& s, const JointChoice& joint);
+  void fitRanges(const ForceSamples& s, double sizeMm);
+  void addCursor();
+
+  QCustomPlot* plot_;
+  QCPLayer* cursorLayer_;
+  const ForceSamples* samples_ = nullptr;
+  int columns_ = 4, layoutWidth_ = 0;
+  double cursorDeg_ = 0;
+  QCPAxisRect* rects_[kPlots] = {};
+  QCPLayoutGrid* cells_[kPlots] = {};  // each rect's grid, with its legend beside it
+  QCPGraph* curves_[kCurves] = {};
+  QCPCurve* polar_ = nullptr;
+  std::vector<QCPItemStraightLine*> lines_;
+  std::vector<QCPItemTracer*> tracers_;
+  QCPItemTracer* polarDot_ = nullptr;
+  QCPItemLine* polarArrow_ = nullptr;
+};
+
+}  // namespace linkage::ui

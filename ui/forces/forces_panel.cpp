@@ -1,0 +1,375 @@
+#include "forces/forces_panel.h"
+
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QSpinBox>
+#include <QStackedWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+#include "document/document.h"
+#include "document/shown_numbers.h"
+#include "export/figure_export.h"
+#include "forces/force_plots.h"
+#include "forces/force_table_export.h"
+#include "linkage/elements.h"
+#include "plots/qcp.h"
+
+namespace linkage::ui {
+
+namespace {
+
+// "pin:rod.B": a joint as the force table's columns name it.
+QString jointName(const Mechanism& m, const Joint& j) {
+  return QString("%1:%2").arg(kindOf(j).name, QString::fromStdString(m.pointLabel(j.a)));
+}
+
+bool anyMassOrLoad(const Mechanism& m) {
+  if (!m.loads.empty()) return true;
+  return std::any_of(m.bodies.begin(), m.bodies.end(), [](const Body& b) {
+    return !b.ground && b.mass && (b.mass->kg > 0 || b.mass->jKgMm2 > 0);
+  });
+}
+
+QString number(double v) {
+  return QString::number(v, 'g', 5);
+}
+
+}  // namespace
+
+ForcesPanel::ForcesPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+  buildWidgets();
+  if (doc) {
+    connect(doc, &Document::designChanged, this, [this] {
+      offerJoints();
+      markStale();
+    });
+    connect(doc, &Document::poseChanged, this, &ForcesPanel::updateCursor);
+    connect(doc, &QObject::destroyed, this, [this] { markStale(); });
+  }
+  offerJoints();
+}
+
+ForcesPanel::~ForcesPanel() = default;
+
+void ForcesPanel::buildWidgets() {
+  auto* top = new QVBoxLayout(this);
+  top->setContentsMargins(4, 4, 4, 4);
+  top->setSpacing(3);
+  auto* row = new QHBoxLayout;
+  auto* jointLabel = new QLabel(tr("Reaction at &joint:"));
+  joints_ = new QComboBox;
+  joints_->setToolTip(
+      tr("The joint whose reaction is plotted: the force on the body of its first point"));
+  joints_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  jointLabel->setBuddy(joints_);
+  values_ = new QLabel;
+  values_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  values_->setWordWrap(true);
+  values_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  row->addWidget(jointLabel);
+  row->addWidget(joints_);
+  row->addSpacing(12);
+  row->addWidget(values_, 1);
+  top->addLayout(row);
+
+  stack_ = new QStackedWidget;
+  plot_ = new QCustomPlot;
+  plot_->setMinimumSize(240, 160);
+  plot_->setCursor(Qt::CrossCursor);
+  plot_->setInteractions({});  // a drag turns the crank, not the axes
+  figure_ = std::make_unique<ForceFigure>(plot_);
+  sentence_ = new QLabel;
+  sentence_->setWordWrap(true);
+  sentence_->setAlignment(Qt::AlignCenter);
+  sentence_->setMargin(16);
+  sentence_->setStyleSheet("color: #962020");
+  stack_->addWidget(plot_);
+  stack_->addWidget(sentence_);
+  top->addWidget(stack_, 1);
+
+  connect(joints_, &QComboBox::activated, this, [this](int i) { setJoint(i); });
+  connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
+  connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { mouseOnPlot(e, false); });
+  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { dragging_ = false; });
+}
+
+// --- the joint ------------------------------------------------------------------------------
+
+void ForcesPanel::offerJoints() {
+  const QSignalBlocker block(joints_);
+  joints_->clear();
+  if (!doc_) return;
+  const Mechanism& m = doc_->design();
+  for (const Joint& j : m.joints) joints_->addItem(jointName(m, j));
+  int at = joints_->findText(jointName_);
+  if (at < 0 && joints_->count() > 0) at = 0;
+  joints_->setCurrentIndex(at);
+  jointName_ = joints_->currentText();
+}
+
+void ForcesPanel::setJoint(int index) {
+  if (index < 0 || index >= joints_->count()) index = -1;
+  joints_->setCurrentIndex(index);
+  const QString name = joints_->currentText();
+  if (name == jointName_ && !stale_) return;
+  jointName_ = name;
+  // The samples hold every joint's reaction: only the figure changes.
+  if (isVisible() && !stale_) rebuildFigure();
+}
+
+int ForcesPanel::joint() const {
+  return joints_->currentIndex();
+}
+
+// --- work -----------------------------------------------------------------------------------
+
+void ForcesPanel::markStale() {
+  stale_ = true;
+  schedule();
+}
+
+void ForcesPanel::schedule() {
+  // As the motion plots: nothing while hidden; shown, once per burst of edits and at most 30
+  // times a second (a drag that reshapes the design edits it at every mouse move).
+  if (!isVisible() || pending_) return;
+  pending_ = true;
+  constexpr int kMinMs = 33;
+  const int wait = lastFigure_.isValid() ? std::max(0, kMinMs - int(lastFigure_.elapsed())) : 0;
+  QTimer::singleShot(wait, this, [this] {
+    if (!pending_) return;
+    recompute();
+    lastFigure_.start();
+  });
+}
+
+void ForcesPanel::showEvent(QShowEvent* e) {
+  QWidget::showEvent(e);
+  ensureComputed();
+  updateCursor();
+}
+
+void ForcesPanel::resizeEvent(QResizeEvent* e) {
+  QWidget::resizeEvent(e);
+  // One row of plots in a wide dock, two in a narrow one: lay them out again when that changes.
+  if (!stale_ && samples() && ForceFigure::columnsFor(plot_->width()) != figure_->columns())
+    rebuildFigure();
+}
+
+void ForcesPanel::ensureComputed() {
+  if (stale_) recompute();
+}
+
+QString ForcesPanel::whyNoForces() const {
+  if (!doc_) return tr("No document.");
+  if (!doc_->solved())
+    return tr("The design is not solved (%1): no forces are shown.")
+        .arg(QString::fromStdString(doc_->solveStatus().message));
+  if (Status s = doc_->motionStatus(); !s.ok())
+    return tr("No forces: %1; forces are those of a motion the driver determines.")
+        .arg(QString::fromStdString(s.message));
+  if (!anyMassOrLoad(doc_->design()))
+    return tr("No masses or loads: the forces are all zero; give bodies masses in Properties.");
+  return {};
+}
+
+void ForcesPanel::recompute() {
+  pending_ = false;
+  stale_ = false;
+  samples_ = ForceSamples{};
+  why_ = whyNoForces();
+  if (why_.isEmpty()) {
+    Kinematics k = doc_->kinematics();  // the document's pose and branch; not moved
+    k.setAccelerations(true);
+    samples_ = sampleForces(k);
+    ++computations_;
+    if (samples_.size() == 0)
+      why_ = tr("No forces: %1.").arg(QString::fromStdString(samples_.status.message));
+    forceScale_ = peakOf(samples_.shakingN);
+    for (const std::vector<Vec2>& r : samples_.reactionN)
+      forceScale_ = std::max(forceScale_, peakOf(r));
+    torqueScale_ = std::max(peakOf(samples_.driverTorqueNm), forceScale_ * k.size() * 1e-3);
+  }
+  rebuildFigure();
+}
+
+const ForceSamples* ForcesPanel::samples() const {
+  return why_.isEmpty() && samples_.size() > 0 ? &samples_ : nullptr;
+}
+
+QString ForcesPanel::message() const {
+  return why_;
+}
+
+void ForcesPanel::rebuildFigure() {
+  if (!samples()) {
+    figure_->clear();
+    plot_->replot();
+    sentence_->setText(why_);
+    stack_->setCurrentWidget(sentence_);
+    values_->clear();
+    return;
+  }
+  stack_->setCurrentWidget(plot_);
+  const Mechanism& m = doc_->design();
+  ForceFigure::JointChoice choice;
+  choice.index = joint();
+  if (choice.index >= 0 && choice.index < static_cast<int>(m.joints.size())) {
+    const Joint& j = m.joints[choice.index];
+    choice.label = jointName(m, j);
+    if (const Point* a = m.point(j.a))
+      if (const Body* b = m.body(a->body)) choice.bodyName = QString::fromStdString(b->name);
+    choice.undetermined = std::find(samples_.undetermined.begin(), samples_.undetermined.end(),
+                                    j.id) != samples_.undetermined.end();
+  } else {
+    choice.index = -1;
+  }
+  QString stop;
+  if (!samples_.complete)
+    stop = tr("Ends at %1°: %2")
+               .arg(samples_.crankDeg.back(), 0, 'f', 1)
+               .arg(QString::fromStdString(samples_.status.message));
+  figure_->build(samples_, crankAxisLabel(m), choice, stop, doc_->kinematics().size());
+  updateCursor();
+}
+
+void ForcesPanel::updateCursor() {
+  if (!isVisible() || !doc_ || !samples()) return;
+  const double c = doc_->crankDeg();
+  figure_->setCursor(c - 360.0 * std::floor(c / 360.0));
+  // The values at the pose exactly, not read off the curves: a solver of its own on a copy (a
+  // solver works on the kinematics it was prepared with; about as long as a kinematic step).
+  Kinematics k = doc_->kinematics();
+  k.setAccelerations(true);
+  const Forces f = computeForces(k);
+  if (!f.status.ok()) {
+    values_->setText(tr("At %1°: no forces (%2)")
+                         .arg(c, 0, 'f', 1)
+                         .arg(QString::fromStdString(f.status.message)));
+    return;
+  }
+  auto force = [this](double v) { return number(cleaned(v, forceScale_)); };
+  QString text =
+      tr("At %1°: torque %2 N m; shaking force (%3, %4) N, |F| %5 N")
+          .arg(c, 0, 'f', 1)
+          .arg(number(cleaned(f.driverTorqueNm, torqueScale_)), force(f.shakingForceN.x()),
+               force(f.shakingForceN.y()), force(f.shakingForceN.norm()));
+  const int j = joint();
+  const bool undetermined =
+      j >= 0 && j < static_cast<int>(f.joints.size()) && !std::isfinite(f.joints[j].force.x());
+  if (j >= 0 && j < static_cast<int>(f.joints.size()) && !undetermined)
+    text +=
+        tr("; %1 (%2, %3) N")
+            .arg(joints_->itemText(j), force(f.joints[j].force.x()), force(f.joints[j].force.y()));
+  values_->setText(text);
+}
+
+QString ForcesPanel::cursorText() const {
+  return values_->text();
+}
+
+void ForcesPanel::mouseOnPlot(QMouseEvent* e, bool press) {
+  if (!(e->buttons() & Qt::LeftButton) || !samples()) return;
+  if (press) dragging_ = !std::isnan(figure_->crankAt(e->position(), &dragPlot_));
+  if (!dragging_) return;
+  // While dragging, the plot pressed on gives the angle even outside its axes.
+  const double hi = samples_.complete ? 360.0 : samples_.crankDeg.back();
+  const double deg = std::clamp(figure_->crankAtX(dragPlot_, e->position().x()), 0.0, hi);
+  const double base = doc_ ? 360.0 * std::floor(doc_->crankDeg() / 360.0) : 0.0;
+  Q_EMIT crankAngleRequested(base + deg);
+}
+
+// --- export ---------------------------------------------------------------------------------
+
+bool ForcesPanel::exportFigure(const QString& path, QSize size, QString* error) {
+  ensureComputed();
+  if (!samples()) {
+    if (error) *error = why_.isEmpty() ? tr("No forces to export.") : why_;
+    return false;
+  }
+  // Laid out for the figure's size (one row of plots in a wide one), then back as shown.
+  const bool relayout = ForceFigure::columnsFor(size.width()) != figure_->columns();
+  if (relayout) {
+    figure_->setLayoutWidth(size.width());
+    rebuildFigure();
+  }
+  figure_->setCursorVisible(false);
+  const bool ok = exportPlot(plot_, path, size, error);
+  figure_->setCursorVisible(true);
+  if (relayout) {
+    figure_->setLayoutWidth(0);
+    rebuildFigure();
+  }
+  return ok;
+}
+
+bool ForcesPanel::exportTable(const QString& path, long long steps, double revs, QString* error) {
+  if (!doc_) {
+    if (error) *error = tr("No document.");
+    return false;
+  }
+  return exportForceTable(*doc_, path, steps, revs, error);
+}
+
+// --- the window's actions -------------------------------------------------------------------
+
+namespace {
+
+QString suggested(const Document* d, const QString& suffix) {
+  QString base = d ? d->displayName() : QString("forces");
+  base.remove(QStringLiteral(".linkage.json"));
+  const QString folder =
+      d && !d->filePath().isEmpty() ? QFileInfo(d->filePath()).absolutePath() : QDir::homePath();
+  return QDir(folder).filePath(base + "-forces" + suffix);
+}
+
+}  // namespace
+
+void ForcesPanel::saveFigureAs() {
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export Force Figure"),
+                                                    suggested(doc_, QStringLiteral(".svg")),
+                                                    tr("SVG (*.svg);;PDF (*.pdf);;PNG (*.png)"));
+  if (path.isEmpty()) return;
+  QString why;
+  if (!exportFigure(path, QSize(1600, 700), &why))
+    QMessageBox::warning(this, tr("Export Force Figure"), why);
+}
+
+void ForcesPanel::saveTableAs() {
+  QDialog dialog(this);
+  dialog.setWindowTitle(tr("Export Force Table"));
+  auto* steps = new QSpinBox;
+  steps->setRange(1, 100000);
+  steps->setValue(360);
+  steps->setToolTip(tr("Rows per revolution of the crank"));
+  auto* revs = new QSpinBox;
+  revs->setRange(1, 1000);
+  revs->setValue(1);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+  auto* form = new QFormLayout(&dialog);
+  form->addRow(tr("Steps per revolution"), steps);
+  form->addRow(tr("Revolutions"), revs);
+  form->addRow(buttons);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  if (dialog.exec() != QDialog::Accepted) return;
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export Force Table"),
+                                                    suggested(doc_, QStringLiteral(".csv")),
+                                                    tr("CSV tables (*.csv)"));
+  if (path.isEmpty()) return;
+  QString why;
+  if (!exportTable(path, steps->value(), revs->value(), &why))
+    QMessageBox::warning(this, tr("Export Force Table"), why);
+}
+
+}  // namespace linkage::ui
