@@ -10,10 +10,16 @@
 #include "canvas/dynamics_marks.h"
 #include "document/commands.h"
 #include "document/document.h"
+#include "forces/balance_dialog.h"
+#include "forces/forces_panel.h"
 #include "linkage/balance.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_samples.h"
 #include "window/main_window.h"
+
+#include <QApplication>
+#include <QDockWidget>
+#include <QMenuBar>
 
 namespace linkage::ui {
 namespace {
@@ -134,6 +140,45 @@ TEST(ForcesOverlay, TheScaleIsAOneTwoFiveStepOfNewtonsPerTenMillimetres) {
   EXPECT_TRUE(std::abs(digit - 1) < 1e-9 || std::abs(digit - 2) < 1e-9 ||
               std::abs(digit - 5) < 1e-9)
       << perTen;
+}
+
+// Every action of forces is on a menu, with a status tip.
+bool onAMenu(MainWindow& w, QAction* a) {
+  for (QMenu* m : w.menuBar()->findChildren<QMenu*>())
+    if (m->actions().contains(a)) return true;
+  return false;
+}
+
+TEST(ForcesOverlay, TheWindowHasTheForcesDockTheBalanceAndTheExports) {
+  MainWindow w;
+  w.resize(1300, 900);
+  ASSERT_TRUE(w.openExample("slider-crank-22a-masses"));
+  w.show();
+  QApplication::processEvents();
+  for (const char* name :
+       {"showForces", "showForcesPanel", "balance", "exportForcesTable", "exportForcesFigure"}) {
+    QAction* a = w.action(name);
+    ASSERT_NE(a, nullptr) << name;
+    EXPECT_FALSE(a->statusTip().isEmpty()) << name;
+    EXPECT_TRUE(onAMenu(w, a)) << name;
+  }
+  QDockWidget* dock = w.dock("forces");
+  ASSERT_NE(dock, nullptr);
+  EXPECT_FALSE(dock->isVisible());
+  w.action("showForcesPanel")->trigger();
+  QApplication::processEvents();
+  EXPECT_TRUE(dock->isVisible());
+  // The panel's crank requests turn this window's crank.
+  emit w.forcesPanel()->crankAngleRequested(77);
+  EXPECT_DOUBLE_EQ(w.document()->crankDeg(), 77);
+  // Balance opens its dialog on this document, once.
+  w.action("balance")->trigger();
+  auto* dialog = w.findChild<BalanceDialog*>();
+  ASSERT_NE(dialog, nullptr);
+  EXPECT_TRUE(dialog->isVisible());
+  dialog->close();
+  w.action("balance")->trigger();
+  EXPECT_EQ(w.findChildren<BalanceDialog*>().size(), 1);
 }
 
 }  // namespace

@@ -137,6 +137,10 @@ int runHeadless(const HeadlessOptions& o) {
   }
   w.action("showCentres")->setChecked(o.ics);
   w.action("showForces")->setChecked(o.forces);
+  if (o.forces) {
+    w.dock("forces")->show();
+    w.dock("forces")->raise();
+  }
   if (o.ics) w.dock("centres")->raise();
   w.dock("plots")->setVisible(o.plots);
   w.action("showExtremes")->setChecked(o.extremes);

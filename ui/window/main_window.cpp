@@ -64,6 +64,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   createTools();
   createDocks();
   createDesignChecks();
+  createForces();
   dock("properties")->raise();  // the default front tab on the right (a saved layout may differ)
   createMenus();
   createToolBars();

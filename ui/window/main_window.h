@@ -34,6 +34,8 @@ class PropertiesPanel;
 class PlotsPanel;
 class Selection;
 class StudyDialog;
+class ForcesPanel;
+class BalanceDialog;
 class ToolOverlay;
 class Toolbox;
 
@@ -52,6 +54,7 @@ class MainWindow : public QMainWindow {
   InspectorPanel* inspector() const { return inspector_; }
   PropertiesPanel* properties() const { return properties_; }
   PlotsPanel* plots() const { return plots_; }
+  ForcesPanel* forcesPanel() const { return forces_; }
   CrankBar* crankBar() const { return crankBar_; }
   Toolbox* toolbox() const { return toolbox_; }
   Selection* selection() const { return selection_; }
@@ -114,7 +117,9 @@ class MainWindow : public QMainWindow {
   void createDocks();
   void createStatusBar();
   void createDesignChecks();  // main_window_design.cpp
-  void addAnalysisMenu();
+  QMenu* addAnalysisMenu();
+  void createForces();  // main_window_forces.cpp
+  void addForcesMenuEntries(QMenu* analysis, QMenu* exports);
   void connectDocument();
   QAction* makeAction(const QString& name, const QString& text, const QKeySequence& key,
                       const QString& tip);
@@ -173,6 +178,8 @@ class MainWindow : public QMainWindow {
   DesignOverlays* designOverlays_ = nullptr;
   ChecksPanel* checks_ = nullptr;
   StudyDialog* study_ = nullptr;
+  ForcesPanel* forces_ = nullptr;
+  BalanceDialog* balance_ = nullptr;
 };
 
 }  // namespace linkage::ui

@@ -209,7 +209,7 @@ void MainWindow::createMenus() {
                         "showTransmission", "darkPalette", "detachablePanels"})
     view->addAction(action(a));
   view->addSeparator();
-  for (const char* d : {"properties", "centres", "plots", "designChecks"})
+  for (const char* d : {"properties", "centres", "plots", "forces", "designChecks"})
     view->addAction(dock(d)->toggleViewAction());
 
   QMenu* anim = menuBar()->addMenu(tr("&Animation"));
@@ -218,7 +218,7 @@ void MainWindow::createMenus() {
   anim->addAction(action("slower"));
   anim->addAction(action("faster"));
 
-  addAnalysisMenu();
+  addForcesMenuEntries(addAnalysisMenu(), exports);
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(action("about"));

@@ -63,13 +63,14 @@ void MainWindow::createDesignChecks() {
       Qt::QueuedConnection);
 }
 
-void MainWindow::addAnalysisMenu() {
+QMenu* MainWindow::addAnalysisMenu() {
   QMenu* analysis = menuBar()->addMenu(tr("A&nalysis"));
   analysis->addAction(action("showDesignChecks"));
   analysis->addAction(action("parameterStudy"));
   analysis->addSeparator();
   analysis->addAction(action("showExtremes"));
   analysis->addAction(action("showTransmission"));
+  return analysis;
 }
 
 StudyDialog* MainWindow::studyDialog() {
