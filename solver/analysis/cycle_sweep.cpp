@@ -33,6 +33,8 @@ bool repeats(const CycleTrack& t) {
 // Builds the channels a track asks for, with their samples.
 void addChannels(CycleTrack& t, Channels& c, std::vector<RootChannel*>& order,
                  std::vector<RootChannel*>& mine) {
+  // A quantity that does not move crosses nothing: its sign changes would be rounding.
+  if (!t.moves()) return;
   const CycleQuantity q = t.quantity;
   auto channel = [&](RootFunction f, auto sampleOf) {
     RootChannel* r = c.add(std::move(f));
@@ -42,7 +44,7 @@ void addChannels(CycleTrack& t, Channels& c, std::vector<RootChannel*>& order,
     order.push_back(r);
     mine.push_back(r);
   };
-  if (t.extremes && t.moves())
+  if (t.extremes)
     channel(
         [q](const Kinematics& k) {
           const CycleReading r = q(k);
@@ -116,10 +118,11 @@ CycleSweep sweepCycle(const Kinematics& k0, const std::vector<CycleTrack*>& trac
     CycleTrack& t = *tracks[i];
     size_t c = 0;
     t.stationary.clear();
-    if (t.extremes && t.moves()) t.stationary = per[i][c++]->roots;
     t.crossings.assign(t.levels.size(), {});
-    for (auto& x : t.crossings) x = per[i][c++]->roots;
     t.slopeCrossings.assign(t.slopeLevels.size(), {});
+    if (!t.moves()) continue;
+    if (t.extremes) t.stationary = per[i][c++]->roots;
+    for (auto& x : t.crossings) x = per[i][c++]->roots;
     for (auto& x : t.slopeCrossings) {
       x = per[i][c++]->roots;
       const std::vector<Root>& neg = per[i][c++]->roots;

@@ -22,7 +22,7 @@ using CycleQuantity = std::function<CycleReading(const Kinematics&)>;
 struct CycleTrack {
   CycleQuantity quantity;
   bool extremes = false;       // find the roots of d1 (only when d1 rises above `noise`)
-  std::vector<double> levels;  // find where value crosses each
+  std::vector<double> levels;  // find where value crosses each (only when it moves)
   // Where d1 crosses +-each of these (dwells: the speed below a threshold).
   std::vector<double> slopeLevels;
   double noise = 0;  // |d1| at or below this everywhere: the quantity does not move

@@ -26,7 +26,9 @@ CycleReading alongGuide(const Guide& g, const RelativeMotion& m) {
 }
 
 CycleReading lengthOf(const Vec2& d, const Vec2& dd, const Vec2& ddd) {
-  const double n = d.norm(), d1 = d.dot(dd) / n;
+  const double n = d.norm();
+  if (n == 0) return {0, 0, 0};  // the two meet: a minimum of 0, where |d| has no derivative
+  const double d1 = d.dot(dd) / n;
   return {n, d1, (dd.squaredNorm() + d.dot(ddd) - d1 * d1) / n};
 }
 
