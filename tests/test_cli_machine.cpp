@@ -147,6 +147,83 @@ TEST_F(MachineCli, ClearanceBadInputNamesTheArgument) {
   EXPECT_EQ(run("clearance --help").exit, 0);
 }
 
+// Where the offset slider-crank's block height crosses V (closed form, bisected).
+std::vector<double> heightCrossings(double r, double l, double e, double theta0, double V) {
+  auto g = [&](long double phi) {
+    const long double t = (theta0 + phi) * M_PIl / 180, c = e - r * cosl(t);
+    return r * sinl(t) + sqrtl(l * l - c * c) - V;
+  };
+  std::vector<double> out;
+  for (int i = 0; i < 3600; ++i) {
+    long double a = i / 10.0L, b = (i + 1) / 10.0L;
+    if ((g(a) < 0) == (g(b) < 0)) continue;
+    const bool up = g(a) < 0;
+    for (int k = 0; k < 100; ++k) ((g((a + b) / 2) < 0) == up ? a : b) = (a + b) / 2;
+    out.push_back(static_cast<double>((a + b) / 2));
+  }
+  return out;
+}
+
+TEST_F(MachineCli, TimingWindowsWrapAndConflict) {
+  const test::SliderCrank s = test::sliderCrank(20, 60, 8, 100);
+  const std::vector<double> x60 = heightCrossings(20, 60, 8, 100, 60);
+  const std::vector<double> x70 = heightCrossings(20, 60, 8, 100, 70);
+  ASSERT_EQ(x60.size(), 2u);
+  ASSERT_EQ(x70.size(), 2u);
+  const std::string file = save(s.m);
+  CliResult r =
+      run("timing " + file + " --window 'low=slider.B:y<60' --window 'top=slider.B:y>70'");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  std::vector<std::string> lines = r.lines();
+  ASSERT_EQ(lines.size(), 3u) << r.out;
+  EXPECT_EQ(lines[0], "window,from_deg,to_deg");
+  std::vector<std::string> f = split(lines[1], ',');
+  EXPECT_EQ(f[0], "low");
+  EXPECT_NEAR(field(f[1]), x60[0], 1e-9);
+  EXPECT_NEAR(field(f[2]), x60[1], 1e-9);
+  f = split(lines[2], ',');  // the top wraps through crank 0
+  EXPECT_EQ(f[0], "top");
+  EXPECT_NEAR(field(f[1]), x70[1], 1e-9);
+  EXPECT_NEAR(field(f[2]), 360 + x70[0], 1e-9);
+  // low and y > 55 overlap on the way down and on the way up: exit 4, the rows still written.
+  const std::vector<double> x55 = heightCrossings(20, 60, 8, 100, 55);
+  r = run("timing " + file +
+          " --window 'low=slider.B:y<60' --window 'mid=slider.B:y>55' --conflict low,mid");
+  EXPECT_EQ(r.exit, 4) << r.err;
+  lines = r.lines();
+  ASSERT_EQ(lines.size(), 5u) << r.out;  // low, mid (one interval, wrapping), two overlaps
+  f = split(lines[3], ',');
+  EXPECT_EQ(f[0], "conflict:low+mid");
+  EXPECT_NEAR(field(f[1]), x60[0], 1e-9);
+  EXPECT_NEAR(field(f[2]), x55[0], 1e-9);
+  f = split(lines[4], ',');
+  EXPECT_NEAR(field(f[1]), x55[1], 1e-9);
+  EXPECT_NEAR(field(f[2]), x60[1], 1e-9);
+}
+
+TEST_F(MachineCli, TimingBadInputNamesThePlace) {
+  const std::string ex = "slider-crank-22a-lambda-0.3 ";
+  struct Bad {
+    std::string args, says;
+  };
+  for (const Bad& b :
+       {Bad{"--window 'n=needlebar.X:y<3'", "--window n=needlebar.X:y<3: no point \"needlebar.X\""},
+        Bad{"--window 'n=needlebar.B:y<3mm'", "\"3mm\" after '<' is not a number"},
+        Bad{"--window 'n=needlebar.B:w<3'", "\"w\" after \"needlebar.B:\""},
+        Bad{"--window 'n=needlebar.B:y'", "no '<' or '>'"},
+        Bad{"--window 'needlebar.B:y<3'", "NAME=OUTPUT<VALUE"},
+        Bad{"--window 'n=needlebar.B:y<3' --conflict n", "--conflict n: not two window names"},
+        Bad{"--window 'n=needlebar.B:y<3' --conflict n,m", "no window named m"},
+        Bad{"--window 'n=needlebar.B:y<3' --window 'n=needlebar.B:y>3'", "window n is given twice"},
+        Bad{"--window 'n=needlebar.B:y<3' --out f.svg", "--out f.svg"},
+        Bad{"", "give at least one --window"}}) {
+    const CliResult r = run("timing " + ex + b.args);
+    EXPECT_EQ(r.exit, 2) << b.args;
+    EXPECT_NE(r.err.find(b.says), std::string::npos) << b.args << ": " << r.err;
+  }
+  EXPECT_EQ(run("timing --help").exit, 0);
+}
+
 }  // namespace
 }  // namespace linkage
 #endif

@@ -109,6 +109,7 @@ CycleSweep sweepCycle(const Kinematics& k0, const std::vector<CycleTrack*>& trac
   bool periodic = true;
   for (size_t i = 0; i < tracks.size(); ++i) {
     tracks[i]->periodic = repeats(*tracks[i]);
+    if (tracks[i]->onSampled) tracks[i]->onSampled(*tracks[i]);
     periodic = periodic && tracks[i]->periodic;
     addChannels(*tracks[i], owned, order, per[i]);
   }

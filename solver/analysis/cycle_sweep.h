@@ -26,6 +26,8 @@ struct CycleTrack {
   // Where d1 crosses +-each of these (dwells: the speed below a threshold).
   std::vector<double> slopeLevels;
   double noise = 0;  // |d1| at or below this everywhere: the quantity does not move
+  // Called once the samples are in, before the roots are searched: may set the levels from them.
+  std::function<void(CycleTrack&)> onSampled;
 
   // Filled by sweepCycle:
   std::vector<CycleReading> samples;  // at CycleSweep::crank
