@@ -212,5 +212,37 @@ TEST(Timing, BadExpressionsSayWhere) {
   EXPECT_EQ(cycleDiagram(Kinematics(), {}, {w}, {}).status.code, StatusCode::BadModel);
 }
 
+// The 30-body machine on one shaft (tests/mechanisms.h): its block 0 is a radial slider-crank
+// along +x with its pin at phase 0, s = r cos phi + sqrt(l^2 - r^2 sin^2 phi), so s > 45 holds
+// where cos phi > (45^2 - l^2 + r^2) / (90 r), a window that wraps through 0; its hook turns
+// twice a cycle, and an edit of one mechanism re-solves only its own groups.
+TEST(Timing, WindowOnAMachineOfFourteenMechanisms) {
+  const Mechanism m = test::shaftMachine(14);
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  EXPECT_TRUE(k.closedForm());
+  EXPECT_EQ(m.bodies.size(), 31u);
+  std::string why;
+  const CycleWindow w = *parseWindow(m, "b0=block0.B:1,0>45", &why);
+  const CycleWindow h = *parseWindow(m, "h=hook:angle<360", &why);
+  const CycleDiagram d = cycleDiagram(k, {}, {w, h}, {});
+  ASSERT_TRUE(d.status.ok()) << d.status.message;
+  const double a = std::acos((45.0 * 45 - 1600 + 100) / 900) * 180 / M_PI;
+  ASSERT_EQ(d.windows[0].intervals.size(), 1u);
+  EXPECT_NEAR(d.windows[0].intervals[0].fromDeg, 360 - a, 1e-9);
+  EXPECT_NEAR(d.windows[0].intervals[0].toDeg, 360 + a, 1e-9);
+  ASSERT_EQ(d.windows[1].intervals.size(), 1u);  // the hook's first turn: half the cycle
+  EXPECT_NEAR(d.windows[1].intervals[0].toDeg, 180, 1e-9);
+  // Another mechanism made longer: only its group is solved again, block 0 moves as before.
+  Mechanism edited = m;
+  Point* c = edited.point(*edited.findPoint("rocker3.G"));
+  c->pos *= 1.01;
+  edited.point(*edited.findPoint("ground.G3"))->pos = c->pos;
+  ASSERT_TRUE(k.edit(edited).ok());
+  EXPECT_EQ(k.lastEditGroups(), 1);
+  const CycleDiagram again = cycleDiagram(k, {}, {w}, {});
+  EXPECT_NEAR(again.windows[0].intervals[0].fromDeg, 360 - a, 1e-9);
+}
+
 }  // namespace
 }  // namespace linkage
