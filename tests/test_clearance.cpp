@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "examples.h"
 #include "linkage/clearance.h"
 #include "mechanisms.h"
 
@@ -150,6 +151,41 @@ TEST(Clearance, Refusals) {
   EXPECT_EQ(
       findClearance(Kinematics(), ClearanceItem::of(s.p1), ClearanceItem::of(s.p2)).status.code,
       StatusCode::BadModel);
+}
+
+// The lockstitch example's hook point K (15 mm from the hook shaft L = (0, -200), drawn at
+// (12, 9) from it, turning twice per turn of the arm shaft) and its needle point N (x = 0,
+// y = 16 cos t - sqrt(45^2 - (16 sin t)^2) - 131): the minima of |K - N| are the rising roots of
+// d/dt |K - N|^2 / 2 = (K - N) . (K' - N').
+TEST(Clearance, LockstitchHookPointToNeedle) {
+  Kinematics k;
+  ASSERT_TRUE(k.load(test::example("lockstitch-arm-shaft")).ok());
+  const Mechanism& m = k.mechanism();
+  const Clearance c = findClearance(k, ClearanceItem::of(*m.findPoint("hook.K")),
+                                    ClearanceItem::of(*m.findPoint("needlebar.N")));
+  ASSERT_TRUE(c.status.ok()) << c.status.message;
+  const LD h0 = atan2l(9, 12), deg = M_PIl / 180;
+  auto gap = [&](LD phi, LD* slope) {
+    const LD t = phi * deg, s = sqrtl(45 * 45 - 256 * sinl(t) * sinl(t));
+    const LD ny = 16 * cosl(t) - s - 131, dny = -16 * sinl(t) + 256 * sinl(t) * cosl(t) / s;
+    const LD kx = 15 * cosl(h0 + 2 * t), ky = -200 + 15 * sinl(h0 + 2 * t);
+    const LD dkx = -30 * sinl(h0 + 2 * t), dky = 30 * cosl(h0 + 2 * t);
+    if (slope) *slope = kx * dkx + (ky - ny) * (dky - dny);
+    return sqrtl(kx * kx + (ky - ny) * (ky - ny));
+  };
+  const std::vector<double> expect = risingRoots([&](LD phi) {
+    LD s = 0;
+    gap(phi, &s);
+    return s;
+  });
+  ASSERT_EQ(c.minima.size(), expect.size());
+  ASSERT_EQ(expect.size(), 2u);
+  for (size_t i = 0; i < expect.size(); ++i) {
+    EXPECT_NEAR(c.minima[i].crankDeg, expect[i], 1e-9);
+    EXPECT_NEAR(c.minima[i].distance, static_cast<double>(gap(expect[i], nullptr)), 1e-9 * 200);
+  }
+  EXPECT_EQ(c.closest.crankDeg, c.minima[1].crankDeg);  // past the needle's bottom (180)
+  EXPECT_GT(c.closest.crankDeg, 180);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "examples.h"
 #include "linkage/timing.h"
 #include "mechanisms.h"
 
@@ -242,6 +243,27 @@ TEST(Timing, WindowOnAMachineOfFourteenMechanisms) {
   EXPECT_EQ(k.lastEditGroups(), 1);
   const CycleDiagram again = cycleDiagram(k, {}, {w}, {});
   EXPECT_NEAR(again.windows[0].intervals[0].fromDeg, 360 - a, 1e-9);
+}
+
+// The lockstitch example's needle (a central slider-crank hanging from the arm shaft: crank 16,
+// rod 45, the point 131 below the rod's pin, drawn at its top) is below a throat plate at
+// y = -185 where 16 cos t - sqrt(45^2 - 16^2 sin^2 t) - 131 < -185, that is cos t <
+// (45^2 - 16^2 - 54^2) / (108 16): from acos of that to its mirror.
+TEST(Timing, LockstitchNeedleBelowTheThroatPlate) {
+  Kinematics k;
+  ASSERT_TRUE(k.load(test::example("lockstitch-arm-shaft")).ok());
+  std::string why;
+  const CycleWindow w = *parseWindow(k.mechanism(), "needle=needlebar.N:y<-185", &why);
+  const CycleDiagram d = cycleDiagram(k, {}, {w}, {});
+  ASSERT_TRUE(d.status.ok()) << d.status.message;
+  const double a = std::acos((45.0 * 45 - 16 * 16 - 54 * 54) / (108.0 * 16)) * 180 / M_PI;
+  ASSERT_EQ(d.windows[0].intervals.size(), 1u);
+  EXPECT_NEAR(d.windows[0].intervals[0].fromDeg, a, 1e-9);
+  EXPECT_NEAR(d.windows[0].intervals[0].toDeg, 360 - a, 1e-9);
+  // Its dead centres: top at 0, bottom at 180.
+  ASSERT_EQ(d.rows[0].extremes.size(), 2u);
+  EXPECT_NEAR(d.rows[0].extremes[1].crankDeg, 180, 1e-9);
+  EXPECT_NEAR(d.rows[0].min, -192, 1e-9);
 }
 
 }  // namespace
