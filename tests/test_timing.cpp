@@ -266,5 +266,24 @@ TEST(Timing, LockstitchNeedleBelowTheThroatPlate) {
   EXPECT_NEAR(d.rows[0].min, -192, 1e-9);
 }
 
+// A window whose level is the value at a dead centre at crank 0 (the central slider-crank
+// drawn at its top: y = r + l exactly): y < r + l holds over the whole cycle but that instant,
+// y > r + l nowhere.
+TEST(Timing, WindowStartingAtADeadCentreOnItsLevel) {
+  const test::SliderCrank s = test::sliderCrank(20, 60, 0, 90);
+  Kinematics k;
+  ASSERT_TRUE(k.load(s.m).ok());
+  std::string why;
+  const CycleDiagram d = cycleDiagram(k, {},
+                                      {*parseWindow(s.m, "below=slider.B:y<80", &why),
+                                       *parseWindow(s.m, "above=slider.B:y>80", &why)},
+                                      {});
+  ASSERT_TRUE(d.status.ok());
+  ASSERT_EQ(d.windows[0].intervals.size(), 1u);
+  EXPECT_EQ(d.windows[0].intervals[0].fromDeg, 0);
+  EXPECT_EQ(d.windows[0].intervals[0].toDeg, 360);
+  EXPECT_TRUE(d.windows[1].intervals.empty());
+}
+
 }  // namespace
 }  // namespace linkage

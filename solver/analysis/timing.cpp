@@ -83,8 +83,9 @@ WindowIntervals windowOf(const CycleWindow& w, const CycleTrack& t) {
   std::vector<double> toggles;
   for (const Root& x : t.crossings[level]) toggles.push_back(x.crankDeg);
   const CycleReading& s = t.samples.front();
-  // Where the value starts exactly at the level, the side it moves to decides.
-  const double g = s.value != w.level ? s.value - w.level : s.d1;
+  // Where the value starts exactly at the level, the side it moves to decides (at a dead
+  // centre on the level, the side it turns back to).
+  const double g = s.value != w.level ? s.value - w.level : std::abs(s.d1) > t.noise ? s.d1 : s.d2;
   const bool holds = w.below ? g < 0 : g > 0;
   return {w.name, intervalsOf(holds, toggles, t.periodic)};
 }
