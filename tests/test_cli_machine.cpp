@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -215,13 +216,35 @@ TEST_F(MachineCli, TimingBadInputNamesThePlace) {
         Bad{"--window 'n=needlebar.B:y<3' --conflict n", "--conflict n: not two window names"},
         Bad{"--window 'n=needlebar.B:y<3' --conflict n,m", "no window named m"},
         Bad{"--window 'n=needlebar.B:y<3' --window 'n=needlebar.B:y>3'", "window n is given twice"},
-        Bad{"--window 'n=needlebar.B:y<3' --out f.svg", "--out f.svg"},
+        Bad{"--window 'n=needlebar.B:y<3' --out f.txt", "--out f.txt: the name must end in"},
         Bad{"", "give at least one --window"}}) {
     const CliResult r = run("timing " + ex + b.args);
     EXPECT_EQ(r.exit, 2) << b.args;
     EXPECT_NE(r.err.find(b.says), std::string::npos) << b.args << ": " << r.err;
   }
   EXPECT_EQ(run("timing --help").exit, 0);
+}
+
+// --out: the figure by linkage-plot when it was built next to linkage-cli (LINKAGE_BUILD_UI),
+// with the CSV and the exit status unchanged; else exit 1 saying what is missing.
+TEST_F(MachineCli, TimingFigure) {
+  const std::filesystem::path plot =
+      std::filesystem::path(LINKAGE_CLI).parent_path() / "linkage-plot";
+  const std::string fig = (dir_ / "cycle.svg").string();
+  const CliResult r =
+      run("timing lockstitch-arm-shaft --window 'needle=needlebar.N:y<-170' "
+          "--window 'eye=takeup.E:y>78' --conflict needle,eye --out '" +
+          fig + "'");
+  ASSERT_EQ(r.lines().size(), 3u) << r.out;
+  if (!std::filesystem::exists(plot)) {
+    EXPECT_EQ(r.exit, 1);
+    EXPECT_NE(r.err.find("linkage-plot is not there"), std::string::npos) << r.err;
+    return;
+  }
+  EXPECT_EQ(r.exit, 0) << r.err;
+  const std::string svg = test::slurp(fig);
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("needlebar.N:y"), std::string::npos);  // a row's name, as text
 }
 
 }  // namespace
