@@ -9,8 +9,11 @@
 #include "linkage/groups.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
+#include "linkage/slot_travel.h"
 
 namespace linkage::cli {
+
+std::string describeTravel(const Mechanism& m, const SlotTravel& t);  // cli_slots.cpp
 
 namespace {
 const char* kHelp = R"(usage: linkage-cli info MODEL
@@ -51,6 +54,19 @@ void printGroups(const Mechanism& m, const Kinematics& k) {
     std::cout << "solve: "
               << (k.closedForm() ? "in closed form, group by group"
                                  : "by Newton on all coordinates (the general solve)")
+              << "\n";
+}
+
+// Every block and pin in a slot: its travel over a turn against the slot's ends.
+void printSlotTravel(const Mechanism& m, const Kinematics& k) {
+  const SlotTravels t = slotTravel(k);
+  if (!t.status.ok()) {
+    if (!t.joints.empty() || !m.slots.empty())
+      std::cout << "slot travel: not known (" << t.status.message << ")\n";
+    return;
+  }
+  for (const SlotTravel& j : t.joints)
+    std::cout << "slot travel: " << describeTravel(m, j) << (j.inside ? "" : " (leaves the slot)")
               << "\n";
 }
 
@@ -106,6 +122,7 @@ int info(int argc, char** argv) {
     std::cout << "assembly: moved up to " << formatNumber(k.assembly().maxMove, 6) << " mm\n";
   printGroups(*m, k);
   printFourBarLoops(*m);
+  if (e == kOk && m->driver) printSlotTravel(*m, k);
   return e;
 }
 

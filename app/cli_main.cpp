@@ -16,6 +16,9 @@ int transmission(int argc, char** argv);
 int study(int argc, char** argv);
 int dynamics(int argc, char** argv);
 int balance(int argc, char** argv);
+int slots(int argc, char** argv);
+int clearance(int argc, char** argv);
+int timing(int argc, char** argv);
 }  // namespace linkage::cli
 
 namespace {
@@ -32,6 +35,9 @@ Commands:
   study MODEL ...     one point moved over a range: stroke, swings, transmission, peaks
   dynamics MODEL ...  forces at the driver's speed: its torque, the joints' reactions, shaking
   balance MODEL ...   counterweights that minimise the peak shaking force, exactly
+  slots MODEL         travel of every block and pin along its slot against the slot's ends
+  clearance MODEL ... distance between two moving points (or a point and a slot): minima
+  timing MODEL ...    windows of the machine cycle (timing diagram) and their conflicts
   examples            list the example mechanisms that MODEL can name
 
 MODEL is a .linkage.json file or the name of an example (e.g. wanzer-inversion-2).
@@ -62,6 +68,9 @@ int main(int argc, char** argv) {
   if (cmd == "study") return study(argc - 2, argv + 2);
   if (cmd == "dynamics") return dynamics(argc - 2, argv + 2);
   if (cmd == "balance") return balance(argc - 2, argv + 2);
+  if (cmd == "slots") return slots(argc - 2, argv + 2);
+  if (cmd == "clearance") return clearance(argc - 2, argv + 2);
+  if (cmd == "timing") return timing(argc - 2, argv + 2);
   if (cmd == "examples") {
     if (argc > 2 && isHelp(argv[2])) {
       std::cout << "usage: linkage-cli examples\n\nLists the example mechanisms by name.\n";

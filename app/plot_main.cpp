@@ -296,7 +296,13 @@ int plot(int argc, char** argv) {
 
 }  // namespace linkage::cli
 
+namespace linkage::cli {
+int cycleFigure(int argc, char** argv);  // cycle_figure.cpp: `linkage-cli timing --out`
+}
+
 int main(int argc, char** argv) {
   linkage::cli::executablePath = linkage::runningExecutable(argc > 0 ? argv[0] : "");
+  if (argc > 1 && std::string(argv[1]) == "--cycle-diagram")
+    return linkage::cli::cycleFigure(argc - 2, argv + 2);
   return linkage::cli::plot(argc - 1, argv + 1);
 }

@@ -201,4 +201,48 @@ inline Mechanism triadChain(int units) {
   return m;
 }
 
+// A machine on one main shaft: the shaft "main" about the origin (driven, ccw), a "hook" shaft
+// at (0, -200) belted 2:1 to it, and `units` mechanisms around it, each on its own crank pin of
+// the main shaft at radius 10 and phase 25 k degrees, in the direction psi_k = 360 k / units:
+// even k a radial slider-crank (rod k of 40 mm, block k in a ground slot "guide_k" along
+// psi_k), odd k a crank-rocker (coupler k of 40 mm, rocker k of 30 mm about a ground pivot 45 mm
+// out along psi_k). 3 + 2 units bodies with the ground; every mechanism is solved group by group.
+inline Mechanism shaftMachine(int units) {
+  Mechanism m;
+  const BodyId g = m.addBody("ground", true), main = m.addBody("main"), hook = m.addBody("hook");
+  const Vec2 O(0, 0), H(0, -200);
+  const PointId mainO = m.addPoint(main, "O", O), hookO = m.addPoint(hook, "O", H);
+  const JointId drive = m.addPin(m.addPoint(g, "O", O), mainO);
+  m.addPin(m.addPoint(g, "H", H), hookO);
+  m.addPoint(hook, "K", H + Vec2(12, 9));
+  m.addGear(mainO, hookO, 2);
+  const double r = 10, l = 40;
+  for (int k = 0; k < units; ++k) {
+    const std::string n = std::to_string(k);
+    const double phase = 25.0 * k * M_PI / 180, psi = 2 * M_PI * k / units;
+    const Vec2 P = r * Vec2(std::cos(phase), std::sin(phase));
+    const Vec2 u(std::cos(psi), std::sin(psi)), v(-u.y(), u.x());
+    const PointId pin = m.addPoint(main, "P" + n, P);
+    if (k % 2 == 0) {
+      const Vec2 B = (P.dot(u) + std::sqrt(l * l - P.dot(v) * P.dot(v))) * u;
+      const BodyId rod = m.addBody("rod" + n), block = m.addBody("block" + n);
+      m.addPin(pin, m.addPoint(rod, "A", P));
+      const PointId b = m.addPoint(block, "B", B);
+      m.addPin(m.addPoint(rod, "B", B), b);
+      m.addSlider(b, m.addSlot(g, "guide" + n, (l - r - 5) * u, (l + r + 5) * u));
+    } else {
+      const Vec2 G = 45 * u, e = G - P;
+      const double d = e.norm(), x = (l * l - 30.0 * 30.0 + d * d) / (2 * d);
+      const Vec2 w = e / d, C = P + x * w + std::sqrt(l * l - x * x) * Vec2(-w.y(), w.x());
+      const BodyId coupler = m.addBody("coupler" + n), rocker = m.addBody("rocker" + n);
+      m.addPin(pin, m.addPoint(coupler, "A", P));
+      const PointId c = m.addPoint(rocker, "C", C);
+      m.addPin(m.addPoint(coupler, "C", C), c);
+      m.addPin(m.addPoint(rocker, "G", G), m.addPoint(g, "G" + n, G));
+    }
+  }
+  m.driver = Driver{drive, 1200, Direction::Ccw, 0, ""};
+  return m;
+}
+
 }  // namespace linkage::test

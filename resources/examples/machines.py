@@ -6,6 +6,8 @@
   gear-four-bar          a pinion and gear (ratio -1/2) cranking the four-bar-crank-rocker example
   planet-epicycloid      a planet of radius 10 on an arm around a fixed sun of radius 20
   curved-guide           a slider-crank whose block runs in an arc slot of the ground
+  lockstitch-machine     the lockstitch arm shaft with a drop feed on a lower shaft belted 1:1,
+                         a throat plate, and the windows and clearance of its cycle (issue 18)
 
 Every coordinate is computed in 50-digit decimal arithmetic (only square roots are needed) and
 stored as the correctly rounded double, as generate.py does for the other examples; each file is
@@ -236,11 +238,62 @@ def curved_guide_file():
         ["block.B"])
 
 
+# ----------------------------------------------------------------------------------------------
+# The lockstitch arm shaft with its feed (dimensions representative, ours): a lower "feedshaft"
+# at S = (-60, -225) belted 1:1 to the arm shaft (gear, ratio +1) carries the lift eccentric E1
+# (radius 2) and the advance eccentric E2 (radius 2.5), both drawn straight up (crank 0: the
+# needle at its top, the feed dog at its highest, advancing fastest). The advance: rod E2-R of 50
+# to the top R of a rocker of 20 about G = (-110, -245) (a crank-rocker: 2.5 + 53.9 < 50 + 20).
+# The feed bar hangs from R and rides on E1 in its fork, a slot along x through E1: E1 lifts it,
+# the rocker carries it back and forth; its tooth T = (-5, -182) reaches 3 mm above the throat
+# plate at y = -185 (a ground slot "plate" from (-40, -185) to (20, -185)).
+FS, FE1, FE2 = (D(-60), D(-225)), D(2), D(D(5) / 2)
+FG, FROD, FROCK = (D(-110), D(-245)), D(50), D(20)
+FTOOTH = (D(-5), D(-182))
+
+
+def feed_sketch():
+    E1 = (FS[0], FS[1] + FE1)
+    E2 = (FS[0], FS[1] + FE2)
+    R = circles(E2, FROD, FG, FROCK, left=False)  # the rocker leaning back, up from G
+    assert R[1] > FG[1] and R[0] < E2[0]
+    return {"E1": E1, "E2": E2, "R": R}
+
+
+def lockstitch_machine_file(s, f):
+    base = lockstitch_file(s)
+    base["name"] = "Lockstitch machine: arm shaft, hook shaft 2:1, drop feed on a lower shaft 1:1"
+    base["bodies"][0]["points"].update({"S": rounded(FS), "G": rounded(FG)})
+    base["bodies"][0]["slots"]["plate"] = [[-40, -185], [20, -185]]
+    E1, E2, R = f["E1"], f["E2"], f["R"]
+    fork = [rounded((E1[0] - 6, E1[1])), rounded((E1[0] + 6, E1[1]))]
+    base["bodies"] += bodies(
+        ("feedshaft", 8, {"S": FS, "E1": E1, "E2": E2}, None),
+        ("advancerod", 9, {"E2": E2, "R": R}, None),
+        ("feedrock", 10, {"R": R, "G": FG}, None),
+        ("feedbar", 11, {"R": R, "T": FTOOTH}, None))
+    base["bodies"][-1]["slots"] = {"fork": fork}
+    base["joints"] += [
+        pin("ground.S", "feedshaft.S"),
+        {"type": "gear", "a": "armshaft.O", "b": "feedshaft.S", "ratio": 1},
+        pin("feedshaft.E2", "advancerod.E2"),
+        pin("advancerod.R", "feedrock.R"),
+        pin("feedrock.G", "ground.G"),
+        pin("feedrock.R", "feedbar.R"),
+        {"type": "pin-in-slot", "a": "feedshaft.E1", "slot": "feedbar.fork"},
+    ]
+    base["outputs"]["points"] = ["needlebar.N", "takeup.E", "hook.K", "feedbar.T"]
+    return base
+
+
 def main():
     s = lockstitch_sketch()
     write("lockstitch-arm-shaft.linkage.json", lockstitch_file(s))
     print("lockstitch-arm-shaft: " + ", ".join(f"{k} = {tuple(rounded(v))}" for k, v in s.items()))
     lockstitch_timing()
+    f = feed_sketch()
+    write("lockstitch-machine.linkage.json", lockstitch_machine_file(s, f))
+    print("lockstitch-machine: " + ", ".join(f"{k} = {tuple(rounded(v))}" for k, v in f.items()))
     write("gear-four-bar.linkage.json", gear_four_bar_file())
     print("gear-four-bar: the four-bar-crank-rocker four-bar on a gear, pinion at (-45, 0)")
     write("planet-epicycloid.linkage.json", planet_file())

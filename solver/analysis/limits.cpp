@@ -13,12 +13,14 @@ namespace {
 
 constexpr double kDeg = M_PI / 180;
 
-// The measure's value, and its first and second derivatives per degree of crank.
-struct Reading {
-  double value, d1, d2;
-};
+// |g| at or below this everywhere is no motion: rounding of a velocity that is zero.
+double noiseOf(const Kinematics& k, const LimitMeasure& w) {
+  return w.body ? 1e-12 : 1e-12 * k.size() * kDeg;
+}
 
-Reading read(const Kinematics& k, const LimitMeasure& w) {
+}  // namespace
+
+CycleReading readMeasure(const Kinematics& k, const LimitMeasure& w) {
   const double rate = kDeg / k.omega();  // seconds per degree of crank
   if (w.body) {
     return {k.bodyAngle(w.body) / kDeg, k.bodyOmega(w.body) * rate / kDeg,
@@ -28,13 +30,6 @@ Reading read(const Kinematics& k, const LimitMeasure& w) {
   return {p.position.dot(w.direction), p.velocity.dot(w.direction) * rate,
           p.acceleration.dot(w.direction) * rate * rate};
 }
-
-// |g| at or below this everywhere is no motion: rounding of a velocity that is zero.
-double noiseOf(const Kinematics& k, const LimitMeasure& w) {
-  return w.body ? 1e-12 : 1e-12 * k.size() * kDeg;
-}
-
-}  // namespace
 
 Vec2 defaultDirection(const Mechanism& m, PointId p) {
   const Point* pt = m.point(p);
@@ -80,14 +75,14 @@ MeasureTrack::MeasureTrack(const Kinematics& k, LimitMeasure what)
   if (!what_.body) what_.direction.normalize();
   const LimitMeasure w = what_;
   channel.f = [w](const Kinematics& at) {
-    const Reading r = read(at, w);
+    const CycleReading r = readMeasure(at, w);
     return RootSample{r.d1, r.d2};
   };
-  channel.value = [w](const Kinematics& at) { return read(at, w).value; };
+  channel.value = [w](const Kinematics& at) { return readMeasure(at, w).value; };
 }
 
 void MeasureTrack::sample(const Kinematics& k) {
-  const Reading r = read(k, what_);
+  const CycleReading r = readMeasure(k, what_);
   values.push_back(r.value);
   channel.samples.push_back({r.d1, r.d2});
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/crank_roots.h"
+#include "analysis/cycle_sweep.h"
 #include "linkage/limits.h"
 
 namespace linkage {
@@ -14,6 +15,10 @@ namespace linkage {
 // that is not a finite non-zero vector, no driver speed), else success. A point must also be
 // determined by the driver (Underconstrained otherwise).
 Status checkMeasure(const Kinematics& k, const LimitMeasure& what);
+
+// The measure's value (mm, or degrees for a body), and its first and second derivatives per
+// degree of crank, exact at k's pose.
+CycleReading readMeasure(const Kinematics& k, const LimitMeasure& what);
 
 class MeasureTrack {
  public:
