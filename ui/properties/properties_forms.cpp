@@ -146,10 +146,6 @@ void PropertiesPanel::fillBody(BodyId id) {
       if (p.body == id) names << QString::fromStdString(p.name);
     return names.join(QStringLiteral(", "));
   });
-  if (!b->ground) {
-    fillMass(id);
-    fillLoads(id, PointId{});
-  }
   if (pts.size() == 3 && !b->ground) fillTriangle(id);
   if (pts.size() != 2 || b->ground) return;
   // A bar: its length and angle, measured from its first point; editing them moves the second.

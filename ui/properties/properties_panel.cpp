@@ -147,8 +147,14 @@ void PropertiesPanel::rebuild() {
   }
   shape_ = shape;
   clearRows();
-  if (shape.startsWith(QStringLiteral("body")))
+  if (shape.startsWith(QStringLiteral("body"))) {
+    // Its geometry first; then, for a moving link, its mass and loads.
     fillBody(selection_->bodies[0]);
+    if (!m.body(selection_->bodies[0])->ground) {
+      fillMass(selection_->bodies[0]);
+      fillLoads(selection_->bodies[0], PointId{});
+    }
+  }
   else if (shape.startsWith(QStringLiteral("point")))
     fillPoint(selection_->points[0]);
   else if (shape.startsWith(QStringLiteral("joint")))
