@@ -345,8 +345,7 @@ TEST(Elements, ArcTransmissionAnglesAreTheEquivalentLinkages) {
     Kinematics ka = loaded(*a), kb = loaded(*b);
     for (double deg = 0; deg < 360; deg += 9) {
       ASSERT_TRUE(ka.moveTo(deg).ok() && kb.moveTo(deg).ok());
-      const TransmissionReading x = transmissionAngle(ka, ta[0]),
-                                y = transmissionAngle(kb, tb[0]);
+      const TransmissionReading x = transmissionAngle(ka, ta[0]), y = transmissionAngle(kb, tb[0]);
       EXPECT_NEAR(x.deg, y.deg, 1e-10) << deg;
       EXPECT_NEAR(x.perDeg, y.perDeg, 1e-12) << deg;
       EXPECT_NEAR(x.perDeg2, y.perDeg2, 1e-12) << deg;

@@ -255,7 +255,8 @@ inline Vec3 InstantCentreSolver::primaryLine(const Primary& pr) const {
   return p.cross(Vec3(n.x(), n.y(), 0.0));
 }
 
-inline void InstantCentreSolver::primaryPoint(const Primary& pr, Vec3& h, Vec3& mm, double& err) const {
+inline void InstantCentreSolver::primaryPoint(const Primary& pr, Vec3& h, Vec3& mm,
+                                              double& err) const {
   err = 1;
   if (pr.rule == CentreRule::AtPoint) {
     const Vec2 x = global(pr.pBody[0], pr.p[0]);

@@ -62,8 +62,8 @@ const ElementKind& pinElement() {
   static const ElementKind kind{JointType::Pin, "pin",   "joins points \"a\" and \"b\"",
                                 Role::Revolute, 2,       kFields,
                                 check,          compile, centre,
-                                symbol,         place,
-                                kForceColumns,  nullptr};
+                                symbol,         place,   kForceColumns,
+                                nullptr};
   return kind;
 }
 

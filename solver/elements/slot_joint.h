@@ -4,8 +4,8 @@
 
 #include <optional>
 
-#include "linkage/guide.h"
 #include "linkage/elements.h"
+#include "linkage/guide.h"
 
 namespace linkage::slot_joint {
 

@@ -12,11 +12,11 @@
 #include <QDockWidget>
 #include "animation/animator.h"
 #include "canvas/canvas_scene.h"
-#include "linkage/guide.h"
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
 #include "document/document.h"
 #include "drawing.h"
+#include "linkage/guide.h"
 #include "linkage/io/model_lookup.h"
 #include "window/main_window.h"
 

@@ -154,8 +154,7 @@ void PropertiesPanel::rebuild() {
       fillMass(selection_->bodies[0]);
       fillLoads(selection_->bodies[0], PointId{});
     }
-  }
-  else if (shape.startsWith(QStringLiteral("point")))
+  } else if (shape.startsWith(QStringLiteral("point")))
     fillPoint(selection_->points[0]);
   else if (shape.startsWith(QStringLiteral("joint")))
     fillJoint(selection_->joints[0]);

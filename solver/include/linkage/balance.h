@@ -19,19 +19,19 @@ namespace linkage {
 enum class BalanceMeasure { Fx, Fy, Force };  // |shaking fx|, |shaking fy|, |shaking force|
 
 struct BalanceOptions {
-  std::vector<BodyId> bodies;      // a counterweight on each (pinned to the ground)
+  std::vector<BodyId> bodies;  // a counterweight on each (pinned to the ground)
   BalanceMeasure measure = BalanceMeasure::Force;
-  std::optional<double> maxKgMm;   // |s| at most this on each body
-  int steps = 360;                 // samples per turn for the first programme
-  double tolerance = 1e-9;         // the gap, relative to the peak before
+  std::optional<double> maxKgMm;  // |s| at most this on each body
+  int steps = 360;                // samples per turn for the first programme
+  double tolerance = 1e-9;        // the gap, relative to the peak before
 };
 
 struct Counterweight {
   BodyId body;
-  PointId pivot;                           // the body's point pinned to the ground
-  Vec2 staticMoment = Vec2::Zero();        // kg mm, in the body's sketch frame
+  PointId pivot;                     // the body's point pinned to the ground
+  Vec2 staticMoment = Vec2::Zero();  // kg mm, in the body's sketch frame
   double kgMm() const { return staticMoment.norm(); }
-  double angleDeg() const;                 // of u in the body's sketch frame
+  double angleDeg() const;  // of u in the body's sketch frame
 };
 
 struct BalanceResult {
@@ -41,8 +41,8 @@ struct BalanceResult {
   double peakAfter = 0, peakAfterDeg = 0;
   double lowerBound = 0;  // the programme's optimum: the peak cannot go lower
   double gap() const { return peakAfter - lowerBound; }
-  int exchanges = 0;       // rounds of the exchange
-  int angles = 0;          // angles the last programme used
+  int exchanges = 0;  // rounds of the exchange
+  int angles = 0;     // angles the last programme used
 };
 
 // k is not moved (copies of it are).
