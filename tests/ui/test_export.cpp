@@ -13,7 +13,13 @@
 #include <cmath>
 #include <set>
 
+#include "dialogs.h"
 #include "document/document.h"
+#include "window/main_window.h"
+
+#include <QDialog>
+#include <QFileDialog>
+#include <QSpinBox>
 #include "export/animation_export.h"
 #include "export/animation_export_dialog.h"
 #include "export/motion_table_export.h"
@@ -36,6 +42,35 @@ QByteArray readAll(const QString& path) {
 }
 
 // --- motion table ---------------------------------------------------------------------------
+
+// File > Export > Motion Table as a user fills its dialog: 36 steps per revolution, 2
+// revolutions give 73 rows (it wrote 36 x 2 per revolution, 145, before).
+TEST(MotionTableExport, TheWindowsDialogTakesStepsPerRevolution) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
+  QTemporaryDir dir;
+  const QString path = dir.filePath("window.csv");
+  test::DialogAnswer options, file;
+  options.expect([&](QWidget* d) {
+    const QList<QSpinBox*> boxes = d->findChildren<QSpinBox*>();
+    ASSERT_EQ(boxes.size(), 2);
+    boxes[0]->setValue(36);  // steps per revolution
+    boxes[1]->setValue(2);   // revolutions
+    file.expect([&](QWidget* f) {
+      auto* chooser = qobject_cast<QFileDialog*>(f);
+      ASSERT_NE(chooser, nullptr);
+      chooser->selectFile(path);
+      QMetaObject::invokeMethod(chooser, "accept");
+    });
+    qobject_cast<QDialog*>(d)->accept();
+  });
+  w.action("exportTable")->trigger();
+  ASSERT_TRUE(options.seen && file.seen);
+  const QList<QByteArray> lines = readAll(path).split('\n');
+  ASSERT_EQ(lines.size(), 1 + 73 + 1);  // header, 0 ... 720 by 10 degrees, final newline
+  EXPECT_EQ(lines[2].split(',').at(1).toStdString(), "10");
+  EXPECT_EQ(lines[73].split(',').at(1).toStdString(), "720");
+}
 
 TEST(MotionTableExport, ParsesAndMatchesTheSolverAtEveryRow) {
   Document doc;

@@ -59,8 +59,7 @@ void MainWindow::exportMotionTable() {
       tr("CSV tables (*.csv)"));
   if (path.isEmpty()) return;
   QString why;
-  if (!linkage::ui::exportMotionTable(
-          *doc_, path, static_cast<long long>(steps->value()) * revs->value(), revs->value(), &why))
+  if (!linkage::ui::exportMotionTable(*doc_, path, steps->value(), revs->value(), &why))
     QMessageBox::warning(this, tr("Export"), why);
   else
     showMessage(tr("Wrote %1").arg(path), false);
