@@ -339,7 +339,13 @@ TEST_F(PlotsPanelTest, ControlsTakeTwoRowsWhenWideAndThreeWhenNarrow) {
   // No wider a minimum than with three rows (the orders' row sets it).
   const int narrowest = panel.minimumSizeHint().width();
   panel.resize(narrowest + 10, 500);
-  QTest::qWait(20);  // the layouts redo themselves from posted events
+  // The layouts redo themselves from posted events: wait for the third row and the plot moved
+  // below it (up to 5 s; a fixed 20 ms failed once on a loaded machine).
+  auto relaid = [&] {
+    return row(units) > row(target) + target->height() / 2 &&
+           panel.plotWidget()->mapTo(&panel, QPoint()).y() > plotTopWide;
+  };
+  for (int i = 0; i < 500 && !relaid(); ++i) QTest::qWait(10);
   EXPECT_EQ(panel.minimumSizeHint().width(), narrowest);
   EXPECT_GT(row(units), row(target) + target->height() / 2);
   EXPECT_GT(panel.plotWidget()->mapTo(&panel, QPoint()).y(), plotTopWide);
