@@ -19,6 +19,7 @@
 
 #include <QDialog>
 #include <QFileDialog>
+#include <QLineEdit>
 #include <QSpinBox>
 #include "export/animation_export.h"
 #include "export/animation_export_dialog.h"
@@ -59,7 +60,11 @@ TEST(MotionTableExport, TheWindowsDialogTakesStepsPerRevolution) {
     file.expect([&](QWidget* f) {
       auto* chooser = qobject_cast<QFileDialog*>(f);
       ASSERT_NE(chooser, nullptr);
-      chooser->selectFile(path);
+      // The name typed where a user types it (selectFile alone is taken asynchronously, once
+      // the dialog has listed its folder).
+      auto* name = chooser->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+      ASSERT_NE(name, nullptr);
+      name->setText(path);
       QMetaObject::invokeMethod(chooser, "accept");
     });
     qobject_cast<QDialog*>(d)->accept();
