@@ -27,6 +27,7 @@ bool exportMotionTable(const Document& doc, const QString& path, long long steps
   if (motionTableRows(spec) < 0)
     return fail(error, "Steps per revolution times revolutions must be a whole number.");
   Kinematics k = doc.kinematics();  // a copy: the document's pose stays
+  k.setAccelerations(true);         // the document has them off while no view shows them
   if (Status s = k.checkDetermined(spec.points); !s.ok())
     return fail(error, QString::fromStdString(s.message));
   std::string table;
