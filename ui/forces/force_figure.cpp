@@ -5,6 +5,7 @@
 
 #include "forces/force_plots.h"
 #include "plots/qcp.h"
+#include "plots/units.h"
 
 namespace linkage::ui {
 

@@ -170,20 +170,6 @@ void addLegend(QCPAxisRect* rect, const std::vector<QCPAbstractPlottable*>& item
   for (QCPAbstractPlottable* p : items) p->addToLegend(legend);
 }
 
-QString wrapped(const QString& text, int width) {
-  QStringList lines;
-  QString line;
-  for (const QString& word : text.split(' ', Qt::SkipEmptyParts)) {
-    if (!line.isEmpty() && line.size() + 1 + word.size() > width) {
-      lines << line;
-      line.clear();
-    }
-    line += (line.isEmpty() ? "" : " ") + word;
-  }
-  if (!line.isEmpty()) lines << line;
-  return lines.join('\n');
-}
-
 void addRectNote(QCPAxisRect* rect, const QString& text) {
   auto* t = new QCPItemText(rect->parentPlot());
   t->setClipAxisRect(rect);

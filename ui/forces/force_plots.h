@@ -54,8 +54,6 @@ QCPLayoutGrid* addPlotCell(QCPLayoutGrid* grid, int row, int column, QCPAxisRect
 void addRectNote(QCPAxisRect* rect, const QString& text);
 // A bold title in a cell of a layout grid (above a plot).
 void addTitle(QCPLayoutGrid* grid, int row, int column, const QString& text);
-// Words broken into lines of at most `width` characters.
-QString wrapped(const QString& text, int width);
 
 // The polar diagram of forces (N): fx on x, fy on y; the axes' ranges are set by
 // fitEqualScales. (Items such as addZeroLines' go on a rect once it is in the layout.)

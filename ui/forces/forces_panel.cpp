@@ -1,16 +1,12 @@
 #include "forces/forces_panel.h"
 
 #include <QComboBox>
-#include <QDialog>
-#include <QDialogButtonBox>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
-#include <QSpinBox>
 #include <QStackedWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -20,6 +16,7 @@
 #include "document/document.h"
 #include "document/shown_numbers.h"
 #include "export/figure_export.h"
+#include "export/table_size_dialog.h"
 #include "forces/force_plots.h"
 #include "forces/force_table_export.h"
 #include "linkage/elements.h"
@@ -346,29 +343,14 @@ void ForcesPanel::saveFigureAs() {
 }
 
 void ForcesPanel::saveTableAs() {
-  QDialog dialog(this);
-  dialog.setWindowTitle(tr("Export Force Table"));
-  auto* steps = new QSpinBox;
-  steps->setRange(1, 100000);
-  steps->setValue(360);
-  steps->setToolTip(tr("Rows per revolution of the crank"));
-  auto* revs = new QSpinBox;
-  revs->setRange(1, 1000);
-  revs->setValue(1);
-  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
-  auto* form = new QFormLayout(&dialog);
-  form->addRow(tr("Steps per revolution"), steps);
-  form->addRow(tr("Revolutions"), revs);
-  form->addRow(buttons);
-  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-  if (dialog.exec() != QDialog::Accepted) return;
+  TableSize size;
+  if (!askTableSize(this, tr("Export Force Table"), &size)) return;
   const QString path = QFileDialog::getSaveFileName(this, tr("Export Force Table"),
                                                     suggested(doc_, QStringLiteral(".csv")),
                                                     tr("CSV tables (*.csv)"));
   if (path.isEmpty()) return;
   QString why;
-  if (!exportTable(path, steps->value(), revs->value(), &why))
+  if (!exportTable(path, size.stepsPerRev, size.revs, &why))
     QMessageBox::warning(this, tr("Export Force Table"), why);
 }
 

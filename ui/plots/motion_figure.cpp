@@ -16,21 +16,6 @@ double tickStep(double range) {
   return 360.0 * std::ceil(range / 8 / 360);
 }
 
-// Words broken into lines of at most `width` characters.
-QString wrapped(const QString& text, int width) {
-  QStringList lines;
-  QString line;
-  for (const QString& word : text.split(' ', Qt::SkipEmptyParts)) {
-    if (!line.isEmpty() && line.size() + 1 + word.size() > width) {
-      lines << line;
-      line.clear();
-    }
-    line += (line.isEmpty() ? "" : " ") + word;
-  }
-  if (!line.isEmpty()) lines << line;
-  return lines.join('\n');
-}
-
 // Why a set's curves stop early or are missing, under its column's title.
 QString statusNote(const CurveSet& set, bool named, int width) {
   QString why = QString::fromStdString(set.status().message);

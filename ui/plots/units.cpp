@@ -106,4 +106,18 @@ QString shortAxisLabel(bool body, Quantity::Component c, double directionDeg, Or
   return QString("%1 [%2]").arg(componentLabel(c, directionDeg, o), u.name(o, false));
 }
 
+QString wrapped(const QString& text, int width) {
+  QStringList lines;
+  QString line;
+  for (const QString& word : text.split(' ', Qt::SkipEmptyParts)) {
+    if (!line.isEmpty() && line.size() + 1 + word.size() > width) {
+      lines << line;
+      line.clear();
+    }
+    line += (line.isEmpty() ? "" : " ") + word;
+  }
+  if (!line.isEmpty()) lines << line;
+  return lines.join('\n');
+}
+
 }  // namespace linkage::ui

@@ -29,6 +29,9 @@ struct PlotUnits {
   bool operator==(const PlotUnits&) const = default;
 };
 
+// Words broken into lines of at most `width` characters (plot titles and notes).
+QString wrapped(const QString& text, int width);
+
 // The component of a point's motion as the labels write it: "y", "|r|", "along 30°" with the
 // order's letter ("vy", "|v|", ...).
 QString componentLabel(Quantity::Component c, double directionDeg, Order o);

@@ -1,12 +1,8 @@
 // File > Export: the motion table, the plots' figure and the animation.
 #include <QApplication>
-#include <QDialog>
-#include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
-#include <QFormLayout>
 #include <QMessageBox>
-#include <QSpinBox>
 
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
@@ -14,6 +10,7 @@
 #include "export/animation_export_dialog.h"
 #include "export/figure_export.h"
 #include "export/motion_table_export.h"
+#include "export/table_size_dialog.h"
 #include "plots/plots_panel.h"
 #include "window/main_window.h"
 
@@ -37,29 +34,14 @@ void MainWindow::exportMotionTable() {
                              .arg(QString::fromStdString(doc_->solveStatus().message)));
     return;
   }
-  QDialog dialog(this);
-  dialog.setWindowTitle(tr("Export Motion Table"));
-  auto* steps = new QSpinBox;
-  steps->setRange(1, 100000);
-  steps->setValue(360);
-  steps->setToolTip(tr("Rows per revolution of the crank"));
-  auto* revs = new QSpinBox;
-  revs->setRange(1, 1000);
-  revs->setValue(1);
-  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
-  auto* form = new QFormLayout(&dialog);
-  form->addRow(tr("Steps per revolution"), steps);
-  form->addRow(tr("Revolutions"), revs);
-  form->addRow(buttons);
-  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-  if (dialog.exec() != QDialog::Accepted) return;
+  TableSize size;
+  if (!askTableSize(this, tr("Export Motion Table"), &size)) return;
   const QString path = QFileDialog::getSaveFileName(
       this, tr("Export Motion Table"), suggested(fileFolder(), *doc_, QStringLiteral(".csv")),
       tr("CSV tables (*.csv)"));
   if (path.isEmpty()) return;
   QString why;
-  if (!linkage::ui::exportMotionTable(*doc_, path, steps->value(), revs->value(), &why))
+  if (!linkage::ui::exportMotionTable(*doc_, path, size.stepsPerRev, size.revs, &why))
     QMessageBox::warning(this, tr("Export"), why);
   else
     showMessage(tr("Wrote %1").arg(path), false);
