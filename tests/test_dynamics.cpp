@@ -7,6 +7,7 @@
 #include <cmath>
 #include <complex>
 #include <random>
+#include <string>
 
 #include "examples.h"
 #include "linkage/dynamics.h"
@@ -297,6 +298,41 @@ TEST(Dynamics, RedundantJointsReactionsAreNotDeterminedAndSaySo) {
 // The general path solves J^T lambda = Q with the factors its velocity solve made at the pose
 // (dense below 64 coordinates, sparse above); the closed-form path group by group: the same
 // reactions from two independent solves.
+// The groups' solve (RRR and RRP dyads by moments about their outer joints, the rest by
+// elimination: analysis/group_forces.h) against the LU of J whole.
+void expectGroupsGiveWhatTheFactorsGive(const Mechanism& m, const std::string& what) {
+  Kinematics general = loaded(m, false), grouped = loaded(m, true);
+  ASSERT_FALSE(general.closedForm()) << what;
+  ASSERT_TRUE(grouped.closedForm()) << what;
+  ForceSolver a, b;
+  ASSERT_TRUE(a.prepare(general).ok());
+  ASSERT_TRUE(b.prepare(grouped).ok());
+  for (double deg : {0.0, 37.0, 95.0, 181.0, 250.0, 333.0}) {
+    ASSERT_TRUE(general.moveTo(deg).ok());
+    ASSERT_TRUE(grouped.moveTo(deg).ok());
+    const Forces &x = a.compute(general), &y = b.compute(grouped);
+    ASSERT_TRUE(x.status.ok() && y.status.ok()) << x.status.message << y.status.message;
+    double peak = std::abs(y.driverTorqueNm);
+    for (const JointReaction& r : y.joints) peak = std::max(peak, r.force.norm());
+    EXPECT_NEAR(x.driverTorqueNm, y.driverTorqueNm, 1e-10 * peak) << what << " " << deg;
+    for (size_t j = 0; j < m.joints.size(); ++j) {
+      EXPECT_LT((x.joints[j].force - y.joints[j].force).norm(), 1e-10 * peak)
+          << what << ", joint " << j << " at " << deg;
+      // A couple (N m) is a force times a length under a metre.
+      EXPECT_NEAR(x.joints[j].coupleNm, y.joints[j].coupleNm, 1e-10 * peak)
+          << what << ", joint " << j << " at " << deg;
+    }
+  }
+}
+
+TEST(Dynamics, TheGroupsGiveWhatTheFactorsGiveOnDyadsOfEveryKind) {
+  // RRP (22-A, the arm shaft's needle bar), RRR (the take-up lever, the drop feed), geared
+  // (the lockstitch hook shaft), triads (the Wanzer).
+  for (const char* name : {"slider-crank-22a-masses", "drop-feed", "lockstitch-arm-shaft",
+                           "wanzer-inversion-2-masses", "gear-four-bar"})
+    expectGroupsGiveWhatTheFactorsGive(withMasses(test::example(name), 7), name);
+}
+
 TEST(Dynamics, TheKinematicsFactorsGiveWhatTheGroupsGive) {
   for (const int loops : {3, 25}) {
     const Mechanism m = withMasses(test::fourBarChain(loops), 13);

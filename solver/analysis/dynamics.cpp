@@ -4,8 +4,8 @@
 #include <Eigen/LU>
 #include <Eigen/SparseLU>
 #include <cmath>
-#include <type_traits>
 
+#include "analysis/group_forces.h"
 #include "kinematics/kinematics_state.h"
 
 namespace linkage {
@@ -23,11 +23,6 @@ struct KinematicsPose : Pose {
 };
 
 }  // namespace
-
-// A group's unknowns: three a body, four bodies at most (structure/decomposition.h): storage
-// on the stack, no allocation per pose.
-using GroupMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
-using GroupVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 12, 1>;
 
 struct ForceSolver::Impl {
   struct BodyMass {
@@ -48,16 +43,13 @@ struct ForceSolver::Impl {
   bool grouped = false;
   std::vector<char> rowDetermined;  // by scalar row
   std::vector<BodyView> views;
-  Eigen::VectorXd Q, S, lambda, x;
-  std::vector<Eigen::Matrix<double, 2, 9>> blocks;  // scratch of solveByGroups
-  std::vector<double> couples;                      // scratch of reactions
+  GroupForces groups;  // on the closed-form path
+  Eigen::VectorXd Q, lambda, x;
+  std::vector<double> couples;  // scratch of reactions
 
   void bodies(const KinematicsState& s);
   void undetermined(const KinematicsState& s, Forces& out);
   void appliedAndInertia(const KinematicsState& s, double omega, double crankDeg);
-  bool solveByGroups(const KinematicsState& s);
-  template <int N>
-  bool solveGroup(const System& sys, const Group& g);
   bool solveWithKinematics(const KinematicsState& s);
   bool solveWhole(const KinematicsState& s);
   void reactions(const KinematicsState& s, const Kinematics& k, Forces& out);
@@ -128,106 +120,6 @@ void ForceSolver::Impl::shakingOf(const System& sys, Vec2& force, double& moment
     moment += Q[3 * k + 2] + cross(views[k + 1].r, F);  // about the sketch origin, N mm
   }
   moment /= 1000;
-}
-
-// Group by group, the outermost first: each group's rows from its bodies' balance, less what
-// the rows of the groups after it (already solved) put on them.
-bool ForceSolver::Impl::solveByGroups(const KinematicsState& s) {
-  const System& sys = s.sys;
-  S.setZero(3 * sys.nBodies);
-  lambda.setConstant(sys.nRows, kNaN);
-  const std::vector<Group>& groups = s.decomposition.groups;
-  for (auto g = groups.rbegin(); g != groups.rend(); ++g) {
-    const size_t n = g->bodies.size();
-    const bool ok = n == 1   ? solveGroup<3>(sys, *g)
-                    : n == 2 ? solveGroup<6>(sys, *g)
-                             : n <= 4 && solveGroup<Eigen::Dynamic>(sys, *g);
-    if (!ok) return false;
-  }
-  return true;
-}
-
-namespace {
-
-// Solves A x = b in place (b becomes x) by Gaussian elimination with partial pivoting: at a
-// group's 3 to 12 unknowns a plain loop beats a general LU's dispatch (a fixed 6 x 6
-// PartialPivLU cost half a pose's forces). False at a zero pivot.
-template <int N, class Mat, class Vec>
-bool eliminate(Mat& A, Vec& b, int size) {
-  const int n = N == Eigen::Dynamic ? size : N;  // known at compile time: loops unrolled
-  for (int k = 0; k < n; ++k) {
-    int p = k;
-    for (int i = k + 1; i < n; ++i)
-      if (std::abs(A(i, k)) > std::abs(A(p, k))) p = i;
-    if (A(p, k) == 0) return false;
-    if (p != k) {
-      A.row(k).swap(A.row(p));
-      std::swap(b[k], b[p]);
-    }
-    const double inv = 1 / A(k, k);
-    for (int i = k + 1; i < n; ++i) {
-      const double f = A(i, k) * inv;
-      if (f == 0) continue;
-      for (int j = k + 1; j < n; ++j) A(i, j) -= f * A(k, j);
-      b[i] -= f * b[k];
-    }
-  }
-  for (int k = n - 1; k >= 0; --k) {
-    double v = b[k];
-    for (int j = k + 1; j < n; ++j) v -= A(k, j) * b[j];
-    b[k] = v / A(k, k);
-  }
-  return true;
-}
-
-}  // namespace
-
-// One group's rows from its bodies' balance: A^T x = Q - S over its bodies' coordinates, A its
-// rows' Jacobian there; then what its rows put on every body they touch goes into S. N: the
-// size when fixed (storage and loops known at compile time).
-template <int N>
-bool ForceSolver::Impl::solveGroup(const System& sys, const Group& g) {
-  using Mat = std::conditional_t<N == Eigen::Dynamic, GroupMatrix, Eigen::Matrix<double, N, N>>;
-  using Vec = std::conditional_t<N == Eigen::Dynamic, GroupVector, Eigen::Matrix<double, N, 1>>;
-  const int m = 3 * static_cast<int>(g.bodies.size());
-  auto local = [&](int body) {
-    for (size_t i = 0; i < g.bodies.size(); ++i)
-      if (g.bodies[i] == body) return static_cast<int>(i);
-    return -1;
-  };
-  Mat At = Mat::Zero(m, m);  // A^T: the rows' Jacobian blocks written transposed
-  blocks.clear();
-  int o = 0;
-  for (int r : g.rows) {
-    const Row& row = sys.cons[r];
-    if (o + row.rows() > m) return false;
-    blocks.push_back(rowJacobian(sys, views, row));
-    const Eigen::Matrix<double, 2, 9>& B = blocks.back();
-    for (int k = 0; k < 3; ++k)
-      if (const int i = row.body[k] >= 0 ? local(row.body[k]) : -1; i >= 0)
-        for (int e = 0; e < row.rows(); ++e)
-          for (int c = 0; c < 3; ++c) At(3 * i + c, o + e) = B(e, 3 * k + c);
-    o += row.rows();
-  }
-  if (o != m) return false;
-  Vec x(m);
-  for (size_t i = 0; i < g.bodies.size(); ++i)
-    x.template segment<3>(3 * i) = Q.segment<3>(3 * g.bodies[i]) - S.segment<3>(3 * g.bodies[i]);
-  if (!eliminate<N>(At, x, m)) return false;
-  if (!x.allFinite()) return false;
-  o = 0;
-  for (size_t n = 0; n < g.rows.size(); ++n) {
-    const Row& row = sys.cons[g.rows[n]];
-    const Eigen::Matrix<double, 2, 9>& B = blocks[n];
-    for (int e = 0; e < row.rows(); ++e) {
-      lambda[row.row + e] = x[o + e];
-      for (int k = 0; k < 3; ++k)
-        if (row.body[k] >= 0)
-          for (int c = 0; c < 3; ++c) S[3 * row.body[k] + c] += B(e, 3 * k + c) * x[o + e];
-    }
-    o += row.rows();
-  }
-  return true;
 }
 
 // On the general path the kinematics factored J at this very pose for its velocities: J^T lambda
@@ -348,6 +240,7 @@ Status ForceSolver::prepare(const Kinematics& k) {
   d_->revision = k.revision();
   d_->bodies(s);
   d_->grouped = s.plan.has_value() && s.decomposition.closedForm();
+  if (d_->grouped) d_->groups.prepare(s.sys, s.decomposition);
   d_->undetermined(s, out_);
   return out_.status;
 }
@@ -425,8 +318,9 @@ const Forces& ForceSolver::compute(const Kinematics& k) {
   viewsOf(s, d_->views);
   d_->appliedAndInertia(s, k.omega(), out.crankDeg);
   d_->shakingOf(s.sys, out.shakingForceN, out.shakingMomentNm);
-  const bool solved = d_->grouped ? d_->solveByGroups(s) || d_->solveWhole(s)
-                                  : d_->solveWithKinematics(s) || d_->solveWhole(s);
+  const bool solved =
+      d_->grouped ? d_->groups.solve(s.sys, d_->views, d_->Q, d_->lambda) || d_->solveWhole(s)
+                  : d_->solveWithKinematics(s) || d_->solveWhole(s);
   if (!solved) {
     out.status = Status::failure(StatusCode::Singular,
                                  "the constraint forces cannot be solved at "

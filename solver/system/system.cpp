@@ -214,13 +214,15 @@ void evalJacobian(const System& sys, const std::vector<BodyView>& views,
   assert(w.slot == J.slot.data() + J.slot.size());
 }
 
-Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<BodyView>& views,
-                                        const Row& r) {
-  Eigen::Matrix<double, 2, 9> J = Eigen::Matrix<double, 2, 9>::Zero();
+void rowJacobian(const System& sys, const std::vector<BodyView>& views, const Row& r,
+                 Eigen::Matrix<double, 2, 9>& J) {
+  J.setZero();
+  // Only what the rows' Jacobians read (the pose) and where their columns go here.
   BodyView v[3];
   for (int k = 0; k < 3; ++k) {
     if (r.body[k] < 0) continue;
-    v[k] = views[r.body[k] + 1];
+    v[k].r = views[r.body[k] + 1].r;
+    v[k].R = views[r.body[k] + 1].R;
     v[k].col = 3 * k;
   }
   switch (r.kind) {
@@ -241,6 +243,12 @@ Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<Bod
       J(0, r.col % 3) = holdScale(sys, r.col);
       break;
   }
+}
+
+Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<BodyView>& views,
+                                        const Row& r) {
+  Eigen::Matrix<double, 2, 9> J;
+  rowJacobian(sys, views, r, J);
   return J;
 }
 

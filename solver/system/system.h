@@ -86,6 +86,8 @@ void evalJacobian(const System& sys, const std::vector<BodyView>& views,
 // body[0..2] in order, zero for the ground and unused bodies (forces, group by group).
 Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<BodyView>& views,
                                         const Row& r);
+void rowJacobian(const System& sys, const std::vector<BodyView>& views, const Row& r,
+                 Eigen::Matrix<double, 2, 9>& J);
 // gamma with the views' velocities; J qdd = gamma.
 void evalGamma(const System& sys, const std::vector<BodyView>& views,
                const std::vector<int>& rowMap, Eigen::VectorXd& out);
