@@ -15,7 +15,7 @@
 
 #include "canvas/canvas_view.h"
 #include "document/document.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 
@@ -129,23 +129,23 @@ int benchmarkDrag(MainWindow& w, const HeadlessOptions& o) {
 int runHeadless(const HeadlessOptions& o) {
   MainWindow w;
   w.resize(o.size);
-  if (o.dark) w.action("darkPalette")->setChecked(true);
+  if (o.dark) w.view().darkPalette->setChecked(true);
   QString why;
   if (!o.model.isEmpty() && !w.openNameOrPath(o.model, &why)) {
     std::fprintf(stderr, "linkage: %s\n", qPrintable(why));
     return 2;
   }
-  w.action("showCentres")->setChecked(o.ics);
-  w.action("showForces")->setChecked(o.forces);
+  w.centres().show->setChecked(o.ics);
+  w.forces().show->setChecked(o.forces);
   if (o.forces) {
-    w.dock("forces")->show();
-    w.dock("forces")->raise();
+    w.forces().dock->show();
+    w.forces().dock->raise();
   }
-  if (o.ics) w.dock("centres")->raise();
-  w.dock("plots")->setVisible(o.plots);
-  w.action("showExtremes")->setChecked(o.extremes);
-  w.action("showTransmission")->setChecked(o.transmission);
-  if (o.checks) w.action("showDesignChecks")->trigger();
+  if (o.ics) w.centres().dock->raise();
+  w.plots().dock->setVisible(o.plots);
+  w.designChecks().showExtremes->setChecked(o.extremes);
+  w.designChecks().showTransmission->setChecked(o.transmission);
+  if (o.checks) w.designChecks().show->trigger();
   w.show();
   settle();
   w.canvas()->fitToMechanism();
