@@ -12,6 +12,9 @@
 //  2. window_layout.h: a Slot for each menu or toolbar entry, where in the order it goes.
 //  3. Here: a forward declaration, an accessor, a member; in main_window.cpp one line in
 //     createFeatures() (after the features it tabifies its dock with).
+// Code written as MainWindow members before (a main_window_cycle.cpp) moves over as:
+// makeAction(name, ...) -> makeAction(&w, name, ...); dock("plots") -> w.plots().dock;
+// action("play") -> w.animation().play; menus and toolbars -> layout.add(Slot::..., action).
 #pragma once
 
 #include <QMainWindow>

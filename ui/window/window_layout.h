@@ -2,7 +2,8 @@
 // and toolbar is written once, here, as the order of `Slot`: features register their entries
 // in any order (ui/window/*_feature.cpp) and each lands in its place, so that a feature adds
 // an entry to the View menu between two of another's without knowing about it. A new entry:
-// a new slot where it goes (and, for a new menu or toolbar, a line in window_layout.cpp).
+// a new slot where it goes (a new separator, menu or toolbar: also a line in
+// window_layout.cpp, isSeparator or target).
 #pragma once
 
 #include <QObject>
