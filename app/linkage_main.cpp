@@ -1,11 +1,9 @@
-// linkage: the editor. Also renders a screenshot or measures frame times without a display.
+// linkage: the editor. Also renders a screenshot without a display (the frame benchmarks in
+// the same offscreen window are bench/editor_frames_bench.cpp).
 //
 //   linkage [FILE | EXAMPLE-NAME]
-//   linkage --screenshot OUT.png [FILE|EXAMPLE] [--angle DEG] [--ics] [--size WxH] [--dark]
-//   linkage --benchmark-frames N [FILE|EXAMPLE] [--ics] [--plots] [--size WxH]
-//   linkage --benchmark-drag N [FILE|EXAMPLE] [--ctrl] [--ics] [--plots] [--size WxH]
-//   (all three also [--extremes] [--transmission] [--checks]: the design checks; [--forces]:
-//   the joint reactions and the force plots)
+//   linkage --screenshot OUT.png [FILE|EXAMPLE] [--angle DEG] [--ics] [--plots] [--size WxH]
+//           [--dark] [--extremes] [--transmission] [--checks] [--forces]
 //   linkage --version | --help
 #include <QApplication>
 #include <QCommandLineParser>
@@ -17,8 +15,8 @@
 
 #include "document/autosave.h"
 #include "document/document.h"
-#include "window/headless.h"
 #include "window/main_window.h"
+#include "window/offscreen_window.h"
 #include "window/probe.h"
 
 namespace {
@@ -31,7 +29,7 @@ bool hasArgument(int argc, char** argv, std::initializer_list<const char*> names
 }
 
 bool wantsHeadless(int argc, char** argv) {
-  return hasArgument(argc, argv, {"--screenshot", "--benchmark-frames", "--benchmark-drag"});
+  return hasArgument(argc, argv, {"--screenshot"});
 }
 
 // --version and --help print and exit: they need no display either.
@@ -44,18 +42,6 @@ struct Options {
   const QCommandLineOption screenshot{QStringLiteral("screenshot"),
                                       QStringLiteral("Render the window to a PNG and exit."),
                                       QStringLiteral("OUT.png")};
-  const QCommandLineOption bench{QStringLiteral("benchmark-frames"),
-                                 QStringLiteral("Animate N frames as fast as possible in the "
-                                                "offscreen window and print frame times."),
-                                 QStringLiteral("N")};
-  const QCommandLineOption drag{QStringLiteral("benchmark-drag"),
-                                QStringLiteral("Drag the first output point with N mouse moves "
-                                               "in the offscreen window; print the time from "
-                                               "each move to the redrawn frame."),
-                                QStringLiteral("N")};
-  const QCommandLineOption ctrl{QStringLiteral("ctrl"),
-                                QStringLiteral("With --benchmark-drag: hold Ctrl (the design "
-                                               "changes while dragging).")};
   const QCommandLineOption angle{QStringLiteral("angle"),
                                  QStringLiteral("Crank angle for the screenshot (degrees)."),
                                  QStringLiteral("DEG")};
@@ -76,31 +62,28 @@ struct Options {
                                   QStringLiteral("Show the design-checks dock.")};
 
   void addTo(QCommandLineParser& cli) const {
-    cli.addOptions({screenshot, bench, drag, ctrl, angle, ics, plots, size, dark, extremes,
-                    transmission, checks, forces});
+    cli.addOptions(
+        {screenshot, angle, ics, plots, size, dark, extremes, transmission, checks, forces});
   }
 };
 
-// --screenshot, --benchmark-frames, --benchmark-drag: the window offscreen, no event loop.
+// --screenshot: the window offscreen, no event loop.
 int runOffscreen(const QCommandLineParser& cli, const Options& opt, const QString& model) {
-  linkage::ui::HeadlessOptions o;
+  linkage::ui::OffscreenOptions o;
   o.model = model;
-  o.screenshot = cli.value(opt.screenshot);
   o.ics = cli.isSet(opt.ics);
   o.forces = cli.isSet(opt.forces);
   o.plots = cli.isSet(opt.plots);
   o.dark = cli.isSet(opt.dark);
-  o.reshape = cli.isSet(opt.ctrl);
   o.extremes = cli.isSet(opt.extremes);
   o.transmission = cli.isSet(opt.transmission);
   o.checks = cli.isSet(opt.checks);
   QString why;
-  if (!linkage::ui::parseHeadless(cli.value(opt.bench), cli.value(opt.angle), cli.value(opt.size),
-                                  o, &why, cli.value(opt.drag))) {
+  if (!linkage::ui::parseOffscreen(cli.value(opt.angle), cli.value(opt.size), o, &why)) {
     std::fprintf(stderr, "linkage: %s\n", qPrintable(why));
     return 2;
   }
-  return linkage::ui::runHeadless(o);
+  return linkage::ui::writeScreenshot(o, cli.value(opt.screenshot));
 }
 
 // Work an editor left unsaved when it stopped (a crash, kill -9): offered once the window is up,
@@ -120,8 +103,15 @@ void offerRecoveries(linkage::ui::MainWindow* w) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The frame benchmarks were options of the editor until issue 19.
+  if (hasArgument(argc, argv, {"--benchmark-frames", "--benchmark-drag"})) {
+    std::fprintf(stderr,
+                 "linkage: the frame benchmarks are bench/linkage_frames_bench (--frames N, "
+                 "--drag N; docs/benchmarks.md, \"The editor\")\n");
+    return 2;
+  }
   const bool headless = wantsHeadless(argc, argv);
-  // No display needed for pictures and measurements (unless one is asked for explicitly).
+  // No display needed for pictures (unless one is asked for explicitly).
   if ((headless || onlyPrints(argc, argv)) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
     qputenv("QT_QPA_PLATFORM", "offscreen");
   QApplication app(argc, argv);
@@ -129,7 +119,7 @@ int main(int argc, char** argv) {
   QApplication::setApplicationVersion(QStringLiteral(LINKAGE_VERSION));
   // The installed desktop entry (share/applications), so that the desktop shows its name and icon.
   QGuiApplication::setDesktopFileName(QStringLiteral("io.github.linkage.Linkage"));
-  // Headless runs start from the default layout and leave the user's settings alone.
+  // Screenshots start from the default layout and leave the user's settings alone.
   QApplication::setOrganizationName(headless ? QStringLiteral("linkage-headless")
                                              : QStringLiteral("linkage"));
 

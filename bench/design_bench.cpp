@@ -17,7 +17,7 @@
 #include "design/extremes_item.h"
 #include "design/transmission_item.h"
 #include "document/document.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace {
 
@@ -60,8 +60,8 @@ int main(int argc, char** argv) {
   d->setCrankDeg(60);
   QWidget* canvas = w.canvas()->viewport();
   QImage image(canvas->size(), QImage::Format_ARGB32_Premultiplied);
-  QAction* extremes = w.action("showExtremes");
-  QAction* arcs = w.action("showTransmission");
+  QAction* extremes = w.designChecks().showExtremes;
+  QAction* arcs = w.designChecks().showTransmission;
   // The canvas painted, as a frame paints it (the whole viewport), with each combination.
   const std::pair<bool, bool> states[] = {
       {false, false}, {true, false}, {false, true}, {true, true}};
@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
   row("paint the canvas, both on", median(paint[3]));
 
   // Per pose: the arcs read the angles (no solve); per design: the extremes are searched.
-  TransmissionItem* item = w.designOverlays()->transmissionItem();
+  TransmissionItem* item = w.designChecks().overlays()->transmissionItem();
   const Kinematics& k = d->kinematics();
   std::vector<double> pose, search;
   for (int round = 0; round < 15; ++round) {

@@ -5,7 +5,7 @@
 #include <QTest>
 
 #include "canvas/canvas_view.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui::test {
 

@@ -13,7 +13,7 @@
 #include "canvas/canvas_scene.h"
 #include "document/document.h"
 #include "mechanisms.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 namespace {

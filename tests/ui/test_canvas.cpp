@@ -18,7 +18,7 @@
 #include "drawing.h"
 #include "linkage/guide.h"
 #include "linkage/io/model_lookup.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 namespace {
@@ -64,7 +64,7 @@ TEST(Canvas, EveryExampleIsDrawnAtTheSolversPositionsThroughARevolution) {
     ASSERT_TRUE(w.openExample(QString::fromStdString(name), &why)) << why.toStdString();
     Document* d = w.document();
     ASSERT_TRUE(d->solved()) << name << ": " << d->solveStatus().message;
-    w.action("showCentres")->setChecked(true);
+    w.centres().show->setChecked(true);
     for (int f = 0; f <= 72; ++f) {
       const Status st = d->setCrankDeg(5.0 * f);
       ASSERT_TRUE(st.ok()) << name << " " << st.message;
@@ -79,7 +79,7 @@ TEST(Canvas, OverlayShowsTheSolversCentres) {
   Document* d = w.document();
   CanvasScene* s = w.scene();
   EXPECT_TRUE(s->centresItem()->centres().empty());  // hidden: nothing computed
-  w.action("showCentres")->setChecked(true);
+  w.centres().show->setChecked(true);
   for (double deg : {0.0, 33.0, 190.0}) {
     ASSERT_TRUE(d->setCrankDeg(deg).ok());
     const InstantCentres ref = computeInstantCentres(d->kinematics());
@@ -96,7 +96,7 @@ TEST(Canvas, OverlayShowsTheSolversCentres) {
       if (c.determined) EXPECT_LT((shown[i].at - Vec2(c.h.x(), c.h.y())).norm(), 1e-12);
     }
   }
-  w.action("showCentres")->setChecked(false);
+  w.centres().show->setChecked(false);
   EXPECT_FALSE(s->centresItem()->isVisible());
 }
 
@@ -162,7 +162,7 @@ TEST(Canvas, SpaceTappedPlaysAndSpaceDragPans) {
 TEST(Canvas, TracedPathsFollowTheOutputPoints) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
-  w.action("showTraces")->setChecked(true);
+  w.view().showTraces->setChecked(true);
   const auto& traces = w.scene()->traceItems();
   ASSERT_EQ(traces.size(), 1u);
   const QPainterPath& path = traces[0]->path();
@@ -174,7 +174,7 @@ TEST(Canvas, TracedPathsFollowTheOutputPoints) {
     const QPointF e = path.elementAt(i);
     EXPECT_LT((fromQt(e) - k.position(k.mechanism().outputs[0])).norm(), 1e-9) << i;
   }
-  w.action("showTraces")->setChecked(false);
+  w.view().showTraces->setChecked(false);
   EXPECT_TRUE(w.scene()->traceItems().empty());
 }
 
@@ -190,9 +190,9 @@ TEST(Canvas, VelocityChainIsWrittenOutAndItsDistancesDrawn) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
   w.show();
-  w.dock("centres")->raise();  // its tab in front: the panel works only while seen
+  w.centres().dock->raise();  // its tab in front: the panel works only while seen
   QApplication::processEvents();
-  CentresPanel* panel = w.centresPanel();
+  CentresPanel* panel = w.centres().panel();
   ASSERT_TRUE(panel->isVisible());
   ASSERT_TRUE(panel->chain());  // the first output point is chosen
   const VelocityChain& ch = *panel->chain();
@@ -207,7 +207,7 @@ TEST(Canvas, VelocityChainIsWrittenOutAndItsDistancesDrawn) {
   // Drawn with the instant centres: |IC(1,2) P| with its length; IC(1,6) is at infinity, so
   // that is the only distance.
   EXPECT_TRUE(w.scene()->chainItem()->dimensions().empty());
-  w.action("showCentres")->setChecked(true);
+  w.centres().show->setChecked(true);
   const auto& dims = w.scene()->chainItem()->dimensions();
   ASSERT_EQ(dims.size(), 1u);
   EXPECT_LT((dims[0].b - ch.steps[0].centre).norm(), 1e-12);
@@ -226,7 +226,7 @@ TEST(Canvas, HoveredCentreShowsItsKennedyLines) {
   w.resize(1100, 750);
   ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
   w.show();
-  w.action("showCentres")->setChecked(true);
+  w.centres().show->setChecked(true);
   QApplication::processEvents();
   CanvasView* v = w.canvas();
   const auto& cs = w.scene()->centresItem()->centres();
@@ -250,17 +250,17 @@ TEST(Canvas, AccelerationsOnlyWhileShown) {
   w.show();
   QApplication::processEvents();
   EXPECT_TRUE(w.document()->kinematics().accelerations());
-  w.dock("properties")->hide();
+  w.properties().dock->hide();
   QApplication::processEvents();
   EXPECT_FALSE(w.document()->kinematics().accelerations());
   ASSERT_TRUE(w.openExample("wanzer-inversion-1"));  // a new solver keeps the choice
   EXPECT_FALSE(w.document()->kinematics().accelerations());
-  w.dock("properties")->show();
+  w.properties().dock->show();
   QApplication::processEvents();
   // Back, but behind the instant centres' tab: still not seen.
   EXPECT_EQ(w.document()->kinematics().accelerations(),
-            !w.dock("properties")->visibleRegion().isEmpty());
-  w.dock("properties")->raise();
+            !w.properties().dock->visibleRegion().isEmpty());
+  w.properties().dock->raise();
   QApplication::processEvents();
   EXPECT_TRUE(w.document()->kinematics().accelerations());
 }

@@ -25,7 +25,7 @@
 #include "design/transmission_item.h"
 #include "document/commands.h"
 #include "document/document.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 namespace {
@@ -75,8 +75,8 @@ TEST(DesignOverlays, ExtremePositionsAreWhereFindLimitsSays) {
     Document* d = w.document();
     // Wherever the crank is when the overlay is turned on.
     ASSERT_TRUE(d->setCrankDeg(200).ok());
-    w.action("showExtremes")->setChecked(true);
-    const ExtremesItem* item = w.designOverlays()->extremesItem();
+    w.designChecks().showExtremes->setChecked(true);
+    const ExtremesItem* item = w.designChecks().overlays()->extremesItem();
     EXPECT_TRUE(item->isVisible());
     const PointId out = d->design().outputs.front();
     const LimitMeasure what = LimitMeasure::along(out, defaultDirection(d->design(), out));
@@ -88,24 +88,24 @@ TEST(DesignOverlays, ExtremePositionsAreWhereFindLimitsSays) {
 TEST(DesignOverlays, TheWanzersDwellShowsFourPositions) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
-  w.action("showExtremes")->setChecked(true);
-  EXPECT_EQ(w.designOverlays()->extremesItem()->poses().poses.size(), 4u);
+  w.designChecks().showExtremes->setChecked(true);
+  EXPECT_EQ(w.designChecks().overlays()->extremesItem()->poses().poses.size(), 4u);
 }
 
 TEST(DesignOverlays, ExtremesFollowTheSubjectAndEdits) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("needle-876-alpha-0"));
   Document* d = w.document();
-  w.action("showExtremes")->setChecked(true);
-  DesignOverlays* o = w.designOverlays();
+  w.designChecks().showExtremes->setChecked(true);
+  DesignOverlays* o = w.designChecks().overlays();
   const int before = o->extremeSearches();
   // A body's angle.
-  w.designChoices()->setSubject({QString(), QStringLiteral("lever"), std::nullopt});
+  w.designChecks().choices()->setSubject({QString(), QStringLiteral("lever"), std::nullopt});
   EXPECT_EQ(o->extremeSearches(), before + 1);
   const BodyId lever = d->design().bodyNamed("lever")->id;
   expectPosesAtLimits(*d, o->extremesItem()->poses(), LimitMeasure::angleOf(lever), "lever");
   // A point along a direction of the user's.
-  w.designChoices()->setSubject({QStringLiteral("rod.E"), QString(), Vec2(1, 1)});
+  w.designChecks().choices()->setSubject({QStringLiteral("rod.E"), QString(), Vec2(1, 1)});
   const PointId e = *d->design().findPoint("rod.E");
   expectPosesAtLimits(*d, o->extremesItem()->poses(), LimitMeasure::along(e, Vec2(1, 1)), "E");
   // An edit: computed again for the new design.
@@ -127,7 +127,7 @@ TEST(DesignOverlays, ExtremesAreDrawnOnTheCanvas) {
   QApplication::processEvents();
   w.canvas()->fitToMechanism();
   const QImage off = w.canvas()->viewport()->grab().toImage();
-  w.action("showExtremes")->setChecked(true);
+  w.designChecks().showExtremes->setChecked(true);
   QApplication::processEvents();
   const QImage on = w.canvas()->viewport()->grab().toImage();
   ASSERT_EQ(off.size(), on.size());
@@ -137,9 +137,9 @@ TEST(DesignOverlays, ExtremesAreDrawnOnTheCanvas) {
   EXPECT_GT(changed, 500);
   shot(&w, "design-extremes");
   // Across the view: the rod's E along x, the labels above or below the dimension.
-  w.designChoices()->setSubject({QStringLiteral("rod.E"), QString(), Vec2(1, 0)});
+  w.designChecks().choices()->setSubject({QStringLiteral("rod.E"), QString(), Vec2(1, 0)});
   QApplication::processEvents();
-  EXPECT_GE(w.designOverlays()->extremesItem()->poses().poses.size(), 2u);
+  EXPECT_GE(w.designChecks().overlays()->extremesItem()->poses().poses.size(), 2u);
   shot(&w, "design-extremes-across");
 }
 
@@ -179,8 +179,8 @@ TEST(DesignOverlays, TransmissionArcsAreTheSolversAnglesAtEveryPose) {
     MainWindow w;
     ASSERT_TRUE(w.openExample(name));
     Document* d = w.document();
-    w.action("showTransmission")->setChecked(true);
-    const TransmissionItem* item = w.designOverlays()->transmissionItem();
+    w.designChecks().showTransmission->setChecked(true);
+    const TransmissionItem* item = w.designChecks().overlays()->transmissionItem();
     EXPECT_TRUE(item->isVisible());
     for (double deg : {0.0, 37.0, 90.0, 181.5, 270.0, 333.3, 725.0}) {
       ASSERT_TRUE(d->setCrankDeg(deg).ok()) << name << " " << deg;
@@ -194,10 +194,10 @@ TEST(DesignOverlays, ArcsTurnRedExactlyOutsideTheBand) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("needle-876-alpha-35"));
   ASSERT_TRUE(w.document()->setCrankDeg(60).ok());
-  w.action("showTransmission")->setChecked(true);
-  DesignChoices* c = w.designChoices();
+  w.designChecks().showTransmission->setChecked(true);
+  DesignChoices* c = w.designChecks().choices();
   const TransmissionBand was = c->band();
-  const TransmissionItem* item = w.designOverlays()->transmissionItem();
+  const TransmissionItem* item = w.designChecks().overlays()->transmissionItem();
   const QColor warning = w.scene()->style().warning;
   ASSERT_EQ(item->arcs().size(), 3u);
   for (size_t i = 0; i < 3; ++i) {
@@ -228,16 +228,16 @@ TEST(DesignOverlays, NothingIsComputedWhileTheyAreOff) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("needle-876-alpha-0"));
   Document* d = w.document();
-  DesignOverlays* o = w.designOverlays();
-  ASSERT_FALSE(w.action("showExtremes")->isChecked());
-  ASSERT_FALSE(w.action("showTransmission")->isChecked());
+  DesignOverlays* o = w.designChecks().overlays();
+  ASSERT_FALSE(w.designChecks().showExtremes->isChecked());
+  ASSERT_FALSE(w.designChecks().showTransmission->isChecked());
   auto work = [&] {
     for (double deg : {10.0, 20.0, 30.0}) ASSERT_TRUE(d->setCrankDeg(deg).ok());
     Mechanism m = d->design();
     m.point(*m.findPoint("ground.C"))->pos.y() += 0.25;
     editDesign(d, "Move C", m);
-    w.designChoices()->setSubject({QStringLiteral("rod.E"), QString(), std::nullopt});
-    w.designChoices()->setSubject({});
+    w.designChecks().choices()->setSubject({QStringLiteral("rod.E"), QString(), std::nullopt});
+    w.designChecks().choices()->setSubject({});
   };
   work();
   EXPECT_EQ(o->extremeSearches(), 0);
@@ -247,8 +247,8 @@ TEST(DesignOverlays, NothingIsComputedWhileTheyAreOff) {
   EXPECT_FALSE(o->extremesItem()->isVisible());
   EXPECT_FALSE(o->transmissionItem()->isVisible());
   // On: computed; the arcs once per pose change.
-  w.action("showExtremes")->setChecked(true);
-  w.action("showTransmission")->setChecked(true);
+  w.designChecks().showExtremes->setChecked(true);
+  w.designChecks().showTransmission->setChecked(true);
   EXPECT_EQ(o->extremeSearches(), 1);
   const int arcs = o->transmissionUpdates();
   EXPECT_GE(arcs, 1);
@@ -256,8 +256,8 @@ TEST(DesignOverlays, NothingIsComputedWhileTheyAreOff) {
   EXPECT_EQ(o->transmissionUpdates(), arcs + 1);
   EXPECT_EQ(o->extremeSearches(), 1);  // a pose is not a design
   // Off again: nothing more, and nothing drawn.
-  w.action("showExtremes")->setChecked(false);
-  w.action("showTransmission")->setChecked(false);
+  w.designChecks().showExtremes->setChecked(false);
+  w.designChecks().showTransmission->setChecked(false);
   const int searches = o->extremeSearches(), updates = o->transmissionUpdates();
   work();
   EXPECT_EQ(o->extremeSearches(), searches);
@@ -270,20 +270,20 @@ TEST(DesignOverlays, ADesignTheSolverCannotTakeShowsNothing) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
   Document* d = w.document();
-  w.action("showExtremes")->setChecked(true);
-  w.action("showTransmission")->setChecked(true);
-  ASSERT_FALSE(w.designOverlays()->extremesItem()->poses().poses.empty());
+  w.designChecks().showExtremes->setChecked(true);
+  w.designChecks().showTransmission->setChecked(true);
+  ASSERT_FALSE(w.designChecks().overlays()->extremesItem()->poses().poses.empty());
   // The rocker's pivot far away: the loop cannot close.
   Mechanism m = d->design();
   m.point(*m.findPoint("ground.O4"))->pos.x() += 500;
   editDesign(d, "Move O4", m);
   ASSERT_FALSE(d->solved());
-  EXPECT_TRUE(w.designOverlays()->extremesItem()->poses().poses.empty());
-  EXPECT_TRUE(w.designOverlays()->transmissionItem()->arcs().empty());
+  EXPECT_TRUE(w.designChecks().overlays()->extremesItem()->poses().poses.empty());
+  EXPECT_TRUE(w.designChecks().overlays()->transmissionItem()->arcs().empty());
   d->undoStack()->undo();
   ASSERT_TRUE(d->solved());
-  EXPECT_FALSE(w.designOverlays()->extremesItem()->poses().poses.empty());
-  EXPECT_FALSE(w.designOverlays()->transmissionItem()->arcs().empty());
+  EXPECT_FALSE(w.designChecks().overlays()->extremesItem()->poses().poses.empty());
+  EXPECT_FALSE(w.designChecks().overlays()->transmissionItem()->arcs().empty());
 }
 
 TEST(DesignOverlays, ActionsShortcutsAndSettings) {
@@ -292,8 +292,8 @@ TEST(DesignOverlays, ActionsShortcutsAndSettings) {
     ASSERT_TRUE(w.openExample("needle-876-alpha-35"));
     w.show();
     QApplication::processEvents();
-    QAction* e = w.action("showExtremes");
-    QAction* a = w.action("showTransmission");
+    QAction* e = w.designChecks().showExtremes;
+    QAction* a = w.designChecks().showTransmission;
     EXPECT_EQ(e->shortcut(), QKeySequence(QStringLiteral("Shift+E")));
     EXPECT_EQ(a->shortcut(), QKeySequence(QStringLiteral("Shift+A")));
     // Every shortcut of the window is one action's.
@@ -306,8 +306,8 @@ TEST(DesignOverlays, ActionsShortcutsAndSettings) {
     QTest::keyClick(w.canvas(), Qt::Key_A, Qt::ShiftModifier);
     EXPECT_TRUE(e->isChecked());
     EXPECT_TRUE(a->isChecked());
-    EXPECT_TRUE(w.designOverlays()->extremesVisible());
-    EXPECT_TRUE(w.designOverlays()->transmissionVisible());
+    EXPECT_TRUE(w.designChecks().overlays()->extremesVisible());
+    EXPECT_TRUE(w.designChecks().overlays()->transmissionVisible());
     // In the View menu and the Analysis menu, with the dock and the study.
     auto menu = [&](const QString& title) -> QMenu* {
       for (QAction* m : w.menuBar()->actions())
@@ -321,22 +321,22 @@ TEST(DesignOverlays, ActionsShortcutsAndSettings) {
       EXPECT_TRUE(view->actions().contains(act));
       EXPECT_TRUE(analysis->actions().contains(act));
     }
-    EXPECT_TRUE(analysis->actions().contains(w.action("parameterStudy")));
-    EXPECT_TRUE(analysis->actions().contains(w.action("showDesignChecks")));
-    EXPECT_EQ(w.action("showDesignChecks")->shortcut(), QKeySequence(QStringLiteral("Shift+D")));
+    EXPECT_TRUE(analysis->actions().contains(w.designChecks().parameterStudy));
+    EXPECT_TRUE(analysis->actions().contains(w.designChecks().show));
+    EXPECT_EQ(w.designChecks().show->shortcut(), QKeySequence(QStringLiteral("Shift+D")));
     EXPECT_TRUE(w.close());
   }
   {
     MainWindow w;  // remembered
-    EXPECT_TRUE(w.action("showExtremes")->isChecked());
-    EXPECT_TRUE(w.action("showTransmission")->isChecked());
-    w.action("showExtremes")->setChecked(false);
-    w.action("showTransmission")->setChecked(false);
+    EXPECT_TRUE(w.designChecks().showExtremes->isChecked());
+    EXPECT_TRUE(w.designChecks().showTransmission->isChecked());
+    w.designChecks().showExtremes->setChecked(false);
+    w.designChecks().showTransmission->setChecked(false);
     EXPECT_TRUE(w.close());
   }
   MainWindow w;
-  EXPECT_FALSE(w.action("showExtremes")->isChecked());
-  EXPECT_FALSE(w.action("showTransmission")->isChecked());
+  EXPECT_FALSE(w.designChecks().showExtremes->isChecked());
+  EXPECT_FALSE(w.designChecks().showTransmission->isChecked());
 }
 
 TEST(DesignOverlays, TheBandIsRemembered) {
@@ -353,12 +353,12 @@ TEST(DesignOverlays, TheBandIsRemembered) {
 // The band is the user's: typed in one window's Design Checks, every open window takes it.
 TEST(DesignOverlays, TheBandTypedInOneWindowReachesTheOthers) {
   MainWindow a, b;
-  a.checksPanel()->bandLo()->setValue(40);
-  EXPECT_EQ(a.designChoices()->band().lo, 40);
-  EXPECT_EQ(b.designChoices()->band().lo, 40);
-  EXPECT_EQ(b.checksPanel()->bandLo()->value(), 40);
-  ASSERT_TRUE(a.designChoices()->setBand({30, 150}));
-  EXPECT_EQ(b.checksPanel()->bandLo()->value(), 30);
+  a.designChecks().panel()->bandLo()->setValue(40);
+  EXPECT_EQ(a.designChecks().choices()->band().lo, 40);
+  EXPECT_EQ(b.designChecks().choices()->band().lo, 40);
+  EXPECT_EQ(b.designChecks().panel()->bandLo()->value(), 40);
+  ASSERT_TRUE(a.designChecks().choices()->setBand({30, 150}));
+  EXPECT_EQ(b.designChecks().panel()->bandLo()->value(), 30);
 }
 
 }  // namespace

@@ -20,7 +20,7 @@
 #include "document/commands.h"
 #include "document/document.h"
 #include "linkage/grashof.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 namespace {
@@ -40,10 +40,10 @@ struct PanelWindow {
   ChecksPanel* panel;
   explicit PanelWindow(const char* example) {
     EXPECT_TRUE(w.openExample(example));
-    panel = w.checksPanel();
+    panel = w.designChecks().panel();
     w.resize(1200, 800);
     w.show();
-    w.action("showDesignChecks")->trigger();
+    w.designChecks().show->trigger();
     settle();
   }
   Document* doc() { return w.document(); }
@@ -122,7 +122,7 @@ TEST(DesignPanel, TheNumbersAreTheSolverAPIs) {
 
   // A band that mu_2 leaves (its minimum is about 32.7 degrees at alpha = 35): set in the panel.
   p->bandLo()->setValue(40);
-  EXPECT_EQ(pw.w.designChoices()->band().lo, 40);
+  EXPECT_EQ(pw.w.designChecks().choices()->band().lo, 40);
   expectTransmission(*p, k, {40, 150});
   EXPECT_NE(p->transmissionTable()->item(1, 3)->text(), QStringLiteral("none"));
   p->bandLo()->setValue(30);
@@ -148,33 +148,33 @@ TEST(DesignPanel, ShiftDShowsTheDockAndATabBehindAnotherComputesNothing) {
   w.resize(1200, 800);
   w.show();
   QApplication::processEvents();
-  ChecksPanel* p = w.checksPanel();
-  ASSERT_FALSE(w.dock("designChecks")->isVisible());
+  ChecksPanel* p = w.designChecks().panel();
+  ASSERT_FALSE(w.designChecks().dock->isVisible());
   EXPECT_EQ(p->computations(), 0);
   QTest::keyClick(w.canvas(), Qt::Key_D, Qt::ShiftModifier);
   settle();
-  EXPECT_TRUE(w.dock("designChecks")->isVisible());
+  EXPECT_TRUE(w.designChecks().dock->isVisible());
   EXPECT_TRUE(p->shown());
   EXPECT_EQ(p->computations(), 1);
   EXPECT_EQ(p->transmissionTable()->rowCount(), 3);
   // A tab beside the instant centres, in front: the centres behind it compute nothing (their
   // dock is moved off the window but stays "visible").
-  EXPECT_TRUE(w.tabifiedDockWidgets(w.dock("centres")).contains(w.dock("designChecks")));
+  EXPECT_TRUE(w.tabifiedDockWidgets(w.centres().dock).contains(w.designChecks().dock));
   ASSERT_TRUE(w.document()->setCrankDeg(10).ok());
   QApplication::processEvents();
-  EXPECT_FALSE(w.centresPanel()->chain().has_value());
+  EXPECT_FALSE(w.centres().panel()->chain().has_value());
   // Behind the instant centres: the dock's visibility says it is not seen.
-  w.dock("centres")->raise();
+  w.centres().dock->raise();
   settle();
   ASSERT_FALSE(p->shown());
   ASSERT_TRUE(w.document()->setCrankDeg(20).ok());
-  EXPECT_TRUE(w.centresPanel()->chain().has_value());  // the centres are seen again
+  EXPECT_TRUE(w.centres().panel()->chain().has_value());  // the centres are seen again
   Mechanism m = w.document()->design();
   m.point(*m.findPoint("ground.C"))->pos.y() += 0.5;
   m.point(*m.findPoint("lever.C"))->pos.y() += 0.5;
   editDesign(w.document(), "Move C", m);
   EXPECT_EQ(p->computations(), 1);
-  w.dock("designChecks")->raise();
+  w.designChecks().dock->raise();
   settle();
   EXPECT_TRUE(p->shown());
   EXPECT_EQ(p->computations(), 2);
@@ -194,25 +194,25 @@ TEST(DesignPanel, EditsAreFollowedOnlyWhileShown) {
   ASSERT_TRUE(d->solved());
   EXPECT_EQ(p->computations(), shown + 1);
   expectGrashof(*p, d->design());
-  expectTransmission(*p, d->kinematics(), pw.w.designChoices()->band());
+  expectTransmission(*p, d->kinematics(), pw.w.designChecks().choices()->band());
   const PointId g = d->design().outputs.front();
   expectLimits(*p, d->kinematics(), LimitMeasure::along(g, defaultDirection(d->design(), g)));
   // Hidden: edits and poses compute nothing; shown again, the numbers are the design's now.
-  pw.w.action("showDesignChecks")->trigger();
+  pw.w.designChecks().show->trigger();
   settle();
   const int hidden = p->computations();
   m.point(*m.findPoint("ground.C"))->pos.y() += 0.5;
   m.point(*m.findPoint("lever.C"))->pos.y() += 0.5;
   editDesign(d, "Move C", m);
-  pw.w.designChoices()->setBand({35, 145});
+  pw.w.designChecks().choices()->setBand({35, 145});
   ASSERT_TRUE(d->setCrankDeg(80).ok());
   EXPECT_EQ(p->computations(), hidden);
-  pw.w.action("showDesignChecks")->trigger();
+  pw.w.designChecks().show->trigger();
   settle();
   EXPECT_EQ(p->computations(), hidden + 1);
   expectGrashof(*p, d->design());
   expectTransmission(*p, d->kinematics(), {35, 145});
-  pw.w.designChoices()->setBand({30, 150});
+  pw.w.designChecks().choices()->setBand({30, 150});
 }
 
 TEST(DesignPanel, ACrankThatStopsIsReported) {

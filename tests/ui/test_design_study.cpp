@@ -24,7 +24,7 @@
 #include "design/study_table_model.h"
 #include "document/document.h"
 #include "linkage/tables/study_table.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 namespace {
@@ -64,7 +64,7 @@ bool runAndWait(StudyDialog* d) {
 // A study of 20,000 variants of the 876 (seconds of work) started in the window's dialog.
 StudyDialog* startLongRun(MainWindow& w, const char* move, const char* point) {
   EXPECT_TRUE(w.openExample("needle-876-alpha-0"));
-  StudyDialog* d = w.studyDialog();
+  StudyDialog* d = w.designChecks().studyDialog();
   d->show();
   fill(d, {move, "0.001, 0", nullptr, nullptr, "0", "1", 20000, point});
   EXPECT_TRUE(d->run());
@@ -99,8 +99,8 @@ void expectTableIsRunStudy(StudyDialog* d, const Mechanism& m, const StudySpec& 
 TEST(DesignStudy, TheTableIsRunStudysAndTheCsvIsTheCommandLines) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("needle-876-alpha-0"));
-  w.action("parameterStudy")->trigger();
-  StudyDialog* d = w.studyDialog();
+  w.designChecks().parameterStudy->trigger();
+  StudyDialog* d = w.designChecks().studyDialog();
   ASSERT_TRUE(d->isVisible());
   // The paper's adjustment: F turned about E, alpha from 0 to 35 degrees.
   fill(d, {"ground.F",
@@ -156,7 +156,7 @@ TEST(DesignStudy, TheTableIsRunStudysAndTheCsvIsTheCommandLines) {
 TEST(DesignStudy, AStudyWhereTheCrankStopsReportsItInTheTable) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
-  StudyDialog* d = w.studyDialog();
+  StudyDialog* d = w.designChecks().studyDialog();
   d->show();
   // The rocker's pivot moved up towards B: the rocker shortens until the crank rocks.
   fill(d, {"ground.O4", "0, 1", nullptr, nullptr, "0", "40", 9, "coupler.P"});
@@ -232,7 +232,7 @@ TEST(DesignStudy, ARunReportsProgressKeepsTheWindowLiveAndCanBeCancelled) {
 TEST(DesignStudy, AFormThatCannotRunSaysWhichField) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
-  StudyDialog* d = w.studyDialog();
+  StudyDialog* d = w.designChecks().studyDialog();
   fill(d, {"ground.O4", nullptr, "", "10", "0", "1", 3, "coupler.P"});
   EXPECT_FALSE(d->run());
   EXPECT_TRUE(d->statusText().startsWith(QStringLiteral("About"))) << d->statusText().toStdString();
@@ -263,7 +263,7 @@ TEST(DesignStudy, ClosingTheDialogCancelsItsRunAndEditsKeepTheChoices) {
   w.document()->setDesign(m);
   EXPECT_EQ(d->moveBox()->currentText(), QStringLiteral("ground.F"));
   EXPECT_EQ(d->pointBox()->currentText(), QStringLiteral("rod.E"));
-  EXPECT_EQ(w.studyDialog(), d);  // one per window
+  EXPECT_EQ(w.designChecks().studyDialog(), d);  // one per window
 }
 
 }  // namespace

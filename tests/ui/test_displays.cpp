@@ -28,7 +28,7 @@
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
 #include "tools/toolbox.h"
-#include "window/main_window.h"
+#include "window/features.h"
 #include "window/message_strip.h"
 
 namespace linkage::ui {
@@ -44,8 +44,8 @@ JointId jointBetween(const Mechanism& m, const char* a, const char* b) {
 // The four-bar with the coupler's pin to the rocker deleted: coupler and rocker hang free, two
 // degrees of freedom the driver does not determine.
 void deleteCouplerPin(MainWindow& w) {
-  w.selection()->add(jointBetween(w.document()->design(), "coupler.B", "rocker.B"));
-  w.toolbox()->deleteSelection();
+  w.tools().selection()->add(jointBetween(w.document()->design(), "coupler.B", "rocker.B"));
+  w.tools().toolbox()->deleteSelection();
   QApplication::processEvents();
   ASSERT_TRUE(w.document()->solved());
   ASSERT_EQ(w.document()->kinematics().structure().freeAfterDriver, 2);
@@ -54,9 +54,9 @@ void deleteCouplerPin(MainWindow& w) {
 TEST(Displays, UndeterminedMotionShowsNoNumbersButWhy) {
   MainWindow w;
   ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
-  w.action("showTraces")->setChecked(true);
+  w.view().showTraces->setChecked(true);
   QApplication::processEvents();
-  const QTableWidget* t = w.inspector()->motionTable();
+  const QTableWidget* t = w.properties().inspector()->motionTable();
   ASSERT_EQ(t->rowCount(), 1);
   ASSERT_FALSE(w.scene()->traceItems()[0]->path().isEmpty());
   EXPECT_TRUE(t->item(0, 2)->text().contains(QLatin1Char(','))) << t->item(0, 2)->text();
@@ -66,47 +66,48 @@ TEST(Displays, UndeterminedMotionShowsNoNumbersButWhy) {
   ASSERT_EQ(t->rowCount(), 1);
   EXPECT_EQ(t->item(0, 0)->text(), "coupler.P");
   for (int c = 1; c < 4; ++c) EXPECT_EQ(t->item(0, c)->text(), "not determined");
-  EXPECT_TRUE(w.inspector()->noteText().contains("coupler.P is not determined by the driver"))
-      << w.inspector()->noteText();
+  EXPECT_TRUE(
+      w.properties().inspector()->noteText().contains("coupler.P is not determined by the driver"))
+      << w.properties().inspector()->noteText();
   // No traced path.
   ASSERT_EQ(w.scene()->traceItems().size(), 1u);
   EXPECT_TRUE(w.scene()->traceItems()[0]->path().isEmpty());
   // No animation, no steps: the crank stays and the message says why.
   const double deg = w.document()->crankDeg();
-  w.action("play")->trigger();
+  w.animation().play->trigger();
   EXPECT_FALSE(w.animator()->playing());
   EXPECT_TRUE(w.messageStrip()->message().startsWith("Cannot play: the motion is not determined"))
       << w.messageStrip()->message();
-  EXPECT_FALSE(w.action("play")->isChecked());
-  w.action("stepForward")->trigger();
+  EXPECT_FALSE(w.animation().play->isChecked());
+  w.animation().stepForward->trigger();
   EXPECT_EQ(w.document()->crankDeg(), deg);
   EXPECT_TRUE(w.messageStrip()->message().contains("not determined"));
   // The plot of the point: no curve, the reason.
-  w.dock("plots")->show();
+  w.plots().dock->show();
   QApplication::processEvents();
-  ASSERT_NE(w.plots()->curves(0), nullptr);
-  EXPECT_TRUE(w.plots()->curves(0)->empty());
-  EXPECT_TRUE(
-      QString::fromStdString(w.plots()->curves(0)->status().message).contains("not determined"));
-  EXPECT_TRUE(w.plots()->cursorText().contains(QString::fromUtf8("vy — mm/s")))
-      << w.plots()->cursorText();
+  ASSERT_NE(w.plots().panel()->curves(0), nullptr);
+  EXPECT_TRUE(w.plots().panel()->curves(0)->empty());
+  EXPECT_TRUE(QString::fromStdString(w.plots().panel()->curves(0)->status().message)
+                  .contains("not determined"));
+  EXPECT_TRUE(w.plots().panel()->cursorText().contains(QString::fromUtf8("vy — mm/s")))
+      << w.plots().panel()->cursorText();
   shot(&w, "undetermined");
 }
 
 TEST(Displays, UndeterminedPointHasNoVelocityChainNorCentres) {
   MainWindow w;
   ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
-  w.dock("centres")->raise();
-  w.action("showCentres")->setChecked(true);
+  w.centres().dock->raise();
+  w.centres().show->setChecked(true);
   QTest::qWait(20);
-  ASSERT_TRUE(w.centresPanel()->chain().has_value());
+  ASSERT_TRUE(w.centres().panel()->chain().has_value());
   const size_t drawn = w.scene()->drawing().centres.size();
   deleteCouplerPin(w);
   QTest::qWait(20);
-  EXPECT_FALSE(w.centresPanel()->chain().has_value());
-  EXPECT_TRUE(w.centresPanel()->chainText().isEmpty());
+  EXPECT_FALSE(w.centres().panel()->chain().has_value());
+  EXPECT_TRUE(w.centres().panel()->chainText().isEmpty());
   // The chain's words say why (the point is chosen still).
-  const QTableWidget* t = w.centresPanel()->table();
+  const QTableWidget* t = w.centres().panel()->table();
   bool any = false;
   for (int r = 0; r < t->rowCount(); ++r) {
     const QString bodies = t->item(r, 1)->text();
@@ -127,11 +128,11 @@ TEST(Displays, FitOfAnUndeterminedMechanismShowsItWhereItIs) {
   MainWindow w;
   ASSERT_TRUE(test::showExample(w, "wanzer-inversion-2"));
   const double fitted = w.canvas()->zoom();
-  w.selection()->add(w.document()->design().joints[2].id);
-  w.toolbox()->deleteSelection();
+  w.tools().selection()->add(w.document()->design().joints[2].id);
+  w.tools().toolbox()->deleteSelection();
   QApplication::processEvents();
   ASSERT_GT(w.document()->kinematics().structure().freeAfterDriver, 0);
-  w.action("fit")->trigger();
+  w.view().fit->trigger();
   const QRectF r = w.scene()->mechanismRect();
   EXPECT_LT(std::max(r.width(), r.height()), 400) << r.width() << " x " << r.height();
   EXPECT_GT(w.canvas()->zoom(), fitted / 2);
@@ -142,7 +143,8 @@ TEST(Displays, UndoOfAStartAngleBeyondReachLeavesTheDesignSolved) {
   ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
   const int width = w.width();
   // Typed: refused, with the reason, the field as it was.
-  auto* f = qobject_cast<QLineEdit*>(w.properties()->field(QStringLiteral("Start angle [\u00b0]")));
+  auto* f = qobject_cast<QLineEdit*>(
+      w.properties().panel()->field(QStringLiteral("Start angle [\u00b0]")));
   ASSERT_NE(f, nullptr);
   f->setFocus();
   f->setText("1e300");
@@ -157,15 +159,15 @@ TEST(Displays, UndoOfAStartAngleBeyondReachLeavesTheDesignSolved) {
   editDesign(w.document(), "start", m);
   QApplication::processEvents();
   EXPECT_EQ(w.width(), width);
-  w.action("undo")->trigger();
-  w.action("toStart")->trigger();
+  w.edit().undo->trigger();
+  w.animation().toStart->trigger();
   QApplication::processEvents();
   EXPECT_TRUE(w.document()->solved()) << w.document()->solveStatus().message;
-  EXPECT_FALSE(w.inspector()->summaryText().contains("Not solved"));
+  EXPECT_FALSE(w.properties().inspector()->summaryText().contains("Not solved"));
   EXPECT_EQ(w.document()->crankDeg(), 0);
-  w.action("stepForward")->trigger();
+  w.animation().stepForward->trigger();
   EXPECT_EQ(w.document()->crankDeg(), 1);
-  w.action("play")->trigger();
+  w.animation().play->trigger();
   EXPECT_TRUE(w.animator()->playing());
   w.animator()->setPlaying(false);
   // No message, however long its number, widens the window.
@@ -178,9 +180,9 @@ TEST(Displays, UndoOfAStartAngleBeyondReachLeavesTheDesignSolved) {
 TEST(Displays, AFileThatCannotBeSolvedLeavesNoVelocityChainBehind) {
   MainWindow w;
   ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
-  w.dock("centres")->raise();
+  w.centres().dock->raise();
   QTest::qWait(20);
-  ASSERT_TRUE(w.centresPanel()->chainText().contains("mm/s"));
+  ASSERT_TRUE(w.centres().panel()->chainText().contains("mm/s"));
   // The same four-bar with a coupler too short to close: 1 mm, with a rocker of 51 mm, 53 mm
   // from the crank pin.
   Mechanism m = w.document()->design();
@@ -192,13 +194,13 @@ TEST(Displays, AFileThatCannotBeSolvedLeavesNoVelocityChainBehind) {
   ASSERT_TRUE(w.openFile(path, &why)) << why.toStdString();
   QTest::qWait(20);
   ASSERT_FALSE(w.document()->solved());
-  EXPECT_EQ(w.centresPanel()->table()->rowCount(), 0);
-  EXPECT_FALSE(w.centresPanel()->chain().has_value());
-  EXPECT_FALSE(w.centresPanel()->chainText().contains("mm/s"));
-  w.dock("properties")->raise();
+  EXPECT_EQ(w.centres().panel()->table()->rowCount(), 0);
+  EXPECT_FALSE(w.centres().panel()->chain().has_value());
+  EXPECT_FALSE(w.centres().panel()->chainText().contains("mm/s"));
+  w.properties().dock->raise();
   QTest::qWait(20);
-  EXPECT_EQ(w.inspector()->motionTable()->rowCount(), 0);
-  EXPECT_TRUE(w.inspector()->noteText().startsWith("Not solved"));
+  EXPECT_EQ(w.properties().inspector()->motionTable()->rowCount(), 0);
+  EXPECT_TRUE(w.properties().inspector()->noteText().startsWith("Not solved"));
 }
 
 TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {
@@ -208,30 +210,30 @@ TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {
   EXPECT_EQ(fixedText(NAN, 3), QStringLiteral("\u2013"));
   MainWindow w;
   ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
-  w.dock("plots")->show();
+  w.plots().dock->show();
   // The rocker's pivot: fixed, its velocity computed through the turning rocker.
-  CurveRequest r = w.plots()->request();
+  CurveRequest r = w.plots().panel()->request();
   r.target = "rocker.O4";
-  w.plots()->setRequest(r);
+  w.plots().panel()->setRequest(r);
   QTest::qWait(60);
-  const CurveSet* set = w.plots()->curves(0);
+  const CurveSet* set = w.plots().panel()->curves(0);
   ASSERT_NE(set, nullptr);
   for (Order o : {Order::Velocity, Order::Acceleration})
     for (double v : set->curve(o).values) ASSERT_EQ(v, 0.0);
   EXPECT_EQ(set->extremes(Order::Velocity).max.value, 0.0);
   // A moving point's curve keeps its small values (no flattening of a real signal).
   r.target = "coupler.P";
-  w.plots()->setRequest(r);
+  w.plots().panel()->setRequest(r);
   QTest::qWait(60);
   int nonzero = 0;
-  for (double v : w.plots()->curves(0)->curve(Order::Velocity).values) nonzero += v != 0;
+  for (double v : w.plots().panel()->curves(0)->curve(Order::Velocity).values) nonzero += v != 0;
   EXPECT_GT(nonzero, 300);
   // The inspector prints no "-0.000".
   Mechanism m = w.document()->design();
   toggleOutput(m, *m.findPoint("rocker.O4"));
   editDesign(w.document(), "output", m);
   QApplication::processEvents();
-  const QTableWidget* t = w.inspector()->motionTable();
+  const QTableWidget* t = w.properties().inspector()->motionTable();
   ASSERT_EQ(t->rowCount(), 2);
   EXPECT_EQ(t->item(1, 2)->text(), "0.000, 0.000");
   EXPECT_EQ(t->item(1, 3)->text(), "0.000, 0.000");

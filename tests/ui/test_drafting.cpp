@@ -24,32 +24,32 @@
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
 #include "tools/toolbox.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 namespace {
 
 QLineEdit* fieldOf(MainWindow& w, const QString& label) {
-  return qobject_cast<QLineEdit*>(w.properties()->field(label));
+  return qobject_cast<QLineEdit*>(w.properties().panel()->field(label));
 }
 
 TEST(Drafting, AToolKeyTypedInANumberFieldChoosesTheToolAndKeepsTheValue) {
   MainWindow w;
   ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
   const PointId p = *w.document()->design().findPoint("coupler.P");
-  w.selection()->add(p);
+  w.tools().selection()->add(p);
   QLineEdit* x = fieldOf(w, "x [mm]");
   ASSERT_NE(x, nullptr);
   x->setFocus();
   x->selectAll();
   QTest::keyClicks(x, "-29.34");
   QTest::keyClick(x, Qt::Key_L);  // meant for the Link tool
-  EXPECT_TRUE(w.action("tool:link")->isChecked());
+  EXPECT_TRUE(w.tools().toolbox()->toolAction("link")->isChecked());
   EXPECT_TRUE(w.canvas()->hasFocus());
   EXPECT_EQ(w.document()->design().point(p)->pos.x(), -29.34);
   EXPECT_EQ(w.document()->undoStack()->count(), 1);
   // A letter that is no shortcut is dropped, not typed into the number.
-  w.action("tool:select")->trigger();
+  w.tools().toolbox()->toolAction("select")->trigger();
   x = fieldOf(w, "x [mm]");
   x->setFocus();
   x->selectAll();
@@ -65,7 +65,7 @@ TEST(Drafting, AToolKeyTypedInANumberFieldChoosesTheToolAndKeepsTheValue) {
   name->selectAll();
   QTest::keyClicks(name, "pl");
   EXPECT_EQ(name->text(), "pl");
-  EXPECT_TRUE(w.action("tool:select")->isChecked());
+  EXPECT_TRUE(w.tools().toolbox()->toolAction("select")->isChecked());
 }
 
 TEST(Drafting, AStartAngleTurnsTheCrankThereAndSaysWhatItMeans) {
@@ -75,7 +75,7 @@ TEST(Drafting, AStartAngleTurnsTheCrankThereAndSaysWhatItMeans) {
   QLineEdit* start = fieldOf(w, QStringLiteral("Start angle [\u00b0]"));
   ASSERT_NE(start, nullptr);
   EXPECT_FALSE(start->toolTip().isEmpty());
-  auto* meaning = qobject_cast<QLabel*>(w.properties()->field("Crank 0 is"));
+  auto* meaning = qobject_cast<QLabel*>(w.properties().panel()->field("Crank 0 is"));
   ASSERT_NE(meaning, nullptr);
   EXPECT_EQ(meaning->text(), "the drawing as it is");
   start->setFocus();
@@ -85,8 +85,8 @@ TEST(Drafting, AStartAngleTurnsTheCrankThereAndSaysWhatItMeans) {
   // Crank angle 0, the disk 30 degrees on (counter-clockwise, its driving direction).
   EXPECT_EQ(w.document()->crankDeg(), 0);
   EXPECT_NEAR(w.document()->kinematics().bodyAngle(crank) * 180 / M_PI, 30, 1e-9);
-  EXPECT_EQ(w.properties()->field("Crank 0 is")
-                ? qobject_cast<QLabel*>(w.properties()->field("Crank 0 is"))->text()
+  EXPECT_EQ(w.properties().panel()->field("Crank 0 is")
+                ? qobject_cast<QLabel*>(w.properties().panel()->field("Crank 0 is"))->text()
                 : QString(),
             QStringLiteral("the drawing turned 30\u00b0 counter-clockwise"));
   // The drawing itself is as it was drawn.
@@ -129,7 +129,7 @@ TEST(Drafting, APlateIsGivenByItsSideLengths) {
   ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
   const Mechanism& m = w.document()->design();
   const BodyId coupler = m.bodyNamed("coupler")->id;
-  w.selection()->add(coupler);
+  w.tools().selection()->add(coupler);
   for (const char* side : {"Side AB [mm]", "Side BP [mm]", "Side AP [mm]"})
     ASSERT_NE(fieldOf(w, side), nullptr) << side;
   type(fieldOf(w, "Side BP [mm]"), "50");
@@ -156,8 +156,8 @@ TEST(Drafting, APointIsPlacedByItsDistanceAndAngleFromAnother) {
   ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
   const PointId p = *w.document()->design().findPoint("coupler.P");
   const Vec2 a = w.document()->design().point(*w.document()->design().findPoint("coupler.A"))->pos;
-  w.selection()->add(p);
-  auto* from = qobject_cast<QComboBox*>(w.properties()->field("From"));
+  w.tools().selection()->add(p);
+  auto* from = qobject_cast<QComboBox*>(w.properties().panel()->field("From"));
   ASSERT_NE(from, nullptr);
   EXPECT_EQ(from->currentText(), "A");
   type(fieldOf(w, "Angle [\u00b0]"), "90");
@@ -174,13 +174,13 @@ TEST(Drafting, ASliderBlockIsSelectedByAClickAgainAndRenamed) {
       w.document()->kinematics().position(*w.document()->design().findPoint("needlebar.B"));
   test::Draw d{w};
   d.click(at.x(), at.y());
-  EXPECT_EQ(w.selection()->joints.size(), 1u);  // first the pin
+  EXPECT_EQ(w.tools().selection()->joints.size(), 1u);  // first the pin
   d.click(at.x(), at.y());
-  EXPECT_EQ(w.selection()->points.size(), 1u);  // then the point
+  EXPECT_EQ(w.tools().selection()->points.size(), 1u);  // then the point
   d.click(at.x(), at.y());
-  ASSERT_EQ(w.selection()->bodies.size(), 1u);  // then the block
-  EXPECT_EQ(w.selection()->bodies[0], block);
-  EXPECT_TRUE(w.properties()->title().contains("needlebar"));
+  ASSERT_EQ(w.tools().selection()->bodies.size(), 1u);  // then the block
+  EXPECT_EQ(w.tools().selection()->bodies[0], block);
+  EXPECT_TRUE(w.properties().panel()->title().contains("needlebar"));
   type(fieldOf(w, "Name"), "slider");
   EXPECT_EQ(w.document()->design().body(block)->name, "slider");
 }
@@ -191,20 +191,21 @@ TEST(Drafting, AnotherWindowIsComparedAtThePointChosen) {
   auto* b = new MainWindow;
   b->setAttribute(Qt::WA_DeleteOnClose, false);
   ASSERT_TRUE(b->openExample("wanzer-inversion-2"));
-  a.dock("plots")->show();
-  a.plots()->setCompare(PlotsPanel::Compare::Overlay);
+  a.plots().dock->show();
+  a.plots().panel()->setCompare(PlotsPanel::Compare::Overlay);
   QTest::qWait(80);
   // No point of the same name there: that mechanism's first output, not "no point".
-  ASSERT_NE(a.plots()->curves(1), nullptr);
-  EXPECT_EQ(a.plots()->curves(1)->request().target, "needlebar.G");
-  EXPECT_TRUE(a.plots()->curves(1)->status().ok()) << a.plots()->curves(1)->status().message;
+  ASSERT_NE(a.plots().panel()->curves(1), nullptr);
+  EXPECT_EQ(a.plots().panel()->curves(1)->request().target, "needlebar.G");
+  EXPECT_TRUE(a.plots().panel()->curves(1)->status().ok())
+      << a.plots().panel()->curves(1)->status().message;
   // Another point chosen.
-  auto* against = a.plots()->findChild<QComboBox*>();
+  auto* against = a.plots().panel()->findChild<QComboBox*>();
   (void)against;
-  a.plots()->setComparisonTarget("triangle.G");
+  a.plots().panel()->setComparisonTarget("triangle.G");
   QTest::qWait(80);
-  EXPECT_EQ(a.plots()->curves(1)->request().target, "triangle.G");
-  EXPECT_TRUE(a.plots()->curves(1)->status().ok());
+  EXPECT_EQ(a.plots().panel()->curves(1)->request().target, "triangle.G");
+  EXPECT_TRUE(a.plots().panel()->curves(1)->status().ok());
   delete b;
 }
 

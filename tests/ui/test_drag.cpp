@@ -88,9 +88,9 @@ TEST(Drag, WithCtrlTheDesignChangesAsOneUndoStep) {
   EXPECT_TRUE(f.doc->solved());
   EXPECT_EQ(f.doc->undoStack()->count(), 1);
   const std::string after = serializeMechanism(m);
-  f.w.action("undo")->trigger();
+  f.w.edit().undo->trigger();
   EXPECT_EQ(serializeMechanism(f.doc->design()), before);
-  f.w.action("redo")->trigger();
+  f.w.edit().redo->trigger();
   EXPECT_EQ(serializeMechanism(f.doc->design()), after);
 }
 
@@ -102,7 +102,7 @@ TEST(Drag, StartsOnlyAfterAFewPixels) {
   const double px = 1 / f.w.canvas()->zoom();
   f.d.drag(a.x(), a.y(), a.x() + 2 * px, a.y(), {}, 2);
   EXPECT_EQ(f.doc->crankDeg(), deg);
-  EXPECT_EQ(f.w.selection()->joints.size(), 1u);  // the pin at A, selected by the click
+  EXPECT_EQ(f.w.tools().selection()->joints.size(), 1u);  // the pin at A, selected by the click
 }
 
 }  // namespace
@@ -121,7 +121,7 @@ TEST(Drag, FlipPutsTheDyadOnItsOtherAssemblyAndUndoBringsItBack) {
   const Vec2 u = (o4 - a).normalized();
   const Vec2 mirrored = a + 2 * (b - a).dot(u) * u - (b - a);
   f.d.click(40, 40);  // the coupler plate
-  ASSERT_EQ(f.w.selection()->bodies.size(), 1u);
+  ASSERT_EQ(f.w.tools().selection()->bodies.size(), 1u);
   f.d.key("X");
   EXPECT_LT((f.at("rocker.B") - mirrored).norm(), 1e-9);
   EXPECT_EQ(f.doc->undoStack()->count(), 1);
@@ -130,7 +130,7 @@ TEST(Drag, FlipPutsTheDyadOnItsOtherAssemblyAndUndoBringsItBack) {
   ASSERT_TRUE(fresh.load(f.doc->design()).ok());
   ASSERT_TRUE(fresh.moveTo(f.doc->crankDeg()).ok());
   EXPECT_LT((fresh.position(*f.doc->design().findPoint("rocker.B")) - mirrored).norm(), 1e-9);
-  f.w.action("undo")->trigger();
+  f.w.edit().undo->trigger();
   EXPECT_EQ(serializeMechanism(f.doc->design()), before);
   EXPECT_LT((f.at("rocker.B") - b).norm(), 1e-12);
 }

@@ -118,11 +118,11 @@ TEST(Draw, UndoAndRedoOfEveryEditGiveBackTheIdenticalFile) {
   shot(&w, "draw-every-edit");
   ASSERT_EQ(doc->undoStack()->count(), int(files.size()) - 1);
   for (int i = int(files.size()) - 2; i >= 0; --i) {
-    w.action("undo")->trigger();
+    w.edit().undo->trigger();
     EXPECT_EQ(serializeMechanism(doc->design()), files[i]) << "undo to step " << i;
   }
   for (size_t i = 1; i < files.size(); ++i) {
-    w.action("redo")->trigger();
+    w.edit().redo->trigger();
     EXPECT_EQ(serializeMechanism(doc->design()), files[i]) << "redo to step " << i;
   }
 }
@@ -136,8 +136,8 @@ namespace {
 // Types a value into a field of the properties panel as a user does: click in it, select all,
 // type, Enter.
 void type(MainWindow& w, const QString& label, const QString& text) {
-  QWidget* f = w.properties()->field(label);
-  ASSERT_TRUE(f) << label.toStdString() << " in " << w.properties()->title().toStdString();
+  QWidget* f = w.properties().panel()->field(label);
+  ASSERT_TRUE(f) << label.toStdString() << " in " << w.properties().panel()->title().toStdString();
   QTest::mouseClick(f, Qt::LeftButton);
   QTest::keyClick(f, Qt::Key_A, Qt::ControlModifier);
   QTest::keyClicks(f, text);
@@ -208,7 +208,7 @@ void addBlocksDriverAndOutput(MainWindow& w, test::Draw& d) {
   d.click(0, 0);
   selectAt(d, 0, 0);
   type(w, "Driver speed [rpm]", "240");
-  auto* dir = qobject_cast<QComboBox*>(w.properties()->field("Direction"));
+  auto* dir = qobject_cast<QComboBox*>(w.properties().panel()->field("Direction"));
   ASSERT_TRUE(dir);
   dir->setFocus();
   QTest::keyClick(dir, Qt::Key_Down);  // clockwise
@@ -299,7 +299,7 @@ TEST(Draw, RedundantJointsAndFreeBodiesAreNamedAndShown) {
   EXPECT_EQ(flagged, int(r.redundantJoints.size()));
   EXPECT_NE(statusText(w).indexOf("redundant"), -1) << statusText(w).toStdString();
   EXPECT_NE(statusText(w).indexOf("Gruebler 0"), -1) << statusText(w).toStdString();
-  w.action("undo")->trigger();
+  w.edit().undo->trigger();
   // A link hanging from the crank's pin, its other end free.
   d.link({{10, 20}, {-20, 40}});
   ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
@@ -317,31 +317,31 @@ TEST(Draw, PropertiesFollowABarThatBecomesAPlateOrLosesAPoint) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
   w.show();
-  w.dock("properties")->raise();
+  w.properties().dock->raise();
   Document* doc = w.document();
   const BodyId crank = doc->design().bodyNamed("crank")->id;
-  w.selection()->add(crank);
+  w.tools().selection()->add(crank);
   QApplication::processEvents();
-  ASSERT_NE(w.properties()->field("Length [mm]"), nullptr);
+  ASSERT_NE(w.properties().panel()->field("Length [mm]"), nullptr);
   // A third point: a plate, no length.
   Mechanism plate = doc->design();
   plate.addPoint(crank, "C", Vec2(5, 5));
   editDesign(doc, "Add point", plate);
   QApplication::processEvents();
-  EXPECT_EQ(w.properties()->field("Length [mm]"), nullptr);
+  EXPECT_EQ(w.properties().panel()->field("Length [mm]"), nullptr);
   doc->undoStack()->undo();
   QApplication::processEvents();
-  ASSERT_NE(w.properties()->field("Length [mm]"), nullptr);
+  ASSERT_NE(w.properties().panel()->field("Length [mm]"), nullptr);
   // The bar's second point gone (and its pin with it), the link kept: one point, no length.
   Mechanism lost = doc->design();
   lost.remove(*lost.findPoint("crank.A"));
   editDesign(doc, "Remove point", lost);
-  w.selection()->add(crank);
+  w.tools().selection()->add(crank);
   QApplication::processEvents();
-  EXPECT_EQ(w.properties()->field("Length [mm]"), nullptr);
+  EXPECT_EQ(w.properties().panel()->field("Length [mm]"), nullptr);
   doc->undoStack()->undo();
   QApplication::processEvents();
-  EXPECT_NE(w.properties()->field("Length [mm]"), nullptr);
+  EXPECT_NE(w.properties().panel()->field("Length [mm]"), nullptr);
 }
 
 }  // namespace

@@ -21,14 +21,14 @@
 #include "linkage/io/model_file.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 namespace {
 
 void type(MainWindow& w, const QString& label, const QString& text) {
-  QWidget* f = w.properties()->field(label);
-  ASSERT_TRUE(f) << label.toStdString() << " in " << w.properties()->title().toStdString();
+  QWidget* f = w.properties().panel()->field(label);
+  ASSERT_TRUE(f) << label.toStdString() << " in " << w.properties().panel()->title().toStdString();
   QTest::mouseClick(f, Qt::LeftButton);
   QTest::keyClick(f, Qt::Key_A, Qt::ControlModifier);
   QTest::keyClicks(f, text);
@@ -76,7 +76,8 @@ TEST(ElementsUi, GearToolCouplesTwoShaftsAndTheRatioIsTyped) {
   EXPECT_EQ(doc->undoStack()->index(), before + 1);
   ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
   // Selected: the panel edits its ratio.
-  EXPECT_NE(w.properties()->title().indexOf("gear"), -1) << w.properties()->title().toStdString();
+  EXPECT_NE(w.properties().panel()->title().indexOf("gear"), -1)
+      << w.properties().panel()->title().toStdString();
   type(w, "Ratio", "-2");
   EXPECT_EQ(gearOf(doc->design())->ratio, -2);
   ASSERT_TRUE(doc->solved());
@@ -93,9 +94,9 @@ TEST(ElementsUi, GearToolCouplesTwoShaftsAndTheRatioIsTyped) {
   type(w, "Ratio", "0");
   EXPECT_EQ(serializeMechanism(doc->design()), kept);
   // Undo takes the coupling away again, step by step.
-  w.action("undo")->trigger();
+  w.edit().undo->trigger();
   EXPECT_EQ(gearOf(doc->design())->ratio, 1);
-  w.action("undo")->trigger();
+  w.edit().undo->trigger();
   EXPECT_EQ(gearOf(doc->design()), nullptr);
 }
 
@@ -143,8 +144,8 @@ TEST(ElementsUi, SlotToolDrawsAnArcAndThePanelTypesItsRadius) {
   EXPECT_LT(g->centre.norm(), 0.3);  // the clicks snap to the grid, the third is free
   EXPECT_NEAR(g->radius, 40, 0.3);
   // Selected and typed: radius 50 about the same centre.
-  w.selection()->clear();
-  w.selection()->add(s.id);
+  w.tools().selection()->clear();
+  w.tools().selection()->add(s.id);
   type(w, "Radius [mm]", "50");
   const std::optional<Guide> h = guideOf(doc->design().slots[0]);
   ASSERT_TRUE(h);
@@ -159,11 +160,11 @@ TEST(ElementsUi, SlotToolDrawsAnArcAndThePanelTypesItsRadius) {
   type(w, "xm [mm]", QString::number(now.p0.x() + t * (now.p1.x() - now.p0.x()), 'g', 17));
   EXPECT_EQ(serializeMechanism(doc->design()), kept);
   // Straight, then an arc again, from the panel's shape.
-  auto* shape = qobject_cast<QComboBox*>(w.properties()->field("Shape"));
+  auto* shape = qobject_cast<QComboBox*>(w.properties().panel()->field("Shape"));
   ASSERT_TRUE(shape);
   shape->activated(0);
   EXPECT_FALSE(doc->design().slots[0].arc());
-  shape = qobject_cast<QComboBox*>(w.properties()->field("Shape"));
+  shape = qobject_cast<QComboBox*>(w.properties().panel()->field("Shape"));
   ASSERT_TRUE(shape);
   shape->activated(1);
   EXPECT_TRUE(doc->design().slots[0].arc());

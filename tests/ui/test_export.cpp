@@ -15,7 +15,7 @@
 
 #include "dialogs.h"
 #include "document/document.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 #include <QDialog>
 #include <QFileDialog>
@@ -69,7 +69,7 @@ TEST(MotionTableExport, TheWindowsDialogTakesStepsPerRevolution) {
     });
     qobject_cast<QDialog*>(d)->accept();
   });
-  w.action("exportTable")->trigger();
+  w.exports().table->trigger();
   ASSERT_TRUE(options.seen && file.seen);
   const QList<QByteArray> lines = readAll(path).split('\n');
   ASSERT_EQ(lines.size(), 1 + 73 + 1);  // header, 0 ... 720 by 10 degrees, final newline

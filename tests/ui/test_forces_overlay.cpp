@@ -15,7 +15,7 @@
 #include "linkage/balance.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_samples.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 #include <QApplication>
 #include <QDockWidget>
@@ -39,7 +39,7 @@ TEST(ForcesOverlay, ReactionsAreTheSolversOnOneScaleForTheTurn) {
   Document* d = w.document();
   CanvasScene* s = w.scene();
   EXPECT_TRUE(s->dynamicsItem()->marks().reactions.empty());  // hidden: nothing computed
-  w.action("showForces")->setChecked(true);
+  w.forces().show->setChecked(true);
   ASSERT_TRUE(s->forcesVisible());
   const double scale = s->dynamicsItem()->marks().mmPerN;
   ASSERT_GT(scale, 0);
@@ -80,7 +80,7 @@ TEST(ForcesOverlay, ReactionsAreTheSolversOnOneScaleForTheTurn) {
       ++massive;
     }
   EXPECT_EQ(s->dynamicsItem()->marks().masses.size(), massive);
-  w.action("showForces")->setChecked(false);
+  w.forces().show->setChecked(false);
   EXPECT_TRUE(s->dynamicsItem()->marks().reactions.empty());
   EXPECT_TRUE(s->dynamicsItem()->marks().legend.isEmpty());
 }
@@ -116,7 +116,7 @@ TEST(ForcesOverlay, NoArrowWhereNothingIsDeterminedButASentence) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("wanzer-inversion-2-masses"));
   Document* d = w.document();
-  w.action("showForces")->setChecked(true);
+  w.forces().show->setChecked(true);
   // A pin taken out: bodies free with the crank held.
   Mechanism m = d->design();
   m.joints.erase(m.joints.begin() + 2);
@@ -133,7 +133,7 @@ TEST(ForcesOverlay, NoArrowWhereNothingIsDeterminedButASentence) {
 TEST(ForcesOverlay, TheScaleIsAOneTwoFiveStepOfNewtonsPerTenMillimetres) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("drop-feed"));
-  w.action("showForces")->setChecked(true);
+  w.forces().show->setChecked(true);
   const double perTen = 10 / w.scene()->dynamicsItem()->marks().mmPerN;
   const double decade = std::pow(10.0, std::floor(std::log10(perTen) + 1e-12));
   const double digit = perTen / decade;
@@ -155,29 +155,33 @@ TEST(ForcesOverlay, TheWindowHasTheForcesDockTheBalanceAndTheExports) {
   ASSERT_TRUE(w.openExample("slider-crank-22a-masses"));
   w.show();
   QApplication::processEvents();
-  for (const char* name :
-       {"showForces", "showForcesPanel", "balance", "exportForcesTable", "exportForcesFigure"}) {
-    QAction* a = w.action(name);
+  const ForcesFeature& f = w.forces();
+  for (auto [a, name] : {std::pair{f.show, "showForces"},
+                         {f.showPanel, "showForcesPanel"},
+                         {f.balance, "balance"},
+                         {f.exportTable, "exportForcesTable"},
+                         {f.exportFigure, "exportForcesFigure"}}) {
     ASSERT_NE(a, nullptr) << name;
+    EXPECT_EQ(a->objectName(), QString::fromLatin1(name));
     EXPECT_FALSE(a->statusTip().isEmpty()) << name;
     EXPECT_TRUE(onAMenu(w, a)) << name;
   }
-  QDockWidget* dock = w.dock("forces");
+  QDockWidget* dock = w.forces().dock;
   ASSERT_NE(dock, nullptr);
   EXPECT_FALSE(dock->isVisible());
-  w.action("showForcesPanel")->trigger();
+  w.forces().showPanel->trigger();
   QApplication::processEvents();
   EXPECT_TRUE(dock->isVisible());
   // The panel's crank requests turn this window's crank.
-  emit w.forcesPanel()->crankAngleRequested(77);
+  emit w.forces().panel()->crankAngleRequested(77);
   EXPECT_DOUBLE_EQ(w.document()->crankDeg(), 77);
   // Balance opens its dialog on this document, once.
-  w.action("balance")->trigger();
+  w.forces().balance->trigger();
   auto* dialog = w.findChild<BalanceDialog*>();
   ASSERT_NE(dialog, nullptr);
   EXPECT_TRUE(dialog->isVisible());
   dialog->close();
-  w.action("balance")->trigger();
+  w.forces().balance->trigger();
   EXPECT_EQ(w.findChildren<BalanceDialog*>().size(), 1);
 }
 

@@ -24,7 +24,7 @@ namespace linkage::ui {
 namespace {
 
 QLineEdit* fieldOf(MainWindow& w, const QString& label) {
-  return qobject_cast<QLineEdit*>(w.properties()->field(label));
+  return qobject_cast<QLineEdit*>(w.properties().panel()->field(label));
 }
 
 void type(QLineEdit* field, const QString& text) {
@@ -36,7 +36,7 @@ void type(QLineEdit* field, const QString& text) {
 }
 
 QPushButton* buttonNamed(MainWindow& w, const QString& text) {
-  for (QPushButton* b : w.properties()->findChildren<QPushButton*>())
+  for (QPushButton* b : w.properties().panel()->findChildren<QPushButton*>())
     if (b->text() == text) return b;
   return nullptr;
 }
@@ -55,7 +55,7 @@ TEST(ForcesProperties, ALinksMassIsTypedAsOneUndoStepEach) {
   Document* doc = w.document();
   const BodyId coupler = doc->design().bodyNamed("coupler")->id;
   EXPECT_FALSE(doc->design().body(coupler)->mass);
-  w.selection()->add(coupler);
+  w.tools().selection()->add(coupler);
   type(fieldOf(w, "Mass [kg]"), "0.25");
   ASSERT_TRUE(doc->design().body(coupler)->mass);
   EXPECT_EQ(doc->design().body(coupler)->mass->kg, 0.25);
@@ -83,7 +83,7 @@ TEST(ForcesProperties, TheOutlineEstimateIsTheSolversAndOneUndoStep) {
   ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
   Document* doc = w.document();
   const BodyId coupler = doc->design().bodyNamed("coupler")->id;
-  w.selection()->add(coupler);
+  w.tools().selection()->add(coupler);
   QPushButton* estimate = buttonNamed(w, "Estimate from Outline\u2026");
   ASSERT_NE(estimate, nullptr);
   Outline used;
@@ -149,7 +149,7 @@ TEST(ForcesProperties, ALoadIsAddedByTheMenuAndEditedInThePanel) {
   const Load& l = doc->design().loads[0];
   EXPECT_EQ(l.point, p);
   EXPECT_EQ(l.forceN, Vec2(0, -10));
-  EXPECT_TRUE(w.selection()->contains(p));
+  EXPECT_TRUE(w.tools().selection()->contains(p));
   type(fieldOf(w, "Load 1"), "5, -20");
   EXPECT_EQ(doc->design().loads[0].forceN, Vec2(5, -20));
   type(fieldOf(w, "Load 1 acts"), "300 to 20");

@@ -165,7 +165,7 @@ struct Monkey {
     static const char* texts[] = {"0",   "-5",     "12.5", "1e6", "1e-12", "abc",  "nan",
                                   "inf", "-1e300", "",     "7,5", "360",   "-720", "0.001"};
     std::vector<QLineEdit*> fields;
-    for (QLineEdit* e : w.properties()->findChildren<QLineEdit*>())
+    for (QLineEdit* e : w.properties().panel()->findChildren<QLineEdit*>())
       if (e->isVisible() && e->isEnabled() && !e->isReadOnly()) fields.push_back(e);
     if (fields.empty()) {
       const Vec2 p = place();

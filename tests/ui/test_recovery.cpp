@@ -19,7 +19,7 @@
 #include "document/document.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 namespace {

@@ -25,7 +25,7 @@
 #include "export/animation_export.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 namespace {
@@ -90,7 +90,7 @@ TEST(Window, UnsavedChangesPromptOnNewOpenAndClose) {
   // New, cancelled: nothing changes.
   test::DialogAnswer cancel;
   cancel.press(QMessageBox::Cancel);
-  w->action("new")->trigger();
+  w->file().newDocument->trigger();
   EXPECT_TRUE(cancel.seen);
   EXPECT_NE(cancel.text.indexOf("four-bar-crank-rocker"), -1);
   EXPECT_EQ(w->document()->design().name, "renamed");
@@ -102,7 +102,7 @@ TEST(Window, UnsavedChangesPromptOnNewOpenAndClose) {
   // New, discarding: an empty document with a ground.
   test::DialogAnswer discard;
   discard.press(QMessageBox::Discard);
-  w->action("new")->trigger();
+  w->file().newDocument->trigger();
   EXPECT_TRUE(discard.seen);
   EXPECT_EQ(w->document()->design().bodies.size(), 1u);
   EXPECT_FALSE(w->document()->isModified());
@@ -122,10 +122,10 @@ TEST(Window, UndoAndRedoRestoreTheDesignExactly) {
   editDesign(d, "Move O4", m);
   const std::string after = serializeMechanism(d->design());
   EXPECT_NE(after, before);
-  w.action("undo")->trigger();
+  w.edit().undo->trigger();
   EXPECT_EQ(serializeMechanism(d->design()), before);
   EXPECT_LT((d->kinematics().position(d->design().outputs[0]) - at).norm(), 1e-12);
-  w.action("redo")->trigger();
+  w.edit().redo->trigger();
   EXPECT_EQ(serializeMechanism(d->design()), after);
 }
 
@@ -159,7 +159,7 @@ TEST(Window, ScrubberMovesTheMechanismAndFollowsIt) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
   Document* d = w.document();
-  CrankBar* bar = w.crankBar();
+  CrankBar* bar = w.animation().crankBar();
   bar->slider()->setValue(1200);  // tenths of a degree
   EXPECT_NEAR(d->crankDeg(), 120, 1e-9);
   bar->angleBox()->setValue(725.5);  // two turns and a bit
@@ -175,37 +175,45 @@ TEST(Window, ViewOptionsAndLayoutAreRemembered) {
   QSettings().clear();
   {
     MainWindow w;
-    w.action("showGrid")->setChecked(false);
-    w.action("showCentres")->setChecked(true);
-    w.dock("centres")->hide();
+    w.view().showGrid->setChecked(false);
+    w.centres().show->setChecked(true);
+    w.centres().dock->hide();
     w.resize(1100, 760);
     w.show();
     QApplication::processEvents();
     EXPECT_TRUE(w.close());
   }
   MainWindow w;
-  EXPECT_FALSE(w.action("showGrid")->isChecked());
-  EXPECT_TRUE(w.action("showCentres")->isChecked());
+  EXPECT_FALSE(w.view().showGrid->isChecked());
+  EXPECT_TRUE(w.centres().show->isChecked());
   EXPECT_EQ(w.size(), QSize(1100, 760));
   w.show();
   QApplication::processEvents();
-  EXPECT_FALSE(w.dock("centres")->isVisible());
+  EXPECT_FALSE(w.centres().dock->isVisible());
   QSettings().clear();
 }
 
 TEST(Window, EveryActionHasAStatusTipAndTheKeysAreTheDocumented) {
   MainWindow w;
-  const std::map<QString, QString> keys{
-      {"open", "Ctrl+O"}, {"save", "Ctrl+S"},       {"saveAs", "Ctrl+Shift+S"},
-      {"play", "Space"},  {"stepForward", "Right"}, {"stepBack", "Left"},
-      {"fit", "F"},       {"showCentres", "I"},     {"undo", "Ctrl+Z"}};
-  for (const auto& [name, key] : keys) {
-    QAction* a = w.action(name);
-    ASSERT_TRUE(a) << name.toStdString();
-    EXPECT_EQ(a->shortcut().toString(), key) << name.toStdString();
+  // The typed handles are the actions of those object names (QSettings and scripts know them
+  // by these), with their documented keys.
+  const std::tuple<QAction*, const char*, const char*> keys[] = {
+      {w.file().open, "open", "Ctrl+O"},
+      {w.file().save, "save", "Ctrl+S"},
+      {w.file().saveAs, "saveAs", "Ctrl+Shift+S"},
+      {w.animation().play, "play", "Space"},
+      {w.animation().stepForward, "stepForward", "Right"},
+      {w.animation().stepBack, "stepBack", "Left"},
+      {w.view().fit, "fit", "F"},
+      {w.centres().show, "showCentres", "I"},
+      {w.edit().undo, "undo", "Ctrl+Z"}};
+  for (const auto& [a, name, key] : keys) {
+    ASSERT_TRUE(a) << name;
+    EXPECT_EQ(a->objectName(), QString::fromLatin1(name));
+    EXPECT_EQ(a->shortcut().toString(), QString::fromLatin1(key)) << name;
   }
-  EXPECT_TRUE(w.action("redo")->shortcuts().contains(QKeySequence("Ctrl+Shift+Z")));
-  EXPECT_TRUE(w.action("redo")->shortcuts().contains(QKeySequence("Ctrl+Y")));
+  EXPECT_TRUE(w.edit().redo->shortcuts().contains(QKeySequence("Ctrl+Shift+Z")));
+  EXPECT_TRUE(w.edit().redo->shortcuts().contains(QKeySequence("Ctrl+Y")));
   for (QAction* a : w.findChildren<QAction*>())
     if (!a->objectName().isEmpty() && !a->isSeparator() && !a->menu())
       EXPECT_FALSE(a->statusTip().isEmpty()) << a->objectName().toStdString();
@@ -226,11 +234,11 @@ TEST(Window, AnimationFramesShowTheMechanismAtEachAngle) {
   w.show();
   QApplication::processEvents();
   const double zoom = w.canvas()->zoom();
-  const QImage a = w.renderFrame(0, QSize(320, 240));
-  const QImage b = w.renderFrame(90, QSize(320, 240));
+  const QImage a = w.exports().renderFrame(0, QSize(320, 240));
+  const QImage b = w.exports().renderFrame(90, QSize(320, 240));
   EXPECT_EQ(a.size(), QSize(320, 240));
   EXPECT_NE(a, b);
-  EXPECT_EQ(a, w.renderFrame(0, QSize(320, 240)));  // the same angle, the same picture
+  EXPECT_EQ(a, w.exports().renderFrame(0, QSize(320, 240)));  // the same angle, the same picture
   shot(&w, "animation-window");
   a.save(QString::fromLocal8Bit(qgetenv("LINKAGE_TEST_SHOTS")) + "/frame-0.png");
   QTemporaryDir dir;
@@ -240,9 +248,9 @@ TEST(Window, AnimationFramesShowTheMechanismAtEachAngle) {
   spec.frames = 12;
   QString why;
   ASSERT_TRUE(exportAnimation(
-      spec, [&](double deg, QSize s) { return w.renderFrame(deg, s); }, &why))
+      spec, [&](double deg, QSize s) { return w.exports().renderFrame(deg, s); }, &why))
       << why.toStdString();
-  w.endFrames();
+  w.exports().endFrames();
   EXPECT_NEAR(w.canvas()->zoom(), zoom, 1e-12);
   EXPECT_NEAR(w.scene()->pixelSize(), 1 / zoom, 1e-12);
   QImageReader gif(spec.path);

@@ -130,6 +130,12 @@ Tool* Toolbox::switchTo(const QString& name) {
   return current_;
 }
 
+QAction* Toolbox::toolAction(const QString& name) const {
+  for (QAction* a : actions_)
+    if (a->data().toString() == name) return a;
+  return nullptr;
+}
+
 void Toolbox::setTool(const QString& name) {
   for (size_t i = 0; i < actions_.size(); ++i)
     if (actions_[i]->data().toString() == name) {

@@ -24,6 +24,9 @@ class Toolbox : public QObject {
 
   // The tool actions in toolbar order (objectName "tool:select", "tool:link", ...).
   const std::vector<QAction*>& toolActions() const { return actions_; }
+  // A tool's action by the tool's name ("select", "link", ...; the element kinds' tools come
+  // from a table, ui/elements/), or nullptr.
+  QAction* toolAction(const QString& name) const;
   QAction* deleteAction() const { return delete_; }
   QAction* flipAction() const { return flip_; }
   QAction* snapAction() const { return snap_; }

@@ -1,43 +1,50 @@
-// One window per open document: the canvas in the middle; docks for the properties
-// (inspector), the instant centres and the plots; the file, view and animation actions in menus
-// and toolbars (each with its shortcut and status tip); the crank scrubber; the status bar with
-// the cursor position, the crank angle and the degrees of freedom. Several windows can be open
-// at once (File > New Window), so that two inversions can be compared side by side.
+// One window per open document: the canvas in the middle, the status bar under it, and around
+// them the window's features, each a class of its own (ui/window/*_feature.h) that makes its
+// actions (shortcut, status tip), puts them in the menus and toolbars, adds its docks, and
+// keeps typed handles to them: `w.centres().show`, `w.animation().play`, `w.forces().dock`.
+// Several windows can be open at once (File > New Window), to compare two inversions.
+//
+// A new feature (a dock, its actions) plugs in like the others:
+//  1. ui/window/<name>_feature.h/.cpp: a WindowFeature subclass whose constructor takes
+//     (MainWindow&, WindowLayout&), makes its widgets and actions (makeAction, addDock,
+//     raisingToggle in window_feature.h) and places them with layout.add(Slot::..., action);
+//     it overrides applyIcons/readSettings/writeSettings if it has icons or settings.
+//  2. window_layout.h: a Slot for each menu or toolbar entry, where in the order it goes.
+//  3. Here: a forward declaration, an accessor, a member; in main_window.cpp one line in
+//     createFeatures() (after the features it tabifies its dock with).
+// Code written as MainWindow members before (a main_window_cycle.cpp) moves over as:
+// makeAction(name, ...) -> makeAction(&w, name, ...); dock("plots") -> w.plots().dock;
+// action("play") -> w.animation().play; menus and toolbars -> layout.add(Slot::..., action).
 #pragma once
 
 #include <QMainWindow>
-#include <QPointer>
-#include <memory>
+#include <vector>
 
-class QDockWidget;
 class QFileSystemWatcher;
 class QLabel;
-class QMenu;
-class QUndoView;
 
 namespace linkage::ui {
 
+class AnimationFeature;
 class Animator;
 class Autosaver;
-struct Recovery;
 class CanvasScene;
 class CanvasView;
-class CentresPanel;
-class ChecksPanel;
-class CrankBar;
-class DesignChoices;
-class DesignOverlays;
+class CentresFeature;
+class DesignFeature;
 class Document;
-class InspectorPanel;
+class EditFeature;
+class ExportFeature;
+class FileFeature;
+class ForcesFeature;
 class MessageStrip;
-class PropertiesPanel;
-class PlotsPanel;
-class Selection;
-class StudyDialog;
-class ForcesPanel;
-class BalanceDialog;
-class ToolOverlay;
-class Toolbox;
+class PlotsFeature;
+class PropertiesFeature;
+struct Recovery;
+class ToolsFeature;
+class ViewFeature;
+class WindowFeature;
+class WindowLayout;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -50,31 +57,29 @@ class MainWindow : public QMainWindow {
   CanvasView* canvas() const { return view_; }
   CanvasScene* scene() const { return scene_; }
   Animator* animator() const { return animator_; }
-  CentresPanel* centresPanel() const { return centres_; }
-  InspectorPanel* inspector() const { return inspector_; }
-  PropertiesPanel* properties() const { return properties_; }
-  PlotsPanel* plots() const { return plots_; }
-  ForcesPanel* forcesPanel() const { return forces_; }
-  CrankBar* crankBar() const { return crankBar_; }
-  Toolbox* toolbox() const { return toolbox_; }
-  Selection* selection() const { return selection_; }
-  DesignChoices* designChoices() const { return choices_; }
-  DesignOverlays* designOverlays() const { return designOverlays_; }
-  ChecksPanel* checksPanel() const { return checks_; }
   Autosaver* autosaver() const { return autosave_; }
-  // Opens a recovered copy of unsaved work (document/autosave.h): as an unsaved edit of its
-  // file, one undo step back to what the file holds.
-  void openRecovered(const Recovery& r);
   // Under the canvas: the tool's hint, what is wrong with the design, the last message.
   MessageStrip* messageStrip() const { return strip_; }
-  // The parameter-study dialog, made on first use (Analysis > Parameter Study).
-  StudyDialog* studyDialog();
-  QDockWidget* dock(const QString& objectName) const;
-  // An action by its object name ("play", "open", "showCentres", ...), for tests and scripts.
-  QAction* action(const QString& objectName) const;
+
+  // The features, in the order they are made.
+  FileFeature& file() const { return *file_; }
+  ToolsFeature& tools() const { return *tools_; }
+  ViewFeature& view() const { return *viewFeature_; }
+  AnimationFeature& animation() const { return *animation_; }
+  PropertiesFeature& properties() const { return *properties_; }
+  CentresFeature& centres() const { return *centres_; }
+  PlotsFeature& plots() const { return *plots_; }
+  EditFeature& edit() const { return *edit_; }
+  DesignFeature& designChecks() const { return *design_; }
+  ExportFeature& exports() const { return *exports_; }
+  ForcesFeature& forces() const { return *forces_; }
+
   // Every open main window.
   static QList<MainWindow*> windows();
 
+  // Opens a recovered copy of unsaved work (document/autosave.h): as an unsaved edit of its
+  // file, one undo step back to what the file holds.
+  void openRecovered(const Recovery& r);
   // Opens a file in this window; on failure shows the reader's message in a dialog (unless
   // `error` is given, then it is returned there) and leaves the document as it was. No prompt
   // for unsaved changes here: callers ask first (maybeSave).
@@ -91,10 +96,6 @@ class MainWindow : public QMainWindow {
   void fileChangedOnDisk();
   // Asks what to do with unsaved changes; true when it is all right to go on.
   bool maybeSave();
-  // One frame of the animation as File > Export > Animation writes it: the mechanism at a crank
-  // angle, fitted to its motion, at `size`; endFrames() when done.
-  QImage renderFrame(double deg, QSize size);
-  void endFrames();
   bool save();
   bool saveAs();
 
@@ -105,68 +106,47 @@ class MainWindow : public QMainWindow {
   void changeEvent(QEvent* e) override;
 
  private:
-  void createActions();  // main_window_actions.cpp, by menu
-  void createFileActions();
-  void createEditActions();
-  void createViewActions();
-  void createOverlayActions();
-  void createAnimationActions();
-  void createTools();
-  void createMenus();
-  void createToolBars();
-  void createDocks();
+  void createFeatures();
+  // The default layout of the docks (a saved one replaces it).
+  void arrangeDocks();
   void createStatusBar();
-  void createDesignChecks();  // main_window_design.cpp
-  QMenu* addAnalysisMenu();
-  void createForces();  // main_window_forces.cpp
-  void addForcesMenuEntries(QMenu* analysis, QMenu* exports);
   void connectDocument();
-  QAction* makeAction(const QString& name, const QString& text, const QKeySequence& key,
-                      const QString& tip);
   // Watches the document's file; what it holds now is taken as ours (opened or saved here).
   void watchFile();
-  void fillRecentMenu();
-  void fillExamplesMenu();
-  void addRecent(const QString& path);
   void updateTitle();
   void updateStatus();
   // What the solver says of the design: why it cannot take it, or the joints that are
   // redundant and the bodies that are free.
   void showDesignStatus();
-  void updateWork();
   void showMessage(const QString& text, bool warning);
   void readSettings();
   void writeSettings() const;
-  void setDarkPalette(bool on);
   // Toolbar and menu icons in the palette's colours.
   void applyIcons();
-  // File > Export: the motion table, the plots' figure, the animation.
-  void exportMotionTable();
-  void exportFigure();
-  void exportAnimation();
   // Every window's plots compare with the other windows' documents.
   static void updateComparisons();
+  template <class Feature>
+  Feature* add(Feature*& member);
 
   Document* doc_;
   CanvasScene* scene_;
   CanvasView* view_;
   Animator* animator_;
-  CrankBar* crankBar_ = nullptr;
-  CentresPanel* centres_ = nullptr;
-  InspectorPanel* inspector_ = nullptr;
-  PropertiesPanel* properties_ = nullptr;
-  PlotsPanel* plots_ = nullptr;
-  QUndoView* history_ = nullptr;
-  Selection* selection_ = nullptr;
-  ToolOverlay* overlay_ = nullptr;
-  Toolbox* toolbox_ = nullptr;
-  bool propertiesSeen_ = false;
-  std::unique_ptr<CanvasScene> frameScene_;
-  std::unique_ptr<CanvasView> frameView_;
-  QMenu* recentMenu_ = nullptr;
-  QMenu* examplesMenu_ = nullptr;
   MessageStrip* strip_ = nullptr;
   Autosaver* autosave_ = nullptr;
+  WindowLayout* layout_ = nullptr;
+  std::vector<WindowFeature*> features_;
+  FileFeature* file_ = nullptr;
+  ToolsFeature* tools_ = nullptr;
+  ViewFeature* viewFeature_ = nullptr;
+  AnimationFeature* animation_ = nullptr;
+  PropertiesFeature* properties_ = nullptr;
+  CentresFeature* centres_ = nullptr;
+  PlotsFeature* plots_ = nullptr;
+  EditFeature* edit_ = nullptr;
+  DesignFeature* design_ = nullptr;
+  ExportFeature* exports_ = nullptr;
+  ForcesFeature* forces_ = nullptr;
   QFileSystemWatcher* watcher_ = nullptr;
   QString watched_;
   QByteArray onDisk_;    // the file's contents as this window last read or wrote them
@@ -174,12 +154,6 @@ class MainWindow : public QMainWindow {
   QLabel* cursor_ = nullptr;
   QLabel* crank_ = nullptr;
   QLabel* dof_ = nullptr;
-  DesignChoices* choices_ = nullptr;
-  DesignOverlays* designOverlays_ = nullptr;
-  ChecksPanel* checks_ = nullptr;
-  StudyDialog* study_ = nullptr;
-  ForcesPanel* forces_ = nullptr;
-  BalanceDialog* balance_ = nullptr;
 };
 
 }  // namespace linkage::ui

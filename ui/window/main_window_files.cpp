@@ -1,13 +1,11 @@
-// Opening and saving: files, examples, recent files, drops; the prompt for unsaved changes.
-#include <QAction>
+// Opening and saving: files, examples, recovered work; the watch on the file; the prompt for
+// unsaved changes.
 #include <QApplication>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFileSystemWatcher>
-#include <QMenu>
 #include <QMessageBox>
-#include <QSettings>
 #include <QTimer>
 
 #include "canvas/canvas_view.h"
@@ -16,15 +14,11 @@
 #include "document/document.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
+#include "window/file_feature.h"
 #include "window/main_window.h"
+#include "window/message_strip.h"
 
 namespace linkage::ui {
-
-namespace {
-constexpr int kMaxRecent = 10;
-const char* kRecentKey = "recentFiles";
-const char* kLastFolderKey = "lastFolder";
-}  // namespace
 
 bool MainWindow::openFile(const QString& path, QString* error) {
   QString why;
@@ -35,7 +29,7 @@ bool MainWindow::openFile(const QString& path, QString* error) {
       QMessageBox::critical(this, tr("Cannot Open"), why);
     return false;
   }
-  addRecent(QFileInfo(path).absoluteFilePath());
+  FileFeature::addRecent(QFileInfo(path).absoluteFilePath());
   watchFile();
   view_->fitToMechanism();
   return true;
@@ -163,56 +157,15 @@ bool MainWindow::saveAs() {
     QMessageBox::critical(this, tr("Cannot Save"), why);
     return false;
   }
-  addRecent(QFileInfo(path).absoluteFilePath());
+  FileFeature::addRecent(QFileInfo(path).absoluteFilePath());
   watchFile();
   return true;
 }
 
 QString MainWindow::fileFolder() const {
   if (!doc_->filePath().isEmpty()) return QFileInfo(doc_->filePath()).absolutePath();
-  const QString last = QSettings().value(kLastFolderKey).toString();
+  const QString last = FileFeature::lastFolder();
   return !last.isEmpty() && QFileInfo(last).isDir() ? last : QDir::homePath();
-}
-
-void MainWindow::addRecent(const QString& path) {
-  QSettings s;
-  s.setValue(kLastFolderKey, QFileInfo(path).absolutePath());
-  QStringList files = s.value(kRecentKey).toStringList();
-  files.removeAll(path);
-  files.prepend(path);
-  while (files.size() > kMaxRecent) files.removeLast();
-  s.setValue(kRecentKey, files);
-}
-
-void MainWindow::fillRecentMenu() {
-  recentMenu_->clear();
-  const QStringList files = QSettings().value(kRecentKey).toStringList();
-  for (const QString& f : files) {
-    QAction* a = recentMenu_->addAction(QFileInfo(f).fileName());
-    a->setStatusTip(f);
-    a->setEnabled(QFileInfo::exists(f));
-    connect(a, &QAction::triggered, this, [this, f] {
-      if (maybeSave()) openFile(f);
-    });
-  }
-  if (files.isEmpty()) recentMenu_->addAction(tr("(none)"))->setEnabled(false);
-  recentMenu_->addSeparator();
-  connect(recentMenu_->addAction(tr("Clear List")), &QAction::triggered, this,
-          [] { QSettings().remove(kRecentKey); });
-}
-
-void MainWindow::fillExamplesMenu() {
-  examplesMenu_->clear();
-  for (const std::string& name : listExamples(QApplication::applicationFilePath().toStdString())) {
-    const QString n = QString::fromStdString(name);
-    QAction* a = examplesMenu_->addAction(n);
-    a->setObjectName(QStringLiteral("example:") + n);
-    a->setStatusTip(tr("Open the example %1").arg(n));
-    connect(a, &QAction::triggered, this, [this, n] {
-      if (maybeSave()) openExample(n);
-    });
-  }
-  if (examplesMenu_->isEmpty()) examplesMenu_->addAction(tr("(none found)"))->setEnabled(false);
 }
 
 }  // namespace linkage::ui

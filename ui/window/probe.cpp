@@ -22,7 +22,7 @@
 #include "plots/plots_panel.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
-#include "window/main_window.h"
+#include "window/features.h"
 
 namespace linkage::ui {
 
@@ -67,26 +67,26 @@ void windowText(MainWindow* w, QStringList& out) {
   for (const char* name : {"hint", "problem", "message"})
     if (auto* l = w->findChild<QLabel*>(QString::fromLatin1(name)))
       out << QString::fromLatin1(name) + ": " + (l->isVisible() ? oneLine(l->text()) : QString());
-  out << QStringLiteral("inspector: ") + plain(w->inspector()->summaryText());
-  const QTableWidget* t = w->inspector()->motionTable();
+  out << QStringLiteral("inspector: ") + plain(w->properties().inspector()->summaryText());
+  const QTableWidget* t = w->properties().inspector()->motionTable();
   for (int r = 0; r < t->rowCount(); ++r) {
     QStringList cells;
     for (int c = 0; c < t->columnCount(); ++c)
       cells << (t->item(r, c) ? t->item(r, c)->text() : "");
     out << QStringLiteral("output: ") + cells.join(QStringLiteral(" | "));
   }
-  out << QStringLiteral("outputs note: ") + oneLine(w->inspector()->noteText());
-  out << QStringLiteral("chain: ") + oneLine(w->centresPanel()->stepsText());
-  out << QStringLiteral("plots: ") + oneLine(w->plots()->cursorText());
+  out << QStringLiteral("outputs note: ") + oneLine(w->properties().inspector()->noteText());
+  out << QStringLiteral("chain: ") + oneLine(w->centres().panel()->stepsText());
+  out << QStringLiteral("plots: ") + oneLine(w->plots().panel()->cursorText());
   const DynamicsMarks& forces = w->scene()->dynamicsItem()->marks();
   out << QStringLiteral("forces: ") + forces.legend;
   out << QStringLiteral("dynamics: masses %1 loads %2 reactions %3")
              .arg(forces.masses.size())
              .arg(forces.loads.size())
              .arg(forces.reactions.size());
-  out << QStringLiteral("properties: ") + plain(w->properties()->title());
-  for (QLineEdit* e : w->properties()->findChildren<QLineEdit*>()) {
-    const QString label = w->properties()->labelOf(e);
+  out << QStringLiteral("properties: ") + plain(w->properties().panel()->title());
+  for (QLineEdit* e : w->properties().panel()->findChildren<QLineEdit*>()) {
+    const QString label = w->properties().panel()->labelOf(e);
     const QPoint c = e->mapToGlobal(e->rect().center());
     out << QStringLiteral("field %1: %2").arg(label, e->text());
     out << QStringLiteral("at field %1: %2 %3").arg(label).arg(c.x()).arg(c.y());
