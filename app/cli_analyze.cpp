@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli_common.h"
+#include "cli_parser.h"
 #include "linkage/io/numbers.h"
 #include "linkage/tables/motion_table.h"
 
@@ -41,45 +42,25 @@ struct Options {
   std::vector<std::string> points;
   MotionTableSpec spec;  // steps, revs, rpm (points later)
   std::optional<double> angle;
-  bool sweepOptions = false;  // --steps or --revs given
+  const CLI::Option *steps = nullptr, *revs = nullptr;  // given: a sweep, not one --angle
 };
 
-// The options, checked against each other; the exit status when they cannot be used.
-std::optional<int> readOptions(int argc, char** argv, Options& o) {
-  Arguments args("analyze", kHelp);
-  args.value("--steps",
-             [&](const std::string& a, const std::string& v) {
-               const std::optional<long long> n = wholeNumber(a, v);
-               if (n && *n < 1) error("--steps: must be at least 1");
-               if (!n || *n < 1) return false;
-               o.spec.steps = *n;
-               return o.sweepOptions = true;
-             })
-      .value("--revs",
-             [&](const std::string& a, const std::string& v) {
-               const std::optional<double> r = positiveNumber(a, v);
-               if (r) o.spec.revs = *r;
-               return r && (o.sweepOptions = true);
-             })
-      .value("--rpm",
-             [&](const std::string& a, const std::string& v) {
-               const std::optional<double> r = positiveNumber(a, v);
-               if (r) o.spec.rpm = *r;
-               return r.has_value();
-             })
-      .value("--angle", [&](const std::string& a,
-                            const std::string& v) { return (o.angle = number(a, v)).has_value(); })
-      .value("--point",
-             [&](const std::string&, const std::string& v) {
-               o.points.push_back(v);
-               return true;
-             })
-      .value("--out", [&](const std::string&, const std::string& v) {
-        o.out = v;
-        return true;
-      });
-  if (std::optional<int> e = args.read(argc, argv, o.model)) return e;
-  if (o.angle && o.sweepOptions) {
+// The options, read into `o`.
+CLI::App* addOptions(Parser& parser, Options& o) {
+  CLI::App& c = parser.command("analyze", kHelp);
+  addModel(c, o.model);
+  o.steps = addWhole(c, "--steps", o.spec.steps, 1);
+  o.revs = addNumber(c, "--revs", o.spec.revs, NumberRule::Positive);
+  addNumber(c, "--rpm", o.spec.rpm, NumberRule::Positive);
+  addNumber(c, "--angle", o.angle);
+  addTexts(c, "--point", o.points);
+  addText(c, "--out", o.out);
+  return &c;
+}
+
+// The options checked against each other; the exit status when they cannot be used.
+std::optional<int> checkOptions(const Options& o) {
+  if (o.angle && count(o.steps) + count(o.revs) > 0) {
     error("analyze: --angle gives one row; it cannot be combined with --steps or --revs");
     return kBadInput;
   }
@@ -120,11 +101,8 @@ int writeTable(Kinematics& k, const Options& o, Status& s) {
   return writeOutput(o.out, buffer);
 }
 
-}  // namespace
-
-int analyze(int argc, char** argv) {
-  Options o;
-  if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
+int analyze(Options& o) {
+  if (std::optional<int> e = checkOptions(o)) return *e;
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   std::optional<std::vector<PointId>> ids = outputPoints(*m, o.points);
@@ -144,6 +122,13 @@ int analyze(int argc, char** argv) {
     return exitFor(s);
   }
   return kOk;
+}
+
+}  // namespace
+
+Command analyzeCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  return {addOptions(parser, *o), [o] { return analyze(*o); }};
 }
 
 }  // namespace linkage::cli

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli_common.h"
+#include "cli_parser.h"
 #include "linkage/balance.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
@@ -43,59 +44,31 @@ mechanism cannot turn through the cycle.
 )";
 
 struct Options {
-  std::string model, out;
+  std::string model, out, measure;
   std::vector<std::string> bodies;
-  std::optional<BalanceMeasure> measure;
   BalanceOptions balance;
 };
 
-std::optional<int> readOptions(int argc, char** argv, Options& o) {
-  Arguments args("balance", kHelp);
-  args.value("--counterweight",
-             [&](const std::string&, const std::string& v) {
-               o.bodies.push_back(v);
-               return true;
-             })
-      .value("--minimize",
-             [&](const std::string&, const std::string& v) {
-               if (v == "fx") o.measure = BalanceMeasure::Fx;
-               if (v == "fy") o.measure = BalanceMeasure::Fy;
-               if (v == "force") o.measure = BalanceMeasure::Force;
-               if (!o.measure) error("--minimize: expected fx, fy or force, got '" + v + "'");
-               return o.measure.has_value();
-             })
-      .value("--max-kgmm",
-             [&](const std::string& a, const std::string& v) {
-               const std::optional<double> m = positiveNumber(a, v);
-               if (m) o.balance.maxKgMm = *m;
-               return m.has_value();
-             })
-      .value("--steps",
-             [&](const std::string& a, const std::string& v) {
-               const std::optional<long long> n = wholeNumber(a, v);
-               if (n && (*n < 8 || *n > 1'000'000)) error("--steps: from 8 to 1000000");
-               if (n && *n >= 8 && *n <= 1'000'000) o.balance.steps = static_cast<int>(*n);
-               return n && *n >= 8 && *n <= 1'000'000;
-             })
-      .value("--out", [&](const std::string&, const std::string& v) {
-        o.out = v;
-        return true;
-      });
-  if (std::optional<int> e = args.read(argc, argv, o.model)) return e;
-  if (o.bodies.empty() || !o.measure) {
-    error(std::string("balance: ") +
-          (o.bodies.empty() ? "no --counterweight BODY given" : "no --minimize fx|fy|force given"));
-    return kBadInput;
-  }
-  o.balance.measure = *o.measure;
-  return std::nullopt;
+// The options, read into `o`.
+CLI::App* addOptions(Parser& parser, Options& o) {
+  CLI::App& c = parser.command("balance", kHelp);
+  addModel(c, o.model);
+  required(addTexts(c, "--counterweight", o.bodies));
+  required(addWord(c, "--minimize", o.measure, {"fx", "fy", "force"}));
+  addNumber(c, "--max-kgmm", o.balance.maxKgMm, NumberRule::Positive);
+  addWhole(c, "--steps", o.balance.steps, 8, 1'000'000);
+  addText(c, "--out", o.out);
+  return &c;
 }
 
-}  // namespace
+BalanceMeasure measureNamed(const std::string& name) {
+  if (name == "fx") return BalanceMeasure::Fx;
+  if (name == "fy") return BalanceMeasure::Fy;
+  return BalanceMeasure::Force;
+}
 
-int balance(int argc, char** argv) {
-  Options o;
-  if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
+int balance(Options& o) {
+  o.balance.measure = measureNamed(o.measure);
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   for (const std::string& name : o.bodies) {
@@ -133,6 +106,13 @@ int balance(int argc, char** argv) {
     }
   }
   return kOk;
+}
+
+}  // namespace
+
+Command balanceCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  return {addOptions(parser, *o), [o] { return balance(*o); }};
 }
 
 }  // namespace linkage::cli

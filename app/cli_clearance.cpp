@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "cli_common.h"
-#include "design_options.h"
+#include "cli_parser.h"
 #include "linkage/clearance.h"
 #include "linkage/io/numbers.h"
 
@@ -47,64 +47,33 @@ std::optional<ClearanceItem> item(const Mechanism& m, const std::string& text) {
 
 struct Options {
   std::string model;
-  std::vector<std::string> between;
+  std::pair<std::string, std::string> between;
   std::optional<double> min;
-  long long steps = 360;
+  int steps = 360;
 };
 
-// Reads argv into o; kOk to go on, else the exit status.
-std::optional<int> readOptions(int argc, char** argv, Options& o) {
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (isHelp(a)) {
-      std::cout << kHelp;
-      return kOk;
-    }
-    if (a == "--between") {
-      if (i + 2 >= argc) {
-        error("--between: needs two values, A B");
-        return kBadInput;
-      }
-      o.between = {argv[i + 1], argv[i + 2]};
-      i += 2;
-    } else if (a == "--min" || a == "--steps") {
-      std::optional<std::string> v = optionValue(argc, argv, i);
-      if (!v) return kBadInput;
-      if (a == "--min") {
-        if (!(o.min = number(a, *v))) return kBadInput;
-      } else {
-        std::optional<long long> n = wholeNumberIn(a, *v, 4, 1'000'000);
-        if (!n) return kBadInput;
-        o.steps = *n;
-      }
-    } else if (!modelArgument("clearance", a, o.model)) {
-      return kBadInput;
-    }
-  }
-  if (!modelGiven("clearance", o.model)) return kBadInput;
-  if (o.between.empty()) {
-    error("clearance: give --between A B");
-    return kBadInput;
-  }
-  return std::nullopt;
+// The options, read into `o`.
+CLI::App* addOptions(Parser& parser, Options& o) {
+  CLI::App& c = parser.command("clearance", kHelp);
+  addModel(c, o.model);
+  required(addTextPair(c, "--between", o.between, "A B"));
+  addNumber(c, "--min", o.min);
+  addWhole(c, "--steps", o.steps, 4, 1'000'000);
+  return &c;
 }
 
-}  // namespace
-
-int clearance(int argc, char** argv) {
-  Options o;
-  if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
+int clearance(const Options& o) {
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
-  const std::optional<ClearanceItem> a = item(*m, o.between[0]), b = item(*m, o.between[1]);
+  const std::optional<ClearanceItem> a = item(*m, o.between.first), b = item(*m, o.between.second);
   if (!a || !b) return kBadInput;
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;
   ClearanceOptions opt;
-  opt.steps = static_cast<int>(o.steps);
+  opt.steps = o.steps;
   const Clearance c = findClearance(k, *a, *b, opt);
   if (!c.status.ok()) {
-    error("--between " + o.between[0] + " " + o.between[1] + ": " + c.status.message);
+    error("--between " + o.between.first + " " + o.between.second + ": " + c.status.message);
     return exitFor(c.status);
   }
   std::string out = "event,crank_deg,distance_mm\n";
@@ -121,6 +90,13 @@ int clearance(int argc, char** argv) {
     return kTooClose;
   }
   return kOk;
+}
+
+}  // namespace
+
+Command clearanceCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  return {addOptions(parser, *o), [o] { return clearance(*o); }};
 }
 
 }  // namespace linkage::cli

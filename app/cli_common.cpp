@@ -1,15 +1,11 @@
 #include "cli_common.h"
 
-#include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 
 #include "linkage/io/atomic_file.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
-#include "linkage/io/numbers.h"
 
 namespace linkage::cli {
 
@@ -33,32 +29,6 @@ void error(const std::string& message) {
 }
 void note(const std::string& message) {
   std::cerr << "linkage-cli: note: " << message << "\n";
-}
-
-std::optional<double> number(const std::string& option, const std::string& text) {
-  std::optional<double> v = parseNumber(text);
-  if (!v) error(option + ": \"" + text + "\" is not a number");
-  return v;
-}
-
-std::optional<double> positiveNumber(const std::string& option, const std::string& text) {
-  std::optional<double> v = number(option, text);
-  if (v && !(*v > 0)) {
-    error(option + ": must be positive, got " + text);
-    return std::nullopt;
-  }
-  return v;
-}
-
-std::optional<long long> wholeNumber(const std::string& option, const std::string& text) {
-  long long v = 0;
-  const char* end = text.data() + text.size();
-  auto [p, ec] = std::from_chars(text.data(), end, v);
-  if (ec != std::errc() || p != end) {
-    error(option + ": \"" + text + "\" is not a whole number");
-    return std::nullopt;
-  }
-  return v;
 }
 
 std::optional<Mechanism> openModel(const std::string& nameOrPath) {
@@ -139,55 +109,6 @@ std::optional<std::vector<PointId>> outputPoints(const Mechanism& m,
     ids.push_back(*id);
   }
   return ids;
-}
-
-bool isHelp(const std::string& arg) {
-  return arg == "--help" || arg == "-h";
-}
-
-Arguments& Arguments::value(std::string option, Reader read) {
-  values_.emplace_back(std::move(option), std::move(read));
-  return *this;
-}
-
-Arguments& Arguments::flag(std::string option, bool& on) {
-  flags_.emplace_back(std::move(option), &on);
-  return *this;
-}
-
-std::optional<int> Arguments::read(int argc, char** argv, std::string& model) const {
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (isHelp(a)) {
-      std::cout << help_;
-      return kOk;
-    }
-    auto value =
-        std::find_if(values_.begin(), values_.end(), [&](auto& v) { return v.first == a; });
-    auto flag = std::find_if(flags_.begin(), flags_.end(), [&](auto& f) { return f.first == a; });
-    if (value != values_.end()) {
-      if (i + 1 >= argc) {
-        error(a + ": needs a value");
-        return kBadInput;
-      }
-      if (!value->second(a, argv[++i])) return kBadInput;
-    } else if (flag != flags_.end()) {
-      *flag->second = true;
-    } else if (!a.empty() && a[0] == '-' && a != "-") {
-      error(command_ + ": unknown option " + a + " (see linkage-cli " + command_ + " --help)");
-      return kBadInput;
-    } else if (model.empty()) {
-      model = a;
-    } else {
-      error(command_ + ": more than one MODEL given: " + model + ", " + a);
-      return kBadInput;
-    }
-  }
-  if (model.empty()) {
-    error(command_ + ": no MODEL given (see linkage-cli " + command_ + " --help)");
-    return kBadInput;
-  }
-  return std::nullopt;
 }
 
 }  // namespace linkage::cli

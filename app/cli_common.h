@@ -1,7 +1,7 @@
-// Pieces every linkage-cli command shares: exit codes, option parsing, opening a model.
+// Pieces every linkage-cli command shares: exit codes, messages, opening a model, writing out.
+// (Options are read by cli_parser.h.)
 #pragma once
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,11 +25,6 @@ extern std::string executablePath;
 void error(const std::string& message);
 void note(const std::string& message);
 
-// Strict, locale-independent number parsing for options; prints the error itself.
-std::optional<double> number(const std::string& option, const std::string& text);
-std::optional<double> positiveNumber(const std::string& option, const std::string& text);
-std::optional<long long> wholeNumber(const std::string& option, const std::string& text);
-
 // Loads MODEL (a path or an example name); prints the error and returns nullopt on failure.
 std::optional<Mechanism> openModel(const std::string& nameOrPath);
 
@@ -48,28 +43,5 @@ int prepare(Kinematics& k, const Mechanism& m);
 // Resolves --point arguments (or the file's outputs when none); prints the error itself.
 std::optional<std::vector<PointId>> outputPoints(const Mechanism& m,
                                                  const std::vector<std::string>& asked);
-
-bool isHelp(const std::string& arg);
-
-// The arguments of one command, read in order as every command reads them: -h or --help prints
-// the help; an option with a value hands it to its reader (which prints its own error and
-// returns false); a flag is set; any other argument starting with '-' (but "-" itself) is an
-// unknown option; the first other argument is MODEL, a second one an error, none an error.
-class Arguments {
- public:
-  using Reader = std::function<bool(const std::string& option, const std::string& value)>;
-  Arguments(std::string command, const char* help) : command_(std::move(command)), help_(help) {}
-  Arguments& value(std::string option, Reader read);
-  Arguments& flag(std::string option, bool& on);
-  // Reads argv into the readers and `model`: nullopt to go on, else the exit status to return
-  // (kOk after the help, kBadInput after an error, printed).
-  std::optional<int> read(int argc, char** argv, std::string& model) const;
-
- private:
-  std::string command_;
-  const char* help_;
-  std::vector<std::pair<std::string, Reader>> values_;
-  std::vector<std::pair<std::string, bool*>> flags_;
-};
 
 }  // namespace linkage::cli

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli_common.h"
+#include "cli_parser.h"
 #include "linkage/dynamics.h"
 #include "linkage/elements.h"
 #include "linkage/io/numbers.h"
@@ -47,32 +48,18 @@ struct Options {
   double revs = 1, rpm = 0;
 };
 
-std::optional<int> readOptions(int argc, char** argv, Options& o) {
-  Arguments args("dynamics", kHelp);
-  args.value("--steps",
-             [&](const std::string& a, const std::string& v) {
-               const std::optional<long long> n = wholeNumber(a, v);
-               if (n && *n < 1) error("--steps: must be at least 1");
-               if (n && *n >= 1) o.steps = *n;
-               return n && *n >= 1;
-             })
-      .value("--revs",
-             [&](const std::string& a, const std::string& v) {
-               const std::optional<double> r = positiveNumber(a, v);
-               if (r) o.revs = *r;
-               return r.has_value();
-             })
-      .value("--rpm",
-             [&](const std::string& a, const std::string& v) {
-               const std::optional<double> r = positiveNumber(a, v);
-               if (r) o.rpm = *r;
-               return r.has_value();
-             })
-      .value("--out", [&](const std::string&, const std::string& v) {
-        o.out = v;
-        return true;
-      });
-  if (std::optional<int> e = args.read(argc, argv, o.model)) return e;
+// The options, read into `o`.
+CLI::App* addOptions(Parser& parser, Options& o) {
+  CLI::App& c = parser.command("dynamics", kHelp);
+  addModel(c, o.model);
+  addWhole(c, "--steps", o.steps, 1);
+  addNumber(c, "--revs", o.revs, NumberRule::Positive);
+  addNumber(c, "--rpm", o.rpm, NumberRule::Positive);
+  addText(c, "--out", o.out);
+  return &c;
+}
+
+std::optional<int> checkOptions(const Options& o) {
   const double rows = o.steps * o.revs;
   if (std::abs(rows - std::round(rows)) > 1e-9 * rows || rows > 5e7) {
     error("dynamics: --steps " + std::to_string(o.steps) + " times --revs " + formatNumber(o.revs) +
@@ -82,11 +69,8 @@ std::optional<int> readOptions(int argc, char** argv, Options& o) {
   return std::nullopt;
 }
 
-}  // namespace
-
-int dynamics(int argc, char** argv) {
-  Options o;
-  if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
+int dynamics(const Options& o) {
+  if (std::optional<int> e = checkOptions(o)) return *e;
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   Kinematics k;
@@ -133,6 +117,13 @@ int dynamics(int argc, char** argv) {
     return exitFor(s);
   }
   return kOk;
+}
+
+}  // namespace
+
+Command dynamicsCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  return {addOptions(parser, *o), [o] { return dynamics(*o); }};
 }
 
 }  // namespace linkage::cli

@@ -1,11 +1,13 @@
 // linkage-cli ics: the instant centres of a mechanism at one crank angle (Kennedy-Aronhold), and
 // the velocity of a point by a chain of centres, the way a hand solution checks it.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
 
 #include "cli_common.h"
+#include "cli_parser.h"
 #include "linkage/elements.h"
 #include "linkage/instant_centres.h"
 #include "linkage/io/numbers.h"
@@ -298,35 +300,30 @@ std::string chainJson(const Mechanism& m, const InstantCentres& ics, const Veloc
 }
 
 struct Options {
-  std::string model, out, point, via;
+  std::string model, out, point;
+  std::vector<long long> via;
   std::optional<double> angle;
   double rpm = 0;
   bool json = false;
-  std::vector<int> viaBodies;
 };
 
-// The options, checked against each other; the exit status when they cannot be used.
-std::optional<int> readOptions(int argc, char** argv, Options& o) {
-  auto text = [](std::string& to) {
-    return [&to](const std::string&, const std::string& v) {
-      to = v;
-      return true;
-    };
-  };
-  Arguments args("ics", kHelp);
-  args.value("--angle", [&](const std::string& a,
-                            const std::string& v) { return (o.angle = number(a, v)).has_value(); })
-      .value("--rpm",
-             [&](const std::string& a, const std::string& v) {
-               const std::optional<double> r = positiveNumber(a, v);
-               if (r) o.rpm = *r;
-               return r.has_value();
-             })
-      .value("--out", text(o.out))
-      .value("--point", text(o.point))
-      .value("--via", text(o.via))
-      .flag("--json", o.json);
-  if (std::optional<int> e = args.read(argc, argv, o.model)) return e;
+// The options, read into `o`.
+CLI::App* addOptions(Parser& parser, Options& o) {
+  CLI::App& c = parser.command("ics", kHelp);
+  addModel(c, o.model);
+  addNumber(c, "--angle", o.angle);
+  addNumber(c, "--rpm", o.rpm, NumberRule::Positive);
+  addText(c, "--out", o.out);
+  addText(c, "--point", o.point);
+  addWholeList(c, "--via", o.via);
+  addFlag(c, "--json", o.json);
+  return &c;
+}
+
+// The options checked against each other: the bodies of --via (textbook numbers), or the exit
+// status when they cannot be used.
+std::optional<int> checkOptions(const Options& o, std::vector<int>& via) {
+  // Required, but checked here rather than by CLI11 to say what it takes.
   if (!o.angle) {
     error("ics: --angle DEG is required");
     return kBadInput;
@@ -335,13 +332,7 @@ std::optional<int> readOptions(int argc, char** argv, Options& o) {
     error("ics: --via needs --point");
     return kBadInput;
   }
-  for (size_t start = 0; !o.via.empty() && start <= o.via.size();) {
-    const size_t comma = std::min(o.via.find(',', start), o.via.size());
-    std::optional<long long> n = wholeNumber("--via", o.via.substr(start, comma - start));
-    if (!n) return kBadInput;
-    o.viaBodies.push_back(static_cast<int>(std::clamp(*n, -1LL, 1LL << 30)));
-    start = comma + 1;
-  }
+  for (long long n : o.via) via.push_back(static_cast<int>(std::clamp(n, -1LL, 1LL << 30)));
   return std::nullopt;
 }
 
@@ -361,11 +352,9 @@ void report(const InstantCentres& ics) {
                          : "the two bodies do not move relative to each other"));
 }
 
-}  // namespace
-
-int ics(int argc, char** argv) {
-  Options o;
-  if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
+int ics(const Options& o) {
+  std::vector<int> via;
+  if (std::optional<int> e = checkOptions(o, via)) return *e;
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   std::optional<PointId> pid;
@@ -389,12 +378,19 @@ int ics(int argc, char** argv) {
   const InstantCentres& ics = solver.compute(k);
   report(ics);
   if (!pid) return writeOutput(o.out, o.json ? json(*m, ics, *o.angle) : csv(*m, ics, *o.angle));
-  const VelocityChain ch = velocityChain(k, ics, *pid, o.viaBodies);
+  const VelocityChain ch = velocityChain(k, ics, *pid, via);
   if (!ch.status.ok()) {
     error("--point " + o.point + ": " + ch.status.message);
-    return ch.status.code == StatusCode::BadModel || !o.viaBodies.empty() ? kBadInput : kFailure;
+    return ch.status.code == StatusCode::BadModel || !via.empty() ? kBadInput : kFailure;
   }
   return writeOutput(o.out, o.json ? chainJson(*m, ics, ch) : chainText(*m, ics, ch, k.rpm()));
+}
+
+}  // namespace
+
+Command icsCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  return {addOptions(parser, *o), [o] { return ics(*o); }};
 }
 
 }  // namespace linkage::cli

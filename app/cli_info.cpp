@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli_common.h"
+#include "cli_parser.h"
 #include "linkage/elements.h"
 #include "linkage/grashof.h"
 #include "linkage/groups.h"
@@ -70,30 +71,7 @@ void printSlotTravel(const Mechanism& m, const Kinematics& k) {
               << "\n";
 }
 
-}  // namespace
-
-int info(int argc, char** argv) {
-  std::string model;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (isHelp(a)) {
-      std::cout << kHelp;
-      return kOk;
-    }
-    if (!a.empty() && a[0] == '-') {
-      error("info: unknown option " + a);
-      return kBadInput;
-    }
-    if (!model.empty()) {
-      error("info: more than one MODEL given");
-      return kBadInput;
-    }
-    model = a;
-  }
-  if (model.empty()) {
-    error("info: no MODEL given (see linkage-cli info --help)");
-    return kBadInput;
-  }
+int info(const std::string& model) {
   std::optional<Mechanism> m = openModel(model);
   if (!m) return kBadInput;
   std::cout << "name: " << m->name << "\n";
@@ -124,6 +102,15 @@ int info(int argc, char** argv) {
   printFourBarLoops(*m);
   if (e == kOk && m->driver) printSlotTravel(*m, k);
   return e;
+}
+
+}  // namespace
+
+Command infoCommand(Parser& parser) {
+  auto model = std::make_shared<std::string>();
+  CLI::App& c = parser.command("info", kHelp);
+  addModel(c, *model);
+  return {&c, [model] { return info(*model); }};
 }
 
 }  // namespace linkage::cli

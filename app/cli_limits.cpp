@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "cli_common.h"
-#include "design_options.h"
+#include "cli_parser.h"
 #include "linkage/io/numbers.h"
 #include "linkage/limits.h"
 
@@ -33,66 +33,62 @@ Exit status: 0 success, 2 bad input (options, file, a point the driver does not 
 3 the crank cannot turn fully (the message says where it stops).
 )";
 
-}  // namespace
-
-int limits(int argc, char** argv) {
+struct Options {
   std::string model, point, body;
   std::optional<Vec2> direction;
-  long long steps = 360;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (isHelp(a)) {
-      std::cout << kHelp;
-      return kOk;
-    }
-    if (a == "--point" || a == "--body" || a == "--direction" || a == "--steps") {
-      std::optional<std::string> v = optionValue(argc, argv, i);
-      if (!v) return kBadInput;
-      if (a == "--point") {
-        point = *v;
-      } else if (a == "--body") {
-        body = *v;
-      } else if (a == "--direction") {
-        if (!(direction = numberPair(a, *v, true))) return kBadInput;
-      } else {
-        std::optional<long long> n = wholeNumberIn(a, *v, 4, 1'000'000);
-        if (!n) return kBadInput;
-        steps = *n;
-      }
-    } else if (!modelArgument("limits", a, model)) {
-      return kBadInput;
-    }
-  }
-  if (!modelGiven("limits", model)) return kBadInput;
-  if (point.empty() == body.empty()) {
+  int steps = 360;
+};
+
+// The options, read into `o`.
+CLI::App* addOptions(Parser& parser, Options& o) {
+  CLI::App& c = parser.command("limits", kHelp);
+  addModel(c, o.model);
+  addText(c, "--point", o.point);
+  addText(c, "--body", o.body);
+  addPair(c, "--direction", o.direction, PairRule::NonZero);
+  addWhole(c, "--steps", o.steps, 4, 1'000'000);
+  return &c;
+}
+
+std::optional<int> checkOptions(const Options& o) {
+  if (o.point.empty() == o.body.empty()) {
     error("limits: give either --point body.point or --body NAME");
     return kBadInput;
   }
-  if (direction && point.empty()) {
+  if (o.direction && o.point.empty()) {
     error("limits: --direction goes with --point");
     return kBadInput;
   }
-  std::optional<Mechanism> m = openDrivenModel(model);
-  if (!m) return kBadInput;
-  LimitMeasure what;
-  if (!point.empty()) {
-    std::optional<std::vector<PointId>> ids = outputPoints(*m, {point});
-    if (!ids) return kBadInput;
-    what =
-        LimitMeasure::along(ids->front(), direction.value_or(defaultDirection(*m, ids->front())));
-  } else {
-    const Body* b = m->bodyNamed(body);
-    if (!b) {
-      error("--body " + body + ": no body of that name");
-      return kBadInput;
-    }
-    what = LimitMeasure::angleOf(b->id);
+  return std::nullopt;
+}
+
+// What is measured: the point along the direction, or the body's angle; nullopt after the error.
+std::optional<LimitMeasure> measure(const Mechanism& m, const Options& o) {
+  if (!o.point.empty()) {
+    std::optional<std::vector<PointId>> ids = outputPoints(m, {o.point});
+    if (!ids) return std::nullopt;
+    const PointId p = ids->front();
+    return LimitMeasure::along(p, o.direction.value_or(defaultDirection(m, p)));
   }
+  const Body* b = m.bodyNamed(o.body);
+  if (!b) {
+    error("--body " + o.body + ": no body of that name");
+    return std::nullopt;
+  }
+  return LimitMeasure::angleOf(b->id);
+}
+
+int limits(const Options& o) {
+  if (std::optional<int> e = checkOptions(o)) return *e;
+  std::optional<Mechanism> m = openDrivenModel(o.model);
+  if (!m) return kBadInput;
+  const std::optional<LimitMeasure> what = measure(*m, o);
+  if (!what) return kBadInput;
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;
   LimitOptions opt;
-  opt.steps = static_cast<int>(steps);
-  const Limits r = findLimits(k, what, opt);
+  opt.steps = o.steps;
+  const Limits r = findLimits(k, *what, opt);
   if (!r.status.ok()) {
     error(r.status.message);
     return exitFor(r.status);
@@ -107,6 +103,13 @@ int limits(int argc, char** argv) {
   if (!r.periodic)
     note("the motion does not repeat after one turn: extremes are those of crank 0 to 360");
   return kOk;
+}
+
+}  // namespace
+
+Command limitsCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  return {addOptions(parser, *o), [o] { return limits(*o); }};
 }
 
 }  // namespace linkage::cli

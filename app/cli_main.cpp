@@ -1,24 +1,25 @@
 // linkage-cli: the command-line front end to the kinematic core.
-#include <cstring>
 #include <iostream>
 #include <string>
 
 #include "cli_common.h"
+#include "cli_parser.h"
 #include "linkage/io/model_lookup.h"
 
 namespace linkage::cli {
-int analyze(int argc, char** argv);
-int ics(int argc, char** argv);
-int info(int argc, char** argv);
-int plot(int argc, char** argv);
-int limits(int argc, char** argv);
-int transmission(int argc, char** argv);
-int study(int argc, char** argv);
-int dynamics(int argc, char** argv);
-int balance(int argc, char** argv);
-int slots(int argc, char** argv);
-int clearance(int argc, char** argv);
-int timing(int argc, char** argv);
+// Each command's options and run (app/cli_<command>.cpp).
+Command analyzeCommand(Parser& parser);
+Command infoCommand(Parser& parser);
+Command icsCommand(Parser& parser);
+Command plotCommand(Parser& parser);
+Command limitsCommand(Parser& parser);
+Command transmissionCommand(Parser& parser);
+Command studyCommand(Parser& parser);
+Command dynamicsCommand(Parser& parser);
+Command balanceCommand(Parser& parser);
+Command slotsCommand(Parser& parser);
+Command clearanceCommand(Parser& parser);
+Command timingCommand(Parser& parser);
 }  // namespace linkage::cli
 
 namespace {
@@ -45,40 +46,25 @@ Run 'linkage-cli COMMAND --help' for a command's options, 'linkage-cli --version
 version. Numbers are written with '.' as the decimal point whatever the locale.
 )";
 
+const char* kExamplesHelp =
+    "usage: linkage-cli examples\n\nLists the example mechanisms by name.\n";
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace linkage::cli;
   executablePath = linkage::runningExecutable(argc > 0 ? argv[0] : "");
-  if (argc < 2 || isHelp(argv[1])) {
-    std::cout << kHelp;
-    return argc < 2 ? kBadInput : kOk;
-  }
-  const std::string cmd = argv[1];
-  if (cmd == "--version") {
-    std::cout << "linkage-cli " LINKAGE_VERSION "\n";
-    return kOk;
-  }
-  if (cmd == "analyze") return analyze(argc - 2, argv + 2);
-  if (cmd == "info") return info(argc - 2, argv + 2);
-  if (cmd == "ics") return ics(argc - 2, argv + 2);
-  if (cmd == "plot") return plot(argc - 2, argv + 2);
-  if (cmd == "limits") return limits(argc - 2, argv + 2);
-  if (cmd == "transmission") return transmission(argc - 2, argv + 2);
-  if (cmd == "study") return study(argc - 2, argv + 2);
-  if (cmd == "dynamics") return dynamics(argc - 2, argv + 2);
-  if (cmd == "balance") return balance(argc - 2, argv + 2);
-  if (cmd == "slots") return slots(argc - 2, argv + 2);
-  if (cmd == "clearance") return clearance(argc - 2, argv + 2);
-  if (cmd == "timing") return timing(argc - 2, argv + 2);
-  if (cmd == "examples") {
-    if (argc > 2 && isHelp(argv[2])) {
-      std::cout << "usage: linkage-cli examples\n\nLists the example mechanisms by name.\n";
-      return kOk;
-    }
-    for (const std::string& n : linkage::listExamples(executablePath)) std::cout << n << "\n";
-    return kOk;
-  }
-  error("unknown command \"" + cmd + "\" (see linkage-cli --help)");
-  return kBadInput;
+  Parser parser("linkage-cli", kHelp);
+  parser.version("linkage-cli " LINKAGE_VERSION);
+  std::vector<Command> commands;
+  for (auto* add : {analyzeCommand, infoCommand, icsCommand, plotCommand, limitsCommand,
+                    transmissionCommand, studyCommand, dynamicsCommand, balanceCommand,
+                    slotsCommand, clearanceCommand, timingCommand})
+    commands.push_back(add(parser));
+  commands.push_back({&parser.command("examples", kExamplesHelp), [] {
+                        for (const std::string& n : linkage::listExamples(executablePath))
+                          std::cout << n << "\n";
+                        return int(kOk);
+                      }});
+  return parser.run(commands, argc, argv);
 }

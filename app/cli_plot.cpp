@@ -1,5 +1,5 @@
-// linkage-cli plot: runs linkage-plot, found next to linkage-cli, with the same arguments. The
-// figure needs Qt and QCustomPlot; loading them into linkage-cli would add about 20 ms to the
+// linkage-cli plot: runs `linkage-plot plot`, found next to linkage-cli, with the same arguments.
+// The figure needs Qt and QCustomPlot; loading them into linkage-cli would add about 20 ms to the
 // start of every command (docs/benchmarks.md, Plots), so only this command pays for them.
 #include <unistd.h>
 
@@ -11,10 +11,15 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "cli_parser.h"
 
 namespace linkage::cli {
 
-int plot(int argc, char** argv) {
+namespace {
+
+// linkage-plot's own command `plot` reads the arguments (cli_parser.h, as here) and prints the
+// help; nothing is read twice.
+int plot(const std::vector<std::string>& arguments) {
   // executablePath is /proc/self/exe (main), so this is the directory linkage-cli runs from.
   const std::filesystem::path helper =
       std::filesystem::path(executablePath).parent_path() / "linkage-plot";
@@ -24,15 +29,22 @@ int plot(int argc, char** argv) {
           "LINKAGE_BUILD_UI=ON)");
     return kFailure;
   }
+  std::vector<std::string> words = {helper.string(), "plot"};
+  words.insert(words.end(), arguments.begin(), arguments.end());
   std::vector<char*> args;
-  std::string name = helper.string();
-  args.push_back(name.data());
-  for (int i = 0; i < argc; ++i) args.push_back(argv[i]);
+  for (std::string& w : words) args.push_back(w.data());
   args.push_back(nullptr);
   std::cout.flush();
-  ::execv(name.c_str(), args.data());
-  error("plot: cannot run " + name + ": " + std::strerror(errno));
+  ::execv(args[0], args.data());
+  error("plot: cannot run " + words[0] + ": " + std::strerror(errno));
   return kFailure;
+}
+
+}  // namespace
+
+Command plotCommand(Parser& parser) {
+  // Every argument after `plot`, --help too, goes to linkage-plot as it is.
+  return parser.passThrough("plot", plot);
 }
 
 }  // namespace linkage::cli

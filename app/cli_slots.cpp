@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "cli_common.h"
-#include "design_options.h"
+#include "cli_parser.h"
 #include "linkage/elements.h"
 #include "linkage/io/numbers.h"
 #include "linkage/slot_travel.h"
@@ -43,32 +43,20 @@ std::string describeTravel(const Mechanism& m, const SlotTravel& t) {
   return s;
 }
 
-int slots(int argc, char** argv) {
+namespace {
+
+struct Options {
   std::string model;
-  long long steps = 360;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (isHelp(a)) {
-      std::cout << kHelp;
-      return kOk;
-    }
-    if (a == "--steps") {
-      std::optional<std::string> v = optionValue(argc, argv, i);
-      if (!v) return kBadInput;
-      std::optional<long long> n = wholeNumberIn(a, *v, 4, 1'000'000);
-      if (!n) return kBadInput;
-      steps = *n;
-    } else if (!modelArgument("slots", a, model)) {
-      return kBadInput;
-    }
-  }
-  if (!modelGiven("slots", model)) return kBadInput;
-  std::optional<Mechanism> m = openDrivenModel(model);
+  int steps = 360;
+};
+
+int slots(const Options& o) {
+  std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;
   SlotTravelOptions opt;
-  opt.steps = static_cast<int>(steps);
+  opt.steps = o.steps;
   const SlotTravels r = slotTravel(k, opt);
   if (!r.status.ok()) {
     error(r.status.message);
@@ -84,6 +72,16 @@ int slots(int argc, char** argv) {
   for (const SlotTravel& t : r.joints)
     if (!t.inside) error("leaves its slot: " + describeTravel(*m, t));
   return r.allInside() ? kOk : kLeavesSlot;
+}
+
+}  // namespace
+
+Command slotsCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  CLI::App& c = parser.command("slots", kHelp);
+  addModel(c, o->model);
+  addWhole(c, "--steps", o->steps, 4, 1'000'000);
+  return {&c, [o] { return slots(*o); }};
 }
 
 }  // namespace linkage::cli

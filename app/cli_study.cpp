@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "cli_common.h"
-#include "design_options.h"
+#include "cli_parser.h"
 #include "linkage/io/numbers.h"
 #include "linkage/study.h"
 #include "linkage/tables/study_table.h"
@@ -47,124 +47,104 @@ reported on standard error.
 Exit status: 0 the study ran (rows whose crank locks are results, not errors), 2 bad input.
 )";
 
-}  // namespace
-
-int study(int argc, char** argv) {
+struct Options {
   std::string model, move, point;
   std::vector<std::string> bodies;
   std::optional<Vec2> by, about, direction;
-  std::optional<double> angle, from, to;
-  std::optional<long long> values;
-  long long crankSteps = 360, threads = 0;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (isHelp(a)) {
-      std::cout << kHelp;
-      return kOk;
-    }
-    if (!a.empty() && a[0] == '-' && a.size() > 1) {
-      std::optional<std::string> v = optionValue(argc, argv, i);
-      if (!v) return kBadInput;
-      bool ok = true;
-      if (a == "--move") {
-        move = *v;
-      } else if (a == "--point") {
-        point = *v;
-      } else if (a == "--body") {
-        bodies.push_back(*v);
-      } else if (a == "--by") {
-        ok = (by = numberPair(a, *v)).has_value();
-      } else if (a == "--about") {
-        ok = (about = numberPair(a, *v)).has_value();
-      } else if (a == "--direction") {
-        ok = (direction = numberPair(a, *v, true)).has_value();
-      } else if (a == "--angle") {
-        ok = (angle = number(a, *v)).has_value();
-      } else if (a == "--from") {
-        ok = (from = number(a, *v)).has_value();
-      } else if (a == "--to") {
-        ok = (to = number(a, *v)).has_value();
-      } else if (a == "--steps" || a == "--crank-steps" || a == "--threads") {
-        // 100,000 variants take about half a minute of one core; 1024 threads are plenty.
-        const long long lo = a == "--crank-steps" ? 4 : 1;
-        const long long hi = a == "--steps" ? 100'000 : a == "--threads" ? 1024 : 1'000'000;
-        std::optional<long long> n = wholeNumberIn(a, *v, lo, hi);
-        if (!n) return kBadInput;
-        if (a == "--steps")
-          values = *n;
-        else if (a == "--crank-steps")
-          crankSteps = *n;
-        else
-          threads = *n;
-      } else {
-        error("study: unknown option " + a + " (see linkage-cli study --help)");
-        return kBadInput;
-      }
-      if (!ok) return kBadInput;
-    } else if (!modelArgument("study", a, model)) {
-      return kBadInput;
-    }
-  }
-  if (!modelGiven("study", model)) return kBadInput;
-  for (const auto& [given, name] : {std::pair{!move.empty(), "--move"},
-                                    {from.has_value(), "--from"},
-                                    {to.has_value(), "--to"},
-                                    {values.has_value(), "--steps"},
-                                    {!point.empty(), "--point"}})
-    if (!given) {
-      error(std::string("study: ") + name + " is required (see linkage-cli study --help)");
-      return kBadInput;
-    }
-  if (by.has_value() == (about.has_value() || angle.has_value())) {
+  std::optional<double> angle;
+  double from = 0, to = 0;
+  int values = 0, crankSteps = 360, threads = 0;
+};
+
+// The options, read into `o`.
+CLI::App* addOptions(Parser& parser, Options& o) {
+  CLI::App& c = parser.command("study", kHelp);
+  addModel(c, o.model);
+  required(addText(c, "--move", o.move));
+  addPair(c, "--by", o.by);
+  addPair(c, "--about", o.about);
+  addNumber(c, "--angle", o.angle);
+  required(addNumber(c, "--from", o.from));
+  required(addNumber(c, "--to", o.to));
+  // 100,000 variants take about half a minute of one core; 1024 threads are plenty.
+  required(addWhole(c, "--steps", o.values, 1, 100'000));
+  required(addText(c, "--point", o.point));
+  addPair(c, "--direction", o.direction, PairRule::NonZero);
+  addTexts(c, "--body", o.bodies);
+  addWhole(c, "--crank-steps", o.crankSteps, 4, 1'000'000);
+  addWhole(c, "--threads", o.threads, 1, 1024);
+  return &c;
+}
+
+std::optional<int> checkOptions(const Options& o) {
+  if (o.by.has_value() == (o.about.has_value() || o.angle.has_value())) {
     error("study: give either --by DX,DY or --about X,Y with --angle DEG");
     return kBadInput;
   }
-  if (about.has_value() != angle.has_value()) {
+  if (o.about.has_value() != o.angle.has_value()) {
     error("study: --about and --angle go together");
     return kBadInput;
   }
-  std::optional<Mechanism> m = openDrivenModel(model);
-  if (!m) return kBadInput;
+  return std::nullopt;
+}
+
+// The study the options ask for on m; nullopt after the error.
+std::optional<StudySpec> studySpec(const Mechanism& m, const Options& o) {
   StudySpec spec;
-  std::optional<std::vector<PointId>> ids = outputPoints(*m, {point});
-  if (!ids) return kBadInput;
+  std::optional<std::vector<PointId>> ids = outputPoints(m, {o.point});
+  if (!ids) return std::nullopt;
   spec.point = ids->front();
-  ids = outputPoints(*m, {move});
-  if (!ids) return kBadInput;
+  if (!(ids = outputPoints(m, {o.move}))) return std::nullopt;
   spec.move.point = ids->front();
-  if (by) {
-    spec.move.by = *by;
+  if (o.by) {
+    spec.move.by = *o.by;
   } else {
     spec.move.kind = PointMove::Kind::Arc;
-    spec.move.centre = *about;
-    spec.move.angleDeg = *angle;
+    spec.move.centre = *o.about;
+    spec.move.angleDeg = *o.angle;
   }
-  for (const std::string& b : bodies) {
-    const Body* body = m->bodyNamed(b);
+  for (const std::string& b : o.bodies) {
+    const Body* body = m.bodyNamed(b);
     if (!body) {
       error("--body " + b + ": no body of that name");
-      return kBadInput;
+      return std::nullopt;
     }
     spec.bodies.push_back(body->id);
   }
-  spec.from = *from;
-  spec.to = *to;
-  spec.values = static_cast<int>(*values);
-  spec.direction = direction;
-  spec.steps = static_cast<int>(crankSteps);
-  spec.threads = static_cast<int>(threads);
-  const Study s = runStudy(*m, spec);
+  spec.from = o.from;
+  spec.to = o.to;
+  spec.values = o.values;
+  spec.direction = o.direction;
+  spec.steps = o.crankSteps;
+  spec.threads = o.threads;
+  return spec;
+}
+
+int study(const Options& o) {
+  if (std::optional<int> e = checkOptions(o)) return *e;
+  std::optional<Mechanism> m = openDrivenModel(o.model);
+  if (!m) return kBadInput;
+  const std::optional<StudySpec> spec = studySpec(*m, o);
+  if (!spec) return kBadInput;
+  const Study s = runStudy(*m, *spec);
   if (!s.status.ok()) {
     error(s.status.message);
     return kBadInput;
   }
-  const std::string out = studyTableCsv(*m, spec, s);
+  const std::string out = studyTableCsv(*m, *spec, s);
   for (const StudyRow& r : s.rows)
     if (!r.status.ok())
       std::cerr << "linkage-cli: t = " << formatNumber(r.t) << ": " << r.status.message << "\n";
   std::fwrite(out.data(), 1, out.size(), stdout);
   std::fflush(stdout);
   return kOk;
+}
+
+}  // namespace
+
+Command studyCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  return {addOptions(parser, *o), [o] { return study(*o); }};
 }
 
 }  // namespace linkage::cli

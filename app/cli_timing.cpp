@@ -7,7 +7,7 @@
 #include <iostream>
 
 #include "cli_common.h"
-#include "design_options.h"
+#include "cli_parser.h"
 #include "linkage/io/numbers.h"
 #include "linkage/timing.h"
 
@@ -50,46 +50,19 @@ constexpr int kConflict = 4;
 struct Options {
   std::string model;
   std::vector<std::string> windows, conflicts;
-  long long steps = 360;
+  int steps = 360;
   std::string out;
 };
 
-std::optional<int> readOptions(int argc, char** argv, Options& o) {
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (isHelp(a)) {
-      std::cout << kHelp;
-      return kOk;
-    }
-    if (a == "--window" || a == "--conflict" || a == "--steps" || a == "--out") {
-      std::optional<std::string> v = optionValue(argc, argv, i);
-      if (!v) return kBadInput;
-      if (a == "--window") {
-        o.windows.push_back(*v);
-      } else if (a == "--conflict") {
-        o.conflicts.push_back(*v);
-      } else if (a == "--out") {
-        const std::string ext = std::filesystem::path(*v).extension().string();
-        if (ext != ".png" && ext != ".pdf" && ext != ".svg") {
-          error("--out " + *v + ": the name must end in .png, .pdf or .svg");
-          return kBadInput;
-        }
-        o.out = *v;
-      } else {
-        std::optional<long long> n = wholeNumberIn(a, *v, 4, 1'000'000);
-        if (!n) return kBadInput;
-        o.steps = *n;
-      }
-    } else if (!modelArgument("timing", a, o.model)) {
-      return kBadInput;
-    }
-  }
-  if (!modelGiven("timing", o.model)) return kBadInput;
-  if (o.windows.empty()) {
-    error("timing: give at least one --window NAME=EXPR (see linkage-cli timing --help)");
-    return kBadInput;
-  }
-  return std::nullopt;
+// The options, read into `o`.
+CLI::App* addOptions(Parser& parser, Options& o) {
+  CLI::App& c = parser.command("timing", kHelp);
+  addModel(c, o.model);
+  addTexts(c, "--window", o.windows);
+  addTexts(c, "--conflict", o.conflicts);
+  addWhole(c, "--steps", o.steps, 4, 1'000'000);
+  addFigureFile(c, "--out", o.out);
+  return &c;
 }
 
 // "N1,N2": two window names.
@@ -124,7 +97,7 @@ int drawFigure(const Options& o) {
     error("--out: " + helper.string() + " is not there; it draws the figures");
     return kFailure;
   }
-  std::vector<std::string> args = {helper.string(), "--cycle-diagram",       "--model", o.model,
+  std::vector<std::string> args = {helper.string(), "cycle-diagram",         "--model", o.model,
                                    "--steps",       std::to_string(o.steps), "--out",   o.out};
   for (const std::string& w : o.windows) args.insert(args.end(), {"--window", w});
   for (const std::string& c : o.conflicts) args.insert(args.end(), {"--conflict", c});
@@ -146,11 +119,11 @@ int drawFigure(const Options& o) {
   return kOk;
 }
 
-}  // namespace
-
-int timing(int argc, char** argv) {
-  Options o;
-  if (std::optional<int> e = readOptions(argc, argv, o)) return *e;
+int timing(const Options& o) {
+  if (o.windows.empty()) {  // (required, in words that say what it takes)
+    error("timing: give at least one --window NAME=EXPR (see linkage-cli timing --help)");
+    return kBadInput;
+  }
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   std::vector<CycleWindow> windows;
@@ -172,7 +145,7 @@ int timing(int argc, char** argv) {
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;
   CycleOptions opt;
-  opt.steps = static_cast<int>(o.steps);
+  opt.steps = o.steps;
   const CycleDiagram d = cycleDiagram(k, {}, windows, conflicts, opt);
   if (!d.status.ok()) {
     error(d.status.message);
@@ -185,6 +158,13 @@ int timing(int argc, char** argv) {
   if (!o.out.empty())
     if (int e = drawFigure(o); e != kOk) return e;
   return d.anyConflict() ? kConflict : kOk;
+}
+
+}  // namespace
+
+Command timingCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  return {addOptions(parser, *o), [o] { return timing(*o); }};
 }
 
 }  // namespace linkage::cli

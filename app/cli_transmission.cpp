@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "cli_common.h"
-#include "design_options.h"
+#include "cli_parser.h"
 #include "linkage/io/numbers.h"
 #include "linkage/transmission.h"
 
@@ -43,39 +43,17 @@ std::string describe(const Mechanism& m, const TransmissionJoint& t) {
   return std::string(toString(t.kind)) + " " + m.body(t.link)->name + " in " + m.slotLabel(t.slot);
 }
 
-}  // namespace
-
-int transmission(int argc, char** argv) {
+struct Options {
   std::string model;
+  int steps = 360;
+  std::optional<Vec2> band;
+};
+
+int transmission(const Options& o) {
   TransmissionOptions opt;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (isHelp(a)) {
-      std::cout << kHelp;
-      return kOk;
-    }
-    if (a == "--steps" || a == "--band") {
-      std::optional<std::string> v = optionValue(argc, argv, i);
-      if (!v) return kBadInput;
-      if (a == "--steps") {
-        std::optional<long long> n = wholeNumberIn(a, *v, 4, 1'000'000);
-        if (!n) return kBadInput;
-        opt.steps = static_cast<int>(*n);
-      } else {
-        std::optional<Vec2> b = numberPair(a, *v);
-        if (!b) return kBadInput;
-        if (!(b->x() < b->y())) {
-          error("--band: the low end must be below the high end, got " + *v);
-          return kBadInput;
-        }
-        opt.band = {b->x(), b->y()};
-      }
-    } else if (!modelArgument("transmission", a, model)) {
-      return kBadInput;
-    }
-  }
-  if (!modelGiven("transmission", model)) return kBadInput;
-  std::optional<Mechanism> m = openDrivenModel(model);
+  opt.steps = o.steps;
+  if (o.band) opt.band = {o.band->x(), o.band->y()};
+  std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;
@@ -118,6 +96,17 @@ int transmission(int argc, char** argv) {
   }
   std::cerr << "some transmission angles leave " << band << "\n";
   return kOutOfBand;
+}
+
+}  // namespace
+
+Command transmissionCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  CLI::App& c = parser.command("transmission", kHelp);
+  addModel(c, o->model);
+  addWhole(c, "--steps", o->steps, 4, 1'000'000);
+  addPair(c, "--band", o->band, PairRule::Increasing);
+  return {&c, [o] { return transmission(*o); }};
 }
 
 }  // namespace linkage::cli

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "cli_common.h"
+#include "cli_parser.h"
 #include "export/figure_export.h"
 #include "linkage/timing.h"
 #include "plots/qcp.h"
@@ -17,36 +18,33 @@ namespace {
 
 constexpr double kRowPitch = 1.4;  // a row's height: the curve's 1, and the gap
 
-struct FigureArgs {
+// The arguments of `linkage-cli timing`, as it passes them (checked there already).
+struct Options {
   std::string model, out;
-  std::vector<CycleWindow> windows;
-  std::vector<std::pair<std::string, std::string>> conflicts;
+  std::vector<std::string> windows, conflicts;
   int steps = 360;
 };
 
-// The arguments of `linkage-cli timing` (already checked there): nullopt when they do not parse.
-std::optional<FigureArgs> readArgs(int argc, char** argv, std::optional<Mechanism>& m) {
+struct FigureArgs {
+  std::vector<CycleWindow> windows;
+  std::vector<std::pair<std::string, std::string>> conflicts;
+};
+
+// The windows and conflicts on m; nullopt when they do not parse.
+std::optional<FigureArgs> readArgs(const Mechanism& m, const Options& o) {
   FigureArgs a;
-  std::vector<std::string> windows;
-  for (int i = 0; i + 1 < argc; i += 2) {
-    const std::string o = argv[i], v = argv[i + 1];
-    if (o == "--window") windows.push_back(v);
-    if (o == "--out") a.out = v;
-    if (o == "--steps") a.steps = std::stoi(v);
-    if (o == "--conflict" && v.find(',') != std::string::npos)
-      a.conflicts.emplace_back(v.substr(0, v.find(',')), v.substr(v.find(',') + 1));
-    if (o == "--model") a.model = v;
-  }
-  if (!(m = openDrivenModel(a.model))) return std::nullopt;
-  for (const std::string& w : windows) {
+  for (const std::string& w : o.windows) {
     std::string why;
-    std::optional<CycleWindow> x = parseWindow(*m, w, &why);
+    std::optional<CycleWindow> x = parseWindow(m, w, &why);
     if (!x) {
       error("--window " + w + ": " + why);
       return std::nullopt;
     }
     a.windows.push_back(*x);
   }
+  for (const std::string& c : o.conflicts)
+    if (c.find(',') != std::string::npos)
+      a.conflicts.emplace_back(c.substr(0, c.find(',')), c.substr(c.find(',') + 1));
   return a;
 }
 
@@ -122,16 +120,15 @@ void drawWindows(QCustomPlot& p, const CycleDiagram& d, const std::vector<CycleW
     for (const AngleInterval& i : c.overlaps) shade(p, i, -0.3, top - 0.2, QColor(214, 39, 40, 60));
 }
 
-}  // namespace
-
-int cycleFigure(int argc, char** argv) {
-  std::optional<Mechanism> m;
-  std::optional<FigureArgs> a = readArgs(argc, argv, m);
+int cycleFigure(const Options& o) {
+  std::optional<Mechanism> m = openDrivenModel(o.model);
+  if (!m) return kBadInput;
+  std::optional<FigureArgs> a = readArgs(*m, o);
   if (!a) return kBadInput;
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;
   CycleOptions opt;
-  opt.steps = a->steps;
+  opt.steps = o.steps;
   const CycleDiagram d = cycleDiagram(k, {}, a->windows, a->conflicts, opt);
   if (!d.status.ok()) {
     error(d.status.message);
@@ -159,11 +156,28 @@ int cycleFigure(int argc, char** argv) {
   const QSize size(900, 160 + 110 * static_cast<int>(d.rows.size()));
   p.resize(size);
   QString err;
-  if (!ui::exportPlot(&p, QString::fromStdString(a->out), size, &err)) {
+  if (!ui::exportPlot(&p, QString::fromStdString(o.out), size, &err)) {
     error(err.toStdString());
     return kFailure;
   }
   return kOk;
+}
+
+}  // namespace
+
+Command cycleDiagramCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  CLI::App& c =
+      parser.command("cycle-diagram",
+                     "usage: linkage-plot cycle-diagram --model MODEL --out FIG "
+                     "[--window NAME=EXPR ...] [--conflict N1,N2 ...] [--steps N]\n\n"
+                     "Run by 'linkage-cli timing --out': see linkage-cli timing --help.\n");
+  required(addText(c, "--model", o->model));
+  required(addFigureFile(c, "--out", o->out));
+  addTexts(c, "--window", o->windows);
+  addTexts(c, "--conflict", o->conflicts);
+  addWhole(c, "--steps", o->steps, 4, 1'000'000);
+  return {&c, [o] { return cycleFigure(*o); }};
 }
 
 }  // namespace linkage::cli

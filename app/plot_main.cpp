@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "cli_parser.h"
 
 #include <QApplication>
 
@@ -55,115 +56,38 @@ crank that cannot turn the whole way (the figure shows the part that exists, wit
 1 the file could not be written.
 )";
 
+const char* kProgramHelp =
+    R"(usage: linkage-plot plot ...            (linkage-cli plot runs it: linkage-cli plot --help)
+       linkage-plot cycle-diagram ...   (linkage-cli timing --out runs it)
+
+Draws the figures of linkage-cli, which itself does not load Qt.
+)";
+
 struct PlotOptions {
   std::vector<std::string> models;
   std::string point, out, component = "y";
   std::optional<double> along;
   long long revs = 1, steps = 360;
   std::string units = "mm";
-  int width = 0, height = 0;
+  std::optional<std::pair<int, int>> size;  // else one that fits the columns
   bool jerk = false, overlay = false;
 };
 
-bool parseSize(const std::string& text, int& w, int& h) {
-  const size_t x = text.find('x');
-  const std::optional<double> a =
-      x == std::string::npos ? std::nullopt : parseNumber(text.substr(0, x));
-  const std::optional<double> b =
-      x == std::string::npos ? std::nullopt : parseNumber(text.substr(x + 1));
-  const bool ok = a && b && *a == std::floor(*a) && *b == std::floor(*b) && *a >= 50 && *b >= 50 &&
-                  *a <= 20000 && *b <= 20000;
-  if (!ok) error("--size: \"" + text + "\" is not WxH with whole numbers from 50 to 20000");
-  w = ok ? static_cast<int>(*a) : 0;
-  h = ok ? static_cast<int>(*b) : 0;
-  return ok;
-}
-
-// The value if it is one of `allowed`; prints the problem otherwise.
-bool oneOf(const std::string& option, const std::string& v,
-           const std::vector<std::string>& allowed) {
-  for (const std::string& x : allowed)
-    if (v == x) return true;
-  std::string list;
-  for (size_t i = 0; i < allowed.size(); ++i)
-    list += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + allowed[i];
-  error(option + ": \"" + v + "\" is not " + list);
-  return false;
-}
-
-bool wholeIn(const std::string& option, const std::string& v, long long lo, long long hi,
-             long long& out) {
-  const std::optional<long long> n = wholeNumber(option, v);
-  if (n && (*n < lo || *n > hi))
-    error(option + ": must be from " + std::to_string(lo) + " to " + std::to_string(hi));
-  if (!n || *n < lo || *n > hi) return false;
-  out = *n;
-  return true;
-}
-
-// One option and its value (empty for flags); false after printing the problem.
-bool apply(const std::string& a, const std::string& v, PlotOptions& o) {
-  if (a == "--revs") return wholeIn(a, v, 1, 100, o.revs);
-  if (a == "--steps") return wholeIn(a, v, 12, 36000, o.steps);
-  if (a == "--size") return parseSize(v, o.width, o.height);
-  if ((a == "--units" && !oneOf(a, v, {"mm", "m", "g"})) ||
-      (a == "--component" && !oneOf(a, v, {"x", "y", "magnitude"})))
-    return false;
-  if (a == "--along") {
-    o.along = number(a, v);
-    return o.along.has_value();
-  }
-  if (a == "--point") {
-    o.point = v;
-  } else if (a == "--out") {
-    o.out = v;
-  } else if (a == "--units") {
-    o.units = v;
-  } else if (a == "--component") {
-    o.component = v;
-  } else if (a == "--jerk") {
-    o.jerk = true;
-  } else if (a == "--overlay") {
-    o.overlay = true;
-  } else if (!a.empty() && a[0] == '-') {
-    error("plot: unknown option " + a + " (see linkage-cli plot --help)");
-    return false;
-  } else {
-    o.models.push_back(a);
-  }
-  return true;
-}
-
-// Returns kOk, or the exit status after printing the problem.
-int parseOptions(int argc, char** argv, PlotOptions& o) {
-  const std::vector<std::string> withValue = {"--point", "--out",  "--revs",      "--steps",
-                                              "--units", "--size", "--component", "--along"};
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    std::string v;
-    if (std::find(withValue.begin(), withValue.end(), a) != withValue.end()) {
-      if (i + 1 == argc) {
-        error(a + ": needs a value");
-        return kBadInput;
-      }
-      v = argv[++i];
-    }
-    if (!apply(a, v, o)) return kBadInput;
-  }
-  if (o.models.empty()) {
-    error("plot: no MODEL given (see linkage-cli plot --help)");
-    return kBadInput;
-  }
-  if (o.out.empty()) {
-    error("plot: no --out FILE given (.png, .pdf or .svg)");
-    return kBadInput;
-  }
-  const std::string ext = o.out.substr(o.out.find_last_of('.') + 1);
-  if (o.out.find('.') == std::string::npos || (ext != "png" && ext != "pdf" && ext != "svg")) {
-    error("--out " + o.out + ": the name must end in .png, .pdf or .svg");
-    return kBadInput;
-  }
-  return kOk;
+// The options, read into `o`.
+CLI::App* addOptions(Parser& parser, PlotOptions& o) {
+  CLI::App& c = parser.command("plot", kHelp);
+  addModels(c, o.models);
+  addText(c, "--point", o.point);
+  addFigureFile(c, "--out", o.out);
+  addWhole(c, "--revs", o.revs, 1, 100);
+  addWhole(c, "--steps", o.steps, 12, 36000);
+  addWord(c, "--units", o.units, {"mm", "m", "g"});
+  addPixelSize(c, "--size", o.size);
+  addWord(c, "--component", o.component, {"x", "y", "magnitude"});
+  addNumber(c, "--along", o.along);
+  addFlag(c, "--jerk", o.jerk);
+  addFlag(c, "--overlay", o.overlay);
+  return &c;
 }
 
 // Loads and solves every model, each with the point plotted (by default the first model's first
@@ -253,8 +177,8 @@ int writeFigure(const PlotOptions& o, const std::vector<const ui::CurveSet*>& sh
   const ui::MotionFigure::Options fo = figureOptions(o, shown.size());
   const int columns =
       fo.layout == ui::MotionFigure::Layout::SideBySide ? static_cast<int>(shown.size()) : 1;
-  const int w = o.width > 0 ? o.width : (columns == 1 ? 900 : 700 * columns);
-  const int h = o.height > 0 ? o.height : (o.jerk ? 1100 : 900);
+  const int w = o.size ? o.size->first : (columns == 1 ? 900 : 700 * columns);
+  const int h = o.size ? o.size->second : (o.jerk ? 1100 : 900);
   plot.resize(w, h);
   figure.build(shown, fo);
   QString err;
@@ -265,16 +189,11 @@ int writeFigure(const PlotOptions& o, const std::vector<const ui::CurveSet*>& sh
   return kOk;
 }
 
-}  // namespace
-
-int plot(int argc, char** argv) {
-  for (int i = 0; i < argc; ++i)
-    if (isHelp(argv[i])) {
-      std::cout << kHelp;
-      return kOk;
-    }
-  PlotOptions o;
-  if (int e = parseOptions(argc, argv, o); e != kOk) return e;
+int plot(PlotOptions& o) {
+  if (o.out.empty()) {  // (required, in words that say what it takes)
+    error("plot: no --out FILE given (.png, .pdf or .svg)");
+    return kBadInput;
+  }
   // Every model loaded and solved before any window system is touched.
   std::vector<Kinematics> solved;
   std::vector<std::string> names;
@@ -294,15 +213,23 @@ int plot(int argc, char** argv) {
   return status;
 }
 
+}  // namespace
+
+Command plotCommand(Parser& parser) {
+  auto o = std::make_shared<PlotOptions>();
+  return {addOptions(parser, *o), [o] { return plot(*o); }};
+}
+
 }  // namespace linkage::cli
 
 namespace linkage::cli {
-int cycleFigure(int argc, char** argv);  // cycle_figure.cpp: `linkage-cli timing --out`
+Command cycleDiagramCommand(Parser& parser);  // cycle_figure.cpp: `linkage-cli timing --out`
 }
 
 int main(int argc, char** argv) {
-  linkage::cli::executablePath = linkage::runningExecutable(argc > 0 ? argv[0] : "");
-  if (argc > 1 && std::string(argv[1]) == "--cycle-diagram")
-    return linkage::cli::cycleFigure(argc - 2, argv + 2);
-  return linkage::cli::plot(argc - 1, argv + 1);
+  using namespace linkage::cli;
+  executablePath = linkage::runningExecutable(argc > 0 ? argv[0] : "");
+  Parser parser("linkage-plot", kProgramHelp);
+  const std::vector<Command> commands = {plotCommand(parser), cycleDiagramCommand(parser)};
+  return parser.run(commands, argc, argv);
 }

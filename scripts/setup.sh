@@ -18,10 +18,12 @@ fi
 BUILD_DIR=${1:-build}
 
 # The programs: linkage-cli (solver, file format; COIN-OR CLP for the balancing programmes, whose
-# pkg-config file names -lz: zlib1g-dev) and the editor linkage (Qt 6 Widgets, Svg,
-# QCustomPlot's Qt 6 build, giflib for animated GIFs); a font so that labels are not boxes.
+# pkg-config file names -lz: zlib1g-dev; CLI11, header-only, for its options and linkage-plot's)
+# and the editor linkage (Qt 6 Widgets, Svg, QCustomPlot's Qt 6 build, giflib for animated
+# GIFs); a font so that labels are not boxes.
 packages=(cmake ninja-build g++ pkg-config libeigen3-dev nlohmann-json3-dev coinor-libclp-dev
-  zlib1g-dev qt6-base-dev qt6-svg-dev libqcustomplot-dev libgif-dev fonts-dejavu-core)
+  zlib1g-dev libcli11-dev qt6-base-dev qt6-svg-dev libqcustomplot-dev libgif-dev
+  fonts-dejavu-core)
 # The tests: GoogleTest and GoogleMock (separate packages on Debian 12), Google Benchmark, a real X
 # server and a way to drive it (Xvfb, xdotool, ImageMagick's import), a comma-decimal locale,
 # pdftotext (poppler-utils) to read the labels of exported PDF figures, the freedesktop validators
