@@ -310,6 +310,52 @@ TEST_F(OveredgeCli, NeedleArmStaysInsideItsSlot) {
             std::string::npos)
       << info.out;
 }
+// The crank angles (degrees, in [0, 360)) where f crosses zero, bisected to the last bit.
+template <class F>
+std::vector<double> roots(F f) {
+  std::vector<double> out;
+  for (int i = 0; i < 3600; ++i) {
+    double a = i / 10.0, b = (i + 1) / 10.0;
+    const bool neg = f(a) < 0;
+    if (neg == (f(b) < 0)) continue;
+    for (int it = 0; it < 80; ++it) {
+      const double mid = (a + b) / 2;
+      ((f(mid) < 0) == neg ? a : b) = mid;
+    }
+    out.push_back((a + b) / 2);
+  }
+  return out;
+}
+
+TEST_F(OveredgeCli, TimingWindowsOfTheNeedleAndTheGripperPoint) {
+  // docs/timing.md's command: the needle point below y = 0 (roots of 71.8 - U - 55) and the
+  // gripper point right of the needle's line x = 41 (roots of K_x + 52 cos a5 - 41).
+  const std::vector<double> needle =
+      roots([](double deg) { return kH.imag() - needleArm(deg * kDeg, 1).u - kNeedle; });
+  const std::vector<double> grip = roots(
+      [](double deg) { return kK.real() + kP * std::cos(gripperRocker(deg * kDeg, 1).a) - kXs; });
+  ASSERT_EQ(needle.size(), 2u);
+  ASSERT_EQ(grip.size(), 2u);
+  const CliResult r =
+      run("timing overedge-needle-arm --window 'needle=needlearm.N:y<0' "
+          "--window 'gripper=gripper.P:x>41' --conflict needle,gripper");
+  EXPECT_EQ(r.exit, 4) << r.err;  // the windows overlap: the gripper takes the needle's loop
+  const std::vector<std::string> lines = r.lines();
+  ASSERT_EQ(lines.size(), 4u) << r.out;
+  EXPECT_EQ(lines[0], "window,from_deg,to_deg");
+  // The needle goes below first (it descends), the gripper point crosses going right and comes
+  // back after the turn: its window wraps past 360.
+  const double want[3][2] = {
+      {needle[0], needle[1]}, {grip[1], grip[0] + 360}, {grip[1], needle[1]}};
+  const char* names[3] = {"needle", "gripper", "conflict:needle+gripper"};
+  for (int i = 0; i < 3; ++i) {
+    const std::vector<std::string> f = fields(lines[i + 1]);
+    ASSERT_EQ(f.size(), 3u) << lines[i + 1];
+    EXPECT_EQ(f[0], names[i]);
+    EXPECT_NEAR(*parseNumber(f[1]), want[i][0], 1e-9) << f[0];
+    EXPECT_NEAR(*parseNumber(f[2]), want[i][1], 1e-9) << f[0];
+  }
+}
 #endif
 
 }  // namespace
