@@ -290,7 +290,7 @@ TEST(MachineExamples, CurvedGuidesBlockTurnsAboutTheArcsCentre) {
 }
 
 const char* const kExamples[] = {"lockstitch-arm-shaft", "gear-four-bar", "planet-epicycloid",
-                                 "curved-guide"};
+                                 "curved-guide", "overedge-needle-arm"};
 
 TEST(MachineExamples, FilesAreAsTheProgramSavesThem) {
   for (const char* name : kExamples) {

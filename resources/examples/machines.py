@@ -8,6 +8,8 @@
   curved-guide           a slider-crank whose block runs in an arc slot of the ground
   lockstitch-machine     the lockstitch arm shaft with a drop feed on a lower shaft belted 1:1,
                          a throat plate, and the windows and clearance of its cycle (issue 18)
+  overedge-needle-arm    seed 004's overedge needle arm drive in its plane (the paper's R1, L1,
+                         W1, W2, L2), with a lower gripper on a second crank (ours) (issue 18)
 
 Every coordinate is computed in 50-digit decimal arithmetic (only square roots are needed) and
 stored as the correctly rounded double, as generate.py does for the other examples; each file is
@@ -286,6 +288,120 @@ def lockstitch_machine_file(s, f):
     return base
 
 
+# ----------------------------------------------------------------------------------------------
+# Seed 004's overedge machine (Przytulski, Zajaczkowski), the planar part of its needle arm drive
+# with the paper's numbers, and a lower gripper (looper) whose dimensions are ours (the paper
+# gives none). Main shaft O at the origin, 6000 rpm ccw; crank R1 7.5 drawn straight up.
+# - The spatial crank-rocker R1 - L1 - W1 (ball-jointed link, rocker axis H inclined at rho = 23
+#   degrees) becomes a planar four-bar: crank 7.5, coupler 67, rocker 28.5, frame |OH| = 71.8,
+#   the paper's distance from A = (138, 73, 79) to H = (111, 134.5, 53.5). Grashof:
+#   7.5 + 71.8 = 79.3 < 67 + 28.5 = 95.5 with the crank shortest: a crank-rocker; W1 swings 30.5
+#   degrees.
+# - W2 41.5, rigid with W1, at 16.26 degrees ahead of it ((24/25, 7/25): exact in decimals);
+#   eq. 2a is an RRP dyad: link L2 16 to the needle arm, a block in a ground slot along u, the
+#   line x = X_H - X_G = 41 from H, u pointing down: U = L2 cos b2 - W2 sin a2 with a2 the angle
+#   of W2 from x (counter-clockwise) and sin b2 = (41 - W2 cos a2) / L2. W2 swings from -20.1 to
+#   10.4 degrees, where |41 - 41.5 cos a2| <= 2.1 < 16: it always assembles. The needle point N
+#   is 55 below the block's pin G; it travels from 8.30 above y = 0 to 13.34 below (stroke 21.64).
+# - The lower gripper: a second crank pin D = (-6, 8) on the main shaft (R2 10, 36.87 degrees ahead
+#   of R1), link L3 55 to the rocker W3 24 about F = (-10, -55) (Grashof: 10 + 55.90 < 55 + 24, a
+#   crank-rocker; W3 swings 49.9 degrees); W4 20 on the same body, 77.32 degrees behind W3 ((9/41,
+#   -40/41)); link L4 42 to W5 22 about K = (30, -60), the gripper's rocker, its point P 52 from K
+#   on the line K -> M. W4 - L4 - W5 on |FK| = 40.31 (eq. 4a) is Grashof with W4 shortest
+#   (20 + 42 < 22 + 40.31), so W5 follows W4's 49.9 degree swing without a dead point
+#   (transmission angle 57 to 101 degrees); W5 swings 45.7 degrees. P crosses the needle's line
+#   x = 41 going right at crank 183 degrees, 26 degrees after the needle's lowest position.
+OV_R1, OV_L1, OV_W1, OV_W2, OV_L2 = D("7.5"), D(67), D("28.5"), D("41.5"), D(16)
+OV_H, OV_XS, OV_NEEDLE = (D(0), D("71.8")), D(41), D(55)
+OV_PHASE2 = (D(24) / 25, D(7) / 25)  # W2 from W1
+OV_D, OV_F, OV_K = (D(-6), D(8)), (D(-10), D(-55)), (D(30), D(-60))
+OV_L3, OV_W3, OV_W4, OV_L4, OV_W5, OV_P = D(55), D(24), D(20), D(42), D(22), D(52)
+OV_PHASE4 = (D(9) / 41, D(-40) / 41)  # W4 from W3
+
+
+def turned(c, p, rot, scale):
+    """c + scale * (p - c) turned by rot = (cos, sin)."""
+    v = (p[0] - c[0], p[1] - c[1])
+    return (c[0] + scale * (rot[0] * v[0] - rot[1] * v[1]),
+            c[1] + scale * (rot[1] * v[0] + rot[0] * v[1]))
+
+
+def overedge_sketch():
+    A = (D(0), OV_R1)
+    B = circles(A, OV_L1, OV_H, OV_W1, left=False)  # W1 to the right of H, pointing down
+    C = turned(OV_H, B, OV_PHASE2, OV_W2 / OV_W1)
+    dx = OV_XS - C[0]
+    G = (OV_XS, C[1] - (OV_L2 * OV_L2 - dx * dx).sqrt())  # the needle arm below W2's end
+    N = (OV_XS, G[1] - OV_NEEDLE)
+    E = circles(OV_D, OV_L3, OV_F, OV_W3, left=False)
+    Q = turned(OV_F, E, OV_PHASE4, OV_W4 / OV_W3)
+    M = circles(Q, OV_L4, OV_K, OV_W5, left=True)  # W5 up from K
+    P = along(OV_K, M, OV_W5, OV_P)
+    return {"A": A, "B": B, "C": C, "G": G, "N": N, "E": E, "Q": Q, "M": M, "P": P}
+
+
+def overedge_file(s):
+    O, H, F, K = (0, 0), OV_H, OV_F, OV_K
+    return linkage_file(
+        "Overedge needle arm (seed 004, planar part) and lower gripper on a second crank",
+        bodies(
+            ("ground", 1, {"O": O, "H": H, "F": F, "K": K}, {"u": [(41, 75), (41, 30)]}),
+            ("main", 2, {"O": O, "A": s["A"], "D": OV_D}, None),
+            ("needlerod", 3, {"A": s["A"], "B": s["B"]}, None),
+            ("needlerock", 4, {"H": H, "B": s["B"], "C": s["C"]}, None),
+            ("needlelink", 5, {"C": s["C"], "G": s["G"]}, None),
+            ("needlearm", 6, {"G": s["G"], "N": s["N"]}, None),
+            ("gripperrod", 7, {"D": OV_D, "E": s["E"]}, None),
+            ("gripperrock", 8, {"F": F, "E": s["E"], "Q": s["Q"]}, None),
+            ("gripperlink", 9, {"Q": s["Q"], "M": s["M"]}, None),
+            ("gripper", 10, {"K": K, "M": s["M"], "P": s["P"]}, None),
+        ),
+        [
+            pin("ground.O", "main.O"),
+            pin("main.A", "needlerod.A"),
+            pin("needlerod.B", "needlerock.B"),
+            pin("needlerock.H", "ground.H"),
+            pin("needlerock.C", "needlelink.C"),
+            pin("needlelink.G", "needlearm.G"),
+            {"type": "slider", "a": "needlearm.G", "slot": "ground.u"},
+            pin("main.D", "gripperrod.D"),
+            pin("gripperrod.E", "gripperrock.E"),
+            pin("gripperrock.F", "ground.F"),
+            pin("gripperrock.Q", "gripperlink.Q"),
+            pin("gripperlink.M", "gripper.M"),
+            pin("gripper.K", "ground.K"),
+        ],
+        {"joint": 0, "rpm": 6000, "direction": "ccw"},
+        ["needlearm.N", "gripper.P"])
+
+
+def overedge_numbers():
+    """Printed for README.md and the comments above: the swings, the needle's travel and where the
+    gripper point crosses the needle's line, sampled every 0.01 degree (floats)."""
+    def at(deg):
+        t = math.radians(deg)
+        A = (D(-7.5 * math.sin(t)), D(7.5 * math.cos(t)))
+        B = circles(A, OV_L1, OV_H, OV_W1, left=False)
+        C = turned(OV_H, B, OV_PHASE2, OV_W2 / OV_W1)
+        dx = OV_XS - C[0]
+        Gy = C[1] - (OV_L2 * OV_L2 - dx * dx).sqrt()
+        Dp = (D(-6 * math.cos(t) - 8 * math.sin(t)), D(-6 * math.sin(t) + 8 * math.cos(t)))
+        E = circles(Dp, OV_L3, OV_F, OV_W3, left=False)
+        Q = turned(OV_F, E, OV_PHASE4, OV_W4 / OV_W3)
+        M = circles(Q, OV_L4, OV_K, OV_W5, left=True)
+        P = along(OV_K, M, OV_W5, OV_P)
+        ang = lambda c, p: math.degrees(math.atan2(float(p[1] - c[1]), float(p[0] - c[0])))
+        return ang(OV_H, C), float(Gy - OV_NEEDLE), ang(OV_F, E), ang(OV_K, M), float(P[0])
+    rows = [at(k / 100) for k in range(36000)]
+    for i, what in enumerate(("a2", "needle y", "a3", "a5")):
+        v = [r[i] % 360 if what == "a3" else r[i] for r in rows]
+        print(f"  {what}: {min(v):.4f} to {max(v):.4f}")
+    low = min(range(36000), key=lambda k: rows[k][1])
+    cross = [k / 100 for k in range(1, 36000) if rows[k - 1][4] < 41 <= rows[k][4]]
+    print(f"  needle lowest at crank {low / 100} deg; gripper point crosses x = 41 going right at "
+          f"{cross} deg")
+
+
 def main():
     s = lockstitch_sketch()
     write("lockstitch-arm-shaft.linkage.json", lockstitch_file(s))
@@ -301,6 +417,10 @@ def main():
     A, B = curved_guide_sketch()
     write("curved-guide.linkage.json", curved_guide_file())
     print(f"curved-guide: A = {tuple(rounded(A))}, B = {tuple(rounded(B))}")
+    o = overedge_sketch()
+    write("overedge-needle-arm.linkage.json", overedge_file(o))
+    print("overedge-needle-arm: " + ", ".join(f"{k} = {tuple(rounded(v))}" for k, v in o.items()))
+    overedge_numbers()
 
 
 if __name__ == "__main__":
