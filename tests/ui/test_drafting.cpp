@@ -5,6 +5,7 @@
 #include "ui_test.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDockWidget>
 #include <QFile>
 #include <QFileDialog>
@@ -15,6 +16,7 @@
 
 #include "canvas/canvas_view.h"
 #include "dialogs.h"
+#include "document/commands.h"
 #include "document/document.h"
 #include "drawing.h"
 #include "linkage/edits.h"
@@ -164,6 +166,35 @@ TEST(Drafting, APointIsPlacedByItsDistanceAndAngleFromAnother) {
   type(fieldOf(w, "Distance [mm]"), "30");
   EXPECT_EQ(w.document()->design().point(p)->pos, Vec2(a.x(), a.y() + 30));
   EXPECT_TRUE(w.document()->solved());
+}
+
+// The monkey test found it: the rows of a point's distance and angle read the point they are
+// measured from; an undo that takes that point away must make them again, not read it.
+TEST(Drafting, UndoingThePointADistanceIsMeasuredFromRemakesTheRows) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  Document* doc = w.document();
+  const PointId p = *doc->design().findPoint("coupler.P");
+  Mechanism next = doc->design();
+  const PointId extra = addBodyPoint(next, next.point(p)->body, Vec2(1, 2));
+  commitEdit(doc, "Add point", next);
+  w.tools().selection()->add(p);
+  auto* from = qobject_cast<QComboBox*>(w.properties().panel()->field("From"));
+  ASSERT_NE(from, nullptr);
+  const QString extraName = QString::fromStdString(doc->design().point(extra)->name);
+  const int i = from->findText(extraName);
+  ASSERT_GE(i, 0);
+  from->setCurrentIndex(i);
+  doc->undoStack()->undo();
+  QCoreApplication::processEvents();
+  ASSERT_FALSE(doc->design().contains(extra));
+  from = qobject_cast<QComboBox*>(w.properties().panel()->field("From"));
+  ASSERT_NE(from, nullptr);
+  EXPECT_EQ(from->findText(extraName), -1);
+  EXPECT_FALSE(fieldOf(w, "Distance [mm]")->text().isEmpty());
+  doc->undoStack()->redo();
+  QCoreApplication::processEvents();
+  EXPECT_TRUE(doc->design().contains(extra));
 }
 
 TEST(Drafting, ASliderBlockIsSelectedByAClickAgainAndRenamed) {

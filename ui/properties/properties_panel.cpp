@@ -126,8 +126,12 @@ void PropertiesPanel::rebuild() {
         if (p.body == b) shape += QStringLiteral(" %1").arg(p.id.value);
       shape += loadsShape(m, b, PointId{});
     } else if (!selection_->points.empty() && m.contains(selection_->points[0])) {
-      shape = QStringLiteral("point %1").arg(selection_->points[0].value) +
-              loadsShape(m, BodyId{}, selection_->points[0]);
+      // Its distance and angle are from another point of its link (fillPolar): those too.
+      const Point* pt = m.point(selection_->points[0]);
+      shape = QStringLiteral("point %1 on %2 with").arg(pt->id.value).arg(pt->body.value);
+      for (const Point& p : m.points)
+        if (p.body == pt->body) shape += QStringLiteral(" %1").arg(p.id.value);
+      shape += loadsShape(m, BodyId{}, selection_->points[0]);
     } else if (!selection_->joints.empty() && m.contains(selection_->joints[0])) {
       const Joint* j = m.joint(selection_->joints[0]);
       shape = QStringLiteral("joint %1 type %2 at %3")
