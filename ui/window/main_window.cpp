@@ -65,6 +65,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   createDocks();
   createDesignChecks();
   createForces();
+  createMechanisms();
   dock("properties")->raise();  // the default front tab on the right (a saved layout may differ)
   createMenus();
   createToolBars();
@@ -324,6 +325,7 @@ void MainWindow::showDesignStatus() {
         break;
       }
   }
+  if (text.isEmpty()) text = scene_->slotWarningText();
   strip_->setProblem(text);
 }
 

@@ -29,6 +29,7 @@ class DesignChoices;
 class DesignOverlays;
 class Document;
 class InspectorPanel;
+class MechanismsPanel;
 class MessageStrip;
 class PropertiesPanel;
 class PlotsPanel;
@@ -55,6 +56,7 @@ class MainWindow : public QMainWindow {
   PropertiesPanel* properties() const { return properties_; }
   PlotsPanel* plots() const { return plots_; }
   ForcesPanel* forcesPanel() const { return forces_; }
+  MechanismsPanel* mechanismsPanel() const { return mechanisms_; }
   CrankBar* crankBar() const { return crankBar_; }
   Toolbox* toolbox() const { return toolbox_; }
   Selection* selection() const { return selection_; }
@@ -120,6 +122,7 @@ class MainWindow : public QMainWindow {
   QMenu* addAnalysisMenu();
   void createForces();  // main_window_forces.cpp
   void addForcesMenuEntries(QMenu* analysis, QMenu* exports);
+  void createMechanisms();  // main_window_mechanisms.cpp
   void connectDocument();
   QAction* makeAction(const QString& name, const QString& text, const QKeySequence& key,
                       const QString& tip);
@@ -180,6 +183,7 @@ class MainWindow : public QMainWindow {
   StudyDialog* study_ = nullptr;
   ForcesPanel* forces_ = nullptr;
   BalanceDialog* balance_ = nullptr;
+  MechanismsPanel* mechanisms_ = nullptr;
 };
 
 }  // namespace linkage::ui

@@ -209,7 +209,7 @@ void MainWindow::createMenus() {
                         "showTransmission", "darkPalette", "detachablePanels"})
     view->addAction(action(a));
   view->addSeparator();
-  for (const char* d : {"properties", "centres", "plots", "forces", "designChecks"})
+  for (const char* d : {"properties", "centres", "plots", "forces", "designChecks", "mechanisms"})
     view->addAction(dock(d)->toggleViewAction());
 
   QMenu* anim = menuBar()->addMenu(tr("&Animation"));
