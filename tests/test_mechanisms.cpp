@@ -148,6 +148,34 @@ TEST(Mechanisms, TheFileKeepsNamesColoursAndVisibility) {
   EXPECT_EQ(serializeMechanism(*r.mechanism), text);
 }
 
+// Two named mechanisms joined by a new link: the merged one keeps the first's entry; once it
+// is renamed, no body is left in two entries, and the file reads back.
+TEST(Mechanisms, JoinedMechanismsWriteAFileThatReadsBack) {
+  test::FourBar f = twoFourBars();
+  Mechanism& m = f.m;
+  std::vector<SubMechanism> all = subMechanisms(m);
+  setSubMechanismLook(m, all[1], "first", "", false);
+  setSubMechanismLook(m, all[2], "second", "", true);
+  const BodyId bridge = m.addBody("bridge");
+  m.addPin(m.addPoint(bridge, "R", Vec2(0, 50)),
+           m.addPoint(m.bodyNamed("rocker")->id, "X", Vec2(0, 50)));
+  m.addPin(m.addPoint(bridge, "S", Vec2(0, 60)),
+           m.addPoint(m.bodyNamed("rocker2")->id, "X", Vec2(0, 60)));
+  all = subMechanisms(m);
+  // Both linkages joined: the crank drives one linkage now and belongs to it.
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_EQ(all[0].name, "first");  // a tie of 2 bodies each: the earlier entry
+  setSubMechanismLook(m, all[0], "both", "#2ca02c", false);
+  LoadResult r = parseMechanism(serializeMechanism(m));
+  ASSERT_TRUE(r.mechanism) << r.error;
+  all = subMechanisms(*r.mechanism);
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_EQ(all[0].name, "both");
+  EXPECT_EQ(all[0].colour, "#2ca02c");
+  EXPECT_FALSE(all[0].hidden);
+  EXPECT_EQ(r.mechanism->mechanismEntries.size(), 1u);  // the second's bodies all given up
+}
+
 std::string refusal(const std::string& mechanisms) {
   const std::string text =
       R"({"format": "linkage", "version": 1, "bodies": [{"name": "ground", "ground": true,

@@ -1,4 +1,5 @@
 // Writing mechanism files, and comparing mechanisms the way a file sees them.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -221,10 +222,15 @@ Json loadJson(const Labels& labels, const Load& l) {
 // names nothing and is dropped).
 Json mechanismsJson(const Mechanism& m) {
   Json out = Json::array();
+  std::vector<BodyId> written;  // a body in one entry only, as the reader requires
   for (const MechanismEntry& e : m.mechanismEntries) {
     Json bodies = Json::array();
     for (BodyId id : e.bodies)
-      if (const Body* b = m.body(id)) bodies.push_back(b->name);
+      if (const Body* b = m.body(id);
+          b && std::find(written.begin(), written.end(), id) == written.end()) {
+        bodies.push_back(b->name);
+        written.push_back(id);
+      }
     if (bodies.empty()) continue;
     Json j = Json::object();
     j["bodies"] = std::move(bodies);

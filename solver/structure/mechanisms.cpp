@@ -182,6 +182,18 @@ void setSubMechanismLook(Mechanism& m, const SubMechanism& s, const std::string&
   e.colour = colour;
   e.hidden = hidden;
   const bool defaults = e.name.empty() && e.colour.empty() && !e.hidden && e.extras.empty();
+  // Other entries give up these bodies (mechanisms joined by an edit): a body in two entries
+  // would make the file ambiguous, and the reader refuses it.
+  for (size_t i = 0; i < m.mechanismEntries.size(); ++i) {
+    if (known && int(i) == s.entry) continue;
+    std::vector<BodyId>& other = m.mechanismEntries[i].bodies;
+    other.erase(std::remove_if(other.begin(), other.end(),
+                               [&](BodyId b) {
+                                 return std::find(s.bodies.begin(), s.bodies.end(), b) !=
+                                        s.bodies.end();
+                               }),
+                other.end());
+  }
   if (known && defaults)
     m.mechanismEntries.erase(m.mechanismEntries.begin() + s.entry);
   else if (known)
