@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "canvas/canvas_scene.h"
+#include "canvas/gear_item.h"
 #include "document/commands.h"
 #include "document/document.h"
 #include "linkage/io/model_file.h"
@@ -62,6 +63,17 @@ TEST(MechanismsPanel, RenameColourAndHideAreUndoableAndSaved) {
   EXPECT_EQ(m.body("rod")->colour(), QColor("#1f77b4"));
   EXPECT_EQ(m.body("needlebar")->colour(), QColor("#1f77b4"));
   EXPECT_NE(m.body("takeup")->colour(), QColor("#1f77b4"));
+  // The feed shaft's belt pulley is the feed mechanism's; the arm shaft's end keeps its own.
+  ASSERT_TRUE(m.panel.setColour(4, QColor("#2ca02c")));
+  int belts = 0;
+  for (JointItem* j : m.scene.jointItems())
+    if (auto* g = dynamic_cast<GearItem*>(j); g && g->body(1) == m.body("feedshaft")->id()) {
+      ++belts;
+      EXPECT_EQ(g->bodyColour(1), QColor("#2ca02c"));
+      EXPECT_NE(g->bodyColour(0), QColor("#2ca02c"));
+    }
+  EXPECT_EQ(belts, 1);
+  undo->undo();
   ASSERT_TRUE(m.panel.setHidden(3, true));  // the hook
   EXPECT_EQ(undo->count(), 3);
   EXPECT_FALSE(m.panel.setHidden(3, true));  // nothing to change: no undo step

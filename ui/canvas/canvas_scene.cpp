@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "canvas/dynamics_marks.h"
+#include "canvas/gear_item.h"
 #include "canvas/traces.h"
 #include "document/document.h"
 #include "elements/element_ui.h"
@@ -242,7 +243,16 @@ void CanvasScene::applyMechanisms() {
                      ? QColor(QString::fromStdString(mechanisms_[k].colour))
                      : QColor());
   }
-  for (JointItem* j : joints_) j->setVisible(!jointHidden(j->joint()));
+  for (JointItem* j : joints_) {
+    j->setVisible(!jointHidden(j->joint()));
+    if (auto* g = dynamic_cast<GearItem*>(j))
+      for (int side : {0, 1}) {
+        const int k = subMechanismOf(mechanisms_, g->body(side));
+        g->setBodyColour(side, k >= 0 && !mechanisms_[k].colour.empty()
+                                   ? QColor(QString::fromStdString(mechanisms_[k].colour))
+                                   : QColor());
+      }
+  }
   for (OutputItem* o : outputs_) {
     const Point* p = m.point(o->point());
     o->setVisible(!p || !bodyHidden(p->body));
