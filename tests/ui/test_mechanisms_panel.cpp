@@ -63,6 +63,8 @@ TEST(MechanismsPanel, RenameColourAndHideAreUndoableAndSaved) {
   EXPECT_EQ(m.body("rod")->colour(), QColor("#1f77b4"));
   EXPECT_EQ(m.body("needlebar")->colour(), QColor("#1f77b4"));
   EXPECT_NE(m.body("takeup")->colour(), QColor("#1f77b4"));
+  ASSERT_EQ(m.scene.blockItems().size(), 1u);  // the needle bar's block
+  EXPECT_EQ(m.scene.blockItems()[0]->colour(), QColor("#1f77b4"));
   // The feed shaft's belt pulley is the feed mechanism's; the arm shaft's end keeps its own.
   ASSERT_TRUE(m.panel.setColour(4, QColor("#2ca02c")));
   int belts = 0;

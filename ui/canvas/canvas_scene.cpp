@@ -236,22 +236,22 @@ void CanvasScene::applyMechanisms() {
   auto jointHidden = [&](JointId j) {
     return std::find(hiddenJoints.begin(), hiddenJoints.end(), j) != hiddenJoints.end();
   };
+  // A coloured mechanism's colour; invalid: each body its own.
+  auto colourOf = [&](BodyId b) {
+    const int k = subMechanismOf(mechanisms_, b);
+    return k >= 0 && !mechanisms_[k].colour.empty()
+               ? QColor(QString::fromStdString(mechanisms_[k].colour))
+               : QColor();
+  };
   for (BodyItem* b : bodies_) {
     b->setVisible(!bodyHidden(b->id()));
-    const int k = subMechanismOf(mechanisms_, b->id());
-    b->setColour(k >= 0 && !mechanisms_[k].colour.empty()
-                     ? QColor(QString::fromStdString(mechanisms_[k].colour))
-                     : QColor());
+    b->setColour(colourOf(b->id()));
   }
   for (JointItem* j : joints_) {
     j->setVisible(!jointHidden(j->joint()));
+    if (auto* b = dynamic_cast<BlockItem*>(j)) b->setColour(colourOf(b->body()));
     if (auto* g = dynamic_cast<GearItem*>(j))
-      for (int side : {0, 1}) {
-        const int k = subMechanismOf(mechanisms_, g->body(side));
-        g->setBodyColour(side, k >= 0 && !mechanisms_[k].colour.empty()
-                                   ? QColor(QString::fromStdString(mechanisms_[k].colour))
-                                   : QColor());
-      }
+      for (int side : {0, 1}) g->setBodyColour(side, colourOf(g->body(side)));
   }
   for (OutputItem* o : outputs_) {
     const Point* p = m.point(o->point());
