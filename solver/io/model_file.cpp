@@ -16,6 +16,7 @@
 #include "io/forces_read.h"
 #include "io/json_read.h"
 #include "io/json_tree.h"
+#include "io/mechanisms_read.h"
 #include "linkage/elements.h"
 #include "linkage/guide.h"
 #include "linkage/io/model_file.h"
@@ -46,14 +47,12 @@ class Reader {
       readLoads(
           *l, "loads", m_,
           [this](const Json& v, const std::string& at) { return readPointRef(v, at).first; },
-          [this](const Json& v, const std::string& at) {
-            const std::string& name = getString(v, at);
-            auto it = bodies_.find(name);
-            if (it == bodies_.end()) refuse(at, "no body " + literal(name));
-            return it->second.id;
-          });
+          [this](const Json& v, const std::string& at) { return bodyRef(v, at); });
+    if (const Json* e = find(root, "mechanisms"))
+      readMechanismEntries(*e, "mechanisms", m_,
+                           [this](const Json& v, const std::string& at) { return bodyRef(v, at); });
     m_.extras = unknownFields(root, {"format", "version", "name", "units", "bodies", "joints",
-                                     "driver", "outputs", "gravity", "loads"});
+                                     "driver", "outputs", "gravity", "loads", "mechanisms"});
     return std::move(m_);
   }
 
@@ -66,6 +65,13 @@ class Reader {
   };
   Mechanism m_;
   std::unordered_map<std::string, BodyNames> bodies_;
+
+  BodyId bodyRef(const Json& v, const std::string& at) const {
+    const std::string& name = getString(v, at);
+    auto it = bodies_.find(name);
+    if (it == bodies_.end()) refuse(at, "no body " + literal(name));
+    return it->second.id;
+  }
 
   void readHeader(const Json& root) {
     const Json& format = require(root, "format", "");

@@ -1,4 +1,5 @@
 // Writing mechanism files, and comparing mechanisms the way a file sees them.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -217,6 +218,31 @@ Json loadJson(const Labels& labels, const Load& l) {
   return j;
 }
 
+// The entries with the bodies that are still there (an entry whose bodies were all removed
+// names nothing and is dropped).
+Json mechanismsJson(const Mechanism& m) {
+  Json out = Json::array();
+  std::vector<BodyId> written;  // a body in one entry only, as the reader requires
+  for (const MechanismEntry& e : m.mechanismEntries) {
+    Json bodies = Json::array();
+    for (BodyId id : e.bodies)
+      if (const Body* b = m.body(id);
+          b && std::find(written.begin(), written.end(), id) == written.end()) {
+        bodies.push_back(b->name);
+        written.push_back(id);
+      }
+    if (bodies.empty()) continue;
+    Json j = Json::object();
+    j["bodies"] = std::move(bodies);
+    if (!e.name.empty()) j["name"] = e.name;
+    if (!e.colour.empty()) j["colour"] = e.colour;
+    if (e.hidden) j["hidden"] = true;
+    appendExtras(j, e.extras, {"bodies", "name", "colour", "hidden"});
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string serializeMechanism(const Mechanism& m) {
@@ -260,9 +286,10 @@ std::string serializeMechanism(const Mechanism& m) {
     for (const Load& l : m.loads) loads.push_back(loadJson(labels, l));
     doc["loads"] = std::move(loads);
   }
+  if (Json e = mechanismsJson(m); !e.empty()) doc["mechanisms"] = std::move(e);
   appendExtras(doc, m.extras,
                {"format", "version", "name", "units", "bodies", "joints", "driver", "outputs",
-                "gravity", "loads"});
+                "gravity", "loads", "mechanisms"});
   std::string out;
   emit(doc, 0, out);
   out += "\n";
@@ -326,6 +353,27 @@ std::string compareBody(const Mechanism& ma, const Body& a, const Mechanism& mb,
     if (sa[i]->arc() != sb[i]->arc()) return w + ": an arc in only one";
     if (sa[i]->mid)
       if (auto d = compareVec(*sa[i]->mid, *sb[i]->mid, w + ".mid"); !d.empty()) return d;
+  }
+  return {};
+}
+
+// The mechanisms' names, colours and visibility, their bodies by name.
+std::string compareEntries(const Mechanism& a, const Mechanism& b) {
+  if (a.mechanismEntries.size() != b.mechanismEntries.size())
+    return "mechanisms: different lengths";
+  auto names = [](const Mechanism& m, const MechanismEntry& e) {
+    std::vector<std::string> out;
+    for (BodyId id : e.bodies)
+      if (const Body* body = m.body(id)) out.push_back(body->name);
+    return out;
+  };
+  for (size_t i = 0; i < a.mechanismEntries.size(); ++i) {
+    const MechanismEntry &x = a.mechanismEntries[i], &y = b.mechanismEntries[i];
+    const std::string w = "mechanisms[" + std::to_string(i) + "]";
+    if (names(a, x) != names(b, y) || x.name != y.name || x.colour != y.colour ||
+        x.hidden != y.hidden)
+      return w + " differs";
+    if (auto d = compareExtras(x.extras, y.extras, w); !d.empty()) return d;
   }
   return {};
 }
@@ -396,6 +444,7 @@ std::string mechanismDifference(const Mechanism& a, const Mechanism& b) {
     if (a.pointLabel(a.outputs[i]) != b.pointLabel(b.outputs[i]))
       return "outputs.points[" + std::to_string(i) + "] differs";
   if (auto d = compareExtras(a.outputsExtras, b.outputsExtras, "outputs"); !d.empty()) return d;
+  if (auto d = compareEntries(a, b); !d.empty()) return d;
   return compareForces(a, b);
 }
 

@@ -121,6 +121,27 @@ void BodyItem::setFlagged(bool on) {
   update();
 }
 
+void BodyItem::setFlaggedSlots(std::vector<SlotId> slots) {
+  if (slots == flaggedSlots_) return;
+  flaggedSlots_ = std::move(slots);
+  update();
+}
+
+bool BodyItem::slotFlagged(SlotId s) const {
+  return std::find(flaggedSlots_.begin(), flaggedSlots_.end(), s) != flaggedSlots_.end();
+}
+
+void BodyItem::setColour(const QColor& c) {
+  if (c == colour_) return;
+  colour_ = c;
+  if (label_) label_->setColours(colour(), style().paper);
+  update();
+}
+
+QColor BodyItem::colour() const {
+  return colour_.isValid() ? colour_ : style().body(g_.body.number);
+}
+
 QPolygonF bodyOutline(const Drawing::Body& b, double px) {
   const double r = CanvasStyle::barWidth / 2 * px;
   const std::vector<Vec2>& o = b.outline;
@@ -179,7 +200,7 @@ void BodyItem::rebuild() {
       }
     }
   }
-  if (label_) label_->setColours(style().body(g_.body.number), style().paper);
+  if (label_) label_->setColours(colour(), style().paper);
 }
 
 QRectF BodyItem::boundingRect() const {
@@ -192,7 +213,7 @@ QRectF BodyItem::boundingRect() const {
 
 void BodyItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
   const CanvasStyle& st = style();
-  const QColor line = flagged_ ? st.warning : st.body(g_.body.number);
+  const QColor line = flagged_ ? st.warning : colour();
   p->setRenderHint(QPainter::Antialiasing);
   // Cosmetic pens: widths in pixels, which the raster engine strokes on its fast path.
   QPen pen = cosmetic(line, hovered_ || flagged_ ? 2.5 : CanvasStyle::outline);
@@ -212,12 +233,14 @@ void BodyItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
   };
   if (!body_.isEmpty())
     shape(body_,
-          flagged_ ? QColor(st.warning.red(), st.warning.green(), st.warning.blue(), 60)
-                   : st.bodyFill(g_.body.number),
+          flagged_ ? QColor(st.warning.red(), st.warning.green(), st.warning.blue(), 60) : fill(),
           pen);
   const QPen wall =
       cosmetic(g_.body.shape == Drawing::Shape::Ground ? st.ink : line, CanvasStyle::outline);
-  for (const QPolygonF& c : channels_) shape(c, st.paper, wall);
+  const QPen warned = cosmetic(st.warning, 2.5);
+  for (size_t i = 0; i < channels_.size(); ++i)
+    shape(channels_[i], st.paper,
+          i < g_.slotIds.size() && slotFlagged(g_.slotIds[i]) ? warned : wall);
   if (!hatch_.isEmpty()) {
     p->setPen(cosmetic(st.faint, 1));
     p->drawLines(hatch_);
@@ -229,6 +252,13 @@ void BodyItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
     if (drawable(g_))
       for (const Vec2& pt : g_.points) p->drawEllipse(toQt(pt), r, r);
   }
+}
+
+QColor BodyItem::fill() const {
+  if (!colour_.isValid()) return style().bodyFill(g_.body.number);
+  QColor c = colour_;
+  c.setAlphaF(style().dark ? 0.30 : 0.22);
+  return c;
 }
 
 void BodyItem::hoverEnterEvent(QGraphicsSceneHoverEvent*) {

@@ -15,8 +15,9 @@ namespace linkage::ui {
 
 struct BodyGeometry {
   Drawing::Body body;
-  std::vector<Guide> slots;  // sketch coordinates: straight, or arcs
-  std::vector<Vec2> points;  // sketch coordinates
+  std::vector<Guide> slots;     // sketch coordinates: straight, or arcs
+  std::vector<SlotId> slotIds;  // of each slot
+  std::vector<Vec2> points;     // sketch coordinates
 };
 
 class BodyItem : public CanvasItem {
@@ -29,6 +30,12 @@ class BodyItem : public CanvasItem {
   // Drawn in the warning colour (a body the solver names: free, or at a joint that fails).
   void setFlagged(bool on);
   bool flagged() const { return flagged_; }
+  // Slots drawn in the warning colour (a block or pin runs out of them).
+  void setFlaggedSlots(std::vector<SlotId> slots);
+  bool slotFlagged(SlotId s) const;
+  // Its mechanism's colour (linkage/mechanisms.h); invalid: the body's own, by its number.
+  void setColour(const QColor& c);
+  QColor colour() const;
 
   QRectF boundingRect() const override;
   QPainterPath shape() const override { return shape_; }
@@ -37,6 +44,7 @@ class BodyItem : public CanvasItem {
 
  protected:
   void rebuild() override;
+  QColor fill() const;
   void hoverEnterEvent(QGraphicsSceneHoverEvent*) override;
   void hoverLeaveEvent(QGraphicsSceneHoverEvent*) override;
 
@@ -48,6 +56,8 @@ class BodyItem : public CanvasItem {
   QVector<QLineF> hatch_;
   LabelItem* label_ = nullptr;
   bool hovered_ = false, flagged_ = false;
+  std::vector<SlotId> flaggedSlots_;
+  QColor colour_;
 };
 
 // The outline with rounded ends around the segment a-b at distance r (a disc when a = b), as a

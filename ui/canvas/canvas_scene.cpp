@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "canvas/dynamics_marks.h"
+#include "canvas/gear_item.h"
 #include "canvas/traces.h"
 #include "document/document.h"
 #include "elements/element_ui.h"
@@ -21,7 +22,10 @@ BodyGeometry geometryOf(const Mechanism& m, const Drawing::Body& b) {
   g.body = b;
   for (const Slot& s : m.slots)
     if (s.body == b.id)
-      if (const std::optional<Guide> guide = guideOf(s)) g.slots.push_back(*guide);
+      if (const std::optional<Guide> guide = guideOf(s)) {
+        g.slots.push_back(*guide);
+        g.slotIds.push_back(s.id);
+      }
   for (const Point& p : m.points)
     if (p.body == b.id) g.points.push_back(p.pos);
   return g;
@@ -204,6 +208,7 @@ void CanvasScene::rebuild() {
     addItem(item);
     outputs_.push_back(item);
   }
+  applyMechanisms();
   extent_ = QRectF();
   if (solverShown_) {
     const auto [lo, hi] = motionExtent(k);
@@ -212,6 +217,47 @@ void CanvasScene::rebuild() {
   updateScale();
   updateTraces();
   updatePose();
+}
+
+bool CanvasScene::bodyHidden(BodyId b) const {
+  return std::find(hidden_.begin(), hidden_.end(), b) != hidden_.end();
+}
+
+void CanvasScene::applyMechanisms() {
+  const Mechanism& m = shownMechanism();
+  mechanisms_ = subMechanisms(m);
+  hidden_.clear();
+  std::vector<JointId> hiddenJoints;
+  for (const SubMechanism& s : mechanisms_)
+    if (s.hidden) {
+      hidden_.insert(hidden_.end(), s.bodies.begin(), s.bodies.end());
+      hiddenJoints.insert(hiddenJoints.end(), s.joints.begin(), s.joints.end());
+    }
+  auto jointHidden = [&](JointId j) {
+    return std::find(hiddenJoints.begin(), hiddenJoints.end(), j) != hiddenJoints.end();
+  };
+  // A coloured mechanism's colour; invalid: each body its own.
+  auto colourOf = [&](BodyId b) {
+    const int k = subMechanismOf(mechanisms_, b);
+    return k >= 0 && !mechanisms_[k].colour.empty()
+               ? QColor(QString::fromStdString(mechanisms_[k].colour))
+               : QColor();
+  };
+  for (BodyItem* b : bodies_) {
+    b->setVisible(!bodyHidden(b->id()));
+    b->setColour(colourOf(b->id()));
+  }
+  for (JointItem* j : joints_) {
+    j->setVisible(!jointHidden(j->joint()));
+    if (auto* b = dynamic_cast<BlockItem*>(j)) b->setColour(colourOf(b->body()));
+    if (auto* g = dynamic_cast<GearItem*>(j))
+      for (int side : {0, 1}) g->setBodyColour(side, colourOf(g->body(side)));
+  }
+  for (OutputItem* o : outputs_) {
+    const Point* p = m.point(o->point());
+    o->setVisible(!p || !bodyHidden(p->body));
+  }
+  if (driver_ && m.driver) driver_->setVisible(!jointHidden(m.driver->joint));
 }
 
 void CanvasScene::updatePose() {
@@ -240,7 +286,9 @@ void CanvasScene::updatePose() {
 
 std::vector<Drawing::Centre> CanvasScene::determinedCentres(const Kinematics& k) const {
   // A body free with the crank held has no centre the driver determines: none is drawn.
-  const std::vector<BodyId> free = k.structure().freeBodies;
+  std::vector<BodyId> free = k.structure().freeBodies;
+  // Nor of a hidden mechanism's bodies.
+  free.insert(free.end(), hidden_.begin(), hidden_.end());
   if (free.empty()) return drawing_.centres;
   std::vector<int> numbers;
   for (const Drawing::Body& b : drawing_.bodies)
@@ -274,7 +322,16 @@ void CanvasScene::updateFlags() {
     }
     return false;
   };
-  for (JointItem* j : joints_) j->setFlagged(listed(j->joint()));
+  const std::vector<SlotWarning>& out = slotWarnings();
+  auto outOfSlot = [&](JointId j) {
+    return std::any_of(out.begin(), out.end(), [&](const SlotWarning& w) { return w.joint == j; });
+  };
+  for (JointItem* j : joints_) j->setFlagged(listed(j->joint()) || outOfSlot(j->joint()));
+  for (BodyItem* b : bodies_) {
+    std::vector<SlotId> slots;
+    for (const SlotWarning& w : out) slots.push_back(w.slot);
+    b->setFlaggedSlots(std::move(slots));
+  }
   for (BodyItem* b : bodies_) {
     bool named = false;
     for (BodyId x : s.bodies) named = named || x == b->id();
@@ -297,6 +354,7 @@ void CanvasScene::updateTraces() {
     // A point the driver does not move has no path: it would be the solver's hold, made up.
     std::vector<Vec2>& path = paths[i];
     if (!k.checkDetermined({outputs[i]}).ok()) path.clear();
+    if (const Point* p = k.mechanism().point(outputs[i]); p && bodyHidden(p->body)) path.clear();
     QPainterPath pp;
     for (size_t i = 0; i < path.size(); ++i)
       i == 0 ? pp.moveTo(toQt(path[i])) : pp.lineTo(toQt(path[i]));

@@ -14,8 +14,10 @@
 #include "canvas/chain_item.h"
 #include "canvas/dynamics_item.h"
 #include "canvas/joint_items.h"
+#include "canvas/slot_warnings.h"
 #include "document/document.h"
 #include "linkage/drawing.h"
+#include "linkage/mechanisms.h"
 
 namespace linkage::ui {
 
@@ -56,6 +58,14 @@ class CanvasScene : public QGraphicsScene {
   DynamicsItem* dynamicsItem() const { return dynamics_; }
   BodyItem* bodyItem(BodyId id) const;
 
+  // The machine's mechanisms as drawn (names, colours, visibility): a hidden one's bodies,
+  // joints, outputs, traces and centres are not drawn; a coloured one's bodies are in its colour.
+  const std::vector<SubMechanism>& mechanisms() const { return mechanisms_; }
+  bool bodyHidden(BodyId b) const;
+  // The blocks and pins that leave their slots over a turn (drawn in the warning colour).
+  const std::vector<SlotWarning>& slotWarnings() { return doc_ ? warnings_.of(*doc_) : none_; }
+  QString slotWarningText() { return doc_ ? warnings_.text(*doc_) : QString(); }
+
   // What is drawn: the solver's mechanism at its pose, or the design as drawn when the solver
   // cannot take it. Tools place what they make with these.
   bool solverShown() const { return solverShown_; }
@@ -82,6 +92,7 @@ class CanvasScene : public QGraphicsScene {
   void updateScale();
   std::vector<Drawing::Centre> determinedCentres(const Kinematics& k) const;
   void clearItems();
+  void applyMechanisms();
 
   QPointer<Document> doc_;
   CanvasContext ctx_;
@@ -96,6 +107,10 @@ class CanvasScene : public QGraphicsScene {
     return out;
   }
 
+  std::vector<SubMechanism> mechanisms_;
+  std::vector<BodyId> hidden_;
+  SlotWarnings warnings_;
+  const std::vector<SlotWarning> none_;
   std::vector<BodyItem*> bodies_;
   std::vector<JointItem*> joints_;
   std::vector<OutputItem*> outputs_;

@@ -24,7 +24,7 @@ bool hasForces(const Mechanism& m) {
 
 void addMasses(const CanvasScene& scene, const Mechanism& m, DynamicsMarks& out) {
   for (const Body& b : m.bodies) {
-    if (b.ground || !b.mass || !(b.mass->kg > 0)) continue;
+    if (b.ground || !b.mass || !(b.mass->kg > 0) || scene.bodyHidden(b.id)) continue;
     const Transform t = scene.poseOf(b.id);
     DynamicsMarks::Mass mark;
     mark.com = toQt(t * b.mass->com);
@@ -47,6 +47,8 @@ Vec2 torqueAnchor(const CanvasScene& scene, const Mechanism& m, BodyId body) {
 
 void addLoads(const CanvasScene& scene, const Mechanism& m, double crankDeg, DynamicsMarks& out) {
   for (const Load& l : m.loads) {
+    const Point* p = m.point(l.point);
+    if (scene.bodyHidden(p ? p->body : l.body)) continue;  // not drawn: a hidden mechanism's
     DynamicsMarks::Load mark;
     mark.active = l.activeAt(crankDeg);
     mark.torque = !l.point;

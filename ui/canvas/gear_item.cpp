@@ -6,9 +6,16 @@
 namespace linkage::ui {
 
 GearItem::GearItem(const CanvasContext* ctx, const JointSymbol& s, QColor colourA, QColor colourB)
-    : JointItem(ctx, s.joint), s_(s), colour_{colourA, colourB} {
+    : JointItem(ctx, s.joint), s_(s), colour_{colourA, colourB}, own_{colourA, colourB} {
   setAcceptedMouseButtons(Qt::NoButton);
   setZValue(kGearZ);
+}
+
+void GearItem::setBodyColour(int k, const QColor& c) {
+  const QColor next = c.isValid() ? c : own_[k];
+  if (next == colour_[k]) return;
+  colour_[k] = next;
+  update();
 }
 
 void GearItem::place(const JointSymbol& s) {

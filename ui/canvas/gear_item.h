@@ -14,10 +14,15 @@ class GearItem : public JointItem {
   void place(const JointSymbol& s) override;
   QRectF boundingRect() const override;
   void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
+  // The body on side k (0: of point a, 1: of b), and its mechanism's colour (invalid: the
+  // body's own), so that a coloured mechanism's pulley or gear is in its colour too.
+  BodyId body(int k) const { return s_.bodies[k]; }
+  void setBodyColour(int k, const QColor& c);
+  QColor bodyColour(int k) const { return colour_[k]; }
 
  private:
   JointSymbol s_;
-  QColor colour_[2];
+  QColor colour_[2], own_[2];
 };
 
 }  // namespace linkage::ui

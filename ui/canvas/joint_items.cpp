@@ -78,11 +78,18 @@ void BlockItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
   const CanvasStyle& st = style();
   const double l = CanvasStyle::blockLength / 2 * px(), w = CanvasStyle::blockWidth / 2 * px();
   p->setRenderHint(QPainter::Antialiasing);
-  QColor fill = st.body(number_);
+  const QColor line = flagged() ? st.warning : colour_.isValid() ? colour_ : st.body(number_);
+  QColor fill = line;
   fill.setAlphaF(st.dark ? 0.55 : 0.45);
-  p->setPen(cosmetic(flagged() ? st.warning : st.body(number_), CanvasStyle::outline));
+  p->setPen(cosmetic(line, flagged() ? 2.4 : CanvasStyle::outline));
   p->setBrush(fill);
   p->drawRoundedRect(QRectF(-l, -w, 2 * l, 2 * w), 1.5 * px(), 1.5 * px());
+}
+
+void BlockItem::setColour(const QColor& c) {
+  if (c == colour_) return;
+  colour_ = c;
+  update();
 }
 
 DriverItem::DriverItem(const CanvasContext* ctx, bool ccw, const QString& tip)

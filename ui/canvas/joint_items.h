@@ -48,10 +48,14 @@ class BlockItem : public JointItem {
   void setPlacement(const Vec2& at, const Vec2& direction);
   QRectF boundingRect() const override;
   void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
+  // Its mechanism's colour (linkage/mechanisms.h); invalid: its body's own.
+  void setColour(const QColor& c);
+  QColor colour() const { return colour_; }
 
  private:
   BodyId body_;
   int number_;
+  QColor colour_;
 };
 
 class DriverItem : public CanvasItem {

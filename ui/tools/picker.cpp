@@ -12,7 +12,9 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   Pick pick;
   const Mechanism& m = s.shownMechanism();
   double best = kPickPixels * px;
+  // A hidden mechanism (the Mechanisms panel) is not drawn, so nothing of it is picked.
   for (const Point& p : m.points) {
+    if (s.bodyHidden(p.body)) continue;
     const Vec2 at = s.worldOf(p.id);
     const double d = (at - world).norm();
     // Among coincident points (a pin), the first in file order: the stable choice.
@@ -33,7 +35,7 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   double bestSlot = reach;
   for (const Slot& sl : m.slots) {
     const std::optional<Guide> g = guideOf(sl);
-    if (!g) continue;
+    if (!g || s.bodyHidden(sl.body)) continue;
     const double d = g->distance(s.poseOf(sl.body).inverse(world));
     if (d < bestSlot) {
       bestSlot = d;
@@ -43,7 +45,7 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   // Blocks and slot pins under the cursor are their joints.
   if (!pick.joint)
     for (const Joint& j : m.joints)
-      if (kindOf(j).reads(JointField::Slot) &&
+      if (kindOf(j).reads(JointField::Slot) && m.point(j.a) && !s.bodyHidden(m.point(j.a)->body) &&
           (s.worldOf(j.a) - world).norm() < CanvasStyle::blockLength / 2 * px) {
         pick.joint = j.id;
         break;
@@ -55,7 +57,7 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   for (QGraphicsItem* item : s.items(q, Qt::IntersectsItemBoundingRect, Qt::DescendingOrder)) {
     auto* b = dynamic_cast<BodyItem*>(item);
     auto* bl = b ? nullptr : dynamic_cast<BlockItem*>(item);
-    if ((!b && !bl) || !item->contains(item->mapFromScene(q))) continue;
+    if ((!b && !bl) || !item->isVisible() || !item->contains(item->mapFromScene(q))) continue;
     pick.body = b ? b->id() : bl->body();
     pick.onBlock = bl != nullptr;
     break;

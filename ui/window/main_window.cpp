@@ -1,4 +1,5 @@
 #include "window/main_window.h"
+#include "window/mechanisms_feature.h"
 
 #include <QAction>
 #include <QApplication>
@@ -93,6 +94,7 @@ void MainWindow::createFeatures() {
   add(design_);                // its dock a tab beside the instant centres
   add(exports_);               // reads the plots
   add(forces_);                // its dock a tab beside the plots
+  add(mechanisms_);            // its dock a tab beside the history
   properties_->dock->raise();  // the default front tab on the right (a saved layout may differ)
 }
 
@@ -212,6 +214,7 @@ void MainWindow::showDesignStatus() {
         break;
       }
   }
+  if (text.isEmpty()) text = scene_->slotWarningText();
   strip_->setProblem(text);
 }
 

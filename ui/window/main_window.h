@@ -37,6 +37,7 @@ class EditFeature;
 class ExportFeature;
 class FileFeature;
 class ForcesFeature;
+class MechanismsFeature;
 class MessageStrip;
 class PlotsFeature;
 class PropertiesFeature;
@@ -73,6 +74,7 @@ class MainWindow : public QMainWindow {
   DesignFeature& designChecks() const { return *design_; }
   ExportFeature& exports() const { return *exports_; }
   ForcesFeature& forces() const { return *forces_; }
+  MechanismsFeature& mechanisms() const { return *mechanisms_; }
 
   // Every open main window.
   static QList<MainWindow*> windows();
@@ -147,6 +149,7 @@ class MainWindow : public QMainWindow {
   DesignFeature* design_ = nullptr;
   ExportFeature* exports_ = nullptr;
   ForcesFeature* forces_ = nullptr;
+  MechanismsFeature* mechanisms_ = nullptr;
   QFileSystemWatcher* watcher_ = nullptr;
   QString watched_;
   QByteArray onDisk_;    // the file's contents as this window last read or wrote them

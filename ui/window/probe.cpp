@@ -19,10 +19,12 @@
 #include "centres/centres_panel.h"
 #include "document/document.h"
 #include "linkage/io/model_file.h"
+#include "mechanisms/mechanisms_panel.h"
 #include "plots/plots_panel.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
 #include "window/features.h"
+#include "window/mechanisms_feature.h"
 
 namespace linkage::ui {
 
@@ -91,6 +93,7 @@ void windowText(MainWindow* w, QStringList& out) {
     out << QStringLiteral("field %1: %2").arg(label, e->text());
     out << QStringLiteral("at field %1: %2 %3").arg(label).arg(c.x()).arg(c.y());
   }
+  out << w->mechanisms().panel->probeLines();
   const QUndoStack* u = w->document()->undoStack();
   for (int i = 0; i < u->count(); ++i) out << QStringLiteral("history: ") + u->text(i);
 }

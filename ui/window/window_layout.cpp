@@ -68,7 +68,7 @@ QWidget* WindowLayout::target(Slot s) const {
   if (within(s, Slot::ExportTable, Slot::ExportForcesFigure)) return exports_;
   if (within(s, Slot::EditUndo, Slot::EditFlip)) return edit_;
   if (within(s, Slot::ToolsTools, Slot::ToolsSnap)) return tools_;
-  if (within(s, Slot::ViewFit, Slot::ViewDesignChecksDock)) return view_;
+  if (within(s, Slot::ViewFit, Slot::ViewMechanismsDock)) return view_;
   if (within(s, Slot::AnimationPlay, Slot::AnimationFaster)) return animation_;
   if (within(s, Slot::AnalysisDesignChecks, Slot::AnalysisBalance)) return analysis_;
   if (s == Slot::HelpAbout) return help_;

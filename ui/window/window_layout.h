@@ -70,6 +70,7 @@ enum class Slot {
   ViewPlotsDock,
   ViewForcesDock,
   ViewDesignChecksDock,
+  ViewMechanismsDock,
   // Animation
   AnimationPlay,
   AnimationStepBack,

@@ -117,6 +117,19 @@ struct Load {
   bool activeAt(double crankDeg) const;
 };
 
+// How a file names, colours or hides one of the machine's mechanisms (linkage/mechanisms.h says
+// which bodies make one). Known by its bodies rather than by an index or a name, so that it is
+// found again after edits that add bodies to its mechanism or remove some of them: the
+// mechanism that shares the most bodies with it takes it.
+struct MechanismEntry {
+  std::vector<BodyId> bodies;  // ids of bodies removed since are ignored
+  std::string name;            // "": the default (its first body's name)
+  std::string colour;          // "#rrggbb"; "": each body its own colour
+  bool hidden = false;
+  Extras extras;
+  bool operator==(const MechanismEntry&) const = default;
+};
+
 enum class Direction { Cw, Ccw };
 
 struct Driver {
@@ -156,6 +169,8 @@ struct Mechanism {
   std::vector<PointId> outputs;
   std::optional<Vec2> gravity;  // m/s^2 in sketch axes; none: no gravity
   std::vector<Load> loads;
+  // The file's "mechanisms", in file order.
+  std::vector<MechanismEntry> mechanismEntries;
   Extras extras;         // unknown top-level fields
   Extras unitsExtras;    // unknown fields of "units"
   Extras outputsExtras;  // unknown fields of "outputs"

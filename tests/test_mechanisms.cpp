@@ -1,0 +1,274 @@
+// The mechanisms of a machine (linkage/mechanisms.h): which bodies and joints make each, on the
+// lockstitch machine (a shared arm shaft, a hook shaft alone, a feed shaft with one linkage), two
+// four-bars on one crank and a single four-bar; the file's entries that name, colour and hide
+// them, found again after edits; and that an edit of one mechanism re-solves only its groups.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "examples.h"
+#include "linkage/groups.h"
+#include "linkage/io/model_file.h"
+#include "linkage/kinematics.h"
+#include "linkage/mechanisms.h"
+#include "mechanisms.h"
+
+namespace linkage {
+namespace {
+
+std::vector<std::string> bodyNames(const Mechanism& m, const SubMechanism& s) {
+  std::vector<std::string> out;
+  for (BodyId id : s.bodies) out.push_back(m.body(id)->name);
+  return out;
+}
+
+std::vector<int> jointIndices(const Mechanism& m, const SubMechanism& s) {
+  std::vector<int> out;
+  for (JointId id : s.joints) out.push_back(m.jointIndex(id));
+  return out;
+}
+
+using Names = std::vector<std::string>;
+
+TEST(Mechanisms, LockstitchMachineSplitsAtItsShafts) {
+  const Mechanism m = test::example("lockstitch-machine");
+  const std::vector<SubMechanism> all = subMechanisms(m);
+  ASSERT_EQ(all.size(), 5u);
+  // The arm shaft drives two linkages: a mechanism of its own; the hook shaft drives none; the
+  // feed shaft drives one and belongs to it.
+  EXPECT_EQ(bodyNames(m, all[0]), Names({"armshaft"}));
+  EXPECT_TRUE(all[0].shaft);
+  EXPECT_EQ(bodyNames(m, all[1]), Names({"rod", "needlebar"}));
+  EXPECT_EQ(bodyNames(m, all[2]), Names({"takeup", "link"}));
+  EXPECT_EQ(bodyNames(m, all[3]), Names({"hook"}));
+  EXPECT_TRUE(all[3].shaft);
+  EXPECT_EQ(bodyNames(m, all[4]), Names({"feedshaft", "advancerod", "feedrock", "feedbar"}));
+  EXPECT_FALSE(all[4].shaft);
+  // Joints: the driver with its shaft, a crank pin with the rod it drives, a belt with the
+  // shaft it turns.
+  EXPECT_EQ(jointIndices(m, all[0]), std::vector<int>({0}));
+  EXPECT_EQ(jointIndices(m, all[1]), std::vector<int>({1, 2, 3}));
+  EXPECT_EQ(jointIndices(m, all[2]), std::vector<int>({4, 5, 6}));
+  EXPECT_EQ(jointIndices(m, all[3]), std::vector<int>({7, 8}));
+  EXPECT_EQ(jointIndices(m, all[4]), std::vector<int>({9, 10, 11, 12, 13, 14, 15}));
+  EXPECT_EQ(all[1].name, "rod");  // no entry: its first body's name
+  EXPECT_EQ(all[1].entry, -1);
+  EXPECT_EQ(subMechanismOf(all, m.bodyNamed("link")->id), 2);
+  EXPECT_EQ(subMechanismOf(all, m.ground()->id), -1);
+}
+
+// A second four-bar on the same crank pin's opposite side: the first one reflected through the
+// crank pivot.
+test::FourBar twoFourBars() {
+  test::FourBar f = test::fourBar(60, 15, 55, 40, 30);
+  Mechanism& m = f.m;
+  const Vec2 A = m.point(f.A)->pos, B = m.point(f.B)->pos, O4 = m.point(f.O4)->pos;
+  const BodyId c2 = m.addBody("coupler2"), r2 = m.addBody("rocker2");
+  const PointId cA2 = m.addPoint(f.crank, "A2", -A);
+  const PointId gO4b = m.addPoint(f.ground, "O4b", -O4);
+  m.addPin(cA2, m.addPoint(c2, "A", -A));
+  m.addPin(m.addPoint(c2, "B", -B), m.addPoint(r2, "B", -B));
+  m.addPin(m.addPoint(r2, "O4", -O4), gO4b);
+  return f;
+}
+
+TEST(Mechanisms, TwoFourBarsOnOneCrank) {
+  const test::FourBar f = twoFourBars();
+  const std::vector<SubMechanism> all = subMechanisms(f.m);
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_EQ(bodyNames(f.m, all[0]), Names({"crank"}));
+  EXPECT_TRUE(all[0].shaft);
+  EXPECT_EQ(bodyNames(f.m, all[1]), Names({"coupler", "rocker"}));
+  EXPECT_EQ(bodyNames(f.m, all[2]), Names({"coupler2", "rocker2"}));
+  EXPECT_EQ(jointIndices(f.m, all[0]), std::vector<int>({0}));
+  EXPECT_EQ(jointIndices(f.m, all[1]), std::vector<int>({1, 2, 3}));
+  EXPECT_EQ(jointIndices(f.m, all[2]), std::vector<int>({4, 5, 6}));
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());  // and it moves
+  ASSERT_TRUE(k.moveTo(90).ok());
+}
+
+TEST(Mechanisms, ASingleFourBarIsOneMechanism) {
+  const test::FourBar f = test::fourBar(60, 15, 55, 40, 30);
+  const std::vector<SubMechanism> all = subMechanisms(f.m);
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_EQ(bodyNames(f.m, all[0]), Names({"crank", "coupler", "rocker"}));
+  EXPECT_FALSE(all[0].shaft);
+  EXPECT_EQ(jointIndices(f.m, all[0]), std::vector<int>({0, 1, 2, 3}));
+  EXPECT_TRUE(subMechanisms(Mechanism{}).empty());
+}
+
+TEST(Mechanisms, EntriesFollowEditsThatAddOrRemoveBodies) {
+  test::FourBar f = twoFourBars();
+  Mechanism& m = f.m;
+  std::vector<SubMechanism> all = subMechanisms(m);
+  setSubMechanismLook(m, all[2], "second", "#1f77b4", true);
+  ASSERT_EQ(m.mechanismEntries.size(), 1u);
+  all = subMechanisms(m);
+  EXPECT_EQ(all[2].name, "second");
+  EXPECT_EQ(all[2].colour, "#1f77b4");
+  EXPECT_TRUE(all[2].hidden);
+  EXPECT_EQ(all[1].name, "coupler");
+  EXPECT_FALSE(all[1].hidden);
+  // A body added to it (a bar pinned to rocker2): the entry still names it.
+  const BodyId extra = m.addBody("extra");
+  m.addPin(m.addPoint(extra, "P", Vec2(-70, 0)),
+           m.addPoint(m.bodyNamed("rocker2")->id, "P", Vec2(-70, 0)));
+  all = subMechanisms(m);
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_EQ(all[2].name, "second");
+  EXPECT_EQ(all[2].bodies.size(), 3u);
+  // Its first body removed: the rest keep the entry.
+  m.remove(m.bodyNamed("coupler2")->id);
+  all = subMechanisms(m);
+  const int rocker2 = subMechanismOf(all, m.bodyNamed("rocker2")->id);
+  ASSERT_GE(rocker2, 0);
+  EXPECT_EQ(all[rocker2].name, "second");
+  EXPECT_TRUE(all[rocker2].hidden);
+  // Back to the defaults: the entry goes.
+  setSubMechanismLook(m, all[rocker2], all[rocker2].bodies.empty() ? "" : "rocker2", "", false);
+  EXPECT_TRUE(m.mechanismEntries.empty());
+}
+
+TEST(Mechanisms, TheFileKeepsNamesColoursAndVisibility) {
+  Mechanism m = test::example("lockstitch-machine");
+  std::vector<SubMechanism> all = subMechanisms(m);
+  setSubMechanismLook(m, all[1], "needle bar", "#1f77b4", false);
+  setSubMechanismLook(m, all[3], "hook", "", true);
+  const std::string text = serializeMechanism(m);
+  EXPECT_NE(text.find("\"mechanisms\""), std::string::npos);
+  LoadResult r = parseMechanism(text);
+  ASSERT_TRUE(r.mechanism) << r.error;
+  EXPECT_EQ(mechanismDifference(m, *r.mechanism), "");
+  all = subMechanisms(*r.mechanism);
+  EXPECT_EQ(all[1].name, "needle bar");
+  EXPECT_EQ(all[1].colour, "#1f77b4");
+  EXPECT_TRUE(all[3].hidden);
+  EXPECT_EQ(all[3].name, "hook");
+  EXPECT_EQ(serializeMechanism(*r.mechanism), text);
+}
+
+// Two named mechanisms joined by a new link: the merged one keeps the first's entry; once it
+// is renamed, no body is left in two entries, and the file reads back.
+TEST(Mechanisms, JoinedMechanismsWriteAFileThatReadsBack) {
+  test::FourBar f = twoFourBars();
+  Mechanism& m = f.m;
+  std::vector<SubMechanism> all = subMechanisms(m);
+  setSubMechanismLook(m, all[1], "first", "", false);
+  setSubMechanismLook(m, all[2], "second", "", true);
+  const BodyId bridge = m.addBody("bridge");
+  m.addPin(m.addPoint(bridge, "R", Vec2(0, 50)),
+           m.addPoint(m.bodyNamed("rocker")->id, "X", Vec2(0, 50)));
+  m.addPin(m.addPoint(bridge, "S", Vec2(0, 60)),
+           m.addPoint(m.bodyNamed("rocker2")->id, "X", Vec2(0, 60)));
+  all = subMechanisms(m);
+  // Both linkages joined: the crank drives one linkage now and belongs to it.
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_EQ(all[0].name, "first");  // a tie of 2 bodies each: the earlier entry
+  setSubMechanismLook(m, all[0], "both", "#2ca02c", false);
+  LoadResult r = parseMechanism(serializeMechanism(m));
+  ASSERT_TRUE(r.mechanism) << r.error;
+  all = subMechanisms(*r.mechanism);
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_EQ(all[0].name, "both");
+  EXPECT_EQ(all[0].colour, "#2ca02c");
+  EXPECT_FALSE(all[0].hidden);
+  EXPECT_EQ(r.mechanism->mechanismEntries.size(), 1u);  // the second's bodies all given up
+}
+
+std::string refusal(const std::string& mechanisms) {
+  const std::string text =
+      R"({"format": "linkage", "version": 1, "bodies": [{"name": "ground", "ground": true,
+      "points": {"O": [0, 0]}}, {"name": "crank", "points": {"O": [0, 0], "A": [10, 0]}}],
+      "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"}],
+      "driver": {"joint": 0, "rpm": 60, "direction": "ccw"}, "mechanisms": )" +
+      mechanisms + "}";
+  LoadResult r = parseMechanism(text);
+  return r.mechanism ? "" : r.error;
+}
+
+TEST(Mechanisms, BadEntriesAreRefusedByPlace) {
+  EXPECT_EQ(refusal(R"([{"bodies": ["crank"], "name": "c"}])"), "");
+  EXPECT_NE(refusal(R"({})").find("mechanisms"), std::string::npos);
+  EXPECT_NE(refusal(R"([{"bodies": ["nope"]}])").find("mechanisms[0].bodies[0]"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"([{"bodies": []}])").find("mechanisms[0].bodies"), std::string::npos);
+  EXPECT_NE(refusal(R"([{"bodies": ["crank"], "colour": "blue"}])").find("mechanisms[0].colour"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"([{"bodies": ["crank"], "hidden": 1}])").find("mechanisms[0].hidden"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"([{"bodies": ["crank"]}, {"bodies": ["crank"]}])").find("mechanisms[1]"),
+            std::string::npos);
+  // Unknown fields of an entry are kept.
+  const std::string text = R"({"format": "linkage", "version": 1, "bodies": [{"name": "ground",
+      "ground": true, "points": {"O": [0, 0]}}, {"name": "crank", "points": {"O": [0, 0]}}],
+      "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"}],
+      "mechanisms": [{"bodies": ["crank"], "note": {"x": 1}}]})";
+  LoadResult r = parseMechanism(text);
+  ASSERT_TRUE(r.mechanism) << r.error;
+  EXPECT_NE(serializeMechanism(*r.mechanism).find("\"note\""), std::string::npos);
+}
+
+// The groups of the decomposition whose bodies are all in `s`: what an edit of `s` alone may
+// solve again (derived from the decomposition, not from the solver's edit).
+int groupsWithin(const Mechanism& m, const SubMechanism& s) {
+  int n = 0;
+  for (const AssurGroup& g : decomposeAssur(m).groups) {
+    bool inside = !g.bodies.empty();
+    for (BodyId b : g.bodies)
+      inside = inside && std::find(s.bodies.begin(), s.bodies.end(), b) != s.bodies.end();
+    n += inside;
+  }
+  return n;
+}
+
+// On the 30-body machine (a main shaft with 14 mechanisms, solved group by group in closed
+// form), rod 0 made 2 mm longer (its pin and its block moved along the block's slot): that
+// mechanism's groups are solved again, every other body keeps its motion bit for bit, and the
+// result is the edited design's own solution. (The lockstitch machine is off the closed-form
+// path, its feed bar's fork is no group the closed form knows: an edit there re-assembles the
+// whole machine by Newton, docs/solver.md.)
+TEST(Mechanisms, AnEditOfOneMechanismSolvesOnlyItsGroups) {
+  const Mechanism m = test::shaftMachine(14);
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  ASSERT_TRUE(k.closedForm());
+  ASSERT_TRUE(k.moveTo(137).ok());
+  const std::vector<SubMechanism> all = subMechanisms(m);
+  ASSERT_EQ(all.size(), 16u);  // the main shaft, the hook, 14 linkages
+  const int edited0 = subMechanismOf(all, m.bodyNamed("rod0")->id);
+  ASSERT_GE(edited0, 0);
+  EXPECT_EQ(bodyNames(m, all[edited0]), Names({"rod0", "block0"}));
+  Mechanism edited = m;
+  for (const char* p : {"rod0.B", "block0.B"}) edited.point(*edited.findPoint(p))->pos.x() += 2;
+  const Kinematics before = k;
+  ASSERT_TRUE(k.edit(edited).ok());
+  EXPECT_EQ(k.lastEditGroups(), groupsWithin(m, all[edited0]));
+  EXPECT_GE(k.lastEditGroups(), 1);
+  int others = 0;
+  for (const Body& b : m.bodies) {
+    if (b.ground || subMechanismOf(all, b.id) == edited0) continue;
+    ++others;
+    const Transform t0 = before.bodyTransform(b.id), t1 = k.bodyTransform(b.id);
+    EXPECT_EQ(t0.R.c, t1.R.c) << b.name;
+    EXPECT_EQ(t0.R.s, t1.R.s) << b.name;
+    EXPECT_EQ(t0.t, t1.t) << b.name;
+    EXPECT_EQ(before.bodyOmega(b.id), k.bodyOmega(b.id)) << b.name;
+  }
+  EXPECT_EQ(others, 28);
+  // The edited block where a fresh solve of the edited design puts it.
+  Kinematics fresh;
+  ASSERT_TRUE(fresh.load(edited).ok());
+  ASSERT_TRUE(fresh.moveTo(137).ok());
+  const PointId b = *edited.findPoint("block0.B");
+  EXPECT_NEAR(k.position(b).x(), fresh.position(b).x(), 1e-9 * k.size());
+  EXPECT_NEAR(k.velocity(b).x(), fresh.velocity(b).x(), 1e-9 * std::abs(fresh.velocity(b).x()));
+  // Naming, colouring or hiding a mechanism solves nothing again.
+  Mechanism named = edited;
+  setSubMechanismLook(named, all[1], "hook", "#ff7f0e", true);
+  ASSERT_TRUE(k.edit(named).ok());
+  EXPECT_EQ(k.lastEditGroups(), 0);
+}
+
+}  // namespace
+}  // namespace linkage
