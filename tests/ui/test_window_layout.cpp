@@ -66,7 +66,7 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
             QStringList({"fit", "zoomIn", "zoomOut", "actualSize", "-", "showGrid", "showCentres",
                          "showTraces", "showForces", "showExtremes", "showTransmission",
                          "darkPalette", "detachablePanels", "-", "Properties", "Instant Centres",
-                         "showPlots", "showForcesPanel", "showDesignChecks"}));
+                         "showPlots", "showForcesPanel", "showDesignChecks", "showMechanisms"}));
   EXPECT_EQ(words(menu(bar, "Animation")),
             QStringList({"play", "stepBack", "stepForward", "toStart", "-", "slower", "faster"}));
   EXPECT_EQ(words(menu(bar, "Analysis")),
@@ -78,7 +78,9 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
 TEST(WindowLayout, EveryToolbarHoldsItsEntriesInOrder) {
   MainWindow w;
   std::map<QString, QStringList> bars;
-  for (QToolBar* t : w.findChildren<QToolBar*>()) bars[t->objectName()] = words(t);
+  // The window's own (a dock's widgets may have toolbars of theirs).
+  for (QToolBar* t : w.findChildren<QToolBar*>(Qt::FindDirectChildrenOnly))
+    bars[t->objectName()] = words(t);
   EXPECT_EQ(bars.size(), 4u);
   EXPECT_EQ(bars["fileToolBar"], QStringList({"new", "open", "save", "undo", "redo"}));
   EXPECT_EQ(bars["toolsToolBar"], tools(w) + QStringList({"-", "delete", "flip"}));
@@ -124,6 +126,8 @@ TEST(WindowLayout, TheTypedHandlesAreTheNamedActionsAndDocks) {
       {w.exports().figure, "exportFigure"},
       {w.exports().animation, "exportAnimation"},
       {w.forces().dock, "forces"},
+      {w.mechanisms().dock, "mechanisms"},
+      {w.mechanisms().show, "showMechanisms"},
       {w.tools().toolbox()->toolAction("link"), "tool:link"}};
   for (const auto& [object, name] : named) {
     ASSERT_TRUE(object) << name;

@@ -9,6 +9,7 @@
 #include "window/export_feature.h"
 #include "window/file_feature.h"
 #include "window/forces_feature.h"
+#include "window/mechanisms_feature.h"
 #include "window/main_window.h"
 #include "window/plots_feature.h"
 #include "window/properties_feature.h"
