@@ -15,9 +15,11 @@ MechanismsFeature::MechanismsFeature(MainWindow& w, WindowLayout& layout) : Wind
   panel = new MechanismsPanel;
   panel->setDocument(w.document(), w.tools().selection());
   dock = addDock(&w, "mechanisms", tr("Mechanisms"), panel, Qt::LeftDockWidgetArea);
-  w.tabifyDockWidget(w.edit().historyDock, dock);
-  // Hidden until asked for, as the history is.
+  // Hidden until asked for, as the history is; hidden before it joins the history's tabs (made
+  // a tab while shown, the layout kept room for it: a window asked for 1100 px stayed 1159).
   dock->hide();
+  w.tabifyDockWidget(w.edit().historyDock, dock);
+  dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
   show = raisingToggle(
       dock, "showMechanisms", QKeySequence(tr("Shift+M")),
       tr("The machine's mechanisms: name them, show or hide them, give each a colour"));
