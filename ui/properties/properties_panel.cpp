@@ -245,7 +245,12 @@ void PropertiesPanel::addNumber(const QString& label, std::function<double()> va
                                 std::function<bool(double, QString*)> commit, const QString& unit) {
   const QString full = unit.isEmpty() ? label : QStringLiteral("%1 [%2]").arg(label, unit);
   addText(
-      full, [value] { return exactText(value()); },
+      // Out of double's range (a distance between points dragged to 1e300): no number to show.
+      full,
+      [value] {
+        const double v = value();
+        return std::isfinite(v) ? exactText(v) : QStringLiteral("\u2014");
+      },
       [commit](const QString& text, QString* why) {
         const std::optional<double> v = parseNumber(text.toStdString());
         if (!v) {
