@@ -57,7 +57,7 @@ CLI::App* addOptions(Parser& parser, Options& o) {
   CLI::App& c = parser.command("clearance", kHelp);
   addModel(c, o.model);
   required(addTextPair(c, "--between", o.between, "A B"));
-  addNumber(c, "--min", o.min);
+  addNumber(c, "--min", o.min, NumberRule::NotNegative);
   addWhole(c, "--steps", o.steps, 4, 1'000'000);
   return &c;
 }

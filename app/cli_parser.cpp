@@ -79,7 +79,9 @@ CLI::Option* addChecked(CLI::App& c, const std::string& name, const CLI::Validat
 }
 
 CLI::Validator numberRule(NumberRule rule) {
-  return rule == NumberRule::Positive ? positive() : isNumber();
+  return rule == NumberRule::Positive      ? positive()
+         : rule == NumberRule::NotNegative ? notNegative()
+                                           : isNumber();
 }
 
 }  // namespace

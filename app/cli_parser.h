@@ -52,7 +52,7 @@ class Parser {
 };
 
 constexpr long long kNoLimit = LLONG_MAX;
-enum class NumberRule { Any, Positive };
+enum class NumberRule { Any, Positive, NotNegative };
 enum class PairRule { Any, NonZero, Increasing };  // not 0,0; LO,HI with LO below HI
 
 // The options a command reads. Numbers are checked by cli_validators.h and read with the

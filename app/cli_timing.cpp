@@ -7,8 +7,10 @@
 #include <iostream>
 
 #include "cli_common.h"
+#include "cli_cycle_setup.h"
 #include "cli_parser.h"
 #include "linkage/io/numbers.h"
+#include "linkage/tables/timing_table.h"
 #include "linkage/timing.h"
 
 namespace linkage::cli {
@@ -16,12 +18,14 @@ namespace linkage::cli {
 namespace {
 
 const char* kHelp =
-    R"(usage: linkage-cli timing MODEL --window NAME=EXPR [--window ...] [--conflict N1,N2 ...]
+    R"(usage: linkage-cli timing MODEL [--window NAME=EXPR ...] [--conflict N1,N2 ...]
                           [--steps N] [--out FIG.png|pdf|svg]
 
 The windows of MODEL's machine cycle (crank angle 0 to 360 of the driver, the main shaft):
 the crank angles where each condition holds, its ends found to 1e-9 degree of crank by root
-finding on the exact motion; then the overlaps of windows that must not overlap.
+finding on the exact motion; then the overlaps of windows that must not overlap. Without
+--window, the windows, conflicts and rows kept in MODEL's "timing" (what the editor's Cycle
+dock keeps), with any --conflict added.
 
   --window NAME=EXPR  EXPR is OUTPUT<VALUE or OUTPUT>VALUE, OUTPUT one of
                         body.point:y    the point's y (mm)
@@ -65,29 +69,6 @@ CLI::App* addOptions(Parser& parser, Options& o) {
   return &c;
 }
 
-// "N1,N2": two window names.
-std::optional<std::pair<std::string, std::string>> conflictOf(const std::string& text) {
-  const size_t comma = text.find(',');
-  if (comma == std::string::npos || comma == 0 || comma + 1 == text.size() ||
-      text.find(',', comma + 1) != std::string::npos) {
-    error("--conflict " + text + ": not two window names N1,N2");
-    return std::nullopt;
-  }
-  return std::pair{text.substr(0, comma), text.substr(comma + 1)};
-}
-
-std::string rows(const CycleDiagram& d) {
-  std::string out = "window,from_deg,to_deg\n";
-  for (const WindowIntervals& w : d.windows)
-    for (const AngleInterval& i : w.intervals)
-      out += w.name + "," + formatNumber(i.fromDeg) + "," + formatNumber(i.toDeg) + "\n";
-  for (const Conflict& c : d.conflicts)
-    for (const AngleInterval& i : c.overlaps)
-      out += "conflict:" + c.first + "+" + c.second + "," + formatNumber(i.fromDeg) + "," +
-             formatNumber(i.toDeg) + "\n";
-  return out;
-}
-
 // linkage-plot, next to linkage-cli, draws the figure from the same arguments (linkage-cli
 // itself does not load Qt); kOk, or kFailure with the reason printed.
 int drawFigure(const Options& o) {
@@ -120,38 +101,20 @@ int drawFigure(const Options& o) {
 }
 
 int timing(const Options& o) {
-  if (o.windows.empty()) {  // (required, in words that say what it takes)
-    error("timing: give at least one --window NAME=EXPR (see linkage-cli timing --help)");
-    return kBadInput;
-  }
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
-  std::vector<CycleWindow> windows;
-  for (const std::string& text : o.windows) {
-    std::string why;
-    std::optional<CycleWindow> w = parseWindow(*m, text, &why);
-    if (!w) {
-      error("--window " + text + ": " + why);
-      return kBadInput;
-    }
-    windows.push_back(*w);
-  }
-  std::vector<std::pair<std::string, std::string>> conflicts;
-  for (const std::string& text : o.conflicts) {
-    std::optional<std::pair<std::string, std::string>> c = conflictOf(text);
-    if (!c) return kBadInput;
-    conflicts.push_back(*c);
-  }
+  const std::optional<CycleSetup> setup = cycleSetup(*m, o.windows, o.conflicts);
+  if (!setup) return kBadInput;
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;
   CycleOptions opt;
   opt.steps = o.steps;
-  const CycleDiagram d = cycleDiagram(k, {}, windows, conflicts, opt);
+  const CycleDiagram d = cycleDiagram(k, setup->outputs, setup->windows, setup->conflicts, opt);
   if (!d.status.ok()) {
     error(d.status.message);
     return exitFor(d.status);
   }
-  std::cout << rows(d) << std::flush;
+  std::cout << timingTable(d) << std::flush;
   for (const CycleRow& r : d.rows)
     if (!r.periodic)
       note(r.output.name + " does not repeat after one turn: its windows end at 0 and 360");

@@ -89,6 +89,16 @@ CLI::Validator positive() {
       "POSITIVE");
 }
 
+CLI::Validator notNegative() {
+  return check(
+      [](const std::string& v) {
+        const std::optional<double> x = parseNumber(v);
+        if (!x) return quoted(v) + " is not a number";
+        return *x >= 0 ? "" : "must be 0 or more, got " + v;
+      },
+      "NUMBER>=0");
+}
+
 CLI::Validator wholeIn(long long lo, long long hi) {
   return check(
       [lo, hi](const std::string& v) -> std::string {

@@ -21,6 +21,8 @@ namespace linkage::cli {
 CLI::Validator isNumber();
 // A number above zero.
 CLI::Validator positive();
+// Zero or a number above it.
+CLI::Validator notNegative();
 // A whole number from lo to hi (hi LLONG_MAX: at least lo).
 CLI::Validator wholeIn(long long lo, long long hi);
 // Whole numbers separated by commas ("3" or "3,5,2").

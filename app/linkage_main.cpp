@@ -3,7 +3,7 @@
 //
 //   linkage [FILE | EXAMPLE-NAME]
 //   linkage --screenshot OUT.png [FILE|EXAMPLE] [--angle DEG] [--ics] [--plots] [--size WxH]
-//           [--dark] [--extremes] [--transmission] [--checks] [--forces]
+//           [--dark] [--extremes] [--transmission] [--checks] [--forces] [--cycle]
 //   linkage --version | --help
 #include <QApplication>
 #include <QCommandLineParser>
@@ -60,10 +60,13 @@ struct Options {
                                   QStringLiteral("Show the joint reactions and the force plots.")};
   const QCommandLineOption checks{QStringLiteral("checks"),
                                   QStringLiteral("Show the design-checks dock.")};
+  const QCommandLineOption cycle{
+      QStringLiteral("cycle"),
+      QStringLiteral("Show the cycle dock (the file's timing) and its clearances on the canvas.")};
 
   void addTo(QCommandLineParser& cli) const {
     cli.addOptions(
-        {screenshot, angle, ics, plots, size, dark, extremes, transmission, checks, forces});
+        {screenshot, angle, ics, plots, size, dark, extremes, transmission, checks, forces, cycle});
   }
 };
 
@@ -73,6 +76,7 @@ int runOffscreen(const QCommandLineParser& cli, const Options& opt, const QStrin
   o.model = model;
   o.ics = cli.isSet(opt.ics);
   o.forces = cli.isSet(opt.forces);
+  o.cycle = cli.isSet(opt.cycle);
   o.plots = cli.isSet(opt.plots);
   o.dark = cli.isSet(opt.dark);
   o.extremes = cli.isSet(opt.extremes);

@@ -4,6 +4,7 @@
 // line, which it crosses or passes at a known height.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -135,6 +136,55 @@ TEST(Clearance, PointAgainstAGroundSlotLine) {
   }
 }
 
+// The crank pin (radius 12, drawn at a1) against slots of the ground that its circle does not
+// reach as drawn: a short slot beside its path (x = 20, y from -5 to 5: the closest is 8 mm
+// from its line at theta = 0), and one whose line the pin crosses beyond the slot's drawn ends
+// (x = 5, y from 50 to 60: the closest is its end E, |E| - 12 at theta = atan2(E)); where the
+// two are at the closest, and the distance at a pose.
+TEST(Clearance, PointAgainstASlotAsDrawn) {
+  const double r = 12, a1 = 0.3;
+  Shafts s = shafts(30, 2, r, a1, 9, 2.0, 100);
+  const BodyId g = s.m.ground()->id;
+  const SlotId beside = s.m.addSlot(g, "beside", Vec2(20, -5), Vec2(20, 5));
+  const SlotId beyond = s.m.addSlot(g, "beyond", Vec2(5, 60), Vec2(5, 50));
+  Kinematics kin;
+  ASSERT_TRUE(kin.load(s.m).ok());
+  auto crank = [&](double theta) {
+    double d = (theta - a1) * 180 / M_PI;
+    return d - 360 * std::floor(d / 360);
+  };
+  struct Case {
+    SlotId slot;
+    double thetaDeg, distance;
+    Vec2 other;
+  };
+  const Vec2 e(5, 50);
+  for (const Case& c : {Case{beside, 0, 8, Vec2(20, 0)},
+                        Case{beyond, std::atan2(50.0, 5.0) * 180 / M_PI, e.norm() - r, e}}) {
+    const Clearance k = findClearance(kin, ClearanceItem::of(s.p1), ClearanceItem::of(c.slot));
+    ASSERT_TRUE(k.status.ok()) << k.status.message;
+    ASSERT_EQ(k.minima.size(), 1u);
+    EXPECT_NEAR(k.minima[0].crankDeg, crank(c.thetaDeg * M_PI / 180), 1e-9);
+    EXPECT_NEAR(k.minima[0].distance, c.distance, 1e-12 * 60);
+    EXPECT_EQ(k.closest.crankDeg, k.minima[0].crankDeg);
+    const double t = c.thetaDeg * M_PI / 180;
+    EXPECT_NEAR((k.closestPoint - r * Vec2(std::cos(t), std::sin(t))).norm(), 0, 1e-9);
+    EXPECT_NEAR((k.closestOther - c.other).norm(), 0, 1e-9);
+    EXPECT_NEAR((k.closestPoint - k.closestOther).norm(), k.closest.distance, 1e-9);
+    // The curve's samples are the distances at those angles.
+    ASSERT_EQ(k.crankDeg.size(), k.distance.size());
+    EXPECT_EQ(k.crankDeg.front(), 0);
+    EXPECT_EQ(k.crankDeg.back(), 360);
+    const Vec2 p0 = r * Vec2(std::cos(a1), std::sin(a1));
+    const Slot& slot = *s.m.slot(c.slot);
+    const Vec2 d = slot.p1 - slot.p0;
+    const double u = std::clamp((p0 - slot.p0).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    EXPECT_NEAR(k.distance.front(), (p0 - (slot.p0 + u * d)).norm(), 1e-12 * 60);
+    EXPECT_NEAR(clearanceAt(kin, ClearanceItem::of(c.slot), ClearanceItem::of(s.p1)),
+                k.distance.front(), 1e-12 * 60);
+  }
+}
+
 TEST(Clearance, Refusals) {
   Shafts s = shafts(30, 2, 12, 0.3, 9, 2.0, 20);
   Kinematics kin;
@@ -151,6 +201,9 @@ TEST(Clearance, Refusals) {
   EXPECT_EQ(
       findClearance(Kinematics(), ClearanceItem::of(s.p1), ClearanceItem::of(s.p2)).status.code,
       StatusCode::BadModel);
+  EXPECT_EQ(findClearance(kin, ClearanceItem::of(s.p1), ClearanceItem::of(s.p1)).status.code,
+            StatusCode::BadModel);
+  EXPECT_TRUE(std::isnan(clearanceAt(kin, ClearanceItem::of(s.p1), ClearanceItem::of(s.p1))));
 }
 
 // The lockstitch example's hook point K (15 mm from the hook shaft L = (0, -200), drawn at

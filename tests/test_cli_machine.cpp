@@ -144,6 +144,12 @@ TEST_F(MachineCli, ClearanceBadInputNamesTheArgument) {
   r = run("clearance " + ex + " --between hook.K needlebar.N --min x");
   EXPECT_EQ(r.exit, 2);
   EXPECT_NE(r.err.find("--min"), std::string::npos) << r.err;
+  r = run("clearance " + ex + " --between hook.K hook.K");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("a point to itself"), std::string::npos) << r.err;
+  r = run("clearance " + ex + " --between hook.K needlebar.N --min -1");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("--min: must be 0 or more"), std::string::npos) << r.err;
   EXPECT_EQ(run("clearance " + ex).exit, 2);
   EXPECT_EQ(run("clearance --help").exit, 0);
 }
@@ -216,6 +222,9 @@ TEST_F(MachineCli, TimingBadInputNamesThePlace) {
         Bad{"--window 'n=needlebar.B:y<3' --conflict n", "--conflict n: not two window names"},
         Bad{"--window 'n=needlebar.B:y<3' --conflict n,m", "no window named m"},
         Bad{"--window 'n=needlebar.B:y<3' --window 'n=needlebar.B:y>3'", "window n is given twice"},
+        Bad{"--window 'n=needlebar.B:y<3' --conflict n,n", "cannot conflict with itself"},
+        Bad{"--window 'a\nfake=needlebar.B:y<55'", "NAME=OUTPUT<VALUE"},
+        Bad{"--window 'a\"b=needlebar.B:y<55'", "NAME=OUTPUT<VALUE"},
         Bad{"--window 'n=needlebar.B:y<3' --out f.txt", "--out f.txt: the name must end in"},
         Bad{"", "give at least one --window"}}) {
     const CliResult r = run("timing " + ex + b.args);
@@ -223,6 +232,30 @@ TEST_F(MachineCli, TimingBadInputNamesThePlace) {
     EXPECT_NE(r.err.find(b.says), std::string::npos) << b.args << ": " << r.err;
   }
   EXPECT_EQ(run("timing --help").exit, 0);
+}
+
+// Without --window, the windows, conflicts and rows the file keeps (what the editor's Cycle
+// dock keeps): the same rows as the same windows typed; --conflict adds to the file's.
+TEST_F(MachineCli, TimingOfTheFilesTiming) {
+  const test::SliderCrank s = test::sliderCrank(20, 60, 8, 100);
+  std::string text = serializeMechanism(s.m);
+  text = text.substr(0, text.rfind('}')) +
+         R"(, "timing": {"windows": ["low=slider.B:y<60", "mid=slider.B:y>55"],
+                         "outputs": ["slider.B:x"]}})";
+  const std::string file = "'" + writeFile("t.linkage.json", text) + "'";
+  const CliResult kept = run("timing " + file);
+  ASSERT_EQ(kept.exit, 0) << kept.err;
+  const CliResult typed =
+      run("timing " + file + " --window 'low=slider.B:y<60' --window 'mid=slider.B:y>55'");
+  ASSERT_EQ(typed.exit, 0) << typed.err;
+  EXPECT_EQ(kept.out, typed.out);
+  const CliResult conflict = run("timing " + file + " --conflict low,mid");
+  EXPECT_EQ(conflict.exit, 4) << conflict.err;
+  EXPECT_EQ(conflict.lines().size(), 5u) << conflict.out;
+  // A file without windows, and no --window: the message says what to give.
+  const CliResult none = run("timing " + save(s.m));
+  EXPECT_EQ(none.exit, 2);
+  EXPECT_NE(none.err.find("keep windows in the file's \"timing\""), std::string::npos) << none.err;
 }
 
 // --out: the figure by linkage-plot when it was built next to linkage-cli (LINKAGE_BUILD_UI),

@@ -39,4 +39,11 @@ CycleReading offGuide(const Guide& g, const RelativeMotion& m) {
   return r;
 }
 
+CycleReading offDrawnSlot(const Guide& g, const RelativeMotion& m) {
+  const double s = g.along(m.r);
+  if (s < 0 || s > g.length()) return lengthOf(m.r - (s < 0 ? g.p0 : g.p1), m.dr, m.ddr);
+  const CycleReading r = offGuide(g, m);
+  return r.value < 0 ? CycleReading{-r.value, -r.d1, -r.d2} : r;
+}
+
 }  // namespace linkage

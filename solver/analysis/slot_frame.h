@@ -20,6 +20,10 @@ CycleReading alongGuide(const Guide& g, const RelativeMotion& m);
 // Signed distance from the line (along its normal) or from the circle (positive outside).
 CycleReading offGuide(const Guide& g, const RelativeMotion& m);
 
+// The distance from the slot as drawn: from its line or circle beside it, from the nearer end
+// beyond its ends (so, never negative; |d|' jumps where the point crosses the slot itself).
+CycleReading offDrawnSlot(const Guide& g, const RelativeMotion& m);
+
 // The length |d| of a vector with its derivatives d', d'' (per degree), and |d|', |d|''.
 CycleReading lengthOf(const Vec2& d, const Vec2& dd, const Vec2& ddd);
 

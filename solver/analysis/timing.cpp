@@ -95,10 +95,13 @@ Status checkNames(const std::vector<CycleWindow>& windows,
   std::map<std::string, int> seen;
   for (const CycleWindow& w : windows)
     if (seen[w.name]++) return Status::badModel("window " + w.name + " is given twice");
-  for (const auto& [a, b] : conflicts)
+  for (const auto& [a, b] : conflicts) {
     for (const std::string& n : {a, b})
       if (!seen.count(n))
         return Status::badModel("conflict " + a + "," + b + ": no window named " + n);
+    if (a == b)
+      return Status::badModel("conflict " + a + "," + b + ": a window cannot conflict with itself");
+  }
   return Status::success();
 }
 

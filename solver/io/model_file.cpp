@@ -17,6 +17,7 @@
 #include "io/json_read.h"
 #include "io/json_tree.h"
 #include "io/mechanisms_read.h"
+#include "io/timing_read.h"
 #include "linkage/elements.h"
 #include "linkage/guide.h"
 #include "linkage/io/model_file.h"
@@ -51,8 +52,10 @@ class Reader {
     if (const Json* e = find(root, "mechanisms"))
       readMechanismEntries(*e, "mechanisms", m_,
                            [this](const Json& v, const std::string& at) { return bodyRef(v, at); });
-    m_.extras = unknownFields(root, {"format", "version", "name", "units", "bodies", "joints",
-                                     "driver", "outputs", "gravity", "loads", "mechanisms"});
+    if (const Json* t = find(root, "timing")) readTiming(*t, "timing", m_);
+    m_.extras =
+        unknownFields(root, {"format", "version", "name", "units", "bodies", "joints", "driver",
+                             "outputs", "gravity", "loads", "mechanisms", "timing"});
     return std::move(m_);
   }
 

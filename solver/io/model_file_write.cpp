@@ -8,6 +8,7 @@
 #include "io/json_tree.h"
 #include "linkage/elements.h"
 #include "linkage/io/model_file.h"
+#include "linkage/timing_text.h"
 
 namespace linkage {
 
@@ -243,6 +244,32 @@ Json mechanismsJson(const Mechanism& m) {
   return out;
 }
 
+// The cycle diagram's parts as a user types them (linkage/timing_text.h).
+Json timingJson(const Mechanism& m) {
+  const Timing& t = m.timing;
+  Json j = Json::object();
+  auto texts = [&](const char* key, const auto& v, auto text) {
+    if (v.empty()) return;
+    Json a = Json::array();
+    for (const auto& x : v) a.push_back(text(x));
+    j[key] = std::move(a);
+  };
+  texts("outputs", t.outputs, [&](const LimitMeasure& x) { return measureText(m, x); });
+  texts("windows", t.windows, [&](const TimingWindow& w) { return windowText(m, w); });
+  texts("conflicts", t.conflicts, [](const TimingConflict& c) {
+    return Json::array({c.first, c.second});
+  });
+  texts("clearances", t.clearances, [&](const ClearanceWatch& c) {
+    Json x = Json::object();
+    x["between"] =
+        Json::array({m.pointLabel(c.point), c.other ? m.pointLabel(c.other) : m.slotLabel(c.slot)});
+    if (c.minMm) x["min_mm"] = number(*c.minMm);
+    return x;
+  });
+  appendExtras(j, t.extras, {"outputs", "windows", "conflicts", "clearances"});
+  return j;
+}
+
 }  // namespace
 
 std::string serializeMechanism(const Mechanism& m) {
@@ -287,9 +314,10 @@ std::string serializeMechanism(const Mechanism& m) {
     doc["loads"] = std::move(loads);
   }
   if (Json e = mechanismsJson(m); !e.empty()) doc["mechanisms"] = std::move(e);
+  if (Json t = timingJson(m); !t.empty()) doc["timing"] = std::move(t);
   appendExtras(doc, m.extras,
                {"format", "version", "name", "units", "bodies", "joints", "driver", "outputs",
-                "gravity", "loads", "mechanisms"});
+                "gravity", "loads", "mechanisms", "timing"});
   std::string out;
   emit(doc, 0, out);
   out += "\n";
@@ -445,7 +473,11 @@ std::string mechanismDifference(const Mechanism& a, const Mechanism& b) {
       return "outputs.points[" + std::to_string(i) + "] differs";
   if (auto d = compareExtras(a.outputsExtras, b.outputsExtras, "outputs"); !d.empty()) return d;
   if (auto d = compareEntries(a, b); !d.empty()) return d;
-  return compareForces(a, b);
+  if (auto d = compareForces(a, b); !d.empty()) return d;
+  // The timing by its text: ids differ between two mechanisms, names and numbers do not.
+  if (const std::string x = timingJson(a).dump(), y = timingJson(b).dump(); x != y)
+    return "timing: " + x + " vs " + y;
+  return {};
 }
 
 }  // namespace linkage

@@ -41,6 +41,32 @@ T* findById(std::vector<T>& v, IdT id) {
   auto it = std::find_if(v.begin(), v.end(), [&](const T& e) { return e.id == id; });
   return it == v.end() ? nullptr : &*it;
 }
+// The cycle diagram's parts that follow what is gone: rows, windows and clearances on a gone
+// point, slot or body, and the conflicts naming a window that goes.
+void takeTiming(Timing& t, const std::vector<PointId>& goneP, const std::vector<SlotId>& goneS,
+                const std::vector<BodyId>& goneB, Removal& r) {
+  auto measureGone = [&](const LimitMeasure& x) {
+    return listed(goneP, x.point) || listed(goneB, x.body);
+  };
+  take(t.outputs, measureGone, r.timingOutputs);
+  take(
+      t.windows, [&](const TimingWindow& w) { return measureGone(w.output); }, r.timingWindows);
+  auto windowGone = [&](const std::string& name) {
+    return std::any_of(r.timingWindows.begin(), r.timingWindows.end(),
+                       [&](const auto& w) { return w.value.name == name; });
+  };
+  take(
+      t.conflicts,
+      [&](const TimingConflict& c) { return windowGone(c.first) || windowGone(c.second); },
+      r.timingConflicts);
+  take(
+      t.clearances,
+      [&](const ClearanceWatch& c) {
+        return listed(goneP, c.point) || listed(goneP, c.other) || listed(goneS, c.slot);
+      },
+      r.clearances);
+}
+
 }  // namespace
 
 Mechanism::Mechanism() : owner_(newOwner()) {}
@@ -60,7 +86,7 @@ PointId Mechanism::addPoint(BodyId bodyId, std::string name, Vec2 pos) {
 }
 
 SlotId Mechanism::addSlot(BodyId bodyId, std::string name, Vec2 p0, Vec2 p1) {
-  slots.push_back(Slot{make<SlotId>(), bodyId, std::move(name), p0, p1});
+  slots.push_back(Slot{make<SlotId>(), bodyId, std::move(name), p0, p1, std::nullopt});
   return slots.back().id;
 }
 
@@ -127,6 +153,7 @@ Removal Mechanism::remove(const std::vector<BodyId>& bodyIds, const std::vector<
   take(
       loads, [&](const Load& l) { return listed(goneP, l.point) || listed(bodyIds, l.body); },
       r.loads);
+  takeTiming(timing, goneP, goneS, bodyIds, r);
   const bool driverGone =
       driver && std::any_of(r.joints.begin(), r.joints.end(),
                             [&](const auto& j) { return j.value.id == driver->joint; });
@@ -144,7 +171,27 @@ void Mechanism::restore(const Removal& r) {
   putBack(joints, r.joints);
   putBack(outputs, r.outputs);
   putBack(loads, r.loads);
+  putBack(timing.outputs, r.timingOutputs);
+  putBack(timing.windows, r.timingWindows);
+  putBack(timing.conflicts, r.timingConflicts);
+  putBack(timing.clearances, r.clearances);
   if (r.driver) driver = r.driver;
+}
+
+void Timing::replaceWindow(size_t i, TimingWindow w) {
+  for (TimingConflict& c : conflicts)
+    for (std::string* n : {&c.first, &c.second})
+      if (*n == windows[i].name) *n = w.name;
+  windows[i] = std::move(w);
+}
+
+void Timing::removeWindow(size_t i) {
+  const std::string name = windows[i].name;
+  windows.erase(windows.begin() + static_cast<std::ptrdiff_t>(i));
+  conflicts.erase(
+      std::remove_if(conflicts.begin(), conflicts.end(),
+                     [&](const TimingConflict& c) { return c.first == name || c.second == name; }),
+      conflicts.end());
 }
 
 bool Load::activeAt(double crankDeg) const {

@@ -57,21 +57,38 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
   ASSERT_TRUE(menu(file, "Export"));
   EXPECT_EQ(words(menu(file, "Export")),
             QStringList({"exportTable", "exportFigure", "exportAnimation", "exportForcesTable",
-                         "exportForcesFigure"}));
+                         "exportForcesFigure", "exportCycleFigure", "exportTimingTable"}));
   EXPECT_EQ(words(menu(bar, "Edit")),
             QStringList({"undo", "redo", "-", "showHistory", "-", "delete", "flip"}));
   ASSERT_EQ(tools(w).size(), 6 + 3);  // select link ground slot driver output, three kinds'
   EXPECT_EQ(words(menu(bar, "Tools")), tools(w) + QStringList({"-", "snapGrid"}));
-  EXPECT_EQ(words(menu(bar, "View")),
-            QStringList({"fit", "zoomIn", "zoomOut", "actualSize", "-", "showGrid", "showCentres",
-                         "showTraces", "showForces", "showExtremes", "showTransmission",
-                         "darkPalette", "detachablePanels", "-", "Properties", "Instant Centres",
-                         "showPlots", "showForcesPanel", "showDesignChecks", "showMechanisms"}));
+  EXPECT_EQ(words(menu(bar, "View")), QStringList({"fit",
+                                                   "zoomIn",
+                                                   "zoomOut",
+                                                   "actualSize",
+                                                   "-",
+                                                   "showGrid",
+                                                   "showCentres",
+                                                   "showTraces",
+                                                   "showForces",
+                                                   "showExtremes",
+                                                   "showTransmission",
+                                                   "darkPalette",
+                                                   "detachablePanels",
+                                                   "-",
+                                                   "Properties",
+                                                   "Instant Centres",
+                                                   "showPlots",
+                                                   "showForcesPanel",
+                                                   "showDesignChecks",
+                                                   "showMechanisms",
+                                                   "showCyclePanel"}));
   EXPECT_EQ(words(menu(bar, "Animation")),
             QStringList({"play", "stepBack", "stepForward", "toStart", "-", "slower", "faster"}));
   EXPECT_EQ(words(menu(bar, "Analysis")),
             QStringList({"showDesignChecks", "parameterStudy", "-", "showExtremes",
-                         "showTransmission", "-", "showForcesPanel", "showForces", "balance"}));
+                         "showTransmission", "-", "showForcesPanel", "showForces", "balance", "-",
+                         "showCyclePanel", "watchClearance"}));
   EXPECT_EQ(words(menu(bar, "Help")), QStringList({"about"}));
 }
 

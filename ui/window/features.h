@@ -4,6 +4,7 @@
 
 #include "window/animation_feature.h"
 #include "window/centres_feature.h"
+#include "window/cycle_feature.h"
 #include "window/design_feature.h"
 #include "window/edit_feature.h"
 #include "window/export_feature.h"

@@ -23,6 +23,7 @@
 #include "tools/toolbox.h"
 #include "window/animation_feature.h"
 #include "window/centres_feature.h"
+#include "window/cycle_feature.h"
 #include "window/design_feature.h"
 #include "window/edit_feature.h"
 #include "window/export_feature.h"
@@ -95,6 +96,7 @@ void MainWindow::createFeatures() {
   add(exports_);               // reads the plots
   add(forces_);                // its dock a tab beside the plots
   add(mechanisms_);            // its dock a tab beside the history
+  add(cycle_);                 // its dock a tab beside the plots
   properties_->dock->raise();  // the default front tab on the right (a saved layout may differ)
 }
 

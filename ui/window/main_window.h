@@ -31,6 +31,7 @@ class Autosaver;
 class CanvasScene;
 class CanvasView;
 class CentresFeature;
+class CycleFeature;
 class DesignFeature;
 class Document;
 class EditFeature;
@@ -75,6 +76,7 @@ class MainWindow : public QMainWindow {
   ExportFeature& exports() const { return *exports_; }
   ForcesFeature& forces() const { return *forces_; }
   MechanismsFeature& mechanisms() const { return *mechanisms_; }
+  CycleFeature& cycle() const { return *cycle_; }
 
   // Every open main window.
   static QList<MainWindow*> windows();
@@ -150,6 +152,7 @@ class MainWindow : public QMainWindow {
   ExportFeature* exports_ = nullptr;
   ForcesFeature* forces_ = nullptr;
   MechanismsFeature* mechanisms_ = nullptr;
+  CycleFeature* cycle_ = nullptr;
   QFileSystemWatcher* watcher_ = nullptr;
   QString watched_;
   QByteArray onDisk_;    // the file's contents as this window last read or wrote them

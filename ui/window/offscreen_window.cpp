@@ -11,6 +11,7 @@
 #include "canvas/canvas_view.h"
 #include "document/document.h"
 #include "window/centres_feature.h"
+#include "window/cycle_feature.h"
 #include "window/design_feature.h"
 #include "window/forces_feature.h"
 #include "window/main_window.h"
@@ -53,6 +54,10 @@ void showAsked(MainWindow& w, const OffscreenOptions& o) {
   if (o.forces) {
     w.forces().dock->show();
     w.forces().dock->raise();
+  }
+  if (o.cycle) {
+    w.cycle().dock->show();
+    w.cycle().dock->raise();
   }
   if (o.ics) w.centres().dock->raise();
   w.plots().dock->setVisible(o.plots);

@@ -21,6 +21,7 @@ bool isSeparator(Slot s) {
     case Slot::AnimationSeparator:
     case Slot::AnalysisSeparator1:
     case Slot::AnalysisSeparator2:
+    case Slot::AnalysisSeparator3:
     case Slot::ToolsBarSeparator:
       return true;
     default:
@@ -65,12 +66,12 @@ WindowLayout::WindowLayout(QMainWindow* w) : QObject(w) {
 
 QWidget* WindowLayout::target(Slot s) const {
   if (within(s, Slot::FileNew, Slot::FileQuit)) return file_;
-  if (within(s, Slot::ExportTable, Slot::ExportForcesFigure)) return exports_;
+  if (within(s, Slot::ExportTable, Slot::ExportTimingTable)) return exports_;
   if (within(s, Slot::EditUndo, Slot::EditFlip)) return edit_;
   if (within(s, Slot::ToolsTools, Slot::ToolsSnap)) return tools_;
-  if (within(s, Slot::ViewFit, Slot::ViewMechanismsDock)) return view_;
+  if (within(s, Slot::ViewFit, Slot::ViewCycleDock)) return view_;
   if (within(s, Slot::AnimationPlay, Slot::AnimationFaster)) return animation_;
-  if (within(s, Slot::AnalysisDesignChecks, Slot::AnalysisBalance)) return analysis_;
+  if (within(s, Slot::AnalysisDesignChecks, Slot::AnalysisWatchClearance)) return analysis_;
   if (s == Slot::HelpAbout) return help_;
   if (within(s, Slot::FileBarNew, Slot::FileBarRedo)) return fileBar_;
   if (within(s, Slot::ToolsBarTools, Slot::ToolsBarFlip)) return toolsBar_;

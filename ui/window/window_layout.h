@@ -38,6 +38,8 @@ enum class Slot {
   ExportAnimation,
   ExportForcesTable,
   ExportForcesFigure,
+  ExportCycleFigure,
+  ExportTimingTable,
   // Edit
   EditUndo,
   EditRedo,
@@ -71,6 +73,7 @@ enum class Slot {
   ViewForcesDock,
   ViewDesignChecksDock,
   ViewMechanismsDock,
+  ViewCycleDock,
   // Animation
   AnimationPlay,
   AnimationStepBack,
@@ -89,6 +92,9 @@ enum class Slot {
   AnalysisForcesDock,
   AnalysisForces,
   AnalysisBalance,
+  AnalysisSeparator3,
+  AnalysisCycleDock,
+  AnalysisWatchClearance,
   // Help
   HelpAbout,
   // The toolbars: File (top), Tools (left), View (top), Animation (bottom).

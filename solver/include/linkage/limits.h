@@ -14,16 +14,7 @@
 
 namespace linkage {
 
-// What to follow: a point's position along a unit direction (mm; the dot product of the
-// position with the direction), or, with `body` set, a body's angle (degrees, relative to the
-// drawing, counter-clockwise, whole turns counted).
-struct LimitMeasure {
-  PointId point;
-  Vec2 direction = Vec2(0, 1);
-  BodyId body;
-  static LimitMeasure along(PointId p, Vec2 direction) { return {p, direction, {}}; }
-  static LimitMeasure angleOf(BodyId b) { return {{}, Vec2(0, 1), b}; }
-};
+// What to follow: a LimitMeasure (linkage/model.h).
 
 // The direction a point's stroke is measured along by default: that of the ground slot it runs
 // in (its own pin-in-slot, or a slider that carries its body, either way round), turned to

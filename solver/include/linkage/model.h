@@ -130,6 +130,59 @@ struct MechanismEntry {
   bool operator==(const MechanismEntry&) const = default;
 };
 
+// A scalar of the motion: a point's position along a unit direction (mm; the dot product of
+// the position with the direction), or, with `body` set, a body's angle (degrees, relative to
+// the drawing, counter-clockwise, whole turns counted). What limits, windows and the rows of a
+// cycle diagram follow (linkage/limits.h, linkage/timing.h).
+struct LimitMeasure {
+  PointId point;
+  Vec2 direction = Vec2(0, 1);
+  BodyId body;
+  static LimitMeasure along(PointId p, Vec2 direction) { return {p, direction, {}}; }
+  static LimitMeasure angleOf(BodyId b) { return {{}, Vec2(0, 1), b}; }
+  bool operator==(const LimitMeasure&) const = default;
+};
+
+// The machine's cycle (timing) diagram as the document keeps it (the file's optional "timing";
+// linkage/timing_text.h reads and writes its parts as a user types them). By ids, so that a
+// rename follows them and a removal takes them along, and undo puts them back.
+struct TimingWindow {
+  std::string name;  // unique among the windows; no ',', '+', ':', '<', '>' or spaces
+  LimitMeasure output;
+  bool below = true;  // output < level; else output > level
+  double level = 0;
+  bool operator==(const TimingWindow&) const = default;
+};
+// Two windows that must not overlap, by name.
+struct TimingConflict {
+  std::string first, second;
+  bool operator==(const TimingConflict&) const = default;
+};
+// A clearance watched over the cycle: between two points, or a point and another body's slot.
+struct ClearanceWatch {
+  PointId point;
+  PointId other;  // or
+  SlotId slot;
+  std::optional<double> minMm;  // the least allowed; none: only shown
+  bool operator==(const ClearanceWatch&) const = default;
+};
+struct Timing {
+  std::vector<LimitMeasure> outputs;  // rows of their own (a window's output is a row too)
+  std::vector<TimingWindow> windows;
+  std::vector<TimingConflict> conflicts;
+  std::vector<ClearanceWatch> clearances;
+  Extras extras;
+  bool empty() const {
+    return outputs.empty() && windows.empty() && conflicts.empty() && clearances.empty() &&
+           extras.empty();
+  }
+  // Window i made `w`; the conflicts that named it follow a new name.
+  void replaceWindow(size_t i, TimingWindow w);
+  // Window i taken out with the conflicts that name it.
+  void removeWindow(size_t i);
+  bool operator==(const Timing&) const = default;
+};
+
 enum class Direction { Cw, Ccw };
 
 struct Driver {
@@ -155,6 +208,11 @@ struct Removal {
   std::vector<At<PointId>> outputs;
   std::vector<At<Load>> loads;
   std::optional<Driver> driver;  // set when the driver's joint was removed
+  // The cycle diagram's parts on what went (a conflict goes with either of its windows).
+  std::vector<At<LimitMeasure>> timingOutputs;
+  std::vector<At<TimingWindow>> timingWindows;
+  std::vector<At<TimingConflict>> timingConflicts;
+  std::vector<At<ClearanceWatch>> clearances;
   bool empty() const { return bodies.empty() && points.empty() && slots.empty() && joints.empty(); }
 };
 
@@ -171,6 +229,8 @@ struct Mechanism {
   std::vector<Load> loads;
   // The file's "mechanisms", in file order.
   std::vector<MechanismEntry> mechanismEntries;
+  // The file's "timing": what the machine's cycle diagram shows.
+  Timing timing;
   Extras extras;         // unknown top-level fields
   Extras unitsExtras;    // unknown fields of "units"
   Extras outputsExtras;  // unknown fields of "outputs"
@@ -195,7 +255,8 @@ struct Mechanism {
   // Removal cascades to what cannot stand without the entity: a joint takes the driver along if
   // it is the driver's; a point its joints and its place among the outputs; a slot its joints;
   // a body its points and slots (and so their joints) and the joints it carries; a point or a
-  // body the loads on it. Ids this mechanism
+  // body the loads on it and the cycle diagram's rows, windows and clearances that follow it
+  // (and a window the conflicts that name it). Ids this mechanism
   // does not hold are ignored. The Removal undoes it exactly with restore(), as long as nothing
   // else changed in between (what an undo stack guarantees).
   Removal remove(const std::vector<BodyId>& bodies, const std::vector<PointId>& points = {},

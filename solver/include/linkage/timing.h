@@ -93,6 +93,11 @@ CycleDiagram cycleDiagram(const Kinematics& k, const std::vector<CycleOutput>& o
                           const std::vector<std::pair<std::string, std::string>>& conflicts,
                           const CycleOptions& opt = {});
 
+// The diagram of the timing a document keeps (linkage/model.h's Timing: its outputs, windows
+// and conflicts; each output named as linkage/timing_text.h writes it). Its clearances are
+// linkage/clearance.h's.
+CycleDiagram cycleDiagram(const Kinematics& k, const Timing& t, const CycleOptions& opt = {});
+
 // "body.point:y", "body.point:x", "body.point:DX,DY", "body:angle"; nullopt with `why` (which
 // part is wrong and why) otherwise.
 std::optional<CycleOutput> parseOutput(const Mechanism& m, const std::string& text,

@@ -1,0 +1,220 @@
+#include "linkage/timing_text.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace linkage {
+
+namespace {
+
+// A number, locale-independent and strict (no spaces, no trailing characters).
+std::optional<double> numberOf(const std::string& t) {
+  double v = 0;
+  const char* end = t.data() + t.size();
+  const auto [p, ec] = std::from_chars(t.data(), end, v);
+  if (t.empty() || ec != std::errc() || p != end || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+// A unit vector that normalising leaves as it is, so that the text a file keeps of it (its
+// shortest digits, which read back to the same doubles) reads back to the same direction:
+// normalising once may leave a vector one rounding off length 1, which the next would change.
+Vec2 unitOf(Vec2 v) {
+  for (int i = 0; i < 8; ++i) {
+    const Vec2 n = v.normalized();
+    if (n == v) break;
+    v = n;
+  }
+  return v;
+}
+
+std::optional<Vec2> directionOf(const std::string& t) {
+  const size_t comma = t.find(',');
+  if (comma == std::string::npos) return std::nullopt;
+  const std::optional<double> x = numberOf(t.substr(0, comma)), y = numberOf(t.substr(comma + 1));
+  if (!x || !y || (*x == 0 && *y == 0)) return std::nullopt;
+  return unitOf(Vec2(*x, *y));
+}
+
+bool fail(std::string* why, std::string text) {
+  if (why) *why = std::move(text);
+  return false;
+}
+
+std::string quoted(const std::string& s) {
+  return "\"" + s + "\"";
+}
+
+std::string measureProblem(const Mechanism& m, const LimitMeasure& x) {
+  if (x.body) return m.contains(x.body) ? "" : "the body is not in the mechanism";
+  if (!m.contains(x.point)) return "the point is not in the mechanism";
+  if (!std::isfinite(x.direction.x()) || !std::isfinite(x.direction.y()) ||
+      std::abs(x.direction.norm() - 1) > 1e-12)
+    return "the direction is not a unit vector";
+  return "";
+}
+
+std::string windowsProblem(const Mechanism& m, const Timing& t) {
+  for (size_t i = 0; i < t.windows.size(); ++i) {
+    const TimingWindow& w = t.windows[i];
+    const std::string at = "timing.windows[" + std::to_string(i) + "]: ";
+    if (!validWindowName(w.name)) return at + "the name " + quoted(w.name) + " is not valid";
+    for (size_t j = 0; j < i; ++j)
+      if (t.windows[j].name == w.name) return at + "a second window named " + quoted(w.name);
+    if (std::string p = measureProblem(m, w.output); !p.empty()) return at + p;
+    if (!std::isfinite(w.level)) return at + "the level is not a number";
+  }
+  return "";
+}
+
+std::string conflictsProblem(const Timing& t) {
+  auto known = [&](const std::string& n) {
+    return std::any_of(t.windows.begin(), t.windows.end(),
+                       [&](const TimingWindow& w) { return w.name == n; });
+  };
+  for (size_t i = 0; i < t.conflicts.size(); ++i) {
+    const TimingConflict& c = t.conflicts[i];
+    const std::string at = "timing.conflicts[" + std::to_string(i) + "]: ";
+    for (const std::string* n : {&c.first, &c.second})
+      if (!known(*n)) return at + "no window named " + quoted(*n);
+    if (c.first == c.second) return at + "a window cannot conflict with itself";
+  }
+  return "";
+}
+
+std::string clearancesProblem(const Mechanism& m, const Timing& t) {
+  for (size_t i = 0; i < t.clearances.size(); ++i) {
+    const ClearanceWatch& c = t.clearances[i];
+    const std::string at = "timing.clearances[" + std::to_string(i) + "]: ";
+    if (!m.contains(c.point)) return at + "the point is not in the mechanism";
+    if (c.other.value != 0 && c.slot.value != 0) return at + "a second point or a slot, not both";
+    if (c.other ? !m.contains(c.other) : !m.contains(c.slot))
+      return at + "the other point or slot is not in the mechanism";
+    if (c.other == c.point) return at + "a point's clearance to itself";
+    if (c.slot && m.slot(c.slot)->body == m.point(c.point)->body)
+      return at + "the point " + m.pointLabel(c.point) + " is on the body of the slot " +
+             m.slotLabel(c.slot) + ": their distance does not change";
+    if (c.minMm && !(std::isfinite(*c.minMm) && *c.minMm >= 0))
+      return at + "the minimum is not a number >= 0";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string shortestText(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+bool validWindowName(const std::string& name) {
+  if (name.empty() || name.find_first_of(",+:<>=\" ") != std::string::npos) return false;
+  // Control characters (a newline would end a CSV row) are no part of a name either.
+  return std::none_of(name.begin(), name.end(),
+                      [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+}
+
+std::optional<LimitMeasure> parseMeasure(const Mechanism& m, const std::string& text,
+                                         std::string* why) {
+  const size_t colon = text.rfind(':');
+  if (colon == std::string::npos) {
+    fail(why, quoted(text) + " is not body.point:y, body.point:x, body.point:DX,DY or body:angle");
+    return std::nullopt;
+  }
+  const std::string target = text.substr(0, colon), what = text.substr(colon + 1);
+  if (what == "angle") {
+    if (const Body* b = m.bodyNamed(target)) return LimitMeasure::angleOf(b->id);
+    fail(why, "no body " + quoted(target) + " (an angle is of a body: body:angle)");
+    return std::nullopt;
+  }
+  const std::optional<PointId> p = m.findPoint(target);
+  if (!p) {
+    fail(why, "no point " + quoted(target) + " (body.point)");
+    return std::nullopt;
+  }
+  std::optional<Vec2> d = what == "x" ? Vec2(1, 0) : what == "y" ? Vec2(0, 1) : directionOf(what);
+  if (!d) {
+    fail(why, quoted(what) + " after " + quoted(target + ":") +
+                  " is not x, y, angle or a direction DX,DY other than 0,0");
+    return std::nullopt;
+  }
+  return LimitMeasure::along(*p, *d);
+}
+
+std::string measureText(const Mechanism& m, const LimitMeasure& x) {
+  if (x.body) {
+    const Body* b = m.body(x.body);
+    return (b ? b->name : "?") + ":angle";
+  }
+  const std::string p = m.contains(x.point) ? m.pointLabel(x.point) : "?";
+  if (x.direction == Vec2(1, 0)) return p + ":x";
+  if (x.direction == Vec2(0, 1)) return p + ":y";
+  return p + ":" + shortestText(x.direction.x()) + "," + shortestText(x.direction.y());
+}
+
+std::optional<TimingWindow> parseTimingWindow(const Mechanism& m, const std::string& text,
+                                              std::string* why) {
+  const size_t eq = text.find('=');
+  const std::string name = eq == std::string::npos ? "" : text.substr(0, eq);
+  if (!validWindowName(name)) {
+    fail(why, quoted(text) +
+                  " is not NAME=OUTPUT<VALUE or NAME=OUTPUT>VALUE (a NAME without "
+                  "',', '+', ':', '<', '>', '\"', spaces or control characters)");
+    return std::nullopt;
+  }
+  const std::string rest = text.substr(eq + 1);
+  const size_t op = rest.find_first_of("<>");
+  if (op == std::string::npos) {
+    fail(why, quoted(rest) + " has no '<' or '>' (OUTPUT<VALUE or OUTPUT>VALUE)");
+    return std::nullopt;
+  }
+  TimingWindow w;
+  w.name = name;
+  w.below = rest[op] == '<';
+  const std::string value = rest.substr(op + 1);
+  const std::optional<double> level = numberOf(value);
+  if (!level) {
+    fail(why, quoted(value) + " after '" + rest[op] + "' is not a number");
+    return std::nullopt;
+  }
+  w.level = *level;
+  std::optional<LimitMeasure> o = parseMeasure(m, rest.substr(0, op), why);
+  if (!o) return std::nullopt;
+  w.output = *o;
+  return w;
+}
+
+std::string windowText(const Mechanism& m, const TimingWindow& w) {
+  return w.name + "=" + measureText(m, w.output) + (w.below ? "<" : ">") + shortestText(w.level);
+}
+
+bool parseClearanceSide(const Mechanism& m, const std::string& text, PointId& point, SlotId& slot,
+                        std::string* why) {
+  point = {};
+  slot = {};
+  if (std::optional<PointId> p = m.findPoint(text)) {
+    point = *p;
+    return true;
+  }
+  const size_t dot = text.rfind('.');
+  if (dot != std::string::npos)
+    if (const Body* b = m.bodyNamed(text.substr(0, dot)))
+      if (const Slot* s = m.slotNamed(b->id, text.substr(dot + 1))) {
+        slot = s->id;
+        return true;
+      }
+  return fail(why, "no point or slot " + quoted(text) + " (body.point or body.slot)");
+}
+
+std::string timingProblem(const Mechanism& m, const Timing& t) {
+  for (size_t i = 0; i < t.outputs.size(); ++i)
+    if (std::string p = measureProblem(m, t.outputs[i]); !p.empty())
+      return "timing.outputs[" + std::to_string(i) + "]: " + p;
+  if (std::string p = windowsProblem(m, t); !p.empty()) return p;
+  if (std::string p = conflictsProblem(t); !p.empty()) return p;
+  return clearancesProblem(m, t);
+}
+
+}  // namespace linkage

@@ -1,0 +1,216 @@
+// The Cycle dock (issue 18): entries typed are undo steps kept in the file, their results are
+// the solver's exact windows, overlaps and closest approaches; a clearance is watched from the
+// canvas's selection and marked on the canvas at its closest pose; the cursor follows the crank
+// and a click turns it; only determined numbers are shown; no work while hidden; the exports
+// are the command line's table and a figure.
+#include <gtest/gtest.h>
+
+#include <QFile>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTreeWidget>
+
+#include "cycle/cycle_panel.h"
+#include "document/document.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/model_lookup.h"
+#include "linkage/tables/timing_table.h"
+#include "plots/qcp.h"
+#include "tools/selection.h"
+#include "ui_test.h"
+
+namespace linkage::ui {
+namespace {
+
+class CyclePanelTest : public ::testing::Test {
+ protected:
+  void open(const char* name) {
+    ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel(name)), nullptr)) << name;
+  }
+  void showAndSettle() {
+    panel.resize(1400, 350);
+    panel.show();
+    settle();
+  }
+  void settle() {
+    QTest::qWait(40);
+    QElapsedTimer t;
+    t.start();
+    while (panel.redrawPending() && t.elapsed() < 10000) QTest::qWait(5);
+    ASSERT_FALSE(panel.redrawPending());
+  }
+  Document doc;
+  CyclePanel panel{&doc};
+};
+
+TEST_F(CyclePanelTest, EntriesAreUndoStepsWithTheSolversResults) {
+  open("lockstitch-machine");
+  showAndSettle();
+  EXPECT_FALSE(panel.diagram());  // nothing to show yet: a sentence says what to add
+  EXPECT_TRUE(panel.message().contains("add a row")) << panel.message();
+  QString why;
+  ASSERT_TRUE(panel.addEntry(EntryKind::Window, "needle=needlebar.N:y<-185", &why)) << why;
+  ASSERT_TRUE(panel.addEntry(EntryKind::Window, " low=needlebar.N:y<-180 ", &why)) << why;
+  ASSERT_TRUE(panel.addEntry(EntryKind::Conflict, "needle,low", &why)) << why;
+  EXPECT_EQ(doc.undoStack()->count(), 3);
+  EXPECT_TRUE(doc.isModified());
+  settle();
+  ASSERT_TRUE(panel.diagram()) << panel.message();
+  const CycleDiagram expect = cycleDiagram(doc.kinematics(), doc.design().timing);
+  ASSERT_EQ(expect.windows.size(), 2u);
+  const AngleInterval n = expect.windows[0].intervals.at(0);
+  EXPECT_EQ(panel.diagram()->windows[0].intervals.at(0).fromDeg, n.fromDeg);
+  EXPECT_EQ(panel.resultText(EntryKind::Window, 0),
+            QString("%1°–%2°").arg(n.fromDeg, 0, 'f', 2).arg(n.toDeg, 0, 'f', 2));
+  // The needle below -185 is inside the needle below -180: they overlap where the first holds.
+  EXPECT_TRUE(panel.resultText(EntryKind::Conflict, 0).startsWith("overlap 131.59°"))
+      << panel.resultText(EntryKind::Conflict, 0);
+  EXPECT_EQ(panel.entryList()->topLevelItemCount(), 3);
+  // Undo takes the conflict away, redo puts it back; the file keeps them.
+  doc.undoStack()->undo();
+  settle();
+  EXPECT_EQ(panel.entryList()->topLevelItemCount(), 2);
+  doc.undoStack()->redo();
+  const std::string text = serializeMechanism(doc.design());
+  EXPECT_NE(text.find(R"("low=needlebar.N:y<-180")"), std::string::npos) << text;
+  // A wrong entry changes nothing and says why.
+  EXPECT_FALSE(panel.addEntry(EntryKind::Window, "x=needlebar.Q:y<0", &why));
+  EXPECT_TRUE(why.contains("no point \"needlebar.Q\"")) << why;
+  EXPECT_FALSE(panel.addEntry(EntryKind::Window, "needle=needlebar.N:y<0", &why));
+  EXPECT_TRUE(why.contains("a second window named")) << why;
+  EXPECT_EQ(doc.undoStack()->count(), 3);
+}
+
+TEST_F(CyclePanelTest, TypedInTheLineAndEditedInTheList) {
+  open("lockstitch-machine");
+  showAndSettle();
+  panel.kindBox()->setCurrentIndex(0);  // a row
+  QTest::keyClicks(panel.entryLine(), "takeup.E:y");
+  QTest::keyClick(panel.entryLine(), Qt::Key_Return);
+  EXPECT_TRUE(panel.entryLine()->text().isEmpty());
+  ASSERT_EQ(doc.design().timing.outputs.size(), 1u);
+  QTest::keyClicks(panel.entryLine(), "takeup.Z:y");
+  QTest::keyClick(panel.entryLine(), Qt::Key_Return);
+  EXPECT_EQ(panel.entryLine()->text(), "takeup.Z:y");  // kept to be corrected
+  EXPECT_TRUE(panel.entryError().contains("no point")) << panel.entryError();
+  // Edited in the list: a valid text is an undo step; a wrong one goes back and says why.
+  QTreeWidgetItem* item = panel.entryList()->topLevelItem(0);
+  item->setText(1, "takeup.E:x");
+  EXPECT_EQ(doc.design().timing.outputs[0].direction, Vec2(1, 0));
+  EXPECT_EQ(doc.undoStack()->count(), 2);
+  item = panel.entryList()->topLevelItem(0);
+  item->setText(1, "takeup.E:q");
+  EXPECT_EQ(panel.entryList()->topLevelItem(0)->text(1), "takeup.E:x");
+  EXPECT_TRUE(panel.entryError().contains("\"q\"")) << panel.entryError();
+  EXPECT_EQ(doc.undoStack()->count(), 2);
+  // Delete in the list takes the entry out, as one undo step.
+  panel.entryList()->setCurrentItem(panel.entryList()->topLevelItem(0));
+  QTest::keyClick(panel.entryList(), Qt::Key_Delete);
+  EXPECT_TRUE(doc.design().timing.outputs.empty());
+  EXPECT_EQ(doc.undoStack()->count(), 3);
+}
+
+TEST_F(CyclePanelTest, ClearanceFromTheSelectionMarkedAtItsClosestPose) {
+  open("lockstitch-machine");
+  showAndSettle();
+  QSignalSpy marks(&panel, &CyclePanel::marksChanged);
+  Selection s;
+  QString why;
+  EXPECT_FALSE(panel.watchSelection(s, &why));
+  EXPECT_TRUE(why.contains("Select two points")) << why;
+  s.add(*doc.design().findPoint("hook.K"));
+  s.add(*doc.design().findPoint("needlebar.N"));
+  ASSERT_TRUE(panel.watchSelection(s, &why)) << why;
+  settle();
+  ASSERT_TRUE(panel.diagram()) << panel.message();
+  ASSERT_EQ(panel.clearances().size(), 1u);
+  const Mechanism& m = doc.design();
+  const Clearance c = findClearance(doc.kinematics(), ClearanceItem::of(*m.findPoint("hook.K")),
+                                    ClearanceItem::of(*m.findPoint("needlebar.N")));
+  const Clearance& shown = panel.clearances()[0].clearance;
+  EXPECT_EQ(shown.closest.distance, c.closest.distance);
+  EXPECT_EQ(shown.closest.crankDeg, c.closest.crankDeg);
+  ASSERT_FALSE(marks.isEmpty());
+  auto last = marks.back().at(0).value<std::vector<ClearanceMark>>();
+  ASSERT_EQ(last.size(), 1u);
+  EXPECT_EQ(last[0].a, c.closestPoint);
+  EXPECT_EQ(last[0].b, c.closestOther);
+  EXPECT_FALSE(last[0].tooClose);
+  // A minimum above the closest approach: too close, in the result and on the canvas.
+  ASSERT_TRUE(panel.editEntry(EntryKind::Clearance, 0, "hook.K needlebar.N min 5", &why)) << why;
+  settle();
+  EXPECT_TRUE(panel.resultText(EntryKind::Clearance, 0).contains("under the minimum, 5 mm"))
+      << panel.resultText(EntryKind::Clearance, 0);
+  last = marks.back().at(0).value<std::vector<ClearanceMark>>();
+  ASSERT_EQ(last.size(), 1u);
+  EXPECT_TRUE(last[0].tooClose);
+  // Hidden, the canvas shows none.
+  panel.hide();
+  EXPECT_TRUE(marks.back().at(0).value<std::vector<ClearanceMark>>().empty());
+}
+
+TEST_F(CyclePanelTest, CursorFollowsTheCrankAndAClickTurnsIt) {
+  open("lockstitch-machine");
+  QString why;
+  ASSERT_TRUE(panel.addEntry(EntryKind::Window, "needle=needlebar.N:y<-185", &why)) << why;
+  showAndSettle();
+  ASSERT_TRUE(panel.diagram());
+  ASSERT_TRUE(doc.setCrankDeg(100).ok());
+  EXPECT_DOUBLE_EQ(panel.figure().cursor(), 100);
+  EXPECT_TRUE(panel.cursorText().startsWith("At 100.00°: needle does not")) << panel.cursorText();
+  ASSERT_TRUE(doc.setCrankDeg(180).ok());
+  EXPECT_TRUE(panel.cursorText().contains("needle holds")) << panel.cursorText();
+  QSignalSpy asked(&panel, &CyclePanel::crankAngleRequested);
+  const QPointF at = panel.figure().pixelAt(250, 0.5, 0);
+  QTest::mouseClick(panel.plotWidget(), Qt::LeftButton, {}, at.toPoint());
+  ASSERT_EQ(asked.size(), 1);
+  EXPECT_NEAR(asked[0][0].toDouble(), 250, 1.0);  // a pixel's worth
+}
+
+TEST_F(CyclePanelTest, OnlyDeterminedNumbersAndNoWorkWhileHidden) {
+  open("lockstitch-machine");
+  QString why;
+  ASSERT_TRUE(panel.addEntry(EntryKind::Window, "needle=needlebar.N:y<-185", &why)) << why;
+  EXPECT_EQ(panel.computations(), 0);  // hidden: nothing computed
+  showAndSettle();
+  EXPECT_EQ(panel.computations(), 1);
+  panel.hide();
+  ASSERT_TRUE(panel.addEntry(EntryKind::Row, "takeup.E:y", &why)) << why;
+  QTest::qWait(60);
+  EXPECT_EQ(panel.computations(), 1);
+  // A pin taken out: the motion is not determined; a sentence in place of the diagram.
+  Mechanism m = doc.design();
+  m.remove(m.joints[1].id);
+  doc.setDesign(m);
+  showAndSettle();
+  EXPECT_FALSE(panel.diagram());
+  EXPECT_TRUE(panel.message().contains("not determined") || panel.message().contains("not solved"))
+      << panel.message();
+  EXPECT_TRUE(panel.resultText(EntryKind::Window, 0).isEmpty());
+  EXPECT_TRUE(panel.cursorText().isEmpty());
+}
+
+TEST_F(CyclePanelTest, ExportsAreTheCommandLinesTableAndAFigure) {
+  open("lockstitch-machine");
+  QString why;
+  ASSERT_TRUE(panel.addEntry(EntryKind::Window, "needle=needlebar.N:y<-185", &why)) << why;
+  ASSERT_TRUE(panel.addEntry(EntryKind::Clearance, "hook.K needlebar.N", &why)) << why;
+  QTemporaryDir dir;
+  const QString csv = dir.filePath("t.csv"), svg = dir.filePath("t.svg");
+  ASSERT_TRUE(panel.exportTable(csv, &why)) << why;  // computed for it while hidden
+  QFile f(csv);
+  ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+  EXPECT_EQ(f.readAll().toStdString(),
+            timingTable(cycleDiagram(doc.kinematics(), doc.design().timing)));
+  ASSERT_TRUE(panel.exportFigure(svg, QSize(1200, 400), &why)) << why;
+  QFile g(svg);
+  ASSERT_TRUE(g.open(QIODevice::ReadOnly));
+  const QByteArray text = g.readAll();
+  EXPECT_TRUE(text.contains("needlebar.N:y"));
+  EXPECT_TRUE(text.contains("closest"));
+}
+
+}  // namespace
+}  // namespace linkage::ui

@@ -1,0 +1,39 @@
+// The clearances a machine's Cycle dock watches, on the canvas: for each, where its two things
+// are at their closest approach over the cycle (a ring at each, a dashed line between them) with
+// the distance and the crank angle, in the warning colour when it is under the least allowed.
+// The closest pose is usually not the pose shown: the marks say where the parts will meet.
+#pragma once
+
+#include <QString>
+#include <vector>
+
+#include "canvas/canvas_item.h"
+#include "linkage/geometry.h"
+
+namespace linkage::ui {
+
+class LabelItem;
+
+struct ClearanceMark {
+  Vec2 a = Vec2::Zero(), b = Vec2::Zero();  // world, mm
+  QString text;                             // "hook.K – needlebar.N 0.42 mm at 201.3°"
+  bool tooClose = false;
+};
+
+class ClearanceMarksItem : public CanvasItem {
+ public:
+  explicit ClearanceMarksItem(const CanvasContext* ctx);
+  void setMarks(std::vector<ClearanceMark> marks);
+  const std::vector<ClearanceMark>& marks() const { return marks_; }
+  QRectF boundingRect() const override;
+  void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
+
+ protected:
+  void rebuild() override;
+
+ private:
+  std::vector<ClearanceMark> marks_;
+  std::vector<LabelItem*> labels_;
+};
+
+}  // namespace linkage::ui

@@ -1,0 +1,70 @@
+// The cycle (timing) diagram of a machine in a QCustomPlot (linkage/timing.h): a row per output
+// over one machine cycle (crank angle 0 to 360 of the main shaft), normalised to its stroke,
+// with its dead centres (dots) and dwells (grey); each window shaded in its output's row and
+// named; the overlaps of windows that must not overlap in red across every row; under them a
+// row per clearance watched (linkage/clearance.h), in mm from 0 at the row's foot, with its
+// least allowed distance (a red line), the closest approach marked and named, and what is under
+// the minimum drawn red. A cursor at the pose on a layer of its own.
+//
+// Drawn by the editor's Cycle dock and by linkage-plot (linkage-cli timing --out).
+#pragma once
+
+#include <QPointF>
+#include <QString>
+#include <optional>
+#include <vector>
+
+#include "linkage/clearance.h"
+#include "linkage/timing.h"
+
+class QCustomPlot;
+class QCPItemStraightLine;
+class QCPLayer;
+
+namespace linkage::ui {
+
+struct CycleClearanceRow {
+  QString label;  // "hook.K – needlebar.N"
+  Clearance clearance;
+  std::optional<double> minMm;
+};
+
+class CycleFigure {
+ public:
+  explicit CycleFigure(QCustomPlot* plot);
+
+  // `windows` are those the diagram was made with (each names its output's row).
+  void build(const CycleDiagram& d, const std::vector<CycleWindow>& windows,
+             const std::vector<CycleClearanceRow>& clearances, const QString& title,
+             const QString& crankLabel);
+  void clear();
+  // The cursor at a crank angle in [0, 360]; repaints its layer only.
+  void setCursor(double deg);
+  void setCursorVisible(bool on);
+  // The crank angle under a pixel of the diagram (NaN outside its axes).
+  double crankAt(const QPointF& pixel) const;
+  double crankAtX(double pixelX) const;
+  // The height in pixels the rows want (an export's or the dock's).
+  static int heightFor(int rows);
+
+  // For tests and tools: the rows drawn (outputs, then clearances), top first.
+  int rowCount() const { return rows_; }
+  QString rowLabel(int row) const;
+  double cursor() const { return cursorDeg_; }
+  QPointF pixelAt(double crankDeg, double rowHeight, int row) const;
+
+ private:
+  void drawRows(const CycleDiagram& d);
+  void drawWindows(const CycleDiagram& d, const std::vector<CycleWindow>& windows);
+  void drawClearance(const CycleClearanceRow& c, int row);
+  double base(int row) const;
+
+  QCustomPlot* plot_;
+  QCPLayer* cursorLayer_;
+  QCPItemStraightLine* cursor_ = nullptr;
+  std::vector<QString> labels_;
+  int rows_ = 0;
+  double cursorDeg_ = 0;
+};
+
+}  // namespace linkage::ui

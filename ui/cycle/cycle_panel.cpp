@@ -1,0 +1,586 @@
+#include "cycle/cycle_panel.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QTimer>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+#include "document/commands.h"
+#include "document/document.h"
+#include "export/figure_export.h"
+#include "forces/force_plots.h"
+#include "linkage/tables/timing_table.h"
+#include "linkage/timing_text.h"
+#include "plots/qcp.h"
+#include "tools/selection.h"
+
+namespace linkage::ui {
+
+namespace {
+
+constexpr int kKindRole = Qt::UserRole, kIndexRole = Qt::UserRole + 1;
+
+QString deg(double d) {
+  return QString::number(d, 'f', 2) + QStringLiteral("°");
+}
+
+QString intervalText(const AngleInterval& i) {
+  return deg(i.fromDeg) + QStringLiteral("–") + deg(i.toDeg);
+}
+
+QString mm(double v) {
+  return QString::number(v, 'g', 4) + QStringLiteral(" mm");
+}
+
+// Whether crank angle c (in [0, 360)) is inside an interval that may run past 360.
+bool inside(const AngleInterval& i, double c) {
+  return (c >= i.fromDeg && c <= i.toDeg) || (c + 360 >= i.fromDeg && c + 360 <= i.toDeg);
+}
+
+ClearanceItem otherOf(const ClearanceWatch& w) {
+  return w.other ? ClearanceItem::of(w.other) : ClearanceItem::of(w.slot);
+}
+
+QString watchLabel(const Mechanism& m, const ClearanceWatch& w) {
+  return QString::fromStdString(m.pointLabel(w.point) + " \u2013 " +
+                                (w.other ? m.pointLabel(w.other) : m.slotLabel(w.slot)));
+}
+
+}  // namespace
+
+CyclePanel::CyclePanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+  buildWidgets();
+  if (doc) {
+    connect(doc, &Document::designChanged, this, [this] {
+      stale_ = true;  // the results are of the entries before: none is shown until recomputed
+      fillList();
+      markStale();
+    });
+    connect(doc, &Document::poseChanged, this, &CyclePanel::updateCursor);
+    connect(doc, &QObject::destroyed, this, [this] { markStale(); });
+  }
+  fillList();
+}
+
+CyclePanel::~CyclePanel() = default;
+
+QWidget* CyclePanel::buildAddRow() {
+  auto* row = new QWidget;
+  auto* h = new QHBoxLayout(row);
+  h->setContentsMargins(0, 0, 0, 0);
+  kind_ = new QComboBox;
+  for (EntryKind k : kEntryKinds) kind_->addItem(kindName(k), static_cast<int>(k));
+  kind_->setToolTip(
+      tr("What to add: a row of the diagram, a window (where an output is below "
+         "or above a level), a conflict (two windows that must not overlap) or "
+         "a clearance between two moving parts"));
+  line_ = new QLineEdit;
+  auto* add = new QPushButton(tr("&Add"));
+  h->addWidget(new QLabel(tr("Add")));
+  h->addWidget(kind_);
+  h->addWidget(line_, 1);
+  h->addWidget(add);
+  auto hint = [this] {
+    line_->setPlaceholderText(kindHint(static_cast<EntryKind>(kind_->currentData().toInt())));
+  };
+  hint();
+  connect(kind_, &QComboBox::currentIndexChanged, this, hint);
+  auto submit = [this] {
+    QString why;
+    if (addEntry(static_cast<EntryKind>(kind_->currentData().toInt()), line_->text(), &why)) {
+      line_->clear();
+      error_->clear();
+    } else {
+      error_->setText(why);
+    }
+  };
+  connect(line_, &QLineEdit::returnPressed, this, submit);
+  connect(add, &QPushButton::clicked, this, submit);
+  return row;
+}
+
+void CyclePanel::buildWidgets() {
+  auto* top = new QVBoxLayout(this);
+  top->setContentsMargins(4, 4, 4, 4);
+  top->setSpacing(3);
+  top->addWidget(buildAddRow());
+  error_ = new QLabel;
+  error_->setWordWrap(true);
+  error_->setStyleSheet("color: #962020");
+  error_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  top->addWidget(error_);
+  auto* split = new QSplitter(Qt::Horizontal);
+  list_ = new QTreeWidget;
+  list_->setColumnCount(3);
+  list_->setHeaderLabels({tr("Kind"), tr("Entry"), tr("Result")});
+  list_->setRootIsDecorated(false);
+  list_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+  list_->setContextMenuPolicy(Qt::CustomContextMenu);
+  list_->header()->setStretchLastSection(true);
+  list_->setMinimumWidth(200);
+  connect(list_, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* i) { itemEdited(i); });
+  connect(list_, &QWidget::customContextMenuRequested, this, [this](const QPoint& at) {
+    QTreeWidgetItem* item = list_->itemAt(at);
+    if (!item) return;
+    QMenu menu;
+    menu.addAction(tr("Edit"), [this, item] { list_->editItem(item, 1); });
+    menu.addAction(tr("Remove"), [this, item] {
+      removeEntry(static_cast<EntryKind>(item->data(0, kKindRole).toInt()),
+                  item->data(0, kIndexRole).toInt());
+    });
+    menu.exec(list_->viewport()->mapToGlobal(at));
+  });
+  // Delete in the list removes its entry (a key, not an action: the window's Delete is Edit >
+  // Delete, and each shortcut is one action's).
+  list_->installEventFilter(this);
+  stack_ = new QStackedWidget;
+  plot_ = new QCustomPlot;
+  plot_->setMinimumSize(240, 120);
+  plot_->setCursor(Qt::CrossCursor);
+  plot_->setInteractions({});  // a drag turns the crank, not the axes
+  figure_ = std::make_unique<CycleFigure>(plot_);
+  sentence_ = new QLabel;
+  sentence_->setWordWrap(true);
+  sentence_->setAlignment(Qt::AlignCenter);
+  sentence_->setMargin(16);
+  stack_->addWidget(plot_);
+  stack_->addWidget(sentence_);
+  split->addWidget(list_);
+  split->addWidget(stack_);
+  split->setStretchFactor(1, 2);
+  split->setSizes({380, 760});
+  top->addWidget(split, 1);
+  values_ = new QLabel;
+  values_->setWordWrap(true);
+  values_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  values_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  top->addWidget(values_);
+  connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
+  connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { mouseOnPlot(e, false); });
+  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { dragging_ = false; });
+}
+
+bool CyclePanel::eventFilter(QObject* watched, QEvent* e) {
+  if (watched == list_ && e->type() == QEvent::KeyPress &&
+      static_cast<QKeyEvent*>(e)->key() == Qt::Key_Delete && list_->currentItem()) {
+    const QTreeWidgetItem* i = list_->currentItem();
+    removeEntry(static_cast<EntryKind>(i->data(0, kKindRole).toInt()),
+                i->data(0, kIndexRole).toInt());
+    return true;
+  }
+  return QWidget::eventFilter(watched, e);
+}
+
+// --- the entries ----------------------------------------------------------------------------
+
+void CyclePanel::fillList() {
+  filling_ = true;
+  list_->clear();
+  if (doc_) {
+    const Mechanism& m = doc_->design();
+    for (EntryKind k : kEntryKinds)
+      for (int i = 0; i < entryCount(m.timing, k); ++i) {
+        auto* item = new QTreeWidgetItem(list_, {kindName(k), entryText(m, k, i), QString()});
+        item->setData(0, kKindRole, static_cast<int>(k));
+        item->setData(0, kIndexRole, i);
+        item->setFlags(item->flags() | Qt::ItemIsEditable);
+      }
+  }
+  list_->resizeColumnToContents(0);
+  list_->resizeColumnToContents(1);
+  filling_ = false;
+  showResults();
+}
+
+void CyclePanel::itemEdited(QTreeWidgetItem* item) {
+  if (filling_ || !doc_) return;
+  const auto kind = static_cast<EntryKind>(item->data(0, kKindRole).toInt());
+  const int index = item->data(0, kIndexRole).toInt();
+  QString why;
+  const QString text = item->text(1);
+  if (text == entryText(doc_->design(), kind, index)) return;
+  if (!editEntry(kind, index, text, &why)) {
+    error_->setText(why);
+    // Back to what the document holds: the typed text stays in the error's sentence.
+    filling_ = true;
+    item->setText(1, entryText(doc_->design(), kind, index));
+    filling_ = false;
+  }
+}
+
+bool CyclePanel::change(const QString& title, const std::function<bool(Mechanism&, QString*)>& edit,
+                        QString* why) {
+  if (!doc_) return false;
+  Mechanism next = doc_->design();
+  QString bad;
+  if (!edit(next, &bad)) {
+    if (why) *why = bad;
+    return false;
+  }
+  error_->clear();
+  editDesign(doc_, title, std::move(next));
+  return true;
+}
+
+bool CyclePanel::addEntry(EntryKind kind, const QString& text, QString* why) {
+  return change(
+      tr("Add %1").arg(kindName(kind).toLower()),
+      [&](Mechanism& m, QString* bad) { return setEntry(m, kind, -1, text, bad); }, why);
+}
+
+bool CyclePanel::editEntry(EntryKind kind, int index, const QString& text, QString* why) {
+  if (!doc_ || index < 0 || index >= entryCount(doc_->design().timing, kind)) return false;
+  return change(
+      tr("Edit %1").arg(entryTitle(doc_->design(), kind, index)),
+      [&](Mechanism& m, QString* bad) { return setEntry(m, kind, index, text, bad); }, why);
+}
+
+void CyclePanel::removeEntry(EntryKind kind, int index) {
+  if (!doc_ || index < 0 || index >= entryCount(doc_->design().timing, kind)) return;
+  change(
+      tr("Remove %1").arg(entryTitle(doc_->design(), kind, index)),
+      [&](Mechanism& m, QString*) {
+        linkage::ui::removeEntry(m, kind, index);
+        return true;
+      },
+      nullptr);
+}
+
+bool CyclePanel::watchSelection(const Selection& s, QString* why) {
+  if (!doc_) return false;
+  QString text;
+  const Mechanism& m = doc_->design();
+  if (s.points.size() == 2 && s.slots_.empty() && s.size() == 2)
+    text = QString::fromStdString(m.pointLabel(s.points[0]) + " " + m.pointLabel(s.points[1]));
+  else if (s.points.size() == 1 && s.slots_.size() == 1 && s.size() == 2)
+    text = QString::fromStdString(m.pointLabel(s.points[0]) + " " + m.slotLabel(s.slots_[0]));
+  if (text.isEmpty()) {
+    if (why)
+      *why =
+          tr("Select two points, or a point and a slot of another body (Shift+click adds to "
+             "the selection), then watch their clearance.");
+    return false;
+  }
+  return addEntry(EntryKind::Clearance, text, why);
+}
+
+QString CyclePanel::entryError() const {
+  return error_->text();
+}
+
+// --- work -----------------------------------------------------------------------------------
+
+void CyclePanel::markStale() {
+  stale_ = true;
+  schedule();
+}
+
+void CyclePanel::schedule() {
+  // As the plots: nothing while hidden; shown, once per burst of edits and at most 30 times a
+  // second (a drag that reshapes the design edits it at every mouse move).
+  if (!isVisible() || pending_) return;
+  pending_ = true;
+  constexpr int kMinMs = 33;
+  const int wait = lastFigure_.isValid() ? std::max(0, kMinMs - int(lastFigure_.elapsed())) : 0;
+  QTimer::singleShot(wait, this, [this] {
+    if (!pending_) return;
+    recompute();
+    lastFigure_.start();
+  });
+}
+
+void CyclePanel::showEvent(QShowEvent* e) {
+  QWidget::showEvent(e);
+  ensureComputed();
+  updateCursor();
+  emitMarks();
+}
+
+void CyclePanel::hideEvent(QHideEvent* e) {
+  QWidget::hideEvent(e);
+  // The canvas shows what this dock watches only while the dock is seen.
+  Q_EMIT marksChanged({});
+}
+
+void CyclePanel::ensureComputed() {
+  if (stale_) recompute();
+}
+
+QString CyclePanel::whyNoDiagram() const {
+  if (!doc_) return tr("No document.");
+  if (!doc_->solved())
+    return tr("The design is not solved (%1): no cycle is shown.")
+        .arg(QString::fromStdString(doc_->solveStatus().message));
+  if (Status s = doc_->motionStatus(); !s.ok())
+    return tr("No cycle: %1; a cycle is that of a motion the driver determines.")
+        .arg(QString::fromStdString(s.message));
+  if (!doc_->design().driver) return tr("No cycle: the mechanism has no driver to turn.");
+  const Timing& t = doc_->design().timing;
+  if (t.outputs.empty() && t.windows.empty() && t.clearances.empty())
+    return tr(
+        "The machine's cycle diagram: add a row (needlebar.N:y), a window "
+        "(needle=needlebar.N:y<-150), a conflict between two windows, or the clearance "
+        "between two moving parts (select two points on the canvas, then Analysis > "
+        "Watch Clearance).");
+  return {};
+}
+
+void CyclePanel::recompute() {
+  pending_ = false;
+  stale_ = false;
+  diagram_ = CycleDiagram{};
+  windows_.clear();
+  clearances_.clear();
+  clearanceWhy_.clear();
+  why_ = whyNoDiagram();
+  if (why_.isEmpty()) {
+    const Kinematics& k = doc_->kinematics();  // the document's pose and branch; not moved
+    const Mechanism& m = k.mechanism();
+    for (const TimingWindow& w : m.timing.windows)
+      windows_.push_back({w.name, {measureText(m, w.output), w.output}, w.below, w.level});
+    diagram_ = cycleDiagram(k, m.timing);
+    ++computations_;
+    if (!diagram_.status.ok())
+      why_ = tr("No cycle: %1.").arg(QString::fromStdString(diagram_.status.message));
+    else
+      computeClearances(k);
+  }
+  rebuildFigure();
+  showResults();
+  emitMarks();
+}
+
+void CyclePanel::computeClearances(const Kinematics& k) {
+  const Mechanism& m = k.mechanism();
+  for (const ClearanceWatch& w : m.timing.clearances) {
+    Clearance c = findClearance(k, ClearanceItem::of(w.point), otherOf(w));
+    if (!c.status.ok()) {
+      clearanceWhy_.push_back(QString::fromStdString(c.status.message));
+      continue;
+    }
+    clearanceWhy_.push_back({});
+    clearances_.push_back({watchLabel(m, w), std::move(c), w.minMm});
+  }
+}
+
+const CycleDiagram* CyclePanel::diagram() const {
+  return why_.isEmpty() ? &diagram_ : nullptr;
+}
+
+void CyclePanel::rebuildFigure() {
+  if (!diagram()) {
+    figure_->clear();
+    plot_->replot();
+    sentence_->setText(why_);
+    stack_->setCurrentWidget(sentence_);
+    values_->clear();
+    return;
+  }
+  stack_->setCurrentWidget(plot_);
+  figure_->build(diagram_, windows_, clearances_, QString(), crankAxisLabel(doc_->design()));
+  updateCursor();
+}
+
+QString CyclePanel::resultText(EntryKind kind, int i) const {
+  if (stale_ || !diagram() || !doc_ || i < 0 || i >= entryCount(doc_->design().timing, kind))
+    return {};
+  const Mechanism& m = doc_->design();
+  switch (kind) {
+    case EntryKind::Row: {
+      const std::string name = measureText(m, m.timing.outputs[i]);
+      for (const CycleRow& r : diagram_.rows)
+        if (r.output.name == name) {
+          QStringList dead;
+          for (const LocalExtreme& e : r.extremes) dead << deg(e.crankDeg);
+          const QString unit = r.output.measure.body ? QStringLiteral("°") : QStringLiteral(" mm");
+          return tr("stroke %1%2; dead centres %3")
+              .arg(QString::number(r.max - r.min, 'g', 5), unit,
+                   dead.isEmpty() ? tr("none") : dead.join(", "));
+        }
+      return {};
+    }
+    case EntryKind::Window: {
+      const std::vector<AngleInterval>& v = diagram_.windows[i].intervals;
+      if (v.empty()) return tr("never");
+      if (v.size() == 1 && v[0].fromDeg == 0 && v[0].toDeg == 360) return tr("always");
+      QStringList parts;
+      for (const AngleInterval& x : v) parts << intervalText(x);
+      return parts.join("; ");
+    }
+    case EntryKind::Conflict: {
+      const std::vector<AngleInterval>& v = diagram_.conflicts[i].overlaps;
+      if (v.empty()) return tr("no overlap");
+      QStringList parts;
+      for (const AngleInterval& x : v) parts << intervalText(x);
+      return tr("overlap %1").arg(parts.join("; "));
+    }
+    case EntryKind::Clearance: {
+      if (i >= static_cast<int>(clearanceWhy_.size())) return {};
+      if (!clearanceWhy_[i].isEmpty()) return clearanceWhy_[i];
+      const int row =
+          static_cast<int>(std::count(clearanceWhy_.begin(), clearanceWhy_.begin() + i, QString()));
+      const CycleClearanceRow& c = clearances_[row];
+      QString t = tr("closest %1 at %2")
+                      .arg(mm(c.clearance.closest.distance), deg(c.clearance.closest.crankDeg));
+      if (c.minMm && c.clearance.closest.distance < *c.minMm)
+        t += tr(": under the minimum, %1").arg(mm(*c.minMm));
+      return t;
+    }
+  }
+  return {};
+}
+
+// Each entry's result in its row, red where something is wrong (an overlap, too close, an
+// entry that cannot be measured).
+void CyclePanel::showResults() {
+  filling_ = true;
+  for (int r = 0; r < list_->topLevelItemCount(); ++r) {
+    QTreeWidgetItem* item = list_->topLevelItem(r);
+    const auto kind = static_cast<EntryKind>(item->data(0, kKindRole).toInt());
+    const int i = item->data(0, kIndexRole).toInt();
+    const QString text = resultText(kind, i);
+    bool bad = false;
+    if (!stale_ && diagram() && kind == EntryKind::Conflict)
+      bad = !diagram_.conflicts[i].overlaps.empty();
+    if (!stale_ && diagram() && kind == EntryKind::Clearance)
+      bad = text.contains(tr("under the minimum")) ||
+            (i < static_cast<int>(clearanceWhy_.size()) && !clearanceWhy_[i].isEmpty());
+    item->setText(2, text);
+    item->setToolTip(2, text);
+    item->setForeground(2, bad ? QBrush(QColor(150, 32, 32)) : palette().text());
+  }
+  filling_ = false;
+}
+
+void CyclePanel::emitMarks() {
+  if (!isVisible() || !doc_) return;
+  std::vector<ClearanceMark> marks;
+  if (diagram())
+    for (const CycleClearanceRow& c : clearances_) {
+      const bool close = c.minMm && c.clearance.closest.distance < *c.minMm;
+      marks.push_back(
+          {c.clearance.closestPoint, c.clearance.closestOther,
+           tr("%1: %2 at %3")
+               .arg(c.label, mm(c.clearance.closest.distance), deg(c.clearance.closest.crankDeg)),
+           close});
+    }
+  Q_EMIT marksChanged(marks);
+}
+
+// --- the cursor -----------------------------------------------------------------------------
+
+void CyclePanel::updateCursor() {
+  if (!isVisible() || !doc_ || !diagram()) return;
+  const double c = doc_->crankDeg(), at = c - 360.0 * std::floor(c / 360.0);
+  figure_->setCursor(at);
+  QStringList parts;
+  for (const WindowIntervals& w : diagram_.windows) {
+    const bool holds = std::any_of(w.intervals.begin(), w.intervals.end(),
+                                   [&](const AngleInterval& i) { return inside(i, at); });
+    parts << (holds ? tr("%1 holds") : tr("%1 does not")).arg(QString::fromStdString(w.name));
+  }
+  const Kinematics& k = doc_->kinematics();
+  for (const ClearanceWatch& w : doc_->design().timing.clearances) {
+    const double d = clearanceAt(k, ClearanceItem::of(w.point), otherOf(w));
+    if (std::isfinite(d)) parts << tr("%1 %2").arg(watchLabel(k.mechanism(), w), mm(d));
+  }
+  values_->setText(tr("At %1: %2").arg(deg(at), parts.join(", ")));
+}
+
+QString CyclePanel::cursorText() const {
+  return values_->text();
+}
+
+void CyclePanel::mouseOnPlot(QMouseEvent* e, bool press) {
+  if (!(e->buttons() & Qt::LeftButton) || !diagram()) return;
+  if (press) dragging_ = !std::isnan(figure_->crankAt(e->position()));
+  if (!dragging_) return;
+  const double d = std::clamp(figure_->crankAtX(e->position().x()), 0.0, 360.0);
+  const double base = doc_ ? 360.0 * std::floor(doc_->crankDeg() / 360.0) : 0.0;
+  Q_EMIT crankAngleRequested(base + d);
+}
+
+// --- export ---------------------------------------------------------------------------------
+
+bool CyclePanel::exportFigure(const QString& path, QSize size, QString* error) {
+  ensureComputed();
+  if (!diagram()) {
+    if (error) *error = why_;
+    return false;
+  }
+  const QString name = QString::fromStdString(doc_->design().name);
+  figure_->build(diagram_, windows_, clearances_,
+                 (name.isEmpty() ? QString() : name + ": ") + tr("cycle diagram"),
+                 crankAxisLabel(doc_->design()));
+  figure_->setCursorVisible(false);
+  const bool ok = exportPlot(plot_, path, size, error);
+  figure_->setCursorVisible(true);
+  rebuildFigure();
+  return ok;
+}
+
+bool CyclePanel::exportTable(const QString& path, QString* error) {
+  ensureComputed();
+  if (!diagram()) {
+    if (error) *error = why_;
+    return false;
+  }
+  QSaveFile f(path);
+  const std::string text = timingTable(diagram_);
+  if (!f.open(QIODevice::WriteOnly) || f.write(text.data(), qint64(text.size())) < 0 ||
+      !f.commit()) {
+    if (error) *error = tr("%1: %2").arg(path, f.errorString());
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+QString suggested(const Document* d, const QString& suffix) {
+  QString base = d ? d->displayName() : QString("cycle");
+  base.remove(QStringLiteral(".linkage.json"));
+  const QString folder =
+      d && !d->filePath().isEmpty() ? QFileInfo(d->filePath()).absolutePath() : QDir::homePath();
+  return QDir(folder).filePath(base + "-cycle" + suffix);
+}
+
+}  // namespace
+
+void CyclePanel::saveFigureAs() {
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export Cycle Diagram"),
+                                                    suggested(doc_, QStringLiteral(".svg")),
+                                                    tr("SVG (*.svg);;PDF (*.pdf);;PNG (*.png)"));
+  if (path.isEmpty()) return;
+  QString why;
+  const int rows = figure_->rowCount();
+  if (!exportFigure(path, QSize(1200, CycleFigure::heightFor(rows) + 40), &why))
+    QMessageBox::warning(this, tr("Export Cycle Diagram"), why);
+}
+
+void CyclePanel::saveTableAs() {
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export Timing Table"),
+                                                    suggested(doc_, QStringLiteral(".csv")),
+                                                    tr("CSV tables (*.csv)"));
+  if (path.isEmpty()) return;
+  QString why;
+  if (!exportTable(path, &why)) QMessageBox::warning(this, tr("Export Timing Table"), why);
+}
+
+}  // namespace linkage::ui
