@@ -583,4 +583,30 @@ void CyclePanel::saveTableAs() {
   if (!exportTable(path, &why)) QMessageBox::warning(this, tr("Export Timing Table"), why);
 }
 
+QStringList CyclePanel::probeLines() const {
+  QStringList out;
+  out << QStringLiteral("cycle: ") + (diagram() ? QStringLiteral("%1 rows").arg(figure_->rowCount())
+                                                : QString(why_).replace('\n', ' '));
+  for (int r = 0; r < list_->topLevelItemCount(); ++r) {
+    const QTreeWidgetItem* item = list_->topLevelItem(r);
+    out << QStringLiteral("cycle entry %1 %2: %3 => %4")
+               .arg(item->text(0))
+               .arg(item->data(0, kIndexRole).toInt())
+               .arg(item->text(1), item->text(2));
+  }
+  out << QStringLiteral("cycle values: ") + values_->text();
+  auto at = [&](const char* name, const QWidget* w) {
+    const QPoint c = w->mapToGlobal(w->rect().center());
+    out << QStringLiteral("at cycle %1: %2 %3").arg(QLatin1String(name)).arg(c.x()).arg(c.y());
+  };
+  at("kind", kind_);
+  at("line", line_);
+  if (diagram() && figure_->rowCount() > 0)
+    for (int deg : {90, 250}) {
+      const QPoint c = plot_->mapToGlobal(figure_->pixelAt(deg, 0.5, 0).toPoint());
+      out << QStringLiteral("at cycle %1: %2 %3").arg(deg).arg(c.x()).arg(c.y());
+    }
+  return out;
+}
+
 }  // namespace linkage::ui

@@ -67,6 +67,9 @@ class CyclePanel : public QWidget {
   QString cursorText() const;
   QString resultText(EntryKind kind, int index) const;
   int computations() const { return computations_; }
+  // What a script driving the editor reads (window/probe.h): the sentence or the rows, each
+  // entry with its result, where the kind box, the line and the diagram's angles are.
+  QStringList probeLines() const;
   bool redrawPending() const { return pending_; }
 
  public Q_SLOTS:

@@ -16,7 +16,9 @@
 #include "animation/animator.h"
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
+#include "canvas/clearance_marks.h"
 #include "centres/centres_panel.h"
+#include "cycle/cycle_panel.h"
 #include "document/document.h"
 #include "linkage/io/model_file.h"
 #include "mechanisms/mechanisms_panel.h"
@@ -94,6 +96,8 @@ void windowText(MainWindow* w, QStringList& out) {
     out << QStringLiteral("at field %1: %2 %3").arg(label).arg(c.x()).arg(c.y());
   }
   out << w->mechanisms().panel->probeLines();
+  out << w->cycle().panel()->probeLines();
+  out << QStringLiteral("clearance marks: %1").arg(w->cycle().marks()->marks().size());
   const QUndoStack* u = w->document()->undoStack();
   for (int i = 0; i < u->count(); ++i) out << QStringLiteral("history: ") + u->text(i);
 }
