@@ -1,4 +1,5 @@
 // linkage-cli balance: counterweights that minimise the peak of the shaking force, exactly.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -30,17 +31,21 @@ exact angles until the peak and the programme's lower bound agree. Writes CSV:
   peak_before,,VALUE                   (N)
   peak_after,,VALUE                    (N)
 
-and on standard error the optimality gap (the peak after less the programme's bound).
+and on standard error the optimality gap (the peak after less the programme's bound) and,
+under gravity, the peak with the counterweights' own weight (as --out writes them as masses,
+they weigh: a constant force on the frame that the balance leaves out).
 
   --counterweight BODY  a body to put a counterweight on (repeatable)
   --minimize WHAT       fx, fy or force
-  --max-kgmm M          each counterweight's static moment at most M kg mm
+  --max-kgmm M          each counterweight's static moment at most M kg mm (0: none; the peak
+                        as it is)
   --steps N             samples per turn of the first programme (default 360, at least 8)
   --out FILE            also write MODEL with the counterweights added as masses (a point mass
                         at the radius of the body's farthest point from its pivot)
 
 Exit status: 0 success, 2 bad input (options, file, a body not pinned to the ground), 3 the
-mechanism cannot turn through the cycle.
+mechanism cannot turn through the cycle, 1 the --out file could not be written (the CSV is
+written before).
 )";
 
 struct Options {
@@ -55,7 +60,7 @@ CLI::App* addOptions(Parser& parser, Options& o) {
   addModel(c, o.model);
   required(addTexts(c, "--counterweight", o.bodies));
   required(addWord(c, "--minimize", o.measure, {"fx", "fy", "force"}));
-  addNumber(c, "--max-kgmm", o.balance.maxKgMm, NumberRule::Positive);
+  addNumber(c, "--max-kgmm", o.balance.maxKgMm, NumberRule::NotNegative);
   addWhole(c, "--steps", o.balance.steps, 8, 1'000'000);
   addText(c, "--out", o.out);
   return &c;
@@ -97,11 +102,22 @@ int balance(Options& o) {
         formatNumber(r.peakAfterDeg, 10) + " deg; optimality gap " + formatNumber(r.gap(), 3) +
         " N (no counterweights within the bound do better than " + formatNumber(r.lowerBound, 10) +
         " N), after " + std::to_string(r.exchanges) + " exchange(s)");
+  if (m->gravity && std::any_of(r.counterweights.begin(), r.counterweights.end(),
+                                [](const Counterweight& c) { return c.kgMm() > 0; })) {
+    Status why;
+    const std::optional<double> weighed = peakWithWeight(k, o.balance, r, &why);
+    error(weighed ? "note: under gravity the counterweights also weigh, which the balance leaves "
+                    "out; as masses at their bodies' farthest points (as --out writes them) the "
+                    "peak is " +
+                        formatNumber(*weighed, 10) + " N"
+                  : "note: the peak with the counterweights' weight is not known: " + why.message);
+  }
   if (!o.out.empty()) {
     addCounterweights(*m, r.counterweights);
     const WriteResult w = saveMechanismFile(*m, o.out);
     if (!w.ok) {
-      error(o.out + ": " + w.error);
+      // (The writer's message names the file already.)
+      error(w.error.rfind(o.out, 0) == 0 ? w.error : o.out + ": " + w.error);
       return kFailure;
     }
   }

@@ -154,3 +154,39 @@ TEST(Balance, ACounterweightNeedsABodyPinnedToTheGround) {
 
 }  // namespace
 }  // namespace linkage
+
+namespace linkage {
+namespace {
+
+// A crank alone, 2 kg at r = 100 mm, under gravity (0, -9.81) m/s^2: its shaking force is the
+// rotating m w^2 r plus the constant weight -m g. The counterweight s = m r opposite cancels the
+// rotating part: the peak after is m g, as the balance counts it (its own weight left out);
+// with the counterweight's mass s / R at the crank's farthest point (R = 100 mm, where --out
+// puts it) it weighs as much again: (m + s / R) g.
+TEST(Balance, UnderGravityTheCounterweightsWeightIsToldApart) {
+  Mechanism m;
+  const BodyId g = m.addBody("ground", true), c = m.addBody("crank");
+  const JointId drive = m.addPin(m.addPoint(g, "O", Vec2(0, 0)), m.addPoint(c, "O", Vec2(0, 0)));
+  m.addPoint(c, "A", Vec2(100, 0));
+  m.body(c)->mass = Mass{2, Vec2(100, 0), 0, ""};
+  m.gravity = Vec2(0, -9.81);
+  m.driver = Driver{drive, 600, Direction::Ccw, 0, ""};
+  Kinematics k = loaded(m);
+  BalanceOptions opt;
+  opt.bodies = {c};
+  const BalanceResult r = balanceShaking(k, opt);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_LT((r.counterweights[0].staticMoment - Vec2(-200, 0)).norm(), 1e-9 * 200);
+  EXPECT_NEAR(r.peakAfter, 2 * 9.81, 1e-9 * 19.62);
+  const std::optional<double> weighed = peakWithWeight(k, opt, r);
+  ASSERT_TRUE(weighed);
+  EXPECT_NEAR(*weighed, 4 * 9.81, 1e-9 * 39.24);
+  // Without gravity there is nothing to tell apart.
+  m.gravity.reset();
+  Kinematics free = loaded(m);
+  const BalanceResult r0 = balanceShaking(free, opt);
+  EXPECT_EQ(peakWithWeight(free, opt, r0), r0.peakAfter);
+}
+
+}  // namespace
+}  // namespace linkage

@@ -283,4 +283,26 @@ void addCounterweights(Mechanism& m, const std::vector<Counterweight>& cws) {
   }
 }
 
+std::optional<double> peakWithWeight(const Kinematics& k, const BalanceOptions& opt,
+                                     const BalanceResult& r, Status* why) {
+  if (!k.valid() || !k.mechanism().gravity) return r.peakAfter;
+  Mechanism m = k.mechanism();
+  addCounterweights(m, r.counterweights);
+  Kinematics balanced = k;
+  Status s = balanced.edit(m);
+  // The peak as it is: the same programme allowed no counterweight at all (its peak before).
+  BalanceOptions as = opt;
+  as.maxKgMm = 0;
+  BalanceResult b;
+  if (s.ok()) {
+    b = balanceShaking(balanced, as);
+    s = b.status;
+  }
+  if (!s.ok()) {
+    if (why) *why = s;
+    return std::nullopt;
+  }
+  return b.peakBefore;
+}
+
 }  // namespace linkage

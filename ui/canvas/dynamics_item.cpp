@@ -85,8 +85,10 @@ void DynamicsItem::paintMass(QPainter* p, const DynamicsMarks::Mass& m) const {
     fill.setAlphaF(0.45);
     p->setBrush(fill);
     p->drawEllipse(m.counterweights[i], rc, rc);
-    paintText(p, m.counterweights[i] + QPointF(rc, 0),
-              QStringLiteral("%1 g").arg(kg * 1000, 0, 'g', 3), style().ink);
+    // Grams to a kilogram, kilograms from there ("2e+03 g" read as nothing a hand weighs).
+    const QString weight = kg < 1 ? QStringLiteral("%1 g").arg(kg * 1000, 0, 'f', kg < 0.01 ? 1 : 0)
+                                  : QStringLiteral("%1 kg").arg(kg, 0, 'f', kg < 10 ? 2 : 1);
+    paintText(p, m.counterweights[i] + QPointF(rc, 0), weight, style().ink);
   }
 }
 

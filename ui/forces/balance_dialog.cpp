@@ -297,6 +297,8 @@ bool BalanceDialog::compute() {
     return false;
   }
   result_ = r;
+  weighed_.reset();
+  if (doc_->design().gravity) weighed_ = peakWithWeight(k, o, r);
   const BalanceCurves curves = curvesOf(k, r);
   drawBalance(plot_, curves, o.measure, r, crankAxisLabel(doc_->design()));
   showResult();
@@ -336,6 +338,14 @@ void BalanceDialog::showResult() {
                              after, number(std::max(0.0, r.gap()), 2),
                              bounded_->isChecked() ? tr(" within the bound") : QString(),
                              number(cleaned(r.lowerBound, r.peakBefore))));
+  // Applied, the counterweights are masses that also weigh: say what the Forces panel will
+  // show then, a peak the curves here (without that constant weight) do not.
+  if (weighed_ && nonzero > 0 &&
+      std::abs(*weighed_ - r.peakAfter) > kRoundingFraction * r.peakBefore)
+    summary_->setText(summary_->text() +
+                      tr("<br>Under gravity the counterweights also weigh (a constant force the "
+                         "balance leaves out): applied, the peak is %1 N.")
+                          .arg(number(*weighed_)));
   applyButton()->setEnabled(nonzero > 0);
   if (nonzero == 0) say(tr("Balanced as it is: no counterweight lowers the peak."), false);
 }

@@ -66,6 +66,7 @@ class BalanceDialog : public QDialog {
 
   QPointer<Document> doc_;
   std::optional<BalanceResult> result_;
+  std::optional<double> weighed_;  // under gravity: the peak with the counterweights' weight
   bool applying_ = false;
 
   std::vector<std::pair<BodyId, QCheckBox*>> bodies_;

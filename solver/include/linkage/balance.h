@@ -52,4 +52,12 @@ BalanceResult balanceShaking(const Kinematics& k, const BalanceOptions& opt);
 // farthest drawn point from its pivot (20 mm when it has none), combined with the body's own.
 void addCounterweights(Mechanism& m, const std::vector<Counterweight>& c);
 
+// Under gravity a counterweight also weighs, which the balance leaves out (a static moment
+// m u fixes its mass only with a radius): the exact peak of the measure over the cycle of k's
+// mechanism with r's counterweights added as addCounterweights makes them (what `balance --out`
+// writes shakes with this). r.peakAfter without gravity; nullopt with `why` when it cannot be
+// found (the tracker's failure).
+std::optional<double> peakWithWeight(const Kinematics& k, const BalanceOptions& opt,
+                                     const BalanceResult& r, Status* why = nullptr);
+
 }  // namespace linkage
