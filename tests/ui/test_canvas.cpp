@@ -18,7 +18,9 @@
 #include "drawing.h"
 #include "linkage/guide.h"
 #include "linkage/io/model_lookup.h"
+#include "mechanisms.h"
 #include "window/features.h"
+#include "window/offscreen_window.h"
 
 namespace linkage::ui {
 namespace {
@@ -218,6 +220,55 @@ TEST(Canvas, VelocityChainIsWrittenOutAndItsDistancesDrawn) {
   ASSERT_TRUE(panel->chain());
   const Vec2 v40 = w.document()->kinematics().velocity(panel->chain()->point);
   EXPECT_LT((panel->chain()->velocity - v40).norm(), 1e-9 * v40.norm());
+}
+
+// No two labels of a paint overlap, nor the velocity chain's dimension (painted first): the
+// Wanzer's centres all labelled beside it; a machine of 31 bodies (465 centres) labels what
+// has room and draws the rest unlabelled, in the same frame time order as its mechanism.
+TEST(Canvas, CentreLabelsNeverOverlapEachOtherOrTheChain) {
+  auto disjoint = [](const std::vector<QRectF>& r) {
+    for (size_t i = 0; i < r.size(); ++i)
+      for (size_t j = i + 1; j < r.size(); ++j)
+        if (r[i].intersects(r[j])) return false;
+    return true;
+  };
+  MainWindow w;
+  w.resize(1400, 950);
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2"));
+  w.show();
+  w.centres().dock->raise();
+  w.centres().show->setChecked(true);
+  ASSERT_TRUE(w.document()->setCrankDeg(30).ok());
+  QApplication::processEvents();
+  w.canvas()->viewport()->grab();
+  const LabelBoard& board = w.scene()->context()->labels;
+  ASSERT_EQ(w.scene()->chainItem()->dimensions().size(), 1u);
+  // The chain's label, the output point's name and the 15 centres (those off the view with
+  // their arrows); none of them is left out at this size.
+  EXPECT_GE(board.size(), 1 + 1 + 15);
+  EXPECT_TRUE(disjoint(board.rects()));
+  Document* d = w.document();
+  d->setContents(linkage::test::shaftMachine(14), QString(), "machine");
+  QApplication::processEvents();
+  w.canvas()->fitToMechanism();
+  w.canvas()->viewport()->grab();
+  EXPECT_GT(board.size(), 100);
+  EXPECT_LT(board.size(), 465);  // not every one has room
+  EXPECT_TRUE(disjoint(board.rects()));
+}
+
+// `linkage --screenshot --angle 30 --ics`: the chain of centres, whose text is laid out at
+// most ten times a second, is that of 30 degrees when the picture is taken, as the rest is.
+TEST(Canvas, AScreenshotIsOfOnePose) {
+  MainWindow w;
+  OffscreenOptions o;
+  o.model = "wanzer-inversion-2";
+  o.ics = true;
+  o.angleDeg = 30;
+  ASSERT_EQ(setUpOffscreen(w, o), 0);
+  EXPECT_NE(w.centres().panel()->stepsText().indexOf("at crank 30.000"), -1)
+      << w.centres().panel()->stepsText();
+  EXPECT_NE(w.centres().panel()->stepsText().indexOf("741.070 mm/s"), -1);
 }
 
 // Hovering a centre draws its Kennedy lines; leaving it draws the chosen row's again.

@@ -8,6 +8,7 @@
 #include <QPen>
 #include <QPolygonF>
 
+#include "canvas/label_board.h"
 #include "canvas/style.h"
 
 namespace linkage::ui {
@@ -29,6 +30,8 @@ QPolygonF cutToDevice(const QPolygonF& poly, const QPainter* p);
 struct CanvasContext {
   double px = 0.1;  // mm per screen pixel
   CanvasStyle style;
+  // The labels of this paint (cleared as the view starts one): items that label step aside.
+  mutable LabelBoard labels;
 };
 
 class CanvasItem : public QGraphicsItem {

@@ -39,6 +39,7 @@ CanvasScene::CanvasScene(QObject* parent) : QGraphicsScene(parent) {
   // Room to pan anywhere a mechanism could be drawn (mm).
   setSceneRect(-1e6, -1e6, 2e6, 2e6);
   ctx_.style = CanvasStyle::fromPalette(QPalette());
+  addOverlay(new LabelStart([this](const QTransform& t) { startLabels(t); }));
   centres_ = new CentresItem(&ctx_);
   centres_->setVisible(false);
   addItem(centres_);
@@ -364,6 +365,14 @@ void CanvasScene::updateTraces() {
     item->setZValue(kTraceZ);
     traces_.push_back(item);
   }
+}
+
+void CanvasScene::startLabels(const QTransform& toDevice) const {
+  ctx_.labels.clear();
+  for (const OutputItem* o : outputs_)
+    for (const QGraphicsItem* label : o->childItems())
+      if (label->isVisible())
+        ctx_.labels.take(label->boundingRect().translated(toDevice.map(o->pos())));
 }
 
 }  // namespace linkage::ui

@@ -34,6 +34,9 @@ class CanvasScene : public QGraphicsScene {
   // An item drawn over the mechanism that the scene keeps across rebuilds (the tools').
   void addOverlay(QGraphicsItem* item);
   const CanvasContext* context() const { return &ctx_; }
+  // A paint begins (`toDevice`: the scene to the device's pixels): the label board is cleared
+  // and the output points' names put on it before any overlay's label.
+  void startLabels(const QTransform& toDevice) const;
 
   // Millimetres per screen pixel: symbols are rebuilt to keep their size on screen.
   void setPixelSize(double mmPerPx);

@@ -6,6 +6,13 @@
 // visible rectangle, which it reads from the painter.
 #pragma once
 
+#include <QFont>
+#include <QPixmap>
+#include <QStaticText>
+#include <map>
+#include <optional>
+#include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "canvas/canvas_item.h"
@@ -31,14 +38,31 @@ class CentresItem : public CanvasItem {
   const Drawing::Centre* find(int i, int j) const;
   QColor colour(const Drawing::Centre& c) const;
   void paintLines(QPainter* p, const Drawing::Centre& c, const QRectF& view) const;
-  void paintEdgeArrow(QPainter* p, const Drawing::Centre& c, const QRectF& view);
-  // Labels are stacked so that two never overlap (arrows at the edge often gather).
-  void paintLabel(QPainter* p, const QPointF& at, const QString& text, const QColor& ink);
+  // An arrow at the view's edge for a centre outside it: where, which way.
+  struct EdgeTip {
+    QPointF tip, direction;
+    const Drawing::Centre* centre;
+  };
+  // In device pixels: the tip and its direction.
+  std::optional<EdgeTip> edgeTip(const Drawing::Centre& c, const QRectF& view,
+                                 const QTransform& toDevice) const;
+  void paintEdgeArrows(QPainter* p, const std::vector<EdgeTip>& tips);
+  void paintEdgeArrow(QPainter* p, const std::vector<EdgeTip>& group);
+  static QString edgeText(const Drawing::Centre& c);
+  // A label where no other is (the canvas's LabelBoard) near the device point `at`, with the
+  // painter in device pixels; false when there is no free place, and it is not drawn.
+  bool paintLabel(QPainter* p, const QPointF& at, const QString& text, const QColor& ink);
+  QStaticText& staticText(const QString& text, const QFont& font);
+  // A centre's dot drawn once per colour, kind and pixel ratio.
+  const QPixmap& dot(const QColor& ink, bool primary, qreal dpr);
+  void rebuild() override;
 
   std::vector<Drawing::Centre> centres_;
   std::pair<int, int> chosen_{0, 0};
-  std::vector<QRectF> placed_;  // labels painted so far in this paint (device pixels)
-  QRectF device_;               // the view, device pixels
+  QRectF device_;  // the view, device pixels
+  // The labels' text laid out once (a machine's 465 centres: most of a frame was text layout).
+  std::unordered_map<QString, std::pair<QStaticText, QFont>> texts_;
+  std::map<std::tuple<QRgb, bool, int>, QPixmap> dots_;
 };
 
 }  // namespace linkage::ui

@@ -58,6 +58,7 @@ void ChainItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
     p->resetTransform();
     QRectF r = p->fontMetrics().boundingRect(d.label);
     r.moveCenter(mid + QPointF(0, -10));
+    ctx().labels.take(r.adjusted(-2, 0, 2, 0));  // the centres' labels step aside from it
     QColor back = st.paper;
     back.setAlphaF(0.8);
     p->fillRect(r.adjusted(-2, 0, 2, 0), back);

@@ -4,6 +4,7 @@
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLineEdit>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QTextBrowser>
@@ -41,6 +42,11 @@ CentresPanel::CentresPanel(QWidget* parent) : QWidget(parent) {
   table_->setHorizontalHeaderLabels(
       {tr("i,j"), tr("bodies"), tr("x [mm]"), tr("y [mm]"), tr("at \u221e"), tr("found by")});
   table_->verticalHeader()->hide();
+  // Only the rows in view are written at each pose: the others when they come into it.
+  connect(table_->verticalScrollBar(), &QScrollBar::valueChanged, this,
+          &CentresPanel::fillScrolledTo);
+  connect(table_->verticalScrollBar(), &QScrollBar::rangeChanged, this,
+          &CentresPanel::fillScrolledTo);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setSelectionMode(QAbstractItemView::SingleSelection);
@@ -171,17 +177,39 @@ void CentresPanel::update() {
   fillChain(ics);
 }
 
+// The rows a user can see (and a few around them): a machine's 465 centres written every
+// frame were a sixth of the frame; the others are written when they are scrolled to.
+std::pair<int, int> CentresPanel::shownRows() const {
+  const int n = table_->rowCount();
+  if (n == 0) return {0, 0};
+  int first = table_->rowAt(0), last = table_->rowAt(table_->viewport()->height() - 1);
+  if (first < 0) first = 0;
+  if (last < 0) last = n - 1;
+  return {std::max(0, first - 2), std::min(n, last + 3)};
+}
+
 void CentresPanel::fillTable(const InstantCentres& ics) {
   if (!ics.status.ok()) {
     table_->setRowCount(0);
     return;
   }
   const int n = static_cast<int>(ics.centres.size());
+  bool all = false;
   if (table_->rowCount() != n) {
     table_->setRowCount(n);
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < 6; ++c) table_->setItem(r, c, new QTableWidgetItem);
+    all = true;
   }
+  // Every row when the centres are others (a new design): the columns are sized on them.
+  all = all || ics.revision != tableRevision_;
+  tableRevision_ = ics.revision;
+  fresh_.assign(n, false);
+  const auto [from, to] = all ? std::pair{0, n} : shownRows();
+  fillRows(ics, from, to);
+}
+
+void CentresPanel::fillRows(const InstantCentres& ics, int from, int to) {
   // Sized again when the rows name other centres or bodies (the first two columns change), not
   // on every edit: a design dragged with Ctrl is an edit a frame.
   bool relabelled = false;
@@ -190,33 +218,23 @@ void CentresPanel::fillTable(const InstantCentres& ics) {
   auto isFree = [&](int n) {
     return std::find(free.begin(), free.end(), ics.bodyNumbered(n)) != free.end();
   };
-  for (int r = 0; r < n; ++r) {
+  for (int r = from; r < to && r < static_cast<int>(ics.centres.size()); ++r) {
     InstantCentre c = ics.centres[r];
     const bool held = isFree(c.i) || isFree(c.j);
     if (held) c.determined = false;
-    const bool inf = c.atInfinity();
     const QString cells[6] = {
         QStringLiteral("%1,%2").arg(c.i).arg(c.j),
         bodyName(*doc_, ics, c.i) + QStringLiteral(" \u2013 ") + bodyName(*doc_, ics, c.j),
-        !c.determined ? QStringLiteral("\u2013")
-        : inf         ? num(c.h.x(), 4)
-                      : num(c.h.x()),
-        !c.determined ? QStringLiteral("\u2013")
-        : inf         ? num(c.h.y(), 4)
-                      : num(c.h.y()),
-        inf ? tr("yes (direction)") : QString(),
-        held            ? tr("not determined (a body free with the crank held)")
-        : !c.determined ? tr("none (no relative motion)")
-        : c.status == CentreStatus::Kennedy
-            ? tr("Kennedy, round %1 (via %2)")
-                  .arg(c.round)
-                  .arg(c.lines[0].k ? QString::number(c.lines[0].k) : tr("slot"))
-            : QString::fromUtf8(toString(c.status))};
+        coordinate(c, c.h.x()),
+        coordinate(c, c.h.y()),
+        c.atInfinity() ? tr("yes (direction)") : QString(),
+        statusText(c, held)};
     for (int k = 0; k < 6; ++k)
       if (table_->item(r, k)->text() != cells[k]) {
         table_->item(r, k)->setText(cells[k]);
         relabelled = relabelled || k < 2;
       }
+    fresh_[r] = true;
   }
   if (relabelled) {
     table_->resizeColumnsToContents();
@@ -224,6 +242,32 @@ void CentresPanel::fillTable(const InstantCentres& ics) {
     const int wide = table_->fontMetrics().horizontalAdvance(QStringLiteral("-00000.000  "));
     for (int c : {2, 3}) table_->setColumnWidth(c, std::max(table_->columnWidth(c), wide));
   }
+}
+
+QString CentresPanel::coordinate(const InstantCentre& c, double v) {
+  if (!c.determined) return QStringLiteral("\u2013");
+  return c.atInfinity() ? num(v, 4) : num(v);
+}
+
+QString CentresPanel::statusText(const InstantCentre& c, bool held) const {
+  if (held) return tr("not determined (a body free with the crank held)");
+  if (!c.determined) return tr("none (no relative motion)");
+  if (c.status == CentreStatus::Kennedy)
+    return tr("Kennedy, round %1 (via %2)")
+        .arg(c.round)
+        .arg(c.lines[0].k ? QString::number(c.lines[0].k) : tr("slot"));
+  return QString::fromUtf8(toString(c.status));
+}
+
+// Rows scrolled to are written before they are painted: never a number of another pose.
+void CentresPanel::fillScrolledTo() {
+  if (!doc_ || !doc_->solved() || fresh_.size() != static_cast<size_t>(table_->rowCount())) return;
+  const auto [from, to] = shownRows();
+  for (int r = from; r < to; ++r)
+    if (!fresh_[r]) {
+      fillRows(doc_->instantCentres(), from, to);
+      return;
+    }
 }
 
 void CentresPanel::fillChain(const InstantCentres& ics) {

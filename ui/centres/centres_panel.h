@@ -51,6 +51,11 @@ class CentresPanel : public QWidget {
   void rebuildPoints();
   void update();
   void fillTable(const InstantCentres& ics);
+  std::pair<int, int> shownRows() const;  // [first, last) with a margin
+  void fillRows(const InstantCentres& ics, int from, int to);
+  void fillScrolledTo();
+  static QString coordinate(const InstantCentre& c, double v);
+  QString statusText(const InstantCentre& c, bool held) const;
   void fillChain(const InstantCentres& ics);
   // chainText()'s parts: the crank's turning, each step from body to body (how v_P is found,
   // then what it makes of the next body's motion), the point's velocity, the check against
@@ -63,6 +68,8 @@ class CentresPanel : public QWidget {
 
   QPointer<Document> doc_;
   QTableWidget* table_;
+  std::vector<bool> fresh_;  // the rows written at this pose
+  std::uint64_t tableRevision_ = 0;
   QComboBox* point_;
   QLineEdit* via_;
   QTextBrowser* steps_;

@@ -17,18 +17,16 @@ constexpr double kExtremesZ = -8, kNotesZ = 94, kTransmissionZ = 95;
 
 DesignOverlays::DesignOverlays(CanvasScene* scene, DesignChoices* choices, QObject* parent)
     : QObject(parent), choices_(choices) {
-  auto board = std::make_shared<LabelBoard>();
-  scene->addOverlay(new LabelBoardReset(board));
   extremes_ = new ExtremesItem(scene->context());
   extremes_->setZValue(kExtremesZ);
   extremes_->setVisible(false);
   scene->addOverlay(extremes_);
-  notes_ = new ExtremesNotes(scene->context(), extremes_, board);
+  notes_ = new ExtremesNotes(scene->context(), extremes_);
   notes_->setZValue(kNotesZ);
   notes_->setVisible(false);
   extremes_->setNotes(notes_);
   scene->addOverlay(notes_);
-  transmission_ = new TransmissionItem(scene->context(), board);
+  transmission_ = new TransmissionItem(scene->context());
   transmission_->setZValue(kTransmissionZ);
   transmission_->setVisible(false);
   transmission_->setBand(choices_->band());

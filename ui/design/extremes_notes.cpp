@@ -10,9 +10,8 @@
 
 namespace linkage::ui {
 
-ExtremesNotes::ExtremesNotes(const CanvasContext* ctx, const ExtremesItem* extremes,
-                             std::shared_ptr<LabelBoard> board)
-    : CanvasItem(ctx), extremes_(extremes), board_(std::move(board)) {
+ExtremesNotes::ExtremesNotes(const CanvasContext* ctx, const ExtremesItem* extremes)
+    : CanvasItem(ctx), extremes_(extremes) {
   setAcceptedMouseButtons(Qt::NoButton);
 }
 
@@ -135,7 +134,7 @@ void ExtremesNotes::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*
   const CanvasStyle& st = style();
   const double u = px();
   p->setRenderHint(QPainter::Antialiasing);
-  OverlayLabels labels(p, st.paper, board_.get());
+  OverlayLabels labels(p, st.paper, &ctx().labels);
   const bool body = bool(poses.measure.body);
   const ExtremePose *lowest = nullptr, *highest = nullptr;
   markPositions(p, poses, st.ink, u, lowest, highest);

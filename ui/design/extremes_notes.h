@@ -16,14 +16,12 @@ class ExtremesItem;
 
 class ExtremesNotes : public CanvasItem {
  public:
-  ExtremesNotes(const CanvasContext* ctx, const ExtremesItem* extremes,
-                std::shared_ptr<LabelBoard> board);
+  ExtremesNotes(const CanvasContext* ctx, const ExtremesItem* extremes);
   QRectF boundingRect() const override;
   void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
 
  private:
   const ExtremesItem* extremes_;
-  std::shared_ptr<LabelBoard> board_;
 };
 
 }  // namespace linkage::ui

@@ -1,26 +1,6 @@
 #include "design/overlay_labels.h"
 
-#include "canvas/canvas_scene.h"
-
 namespace linkage::ui {
-
-LabelBoardReset::LabelBoardReset(std::shared_ptr<LabelBoard> board) : board_(std::move(board)) {
-  setAcceptedMouseButtons(Qt::NoButton);
-  setZValue(-1e9);
-}
-
-void LabelBoardReset::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
-  board_->clear();
-  // The output points' names are there before any overlay's label.
-  if (auto* s = dynamic_cast<CanvasScene*>(scene()))
-    for (const OutputItem* o : s->outputItems())
-      for (const QGraphicsItem* label : o->childItems())
-        board_->push_back(label->boundingRect().translated(p->worldTransform().map(o->pos())));
-}
-
-QRectF LabelBoardReset::boundingRect() const {
-  return scene() ? scene()->sceneRect() : QRectF();
-}
 
 OverlayLabels::OverlayLabels(QPainter* p, const QColor& paper, LabelBoard* board)
     : p_(p),
@@ -40,9 +20,7 @@ QRectF OverlayLabels::rectAt(const Place& place, const QString& text) const {
 }
 
 bool OverlayLabels::clear(const QRectF& r) const {
-  for (const QRectF& q : *placed_)
-    if (q.intersects(r)) return false;
-  return true;
+  return placed_->isFree(r);
 }
 
 QRectF OverlayLabels::paint(const QPointF& at, const QPointF& offsetPx, const QString& text,
@@ -70,7 +48,7 @@ QRectF OverlayLabels::paint(const std::vector<Place>& places, const QString& tex
   if (r.bottom() > device_.bottom() - 2) r.moveBottom(device_.bottom() - 2);
   if (r.left() < device_.left() + 2) r.moveLeft(device_.left() + 2);
   if (r.top() < device_.top() + 2) r.moveTop(device_.top() + 2);
-  placed_->push_back(r);
+  placed_->take(r);
   p_->save();
   p_->resetTransform();
   p_->fillRect(r, back_);

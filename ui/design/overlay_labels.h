@@ -1,8 +1,8 @@
 // Labels of the design overlays: upright text of one size in device pixels at a scene point,
 // on a backing of the paper colour, each moved off the labels placed before it in the same
-// frame (values at neighbouring joints, extremes close together, the arcs' values beside the
-// stroke's) and kept inside the view. The labels of one frame are gathered on a board that
-// LabelBoardReset, the lowest item of the scene, clears as each frame starts to be painted.
+// frame (the output points' names, values at neighbouring joints, extremes close together, the
+// arcs' values beside the stroke's) and kept inside the view: the canvas's LabelBoard
+// (canvas/label_board.h). Unlike the centres' labels these are always drawn: they are values.
 #pragma once
 
 #include <QColor>
@@ -10,24 +10,11 @@
 #include <QPainter>
 #include <QRectF>
 #include <QString>
-#include <memory>
 #include <vector>
 
+#include "canvas/label_board.h"
+
 namespace linkage::ui {
-
-using LabelBoard = std::vector<QRectF>;  // device pixels
-
-// Paints nothing: clears the board before the items above it paint their labels (the view
-// repaints all of it every frame), and puts the output points' names on it.
-class LabelBoardReset : public QGraphicsItem {
- public:
-  explicit LabelBoardReset(std::shared_ptr<LabelBoard> board);
-  QRectF boundingRect() const override;
-  void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
-
- private:
-  std::shared_ptr<LabelBoard> board_;
-};
 
 class OverlayLabels {
  public:

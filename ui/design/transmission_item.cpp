@@ -30,8 +30,7 @@ void span(TransmissionArc& a, const Vec2& u, const Vec2& v) {
 
 }  // namespace
 
-TransmissionItem::TransmissionItem(const CanvasContext* ctx, std::shared_ptr<LabelBoard> board)
-    : CanvasItem(ctx), board_(std::move(board)) {
+TransmissionItem::TransmissionItem(const CanvasContext* ctx) : CanvasItem(ctx) {
   setAcceptedMouseButtons(Qt::NoButton);
 }
 
@@ -90,7 +89,7 @@ void TransmissionItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidg
   const double u = px(), r = kRadiusPx * u;
   p->setRenderHint(QPainter::Antialiasing);
   p->setBrush(Qt::NoBrush);
-  OverlayLabels labels(p, style().paper, board_.get());
+  OverlayLabels labels(p, style().paper, &ctx().labels);
   for (const TransmissionArc& a : arcs_) {
     const QColor ink = colourOf(a);
     if (a.normal != Vec2::Zero()) {

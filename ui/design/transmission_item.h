@@ -32,7 +32,7 @@ struct TransmissionArc {
 
 class TransmissionItem : public CanvasItem {
  public:
-  TransmissionItem(const CanvasContext* ctx, std::shared_ptr<LabelBoard> board);
+  explicit TransmissionItem(const CanvasContext* ctx);
   // The joints of the design (transmissionJoints), or none.
   void setJoints(std::vector<TransmissionJoint> joints);
   const std::vector<TransmissionJoint>& joints() const { return joints_; }
@@ -47,7 +47,6 @@ class TransmissionItem : public CanvasItem {
   void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
 
  private:
-  std::shared_ptr<LabelBoard> board_;
   std::vector<TransmissionJoint> joints_;
   std::vector<TransmissionArc> arcs_;
   TransmissionBand band_;

@@ -3,8 +3,10 @@
 #include <QAction>
 #include <QCoreApplication>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QImage>
 #include <QRegularExpression>
+#include <QThread>
 #include <cmath>
 #include <cstdio>
 
@@ -88,13 +90,21 @@ int setUpOffscreen(MainWindow& w, const OffscreenOptions& o) {
       return 2;
     }
   }
-  settle();
+  // Panels that throttle their text (the chain of centres, at most ten a second) catch up with
+  // the last pose: a picture is of one pose.
+  QElapsedTimer waited;
+  waited.start();
+  while (waited.elapsed() < 150) {
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    QThread::msleep(5);
+  }
   return 0;
 }
 
 int writeScreenshot(const OffscreenOptions& o, const QString& out) {
   MainWindow w;
   if (const int status = setUpOffscreen(w, o)) return status;
+
   const QImage img = w.grab().toImage();
   if (!img.save(out, "PNG")) {
     std::fprintf(stderr, "linkage: cannot write %s\n", qPrintable(out));
