@@ -16,6 +16,9 @@
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
+#include "design/design_overlays.h"
+#include "design/extremes_item.h"
+#include "design/transmission_item.h"
 #include "document/commands.h"
 #include "document/document.h"
 #include "document/shown_numbers.h"
@@ -201,6 +204,77 @@ TEST(Displays, AFileThatCannotBeSolvedLeavesNoVelocityChainBehind) {
   QTest::qWait(20);
   EXPECT_EQ(w.properties().inspector()->motionTable()->rowCount(), 0);
   EXPECT_TRUE(w.properties().inspector()->noteText().startsWith("Not solved"));
+}
+
+// The four-bar example with a coupler too short to close: 1 mm, with a rocker of 51 mm, 53 mm
+// from the crank pin.
+Mechanism shortCoupler(Mechanism m) {
+  m.point(*m.findPoint("coupler.B"))->pos = Vec2(11, 17.320508075688775);
+  return m;
+}
+
+Mechanism shortCoupler() {
+  return shortCoupler(
+      *loadMechanismFile(LINKAGE_EXAMPLES_DIR "/four-bar-crank-rocker.linkage.json").mechanism);
+}
+
+// Every overlay of the canvas that draws numbers, none drawing any.
+void expectNoOverlayNumbers(MainWindow& w) {
+  EXPECT_TRUE(w.scene()->centresItem()->centres().empty())
+      << w.scene()->centresItem()->centres().size() << " centres";
+  EXPECT_TRUE(w.scene()->drawing().centres.empty());
+  EXPECT_TRUE(w.scene()->chainItem()->dimensions().empty());
+  for (const QGraphicsPathItem* t : w.scene()->traceItems()) EXPECT_TRUE(t->path().isEmpty());
+  EXPECT_TRUE(w.designChecks().overlays()->extremesItem()->poses().poses.empty());
+  EXPECT_TRUE(w.designChecks().overlays()->transmissionItem()->arcs().empty());
+  EXPECT_TRUE(w.scene()->dynamicsItem()->marks().reactions.empty());
+}
+
+void showEveryOverlay(MainWindow& w) {
+  w.centres().dock->raise();
+  w.centres().show->setChecked(true);
+  w.view().showTraces->setChecked(true);
+  w.designChecks().showExtremes->setChecked(true);
+  w.designChecks().showTransmission->setChecked(true);
+  w.forces().show->setChecked(true);
+  QTest::qWait(30);
+}
+
+TEST(Displays, AFileThatCannotBeSolvedShowsNoOverlayOfTheDocumentBefore) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "wanzer-inversion-2"));
+  showEveryOverlay(w);
+  ASSERT_FALSE(w.scene()->centresItem()->centres().empty());
+  QTemporaryDir dir;
+  const QString path = dir.filePath("short.linkage.json");
+  ASSERT_TRUE(saveMechanismFile(shortCoupler(), path.toStdString()).ok);
+  QString why;
+  ASSERT_TRUE(w.openFile(path, &why)) << why.toStdString();
+  QTest::qWait(30);
+  ASSERT_FALSE(w.document()->solved());
+  expectNoOverlayNumbers(w);
+  shot(&w, "unsolved-file-after-wanzer");
+}
+
+TEST(Displays, ARefusedEditShowsNoOverlayOfTheLastSolvedDesign) {
+  // The solver keeps the last good state of a refused edit of the same shape and the canvas
+  // draws its pose: its centres, paths and arcs are of that other design.
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  showEveryOverlay(w);
+  ASSERT_FALSE(w.scene()->centresItem()->centres().empty());
+  ASSERT_FALSE(w.scene()->traceItems().at(0)->path().isEmpty());
+  ASSERT_FALSE(w.scene()->chainItem()->dimensions().empty());
+  editDesign(w.document(), "short", shortCoupler(w.document()->design()));
+  QTest::qWait(30);
+  ASSERT_FALSE(w.document()->solved());
+  ASSERT_TRUE(w.scene()->solverShown());
+  expectNoOverlayNumbers(w);
+  // Undone: the overlays of the solved design again.
+  w.edit().undo->trigger();
+  QTest::qWait(30);
+  EXPECT_FALSE(w.scene()->centresItem()->centres().empty());
+  EXPECT_FALSE(w.scene()->traceItems().at(0)->path().isEmpty());
 }
 
 TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {
