@@ -13,6 +13,7 @@
 #include <QUndoStack>
 
 #include "animation/animator.h"
+#include "animation/crank_bar.h"
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
@@ -275,6 +276,83 @@ TEST(Displays, ARefusedEditShowsNoOverlayOfTheLastSolvedDesign) {
   QTest::qWait(30);
   EXPECT_FALSE(w.scene()->centresItem()->centres().empty());
   EXPECT_FALSE(w.scene()->traceItems().at(0)->path().isEmpty());
+}
+
+// What every display says of a design the solver has not taken: the document's reason, and
+// nothing of the last design that could be solved.
+void expectOneReason(MainWindow& w) {
+  const QString why = QString::fromStdString(w.document()->solveStatus().message);
+  ASSERT_FALSE(why.isEmpty());
+  const CurveSet* set = w.plots().panel()->curves(0);
+  ASSERT_NE(set, nullptr);
+  EXPECT_TRUE(set->empty());
+  EXPECT_EQ(QString::fromStdString(set->status().message), why);
+  EXPECT_TRUE(w.plots().panel()->statusText().contains(why)) << w.plots().panel()->statusText();
+  EXPECT_FALSE(w.plots().panel()->statusText().contains("last design"));
+  const QString summary = w.properties().inspector()->summaryText();
+  EXPECT_TRUE(summary.contains("Not solved")) << summary;
+  EXPECT_FALSE(summary.contains("Solved ")) << summary;
+  EXPECT_FALSE(summary.contains("Degrees of freedom")) << summary;
+  const QLabel* driver = w.animation().crankBar()->driverLabel();
+  if (w.document()->design().driver) {
+    EXPECT_TRUE(driver->text().contains("rpm")) << driver->text();
+    EXPECT_TRUE(driver->text().contains("not solved")) << driver->text();
+    EXPECT_TRUE(driver->toolTip().contains(why)) << driver->toolTip();
+  }
+  EXPECT_FALSE(w.animation().crankBar()->isEnabled());
+}
+
+TEST(Displays, AnUnsolvedDesignSaysItsOneReasonEverywhere) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  w.plots().dock->show();
+  w.properties().dock->raise();
+  QTest::qWait(60);
+  ASSERT_FALSE(w.plots().panel()->curves(0)->empty());
+  // An edit the solver refuses: it keeps the last design it could solve, whose curves these
+  // are not.
+  editDesign(w.document(), "short", shortCoupler(w.document()->design()));
+  QTest::qWait(60);
+  ASSERT_FALSE(w.document()->solved());
+  expectOneReason(w);
+  // A file that cannot be solved: it has a driver.
+  QTemporaryDir dir;
+  const QString path = dir.filePath("short.linkage.json");
+  ASSERT_TRUE(saveMechanismFile(shortCoupler(), path.toStdString()).ok);
+  ASSERT_TRUE(w.openFile(path));
+  QTest::qWait(60);
+  expectOneReason(w);
+  EXPECT_FALSE(w.animation().crankBar()->driverLabel()->text().contains("no driver"));
+}
+
+TEST(Displays, AStructureGivenADriverSaysWhyItCannotTurn) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  w.plots().dock->show();
+  // The four-bar without its driver, its coupler point strutted to the ground: a structure.
+  Mechanism m = w.document()->design();
+  m.driver.reset();
+  const Vec2 p = m.point(*m.findPoint("coupler.P"))->pos;
+  const BodyId strut = m.addBody("strut");
+  const PointId top = m.addPoint(strut, "T", Vec2(30, 100));
+  m.addPin(m.addPoint(strut, "P", p), *m.findPoint("coupler.P"));
+  m.addPin(top, m.addPoint(m.bodies[0].id, "T", Vec2(30, 100)));
+  editDesign(w.document(), "strut", m);
+  QTest::qWait(60);
+  ASSERT_TRUE(w.document()->solved()) << w.document()->solveStatus().message;
+  ASSERT_EQ(w.document()->kinematics().structure().mobility, 0);
+  // The Driver tool on the crank's pivot.
+  test::Draw d{w};
+  d.key("M");
+  d.click(0, 0);
+  QTest::qWait(60);
+  ASSERT_TRUE(w.document()->design().driver);
+  ASSERT_FALSE(w.document()->solved());
+  EXPECT_FALSE(w.messageStrip()->message().contains("drives the mechanism"))
+      << w.messageStrip()->message();
+  EXPECT_TRUE(w.messageStrip()->problem().contains("cannot turn")) << w.messageStrip()->problem();
+  expectOneReason(w);
+  EXPECT_FALSE(w.plots().panel()->statusText().contains("no driver"));
 }
 
 TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {

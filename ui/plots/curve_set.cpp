@@ -36,10 +36,15 @@ void flattenRounding(Curve& c, Extremes& e, double scale) {
 
 }  // namespace
 
-CurveSet::CurveSet(const Kinematics& k, const CurveRequest& r, const QString& title)
+CurveSet::CurveSet(const Kinematics& k, const CurveRequest& r, const QString& title,
+                   const Status& solve)
     : title_(title), request_(r) {
   const std::string target = r.target.toStdString();
   crankLabel_ = QString("%1 angle [deg]").arg(crankName(k.mechanism()));
+  if (!solve.ok()) {
+    status_ = solve;
+    return;
+  }
   if (!k.valid()) {
     status_ = Status::failure(StatusCode::BadModel, "the mechanism is not solved");
     return;

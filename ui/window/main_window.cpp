@@ -185,7 +185,8 @@ void MainWindow::updateStatus() {
   const Kinematics& k = doc_->kinematics();
   crank_->setText(k.valid() ? tr("crank %1\u00b0").arg(angleText(doc_->crankDeg(), 2))
                             : tr("crank \u2013"));
-  if (k.valid()) {
+  // Of the design only when the solver holds it (not of the last design it could solve).
+  if (doc_->solved()) {
     const StructureReport r = k.structure();
     dof_->setText(r.gruebler == r.mobility
                       ? tr("DOF %1").arg(r.mobility)
@@ -196,6 +197,7 @@ void MainWindow::updateStatus() {
                          .arg(r.rank));
   } else {
     dof_->setText(tr("DOF \u2013"));
+    dof_->setToolTip(tr("Not solved: %1").arg(QString::fromStdString(doc_->solveStatus().message)));
   }
 }
 
