@@ -28,6 +28,7 @@
 #include "linkage/io/model_file.h"
 #include "plots/curve_set.h"
 #include "plots/plots_panel.h"
+#include "plots/qcp.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
@@ -355,6 +356,15 @@ TEST(Displays, AStructureGivenADriverSaysWhyItCannotTurn) {
   EXPECT_FALSE(w.plots().panel()->statusText().contains("no driver"));
 }
 
+// The extremes marked on the plots: points of the graphs drawn without lines.
+int extremeMarks(const MainWindow& w) {
+  QCustomPlot* plot = w.plots().panel()->plotWidget();
+  int n = 0;
+  for (int i = 0; i < plot->graphCount(); ++i)
+    if (plot->graph(i)->lineStyle() == QCPGraph::lsNone) n += plot->graph(i)->dataCount();
+  return n;
+}
+
 TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {
   EXPECT_EQ(fixedText(-1e-9, 3), "0.000");
   EXPECT_EQ(fixedText(-0.0, 3), "0.000");
@@ -373,6 +383,15 @@ TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {
   for (Order o : {Order::Velocity, Order::Acceleration})
     for (double v : set->curve(o).values) ASSERT_EQ(v, 0.0);
   EXPECT_EQ(set->extremes(Order::Velocity).max.value, 0.0);
+  // Flat to rounding: no extreme marked on the zero line, none at an angle in the list (the
+  // rounding's peaks were marked at 210 and 257 degrees on ay).
+  EXPECT_EQ(extremeMarks(w), 0);
+  for (Order o : {Order::Position, Order::Velocity, Order::Acceleration}) {
+    EXPECT_FALSE(std::isfinite(set->extremes(o).max.crankDeg));
+    EXPECT_FALSE(std::isfinite(set->extremes(o).min.crankDeg));
+  }
+  EXPECT_FALSE(w.plots().panel()->extremesText().contains(QString::fromUtf8("0°")))
+      << w.plots().panel()->extremesText();
   // A moving point's curve keeps its small values (no flattening of a real signal).
   r.target = "coupler.P";
   w.plots().panel()->setRequest(r);
@@ -380,6 +399,7 @@ TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {
   int nonzero = 0;
   for (double v : w.plots().panel()->curves(0)->curve(Order::Velocity).values) nonzero += v != 0;
   EXPECT_GT(nonzero, 300);
+  EXPECT_EQ(extremeMarks(w), 6);  // a maximum and a minimum on each of its three curves
   // The inspector prints no "-0.000".
   Mechanism m = w.document()->design();
   toggleOutput(m, *m.findPoint("rocker.O4"));
