@@ -5,7 +5,9 @@
 
 #include "ui_test.h"
 
+#include <QDir>
 #include <QDockWidget>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QTableWidget>
@@ -180,6 +182,52 @@ TEST(Displays, UndoOfAStartAngleBeyondReachLeavesTheDesignSolved) {
   QApplication::processEvents();
   EXPECT_EQ(w.width(), width);
   EXPECT_LE(w.minimumSizeHint().width(), width);
+}
+
+// Long text in the docks (a 250-character mechanism name typed in Properties widened the
+// window from 1400 to 3091 px, past the screen, and undo did not shrink it): every dock shown in
+// turn, with long names of the mechanism, a body and a point and a long path, keeps the width.
+TEST(Displays, LongNamesDoNotWidenTheWindow) {
+  QTemporaryDir dir;
+  const QString deep = dir.filePath(QString("folder").repeated(30));
+  ASSERT_TRUE(QDir().mkpath(deep));
+  const QString path = deep + "/four-bar.linkage.json";
+  ASSERT_TRUE(QFile::copy(LINKAGE_EXAMPLES_DIR "/four-bar-crank-rocker.linkage.json", path));
+  MainWindow w;
+  w.resize(1400, 900);
+  ASSERT_TRUE(w.openFile(path));
+  w.show();
+  QApplication::processEvents();
+  const int width = w.width();
+  ASSERT_EQ(width, 1400);
+  QLineEdit* name = qobject_cast<QLineEdit*>(w.properties().panel()->field("Name"));
+  ASSERT_NE(name, nullptr);
+  name->setFocus();
+  name->selectAll();
+  QTest::keyClicks(name, QString(250, QLatin1Char('N')));
+  QTest::keyClick(name, Qt::Key_Return);
+  ASSERT_EQ(w.document()->design().name, std::string(250, 'N'));
+  QApplication::processEvents();
+  EXPECT_EQ(w.width(), width);
+  // A body and a point named as long (the choices of points in the plots, the centres, the
+  // design checks and the forces list them).
+  Mechanism m = w.document()->design();
+  m.body(m.bodyNamed("coupler")->id)->name = std::string(200, 'C');
+  m.point(*m.findPoint(std::string(200, 'C') + ".P"))->name = std::string(200, 'P');
+  editDesign(w.document(), "long names", m);
+  for (QDockWidget* d : w.findChildren<QDockWidget*>()) {
+    d->show();
+    d->raise();
+    QTest::qWait(30);
+    EXPECT_EQ(w.width(), width) << d->objectName().toStdString();
+    EXPECT_LE(w.minimumSizeHint().width(), width) << d->objectName().toStdString();
+    EXPECT_LE(w.minimumWidth(), width) << d->objectName().toStdString();
+  }
+  shot(&w, "long-names");
+  w.edit().undo->trigger();
+  w.edit().undo->trigger();
+  QApplication::processEvents();
+  EXPECT_EQ(w.width(), width);
 }
 
 TEST(Displays, AFileThatCannotBeSolvedLeavesNoVelocityChainBehind) {

@@ -66,6 +66,7 @@ void markBad(QWidget* w, bool bad) {
 PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
   title_ = new QLabel;
   title_->setTextFormat(Qt::RichText);
+  title_->setWordWrap(true);  // a long name on lines, not the panel stretched
   form_ = new QFormLayout;
   form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
   auto* l = new QVBoxLayout(this);
