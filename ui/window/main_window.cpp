@@ -59,6 +59,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   animator_ = new Animator(this);
   setCentralWidget(view_);
   strip_ = new MessageStrip(view_);
+  view_->setBottomCover(strip_);
   scene_->setDocument(doc_);
   animator_->setDocument(doc_);
   createFeatures();
