@@ -29,6 +29,7 @@
 #include "tools/selection.h"
 #include "tools/toolbox.h"
 #include "window/features.h"
+#include "window/message_strip.h"
 
 namespace linkage::ui {
 namespace {
@@ -169,6 +170,55 @@ TEST(Drafting, CtrlZInAChoiceUndoesTheDocumentsEdit) {
   EXPECT_EQ(w.document()->design().driver->direction, Direction::Ccw);
   EXPECT_EQ(w.document()->undoStack()->index(), 0);
   EXPECT_EQ(box->currentIndex(), 0);
+}
+
+// A value refused turns its field red while the message saying why is shown: it goes with the
+// message (the next edit, undo, selection or turn of the crank), not later.
+TEST(Drafting, ARefusedFieldIsRedWhileItsMessageIsShown) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  auto refuse = [&w] {
+    QLineEdit* f = fieldOf(w, QStringLiteral("Start angle [\u00b0]"));
+    f->setFocus();
+    f->selectAll();
+    QTest::keyClicks(f, "1e300");
+    QTest::keyClick(f, Qt::Key_Return);
+    return f;
+  };
+  QLineEdit* f = refuse();
+  ASSERT_EQ(w.properties().panel()->refusedField(), f);
+  EXPECT_FALSE(f->styleSheet().isEmpty());
+  EXPECT_EQ(f->text(), "0");
+  ASSERT_TRUE(w.messageStrip()->message().contains("between -3600 and 3600"));
+  // Home: the crank turned, the message gone, the field no longer red.
+  w.animation().toStart->trigger();
+  QApplication::processEvents();
+  EXPECT_TRUE(w.messageStrip()->message().isEmpty()) << w.messageStrip()->message();
+  EXPECT_TRUE(f->styleSheet().isEmpty());
+  EXPECT_EQ(w.properties().panel()->refusedField(), nullptr);
+  // An edit and its undo.
+  f = refuse();
+  ASSERT_FALSE(f->styleSheet().isEmpty());
+  Mechanism m = w.document()->design();
+  m.driver->rpm = 90;
+  editDesign(w.document(), "rpm", m);
+  w.edit().undo->trigger();
+  QApplication::processEvents();
+  f = fieldOf(w, QStringLiteral("Start angle [\u00b0]"));
+  EXPECT_TRUE(f->styleSheet().isEmpty());
+  EXPECT_EQ(f->text(), "0");
+  // Another refusal in another field: only that one is red.
+  f = refuse();
+  QLineEdit* rpm = fieldOf(w, "Driver speed [rpm]");
+  ASSERT_NE(rpm, nullptr);
+  rpm->setFocus();
+  rpm->selectAll();
+  QTest::keyClicks(rpm, "-5");
+  QTest::keyClick(rpm, Qt::Key_Return);
+  EXPECT_EQ(w.properties().panel()->refusedField(), rpm);
+  EXPECT_TRUE(w.messageStrip()->message().contains("positive")) << w.messageStrip()->message();
+  EXPECT_FALSE(rpm->styleSheet().isEmpty());
+  EXPECT_TRUE(f->styleSheet().isEmpty());
 }
 
 TEST(Drafting, FileDialogsOpenBesideTheFile) {

@@ -261,8 +261,11 @@ void PropertiesPanel::addText(const QString& label, std::function<QString()> val
     // The edit may make the rows anew, this field with them.
     const QPointer<QLineEdit> field(e);
     if (!commit(text, &why)) {
+      if (refused_ && refused_ != e) markBad(refused_, false);
       markBad(e, true);
-      emit message(tr("%1: %2").arg(label, why), true);
+      refusal_ = tr("%1: %2").arg(label, why);
+      refused_ = e;
+      emit message(refusal_, true);
       e->setText(value());
       return;
     }
@@ -272,6 +275,14 @@ void PropertiesPanel::addText(const QString& label, std::function<QString()> val
     // (setText clears the field's own undo history).
     field->setText(value());
   });
+}
+
+void PropertiesPanel::messageShown(const QString& text) {
+  // A field stays red while the message that says why its value was refused is shown.
+  if (text == refusal_ || !refused_) return;
+  markBad(refused_, false);
+  refused_ = nullptr;
+  refusal_.clear();
 }
 
 void PropertiesPanel::addNumber(const QString& label, std::function<double()> value,
