@@ -76,6 +76,10 @@ QDockWidget* addDock(QMainWindow* w, const QString& name, const QString& title, 
   d->setObjectName(name);
   d->setWidget(contents);
   (new NarrowTexts(d))->adopt(contents);
+  // A side panel keeps the width its rows were laid out for (their texts gave it: 314 px at
+  // the default font), now that no text sets it.
+  if (area & (Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea) && contents->minimumWidth() == 0)
+    contents->setMinimumWidth(contents->fontMetrics().averageCharWidth() * 45);
   w->addDockWidget(area, d);
   return d;
 }
