@@ -9,9 +9,8 @@
 #include <QCommandLineParser>
 #include <QDir>
 #include <QTimer>
+#include <algorithm>
 #include <cstdio>
-#include <cstring>
-#include <initializer_list>
 
 #include "document/autosave.h"
 #include "document/document.h"
@@ -21,24 +20,12 @@
 
 namespace {
 
-bool hasArgument(int argc, char** argv, std::initializer_list<const char*> names) {
-  for (int i = 1; i < argc; ++i)
-    for (const char* n : names)
-      if (!std::strcmp(argv[i], n)) return true;
-  return false;
-}
-
-bool wantsHeadless(int argc, char** argv) {
-  return hasArgument(argc, argv, {"--screenshot"});
-}
-
-// --version and --help print and exit: they need no display either.
-bool onlyPrints(int argc, char** argv) {
-  return hasArgument(argc, argv, {"--version", "-v", "--help", "-h", "-?", "--help-all"});
-}
-
-// The editor's options besides --help and --version.
+// The editor's options, read by one QCommandLineParser.
 struct Options {
+  const QCommandLineOption help{{QStringLiteral("h"), QStringLiteral("help"), QStringLiteral("?")},
+                                QStringLiteral("Print this help and exit.")};
+  const QCommandLineOption version{{QStringLiteral("v"), QStringLiteral("version")},
+                                   QStringLiteral("Print the version and exit.")};
   const QCommandLineOption screenshot{QStringLiteral("screenshot"),
                                       QStringLiteral("Render the window to a PNG and exit."),
                                       QStringLiteral("OUT.png")};
@@ -64,11 +51,78 @@ struct Options {
       QStringLiteral("cycle"),
       QStringLiteral("Show the cycle dock (the file's timing) and its clearances on the canvas.")};
 
+  // The frame benchmarks were options of the editor until issue 19: they say where they went.
+  const QCommandLineOption benchmarks = [] {
+    QCommandLineOption o({QStringLiteral("benchmark-frames"), QStringLiteral("benchmark-drag")},
+                         QStringLiteral("Moved to bench/linkage_frames_bench."),
+                         QStringLiteral("N"));
+    o.setFlags(QCommandLineOption::HiddenFromHelp);
+    return o;
+  }();
+
   void addTo(QCommandLineParser& cli) const {
-    cli.addOptions(
-        {screenshot, angle, ics, plots, size, dark, extremes, transmission, checks, forces, cycle});
+    // -platform is one option, as Qt reads it (not -p -l -a ...); -v and -h are still known.
+    cli.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    cli.setApplicationDescription(
+        QStringLiteral("Planar linkage editor: draw, animate, instant centres, plots."));
+    cli.addPositionalArgument(QStringLiteral("model"),
+                              QStringLiteral("A .linkage.json file or an example's name "
+                                             "(e.g. wanzer-inversion-2)."),
+                              QStringLiteral("[FILE | EXAMPLE-NAME]"));
+    cli.addOptions({help, version, screenshot, angle, ics, plots, size, dark, extremes,
+                    transmission, checks, forces, cycle, benchmarks});
   }
 };
+
+QStringList argumentsOf(int argc, char** argv) {
+  QStringList out;
+  for (int i = 0; i < argc; ++i) out << QString::fromLocal8Bit(argv[i]);
+  return out;
+}
+
+// Whether the options the parser did not know are all Qt's own (QGuiApplication's and
+// QApplication's, as `-platform offscreen` or `-style Fusion`), which QApplication takes out of
+// the command line before it is read again.
+bool onlyQtOptionsUnknown(const QCommandLineParser& cli) {
+  static const QStringList qt =
+      QStringLiteral(
+          "platform platformpluginpath platformtheme plugin qmljsdebugger qwindowgeometry "
+          "qwindowicon qwindowtitle reverse session style stylesheet widgetcount display geometry "
+          "name title visual ncols cmap fn font bg background fg foreground btn button im "
+          "inputstyle nograb dograb sync")
+          .split(QLatin1Char(' '));
+  const QStringList unknown = cli.unknownOptionNames();
+  return !unknown.isEmpty() && std::all_of(unknown.begin(), unknown.end(),
+                                           [](const QString& n) { return qt.contains(n); });
+}
+
+// What the command line asks that needs no window: the help, the version, a refusal. Returns
+// the exit status, or -1 to go on.
+int answerWithoutWindow(const QCommandLineParser& cli, const Options& opt) {
+  if (cli.isSet(opt.help)) {
+    // Read without an application, the parser does not know the program's name.
+    QString help = cli.helpText();
+    help.replace(QStringLiteral("<executable_name>"), QStringLiteral("linkage"));
+    std::fputs(qPrintable(help), stdout);
+    return 0;
+  }
+  if (cli.isSet(opt.version)) {
+    std::printf("linkage %s\n", LINKAGE_VERSION);
+    return 0;
+  }
+  if (cli.isSet(opt.benchmarks)) {
+    std::fprintf(stderr,
+                 "linkage: the frame benchmarks are bench/linkage_frames_bench (--frames N, "
+                 "--drag N; docs/benchmarks.md, \"The editor\")\n");
+    return 2;
+  }
+  if (cli.positionalArguments().size() > 1) {
+    std::fprintf(stderr, "linkage: give one model, not %lld\n",
+                 static_cast<long long>(cli.positionalArguments().size()));
+    return 2;
+  }
+  return -1;
+}
 
 // --screenshot: the window offscreen, no event loop.
 int runOffscreen(const QCommandLineParser& cli, const Options& opt, const QString& model) {
@@ -107,18 +161,30 @@ void offerRecoveries(linkage::ui::MainWindow* w) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // The frame benchmarks were options of the editor until issue 19.
-  if (hasArgument(argc, argv, {"--benchmark-frames", "--benchmark-drag"})) {
-    std::fprintf(stderr,
-                 "linkage: the frame benchmarks are bench/linkage_frames_bench (--frames N, "
-                 "--drag N; docs/benchmarks.md, \"The editor\")\n");
+  QCommandLineParser cli;
+  const Options opt;
+  opt.addTo(cli);
+  // Read before any application exists: --help and --version print and exit without one (a
+  // QGuiApplication would look for a display and write its notes on standard error), and
+  // --screenshot needs the offscreen platform chosen before it starts. A command line that
+  // does not read may hold Qt's own options (-platform, -style): read again once QApplication
+  // has taken them out.
+  if (cli.parse(argumentsOf(argc, argv))) {
+    if (const int status = answerWithoutWindow(cli, opt); status >= 0) return status;
+    // No display needed for pictures (unless one is asked for explicitly).
+    if (cli.isSet(opt.screenshot) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+      qputenv("QT_QPA_PLATFORM", "offscreen");
+  } else if (!onlyQtOptionsUnknown(cli)) {
+    std::fprintf(stderr, "linkage: %s\n", qPrintable(cli.errorText()));
     return 2;
   }
-  const bool headless = wantsHeadless(argc, argv);
-  // No display needed for pictures (unless one is asked for explicitly).
-  if ((headless || onlyPrints(argc, argv)) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-    qputenv("QT_QPA_PLATFORM", "offscreen");
   QApplication app(argc, argv);
+  if (!cli.parse(QApplication::arguments())) {
+    std::fprintf(stderr, "linkage: %s\n", qPrintable(cli.errorText()));
+    return 2;
+  }
+  if (const int status = answerWithoutWindow(cli, opt); status >= 0) return status;
+  const bool headless = cli.isSet(opt.screenshot);
   QApplication::setApplicationName(QStringLiteral("linkage"));
   QApplication::setApplicationVersion(QStringLiteral(LINKAGE_VERSION));
   // The installed desktop entry (share/applications), so that the desktop shows its name and icon.
@@ -126,25 +192,7 @@ int main(int argc, char** argv) {
   // Screenshots start from the default layout and leave the user's settings alone.
   QApplication::setOrganizationName(headless ? QStringLiteral("linkage-headless")
                                              : QStringLiteral("linkage"));
-
-  QCommandLineParser cli;
-  cli.setApplicationDescription(
-      QStringLiteral("Planar linkage editor: draw, animate, instant centres, plots."));
-  cli.addHelpOption();
-  cli.addVersionOption();
-  cli.addPositionalArgument(QStringLiteral("model"),
-                            QStringLiteral("A .linkage.json file or an example's name "
-                                           "(e.g. wanzer-inversion-2)."),
-                            QStringLiteral("[FILE | EXAMPLE-NAME]"));
-  const Options opt;
-  opt.addTo(cli);
-  cli.process(app);
-
   const QStringList args = cli.positionalArguments();
-  if (args.size() > 1) {
-    std::fprintf(stderr, "linkage: give one model, not %lld\n", (long long)args.size());
-    return 2;
-  }
   if (headless) return runOffscreen(cli, opt, args.value(0));
 
   linkage::ui::startProbeFromEnvironment();

@@ -20,6 +20,7 @@
 #include "linkage/io/model_lookup.h"
 #include "mechanisms.h"
 #include "window/features.h"
+#include "window/message_strip.h"
 #include "window/offscreen_window.h"
 
 namespace linkage::ui {
@@ -347,6 +348,30 @@ TEST(Canvas, APlateFarLargerThanTheViewIsDrawnWhereItIs) {
       v->mapFromScene(v->mapToScene(QPoint(v->viewport()->width() - 5, 0)).x(), a.y() + 2);
   EXPECT_NE(after.pixel(edge), before.pixel(edge));
   shot(v->viewport(), "canvas-kilometre-plate");
+}
+
+// The message strip lies over the bottom of the canvas: Fit places the mechanism in the part
+// it leaves free (a long red message hid the ground pivots).
+TEST(Canvas, FitLeavesThePartUnderTheMessageStripFree) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  MessageStrip* strip = w.messageStrip();
+  strip->setMessage(QString("a long warning ").repeated(40), true);
+  QApplication::processEvents();
+  ASSERT_GE(strip->height(), 4 * strip->fontMetrics().height());
+  w.view().fit->trigger();
+  const QRect drawn = w.canvas()->mapFromScene(w.scene()->mechanismRect()).boundingRect();
+  EXPECT_LT(drawn.bottom(), strip->geometry().top()) << drawn.bottom();
+  EXPECT_GT(drawn.top(), 0);
+  // Every ground pivot in sight above the strip.
+  for (const Point& p : w.document()->design().points)
+    if (p.body == w.document()->design().bodies[0].id)
+      EXPECT_LT(w.canvas()->mapFromScene(toQt(p.pos)).y(), strip->geometry().top());
+  // Centred in that part, as large as it allows: it fills its height (less the margins).
+  const QRect free = w.canvas()->uncoveredRect();
+  EXPECT_EQ(free.bottom() + 1, strip->geometry().top());
+  EXPECT_NEAR(drawn.center().y(), free.center().y(), 2);
+  shot(&w, "fit-above-strip");
 }
 
 // Coordinates the solver refuses (beyond 1e12 mm) are kept in the design, as typed, and the

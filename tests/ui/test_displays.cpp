@@ -5,7 +5,9 @@
 
 #include "ui_test.h"
 
+#include <QDir>
 #include <QDockWidget>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QTableWidget>
@@ -13,9 +15,13 @@
 #include <QUndoStack>
 
 #include "animation/animator.h"
+#include "animation/crank_bar.h"
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
+#include "design/design_overlays.h"
+#include "design/extremes_item.h"
+#include "design/transmission_item.h"
 #include "document/commands.h"
 #include "document/document.h"
 #include "document/shown_numbers.h"
@@ -24,6 +30,7 @@
 #include "linkage/io/model_file.h"
 #include "plots/curve_set.h"
 #include "plots/plots_panel.h"
+#include "plots/qcp.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
@@ -177,6 +184,52 @@ TEST(Displays, UndoOfAStartAngleBeyondReachLeavesTheDesignSolved) {
   EXPECT_LE(w.minimumSizeHint().width(), width);
 }
 
+// Long text in the docks (a 250-character mechanism name typed in Properties widened the
+// window from 1400 to 3091 px, past the screen, and undo did not shrink it): every dock shown in
+// turn, with long names of the mechanism, a body and a point and a long path, keeps the width.
+TEST(Displays, LongNamesDoNotWidenTheWindow) {
+  QTemporaryDir dir;
+  const QString deep = dir.filePath(QString("folder").repeated(30));
+  ASSERT_TRUE(QDir().mkpath(deep));
+  const QString path = deep + "/four-bar.linkage.json";
+  ASSERT_TRUE(QFile::copy(LINKAGE_EXAMPLES_DIR "/four-bar-crank-rocker.linkage.json", path));
+  MainWindow w;
+  w.resize(1400, 900);
+  ASSERT_TRUE(w.openFile(path));
+  w.show();
+  QApplication::processEvents();
+  const int width = w.width();
+  ASSERT_EQ(width, 1400);
+  QLineEdit* name = qobject_cast<QLineEdit*>(w.properties().panel()->field("Name"));
+  ASSERT_NE(name, nullptr);
+  name->setFocus();
+  name->selectAll();
+  QTest::keyClicks(name, QString(250, QLatin1Char('N')));
+  QTest::keyClick(name, Qt::Key_Return);
+  ASSERT_EQ(w.document()->design().name, std::string(250, 'N'));
+  QApplication::processEvents();
+  EXPECT_EQ(w.width(), width);
+  // A body and a point named as long (the choices of points in the plots, the centres, the
+  // design checks and the forces list them).
+  Mechanism m = w.document()->design();
+  m.body(m.bodyNamed("coupler")->id)->name = std::string(200, 'C');
+  m.point(*m.findPoint(std::string(200, 'C') + ".P"))->name = std::string(200, 'P');
+  editDesign(w.document(), "long names", m);
+  for (QDockWidget* d : w.findChildren<QDockWidget*>()) {
+    d->show();
+    d->raise();
+    QTest::qWait(30);
+    EXPECT_EQ(w.width(), width) << d->objectName().toStdString();
+    EXPECT_LE(w.minimumSizeHint().width(), width) << d->objectName().toStdString();
+    EXPECT_LE(w.minimumWidth(), width) << d->objectName().toStdString();
+  }
+  shot(&w, "long-names");
+  w.edit().undo->trigger();
+  w.edit().undo->trigger();
+  QApplication::processEvents();
+  EXPECT_EQ(w.width(), width);
+}
+
 TEST(Displays, AFileThatCannotBeSolvedLeavesNoVelocityChainBehind) {
   MainWindow w;
   ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
@@ -203,6 +256,163 @@ TEST(Displays, AFileThatCannotBeSolvedLeavesNoVelocityChainBehind) {
   EXPECT_TRUE(w.properties().inspector()->noteText().startsWith("Not solved"));
 }
 
+// The four-bar example with a coupler too short to close: 1 mm, with a rocker of 51 mm, 53 mm
+// from the crank pin.
+Mechanism shortCoupler(Mechanism m) {
+  m.point(*m.findPoint("coupler.B"))->pos = Vec2(11, 17.320508075688775);
+  return m;
+}
+
+Mechanism shortCoupler() {
+  return shortCoupler(
+      *loadMechanismFile(LINKAGE_EXAMPLES_DIR "/four-bar-crank-rocker.linkage.json").mechanism);
+}
+
+// Every overlay of the canvas that draws numbers, none drawing any.
+void expectNoOverlayNumbers(MainWindow& w) {
+  EXPECT_TRUE(w.scene()->centresItem()->centres().empty())
+      << w.scene()->centresItem()->centres().size() << " centres";
+  EXPECT_TRUE(w.scene()->drawing().centres.empty());
+  EXPECT_TRUE(w.scene()->chainItem()->dimensions().empty());
+  for (const QGraphicsPathItem* t : w.scene()->traceItems()) EXPECT_TRUE(t->path().isEmpty());
+  EXPECT_TRUE(w.designChecks().overlays()->extremesItem()->poses().poses.empty());
+  EXPECT_TRUE(w.designChecks().overlays()->transmissionItem()->arcs().empty());
+  EXPECT_TRUE(w.scene()->dynamicsItem()->marks().reactions.empty());
+}
+
+void showEveryOverlay(MainWindow& w) {
+  w.centres().dock->raise();
+  w.centres().show->setChecked(true);
+  w.view().showTraces->setChecked(true);
+  w.designChecks().showExtremes->setChecked(true);
+  w.designChecks().showTransmission->setChecked(true);
+  w.forces().show->setChecked(true);
+  QTest::qWait(30);
+}
+
+TEST(Displays, AFileThatCannotBeSolvedShowsNoOverlayOfTheDocumentBefore) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "wanzer-inversion-2"));
+  showEveryOverlay(w);
+  ASSERT_FALSE(w.scene()->centresItem()->centres().empty());
+  QTemporaryDir dir;
+  const QString path = dir.filePath("short.linkage.json");
+  ASSERT_TRUE(saveMechanismFile(shortCoupler(), path.toStdString()).ok);
+  QString why;
+  ASSERT_TRUE(w.openFile(path, &why)) << why.toStdString();
+  QTest::qWait(30);
+  ASSERT_FALSE(w.document()->solved());
+  expectNoOverlayNumbers(w);
+  shot(&w, "unsolved-file-after-wanzer");
+}
+
+TEST(Displays, ARefusedEditShowsNoOverlayOfTheLastSolvedDesign) {
+  // The solver keeps the last good state of a refused edit of the same shape and the canvas
+  // draws its pose: its centres, paths and arcs are of that other design.
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  showEveryOverlay(w);
+  ASSERT_FALSE(w.scene()->centresItem()->centres().empty());
+  ASSERT_FALSE(w.scene()->traceItems().at(0)->path().isEmpty());
+  ASSERT_FALSE(w.scene()->chainItem()->dimensions().empty());
+  editDesign(w.document(), "short", shortCoupler(w.document()->design()));
+  QTest::qWait(30);
+  ASSERT_FALSE(w.document()->solved());
+  ASSERT_TRUE(w.scene()->solverShown());
+  expectNoOverlayNumbers(w);
+  // Undone: the overlays of the solved design again.
+  w.edit().undo->trigger();
+  QTest::qWait(30);
+  EXPECT_FALSE(w.scene()->centresItem()->centres().empty());
+  EXPECT_FALSE(w.scene()->traceItems().at(0)->path().isEmpty());
+}
+
+// What every display says of a design the solver has not taken: the document's reason, and
+// nothing of the last design that could be solved.
+void expectOneReason(MainWindow& w) {
+  const QString why = QString::fromStdString(w.document()->solveStatus().message);
+  ASSERT_FALSE(why.isEmpty());
+  const CurveSet* set = w.plots().panel()->curves(0);
+  ASSERT_NE(set, nullptr);
+  EXPECT_TRUE(set->empty());
+  EXPECT_EQ(QString::fromStdString(set->status().message), why);
+  EXPECT_TRUE(w.plots().panel()->statusText().contains(why)) << w.plots().panel()->statusText();
+  EXPECT_FALSE(w.plots().panel()->statusText().contains("last design"));
+  const QString summary = w.properties().inspector()->summaryText();
+  EXPECT_TRUE(summary.contains("Not solved")) << summary;
+  EXPECT_FALSE(summary.contains("Solved ")) << summary;
+  EXPECT_FALSE(summary.contains("Degrees of freedom")) << summary;
+  const QLabel* driver = w.animation().crankBar()->driverLabel();
+  if (w.document()->design().driver) {
+    EXPECT_TRUE(driver->text().contains("rpm")) << driver->text();
+    EXPECT_TRUE(driver->text().contains("not solved")) << driver->text();
+    EXPECT_TRUE(driver->toolTip().contains(why)) << driver->toolTip();
+  }
+  EXPECT_FALSE(w.animation().crankBar()->isEnabled());
+}
+
+TEST(Displays, AnUnsolvedDesignSaysItsOneReasonEverywhere) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  w.plots().dock->show();
+  w.properties().dock->raise();
+  QTest::qWait(60);
+  ASSERT_FALSE(w.plots().panel()->curves(0)->empty());
+  // An edit the solver refuses: it keeps the last design it could solve, whose curves these
+  // are not.
+  editDesign(w.document(), "short", shortCoupler(w.document()->design()));
+  QTest::qWait(60);
+  ASSERT_FALSE(w.document()->solved());
+  expectOneReason(w);
+  // A file that cannot be solved: it has a driver.
+  QTemporaryDir dir;
+  const QString path = dir.filePath("short.linkage.json");
+  ASSERT_TRUE(saveMechanismFile(shortCoupler(), path.toStdString()).ok);
+  ASSERT_TRUE(w.openFile(path));
+  QTest::qWait(60);
+  expectOneReason(w);
+  EXPECT_FALSE(w.animation().crankBar()->driverLabel()->text().contains("no driver"));
+}
+
+TEST(Displays, AStructureGivenADriverSaysWhyItCannotTurn) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  w.plots().dock->show();
+  // The four-bar without its driver, its coupler point strutted to the ground: a structure.
+  Mechanism m = w.document()->design();
+  m.driver.reset();
+  const Vec2 p = m.point(*m.findPoint("coupler.P"))->pos;
+  const BodyId strut = m.addBody("strut");
+  const PointId top = m.addPoint(strut, "T", Vec2(30, 100));
+  m.addPin(m.addPoint(strut, "P", p), *m.findPoint("coupler.P"));
+  m.addPin(top, m.addPoint(m.bodies[0].id, "T", Vec2(30, 100)));
+  editDesign(w.document(), "strut", m);
+  QTest::qWait(60);
+  ASSERT_TRUE(w.document()->solved()) << w.document()->solveStatus().message;
+  ASSERT_EQ(w.document()->kinematics().structure().mobility, 0);
+  // The Driver tool on the crank's pivot.
+  test::Draw d{w};
+  d.key("M");
+  d.click(0, 0);
+  QTest::qWait(60);
+  ASSERT_TRUE(w.document()->design().driver);
+  ASSERT_FALSE(w.document()->solved());
+  EXPECT_FALSE(w.messageStrip()->message().contains("drives the mechanism"))
+      << w.messageStrip()->message();
+  EXPECT_TRUE(w.messageStrip()->problem().contains("cannot turn")) << w.messageStrip()->problem();
+  expectOneReason(w);
+  EXPECT_FALSE(w.plots().panel()->statusText().contains("no driver"));
+}
+
+// The extremes marked on the plots: points of the graphs drawn without lines.
+int extremeMarks(const MainWindow& w) {
+  QCustomPlot* plot = w.plots().panel()->plotWidget();
+  int n = 0;
+  for (int i = 0; i < plot->graphCount(); ++i)
+    if (plot->graph(i)->lineStyle() == QCPGraph::lsNone) n += plot->graph(i)->dataCount();
+  return n;
+}
+
 TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {
   EXPECT_EQ(fixedText(-1e-9, 3), "0.000");
   EXPECT_EQ(fixedText(-0.0, 3), "0.000");
@@ -221,6 +431,15 @@ TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {
   for (Order o : {Order::Velocity, Order::Acceleration})
     for (double v : set->curve(o).values) ASSERT_EQ(v, 0.0);
   EXPECT_EQ(set->extremes(Order::Velocity).max.value, 0.0);
+  // Flat to rounding: no extreme marked on the zero line, none at an angle in the list (the
+  // rounding's peaks were marked at 210 and 257 degrees on ay).
+  EXPECT_EQ(extremeMarks(w), 0);
+  for (Order o : {Order::Position, Order::Velocity, Order::Acceleration}) {
+    EXPECT_FALSE(std::isfinite(set->extremes(o).max.crankDeg));
+    EXPECT_FALSE(std::isfinite(set->extremes(o).min.crankDeg));
+  }
+  EXPECT_FALSE(w.plots().panel()->extremesText().contains(QString::fromUtf8("0°")))
+      << w.plots().panel()->extremesText();
   // A moving point's curve keeps its small values (no flattening of a real signal).
   r.target = "coupler.P";
   w.plots().panel()->setRequest(r);
@@ -228,6 +447,7 @@ TEST(Displays, RoundingIsNeitherPlottedNorPrintedAsASign) {
   int nonzero = 0;
   for (double v : w.plots().panel()->curves(0)->curve(Order::Velocity).values) nonzero += v != 0;
   EXPECT_GT(nonzero, 300);
+  EXPECT_EQ(extremeMarks(w), 6);  // a maximum and a minimum on each of its three curves
   // The inspector prints no "-0.000".
   Mechanism m = w.document()->design();
   toggleOutput(m, *m.findPoint("rocker.O4"));

@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUndoStack>
 
 #include "canvas/canvas_view.h"
 #include "dialogs.h"
@@ -20,6 +21,7 @@
 #include "document/document.h"
 #include "drawing.h"
 #include "linkage/edits.h"
+#include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "plots/curve_set.h"
 #include "plots/plots_panel.h"
@@ -27,6 +29,7 @@
 #include "tools/selection.h"
 #include "tools/toolbox.h"
 #include "window/features.h"
+#include "window/message_strip.h"
 
 namespace linkage::ui {
 namespace {
@@ -94,6 +97,128 @@ TEST(Drafting, AStartAngleTurnsTheCrankThereAndSaysWhatItMeans) {
   // The drawing itself is as it was drawn.
   EXPECT_EQ(w.document()->design().point(*w.document()->design().findPoint("crank.A"))->pos,
             Vec2(10, 17.320508075688775));
+}
+
+// Types `typed` into the field `label` of coupler.P (or of the mechanism: `point` empty),
+// commits it with Return, then Ctrl+Z in the field: the document's edit is undone (one entry in
+// the history, redo kept), the field shows the value undone, leaving the field commits nothing
+// and Ctrl+Shift+Z redoes the edit.
+void expectCtrlZUndoesTheEdit(const QString& label, const QString& typed, const char* point) {
+  SCOPED_TRACE(label.toStdString());
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  w.activateWindow();
+  ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
+  Document* doc = w.document();
+  QUndoStack* undo = doc->undoStack();
+  if (*point) w.tools().selection()->add(*doc->design().findPoint(point));
+  QLineEdit* f = fieldOf(w, label);
+  ASSERT_NE(f, nullptr);
+  const QString before = f->text();
+  const std::string file = serializeMechanism(doc->design());
+  f->setFocus();
+  f->selectAll();
+  QTest::keyClicks(f, typed);
+  QTest::keyClick(f, Qt::Key_Return);
+  ASSERT_EQ(undo->count(), 1);
+  ASSERT_EQ(f->text(), typed);
+  QTest::keyClick(f, Qt::Key_Z, Qt::ControlModifier);
+  EXPECT_EQ(undo->index(), 0);
+  EXPECT_EQ(serializeMechanism(doc->design()), file);
+  EXPECT_FALSE(doc->isModified());
+  ASSERT_EQ(fieldOf(w, label), f);
+  EXPECT_EQ(f->text(), before);
+  // Leaving the field takes nothing again.
+  QTest::keyClick(f, Qt::Key_Tab);
+  EXPECT_FALSE(f->hasFocus());
+  EXPECT_EQ(undo->count(), 1);
+  EXPECT_EQ(undo->index(), 0);
+  EXPECT_FALSE(doc->isModified());
+  EXPECT_EQ(f->text(), before);
+  // Back in the field: Ctrl+Shift+Z redoes the edit, the field shows it.
+  f->setFocus();
+  QTest::keyClick(f, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+  EXPECT_EQ(undo->index(), 1);
+  EXPECT_EQ(f->text(), typed);
+  EXPECT_TRUE(doc->isModified());
+  // While a value is being typed, Ctrl+Z takes back the typing, not the document's edit.
+  QTest::keyClicks(f, "5");
+  QTest::keyClick(f, Qt::Key_Z, Qt::ControlModifier);
+  EXPECT_EQ(f->text(), typed);
+  EXPECT_EQ(undo->index(), 1);
+}
+
+TEST(Drafting, CtrlZInACommittedFieldUndoesTheDocumentsEdit) {
+  expectCtrlZUndoesTheEdit("x [mm]", "31", "coupler.P");  // a number
+  expectCtrlZUndoesTheEdit("Name", "Q", "coupler.P");     // a name
+  expectCtrlZUndoesTheEdit(QStringLiteral("Start angle [\u00b0]"), "30", "");
+  expectCtrlZUndoesTheEdit("Name", "another name", "");  // the mechanism's
+}
+
+TEST(Drafting, CtrlZInAChoiceUndoesTheDocumentsEdit) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  w.activateWindow();
+  ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
+  auto* box = qobject_cast<QComboBox*>(w.properties().panel()->field("Direction"));
+  ASSERT_NE(box, nullptr);
+  box->setFocus();
+  QTest::keyClick(box, Qt::Key_Down);
+  ASSERT_EQ(w.document()->design().driver->direction, Direction::Cw);
+  ASSERT_EQ(w.document()->undoStack()->count(), 1);
+  QTest::keyClick(box, Qt::Key_Z, Qt::ControlModifier);
+  EXPECT_EQ(w.document()->design().driver->direction, Direction::Ccw);
+  EXPECT_EQ(w.document()->undoStack()->index(), 0);
+  EXPECT_EQ(box->currentIndex(), 0);
+}
+
+// A value refused turns its field red while the message saying why is shown: it goes with the
+// message (the next edit, undo, selection or turn of the crank), not later.
+TEST(Drafting, ARefusedFieldIsRedWhileItsMessageIsShown) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  auto refuse = [&w] {
+    QLineEdit* f = fieldOf(w, QStringLiteral("Start angle [\u00b0]"));
+    f->setFocus();
+    f->selectAll();
+    QTest::keyClicks(f, "1e300");
+    QTest::keyClick(f, Qt::Key_Return);
+    return f;
+  };
+  QLineEdit* f = refuse();
+  ASSERT_EQ(w.properties().panel()->refusedField(), f);
+  EXPECT_FALSE(f->styleSheet().isEmpty());
+  EXPECT_EQ(f->text(), "0");
+  ASSERT_TRUE(w.messageStrip()->message().contains("between -3600 and 3600"));
+  // Home: the crank turned, the message gone, the field no longer red.
+  w.animation().toStart->trigger();
+  QApplication::processEvents();
+  EXPECT_TRUE(w.messageStrip()->message().isEmpty()) << w.messageStrip()->message();
+  EXPECT_TRUE(f->styleSheet().isEmpty());
+  EXPECT_EQ(w.properties().panel()->refusedField(), nullptr);
+  // An edit and its undo.
+  f = refuse();
+  ASSERT_FALSE(f->styleSheet().isEmpty());
+  Mechanism m = w.document()->design();
+  m.driver->rpm = 90;
+  editDesign(w.document(), "rpm", m);
+  w.edit().undo->trigger();
+  QApplication::processEvents();
+  f = fieldOf(w, QStringLiteral("Start angle [\u00b0]"));
+  EXPECT_TRUE(f->styleSheet().isEmpty());
+  EXPECT_EQ(f->text(), "0");
+  // Another refusal in another field: only that one is red.
+  f = refuse();
+  QLineEdit* rpm = fieldOf(w, "Driver speed [rpm]");
+  ASSERT_NE(rpm, nullptr);
+  rpm->setFocus();
+  rpm->selectAll();
+  QTest::keyClicks(rpm, "-5");
+  QTest::keyClick(rpm, Qt::Key_Return);
+  EXPECT_EQ(w.properties().panel()->refusedField(), rpm);
+  EXPECT_TRUE(w.messageStrip()->message().contains("positive")) << w.messageStrip()->message();
+  EXPECT_FALSE(rpm->styleSheet().isEmpty());
+  EXPECT_TRUE(f->styleSheet().isEmpty());
 }
 
 TEST(Drafting, FileDialogsOpenBesideTheFile) {

@@ -106,15 +106,23 @@ void CrankBar::showPose() {
 }
 
 void CrankBar::showDriver() {
-  const bool ok = doc_ && doc_->kinematics().valid() && doc_->design().driver;
-  setEnabled(ok);
-  if (!ok) {
-    driver_->setText(tr("no driver"));
+  // The design's driver, and whether the solver holds the design it drives (the bar turns only
+  // that); the reason it does not is the document's, in the tooltip and the red line over the
+  // canvas.
+  const Driver* d = doc_ && doc_->design().driver ? &*doc_->design().driver : nullptr;
+  const bool solved = doc_ && doc_->solved();
+  setEnabled(d && solved);
+  driver_->setToolTip(
+      doc_ && !solved
+          ? tr("Not solved: %1").arg(QString::fromStdString(doc_->solveStatus().message))
+          : QString());
+  if (!d) {
+    driver_->setText(solved ? tr("no driver") : tr("no driver, not solved"));
     return;
   }
-  const Driver& d = *doc_->design().driver;
-  driver_->setText(
-      tr("%1 rpm %2").arg(d.rpm).arg(d.direction == Direction::Cw ? tr("cw") : tr("ccw")));
+  const QString speed =
+      tr("%1 rpm %2").arg(d->rpm).arg(d->direction == Direction::Cw ? tr("cw") : tr("ccw"));
+  driver_->setText(solved ? speed : tr("%1, not solved").arg(speed));
 }
 
 }  // namespace linkage::ui

@@ -27,6 +27,8 @@ class CrankBar : public QWidget {
   QDoubleSpinBox* angleBox() const { return angle_; }
   QComboBox* speedBox() const { return speed_; }
   QDoubleSpinBox* incrementBox() const { return increment_; }
+  // The driver's speed and direction, or why nothing turns ("no driver", "not solved").
+  QLabel* driverLabel() const { return driver_; }
   // Slow-motion factors offered, fastest first.
   static const std::vector<double>& speeds();
   void setSpeedIndex(int i);

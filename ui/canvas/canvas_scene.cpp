@@ -195,9 +195,10 @@ void CanvasScene::rebuild() {
     joints_.push_back(item);
   }
   for (const Drawing::Driver& d : drawing_.drivers) {
+    // The design's speed (the solver's may be that of the last design it could solve).
     const QString tip =
         QStringLiteral("driver: %1 rpm %2")
-            .arg(k.rpm())
+            .arg(doc_->design().driver ? doc_->design().driver->rpm : k.rpm())
             .arg(d.ccw ? QStringLiteral("counter-clockwise") : QStringLiteral("clockwise"));
     driver_ = new DriverItem(&ctx_, d.ccw, tip);
     driver_->setZValue(kDriverZ);
@@ -264,13 +265,18 @@ void CanvasScene::applyMechanisms() {
 void CanvasScene::updatePose() {
   if (!doc_) return;
   if (!solverShown_) {
-    dynamics_->setMarks(dynamicsMarks(*this, *doc_, false, 0));
+    // The sketch of a design the solver cannot take: no overlay of the solver's last state.
+    centres_->setCentres({});
+    // With the forces on, their legend says why there are none (the document's reason).
+    dynamics_->setMarks(dynamicsMarks(*this, *doc_, forcesVisible_, 0));
     updateFlags();
     emit redrawn();
     return;
   }
   const Kinematics& k = doc_->kinematics();
-  const InstantCentres* ics = centresVisible_ && k.valid() ? &doc_->instantCentres() : nullptr;
+  // The solver's pose is drawn also while it keeps the last good state of a refused edit of
+  // the same shape; its centres are of that other design, not of this one: none.
+  const InstantCentres* ics = centresVisible_ && doc_->solved() ? &doc_->instantCentres() : nullptr;
   if (!updateDrawing(drawing_, k, ics)) {
     rebuild();  // the solver holds another revision: the items are out of date
     return;
@@ -347,7 +353,8 @@ void CanvasScene::updateTraces() {
     delete t;
   }
   traces_.clear();
-  if (!tracesVisible_ || !doc_ || !solverShown_) return;
+  // Of the design only when the solver holds it (not the last good state of a refused edit).
+  if (!tracesVisible_ || !doc_ || !doc_->solved()) return;
   const Kinematics& k = doc_->kinematics();
   const std::vector<PointId>& outputs = k.mechanism().outputs;
   std::vector<std::vector<Vec2>> paths = tracePaths(k);

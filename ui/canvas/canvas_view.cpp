@@ -61,16 +61,28 @@ void CanvasView::scaleChanged() {
   resetCachedContent();
 }
 
+QRect CanvasView::uncoveredRect() const {
+  QRect free = viewport()->rect();
+  if (cover_ && !cover_->isHidden()) {
+    // At most half the view: a strip taller than that is read, then the drawing is seen again.
+    const int top = viewport()->mapFrom(this, cover_->geometry().topLeft()).y();
+    free.setBottom(std::max(free.bottom() - free.height() / 2, std::min(free.bottom(), top - 1)));
+  }
+  return free;
+}
+
 void CanvasView::fitToMechanism() {
   QRectF r = scene_->mechanismRect();
   if (r.isEmpty()) r = r.adjusted(-50, -50, 50, 50);
+  const QRect free = uncoveredRect();
   // Pixels around it, for symbols and labels: less in a small view (an animation's frames).
-  const double margin =
-      std::clamp(0.07 * std::min(viewport()->width(), viewport()->height()), 12.0, 60.0);
-  const double zx = (viewport()->width() - 2 * margin) / std::max(r.width(), 1e-9);
-  const double zy = (viewport()->height() - 2 * margin) / std::max(r.height(), 1e-9);
+  const double margin = std::clamp(0.07 * std::min(free.width(), free.height()), 12.0, 60.0);
+  const double zx = (free.width() - 2 * margin) / std::max(r.width(), 1e-9);
+  const double zy = (free.height() - 2 * margin) / std::max(r.height(), 1e-9);
   setZoom(std::max(kMinZoom, std::min(zx, zy)));
-  centerOn(r.center());
+  // The mechanism's centre at the free part's centre: the view's centre is that far below it.
+  const double below = (viewport()->rect().center().y() - free.center().y()) / zoom();
+  centerOn(r.center() - QPointF(0, below));
   // Until the user zooms or pans, the view keeps fitting the mechanism as the window resizes
   // (a file opened before the window is shown is fitted again once it has its size).
   autoFit_ = true;

@@ -28,8 +28,14 @@ class CanvasView : public QGraphicsView {
   void zoomBy(double factor, std::optional<QPoint> anchor = std::nullopt);
   // Pixels per millimetre at which the drawing is at its real size (the screen's logical DPI).
   double actualSizeZoom() const { return logicalDpiX() / 25.4; }
-  // The whole mechanism (and its traced paths) in view, with a margin.
+  // The whole mechanism (and its traced paths) in view, with a margin, in the part of the view
+  // that the widget laid over its bottom edge (the message strip) leaves free.
   void fitToMechanism();
+  // A child widget over the bottom of the view (not part of it: the view does not shrink);
+  // fitting keeps the mechanism out from under it while it is shown.
+  void setBottomCover(QWidget* cover) { cover_ = cover; }
+  // The viewport's part above the cover, where fitting places the mechanism.
+  QRect uncoveredRect() const;
   // Panning now (middle button, or Space held): the tools leave the mouse to the view.
   bool panning() const { return panning_; }
   bool spaceHeld() const { return spaceDown_; }
@@ -63,6 +69,7 @@ class CanvasView : public QGraphicsView {
   QPoint lastPan_;
   std::pair<int, int> selectedCentre_{0, 0}, hoveredCentre_{0, 0};
   bool autoFit_ = true;
+  QWidget* cover_ = nullptr;
 };
 
 }  // namespace linkage::ui

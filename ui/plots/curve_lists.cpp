@@ -68,7 +68,9 @@ void listExtremes(QTreeWidget* list, const std::vector<const CurveSet*>& sets, c
           {name, withUnit(e.max.value, order, body, u), formatDegrees(e.max.crankDeg),
            withUnit(e.min.value, order, body, u), formatDegrees(e.min.crankDeg),
            formatValue(e.range() * std::abs(u.scale(order, body))) + " " + u.name(order, body)});
-      item->setToolTip(2, e.max.method == Extreme::Method::Sample
+      item->setToolTip(2, !std::isfinite(e.max.crankDeg)
+                              ? "none: the curve is a constant to rounding"
+                          : e.max.method == Extreme::Method::Sample
                               ? "the largest sample"
                               : "between samples, from the exact derivative or value");
     }

@@ -23,8 +23,9 @@ double scaleOf(const Kinematics& k, bool body, int order) {
 }
 
 // A curve whose whole swing is rounding (a fixed pivot's velocity computed through a turning
-// link: +-2.5e-14 mm/s) is the constant it rounds, plotted flat (exactly 0 when it is zero),
-// with the same extremes.
+// link: +-2.5e-14 mm/s) is the constant it rounds, plotted flat (exactly 0 when it is zero).
+// Its largest and smallest value are that constant, reached nowhere in particular: the angles
+// where the rounding peaked are no extremes of the motion, and none is marked.
 void flattenRounding(Curve& c, Extremes& e, double scale) {
   if (c.values.empty()) return;
   const auto [lo, hi] = std::minmax_element(c.values.begin(), c.values.end());
@@ -32,14 +33,20 @@ void flattenRounding(Curve& c, Extremes& e, double scale) {
   const double v = cleaned((*lo + *hi) / 2, scale);
   std::fill(c.values.begin(), c.values.end(), v);
   e.max.value = e.min.value = v;
+  e.max.crankDeg = e.min.crankDeg = NAN;
 }
 
 }  // namespace
 
-CurveSet::CurveSet(const Kinematics& k, const CurveRequest& r, const QString& title)
+CurveSet::CurveSet(const Kinematics& k, const CurveRequest& r, const QString& title,
+                   const Status& solve)
     : title_(title), request_(r) {
   const std::string target = r.target.toStdString();
   crankLabel_ = QString("%1 angle [deg]").arg(crankName(k.mechanism()));
+  if (!solve.ok()) {
+    status_ = solve;
+    return;
+  }
   if (!k.valid()) {
     status_ = Status::failure(StatusCode::BadModel, "the mechanism is not solved");
     return;

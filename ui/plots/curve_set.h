@@ -27,8 +27,11 @@ struct CurveRequest {
 class CurveSet {
  public:
   // Resolves the request in k's mechanism and samples it (nothing when k is not solved or the
-  // target is not there: status() says why).
-  CurveSet(const Kinematics& k, const CurveRequest& r, const QString& title);
+  // target is not there: status() says why). `solve` is what the last solve of the document's
+  // design said: when it failed, k is the last design that could be solved, another one, and
+  // there are no curves, its reason the status.
+  CurveSet(const Kinematics& k, const CurveRequest& r, const QString& title,
+           const Status& solve = Status::success());
 
   const QString& title() const { return title_; }
   const CurveRequest& request() const { return request_; }

@@ -155,11 +155,13 @@ QVector<double> scaled(const std::vector<double>& values, double scale,
   return out;
 }
 
-// A curve's maximum and minimum marked on every turn plotted where the motion repeats.
+// A curve's maximum and minimum marked on every turn plotted where the motion repeats (a flat
+// curve's have no angle: none).
 void markExtremes(QCPGraph* marks, const CurveSet& set, Order o, int revs, double scale) {
   const int turns = set.periodic() ? revs : 1;
   for (const Extreme* e : {&set.extremes(o).max, &set.extremes(o).min})
-    for (int t = 0; t < turns; ++t) marks->addData(e->crankDeg + 360.0 * t, e->value * scale);
+    if (std::isfinite(e->crankDeg))
+      for (int t = 0; t < turns; ++t) marks->addData(e->crankDeg + 360.0 * t, e->value * scale);
 }
 
 }  // namespace

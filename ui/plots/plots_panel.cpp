@@ -287,7 +287,8 @@ void PlotsPanel::recompute() {
     for (auto& s : sets_)
       if (s.first == d && s.second) set = std::move(s.second);
     if (!set) {
-      set = std::make_unique<CurveSet>(d->kinematics(), requestFor(d), titleOf(d));
+      set =
+          std::make_unique<CurveSet>(d->kinematics(), requestFor(d), titleOf(d), d->solveStatus());
       ++computations_;
     }
     next.emplace_back(d, std::move(set));
@@ -302,9 +303,7 @@ void PlotsPanel::rebuildFigure() {
   if (!doc_)
     problems << "No document.";
   else if (!doc_->solved())
-    problems << QString(
-                    "The design cannot be solved (%1): the curves are those of the last "
-                    "design that could.")
+    problems << QString("Not solved: %1. No curves until the design can be solved.")
                     .arg(QString::fromStdString(doc_->solveStatus().message));
   if (doc_ && request_.target.isEmpty()) problems << "The mechanism has no point to plot.";
   status_->setText(problems.join(" "));
@@ -353,6 +352,10 @@ void PlotsPanel::updateExtremes() {
     listHarmonics(extremes_, shownSets(), units_);
   else
     listExtremes(extremes_, shownSets(), units_);
+}
+
+QString PlotsPanel::statusText() const {
+  return status_->isHidden() ? QString() : status_->text();
 }
 
 QString PlotsPanel::extremesText() const {

@@ -79,6 +79,7 @@ class PlotsPanel : public QWidget {
   double cursorDeg() const;      // where the cursor is drawn, in the plotted range
   QString cursorText() const;    // the values at the cursor, as shown
   QString extremesText() const;  // the extremes list, one line per row
+  QString statusText() const;    // the line over the plots: why there is nothing to plot
   int computations() const { return computations_; }  // curve sets sampled so far
   bool redrawPending() const { return pending_; }     // a throttled redraw is yet to run
   const CurveSet* curves(int i) const;  // 0: the document's; then the comparisons shown

@@ -72,7 +72,9 @@ void InspectorPanel::refreshSummary() {
           .arg(QString::fromStdString(m.name).toHtmlEscaped(),
                doc_->filePath().isEmpty() ? tr("not saved") : doc_->filePath().toHtmlEscaped());
   s += tr("%1 bodies, %2 joints").arg(m.bodies.size()).arg(m.joints.size());
-  if (k.valid()) {
+  // The structure and the solve of the design only: a design the solver refused has none (what
+  // it keeps is the last design it could solve, another one).
+  if (doc_->solved()) {
     const StructureReport r = k.structure();
     s += tr("<br>Degrees of freedom: <b>%1</b> (Gruebler %2, rank %3 of %4 equations)")
              .arg(r.mobility)

@@ -61,11 +61,34 @@ void markBad(QWidget* w, bool bad) {
   w->setStyleSheet(bad ? QStringLiteral("background: rgba(220, 40, 30, 60);") : QString());
 }
 
+// Ctrl+Z in a field that shows the document's value (committed, or not typed in since) undoes
+// the document's last edit, as anywhere else in the window: the field's own undo would take
+// back only its text, which leaving the field then committed again as a new edit. While a value
+// is being typed, the field undoes its typing first.
+class FieldUndo : public QObject {
+ public:
+  using QObject::QObject;
+  bool eventFilter(QObject* watched, QEvent* e) override {
+    auto* field = qobject_cast<QLineEdit*>(watched);
+    if (!field || e->type() != QEvent::ShortcutOverride) return QObject::eventFilter(watched, e);
+    auto* k = static_cast<QKeyEvent*>(e);
+    const bool undo = k->matches(QKeySequence::Undo);
+    const bool redo = k->matches(QKeySequence::Redo);
+    if (!undo && !redo) return QObject::eventFilter(watched, e);
+    const bool typing =
+        field->isModified() && (undo ? field->isUndoAvailable() : field->isRedoAvailable());
+    if (typing) return QObject::eventFilter(watched, e);
+    e->ignore();  // the window's Undo or Redo acts
+    return true;
+  }
+};
+
 }  // namespace
 
 PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
   title_ = new QLabel;
   title_->setTextFormat(Qt::RichText);
+  title_->setWordWrap(true);  // a long name on lines, not the panel stretched
   form_ = new QFormLayout;
   form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
   auto* l = new QVBoxLayout(this);
@@ -223,22 +246,43 @@ void PropertiesPanel::addCheck(const QString& label, const QString& text,
 void PropertiesPanel::addText(const QString& label, std::function<QString()> value,
                               std::function<bool(const QString&, QString*)> commit) {
   auto* e = new QLineEdit(value());
+  e->installEventFilter(new FieldUndo(e));
   form_->addRow(label, e);
+  // A field being typed in keeps what is typed; any other shows the document's value (an undo
+  // while the field has the keyboard shows the value undone).
   rows_.push_back({label, e, [e, value] {
-                     if (!e->hasFocus()) e->setText(value());
+                     const QString v = value();
+                     if ((!e->hasFocus() || !e->isModified()) && e->text() != v) e->setText(v);
                    }});
   connect(e, &QLineEdit::editingFinished, this, [this, e, value, commit, label] {
     const QString text = e->text().trimmed();
     if (text == value()) return;
     QString why;
+    // The edit may make the rows anew, this field with them.
+    const QPointer<QLineEdit> field(e);
     if (!commit(text, &why)) {
+      if (refused_ && refused_ != e) markBad(refused_, false);
       markBad(e, true);
-      emit message(tr("%1: %2").arg(label, why), true);
+      refusal_ = tr("%1: %2").arg(label, why);
+      refused_ = e;
+      emit message(refusal_, true);
       e->setText(value());
       return;
     }
-    markBad(e, false);
+    if (!field) return;
+    markBad(field, false);
+    // Committed: the field shows the document's value, its typing no longer to be undone
+    // (setText clears the field's own undo history).
+    field->setText(value());
   });
+}
+
+void PropertiesPanel::messageShown(const QString& text) {
+  // A field stays red while the message that says why its value was refused is shown.
+  if (text == refusal_ || !refused_) return;
+  markBad(refused_, false);
+  refused_ = nullptr;
+  refusal_.clear();
 }
 
 void PropertiesPanel::addNumber(const QString& label, std::function<double()> value,

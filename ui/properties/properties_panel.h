@@ -56,6 +56,10 @@ class PropertiesPanel : public QWidget {
               QString* why);
   // The driver's speed, direction and start angle.
   void fillDriver();
+  // The message line now shows `text`: a field refused with another message is no longer red.
+  void messageShown(const QString& text);
+  // The field last marked red for a refused value, while it is.
+  QWidget* refusedField() const { return refused_; }
   // A button that acts at once (a dialog, typically).
   void addButton(const QString& label, const QString& text, std::function<void()> clicked);
 
@@ -99,6 +103,8 @@ class PropertiesPanel : public QWidget {
   QFormLayout* form_;
   std::vector<Row> rows_;
   QString shape_;  // what the rows are for: rebuilt when it changes, refreshed otherwise
+  QPointer<QWidget> refused_;
+  QString refusal_;  // the message that says why
 };
 
 // What of the loads and counterweights a form's rows depend on (rows are made anew when it

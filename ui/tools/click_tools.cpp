@@ -62,7 +62,11 @@ void DriverTool::press(const CanvasMouse& e) {
   }
   const QString what = QString::fromStdString(jointLabel(m, id));
   commitEdit(doc, tr("Driver at %1").arg(what), std::move(m));
-  say(tr("%1 drives the mechanism").arg(what));
+  // Only a design the solver takes is driven by it; else the red line above says why not.
+  if (doc->solved())
+    say(tr("%1 drives the mechanism").arg(what));
+  else
+    say(tr("%1 is the driver, but the design is not solved").arg(what), true);
 }
 
 QString OutputTool::hint() const {

@@ -60,6 +60,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   animator_ = new Animator(this);
   setCentralWidget(view_);
   strip_ = new MessageStrip(view_);
+  view_->setBottomCover(strip_);
   scene_->setDocument(doc_);
   animator_->setDocument(doc_);
   createFeatures();
@@ -187,7 +188,8 @@ void MainWindow::updateStatus() {
   const Kinematics& k = doc_->kinematics();
   crank_->setText(k.valid() ? tr("crank %1\u00b0").arg(angleText(doc_->crankDeg(), 2))
                             : tr("crank \u2013"));
-  if (k.valid()) {
+  // Of the design only when the solver holds it (not of the last design it could solve).
+  if (doc_->solved()) {
     const StructureReport r = k.structure();
     dof_->setText(r.gruebler == r.mobility
                       ? tr("DOF %1").arg(r.mobility)
@@ -198,6 +200,7 @@ void MainWindow::updateStatus() {
                          .arg(r.rank));
   } else {
     dof_->setText(tr("DOF \u2013"));
+    dof_->setToolTip(tr("Not solved: %1").arg(QString::fromStdString(doc_->solveStatus().message)));
   }
 }
 

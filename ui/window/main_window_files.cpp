@@ -91,6 +91,8 @@ void MainWindow::watchFile() {
             [this] { QTimer::singleShot(200, this, &MainWindow::fileChangedOnDisk); });
   }
   if (!watched_.isEmpty()) watcher_->removePath(watched_);
+  // What is on disk is what the document was read from or written to: no longer different.
+  strip_->setNotice(QString());
   watched_ = doc_->filePath();
   onDisk_ = watched_.isEmpty() ? QByteArray() : contentsOf(watched_);
   if (!watched_.isEmpty()) watcher_->addPath(watched_);
@@ -116,7 +118,9 @@ void MainWindow::fileChangedOnDisk() {
     if (!openFile(watched_, &why)) QMessageBox::critical(this, tr("Cannot Reload"), why);
   } else {
     onDisk_ = now;  // asked once for this change
-    showMessage(tr("%1 differs from the file on disk").arg(doc_->displayName()), true);
+    // True until the file is saved over, reloaded or another is opened (watchFile): not a
+    // message that the next selection clears.
+    strip_->setNotice(tr("%1 differs from the file on disk").arg(doc_->displayName()));
   }
 }
 

@@ -28,6 +28,7 @@ MessageStrip::MessageStrip(QWidget* canvas) : QWidget(canvas), canvas_(canvas) {
   setAttribute(Qt::WA_TransparentForMouseEvents);
   hint_ = line(this, "hint");
   problem_ = line(this, "problem");
+  notice_ = line(this, "notice");
   message_ = line(this, "message");
   canvas_->installEventFilter(this);
   colour();
@@ -42,10 +43,16 @@ void MessageStrip::setProblem(const QString& text) {
   setLine(problem_, text);
 }
 
+void MessageStrip::setNotice(const QString& text) {
+  setLine(notice_, text);
+}
+
 void MessageStrip::setMessage(const QString& text, bool warning) {
+  const bool changed = text != message();
   warning_ = warning;
   colour();
   setLine(message_, text);
+  if (changed) Q_EMIT messageChanged(text);
 }
 
 QString MessageStrip::hint() const {
@@ -54,6 +61,10 @@ QString MessageStrip::hint() const {
 
 QString MessageStrip::problem() const {
   return problem_->isHidden() ? QString() : problem_->text();
+}
+
+QString MessageStrip::notice() const {
+  return notice_->isHidden() ? QString() : notice_->text();
 }
 
 QString MessageStrip::message() const {
@@ -71,7 +82,7 @@ void MessageStrip::place() {
   // canvas's width.
   const int width = canvas_->width(), inner = std::max(1, width - 2 * kMargin);
   int y = kMargin / 2;
-  for (QLabel* l : {hint_, problem_, message_}) {
+  for (QLabel* l : {hint_, problem_, notice_, message_}) {
     if (l->isHidden()) continue;
     const int h = std::max(l->heightForWidth(inner), l->fontMetrics().height());
     l->setGeometry(kMargin, y, inner, h);
@@ -115,6 +126,7 @@ void MessageStrip::colour() {
     l->setPalette(p);
   };
   paint(problem_, red);
+  paint(notice_, red);
   paint(message_, warning_ ? red : text);
   // The hint quieter: the text colour a little towards the paper.
   const QColor base = palette().color(QPalette::Base);

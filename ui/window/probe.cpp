@@ -68,7 +68,7 @@ void windowText(MainWindow* w, QStringList& out) {
   out << QStringLiteral("playing: %1").arg(w->animator()->playing() ? 1 : 0);
   QWidget* f = QApplication::focusWidget();
   out << QStringLiteral("focus: ") + (f ? QString::fromLatin1(f->metaObject()->className()) : "");
-  for (const char* name : {"hint", "problem", "message"})
+  for (const char* name : {"hint", "problem", "notice", "message"})
     if (auto* l = w->findChild<QLabel*>(QString::fromLatin1(name)))
       out << QString::fromLatin1(name) + ": " + (l->isVisible() ? oneLine(l->text()) : QString());
   out << QStringLiteral("inspector: ") + plain(w->properties().inspector()->summaryText());

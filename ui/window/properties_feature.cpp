@@ -26,6 +26,7 @@ PropertiesFeature::PropertiesFeature(MainWindow& w, WindowLayout& layout)
   panel_->setDocument(doc_, w.tools().selection());
   MessageStrip* strip = w.messageStrip();
   connect(panel_, &PropertiesPanel::message, strip, &MessageStrip::setMessage);
+  connect(strip, &MessageStrip::messageChanged, panel_, &PropertiesPanel::messageShown);
   connect(doc_, &Document::designChanged, this, &PropertiesFeature::updateWork);
   connect(doc_, &Document::poseChanged, inspector_, &InspectorPanel::refreshMotion);
   // Work only while seen: a dock's visibility says so (a tab behind another is moved off the
