@@ -240,8 +240,13 @@ BalanceResult Balancer::run() {
   r.peakBefore = before[0].value;
   r.peakBeforeDeg = before[0].deg;
   ChebyshevLP lp(2 * n);
-  for (const Sample& s : samples_)
-    addRows(lp, s, opt_.measure == BalanceMeasure::Force ? Vec2::Zero() : s.F0);
+  // The first programme on at most 360 of the samples: the exchange adds every peak above its
+  // optimum (the samples' local maxima, refined on the exact motion) until none is left, so the
+  // answer and its certificate are the same, and the simplex works on hundreds of rows, not
+  // thousands (3,600 samples: 7,200 rows for fx, most of the time).
+  const int stride = std::max(1, opt_.steps / 360);
+  for (int i = 0; i < opt_.steps; i += stride)
+    addRows(lp, samples_[i], opt_.measure == BalanceMeasure::Force ? Vec2::Zero() : samples_[i].F0);
   if (opt_.maxKgMm)
     for (int k = 0; k < n; ++k)
       for (int j = 0; j < 16; ++j)
