@@ -127,6 +127,34 @@ TEST(ClosedForm, WanzerTriadAsACoreGroupMatchesTheGeneralSolve) {
   }
 }
 
+// A swinging slotted link (PR: pinned to a known body, a known point in its slot): the
+// lockstitch machine's feed bar on the feed shaft's lift eccentric, and an inverted slider-crank
+// (the crank's pin in a slot of a rocker pinned to the ground, either way round it turns).
+TEST(ClosedForm, SlottedLinkMatchesTheGeneralSolve) {
+  LoadResult r =
+      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/lockstitch-machine.linkage.json");
+  ASSERT_TRUE(r.mechanism) << r.error;
+  std::vector<PointId> points;
+  for (const Point& p : r.mechanism->points) points.push_back(p.id);
+  expectSameMotion(*r.mechanism, points, 720, "lockstitch machine");
+  for (Direction dir : {Direction::Ccw, Direction::Cw}) {
+    Mechanism m;
+    const BodyId g = m.addBody("ground", true), crank = m.addBody("crank"),
+                 rocker = m.addBody("rocker");
+    const JointId drive =
+        m.addPin(m.addPoint(g, "O", Vec2(0, 0)), m.addPoint(crank, "O", Vec2(0, 0)));
+    const PointId a = m.addPoint(crank, "A", Vec2(20, 0));
+    m.addPin(m.addPoint(g, "Q", Vec2(50, 10)), m.addPoint(rocker, "Q", Vec2(50, 10)));
+    // The slot through Q and A, as drawn, offset 3 mm from Q's line so that k is not 0.
+    const Vec2 d = (Vec2(20, 0) - Vec2(50, 10)).normalized(), off = 3 * perp(d);
+    m.addPinInSlot(a, m.addSlot(rocker, "slot", Vec2(50, 10) + off + 10 * d,
+                                Vec2(50, 10) + off + 70 * d));
+    m.point(a)->pos += off;  // on the slot
+    m.driver = Driver{drive, 60, dir, 0, ""};
+    expectSameMotion(m, {a}, 720, "inverted slider-crank");
+  }
+}
+
 TEST(ClosedForm, ChainOfTenFourBarsMatchesTheGeneralSolve) {
   const Mechanism m = test::fourBarChain(10);  // 21 bodies, 63 coordinates
   expectSameMotion(m, {m.outputs[0]}, 720, "chain of 10 four-bars");

@@ -6,14 +6,16 @@
 namespace linkage {
 
 const char* toString(GroupKind k) {
-  static const char* const names[] = {"crank", "geared", "RRR", "RRP", "RP", "triad", "other"};
+  static const char* const names[] = {"crank", "geared", "RRR",   "RRP",
+                                      "RP",    "PR",     "triad", "other"};
   return names[static_cast<int>(k)];
 }
 
 // The same kinds in the same order as the decomposition's.
 static_assert(static_cast<int>(GroupKind::Other) == static_cast<int>(Group::Kind::Other) &&
               static_cast<int>(GroupKind::Geared) == static_cast<int>(Group::Kind::Geared) &&
-              static_cast<int>(GroupKind::Triad) == static_cast<int>(Group::Kind::Triad));
+              static_cast<int>(GroupKind::Triad) == static_cast<int>(Group::Kind::Triad) &&
+              static_cast<int>(GroupKind::PR) == static_cast<int>(Group::Kind::PR));
 
 int AssurDecomposition::groupOf(BodyId b) const {
   if (b == ground) return -1;

@@ -275,6 +275,7 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
             k1.w + g.sign, k1.al, g.p1, p1.p, p1.v, p1.a);
     return true;
   }
+  if (g.kind == Kind::PR) return slotted(g, prev, h, p1, next, jump);
   if (g.kind == Kind::Geared) {
     double theta, w, al;
     coupledAngle(g, sys, next, theta, w, al);
@@ -295,6 +296,30 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
   if (!ok) return false;
   setBody(next, prev, jump, g.b1, turning(g.rot1, d.u1 / g.d1), d.w1, d.al1, g.p1, p1.p, p1.v,
           p1.a);
+  return true;
+}
+
+bool ClosedFormPlan::slotted(const Group& g, const Motion& prev, double h, const PointState& p1,
+                             Motion& next, bool jump) const {
+  const PointState c = pointOf(g.k2, next.of(g.k2), g.p2k);
+  const Vec2 D = c.p - p1.p, Dv = c.v - p1.v, Da = c.a - p1.a;
+  const double L2 = D.squaredNorm(), k = g.n.dot(g.u - g.p1), h2 = L2 - k * k;
+  if (!(L2 > 0) || !(h2 >= 0)) return false;
+  // The slot's normal as the motion carries it: on the other side of D than drawn, the motion
+  // crosses a singular position (|D| = |k|); the general solve takes over and explains it.
+  if (!jump) {
+    const BodyState& b = prev.body[g.b1];
+    const Vec2 Np =
+        b.predicted(g.p1 + g.n, h, prev.accelerations) - b.predicted(g.p1, h, prev.accelerations);
+    if (g.sign * cross(D, Np) < 0) return false;
+  }
+  const Vec2 N = (k * D + g.sign * std::sqrt(h2) * perp(D)) / L2;
+  const double den = perp(N).dot(D);
+  if (!(den * den > 1e-20 * L2)) return false;
+  const double w = -N.dot(Dv) / den;
+  const double al =
+      next.accelerations ? (w * w * k - 2 * w * perp(N).dot(Dv) - N.dot(Da)) / den : NAN;
+  setBody(next, prev, jump, g.b1, turning(g.rot1, N), w, al, g.p1, p1.p, p1.v, p1.a);
   return true;
 }
 

@@ -19,6 +19,10 @@
 //          the RRP equations without a block.
 //   RC     the same in an arc slot: C on the circle (centre P2 on K2, radius d2), the RRR
 //          equations with the radius as the second link (its angle is not a body's).
+//   PR     body B1 pinned to known K1 at P1 whose straight slot (point u, normal n in B1's
+//          frame) holds a point C of known K2: with D = C - P1 and k = n . (u - p1), the slot's
+//          normal N = R n keeps N . D = k, so N = (k D + sigma sqrt(|D|^2 - k^2) perp D) / |D|^2;
+//          omega = -N . D' / (perp N . D), and alpha from the second derivative.
 //   core   one body held by three scalar conditions to known bodies, its slider blocks
 //          eliminated (core_group.h): a 3 x 3 Newton, the one group here that iterates.
 // Every group's unknowns follow from known bodies, so no factorisation of the whole system is
@@ -89,7 +93,7 @@ class ClosedFormPlan {
 
  private:
   class Builder;
-  enum class Kind { Crank, Geared, RRR, RRP, RP, RC, Core };
+  enum class Kind { Crank, Geared, RRR, RRP, RP, RC, PR, Core };
   struct Group {
     Kind kind = Kind::Crank;
     int b1 = -1, b2 = -1;  // unknown bodies (b2 only for RRR and RRP)
@@ -100,7 +104,7 @@ class ClosedFormPlan {
     Vec2 c1 = Vec2::Zero(), c2 = Vec2::Zero();   // the joint C: on b1 (and on b2 for RRR, RRP)
     Vec2 p2 = Vec2::Zero(), p2k = Vec2::Zero();  // RRR: pin to k2: on b2, on k2 (RC: centre)
     Vec2 u = Vec2::Zero(), n = Vec2::Zero(),
-         d = Vec2::Zero();   // RRP, RP: slot point, unit normal and direction on k2
+         d = Vec2::Zero();   // RRP, RP: slot point, unit normal and direction on k2 (PR: on b1)
     Vec2 q2 = Vec2::Zero();  // RRP: the block's point on the slot line
     Rot rot1, rot2;          // directions of (c1 - p1) and (c2 - p2) on their bodies
     double d1 = 0, d2 = 0;   // and their lengths
@@ -126,6 +130,9 @@ class ClosedFormPlan {
                                              Dyad& out) const;
   [[gnu::always_inline]] inline bool line(const Group& g, const Vec2& Cpred, const PointState& p1,
                                           Motion& next, bool jump, Dyad& out) const;
+  // PR: b1 from its pin and the known point in its slot.
+  bool slotted(const Group& g, const Motion& prev, double h, const PointState& p1, Motion& next,
+               bool jump) const;
   // Solves again, at prev.phi, the groups from `first` on that are `first` or depend on a body
   // marked in `moved` (which gets their bodies); the others keep next's motion. The number of
   // groups solved, -1 where one cannot be.

@@ -105,6 +105,16 @@ class ClosedFormPlan::Builder {
         }
         break;
       }
+      case K::PR: {
+        g.kind = Kind::PR;
+        outerPin(g, row(d.rows[0]));
+        const Row& s = row(d.rows[1]);  // the known body's point on b1's line
+        g.k2 = s.body[0];
+        g.p2k = s.s[0];
+        g.u = s.s[1];
+        g.n = s.n;
+        break;
+      }
       case K::Triad:
         return core(d, at);
       case K::Other:
@@ -169,6 +179,13 @@ class ClosedFormPlan::Builder {
   void branches(const Motion& at) {
     for (Group& g : plan_.groups_) {
       if (g.kind == Kind::Crank || g.kind == Kind::Core || g.kind == Kind::Geared) continue;
+      if (g.kind == Kind::PR) {
+        // The side of D = C - P1 the slot's normal is on, as drawn.
+        const Vec2 D = at.of(g.k2).pos(g.p2k) - at.of(g.k1).pos(g.p1k);
+        g.rot1 = Rot{g.n.x(), g.n.y()};
+        g.sign = cross(D, at.of(g.b1).R * g.n) >= 0 ? 1 : -1;
+        continue;
+      }
       g.rot1 = direction(g.c1 - g.p1);
       g.d1 = (g.c1 - g.p1).norm();
       const BodyState& k1 = at.of(g.k1);

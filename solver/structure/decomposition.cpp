@@ -200,6 +200,10 @@ bool Search::single(Group& g, int b, const std::vector<int>& rows) const {
       g.kind = Group::Kind::RP;
       return true;
     }
+    if (other.kind == Primitive::OnLine && other.body[1] == b && knownOther(other, b) >= -1) {
+      g.kind = Group::Kind::PR;
+      return true;
+    }
   }
   return false;
 }

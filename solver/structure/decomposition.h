@@ -31,11 +31,13 @@ struct Group {
   // RRP:    {rod B1, block B2}; B1's outer pin, the pin B1-B2, the block's OnLine and Angles
   //         rows in a known body's straight slot.
   // RP:     {B1}; B1's pin, the OnLine or OnCircle row of B1's point in a known body's slot.
+  // PR:     {B1}; B1's pin, the OnLine row of a known body's point in B1's straight slot (a
+  //         swinging slotted link: a feed bar on its eccentric).
   // Triad:  {core, its blocks}; one body held by three scalar conditions to known bodies:
   //         pins (two), its points on known bodies' straight slots (one), and slider blocks
   //         pinned to it running in known bodies' straight slots (one); rows in body order.
   // Other:  any other group; rows in order.
-  enum class Kind { Crank, Geared, RRR, RRP, RP, Triad, Other };
+  enum class Kind { Crank, Geared, RRR, RRP, RP, PR, Triad, Other };
   Kind kind = Kind::Other;
   std::vector<int> bodies;
   std::vector<int> rows;

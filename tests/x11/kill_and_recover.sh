@@ -59,7 +59,12 @@ cmp -s "$file" "$work/original.json" || fail "recovering wrote over the file"
 find "$copies" -name '*.meta.json' | grep -q . && sleep 1  # the recovered copy removed
 win=$(xdotool search --onlyvisible --name "four-bar" | head -1)
 xdotool windowmove "$win" 0 0 windowsize "$win" 1280 900
+# The window active and settled where it was put before the key (on a loaded machine the
+# click could land while it was still moving, and the key go nowhere).
+xdotool windowactivate --sync "$win" 2>/dev/null || true
+wait_still settled || fail "the recovered window does not settle"
 xdotool mousemove 200 150 click 1
+wait_probe "focus: linkage::ui::CanvasView" || fail "the canvas did not take the keyboard"
 xdotool key ctrl+s
 wait_probe "modified: 0" || fail "Ctrl+S did not save the recovered work"
 [ "$(sha1sum <"$file" | cut -d' ' -f1)" = "$edited" ] || fail "the saved file is not the edited design"

@@ -15,10 +15,13 @@ namespace linkage {
 // Crank: the driven body. Geared: a body pinned to a known one whose angle a gear or belt fixes.
 // RRR: two links and three pins (a block in an arc slot counts as pinned at the arc's centre).
 // RRP: a rod and a block in a straight slot. RP: a body pinned to a known one with a point in a
-// known body's slot (straight or arc). Triad: one body held by three conditions, with its
-// slider blocks (the Wanzer triangle). Other: anything else (solved by the general Newton).
-enum class GroupKind { Crank, Geared, RRR, RRP, RP, Triad, Other };
-const char* toString(GroupKind k);  // "crank", "geared", "RRR", "RRP", "RP", "triad", "other"
+// known body's slot (straight or arc). PR: a body pinned to a known one whose straight slot
+// holds a known body's point (a swinging slotted link: the feed bar on its eccentric). Triad:
+// one body held by three conditions, with its slider blocks (the Wanzer triangle). Other:
+// anything else (solved by the general Newton).
+enum class GroupKind { Crank, Geared, RRR, RRP, RP, PR, Triad, Other };
+// "crank", "geared", "RRR", "RRP", "RP", "PR", "triad", "other"
+const char* toString(GroupKind k);
 
 struct AssurGroup {
   using Kind = GroupKind;
