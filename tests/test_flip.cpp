@@ -274,6 +274,35 @@ TEST(Flip, TheWanzerTriangleGoesToTheOtherRootOfItsCoreGroup) {
   expectRedrawnMovesAlike(k, redrawn, {0, 90, 200, 300});
 }
 
+// The lockstitch machine's feed bar (a swinging slotted link, PR): flipped, its slot's normal is
+// the other root of N . D = k: the bar is mirrored about the line from its pin to the lift
+// eccentric, its pin and the eccentric in its fork still hold, and the redrawn design moves
+// alike by the general solve.
+TEST(Flip, TheFeedBarGoesToTheOtherRootOfItsSlot) {
+  const Mechanism m = test::example("lockstitch-machine");
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  ASSERT_TRUE(k.closedForm());
+  const PointId T = *m.findPoint("feedbar.T");
+  const Vec2 before = k.position(T);
+  Mechanism redrawn;
+  const Status s = k.flipBranch(m.bodyNamed("feedbar")->id, &redrawn);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_GT((k.position(T) - before).norm(), 1.0);
+  const double L = k.size();
+  for (double deg : {0.0, 120.0, 250.0}) {
+    ASSERT_TRUE(k.moveTo(deg).ok()) << deg;
+    for (const Joint& j : m.joints)
+      if (j.type == JointType::Pin)
+        EXPECT_LT((k.position(j.a) - k.position(j.b)).norm(), 1e-10 * L) << jointLabel(m, j.id);
+    const Joint& fork = m.joints[15];
+    const Kinematics::Segment slot = k.slotEnds(fork.slot);
+    const Vec2 d = (slot.p1 - slot.p0).normalized();
+    EXPECT_LT(std::abs(cross(d, k.position(fork.a) - slot.p0)), 1e-10 * L);
+  }
+  expectRedrawnMovesAlike(k, redrawn, {0, 90, 200, 300});
+}
+
 TEST(Flip, RefusedWhereThereIsNoMirrorAndNothingChanges) {
   auto f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
   // The general solve knows no mirror assembly.
