@@ -15,7 +15,6 @@
 #include <QSaveFile>
 #include <QSplitter>
 #include <QStackedWidget>
-#include <QTimer>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -23,11 +22,13 @@
 
 #include "document/commands.h"
 #include "document/document.h"
+#include "document/file_folder.h"
 #include "export/figure_export.h"
 #include "forces/force_plots.h"
 #include "linkage/tables/timing_table.h"
 #include "linkage/timing_text.h"
 #include "plots/qcp.h"
+#include "plots/redraw_throttle.h"
 #include "tools/selection.h"
 
 namespace linkage::ui {
@@ -292,17 +293,7 @@ void CyclePanel::markStale() {
 }
 
 void CyclePanel::schedule() {
-  // As the plots: nothing while hidden; shown, once per burst of edits and at most 30 times a
-  // second (a drag that reshapes the design edits it at every mouse move).
-  if (!isVisible() || pending_) return;
-  pending_ = true;
-  constexpr int kMinMs = 33;
-  const int wait = lastFigure_.isValid() ? std::max(0, kMinMs - int(lastFigure_.elapsed())) : 0;
-  QTimer::singleShot(wait, this, [this] {
-    if (!pending_) return;
-    recompute();
-    lastFigure_.start();
-  });
+  throttle_.ask();
 }
 
 void CyclePanel::showEvent(QShowEvent* e) {
@@ -342,7 +333,7 @@ QString CyclePanel::whyNoDiagram() const {
 }
 
 void CyclePanel::recompute() {
-  pending_ = false;
+  throttle_.done();
   stale_ = false;
   diagram_ = CycleDiagram{};
   windows_.clear();
@@ -551,22 +542,10 @@ bool CyclePanel::exportTable(const QString& path, QString* error) {
   return true;
 }
 
-namespace {
-
-QString suggested(const Document* d, const QString& suffix) {
-  QString base = d ? d->displayName() : QString("cycle");
-  base.remove(QStringLiteral(".linkage.json"));
-  const QString folder =
-      d && !d->filePath().isEmpty() ? QFileInfo(d->filePath()).absolutePath() : QDir::homePath();
-  return QDir(folder).filePath(base + "-cycle" + suffix);
-}
-
-}  // namespace
-
 void CyclePanel::saveFigureAs() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export Cycle Diagram"),
-                                                    suggested(doc_, QStringLiteral(".svg")),
-                                                    tr("SVG (*.svg);;PDF (*.pdf);;PNG (*.png)"));
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Cycle Diagram"), suggestedFile(doc_, QStringLiteral("-cycle.svg")),
+      tr("SVG (*.svg);;PDF (*.pdf);;PNG (*.png)"));
   if (path.isEmpty()) return;
   QString why;
   const int rows = figure_->rowCount();
@@ -575,9 +554,9 @@ void CyclePanel::saveFigureAs() {
 }
 
 void CyclePanel::saveTableAs() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export Timing Table"),
-                                                    suggested(doc_, QStringLiteral(".csv")),
-                                                    tr("CSV tables (*.csv)"));
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Timing Table"), suggestedFile(doc_, QStringLiteral("-cycle.csv")),
+      tr("CSV tables (*.csv)"));
   if (path.isEmpty()) return;
   QString why;
   if (!exportTable(path, &why)) QMessageBox::warning(this, tr("Export Timing Table"), why);

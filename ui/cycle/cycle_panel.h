@@ -11,7 +11,6 @@
 // Work only while seen: hidden, an edit marks the diagram stale.
 #pragma once
 
-#include <QElapsedTimer>
 #include <QPointer>
 #include <QWidget>
 #include <memory>
@@ -19,6 +18,7 @@
 #include "canvas/clearance_marks.h"
 #include "cycle/cycle_entries.h"
 #include "cycle/cycle_figure.h"
+#include "plots/redraw_throttle.h"
 
 class QComboBox;
 class QCustomPlot;
@@ -70,7 +70,7 @@ class CyclePanel : public QWidget {
   // What a script driving the editor reads (window/probe.h): the sentence or the rows, each
   // entry with its result, where the kind box, the line and the diagram's angles are.
   QStringList probeLines() const;
-  bool redrawPending() const { return pending_; }
+  bool redrawPending() const { return throttle_.pending(); }
 
  public Q_SLOTS:
   void saveFigureAs();
@@ -111,9 +111,8 @@ class CyclePanel : public QWidget {
   std::vector<CycleClearanceRow> clearances_;
   std::vector<QString> clearanceWhy_;  // per clearance entry: why it is not measured, or ""
   QString why_;
-  bool stale_ = true, pending_ = false, dragging_ = false, filling_ = false;
+  bool stale_ = true, dragging_ = false, filling_ = false;
   int computations_ = 0;
-  QElapsedTimer lastFigure_;
 
   QComboBox* kind_;
   QLineEdit* line_;
@@ -122,6 +121,7 @@ class CyclePanel : public QWidget {
   QStackedWidget* stack_;
   QCustomPlot* plot_;
   std::unique_ptr<CycleFigure> figure_;
+  RedrawThrottle throttle_{this, [this] { recompute(); }};
 };
 
 }  // namespace linkage::ui

@@ -8,12 +8,12 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QStackedWidget>
-#include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 
 #include "document/document.h"
+#include "document/file_folder.h"
 #include "document/shown_numbers.h"
 #include "export/figure_export.h"
 #include "export/table_size_dialog.h"
@@ -21,6 +21,7 @@
 #include "forces/force_table_export.h"
 #include "linkage/elements.h"
 #include "plots/qcp.h"
+#include "plots/redraw_throttle.h"
 
 namespace linkage::ui {
 
@@ -137,17 +138,7 @@ void ForcesPanel::markStale() {
 }
 
 void ForcesPanel::schedule() {
-  // As the motion plots: nothing while hidden; shown, once per burst of edits and at most 30
-  // times a second (a drag that reshapes the design edits it at every mouse move).
-  if (!isVisible() || pending_) return;
-  pending_ = true;
-  constexpr int kMinMs = 33;
-  const int wait = lastFigure_.isValid() ? std::max(0, kMinMs - int(lastFigure_.elapsed())) : 0;
-  QTimer::singleShot(wait, this, [this] {
-    if (!pending_) return;
-    recompute();
-    lastFigure_.start();
-  });
+  throttle_.ask();
 }
 
 void ForcesPanel::showEvent(QShowEvent* e) {
@@ -181,7 +172,7 @@ QString ForcesPanel::whyNoForces() const {
 }
 
 void ForcesPanel::recompute() {
-  pending_ = false;
+  throttle_.done();
   stale_ = false;
   samples_ = ForceSamples{};
   why_ = whyNoForces();
@@ -320,22 +311,10 @@ bool ForcesPanel::exportTable(const QString& path, long long steps, double revs,
 
 // --- the window's actions -------------------------------------------------------------------
 
-namespace {
-
-QString suggested(const Document* d, const QString& suffix) {
-  QString base = d ? d->displayName() : QString("forces");
-  base.remove(QStringLiteral(".linkage.json"));
-  const QString folder =
-      d && !d->filePath().isEmpty() ? QFileInfo(d->filePath()).absolutePath() : QDir::homePath();
-  return QDir(folder).filePath(base + "-forces" + suffix);
-}
-
-}  // namespace
-
 void ForcesPanel::saveFigureAs() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export Force Figure"),
-                                                    suggested(doc_, QStringLiteral(".svg")),
-                                                    tr("SVG (*.svg);;PDF (*.pdf);;PNG (*.png)"));
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Force Figure"), suggestedFile(doc_, QStringLiteral("-forces.svg")),
+      tr("SVG (*.svg);;PDF (*.pdf);;PNG (*.png)"));
   if (path.isEmpty()) return;
   QString why;
   if (!exportFigure(path, QSize(1600, 700), &why))
@@ -345,9 +324,9 @@ void ForcesPanel::saveFigureAs() {
 void ForcesPanel::saveTableAs() {
   TableSize size;
   if (!askTableSize(this, tr("Export Force Table"), &size)) return;
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export Force Table"),
-                                                    suggested(doc_, QStringLiteral(".csv")),
-                                                    tr("CSV tables (*.csv)"));
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Force Table"), suggestedFile(doc_, QStringLiteral("-forces.csv")),
+      tr("CSV tables (*.csv)"));
   if (path.isEmpty()) return;
   QString why;
   if (!exportTable(path, size.stepsPerRev, size.revs, &why))

@@ -15,13 +15,13 @@
 //   exportForcesFigure->triggered: forces->saveFigureAs(); exportForcesTable: saveTableAs().
 #pragma once
 
-#include <QElapsedTimer>
 #include <QPointer>
 #include <QWidget>
 #include <memory>
 
 #include "forces/force_figure.h"
 #include "linkage/force_samples.h"
+#include "plots/redraw_throttle.h"
 
 class QComboBox;
 class QCustomPlot;
@@ -61,7 +61,7 @@ class ForcesPanel : public QWidget {
   QString cursorText() const;  // the values at the pose, as shown
   double cursorDeg() const { return figure_->cursor(); }
   int computations() const { return computations_; }
-  bool redrawPending() const { return pending_; }
+  bool redrawPending() const { return throttle_.pending(); }
 
  public Q_SLOTS:
   // Asks for a file (SVG, PDF, PNG) and writes the figure; a failure in a message box.
@@ -95,9 +95,9 @@ class ForcesPanel : public QWidget {
   double forceScale_ = 0, torqueScale_ = 0;  // the peaks: what is rounding next to them
   QString why_;                              // the sentence in place of the curves
   QString jointName_;                        // the chosen joint, by the force table's name
-  bool stale_ = true, pending_ = false, dragging_ = false;
+  bool stale_ = true, dragging_ = false;
   int dragPlot_ = -1, computations_ = 0;
-  QElapsedTimer lastFigure_;
+  RedrawThrottle throttle_{this, [this] { recompute(); }};
 
   QComboBox* joints_;
   QLabel *values_, *sentence_;

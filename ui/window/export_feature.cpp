@@ -8,6 +8,7 @@
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "document/document.h"
+#include "document/file_folder.h"
 #include "export/animation_export_dialog.h"
 #include "export/figure_export.h"
 #include "export/motion_table_export.h"
@@ -19,17 +20,6 @@
 #include "window/window_layout.h"
 
 namespace linkage::ui {
-
-namespace {
-
-// Beside the mechanism's file (MainWindow::fileFolder), named after it.
-QString suggested(const QString& folder, const Document& d, const QString& suffix) {
-  QString base = d.displayName();
-  base.remove(QStringLiteral(".linkage.json"));
-  return QDir(folder).filePath(base + suffix);
-}
-
-}  // namespace
 
 ExportFeature::ExportFeature(MainWindow& w, WindowLayout& layout) : WindowFeature(&w), w_(w) {
   table = makeAction(&w, "exportTable", tr("Motion &Table (CSV)..."), QKeySequence(),
@@ -58,9 +48,9 @@ void ExportFeature::exportMotionTable() {
   }
   TableSize size;
   if (!askTableSize(&w_, tr("Export Motion Table"), &size)) return;
-  const QString path = QFileDialog::getSaveFileName(
-      &w_, tr("Export Motion Table"), suggested(w_.fileFolder(), *doc, QStringLiteral(".csv")),
-      tr("CSV tables (*.csv)"));
+  const QString path = QFileDialog::getSaveFileName(&w_, tr("Export Motion Table"),
+                                                    suggestedFile(doc, QStringLiteral(".csv")),
+                                                    tr("CSV tables (*.csv)"));
   if (path.isEmpty()) return;
   QString why;
   if (!linkage::ui::exportMotionTable(*doc, path, size.stepsPerRev, size.revs, &why))
@@ -71,8 +61,7 @@ void ExportFeature::exportMotionTable() {
 
 void ExportFeature::exportFigure() {
   const QString path = QFileDialog::getSaveFileName(
-      &w_, tr("Export Plot Figure"),
-      suggested(w_.fileFolder(), *w_.document(), QStringLiteral(".svg")),
+      &w_, tr("Export Plot Figure"), suggestedFile(w_.document(), QStringLiteral(".svg")),
       tr("SVG (*.svg);;PDF (*.pdf);;PNG (*.png)"));
   if (path.isEmpty()) return;
   QString why;

@@ -9,6 +9,7 @@
 #include <QSettings>
 
 #include "document/document.h"
+#include "document/file_folder.h"
 #include "linkage/io/model_lookup.h"
 #include "window/icons.h"
 #include "window/main_window.h"
@@ -19,7 +20,6 @@ namespace linkage::ui {
 namespace {
 constexpr int kMaxRecent = 10;
 const char* kRecentKey = "recentFiles";
-const char* kLastFolderKey = "lastFolder";
 }  // namespace
 
 FileFeature::FileFeature(MainWindow& w, WindowLayout& layout) : WindowFeature(&w), w_(w) {
@@ -86,17 +86,13 @@ void FileFeature::applyIcons(const QPalette& p) {
 }
 
 void FileFeature::addRecent(const QString& path) {
+  setLastFolder(QFileInfo(path).absolutePath());
   QSettings s;
-  s.setValue(kLastFolderKey, QFileInfo(path).absolutePath());
   QStringList files = s.value(kRecentKey).toStringList();
   files.removeAll(path);
   files.prepend(path);
   while (files.size() > kMaxRecent) files.removeLast();
   s.setValue(kRecentKey, files);
-}
-
-QString FileFeature::lastFolder() {
-  return QSettings().value(kLastFolderKey).toString();
 }
 
 void FileFeature::fillRecentMenu() {

@@ -18,7 +18,6 @@ class FileFeature : public WindowFeature {
   // Remembers a file opened or saved: first of File > Open Recent, its folder for the dialogs.
   static void addRecent(const QString& path);
   // Where a file was last opened or saved, or empty.
-  static QString lastFolder();
 
   QAction* newDocument;
   QAction* newWindow;

@@ -12,6 +12,7 @@
 #include "document/autosave.h"
 #include "document/commands.h"
 #include "document/document.h"
+#include "document/file_folder.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "window/file_feature.h"
@@ -167,9 +168,7 @@ bool MainWindow::saveAs() {
 }
 
 QString MainWindow::fileFolder() const {
-  if (!doc_->filePath().isEmpty()) return QFileInfo(doc_->filePath()).absolutePath();
-  const QString last = FileFeature::lastFolder();
-  return !last.isEmpty() && QFileInfo(last).isDir() ? last : QDir::homePath();
+  return ui::fileFolder(doc_);
 }
 
 }  // namespace linkage::ui
