@@ -131,6 +131,52 @@ TEST(SlotTravel, ArcSlotAgainstCircleIntersections) {
   EXPECT_EQ(j.inside, j.min >= 0 && j.max <= gd.length());
 }
 
+// The same swing with the arc drawn on the far side of its circle, so that the pin passes the
+// place opposite the arc's middle, where a position along the arc jumps by the circle's length:
+// the travel is continuous all the same, the swing's length between the extended and folded
+// positions, a whole number of turns of the circle from the positions along the arc there.
+TEST(SlotTravel, ArcSlotOppositeTheSwingDoesNotJump) {
+  const double r = 10, l = 50, rho = 30;
+  const Vec2 O(0, 0), C(45, 0);
+  auto meet = [&](double d) {
+    const double x = (d * d - rho * rho + C.x() * C.x()) / (2 * C.x());
+    return Vec2(x, std::sqrt(d * d - x * x));
+  };
+  const Vec2 far = meet(l + r), near = meet(l - r);
+  Mechanism m;
+  const BodyId g = m.addBody("ground", true), crank = m.addBody("crank"), rod = m.addBody("rod");
+  const double th = 80 * M_PI / 180;
+  const Vec2 A(r * std::cos(th), r * std::sin(th));
+  const double dAC = (C - A).norm();
+  const double along = (dAC * dAC + rho * rho - l * l) / (2 * dAC);
+  const Vec2 u = (A - C) / dAC;
+  const Vec2 B = C + along * u + std::sqrt(rho * rho - along * along) * Vec2(u.y(), -u.x());
+  // The arc below the circle's centre, its middle straight down: opposite the swing above.
+  const Vec2 mid = C + rho * Vec2(0, -1);
+  const SlotId slot = m.addArcSlot(g, "arc", C + rho * Vec2(-1, -1).normalized(), mid,
+                                   C + rho * Vec2(1, -1).normalized());
+  const JointId drive = m.addPin(m.addPoint(g, "O", O), m.addPoint(crank, "O", O));
+  m.addPin(m.addPoint(crank, "A", A), m.addPoint(rod, "A", A));
+  m.addPinInSlot(m.addPoint(rod, "B", B), slot);
+  m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const SlotTravels t = slotTravel(k);
+  ASSERT_TRUE(t.status.ok()) << t.status.message;
+  ASSERT_EQ(t.joints.size(), 1u);
+  const Guide gd = *guideOf(*m.slot(slot));
+  const double turn = 2 * M_PI * rho;
+  const double sFar = gd.along(far);
+  double sNear = gd.along(near);
+  sNear += turn * std::round((sFar - sNear) / turn);  // the same side of the jump as sFar
+  const SlotTravel& j = t.joints[0];
+  EXPECT_NEAR(j.max - j.min, std::abs(sFar - sNear), 1e-9 * rho);
+  const double shift = j.min - std::min(sFar, sNear);
+  EXPECT_NEAR(shift, turn * std::round(shift / turn), 1e-9 * rho);
+  EXPECT_LT(j.max - j.min, turn / 2);  // (before: nearly a whole turn, across the jump)
+  EXPECT_FALSE(j.inside);
+}
+
 TEST(SlotTravel, NothingLoaded) {
   EXPECT_EQ(slotTravel(Kinematics()).status.code, StatusCode::BadModel);
 }

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <optional>
 
 #include "analysis/slot_frame.h"
 #include "linkage/elements.h"
@@ -56,6 +58,22 @@ SlotTravel travelOf(const Candidate& c, const CycleTrack& t, const CycleSweep& s
   return r;
 }
 
+// An arc's position (Guide::along) jumps by the circle's length where the point passes the
+// place opposite the arc's middle, far outside the slot: a point that runs round there would
+// read a travel that jumps. Kept continuous instead, each reading the one nearest the reading
+// before it: the sweep samples the turn in order, and its root search goes forward from crank 0
+// in steps far smaller than a turn of the circle.
+void unwrapAround(CycleTrack& t, double turn) {
+  auto last = std::make_shared<std::optional<double>>();
+  t.quantity = [q = t.quantity, last, turn](const Kinematics& at) {
+    CycleReading r = q(at);
+    if (*last) r.value += turn * std::round((**last - r.value) / turn);
+    *last = r.value;
+    return r;
+  };
+  t.onSampled = [last](CycleTrack& sampled) { *last = sampled.samples.front().value; };
+}
+
 }  // namespace
 
 SlotTravels slotTravel(const Kinematics& k, const SlotTravelOptions& opt) {
@@ -74,6 +92,7 @@ SlotTravels slotTravel(const Kinematics& k, const SlotTravelOptions& opt) {
     tracks[i].quantity = [c, a](const Kinematics& at) {
       return alongGuide(c.guide, relativeMotion(at, at.motion(a), c.slotBody));
     };
+    if (c.guide.arc) unwrapAround(tracks[i], 2 * M_PI * c.guide.radius);
     tracks[i].extremes = true;
     tracks[i].noise = 1e-12 * k.size() * M_PI / 180;  // as the limits' (limits.cpp)
     ptrs.push_back(&tracks[i]);
