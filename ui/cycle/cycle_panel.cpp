@@ -24,10 +24,10 @@
 #include "document/commands.h"
 #include "document/document.h"
 #include "export/figure_export.h"
-#include "forces/force_plots.h"
 #include "linkage/tables/timing_table.h"
 #include "linkage/timing_text.h"
 #include "plots/qcp.h"
+#include "plots/units.h"
 #include "tools/selection.h"
 
 namespace linkage::ui {

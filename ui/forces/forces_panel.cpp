@@ -21,6 +21,7 @@
 #include "forces/force_table_export.h"
 #include "linkage/elements.h"
 #include "plots/qcp.h"
+#include "plots/units.h"
 
 namespace linkage::ui {
 
