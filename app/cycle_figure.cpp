@@ -10,8 +10,8 @@
 #include "cli_parser.h"
 #include "cycle/cycle_figure.h"
 #include "export/figure_export.h"
-#include "forces/force_plots.h"
 #include "plots/qcp.h"
+#include "plots/units.h"
 
 namespace linkage::cli {
 

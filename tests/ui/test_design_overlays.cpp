@@ -22,10 +22,13 @@
 #include "design/design_choices.h"
 #include "design/design_overlays.h"
 #include "design/extremes_item.h"
+#include "design/extremes_notes.h"
 #include "design/transmission_item.h"
 #include "document/commands.h"
 #include "document/document.h"
 #include "window/features.h"
+#include "window/message_strip.h"
+#include "window/offscreen_window.h"
 
 namespace linkage::ui {
 namespace {
@@ -141,6 +144,33 @@ TEST(DesignOverlays, ExtremesAreDrawnOnTheCanvas) {
   QApplication::processEvents();
   EXPECT_GE(w.designChecks().overlays()->extremesItem()->poses().poses.size(), 2u);
   shot(&w, "design-extremes-across");
+}
+
+// A small window (900 x 650, the plots and centres shown, a message of three lines over the
+// canvas): the extremes' labels stay in the part of the view the message strip leaves free,
+// none on another label of the paint (the centres', the chain's, the output's).
+TEST(DesignOverlays, ExtremesLabelsStayAboveTheMessageStripApart) {
+  MainWindow w;
+  OffscreenOptions o;
+  o.model = "wanzer-inversion-2";
+  o.extremes = o.plots = o.ics = true;
+  o.size = QSize(900, 650);
+  ASSERT_EQ(setUpOffscreen(w, o), 0);
+  w.messageStrip()->setMessage(QString("a message long enough to wrap ").repeated(9), false);
+  QApplication::processEvents();
+  CanvasView* v = w.canvas();
+  ASSERT_GT(v->viewport()->height() - v->uncoveredRect().height(), 50);
+  v->viewport()->grab();
+  shot(&w, "extremes-small-window");
+  const std::vector<QRectF>& notes = w.designChecks().overlays()->extremesNotes()->labelRects();
+  ASSERT_EQ(notes.size(), 1 + w.designChecks().overlays()->extremesItem()->poses().poses.size());
+  const QRectF free = v->uncoveredRect();
+  for (const QRectF& r : notes) EXPECT_TRUE(free.contains(r)) << r.top() << " " << r.bottom();
+  const std::vector<QRectF>& all = w.scene()->context()->labels.rects();
+  EXPECT_GE(all.size(), notes.size() + 5);  // the centres' too
+  for (size_t i = 0; i < all.size(); ++i)
+    for (size_t j = i + 1; j < all.size(); ++j)
+      EXPECT_FALSE(all[i].intersects(all[j])) << i << " " << j;
 }
 
 // Each arc is transmissionAngle's value at the pose, spans exactly that angle between the lines

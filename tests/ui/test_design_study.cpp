@@ -24,6 +24,7 @@
 #include "design/study_table_model.h"
 #include "document/document.h"
 #include "linkage/tables/study_table.h"
+#include "plots/qcp.h"
 #include "window/features.h"
 
 namespace linkage::ui {
@@ -133,6 +134,9 @@ TEST(DesignStudy, TheTableIsRunStudysAndTheCsvIsTheCommandLines) {
   // The needle bar runs in its guide: its family is drawn against the crank angle.
   EXPECT_EQ(d->plots()->familyBox()->currentData().toInt(),
             static_cast<int>(StudyPlots::Family::AgainstCrank));
+  // Its axis says which way the crank turns, as every crank-angle axis does.
+  EXPECT_TRUE(d->plots()->familyPlot()->xAxis->label().endsWith("angle [deg], counter-clockwise"))
+      << d->plots()->familyPlot()->xAxis->label();
   QApplication::processEvents();
   shot(d, "design-study");
 

@@ -19,6 +19,8 @@
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "centres/centres_panel.h"
+#include "cycle/cycle_entries.h"
+#include "cycle/cycle_panel.h"
 #include "design/design_overlays.h"
 #include "design/extremes_item.h"
 #include "design/transmission_item.h"
@@ -26,6 +28,7 @@
 #include "document/document.h"
 #include "document/shown_numbers.h"
 #include "drawing.h"
+#include "forces/forces_panel.h"
 #include "linkage/edits.h"
 #include "linkage/io/model_file.h"
 #include "plots/curve_set.h"
@@ -228,6 +231,50 @@ TEST(Displays, LongNamesDoNotWidenTheWindow) {
   w.edit().undo->trigger();
   QApplication::processEvents();
   EXPECT_EQ(w.width(), width);
+}
+
+// The crank-angle label of every figure in its footer or x axis (the motion curves', the
+// forces', the cycle diagram's).
+QStringList crankLabels(QCustomPlot* plot) {
+  QStringList out;
+  for (QCPLayoutElement* e : plot->plotLayout()->elements(true))
+    if (auto* t = dynamic_cast<QCPTextElement*>(e); t && t->text().contains("angle"))
+      out << t->text();
+  for (QCPAxisRect* r : plot->axisRects())
+    if (r->axis(QCPAxis::atBottom)->label().contains("angle"))
+      out << r->axis(QCPAxis::atBottom)->label();
+  return out;
+}
+
+// The Wanzer homework's disk turns clockwise: every figure's crank-angle axis says so (the
+// plots, the forces, the cycle diagram, and so their exports), and follows the direction typed.
+TEST(Displays, EveryCrankAngleAxisSaysTheWayTheCrankTurns) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "wanzer-inversion-2-masses"));
+  QString why;
+  ASSERT_TRUE(w.cycle().panel()->addEntry(EntryKind::Window, "low=needlebar.G:y<-60", &why)) << why;
+  // Each figure brought to the front in turn: its crank-angle labels (one at least) are `want`.
+  auto allSay = [&](const QString& want) {
+    const std::pair<QDockWidget*, QCustomPlot*> figures[] = {
+        {w.plots().dock, w.plots().panel()->plotWidget()},
+        {w.forces().dock, w.forces().panel()->plotWidget()},
+        {w.cycle().dock, w.cycle().panel()->plotWidget()}};
+    for (const auto& [dock, plot] : figures) {
+      dock->show();
+      dock->raise();
+      QTest::qWait(50);
+      ASSERT_TRUE(plot->isVisible()) << dock->objectName();
+      const QStringList l = crankLabels(plot);
+      EXPECT_FALSE(l.isEmpty()) << dock->objectName();
+      for (const QString& t : l) EXPECT_EQ(t, want) << dock->objectName();
+    }
+  };
+  allSay("disk angle [deg], clockwise");
+  // Turned the other way in the Properties: counter-clockwise, everywhere.
+  Mechanism m = w.document()->design();
+  m.driver->direction = Direction::Ccw;
+  editDesign(w.document(), "direction", m);
+  allSay("disk angle [deg], counter-clockwise");
 }
 
 TEST(Displays, AFileThatCannotBeSolvedLeavesNoVelocityChainBehind) {

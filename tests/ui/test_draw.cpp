@@ -17,10 +17,12 @@
 #include "drawing.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
+#include "plots/plots_panel.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
 #include "tools/toolbox.h"
 #include "window/message_strip.h"
+#include "window/plots_feature.h"
 
 namespace linkage::ui {
 namespace {
@@ -76,6 +78,67 @@ TEST(Draw, FourBarWithMouseAndKeysIsSavedAndTurnsFully) {
   const auto [turns, table] = cli({"analyze", path, "--steps", "72"});
   EXPECT_EQ(turns, 0) << table.right(400).toStdString();
   EXPECT_EQ(table.count('\n'), 1 + 73);  // the header and every 5 degrees of a revolution
+}
+
+// A four-bar drawn from nothing (G, L x3, M, no output yet) plots a point that moves: the
+// coupler's and rocker's pin at (70, 50), not ground.A (three flat lines), nor the crank's pin
+// (a circle); the first output once there is one; and a point the user chose stays chosen.
+TEST(Draw, ANewDrawingPlotsAMovingPointUntilTheUserChooses) {
+  MainWindow w;
+  w.resize(1200, 800);
+  w.show();
+  QApplication::processEvents();
+  w.canvas()->setZoom(5);
+  w.canvas()->centerOn(30, 25);
+  test::Draw d{w};
+  d.key("G");
+  d.click(0, 0);
+  d.click(60, 0);
+  d.link({{0, 0}, {10, 20}});
+  d.link({{10, 20}, {70, 50}});
+  d.link({{70, 50}, {60, 0}});
+  d.key("M");
+  d.click(0, 0);
+  d.key("S");
+  Document* doc = w.document();
+  ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
+  ASSERT_TRUE(doc->design().outputs.empty());
+  PlotsPanel* plots = w.plots().panel();
+  auto plotted = [&] {
+    const std::optional<PointId> p = doc->design().findPoint(plots->request().target.toStdString());
+    return p ? doc->design().point(*p) : nullptr;
+  };
+  ASSERT_TRUE(plotted()) << plots->request().target;
+  EXPECT_FALSE(plots->request().body);
+  EXPECT_LT((plotted()->pos - Vec2(70, 50)).norm(), 1e-9) << plots->request().target;
+  EXPECT_FALSE(doc->design().body(plotted()->body)->ground);
+  // Its curves move: the position's extremes are apart.
+  QTest::qWait(50);
+  ASSERT_NE(plots->curves(0), nullptr);
+  const Extremes& e = plots->curves(0)->extremes(Order::Position);
+  ASSERT_TRUE(e.status.ok()) << e.status.message;
+  EXPECT_GT(e.max.value - e.min.value, 10);
+  // An output point drawn: it is plotted.
+  d.key("O");
+  d.click(10, 20);
+  d.key("S");
+  ASSERT_EQ(doc->design().outputs.size(), 1u);
+  EXPECT_EQ(plots->request().target,
+            QString::fromStdString(doc->design().pointLabel(doc->design().outputs[0])));
+  // The user's choice (the list, by the keyboard) stays through the next edits.
+  QComboBox* target = nullptr;
+  for (QComboBox* c : plots->findChildren<QComboBox*>())
+    if (c->findText(plots->request().target) >= 0) target = c;
+  ASSERT_TRUE(target);
+  target->setFocus();
+  QTest::keyClick(target, Qt::Key_Down);
+  const QString chosen = plots->request().target;
+  ASSERT_NE(chosen, QString::fromStdString(doc->design().pointLabel(doc->design().outputs[0])));
+  d.key("O");
+  d.click(70, 50);
+  d.key("S");
+  ASSERT_EQ(doc->design().outputs.size(), 2u);
+  EXPECT_EQ(plots->request().target, chosen);
 }
 
 TEST(Draw, UndoAndRedoOfEveryEditGiveBackTheIdenticalFile) {

@@ -170,7 +170,7 @@ class FigureExport : public ::testing::Test {
   Document doc;
   PlotsPanel panel;
   const QStringList labels{"Position y [mm]", "Velocity vy [mm/s]", "Acceleration ay [g]",
-                           "disk angle [deg]", "Wanzer needle bar, inversion 1"};
+                           "disk angle [deg], clockwise", "Wanzer needle bar, inversion 1"};
 };
 
 TEST_F(FigureExport, PngDecodesWithTheAskedSize) {

@@ -206,6 +206,12 @@ bool CanvasView::event(QEvent* e) {
   return QGraphicsView::event(e);
 }
 
+void CanvasView::paintEvent(QPaintEvent* e) {
+  // Labels where they can be read: above the message strip, as Fit places the drawing.
+  scene_->context()->labels.setFreeArea(uncoveredRect());
+  QGraphicsView::paintEvent(e);
+}
+
 void CanvasView::keyPressEvent(QKeyEvent* e) {
   if (e->key() == Qt::Key_Space && e->modifiers() == Qt::NoModifier) {
     if (!e->isAutoRepeat()) {

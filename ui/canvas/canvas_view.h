@@ -49,6 +49,7 @@ class CanvasView : public QGraphicsView {
 
  protected:
   bool event(QEvent* e) override;
+  void paintEvent(QPaintEvent* e) override;
   void drawBackground(QPainter* p, const QRectF& rect) override;
   void wheelEvent(QWheelEvent* e) override;
   void mousePressEvent(QMouseEvent* e) override;

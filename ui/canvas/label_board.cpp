@@ -43,8 +43,9 @@ void LabelBoard::take(const QRectF& r) {
 }
 
 std::optional<QRectF> LabelBoard::place(const std::vector<QRectF>& tries, const QRectF& bounds) {
+  const QRectF inside = freePart(bounds);
   for (const QRectF& r : tries)
-    if (bounds.contains(r) && isFree(r)) {
+    if (inside.contains(r) && isFree(r)) {
       take(r);
       return r;
     }

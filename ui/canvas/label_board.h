@@ -20,11 +20,19 @@ namespace linkage::ui {
 
 class LabelBoard {
  public:
+  // The labels of the last paint go; the free area stays (the view sets it per paint).
   void clear();
+  // The part of the view labels may use, device pixels: the view's, less what the widgets laid
+  // over it cover (the message strip: CanvasView::uncoveredRect); empty: the whole device.
+  void setFreeArea(const QRectF& r) { free_ = r; }
+  // `device` within the free area.
+  QRectF freePart(const QRectF& device) const {
+    return free_.isEmpty() ? device : device.intersected(free_);
+  }
   bool isFree(const QRectF& r) const;
   void take(const QRectF& r);
-  // The first of `tries` (each a place for the label) that is free and inside `bounds`,
-  // taken; nullopt when none is.
+  // The first of `tries` (each a place for the label) that is free and inside `bounds` (and
+  // the free area), taken; nullopt when none is.
   std::optional<QRectF> place(const std::vector<QRectF>& tries, const QRectF& bounds);
   int size() const { return static_cast<int>(rects_.size()); }
   const std::vector<QRectF>& rects() const { return rects_; }
@@ -34,6 +42,7 @@ class LabelBoard {
   template <class F>
   void forCells(const QRectF& r, F f) const;
   std::vector<QRectF> rects_;
+  QRectF free_;
   std::unordered_map<long long, std::vector<int>> cells_;
 };
 

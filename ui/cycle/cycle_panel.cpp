@@ -24,11 +24,11 @@
 #include "document/document.h"
 #include "document/file_folder.h"
 #include "export/figure_export.h"
-#include "forces/force_plots.h"
 #include "linkage/tables/timing_table.h"
 #include "linkage/timing_text.h"
 #include "plots/qcp.h"
 #include "plots/redraw_throttle.h"
+#include "plots/units.h"
 #include "tools/selection.h"
 
 namespace linkage::ui {

@@ -30,6 +30,7 @@ class DesignOverlays : public QObject {
   bool transmissionVisible() const { return transmissionOn_; }
 
   ExtremesItem* extremesItem() const { return extremes_; }
+  ExtremesNotes* extremesNotes() const { return notes_; }
   TransmissionItem* transmissionItem() const { return transmission_; }
   // How often each was computed (extreme searches; arc updates), for tests and measurements.
   int extremeSearches() const { return searches_; }

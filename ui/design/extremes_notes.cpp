@@ -91,7 +91,8 @@ void drawDimension(QPainter* p, const Dimension& d, const Vec2& lowest, const Ve
 }
 
 // Across the view: each label above (or below) its place, in rows away from the mechanism
-// where they would overlap.
+// where they would overlap; rows that would run out of the view (or under the message strip)
+// come back towards the mechanism together, so that they keep their order.
 void labelAcross(QPainter* p, OverlayLabels& labels, const std::vector<Label>& notes,
                  const Dimension& d) {
   const double h = p->fontMetrics().height() + 3;
@@ -106,8 +107,14 @@ void labelAcross(QPainter* p, OverlayLabels& labels, const std::vector<Label>& n
     };
     while (overlaps()) r.translate(0, out * h);
     taken.push_back(r);
-    labels.paint(l.at, r.center() - l.device, l.text, l.ink);
   }
+  const QRectF room = labels.bounds().adjusted(2, 2, -2, -2);
+  double over = 0;
+  for (const QRectF& r : taken)
+    over = std::max(over, out < 0 ? room.top() - r.top() : r.bottom() - room.bottom());
+  for (size_t i = 0; i < notes.size(); ++i)
+    labels.paint(notes[i].at, taken[i].center() - QPointF(0, out * over) - notes[i].device,
+                 notes[i].text, notes[i].ink);
 }
 
 // Up the view: a column beside the dimension, each label at its value's height, in the order
@@ -118,10 +125,21 @@ void labelUp(QPainter* p, OverlayLabels& labels, std::vector<Label> notes, const
   const bool right = d.n.x() >= 0;
   std::stable_sort(notes.begin(), notes.end(),
                    [](const Label& x, const Label& y) { return x.device.y() < y.device.y(); });
-  double y = -1e300;
-  for (const Label& l : notes) {
-    y = std::max(l.device.y(), y + h);
-    labels.paint(l.at, QPointF(right ? 10 : -10, y - l.device.y()), l.text, l.ink,
+  std::vector<double> ys;
+  for (const Label& l : notes)
+    ys.push_back(std::max(l.device.y(), ys.empty() ? -1e300 : ys.back() + h));
+  // A column running under the message strip moves up whole, as far as the view's top allows,
+  // so that it still reads top to bottom.
+  const QRectF& room = labels.bounds();
+  if (!ys.empty()) {
+    const double over = ys.back() + h / 2 - (room.bottom() - 2);
+    const double shift = std::min(over, ys.front() - h / 2 - (room.top() + 2));
+    if (over > 0 && shift > 0)
+      for (double& y : ys) y -= shift;
+  }
+  for (size_t i = 0; i < notes.size(); ++i) {
+    const Label& l = notes[i];
+    labels.paint(l.at, QPointF(right ? 10 : -10, ys[i] - l.device.y()), l.text, l.ink,
                  right ? Qt::AlignLeft : Qt::AlignRight);
   }
 }
@@ -130,6 +148,7 @@ void labelUp(QPainter* p, OverlayLabels& labels, std::vector<Label> notes, const
 
 void ExtremesNotes::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
   const ExtremePoses& poses = extremes_->poses();
+  rects_.clear();
   if (poses.poses.empty()) return;
   const CanvasStyle& st = style();
   const double u = px();
@@ -143,6 +162,7 @@ void ExtremesNotes::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*
     for (const ExtremePose& e : poses.poses)
       if (e.at.allFinite())
         labels.paint(toQt(e.at), QPointF(12, 0), extremeText(e, body), st.ink, Qt::AlignLeft);
+    rects_ = labels.painted();
     return;
   }
   const Dimension d = strokeDimension(poses, *lowest, *highest, u);
@@ -163,6 +183,7 @@ void ExtremesNotes::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*
     labelAcross(p, labels, notes, d);
   else
     labelUp(p, labels, std::move(notes), d);
+  rects_ = labels.painted();
 }
 
 }  // namespace linkage::ui

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "canvas/canvas_item.h"
 #include "design/overlay_labels.h"
@@ -19,9 +20,12 @@ class ExtremesNotes : public CanvasItem {
   ExtremesNotes(const CanvasContext* ctx, const ExtremesItem* extremes);
   QRectF boundingRect() const override;
   void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
+  // Where the last paint put the labels, device pixels (for tests).
+  const std::vector<QRectF>& labelRects() const { return rects_; }
 
  private:
   const ExtremesItem* extremes_;
+  std::vector<QRectF> rects_;
 };
 
 }  // namespace linkage::ui

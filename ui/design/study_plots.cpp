@@ -7,6 +7,7 @@
 
 #include "design/study_table_model.h"
 #include "plots/qcp.h"
+#include "plots/units.h"
 
 namespace linkage::ui {
 
@@ -70,6 +71,7 @@ void StudyPlots::setStudy(const Mechanism& m, const StudySpec& spec, const Study
   spec_ = spec;
   direction_ = spec.direction.value_or(defaultDirection(m, spec.point)).normalized();
   pointLabel_ = QString::fromStdString(m.pointLabel(spec.point));
+  crankLabel_ = crankAxisLabel(m);
   const QString was = measureBox_->currentText();
   {
     QSignalBlocker block(measureBox_);
@@ -181,7 +183,7 @@ void StudyPlots::plotFamily() {
     family_->xAxis->setLabel(pointLabel_ + QStringLiteral(" x [mm]"));
     family_->yAxis->setLabel(pointLabel_ + QStringLiteral(" y [mm]"));
   } else {
-    family_->xAxis->setLabel(QString::fromUtf8("crank angle [°]"));
+    family_->xAxis->setLabel(crankLabel_);
     family_->yAxis->setLabel(QStringLiteral("%1 along (%2, %3) [mm]")
                                  .arg(pointLabel_)
                                  .arg(direction_.x(), 0, 'g', 3)

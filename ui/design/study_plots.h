@@ -51,7 +51,7 @@ class StudyPlots : public QWidget {
   Study study_;
   StudySpec spec_;
   Vec2 direction_ = Vec2::UnitY();
-  QString pointLabel_;
+  QString pointLabel_, crankLabel_;
   bool familyChosen_ = false;  // the user chose the family's view: kept
   QComboBox *measureBox_, *familyBox_;
   QCustomPlot *measure_, *family_;

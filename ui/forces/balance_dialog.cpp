@@ -24,6 +24,7 @@
 #include "linkage/elements.h"
 #include "linkage/force_samples.h"
 #include "plots/qcp.h"
+#include "plots/units.h"
 
 namespace linkage::ui {
 

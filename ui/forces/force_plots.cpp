@@ -37,15 +37,6 @@ QCPGraph* addCurve(QCPAxisRect* rect, const std::vector<double>& deg,
   return g;
 }
 
-QString crankAxisLabel(const Mechanism& m) {
-  if (m.driver)
-    if (const Joint* j = m.joint(m.driver->joint))
-      if (const Point* p = m.point(j->b))
-        if (const Body* b = m.body(p->body))
-          return QString("%1 angle [deg]").arg(QString::fromStdString(b->name));
-  return "crank angle [deg]";
-}
-
 double peakOf(const std::vector<double>& v) {
   double p = 0;
   for (double x : v)

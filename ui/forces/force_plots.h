@@ -36,8 +36,6 @@ QCPGraph* addCurve(QCPAxisRect* rect, const std::vector<double>& deg,
 // +-minHalfRange: curves that are rounding of zero (1e-14 N) are drawn flat on the zero line,
 // not blown up into noise.
 void fitValues(QCPAxisRect* rect, double minHalfRange);
-// "crank angle [deg]", with the driven body's name.
-QString crankAxisLabel(const Mechanism& m);
 // The largest finite |value| (0 for none).
 double peakOf(const std::vector<double>& v);
 double peakOf(const std::vector<Vec2>& v);

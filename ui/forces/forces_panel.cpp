@@ -22,6 +22,7 @@
 #include "linkage/elements.h"
 #include "plots/qcp.h"
 #include "plots/redraw_throttle.h"
+#include "plots/units.h"
 
 namespace linkage::ui {
 

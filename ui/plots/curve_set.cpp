@@ -4,18 +4,11 @@
 #include <cmath>
 
 #include "document/shown_numbers.h"
+#include "plots/units.h"
 
 namespace linkage::ui {
 
 namespace {
-
-QString crankName(const Mechanism& m) {
-  if (m.driver)
-    if (const Joint* j = m.joint(m.driver->joint))
-      if (const Point* p = m.point(j->b))
-        if (const Body* b = m.body(p->body)) return QString::fromStdString(b->name);
-  return "crank";
-}
 
 // The scale next to which a value of this order is rounding (shown_numbers.h).
 double scaleOf(const Kinematics& k, bool body, int order) {
@@ -42,7 +35,7 @@ CurveSet::CurveSet(const Kinematics& k, const CurveRequest& r, const QString& ti
                    const Status& solve)
     : title_(title), request_(r) {
   const std::string target = r.target.toStdString();
-  crankLabel_ = QString("%1 angle [deg]").arg(crankName(k.mechanism()));
+  crankLabel_ = crankAxisLabel(k.mechanism());
   if (!solve.ok()) {
     status_ = solve;
     return;

@@ -179,7 +179,46 @@ void PlotControls::display(const CurveRequest& r, const PlotUnits& u, int compar
   quiet_ = false;
 }
 
-bool PlotControls::offerTargets(const Mechanism* m, CurveRequest& r) {
+namespace {
+
+// Whether point p is pinned to a point of body b.
+bool pinnedTo(const Mechanism& m, PointId p, BodyId b) {
+  for (const Joint& j : m.joints) {
+    if (j.type != JointType::Pin || (j.a != p && j.b != p)) continue;
+    const Point* other = m.point(j.a == p ? j.b : j.a);
+    if (other && other->body == b) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::optional<PointId> defaultPlotPoint(const Mechanism& m, const Kinematics* k) {
+  if (!m.outputs.empty()) return m.outputs.front();
+  const Body* ground = nullptr;
+  for (const Body& b : m.bodies)
+    if (b.ground) ground = &b;
+  BodyId crank;
+  if (m.driver)
+    if (const Joint* j = m.joint(m.driver->joint))
+      if (const Point* p = m.point(j->b)) crank = p->body;
+  std::vector<BodyId> undetermined;
+  if (k && k->valid()) undetermined = k->structure().freeBodies;
+  std::optional<PointId> onCrank;
+  for (const Point& p : m.points) {
+    const Body* b = m.body(p.body);
+    if (!b || b->ground || (ground && pinnedTo(m, p.id, ground->id))) continue;
+    if (std::find(undetermined.begin(), undetermined.end(), p.body) != undetermined.end()) continue;
+    if (m.driver && (p.body == crank || pinnedTo(m, p.id, crank))) {
+      if (!onCrank) onCrank = p.id;
+      continue;
+    }
+    return p.id;
+  }
+  return onCrank;
+}
+
+bool PlotControls::offerTargets(const Mechanism* m, const Kinematics* k, CurveRequest& r) {
   quiet_ = true;
   target_->clear();
   if (m) {
@@ -198,14 +237,18 @@ bool PlotControls::offerTargets(const Mechanism* m, CurveRequest& r) {
   }
   bool changed = false;
   int i = target_->findData(QStringList{r.target, r.body ? "body" : "point"});
-  const bool firstOutput = m && !m->outputs.empty() && i != 0;
-  if ((i < 0 || (autoTarget_ && firstOutput)) && target_->count() > 0) {
-    // The first output, or the first point: what the document is about.
-    i = 0;
-    const QStringList d = target_->itemData(0).toStringList();
-    r.target = d.value(0);
-    r.body = d.value(1) == "body";
-    changed = true;
+  if ((i < 0 || autoTarget_) && target_->count() > 0) {
+    const std::optional<PointId> p = defaultPlotPoint(*m, k);
+    const int want = std::max(
+        0,
+        p ? target_->findData(QStringList{QString::fromStdString(m->pointLabel(*p)), "point"}) : 0);
+    if (want != i) {
+      i = want;
+      const QStringList d = target_->itemData(i).toStringList();
+      r.target = d.value(0);
+      r.body = d.value(1) == "body";
+      changed = true;
+    }
   }
   target_->setCurrentIndex(i);
   quiet_ = false;

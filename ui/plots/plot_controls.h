@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QWidget>
+#include <optional>
 
 #include "plots/curve_set.h"
 #include "plots/units.h"
@@ -18,6 +19,13 @@ class QVBoxLayout;
 
 namespace linkage::ui {
 
+// What a plot shows before the user chooses: the first output point; else the first point
+// that moves, one on the bodies the crank drives (the coupler's, the rocker's: a curve worth
+// reading) before one on the crank or pinned to it (a circle); else none (the first point is
+// taken). A point on the ground or pinned to it, or on a body the driver does not determine
+// (`k`, when given, says which), does not move: three flat lines say nothing.
+std::optional<PointId> defaultPlotPoint(const Mechanism& m, const Kinematics* k);
+
 class PlotControls : public QWidget {
   Q_OBJECT
 
@@ -28,8 +36,10 @@ class PlotControls : public QWidget {
   void display(const CurveRequest& r, const PlotUnits& u, int compare, bool compareEnabled,
                bool harmonics);
   // The points (outputs first) and bodies of `m` as choices (none for nullptr). If r's target is
-  // not among them, r becomes the first choice (the first output); returns whether r changed.
-  bool offerTargets(const Mechanism* m, CurveRequest& r);
+  // not among them, or the user has not chosen one, r becomes the default (defaultPlotPoint);
+  // returns whether r changed. `k`: m solved (nullptr when it is not), to leave out the points
+  // the driver does not move.
+  bool offerTargets(const Mechanism* m, const Kinematics* k, CurveRequest& r);
   // The points of the other windows' mechanisms to compare with ("body.point"), after the
   // first choice, the point of the same name; `current` chosen ("" for the same name).
   void offerComparisonTargets(const QStringList& labels, const QString& current);
@@ -56,8 +66,8 @@ class PlotControls : public QWidget {
 
   CurveRequest shown_;
   bool quiet_ = false;  // while showing a state: no signals
-  // The target was chosen for the user (no output yet), not by them: it gives way to the
-  // first output point when the design gets one.
+  // The target was chosen for the user, not by them: it follows the design (the default of
+  // each edit: a moving point as one is drawn, the first output once there is one).
   bool autoTarget_ = true;
   QComboBox *target_, *component_, *velocityUnit_, *accelerationUnit_, *compare_, *against_;
   QDoubleSpinBox* direction_;

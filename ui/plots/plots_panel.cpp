@@ -102,8 +102,10 @@ void PlotsPanel::writeControls() {
 }
 
 void PlotsPanel::offerTargets() {
-  // A target the design no longer has gives way to its first output: every set is stale.
-  if (controls_->offerTargets(doc_ ? &doc_->design() : nullptr, request_))
+  // A target the design no longer has gives way to the default (the first output, else a
+  // moving point): every set is stale.
+  const Kinematics* k = doc_ && doc_->solved() ? &doc_->kinematics() : nullptr;
+  if (controls_->offerTargets(doc_ ? &doc_->design() : nullptr, k, request_))
     for (auto& s : sets_) s.second.reset();
   writeControls();
 }

@@ -29,6 +29,13 @@ struct PlotUnits {
   bool operator==(const PlotUnits&) const = default;
 };
 
+// The crank-angle axis of every figure (the plots, the forces, the balance, the cycle diagram,
+// and their exports): the driven body's name and the way it turns, "disk angle [deg],
+// clockwise", so that a student reading an angle off a figure turns the right way (the
+// Wanzer's disk turns clockwise, against the mathematical sense); "crank angle [deg]" without a
+// driver.
+QString crankAxisLabel(const Mechanism& m);
+
 // Words broken into lines of at most `width` characters (plot titles and notes).
 QString wrapped(const QString& text, int width);
 

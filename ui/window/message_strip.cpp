@@ -1,5 +1,6 @@
 #include "window/message_strip.h"
 
+#include <QAbstractScrollArea>
 #include <QEvent>
 #include <QLabel>
 #include <QPainter>
@@ -89,9 +90,13 @@ void MessageStrip::place() {
     y += h + kSpacing;
   }
   const int height = y + kMargin / 2;
+  const QRect was = isHidden() ? QRect() : geometry();
   setGeometry(0, canvas_->height() - height, width, height);
   setVisible(y > kMargin / 2);
   raise();
+  // The canvas's labels keep out from under the strip: placed again above its new top.
+  if ((isHidden() ? QRect() : geometry()) != was)
+    if (auto* view = qobject_cast<QAbstractScrollArea*>(canvas_)) view->viewport()->update();
 }
 
 bool MessageStrip::eventFilter(QObject* watched, QEvent* e) {
