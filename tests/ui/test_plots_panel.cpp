@@ -352,5 +352,42 @@ TEST_F(PlotsPanelTest, ControlsTakeTwoRowsWhenWideAndThreeWhenNarrow) {
   EXPECT_LE(units->mapTo(&panel, QPoint(units->width(), 0)).x(), panel.width());
 }
 
+// The y labels never run into each other: each is as long as its plot is high at most (a
+// rotated label longer than that reaches into the next plot's: "ay [mm/s2]vy [mm/s]"), long
+// where there is room, short where less, across the plot's corner where not even that fits.
+TEST_F(PlotsPanelTest, YLabelsFitTheirPlotsInALowDock) {
+  panel.setDocument(&doc);
+  for (int height : {900, 420, 330, 260}) {
+    panel.resize(1000, height);
+    showAndSettle();
+    const MotionFigure& f = panel.figure();
+    ASSERT_EQ(f.rows(), 3);
+    int inCorner = 0;
+    for (int r = 0; r < f.rows(); ++r) {
+      QCPAxisRect* rect = f.axisRect(r, 0);
+      QCPAxis* y = rect->axis(QCPAxis::atLeft);
+      const int length = QFontMetrics(y->labelFont()).horizontalAdvance(y->label());
+      EXPECT_LE(length, rect->outerRect().height()) << height << " px, row " << r;
+      const bool corner = f.cornerLabel(r, 0)->visible();
+      EXPECT_EQ(corner, y->label().isEmpty()) << height << " px, row " << r;
+      inCorner += corner;
+      if (corner) {
+        EXPECT_FALSE(f.cornerLabel(r, 0)->text().isEmpty());
+        // Inside its own plot.
+        const QRectF at(f.cornerLabel(r, 0)->topLeft->pixelPosition(),
+                        f.cornerLabel(r, 0)->bottomRight->pixelPosition());
+        EXPECT_TRUE(QRectF(rect->rect()).contains(at)) << height << " px, row " << r;
+      }
+    }
+    if (height == 900) {
+      EXPECT_EQ(inCorner, 0);
+      EXPECT_EQ(f.axisRect(2, 0)->axis(QCPAxis::atLeft)->label(), "Acceleration ay [mm/s²]");
+    }
+    // All or none in the corners.
+    EXPECT_TRUE(inCorner == 0 || inCorner == f.rows()) << height << " px";
+    if (height == 260) EXPECT_EQ(inCorner, 3);
+  }
+}
+
 }  // namespace
 }  // namespace linkage::ui

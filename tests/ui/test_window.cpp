@@ -11,6 +11,8 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSlider>
 #include <QTemporaryDir>
@@ -169,6 +171,28 @@ TEST(Window, ScrubberMovesTheMechanismAndFollowsIt) {
   ASSERT_TRUE(d->setCrankDeg(400).ok());
   EXPECT_EQ(bar->slider()->value(), 400);
   EXPECT_NEAR(bar->angleBox()->value(), 400, 1e-9);
+}
+
+// The first start (no saved layout) at 1400 x 950 with the plots shown: the canvas has most of
+// the height (it had 440 px: the docks' sizes were asked before the window had its own and
+// were not applied), the Properties are wide enough for the outputs, and their form is whole,
+// not cut off behind its splitter.
+TEST(Window, TheFirstLayoutLeavesTheCanvasMostOfTheRoomAndTheFormWhole) {
+  QSettings().clear();
+  MainWindow w;
+  ASSERT_TRUE(w.openNameOrPath(QStringLiteral("wanzer-inversion-2")));
+  w.resize(1400, 950);
+  w.plots().dock->show();
+  w.show();
+  QTest::qWait(100);
+  EXPECT_GE(w.canvas()->height(), 480);
+  EXPECT_GE(w.plots().dock->height(), 220);
+  EXPECT_GE(w.properties().dock->width(), 300);
+  auto* form = w.properties().dock->findChild<QScrollArea*>();
+  ASSERT_TRUE(form);
+  EXPECT_GE(form->height(), form->widget()->sizeHint().height());
+  EXPECT_FALSE(form->verticalScrollBar()->isVisible());
+  QSettings().clear();
 }
 
 TEST(Window, ViewOptionsAndLayoutAreRemembered) {

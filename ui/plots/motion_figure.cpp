@@ -37,6 +37,22 @@ void addNote(QCustomPlot* plot, QCPAxisRect* rect, const QString& text, int line
   t->setBrush(QBrush(QColor(255, 255, 255, 220)));
 }
 
+// A y label across a plot's top right corner, on a backing: the curves may pass under it.
+QCPItemText* addCornerLabel(QCustomPlot* plot, QCPAxisRect* rect, const QString& text) {
+  auto* t = new QCPItemText(plot);
+  t->setClipAxisRect(rect);
+  t->position->setType(QCPItemPosition::ptAxisRectRatio);
+  t->position->setAxisRect(rect);
+  t->position->setCoords(0.995, 0.03);
+  t->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
+  t->setText(text);
+  t->setFont(rect->axis(QCPAxis::atLeft)->labelFont());
+  t->setColor(rect->axis(QCPAxis::atLeft)->labelColor());
+  t->setBrush(QBrush(QColor(255, 255, 255, 200)));
+  t->setVisible(false);
+  return t;
+}
+
 }  // namespace
 
 QColor MotionFigure::colour(int set) {
@@ -74,6 +90,7 @@ void MotionFigure::clear() {
   tracers_.clear();
   rowOrders_.clear();
   labels_.clear();
+  corners_.clear();
   slots_.clear();
   key_.clear();
   columns_ = 0;
@@ -81,14 +98,26 @@ void MotionFigure::clear() {
 }
 
 bool MotionFigure::fitLabels() {
+  auto fits = [this](size_t i, const QString& l) {
+    const QFontMetrics fm(rects_[i]->axis(QCPAxis::atLeft)->labelFont());
+    return fm.horizontalAdvance(l) + 8 <= rects_[i]->outerRect().height();
+  };
+  const size_t n = std::min(rects_.size(), labels_.size());
+  // In the corners all or none: a figure reads one way.
+  bool corners = false;
+  for (size_t i = 0; i < n; ++i) corners = corners || !fits(i, labels_[i].second);
   bool changed = false;
-  for (size_t i = 0; i < rects_.size() && i < labels_.size(); ++i) {
+  for (size_t i = 0; i < n; ++i) {
     QCPAxis* y = rects_[i]->axis(QCPAxis::atLeft);
-    const QFontMetrics fm(y->labelFont());
-    const bool fits = fm.horizontalAdvance(labels_[i].first) + 8 <= rects_[i]->outerRect().height();
-    const QString& want = fits ? labels_[i].first : labels_[i].second;
+    const QString& want = corners                     ? QString()
+                          : fits(i, labels_[i].first) ? labels_[i].first
+                                                      : labels_[i].second;
     if (y->label() != want) {
       y->setLabel(want);
+      changed = true;
+    }
+    if (corners_[i]->visible() != corners) {
+      corners_[i]->setVisible(corners);
       changed = true;
     }
     // About one value tick per 30 pixels of height, so that low plots do not crowd them.
@@ -99,6 +128,10 @@ bool MotionFigure::fitLabels() {
     }
   }
   return changed;
+}
+
+QCPItemText* MotionFigure::cornerLabel(int row, int column) const {
+  return corners_.at(static_cast<size_t>(row * columns_ + column));
 }
 
 QCPAxisRect* MotionFigure::axisRect(int row, int column) const {
@@ -321,6 +354,7 @@ QCPAxisRect* MotionFigure::addAxisRect(const CurveRequest& req, const PlotUnits&
   labels_.emplace_back(axisLabel(req.body, req.component, req.directionDeg, o, units),
                        shortAxisLabel(req.body, req.component, req.directionDeg, o, units));
   rect->axis(QCPAxis::atLeft)->setLabel(labels_.back().first);
+  corners_.push_back(addCornerLabel(plot_, rect, labels_.back().second));
   return rect;
 }
 

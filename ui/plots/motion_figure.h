@@ -21,6 +21,7 @@ class QCPGraph;
 class QCPLegend;
 class QCPLayer;
 class QCPItemStraightLine;
+class QCPItemText;
 class QCPItemTracer;
 class QCPMarginGroup;
 
@@ -68,9 +69,13 @@ class MotionFigure {
   double xMax() const { return xMax_; }
 
   static QColor colour(int set);
-  // Long y labels where the plots are tall enough for them, short ones where not (a low dock);
+  // Long y labels where the plots are tall enough for them, short ones where not (a low dock),
+  // and where not even those fit beside the plot, the short one across its top right corner
+  // (rotated labels taller than their plots ran into each other: "ay [mm/s2]vy [mm/s]");
   // true when a label changed (the caller replots).
   bool fitLabels();
+  // The label written inside a plot when its axis has none (hidden otherwise; for tests).
+  QCPItemText* cornerLabel(int row, int column) const;
 
   // The smallest and largest value of a row's curves (none yet: empty); public for the
   // helpers of motion_figure.cpp that scale the curves.
@@ -97,6 +102,7 @@ class MotionFigure {
   void setValueRange(int row, ValueRange range);
 
   std::vector<std::pair<QString, QString>> labels_;  // long and short, per axis rect
+  std::vector<QCPItemText*> corners_;                // per axis rect
   struct GraphSlot {
     QCPGraph* curve;
     QCPGraph* marks;

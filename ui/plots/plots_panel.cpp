@@ -51,7 +51,8 @@ void PlotsPanel::buildWidgets() {
   auto* split = new QSplitter(Qt::Vertical);
   stack_ = new QStackedWidget;
   plot_ = new QCustomPlot;
-  plot_->setMinimumSize(200, 140);
+  // Tall enough for a title, three rows of plots and the crank-angle axis, none clipped.
+  plot_->setMinimumSize(200, 190);
   plot_->setCursor(Qt::CrossCursor);
   harmonicsPlot_ = new QCustomPlot;
   stack_->addWidget(plot_);

@@ -1,6 +1,8 @@
 #include "window/main_window.h"
 #include "window/mechanisms_feature.h"
 
+#include <algorithm>
+
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
@@ -10,6 +12,7 @@
 #include <QMimeData>
 #include <QScreen>
 #include <QSettings>
+#include <QShowEvent>
 #include <QStatusBar>
 
 #include "animation/animator.h"
@@ -149,13 +152,26 @@ void MainWindow::arrangeDocks() {
   setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
   tabifyDockWidget(p, c);
   p->raise();
-  resizeDocks({p}, {400}, Qt::Horizontal);
-  // The plots low enough to leave the canvas most of the height (at 1400 x 950 it had 440 px).
-  resizeDocks({pl}, {250}, Qt::Vertical);
   // A title bar dragged a little moves a panel within the window, not out of it (View >
   // Detachable Panels lets them float).
   for (QDockWidget* d : {p, c, pl, edit_->historyDock})
     d->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
+}
+
+void MainWindow::sizeDocks() {
+  // The Properties wide enough for the outputs' three columns; the plots low enough to leave
+  // the canvas most of the height (at 1400 x 950 it had 440 px: the sizes asked before the
+  // first show were not applied).
+  resizeDocks({properties_->dock}, {std::clamp(width() * 27 / 100, 300, 420)}, Qt::Horizontal);
+  resizeDocks({plots_->dock}, {std::clamp(height() * 28 / 100, 220, 360)}, Qt::Vertical);
+}
+
+void MainWindow::showEvent(QShowEvent* e) {
+  QMainWindow::showEvent(e);
+  if (!defaultLayout_) return;
+  defaultLayout_ = false;
+  // Queued: the dock layout takes sizes once it has laid the shown window out.
+  QMetaObject::invokeMethod(this, &MainWindow::sizeDocks, Qt::QueuedConnection);
 }
 
 void MainWindow::createStatusBar() {
@@ -271,7 +287,7 @@ void MainWindow::readSettings() {
                              : QRect(0, 0, 1280, 800);
     resize(std::max(1024, screen.width() * 9 / 10), std::max(720, screen.height() * 9 / 10));
   }
-  restoreState(s.value(QStringLiteral("state")).toByteArray());
+  defaultLayout_ = !restoreState(s.value(QStringLiteral("state")).toByteArray());
   s.endGroup();
   s.beginGroup(QStringLiteral("view"));
   for (WindowFeature* f : features_) f->readSettings(s);

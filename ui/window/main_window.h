@@ -108,11 +108,14 @@ class MainWindow : public QMainWindow {
   void dragEnterEvent(QDragEnterEvent* e) override;
   void dropEvent(QDropEvent* e) override;
   void changeEvent(QEvent* e) override;
+  void showEvent(QShowEvent* e) override;
 
  private:
   void createFeatures();
   // The default layout of the docks (a saved one replaces it).
   void arrangeDocks();
+  // Its sizes, once the window has its own (before, the dock layout ignores them).
+  void sizeDocks();
   void createStatusBar();
   void connectDocument();
   // Watches the document's file; what it holds now is taken as ours (opened or saved here).
@@ -160,6 +163,7 @@ class MainWindow : public QMainWindow {
   QLabel* cursor_ = nullptr;
   QLabel* crank_ = nullptr;
   QLabel* dof_ = nullptr;
+  bool defaultLayout_ = false;  // no saved layout: sizeDocks() at the first show
 };
 
 }  // namespace linkage::ui

@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QEvent>
 #include <QLayout>
 #include <QScrollArea>
 #include <QSplitter>
@@ -38,32 +39,43 @@ PropertiesFeature::PropertiesFeature(MainWindow& w, WindowLayout& layout)
 }
 
 QWidget* PropertiesFeature::makeSplit() {
-  auto* split = new QSplitter(Qt::Vertical);
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(panel_);
-  scroll->setWidgetResizable(true);
-  scroll->setFrameShape(QFrame::NoFrame);
-  split->addWidget(scroll);
-  split->addWidget(inspector_);
-  split->setStretchFactor(0, 3);
-  split->setStretchFactor(1, 2);
-  split->setCollapsible(0, false);
-  scroll->setMinimumHeight(140);
+  split_ = new QSplitter(Qt::Vertical);
+  scroll_ = new QScrollArea;
+  scroll_->setWidget(panel_);
+  scroll_->setWidgetResizable(true);
+  scroll_->setFrameShape(QFrame::NoFrame);
+  split_->addWidget(scroll_);
+  split_->addWidget(inspector_);
+  split_->setStretchFactor(0, 3);
+  split_->setStretchFactor(1, 2);
+  split_->setCollapsible(0, false);
+  scroll_->setMinimumHeight(140);
+  // Queued: the new rows' layout gives its size once the event loop has run it.
+  connect(panel_, &PropertiesPanel::rebuilt, this, &PropertiesFeature::fitForm,
+          Qt::QueuedConnection);
+  // The rows of a file opened before the window was shown wait for the dock's first height.
+  split_->installEventFilter(this);
+  return split_;
+}
+
+void PropertiesFeature::fitForm() {
   // The form whole when its rows change (up to 60 % of the dock; then it scrolls): it started
   // cut off behind the splitter, its last rows out of sight.
-  // Queued: the new rows' layout gives its size once the event loop has run it.
-  connect(
-      panel_, &PropertiesPanel::rebuilt, this,
-      [split, scroll, this] {
-        panel_->layout()->activate();
-        const int want = panel_->sizeHint().height() + 2 * scroll->frameWidth();
-        const int total = split->height();
-        if (total <= 0 || scroll->height() >= want) return;
-        const int form = std::min(want, total * 6 / 10);
-        split->setSizes({form, total - form});
-      },
-      Qt::QueuedConnection);
-  return split;
+  panel_->layout()->activate();
+  const int want = panel_->sizeHint().height() + 2 * scroll_->frameWidth();
+  // setSizes() shares the splitter's height less its handle: sizes adding up to more are
+  // scaled down, and a form short by a pixel scrolls.
+  const int total = split_->height() - split_->handleWidth();
+  formPending_ = total <= 0 || !split_->isVisible();
+  if (formPending_ || scroll_->height() >= want) return;
+  const int form = std::min(want, total * 6 / 10);
+  split_->setSizes({form, total - form});
+}
+
+bool PropertiesFeature::eventFilter(QObject* o, QEvent* e) {
+  if (o == split_ && formPending_ && (e->type() == QEvent::Resize || e->type() == QEvent::Show))
+    QMetaObject::invokeMethod(this, &PropertiesFeature::fitForm, Qt::QueuedConnection);
+  return WindowFeature::eventFilter(o, e);
 }
 
 void PropertiesFeature::updateWork() {

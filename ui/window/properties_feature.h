@@ -5,6 +5,9 @@
 
 #include "window/window_feature.h"
 
+class QScrollArea;
+class QSplitter;
+
 namespace linkage::ui {
 
 class Document;
@@ -22,14 +25,21 @@ class PropertiesFeature : public WindowFeature {
 
   QDockWidget* dock;
 
+ protected:
+  bool eventFilter(QObject* o, QEvent* e) override;
+
  private:
   QWidget* makeSplit();
+  void fitForm();
   void updateWork();
 
   Document* doc_;
   PropertiesPanel* panel_;
   InspectorPanel* inspector_;
+  QSplitter* split_ = nullptr;
+  QScrollArea* scroll_ = nullptr;
   bool seen_ = false;
+  bool formPending_ = true;  // the form's rows wait for the dock to have a height
 };
 
 }  // namespace linkage::ui
