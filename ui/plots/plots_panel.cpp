@@ -52,7 +52,7 @@ void PlotsPanel::buildWidgets() {
   stack_ = new QStackedWidget;
   plot_ = new QCustomPlot;
   // Tall enough for a title, three rows of plots and the crank-angle axis, none clipped.
-  plot_->setMinimumSize(200, 190);
+  plot_->setMinimumSize(200, 170);
   plot_->setCursor(Qt::CrossCursor);
   harmonicsPlot_ = new QCustomPlot;
   stack_->addWidget(plot_);
@@ -70,7 +70,7 @@ void PlotsPanel::buildWidgets() {
   values_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   extremes_ = new QTreeWidget;
   extremes_->setRootIsDecorated(false);
-  extremes_->setMinimumHeight(48);
+  extremes_->setMinimumHeight(40);
   extremes_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
   belowLayout->addWidget(values_);
   belowLayout->addWidget(extremes_, 1);

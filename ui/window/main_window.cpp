@@ -9,6 +9,7 @@
 #include <QDockWidget>
 #include <QGuiApplication>
 #include <QLabel>
+#include <QLayout>
 #include <QMimeData>
 #include <QScreen>
 #include <QSettings>
@@ -170,8 +171,10 @@ void MainWindow::showEvent(QShowEvent* e) {
   QMainWindow::showEvent(e);
   if (!defaultLayout_) return;
   defaultLayout_ = false;
-  // Queued: the dock layout takes sizes once it has laid the shown window out.
-  QMetaObject::invokeMethod(this, &MainWindow::sizeDocks, Qt::QueuedConnection);
+  // The dock layout takes sizes once it has laid out the window at its size: now, before the
+  // first paint (not later: a first click would land in another layout).
+  layout()->setGeometry(rect());
+  sizeDocks();
 }
 
 void MainWindow::createStatusBar() {
