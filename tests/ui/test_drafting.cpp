@@ -356,8 +356,6 @@ TEST(Drafting, AnotherWindowIsComparedAtThePointChosen) {
   EXPECT_TRUE(a.plots().panel()->curves(1)->status().ok())
       << a.plots().panel()->curves(1)->status().message;
   // Another point chosen.
-  auto* against = a.plots().panel()->findChild<QComboBox*>();
-  (void)against;
   a.plots().panel()->setComparisonTarget("triangle.G");
   QTest::qWait(80);
   EXPECT_EQ(a.plots().panel()->curves(1)->request().target, "triangle.G");

@@ -81,9 +81,11 @@ void PlotControls::addUnitsRow() {
   accelerationUnit_->addItems({QString::fromUtf8("mm/s²"), QString::fromUtf8("m/s²"), "g"});
   accelerationUnit_->setToolTip(QString::fromUtf8("g = 9806.65 mm/s² (standard gravity)"));
   compare_ = new QComboBox;
+  compare_->setObjectName("compare");  // for scripts (the probe) and tests
   compare_->addItems({"No comparison", "Overlay", "Side by side"});
   compare_->setToolTip("Curves of the other open documents");
   against_ = new QComboBox;
+  against_->setObjectName("against");
   against_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   against_->setMinimumContentsLength(10);
   against_->setToolTip(

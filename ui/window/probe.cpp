@@ -2,6 +2,7 @@
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QComboBox>
 #include <QCryptographicHash>
 #include <QFile>
 #include <QLabel>
@@ -82,6 +83,13 @@ void windowText(MainWindow* w, QStringList& out) {
   out << QStringLiteral("outputs note: ") + oneLine(w->properties().inspector()->noteText());
   out << QStringLiteral("chain: ") + oneLine(w->centres().panel()->stepsText());
   out << QStringLiteral("plots: ") + oneLine(w->plots().panel()->cursorText());
+  // The plots' named choices (the comparison and the point compared with), where shown.
+  for (QComboBox* c : w->plots().panel()->findChildren<QComboBox*>()) {
+    if (c->objectName().isEmpty() || !c->isVisible()) continue;
+    const QPoint at = c->mapToGlobal(c->rect().center());
+    out << QStringLiteral("combo %1: %2").arg(c->objectName(), c->currentText());
+    out << QStringLiteral("at combo %1: %2 %3").arg(c->objectName()).arg(at.x()).arg(at.y());
+  }
   const DynamicsMarks& forces = w->scene()->dynamicsItem()->marks();
   out << QStringLiteral("forces: ") + forces.legend;
   out << QStringLiteral("dynamics: masses %1 loads %2 reactions %3")
