@@ -4,7 +4,6 @@
 #include <QLabel>
 #include <QSplitter>
 #include <QStackedWidget>
-#include <QTimer>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -117,7 +116,7 @@ void PlotsPanel::setRequest(const CurveRequest& r) {
   writeControls();
   for (auto& s : sets_) s.second.reset();
   figureStale_ = true;
-  schedule();
+  throttle_.ask();
 }
 
 void PlotsPanel::setUnits(const PlotUnits& u) {
@@ -168,12 +167,12 @@ void PlotsPanel::setComparisonDocuments(const QList<Document*>& docs) {
       offerComparisonTargets();
       markStale(d);
     });
-    connect(d, &QObject::destroyed, othersContext_, [this] { schedule(); });
+    connect(d, &QObject::destroyed, othersContext_, [this] { throttle_.ask(); });
   }
   writeControls();
   offerComparisonTargets();
   figureStale_ = true;
-  schedule();
+  throttle_.ask();
 }
 
 void PlotsPanel::setComparisonTarget(const QString& target) {
@@ -183,7 +182,7 @@ void PlotsPanel::setComparisonTarget(const QString& target) {
     if (s.first != doc_) s.second.reset();
   offerComparisonTargets();
   figureStale_ = true;
-  schedule();
+  throttle_.ask();
 }
 
 void PlotsPanel::offerComparisonTargets() {
@@ -218,7 +217,7 @@ void PlotsPanel::setCompare(Compare c) {
   compare_ = c;
   writeControls();
   figureStale_ = true;
-  schedule();
+  throttle_.ask();
 }
 
 std::vector<Document*> PlotsPanel::shownDocuments() const {
@@ -249,23 +248,7 @@ void PlotsPanel::markStale(Document* d) {
   // (MotionFigure::refresh), which a drag that reshapes the design relies on.
   for (auto& s : sets_)
     if (s.first == d) s.second.reset();
-  schedule();
-}
-
-void PlotsPanel::schedule() {
-  // Hidden: nothing now; showEvent does what is stale. Shown: once per burst of changes (an
-  // edit dragged with the mouse changes the design many times between two paints), and at
-  // most 30 times a second: a figure costs a few milliseconds, which a drag's every frame
-  // cannot spare, and the eye does not follow curves faster.
-  if (!isVisible() || pending_) return;
-  pending_ = true;
-  constexpr int kMinMs = 33;
-  const int wait = lastFigure_.isValid() ? std::max(0, kMinMs - int(lastFigure_.elapsed())) : 0;
-  QTimer::singleShot(wait, this, [this] {
-    if (!pending_) return;
-    recompute();
-    lastFigure_.start();
-  });
+  throttle_.ask();
 }
 
 void PlotsPanel::showEvent(QShowEvent* e) {
@@ -283,7 +266,7 @@ void PlotsPanel::ensureComputed() {
 }
 
 void PlotsPanel::recompute() {
-  pending_ = false;
+  throttle_.done();
   std::vector<std::pair<QPointer<Document>, std::unique_ptr<CurveSet>>> next;
   for (Document* d : shownDocuments()) {
     std::unique_ptr<CurveSet> set;

@@ -15,7 +15,6 @@
 //   connect(plots, &PlotsPanel::crankAngleRequested, [doc](double d) { doc->setCrankDeg(d); });
 #pragma once
 
-#include <QElapsedTimer>
 #include <QList>
 #include <QPointer>
 #include <QWidget>
@@ -23,6 +22,7 @@
 #include <vector>
 
 #include "plots/curve_set.h"
+#include "plots/redraw_throttle.h"
 #include "plots/units.h"
 
 class QCustomPlot;
@@ -80,8 +80,8 @@ class PlotsPanel : public QWidget {
   QString cursorText() const;    // the values at the cursor, as shown
   QString extremesText() const;  // the extremes list, one line per row
   QString statusText() const;    // the line over the plots: why there is nothing to plot
-  int computations() const { return computations_; }  // curve sets sampled so far
-  bool redrawPending() const { return pending_; }     // a throttled redraw is yet to run
+  int computations() const { return computations_; }          // curve sets sampled so far
+  bool redrawPending() const { return throttle_.pending(); }  // a throttled redraw is yet to run
   const CurveSet* curves(int i) const;  // 0: the document's; then the comparisons shown
 
  Q_SIGNALS:
@@ -97,7 +97,6 @@ class PlotsPanel : public QWidget {
   void offerTargets();
   void writeControls();
   void markStale(Document* d);
-  void schedule();
   void recompute();
   void rebuildFigure();
   void updateCursor();
@@ -120,12 +119,12 @@ class PlotsPanel : public QWidget {
 
   // One curve set per shown document (same order as shownDocuments()), null when stale.
   std::vector<std::pair<QPointer<Document>, std::unique_ptr<CurveSet>>> sets_;
-  bool figureStale_ = true, pending_ = false, dragging_ = false;
+  bool figureStale_ = true, dragging_ = false;
   int dragRect_ = -1;  // the plot a drag started on
   // Receivers of the documents' signals: replaced (and so disconnected) with the documents.
   QObject *docContext_ = nullptr, *othersContext_ = nullptr;
   int computations_ = 0;
-  QElapsedTimer lastFigure_;  // when the curves were last recomputed
+  RedrawThrottle throttle_{this, [this] { recompute(); }};
 
   PlotControls* controls_;
   QStackedWidget* stack_;
