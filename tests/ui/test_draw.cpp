@@ -35,10 +35,8 @@ std::pair<int, QString> cli(const QStringList& args) {
   return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput() + p.readAllStandardError())};
 }
 
-// Ground pivots at (0, 0) and (60, 0), crank to (10, 20), coupler to (70, 50), rocker down to
-// the second pivot, the crank's pivot the driver: a crank-rocker.
-void drawFourBar(MainWindow& w) {
-  test::Draw d{w};
+// The four-bar's pivots and links, its crank's pivot the driver (no output point chosen).
+void drawFourBarLinks(test::Draw& d) {
   d.key("G");
   d.click(0, 0);
   d.click(60, 0);
@@ -47,6 +45,13 @@ void drawFourBar(MainWindow& w) {
   d.link({{70, 50}, {60, 0}});
   d.key("M");
   d.click(0, 0);
+}
+
+// Ground pivots at (0, 0) and (60, 0), crank to (10, 20), coupler to (70, 50), rocker down to
+// the second pivot, the crank's pivot the driver: a crank-rocker.
+void drawFourBar(MainWindow& w) {
+  test::Draw d{w};
+  drawFourBarLinks(d);
   d.key("O");
   d.click(70, 50);
   d.key("S");
@@ -91,14 +96,7 @@ TEST(Draw, ANewDrawingPlotsAMovingPointUntilTheUserChooses) {
   w.canvas()->setZoom(5);
   w.canvas()->centerOn(30, 25);
   test::Draw d{w};
-  d.key("G");
-  d.click(0, 0);
-  d.click(60, 0);
-  d.link({{0, 0}, {10, 20}});
-  d.link({{10, 20}, {70, 50}});
-  d.link({{70, 50}, {60, 0}});
-  d.key("M");
-  d.click(0, 0);
+  drawFourBarLinks(d);
   d.key("S");
   Document* doc = w.document();
   ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
