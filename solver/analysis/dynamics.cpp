@@ -39,7 +39,18 @@ struct ForceSolver::Impl {
   std::vector<std::optional<BodyMass>> mass;  // by system body index
   std::vector<LoadAt> loads;                  // on moving bodies
   std::vector<PointLocation> jointA;          // by joint: where its point a is
-  Vec2 gravity = Vec2::Zero();                // m/s^2
+  struct Reacting {
+    const Row* row;
+    double sign;  // +1 where the joint's point a is on body[0], -1 where on body[1]
+  };
+  std::vector<Reacting> reacting;  // the joints' rows that are forces at a point
+  struct Coupling {
+    int row, joint;
+    double perUnit;  // the couple on the body of the joint's point a per unit multiplier, N mm
+  };
+  std::vector<Coupling> coupling;  // the joints' Angles rows on the body of their point a
+  std::vector<int> restated;       // the joints whose kinds restate their reactions
+  Vec2 gravity = Vec2::Zero();     // m/s^2
   bool grouped = false;
   std::vector<char> rowDetermined;  // by scalar row
   std::vector<BodyView> views;
@@ -79,7 +90,24 @@ void ForceSolver::Impl::bodies(const KinematicsState& s) {
   }
   gravity = s.mech.gravity.value_or(Vec2::Zero());
   jointA.clear();
-  for (const Joint& j : s.mech.joints) jointA.push_back(*sys.point(j.a));
+  restated.clear();
+  for (const Joint& j : s.mech.joints) {
+    jointA.push_back(*sys.point(j.a));
+    if (kindOf(j).react) restated.push_back(static_cast<int>(jointA.size()) - 1);
+  }
+  reacting.clear();
+  coupling.clear();
+  for (const Row& row : sys.cons) {
+    if (row.joint < 0 || row.isDriver() || row.kind == Primitive::Hold) continue;
+    const int a = jointA[row.joint].body;
+    if (row.kind != Primitive::Angles) {
+      reacting.push_back({&row, row.body[0] == a ? 1.0 : -1.0});
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+      if (row.body[c] == a && row.c[c] != 0)
+        coupling.push_back({row.row, row.joint, -row.c[c] * sys.size});
+  }
 }
 
 // Q: per body, at its frame origin, the force (N) and the moment (N mm) of its weight, its
@@ -249,43 +277,36 @@ Status ForceSolver::prepare(const Kinematics& k) {
 // row's point (Coincident, OnLine, OnCircle: on body[0], its opposite on body[1]) and couples
 // (Angles: -c_k L lambda on body k); then as its kind states it.
 void ForceSolver::Impl::reactions(const KinematicsState& s, const Kinematics& k, Forces& out) {
-  const System& sys = s.sys;
   const Mechanism& m = s.mech;
-  out.joints.assign(m.joints.size(), JointReaction{});
-  std::vector<double>& couple = couples;  // N mm
-  couple.assign(m.joints.size(), 0.0);
+  out.joints.resize(m.joints.size());
+  couples.assign(m.joints.size(), 0.0);  // N mm
   for (size_t j = 0; j < m.joints.size(); ++j) {
     const BodyView& v = views[jointA[j].body + 1];
-    out.joints[j].at = v.r + v.R * jointA[j].s;
+    out.joints[j] = {Vec2::Zero(), v.r + v.R * jointA[j].s, 0};
   }
-  for (const Row& row : sys.cons) {
-    if (row.joint < 0 || row.isDriver() || row.kind == Primitive::Hold) continue;
+  for (const Reacting& x : reacting) {
+    const Row& row = *x.row;
     JointReaction& r = out.joints[row.joint];
-    const int a = jointA[row.joint].body;
     const double* lam = lambda.data() + row.row;
-    if (row.kind == Primitive::Angles) {
-      for (int c = 0; c < 3; ++c)
-        if (row.body[c] == a && row.c[c] != 0) couple[row.joint] -= row.c[c] * sys.size * lam[0];
-      continue;
-    }
     const BodyView &b0 = views[row.body[0] + 1], &b1 = views[row.body[1] + 1];
     const Vec2 P = b0.r + b0.R * row.s[0];
-    Vec2 F0;
+    Vec2 F;
     if (row.kind == Primitive::Coincident)
-      F0 = Vec2(-lam[0], -lam[1]);
+      F = Vec2(lam[0], lam[1]);
     else if (row.kind == Primitive::OnLine)
-      F0 = -lam[0] * (b1.R * row.n);
+      F = lam[0] * (b1.R * row.n);
     else
-      F0 = -lam[0] / row.c[0] * (P - b1.r - b1.R * row.s[1]);
-    const Vec2 F = row.body[0] == a ? F0 : Vec2(-F0);
+      F = lam[0] / row.c[0] * (P - b1.r - b1.R * row.s[1]);
+    F *= -x.sign;
     r.force += F;
-    couple[row.joint] += cross(P - r.at, F);
+    couples[row.joint] += cross(P - r.at, F);
   }
-  for (size_t j = 0; j < m.joints.size(); ++j) out.joints[j].coupleNm = couple[j] / 1000;
-  const KinematicsPose pose(k);
-  for (size_t j = 0; j < m.joints.size(); ++j)
-    if (const auto react = kindOf(m.joints[j]).react)
-      react(m, static_cast<int>(j), pose, out.joints);
+  for (const Coupling& c : coupling) couples[c.joint] += c.perUnit * lambda[c.row];
+  for (size_t j = 0; j < m.joints.size(); ++j) out.joints[j].coupleNm = couples[j] / 1000;
+  if (!restated.empty()) {
+    const KinematicsPose pose(k);
+    for (int j : restated) kindOf(m.joints[j]).react(m, j, pose, out.joints);
+  }
   for (JointId id : out.undetermined) {
     JointReaction& r = out.joints[m.jointIndex(id)];
     r.force = Vec2::Constant(kNaN);

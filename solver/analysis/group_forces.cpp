@@ -13,7 +13,8 @@ namespace {
 // on the stack, no allocation per pose.
 using GroupMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
 using GroupVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 12, 1>;
-using Row3 = Eigen::Matrix<double, 1, 3>;
+using Row3 = Eigen::Matrix<double, 1, 3>;                   // (GroupForces::Row3)
+using Pair = Eigen::Matrix<double, 2, 3, Eigen::RowMajor>;  // two scalar rows on one body
 
 // Solves A x = b in place (b becomes x) by Gaussian elimination with partial pivoting: at a
 // group's 3 to 12 unknowns a plain loop beats a general LU's dispatch (a fixed 6 x 6
@@ -52,8 +53,7 @@ Row3 cross3(const Row3& a, const Row3& b) {
 
 // A^T x = r for a 2 x 3 block A of full rank whose null vector is n (r in A^T's range): the two
 // equations whose minor is the largest, |n_i| for the one left out. False when n is zero.
-bool solveTwoOfThree(const Eigen::Matrix<double, 2, 3>& A, const Row3& n, const Row3& r,
-                     double* x) {
+bool solveTwoOfThree(const Pair& A, const Row3& n, const Row3& r, double* x) {
   int i = 0;
   for (int k = 1; k < 3; ++k)
     if (std::abs(n[k]) > std::abs(n[i])) i = k;
@@ -78,58 +78,75 @@ int GroupForces::dyadPart(const PlannedRow& r) {
 void GroupForces::prepare(const System& sys, const Decomposition& d) {
   rows_.clear();
   plans_.clear();
+  uses_.clear();
+  spills_.clear();
+  lambdaRow_.clear();
   for (auto g = d.groups.rbegin(); g != d.groups.rend(); ++g) {
     Plan p;
     p.first = static_cast<int>(rows_.size());
     p.count = static_cast<int>(g->rows.size());
     p.nBodies = static_cast<int>(g->bodies.size());
     for (int i = 0; i < std::min(p.nBodies, 4); ++i) p.bodies[i] = g->bodies[i];
-    int scalars[3] = {0, 0, 0};
     for (int r : g->rows) {
       PlannedRow pr;
       pr.row = r;
       for (int k = 0; k < 3; ++k)
         for (int i = 0; i < std::min(p.nBodies, 4); ++i)
           if (sys.cons[r].body[k] == g->bodies[i]) pr.local[k] = i;
-      scalars[dyadPart(pr)] += sys.cons[r].rows();
       rows_.push_back(pr);
     }
-    if (p.nBodies == 2 && scalars[0] == 2 && scalars[1] == 2 && scalars[2] == 2) {
-      const auto first = rows_.begin() + p.first;
-      std::stable_sort(first, rows_.end(), [](const PlannedRow& a, const PlannedRow& b) {
-        return dyadPart(a) < dyadPart(b);
-      });
-      p.dyadShared = static_cast<int>(
-          std::count_if(first, rows_.end(), [](const PlannedRow& r) { return dyadPart(r) == 0; }));
-      p.dyadOwn2 =
-          p.count - static_cast<int>(std::count_if(
-                        first, rows_.end(), [](const PlannedRow& r) { return dyadPart(r) == 2; }));
-    }
+    plan(sys, p);
     plans_.push_back(p);
   }
-  blocks_.resize(rows_.size());
+  forces_.resize(rows_.size());
   S_.setZero(3 * sys.nBodies);
 }
 
-void GroupForces::jacobians(const System& sys, const std::vector<BodyView>& views, const Plan& p) {
-  for (int i = p.first; i < p.first + p.count; ++i)
-    rowJacobian(sys, views, sys.cons[rows_[i].row], blocks_[i]);
-}
-
-// x: the group's rows' multipliers in plan order. Into lambda; and what each row puts on the
-// bodies outside the group (groups solved later) into S.
-void GroupForces::distribute(const System& sys, const Plan& p, const double* x) {
-  Eigen::VectorXd& lambda = *lambda_;
-  int o = 0;
+// Orders a dyad's or a held body's rows as their solves read them, and lists where each scalar
+// row acts.
+void GroupForces::plan(const System& sys, Plan& p) {
+  const auto first = rows_.begin() + p.first, last = first + p.count;
+  int scalars[3] = {0, 0, 0};
+  for (auto r = first; r != last; ++r) scalars[dyadPart(*r)] += sys.cons[r->row].rows();
+  p.dyad = p.nBodies == 2 && scalars[0] == 2 && scalars[1] == 2 && scalars[2] == 2;
+  if (p.dyad)
+    std::stable_sort(first, last, [](const PlannedRow& a, const PlannedRow& b) {
+      return dyadPart(a) < dyadPart(b);
+    });
+  if (p.nBodies == 1 && p.count == 2) {
+    const int one = sys.cons[first->row].rows(), two = sys.cons[(first + 1)->row].rows();
+    if (one == 1 && two == 2) std::iter_swap(first, first + 1);
+    p.heldBody = one + two == 3;
+  }
+  p.firstScalar = static_cast<int>(lambdaRow_.size());
+  p.firstUse = static_cast<int>(uses_.size());
+  p.firstSpill = static_cast<int>(spills_.size());
   for (int i = p.first; i < p.first + p.count; ++i) {
     const Row& row = sys.cons[rows_[i].row];
-    const Block& B = blocks_[i];
-    for (int e = 0; e < row.rows(); ++e, ++o) {
-      lambda[row.row + e] = x[o];
-      for (int k = 0; k < 3; ++k)
-        if (row.body[k] >= 0 && rows_[i].local[k] < 0)
-          S_.segment<3>(3 * row.body[k]) += B.block<1, 3>(e, 3 * k).transpose() * x[o];
+    for (int e = 0; e < row.rows(); ++e, ++p.scalars) {
+      lambdaRow_.push_back(row.row + e);
+      for (int k = 0; k < 3; ++k) {
+        if (row.body[k] < 0) continue;
+        const int local = rows_[i].local[k];
+        (local >= 0 ? uses_ : spills_).push_back({i, e, k, row.body[k], local, p.scalars});
+      }
     }
+  }
+  p.uses = static_cast<int>(uses_.size()) - p.firstUse;
+  p.spills = static_cast<int>(spills_.size()) - p.firstSpill;
+}
+
+GroupForces::Row3 GroupForces::remaining(int body) const {
+  return (Q_->segment<3>(3 * body) - S_.segment<3>(3 * body)).transpose();
+}
+
+// x: the group's scalar rows' multipliers in plan order. Into lambda; and what each row puts on
+// the bodies outside the group (groups solved later) into S.
+void GroupForces::distribute(const Plan& p, const double* x) {
+  for (int o = 0; o < p.scalars; ++o) (*lambda_)[lambdaRow_[p.firstScalar + o]] = x[o];
+  for (int i = p.firstSpill; i < p.firstSpill + p.spills; ++i) {
+    const Use& u = spills_[i];
+    S_.segment<3>(3 * u.body) += on(u).transpose() * x[u.o];
   }
 }
 
@@ -137,70 +154,58 @@ bool GroupForces::solve(const System& sys, const std::vector<BodyView>& views,
                         const Eigen::VectorXd& Q, Eigen::VectorXd& lambda) {
   Q_ = &Q;
   lambda_ = &lambda;
+  views_ = &views;
   S_.setZero(3 * sys.nBodies);
   lambda.setConstant(sys.nRows, NAN);
+  for (size_t i = 0; i < rows_.size(); ++i)
+    rowForce(sys, views, sys.cons[rows_[i].row], forces_[i]);
   for (const Plan& p : plans_) {
-    jacobians(sys, views, p);
-    const bool ok = p.dyadShared >= 0 && solveDyad(sys, p) ? true
-                    : p.nBodies == 1                       ? solveGroup<3>(sys, p)
-                    : p.nBodies == 2                       ? solveGroup<6>(sys, p)
-                                     : p.nBodies <= 4 && solveGroup<Eigen::Dynamic>(sys, p);
+    const bool ok = p.dyad && solveDyad(p)           ? true
+                    : p.heldBody && solveHeldBody(p) ? true
+                    : p.nBodies == 1                 ? solveGroup<3>(p)
+                    : p.nBodies == 2                 ? solveGroup<6>(p)
+                                     : p.nBodies <= 4 && solveGroup<Eigen::Dynamic>(p);
     if (!ok) return false;
   }
   return true;
 }
 
-// The group's rows' blocks transposed into A^T (its bodies' coordinates by its scalar rows);
-// A^T x = Q - S over its bodies.
+// A^T x = Q - S over the group's bodies, A^T's columns its scalar rows.
 template <int N>
-bool GroupForces::solveGroup(const System& sys, const Plan& p) {
+bool GroupForces::solveGroup(const Plan& p) {
   using Mat = std::conditional_t<N == Eigen::Dynamic, GroupMatrix, Eigen::Matrix<double, N, N>>;
   using Vec = std::conditional_t<N == Eigen::Dynamic, GroupVector, Eigen::Matrix<double, N, 1>>;
   const int m = 3 * p.nBodies;
+  if (p.scalars != m) return false;
   Mat At = Mat::Zero(m, m);
-  int o = 0;
-  for (int i = p.first; i < p.first + p.count; ++i) {
-    const Row& row = sys.cons[rows_[i].row];
-    if (o + row.rows() > m) return false;
-    for (int k = 0; k < 3; ++k)
-      if (const int b = rows_[i].local[k]; b >= 0)
-        for (int e = 0; e < row.rows(); ++e)
-          for (int c = 0; c < 3; ++c) At(3 * b + c, o + e) = blocks_[i](e, 3 * k + c);
-    o += row.rows();
+  for (int i = p.firstUse; i < p.firstUse + p.uses; ++i) {
+    const Use& u = uses_[i];
+    At.template block<3, 1>(3 * u.local, u.o) = on(u).transpose();
   }
-  if (o != m) return false;
   Vec x(m);
   for (int i = 0; i < p.nBodies; ++i)
-    x.template segment<3>(3 * i) = Q_->segment<3>(3 * p.bodies[i]) - S_.segment<3>(3 * p.bodies[i]);
+    x.template segment<3>(3 * i) = remaining(p.bodies[i]).transpose();
   if (!eliminate<N>(At, x, m) || !x.allFinite()) return false;
-  distribute(sys, p, x.data());
+  distribute(p, x.data());
   return true;
 }
 
-// See group_forces.h: moments about each body's outer joint, then the outer joints.
-bool GroupForces::solveDyad(const System& sys, const Plan& p) {
-  // The scalar rows' blocks at body 0 and 1 of the dyad: own0 (2 x 3), shared at each, own1.
-  Eigen::Matrix<double, 2, 3> A[2], C[2];
-  int counts[3] = {0, 0, 0};
-  for (int i = 0; i < p.count; ++i) {
-    const int part = i < p.dyadShared ? 0 : i < p.dyadOwn2 ? 1 : 2;
-    const PlannedRow& pr = rows_[p.first + i];
-    const Block& B = blocks_[p.first + i];
-    for (int e = 0; e < sys.cons[pr.row].rows(); ++e, ++counts[part])
-      for (int k = 0; k < 3; ++k) {
-        if (pr.local[k] < 0) continue;
-        const Row3 b = B.block<1, 3>(e, 3 * k);
-        if (part == 1)
-          C[pr.local[k]].row(counts[1]) = b;
-        else
-          A[part / 2].row(counts[part]) = b;
-      }
+// See group_forces.h: moments about each body's outer joint, then the outer joints. Uses in
+// scalar order: own0 (2, on body 0), shared (2, each on both bodies), own1 (2, on body 1).
+bool GroupForces::solveDyad(const Plan& p) {
+  Pair A[2], C[2];
+  for (int i = p.firstUse; i < p.firstUse + p.uses; ++i) {
+    const Use& u = uses_[i];
+    if (u.o >= 2 && u.o < 4)
+      C[u.local].row(u.o - 2) = on(u);
+    else
+      A[u.local].row(u.o & 1) = on(u);
   }
   Row3 n[2], r[2];
   double M[2][2], rhs[2];
   for (int i = 0; i < 2; ++i) {
     n[i] = cross3(A[i].row(0), A[i].row(1));
-    r[i] = (Q_->segment<3>(3 * p.bodies[i]) - S_.segment<3>(3 * p.bodies[i])).transpose();
+    r[i] = remaining(p.bodies[i]);
     const Eigen::Vector2d Cn = C[i] * n[i].transpose();
     M[i][0] = Cn[0];
     M[i][1] = Cn[1];
@@ -208,7 +213,7 @@ bool GroupForces::solveDyad(const System& sys, const Plan& p) {
   }
   const double det = M[0][0] * M[1][1] - M[0][1] * M[1][0];
   if (det == 0) return false;
-  double x[6];  // own0, shared, own1: the plan's row order
+  double x[6];  // own0, shared, own1: the plan's scalar order
   x[2] = (rhs[0] * M[1][1] - M[0][1] * rhs[1]) / det;
   x[3] = (M[0][0] * rhs[1] - rhs[0] * M[1][0]) / det;
   const Eigen::Vector2d mid(x[2], x[3]);
@@ -217,7 +222,27 @@ bool GroupForces::solveDyad(const System& sys, const Plan& p) {
       return false;
   for (double v : x)
     if (!std::isfinite(v)) return false;
-  distribute(sys, p, x);
+  distribute(p, x);
+  return true;
+}
+
+// See group_forces.h: the body's moments about its two-row joint give the other row's
+// multiplier, then two of its three equations the joint's. Uses in scalar order.
+bool GroupForces::solveHeldBody(const Plan& p) {
+  Pair A;
+  A.row(0) = on(uses_[p.firstUse]);
+  A.row(1) = on(uses_[p.firstUse + 1]);
+  const Row3 a = on(uses_[p.firstUse + 2]);
+  const Row3 n = cross3(A.row(0), A.row(1));
+  const Row3 r = remaining(p.bodies[0]);
+  const double an = a.dot(n);
+  if (an == 0) return false;
+  double x[3];
+  x[2] = n.dot(r) / an;
+  if (!solveTwoOfThree(A, n, r - x[2] * a, x)) return false;
+  for (double v : x)
+    if (!std::isfinite(v)) return false;
+  distribute(p, x);
   return true;
 }
 

@@ -13,7 +13,12 @@
 //
 // then each outer joint's from the two of its body's three equations whose 2 x 2 minor is the
 // largest (the largest component of n: the best conditioned pair). Two 2 x 2 solves instead of a
-// 6 x 6 elimination. Any other group: Gaussian elimination with partial pivoting on its few rows.
+// 6 x 6 elimination. A single body held by a two-row joint and one more row (a crank and its
+// driver) likewise: its moments about that joint give the other row's, then the joint's. Any
+// other group: Gaussian elimination with partial pivoting on its few rows.
+//
+// Rows enter as forces at points (system/system.h, RowForce), not as Jacobian blocks: a row's
+// column of J^T on a body is formed only where it is used.
 #pragma once
 
 #include <Eigen/Core>
@@ -35,6 +40,16 @@ class GroupForces {
              Eigen::VectorXd& lambda);
 
  private:
+  using Row3 = Eigen::Matrix<double, 1, 3>;
+  // One scalar row of a planned row's J^T on one of its bodies, found once in prepare().
+  struct Use {
+    int row = 0;    // planned row (index in rows_ and forces_)
+    int e = 0;      // its scalar row
+    int k = 0;      // the body's slot in the row
+    int body = 0;   // the system body (moving: the ground's share is not needed)
+    int local = 0;  // the body's place in the group (-1 outside it)
+    int o = 0;      // the scalar row's place among the group's
+  };
   struct PlannedRow {
     int row = 0;                  // index in System::cons
     int local[3] = {-1, -1, -1};  // where each of its bodies is in the group, -1 outside it
@@ -43,24 +58,33 @@ class GroupForces {
     int first = 0, count = 0;  // its rows in rows_; a dyad's: the first body's own, the shared,
                                // the second body's own
     int bodies[4] = {-1, -1, -1, -1};
-    int nBodies = 0;      // more than 4: solve() fails (the caller solves J whole)
-    int dyadShared = -1;  // a dyad: the index in its rows of the first shared row; else -1
-    int dyadOwn2 = -1;    // a dyad: of the first row of the second body's own
+    int nBodies = 0;  // more than 4: solve() fails (the caller solves J whole)
+    int scalars = 0;  // its scalar rows; their system rows from lambdaRow_[firstScalar]
+    int firstScalar = 0;
+    int firstUse = 0, uses = 0;      // in uses_: on its own bodies, in scalar order
+    int firstSpill = 0, spills = 0;  // in spills_: on the bodies of the groups solved later
+    bool dyad = false;      // two bodies, two scalar rows each own and two shared (that order)
+    bool heldBody = false;  // one body, a two-row joint first and one more row
   };
-  using Block = Eigen::Matrix<double, 2, 9>;
 
   static int dyadPart(const PlannedRow& r);
-  bool solveDyad(const System& sys, const Plan& p);
+  void plan(const System& sys, Plan& p);
+  Row3 on(const Use& u) const { return forces_[u.row].on(u.k, u.e, (*views_)[u.body + 1].r); }
+  Row3 remaining(int body) const;  // Q - S of a body
+  bool solveDyad(const Plan& p);
+  bool solveHeldBody(const Plan& p);
   template <int N>
-  bool solveGroup(const System& sys, const Plan& p);
-  void distribute(const System& sys, const Plan& p, const double* x);
-  void jacobians(const System& sys, const std::vector<BodyView>& views, const Plan& p);
+  bool solveGroup(const Plan& p);
+  void distribute(const Plan& p, const double* x);
 
   std::vector<PlannedRow> rows_;
   std::vector<Plan> plans_;  // outermost group first
-  std::vector<Block> blocks_;
-  Eigen::VectorXd S_;                   // what the solved rows put on each body
-  const Eigen::VectorXd* Q_ = nullptr;  // during solve()
+  std::vector<Use> uses_, spills_;
+  std::vector<int> lambdaRow_;                    // by scalar row in plan order: its system row
+  std::vector<RowForce> forces_;                  // by planned row
+  const std::vector<BodyView>* views_ = nullptr;  // during solve()
+  Eigen::VectorXd S_;                             // what the solved rows put on each body
+  const Eigen::VectorXd* Q_ = nullptr;            // during solve()
   Eigen::VectorXd* lambda_ = nullptr;
 };
 

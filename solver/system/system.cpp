@@ -214,9 +214,9 @@ void evalJacobian(const System& sys, const std::vector<BodyView>& views,
   assert(w.slot == J.slot.data() + J.slot.size());
 }
 
-void rowJacobian(const System& sys, const std::vector<BodyView>& views, const Row& r,
-                 Eigen::Matrix<double, 2, 9>& J) {
-  J.setZero();
+Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<BodyView>& views,
+                                        const Row& r) {
+  Eigen::Matrix<double, 2, 9> J = Eigen::Matrix<double, 2, 9>::Zero();
   // Only what the rows' Jacobians read (the pose) and where their columns go here.
   BodyView v[3];
   for (int k = 0; k < 3; ++k) {
@@ -243,13 +243,26 @@ void rowJacobian(const System& sys, const std::vector<BodyView>& views, const Ro
       J(0, r.col % 3) = holdScale(sys, r.col);
       break;
   }
+  return J;
 }
 
-Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<BodyView>& views,
-                                        const Row& r) {
-  Eigen::Matrix<double, 2, 9> J;
-  rowJacobian(sys, views, r, J);
-  return J;
+void rowForce(const System& sys, const std::vector<BodyView>& views, const Row& r, RowForce& f) {
+  f.isCouple = r.kind == Primitive::Angles;
+  if (f.isCouple) {
+    for (int k = 0; k < 3; ++k) f.couple[k] = r.body[k] >= 0 ? sys.size * r.c[k] : 0.0;
+    return;
+  }
+  const BodyView& i = views[r.body[0] + 1];
+  const BodyView& j = views[r.body[1] + 1];
+  f.P = i.r + i.R * r.s[0];
+  if (r.kind == Primitive::Coincident) {
+    f.u[0] = Vec2(1, 0);
+    f.u[1] = Vec2(0, 1);
+  } else if (r.kind == Primitive::OnLine) {
+    f.u[0] = j.R * r.n;
+  } else {  // OnCircle: along the radius, through the centre s[1] on body[1]
+    f.u[0] = (f.P - j.r - j.R * r.s[1]) / r.c[0];
+  }
 }
 
 void evalGamma(const System& sys, const std::vector<BodyView>& views,

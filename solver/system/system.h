@@ -83,11 +83,31 @@ SparseJacobian sparseJacobian(const System& sys, const std::vector<int>& rowMap,
 void evalJacobian(const System& sys, const std::vector<BodyView>& views,
                   const std::vector<int>& rowMap, SparseJacobian& J);
 // One row block's Jacobian at the views: its rows() rows, three columns (x, y, theta) for each of
-// body[0..2] in order, zero for the ground and unused bodies (forces, group by group).
+// body[0..2] in order, zero for the ground and unused bodies (forces: the general path).
 Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<BodyView>& views,
                                         const Row& r);
-void rowJacobian(const System& sys, const std::vector<BodyView>& views, const Row& r,
-                 Eigen::Matrix<double, 2, 9>& J);
+
+// The same row block's J^T as forces, per unit multiplier, at a pose where the row holds (forces,
+// group by group: a force at a point is cheaper to form and to apply than a 2 x 9 block). A
+// Coincident, OnLine or OnCircle row's scalar row e is the force u[e] at P on body[0] and -u[e]
+// at P on body[1] (its virtual work is the row's gradient); an Angles row is the couple
+// couple[k] (N mm) on body[k].
+struct RowForce {
+  Vec2 P = Vec2::Zero();
+  Vec2 u[2] = {Vec2::Zero(), Vec2::Zero()};
+  double couple[3] = {0, 0, 0};
+  bool isCouple = false;
+  // Scalar row e's generalized force on body[k] (whose frame origin is at r): x, y, the moment
+  // about r.
+  Eigen::Matrix<double, 1, 3> on(int k, int e, const Vec2& r) const {
+    if (isCouple) return Eigen::Matrix<double, 1, 3>(0, 0, couple[k]);
+    const Vec2 f = k == 0 ? u[e] : Vec2(-u[e]);
+    return Eigen::Matrix<double, 1, 3>(f.x(), f.y(), cross(P - r, f));
+  }
+};
+// (Not for a Hold row, which no group holds.)
+void rowForce(const System& sys, const std::vector<BodyView>& views, const Row& r, RowForce& f);
+
 // gamma with the views' velocities; J qdd = gamma.
 void evalGamma(const System& sys, const std::vector<BodyView>& views,
                const std::vector<int>& rowMap, Eigen::VectorXd& out);
