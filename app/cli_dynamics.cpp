@@ -69,6 +69,19 @@ std::optional<int> checkOptions(const Options& o) {
   return std::nullopt;
 }
 
+// A load on the ground acts on the frame itself, not through the mechanism: the forces leave it
+// out, and say so rather than let a user believe it was applied.
+void noteGroundLoads(const Mechanism& m) {
+  for (size_t i = 0; i < m.loads.size(); ++i) {
+    const Load& l = m.loads[i];
+    const Point* p = l.point ? m.point(l.point) : nullptr;
+    const Body* b = m.body(p ? p->body : l.body);
+    if (!b || !b->ground) continue;
+    error("note: loads[" + std::to_string(i) + "] " +
+          (p ? "at " + m.pointLabel(l.point) : std::string("on the ground body")) +
+          " acts on the frame itself, not through the mechanism: it is left out of the forces");
+  }
+}
 int dynamics(const Options& o) {
   if (std::optional<int> e = checkOptions(o)) return *e;
   std::optional<Mechanism> m = openDrivenModel(o.model);
@@ -88,6 +101,7 @@ int dynamics(const Options& o) {
     error(
         "note: no moving body has a mass, and there is no gravity and no load: every force is "
         "zero (masses: \"mass\" on a body, see docs/dynamics.md)");
+  noteGroundLoads(*m);
   const std::vector<char> undetermined = undeterminedJoints(*m, solver.result().undetermined);
   if (!solver.result().undetermined.empty()) {
     std::string names;

@@ -134,6 +134,29 @@ TEST_F(CliForces, BalanceUnderGravitySaysWhatTheWrittenModelShakesWith) {
   EXPECT_EQ(none.err.find("also weigh"), std::string::npos) << none.err;
 }
 
+// A load on the ground acts on the frame itself: the table is that of no load, and a note says
+// the load was left out (a user would otherwise believe it was applied).
+TEST_F(CliForces, DynamicsSaysALoadOnTheGroundIsLeftOut) {
+  std::string text =
+      test::slurp(std::string(LINKAGE_EXAMPLES_DIR) + "/slider-crank-22a-masses.linkage.json");
+  ASSERT_EQ(text.find("\"loads\""), std::string::npos);
+  text.insert(text.find('{') + 1,
+              "\"loads\": [{\"point\": \"ground.O\", \"force_N\": [0, -5]}, "
+              "{\"body\": \"ground\", \"torque_Nm\": 1}],");
+  const std::string loaded = "'" + writeFile("ground-load.linkage.json", text) + "'";
+  const CliResult with = run("dynamics " + loaded + " --steps 8");
+  const CliResult without = run("dynamics slider-crank-22a-masses --steps 8");
+  ASSERT_EQ(with.exit, 0) << with.err;
+  ASSERT_EQ(without.exit, 0) << without.err;
+  EXPECT_EQ(with.out, without.out);
+  EXPECT_NE(with.err.find("note: loads[0] at ground.O acts on the frame itself"), std::string::npos)
+      << with.err;
+  EXPECT_NE(with.err.find("note: loads[1] on the ground body acts on the frame itself"),
+            std::string::npos)
+      << with.err;
+  EXPECT_EQ(without.err.find("acts on the frame"), std::string::npos) << without.err;
+}
+
 TEST_F(CliForces, BadInputExitsTwoNamingThePlace) {
   std::string text = test::slurp(std::string(LINKAGE_EXAMPLES_DIR) + "/drop-feed.linkage.json");
   const size_t at = text.find("\"kg\": 0.7");
