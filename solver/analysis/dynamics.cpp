@@ -40,7 +40,7 @@ struct ForceSolver::Impl {
   std::vector<LoadAt> loads;                  // on moving bodies
   std::vector<PointLocation> jointA;          // by joint: where its point a is
   struct Reacting {
-    const Row* row;
+    int row;      // in System::cons
     double sign;  // +1 where the joint's point a is on body[0], -1 where on body[1]
   };
   std::vector<Reacting> reacting;  // the joints' rows that are forces at a point
@@ -56,7 +56,6 @@ struct ForceSolver::Impl {
   std::vector<BodyView> views;
   GroupForces groups;  // on the closed-form path
   Eigen::VectorXd Q, lambda, x;
-  std::vector<double> couples;  // scratch of reactions
 
   void bodies(const KinematicsState& s);
   void undetermined(const KinematicsState& s, Forces& out);
@@ -97,11 +96,12 @@ void ForceSolver::Impl::bodies(const KinematicsState& s) {
   }
   reacting.clear();
   coupling.clear();
-  for (const Row& row : sys.cons) {
+  for (size_t i = 0; i < sys.cons.size(); ++i) {
+    const Row& row = sys.cons[i];
     if (row.joint < 0 || row.isDriver() || row.kind == Primitive::Hold) continue;
     const int a = jointA[row.joint].body;
     if (row.kind != Primitive::Angles) {
-      reacting.push_back({&row, row.body[0] == a ? 1.0 : -1.0});
+      reacting.push_back({static_cast<int>(i), row.body[0] == a ? 1.0 : -1.0});
       continue;
     }
     for (int c = 0; c < 3; ++c)
@@ -278,31 +278,31 @@ Status ForceSolver::prepare(const Kinematics& k) {
 // (Angles: -c_k L lambda on body k); then as its kind states it.
 void ForceSolver::Impl::reactions(const KinematicsState& s, const Kinematics& k, Forces& out) {
   const Mechanism& m = s.mech;
-  out.joints.resize(m.joints.size());
-  couples.assign(m.joints.size(), 0.0);  // N mm
-  for (size_t j = 0; j < m.joints.size(); ++j) {
+  const size_t n = m.joints.size();
+  if (out.joints.size() != n) out.joints.resize(n);
+  JointReaction* joints = out.joints.data();
+  for (size_t j = 0; j < n; ++j) {  // the couples in N mm until the end
     const BodyView& v = views[jointA[j].body + 1];
-    out.joints[j] = {Vec2::Zero(), v.r + v.R * jointA[j].s, 0};
+    joints[j] = {Vec2::Zero(), v.r + v.R * jointA[j].s, 0};
   }
+  RowForce here;
   for (const Reacting& x : reacting) {
-    const Row& row = *x.row;
-    JointReaction& r = out.joints[row.joint];
+    const Row& row = s.sys.cons[x.row];
+    JointReaction& r = joints[row.joint];
     const double* lam = lambda.data() + row.row;
-    const BodyView &b0 = views[row.body[0] + 1], &b1 = views[row.body[1] + 1];
-    const Vec2 P = b0.r + b0.R * row.s[0];
-    Vec2 F;
-    if (row.kind == Primitive::Coincident)
-      F = Vec2(lam[0], lam[1]);
-    else if (row.kind == Primitive::OnLine)
-      F = lam[0] * (b1.R * row.n);
-    else
-      F = lam[0] / row.c[0] * (P - b1.r - b1.R * row.s[1]);
-    F *= -x.sign;
+    const RowForce* f = grouped ? groups.force(x.row) : nullptr;
+    if (!f) {
+      rowForce(s.sys, views, row, here);
+      f = &here;
+    }
+    Vec2 F = lam[0] * f->u[0];
+    if (row.rows() == 2) F += lam[1] * f->u[1];
+    F *= -x.sign;  // the row's force is +u on body[0]; the joint's is on the body of a
     r.force += F;
-    couples[row.joint] += cross(P - r.at, F);
+    r.coupleNm += cross(f->P - r.at, F);
   }
-  for (const Coupling& c : coupling) couples[c.joint] += c.perUnit * lambda[c.row];
-  for (size_t j = 0; j < m.joints.size(); ++j) out.joints[j].coupleNm = couples[j] / 1000;
+  for (const Coupling& c : coupling) joints[c.joint].coupleNm += c.perUnit * lambda[c.row];
+  for (size_t j = 0; j < n; ++j) joints[j].coupleNm /= 1000;
   if (!restated.empty()) {
     const KinematicsPose pose(k);
     for (int j : restated) kindOf(m.joints[j]).react(m, j, pose, out.joints);

@@ -99,6 +99,8 @@ void GroupForces::prepare(const System& sys, const Decomposition& d) {
     plans_.push_back(p);
   }
   forces_.resize(rows_.size());
+  plannedOf_.assign(sys.cons.size(), -1);
+  for (size_t i = 0; i < rows_.size(); ++i) plannedOf_[rows_[i].row] = static_cast<int>(i);
   S_.setZero(3 * sys.nBodies);
 }
 

@@ -38,6 +38,11 @@ class GroupForces {
   // views' pose; false at a singular group (lambda then holds nothing meaningful).
   bool solve(const System& sys, const std::vector<BodyView>& views, const Eigen::VectorXd& Q,
              Eigen::VectorXd& lambda);
+  // After solve(): row r's (index in System::cons) forces at that pose; nullptr for a row no
+  // group holds.
+  const RowForce* force(int r) const {
+    return plannedOf_[r] >= 0 ? &forces_[plannedOf_[r]] : nullptr;
+  }
 
  private:
   using Row3 = Eigen::Matrix<double, 1, 3>;
@@ -82,6 +87,7 @@ class GroupForces {
   std::vector<Use> uses_, spills_;
   std::vector<int> lambdaRow_;                    // by scalar row in plan order: its system row
   std::vector<RowForce> forces_;                  // by planned row
+  std::vector<int> plannedOf_;                    // by row of System::cons: its planned row
   const std::vector<BodyView>* views_ = nullptr;  // during solve()
   Eigen::VectorXd S_;                             // what the solved rows put on each body
   const Eigen::VectorXd* Q_ = nullptr;            // during solve()
