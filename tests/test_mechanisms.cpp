@@ -347,6 +347,25 @@ TEST(Mechanisms, AnEditOfOneMechanismOffTheClosedFormPathSolvesOnlyIt) {
   expectOnlyMechanismSolved(k, rod, coupler, "coupler1", 137, 28, EditPath::Blocks);
 }
 
+// The 14-mechanism machine with a triad (a group of four bodies the closed form does not solve,
+// tests/mechanisms.h) pushed by a fifteenth pin of the main shaft: an edit of the triad solves
+// its group alone, an edit of rod 0 leaves the triad's motion as it was, bit for bit.
+TEST(Mechanisms, AnEditOfATriadOnTheShaftSolvesOnlyIt) {
+  Mechanism m = test::shaftMachine(14);
+  const BodyId main = m.bodyNamed("main")->id;
+  test::addTriad(m, m.ground()->id, m.addPoint(main, "T", {5, 0}), {70, 5}, "_t");
+  const AssurDecomposition d = decomposeAssur(m);
+  ASSERT_EQ(d.groups[d.groupOf(m.bodyNamed("triangle_t")->id)].kind, GroupKind::Other);
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  ASSERT_FALSE(k.closedForm());
+  ASSERT_TRUE(k.moveTo(137).ok());
+  const Mechanism triad = withPointsMoved(m, {"right_t.G", "ground.G3__t"}, Vec2(1, 0.5));
+  expectOnlyMechanismSolved(k, m, triad, "triangle_t", 137, 30, EditPath::Blocks);
+  const Mechanism rod = withPointsMoved(triad, {"rod0.B", "block0.B"}, Vec2(2, 0));
+  expectOnlyMechanismSolved(k, triad, rod, "rod0", 137, 32, EditPath::Blocks);
+}
+
 // The lockstitch machine, solved group by group since its feed bar is a PR group: the needle
 // bar's rod made 2 mm longer solves the rod and needle bar's group again and nothing else; the
 // take-up lever, the hook and the whole drop feed keep their motion bit for bit.
