@@ -166,12 +166,30 @@ inline Mechanism fourBarChain(int loops, double crankLength = 20, double coupler
   return m;
 }
 
-// A chain of `units` class-III groups (triads) that the closed-form groups cannot solve: unit k
-// is a triangle hung from the ground by two long links and pushed sideways by a third link
-// from the previous unit's triangle (unit 0: from a 5 mm crank). No body of a triad is held to
-// known bodies by two joints or a core's three conditions, so only the general solve takes
-// it. 1 + 4 units bodies. The crank turns fully; the first triangle swings 10 mm and each next
-// one about a tenth less (its output point is nearer the point its two hangers converge to).
+// One class-III group (triad) that the closed-form groups cannot solve, its points shifted by
+// `at`: a triangle hung from the ground g by two long links and pushed sideways by a third
+// link from `input` (a point of a known body, 35 mm to the left of the push's other end). No
+// body of it is held to known bodies by two joints or a core's three conditions. Returns the
+// triangle's output point S. Its bodies are named triangle, push, left and right + n.
+inline PointId addTriad(Mechanism& m, BodyId g, PointId input, const Vec2& at,
+                        const std::string& n) {
+  const Vec2 P = at + Vec2(-30, -5), Q = at + Vec2(-10, 0), R = at + Vec2(20, 5);
+  const Vec2 S = at + Vec2(40, -10), G2 = at + Vec2(-15, 80), G3 = at + Vec2(25, 85);
+  const BodyId t = m.addBody("triangle" + n), push = m.addBody("push" + n),
+               left = m.addBody("left" + n), right = m.addBody("right" + n);
+  m.addPin(input, m.addPoint(push, "in", m.point(input)->pos));
+  m.addPin(m.addPoint(push, "P", P), m.addPoint(t, "P", P));
+  m.addPin(m.addPoint(t, "Q", Q), m.addPoint(left, "Q", Q));
+  m.addPin(m.addPoint(left, "G", G2), m.addPoint(g, "G2_" + n, G2));
+  m.addPin(m.addPoint(t, "R", R), m.addPoint(right, "R", R));
+  m.addPin(m.addPoint(right, "G", G3), m.addPoint(g, "G3_" + n, G3));
+  return m.addPoint(t, "S", S);
+}
+
+// A chain of `units` triads (addTriad): unit k pushed by the previous unit's triangle (unit 0:
+// by a 5 mm crank). Only the general solve takes it. 1 + 4 units bodies. The crank turns
+// fully; the first triangle swings 10 mm and each next one about a tenth less (its output
+// point is nearer the point its two hangers converge to).
 inline Mechanism triadChain(int units) {
   Mechanism m;
   const BodyId g = m.addBody("ground", true);
@@ -179,23 +197,8 @@ inline Mechanism triadChain(int units) {
   const BodyId crank = m.addBody("crank");
   const JointId drive = m.addPin(m.addPoint(g, "C", C), m.addPoint(crank, "C", C));
   PointId input = m.addPoint(crank, "A", C + Vec2(5, 0));
-  Vec2 in = C + Vec2(5, 0);
-  for (int k = 0; k < units; ++k) {
-    const std::string n = std::to_string(k);
-    const double x = 100.0 * k;
-    const Vec2 P(x - 30, -5), Q(x - 10, 0), R(x + 20, 5), S(x + 40, -10);
-    const Vec2 G2(x - 15, 80), G3(x + 25, 85);
-    const BodyId t = m.addBody("triangle" + n), push = m.addBody("push" + n),
-                 left = m.addBody("left" + n), right = m.addBody("right" + n);
-    m.addPin(input, m.addPoint(push, "in", in));
-    m.addPin(m.addPoint(push, "P", P), m.addPoint(t, "P", P));
-    m.addPin(m.addPoint(t, "Q", Q), m.addPoint(left, "Q", Q));
-    m.addPin(m.addPoint(left, "G", G2), m.addPoint(g, "G2_" + n, G2));
-    m.addPin(m.addPoint(t, "R", R), m.addPoint(right, "R", R));
-    m.addPin(m.addPoint(right, "G", G3), m.addPoint(g, "G3_" + n, G3));
-    input = m.addPoint(t, "S", S);
-    in = S;
-  }
+  for (int k = 0; k < units; ++k)
+    input = addTriad(m, g, input, Vec2(100.0 * k, 0), std::to_string(k));
   m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
   m.outputs = {input};
   return m;

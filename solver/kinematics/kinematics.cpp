@@ -55,7 +55,8 @@ Status Kinematics::edit(const Mechanism& m) {
   if (!valid()) return load(m);
   std::vector<BodyId> reshaped;
   const bool dimensionsOnly = sameTopology(d_->mech, m, reshaped);
-  if (dimensionsOnly && (d_->editInPlace(m, reshaped) || d_->editKeepingAnalysis(m))) {
+  if (dimensionsOnly &&
+      (d_->editInPlace(m, reshaped) || d_->editBlocks(m) || d_->editKeepingAnalysis(m))) {
     d_->revision = newRevision();
     return Status::success();
   }

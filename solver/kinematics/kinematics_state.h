@@ -41,6 +41,11 @@ struct KinematicsState {
   // Edits of an already valid state, cheapest first; each changes nothing when it fails.
   // Dimensions only, on the closed-form path: the groups the edit touches (load.cpp).
   bool editInPlace(const Mechanism& m, const std::vector<BodyId>& reshaped);
+  // Dimensions only, off that path: the groups the edit touches, by Newton on their bodies.
+  bool editBlocks(const Mechanism& m);
+  // Its solve of `bodies` in q, dq and ddq (the others read) on the same branch, joints closed.
+  bool solveBlock(const Mechanism& m, const System& edited, const std::vector<int>& bodies,
+                  double phi, Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq) const;
   // Dimensions only: the analysis and the Newton solver kept, re-assembled from the current
   // pose.
   bool editKeepingAnalysis(const Mechanism& m);
@@ -98,8 +103,9 @@ struct KinematicsState {
   bool valid = false;
   int lastEditGroups = -1;
   // How the last edit was solved (for tests and benchmarks): in place by the closed-form groups,
-  // re-assembled with the analysis kept, or whole (analysed again).
-  enum class EditPath { None, InPlace, KeptAnalysis, Whole };
+  // by Newton on the touched groups' bodies, re-assembled with the analysis kept, or whole
+  // (analysed again).
+  enum class EditPath { None, InPlace, Blocks, KeptAnalysis, Whole };
   EditPath lastEdit = EditPath::None;
   std::uint64_t revision = 0;
 };

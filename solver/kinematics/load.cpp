@@ -1,8 +1,11 @@
 // Loading and editing a mechanism (KinematicsState): compile, analyse, assemble, start; and the
-// three ways an edit is re-solved from the current pose, cheapest first.
+// four ways an edit is re-solved from the current pose, cheapest first.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
+#include "kinematics/block_solve.h"
 #include "kinematics/kinematics_state.h"
 #include "linkage/elements.h"
 
@@ -26,6 +29,93 @@ Eigen::VectorXd carriedPose(const System& old, const Eigen::VectorXd& oldQ, cons
     warm.segment<3>(3 * k) << r.x(), r.y(), th;
   }
   return warm;
+}
+
+// Which rows of `next` (an edit with the same joints) differ from `old`'s in their numbers
+// (positions, directions, radii, constants); none when some row joins other bodies or is of
+// another kind, which no dimensions-only edit does.
+std::optional<std::vector<char>> changedRows(const System& old, const System& next) {
+  std::vector<char> changed(next.cons.size(), 0);
+  for (size_t r = 0; r < next.cons.size(); ++r) {
+    const Row &a = old.cons[r], &b = next.cons[r];
+    if (a.kind != b.kind || a.row != b.row || a.joint != b.joint || a.body[0] != b.body[0] ||
+        a.body[1] != b.body[1] || a.body[2] != b.body[2])
+      return std::nullopt;
+    changed[r] = a.s[0] != b.s[0] || a.s[1] != b.s[1] || a.n != b.n || a.c[0] != b.c[0] ||
+                 a.c[1] != b.c[1] || a.c[2] != b.c[2] || a.value != b.value || a.driven != b.driven;
+  }
+  return changed;
+}
+
+// The units an edit is solved by: the decomposition's groups in solving order, then the bodies
+// no group reached split into the parts their rows connect (two class-IV linkages of different
+// mechanisms are two units), each with the rows that fix it.
+struct Unit {
+  std::vector<int> bodies, rows;
+};
+
+std::vector<Unit> editUnits(const System& sys, const Decomposition& d) {
+  std::vector<Unit> units;
+  for (const Group& g : d.groups) units.push_back({g.bodies, g.rows});
+  std::vector<int> part(sys.nBodies, -1);  // union-find over the unresolved bodies
+  for (int k : d.unresolved) part[k] = k;
+  auto root = [&](int k) {
+    while (part[k] != k) k = part[k] = part[part[k]];
+    return k;
+  };
+  std::vector<int> rowPart(sys.cons.size(), -1);
+  for (size_t r = 0; r < rowPart.size(); ++r) {
+    const Row& c = sys.cons[r];
+    if (c.kind == Primitive::Hold) continue;
+    for (int i = 0; i < c.bodies(); ++i) {
+      const int k = c.body[i];
+      if (k < 0 || part[k] < 0) continue;
+      if (rowPart[r] >= 0) part[root(k)] = root(rowPart[r]);
+      rowPart[r] = root(k);
+    }
+  }
+  std::vector<int> unitOf(sys.nBodies, -1);
+  for (int k : d.unresolved) {
+    if (unitOf[root(k)] < 0) {
+      unitOf[root(k)] = static_cast<int>(units.size());
+      units.emplace_back();
+    }
+    units[unitOf[root(k)]].bodies.push_back(k);
+  }
+  for (size_t r = 0; r < rowPart.size(); ++r)
+    if (rowPart[r] >= 0) units[unitOf[root(rowPart[r])]].rows.push_back(static_cast<int>(r));
+  return units;
+}
+
+// The bodies an edit must solve again, as ClosedFormPlan::resolveFrom finds them: a unit is
+// solved again when one of its rows changed, one of its bodies' frames moved (reshaped), or a
+// body its rows read is solved again; `units` counts them. None when a changed row is in no
+// unit (the decomposition would not account for it).
+std::optional<std::vector<int>> bodiesToSolve(const System& old, const System& next,
+                                              const Decomposition& d, int& units) {
+  const std::optional<std::vector<char>> changed = changedRows(old, next);
+  if (!changed) return std::nullopt;
+  std::vector<char> solved(next.nBodies, 0), covered(changed->size(), 0);
+  std::vector<int> bodies;
+  units = 0;
+  for (const Unit& u : editUnits(next, d)) {
+    bool touched = false;
+    for (int k : u.bodies) touched = touched || next.frameOrigin[k] != old.frameOrigin[k];
+    for (int r : u.rows) {
+      covered[r] = 1;
+      const Row& c = next.cons[r];
+      touched = touched || (*changed)[r];
+      for (int i = 0; i < c.bodies(); ++i)
+        touched = touched || (c.body[i] >= 0 && solved[c.body[i]]);
+    }
+    if (!touched) continue;
+    for (int k : u.bodies) solved[k] = 1;
+    bodies.insert(bodies.end(), u.bodies.begin(), u.bodies.end());
+    ++units;
+  }
+  for (size_t r = 0; r < changed->size(); ++r)
+    if ((*changed)[r] && !covered[r]) return std::nullopt;
+  return bodies;
 }
 
 }  // namespace
@@ -224,6 +314,64 @@ bool KinematicsState::editInPlace(const Mechanism& m, const std::vector<BodyId>&
   lastEditGroups = groups;
   lastEdit = EditPath::InPlace;
   return true;
+}
+
+bool KinematicsState::editBlocks(const Mechanism& m) {
+  // Off the closed-form path, an edit is solved by the units (groups) it touches and those
+  // downstream of them, the way editInPlace solves the plan's groups: Newton on their bodies'
+  // coordinates alone (block_solve.h), every other body keeping its motion to the bit. The same
+  // rows and the same analysis; the branch must stay (det J's sign is det J_SS's). Anything
+  // else is left to editKeepingAnalysis.
+  if (plan || atSingular) return false;
+  Status s;
+  std::optional<System> edited = compile(m, s);
+  const int holds = static_cast<int>(structure.holdCoordinates.size());
+  if (!edited || edited->nRows != sys.nRows - holds || edited->nBodies != sys.nBodies) return false;
+  int units = 0;
+  const std::optional<std::vector<int>> bodies = bodiesToSolve(sys, *edited, decomposition, units);
+  if (!bodies) return false;
+  const Snapshot& now = coordinates(cur());
+  Eigen::VectorXd q = now.q, dq = now.dq, ddq = now.ddq;
+  if (!bodies->empty()) {
+    // Only the bodies solved again start from the carried pose: it is not exact to the bit.
+    const Eigen::VectorXd carried = carriedPose(sys, now.q, *edited);
+    for (int k : *bodies) q.segment<3>(3 * k) = carried.segment<3>(3 * k);
+  }
+  for (int col : structure.holdCoordinates) addHold(*edited, col, q[col]);
+  if (!bodies->empty() && !solveBlock(m, *edited, *bodies, now.phi, q, dq, ddq)) return false;
+  Snapshot solved = reg;
+  solved.q = q;
+  solved.dq = dq;
+  solved.ddq = ddq;
+  for (int k : *bodies) solved.bodyFromCoordinates(k, q, dq, ddq);
+  solved.coordinates = true;
+  solved.regular = true;
+  mech = m;
+  sys = std::move(*edited);
+  reg = std::move(solved);
+  // The same rows: the structure, the row map and J's pattern stay; the factors do not.
+  newton.forgetFactors();
+  assembly = {};
+  notes.erase(std::remove_if(notes.begin(), notes.end(),
+                             [](const Note& n) { return n.kind == Note::Kind::AssemblyMoved; }),
+              notes.end());
+  lastEditGroups = units;
+  lastEdit = EditPath::Blocks;
+  return true;
+}
+
+bool KinematicsState::solveBlock(const Mechanism& m, const System& edited,
+                                 const std::vector<int>& bodies, double phi, Eigen::VectorXd& q,
+                                 Eigen::VectorXd& dq, Eigen::VectorXd& ddq) const {
+  // The holds sit at the same rows as before, so the solver's row map serves the edited rows.
+  const std::optional<Block> block = makeBlock(edited, newton.rowMap(), bodies);
+  // Dense only: a block as large as the sparse solve's is left to it.
+  if (!block || block->rows >= opt.sparseFrom) return false;
+  BlockSolver solver;
+  const int sign = solver.signAt(sys, *block, coordinates(cur()).q);
+  return sign != 0 && solver.solve(edited, *block, q, phi, opt.newton).converged &&
+         solver.derivatives(edited, *block, q, dq, ddq) && solver.detSign() == sign &&
+         checkRedundant(m, edited, structure, q, phi).ok();
 }
 
 bool KinematicsState::editKeepingAnalysis(const Mechanism& m) {

@@ -75,6 +75,9 @@ struct Motion {
   void fromCoordinates(double phiAt, const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
                        const Eigen::VectorXd& ddq);
   void toCoordinates(Eigen::VectorXd& q, Eigen::VectorXd& dq, Eigen::VectorXd& ddq) const;
+  // Body k alone from the coordinate vectors (an edit that solved some bodies again).
+  void bodyFromCoordinates(int k, const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
+                           const Eigen::VectorXd& ddq);
 };
 
 // Sets a body from its rotation, angular rate and acceleration and the motion (P, vP, aP) of

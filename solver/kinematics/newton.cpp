@@ -7,13 +7,10 @@
 
 namespace linkage {
 
-namespace {
-// Pivot ratio below which J counts as singular. Landing exactly on a singular position in
-// floating point leaves ~1e-12 (rounding of an O(1)-scaled J); the closest legitimate positions
-// measured (1e-5 mm from a change point, 1e-6 degrees from a dead point, lambda = 0.999) stay
-// above 1e-4. 1e-8 sits between, so a rounding-level singular point is never taken as regular.
-constexpr double kSingularPivot = 1e-8;
-}  // namespace
+// kSingularPivot: landing exactly on a singular position in floating point leaves a pivot ratio
+// of ~1e-12 (rounding of an O(1)-scaled J); the closest legitimate positions measured (1e-5 mm
+// from a change point, 1e-6 degrees from a dead point, lambda = 0.999) stay above 1e-4. 1e-8
+// sits between, so a rounding-level singular point is never taken as regular.
 
 void NewtonSolver::reset(const System& sys, const std::vector<int>& activeRows, int sparseFrom) {
   const int n = sys.nCoords();
@@ -44,7 +41,7 @@ void NewtonSolver::viewsAt(const System& sys, const Eigen::VectorXd& q) {
   viewsQ_ = q;
 }
 
-double NewtonSolver::tolerance(const System& sys, const Eigen::VectorXd& q, double relTol) const {
+double newtonTolerance(const System& sys, const Eigen::VectorXd& q, double relTol) {
   // Rounding in a residual grows with the coordinates' magnitude, not only with L.
   double scale = sys.size;
   for (int k = 0; k < sys.nBodies; ++k)
@@ -112,7 +109,7 @@ NewtonResult NewtonSolver::solve(const System& sys, Eigen::VectorXd& q, double p
       res.failure = NewtonFailure::Diverged;
       return res;
     }
-    const double tol = tolerance(sys, q, opt.relTol);
+    const double tol = newtonTolerance(sys, q, opt.relTol);
     // Within tolerance but above rounding (a few eps of the coordinates): one more chord
     // correction, nearly free with the factorisation at hand, takes it to rounding level.
     if (res.residual <= tol && (polished || !haveLU || res.residual <= 0.05 * tol)) {
@@ -171,7 +168,7 @@ bool NewtonSolver::correction(const System& sys, const Eigen::VectorXd& q, doubl
   return delta.allFinite();
 }
 
-double NewtonSolver::inverseEstimate() {
+Eigen::VectorXd inverseEstimateProbe(int n) {
   // The pivots of a partial-pivot LU do not always show a singular J: on a long chain the
   // small factor can spread over many pivots (a change point 18 loops deep read as 5e-8 to
   // 1e-2). One step of inverse iteration from a fixed vector shows it: J^-1 z is
@@ -180,23 +177,20 @@ double NewtonSolver::inverseEstimate() {
   // z must not be orthogonal to that direction: a pattern of +-1 can be (a change point's
   // left singular vector is a difference of rows), so its entries are pseudo-random in
   // [-1, 1], the same every call.
-  const int n = static_cast<int>(rhs_.size());
-  if (n == 0) return 1;
   Eigen::VectorXd z(n);
   std::uint64_t state = 0x9E3779B97F4A7C15ull;
   for (int i = 0; i < n; ++i) {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
     z[i] = static_cast<double>(state >> 11) * 0x1.0p-52 - 1.0;
   }
-  solveInPlace(z);
-  const double norm = z.cwiseAbs().maxCoeff();
-  return std::isfinite(norm) && norm > 0 ? 1 / norm : 0;
+  return z;
 }
 
 bool NewtonSolver::derivatives(const System& sys, const Eigen::VectorXd& q, Eigen::VectorXd& dq,
                                Eigen::VectorXd& ddq) {
   if (!factor(sys, q)) return false;
-  estimate_ = inverseEstimate();
+  estimate_ = inverseEstimate(static_cast<int>(rhs_.size()),
+                              [this](Eigen::VectorXd& z) { solveInPlace(z); });
   if (!(estimate_ > kSingularPivot)) return false;
   const double invL = 1.0 / sys.size;
   rhs_.setZero();

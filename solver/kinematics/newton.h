@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "system/dense_lu.h"
@@ -20,6 +21,25 @@
 namespace linkage {
 
 enum class NewtonFailure { None, Singular, Diverged, TooFar, MaxIterations };
+
+// Pivot ratio of the scaled J below which it counts as singular (newton.cpp says why 1e-8).
+constexpr double kSingularPivot = 1e-8;
+
+// The residual a solve at q accepts: relTol of the larger of L and the coordinates' magnitude.
+double newtonTolerance(const System& sys, const Eigen::VectorXd& q, double relTol);
+
+// An estimate of the smallest singular value of a factored O(1) matrix of order n, given the
+// solve with its factors (in place): |z| / |A^-1 z| for a fixed pseudo-random z (the probe;
+// newton.cpp says why it is so chosen).
+Eigen::VectorXd inverseEstimateProbe(int n);
+template <class SolveInPlace>
+double inverseEstimate(int n, const SolveInPlace& solveInPlace) {
+  if (n == 0) return 1;
+  Eigen::VectorXd z = inverseEstimateProbe(n);
+  solveInPlace(z);
+  const double norm = z.cwiseAbs().maxCoeff();
+  return std::isfinite(norm) && norm > 0 ? 1 / norm : 0;
+}
 
 struct NewtonResult {
   bool converged = false;
@@ -63,18 +83,23 @@ class NewtonSolver {
   // columns by L, so J_s^T lambda = D b.
   void solveTransposedInPlace(const System& sys, Eigen::VectorXd& b) const;
 
+  // An edit solved without this solver (a block edit) may change q, or only L (the theta
+  // scaling and the angle rows), under factors that would look current: drop them.
+  void forgetFactors() {
+    factoredQ_.resize(0);
+    viewsQ_.resize(0);
+  }
+
   // Residual of the active rows at q (mm), for reports.
   double residualNorm(const System& sys, const Eigen::VectorXd& q, double phi);
   const std::vector<int>& rowMap() const { return rowMap_; }
 
  private:
-  double inverseEstimate();
   double estimate_ = 1;
   bool factor(const System& sys, const Eigen::VectorXd& q);
   void solveInPlace(Eigen::VectorXd& b) const;
   // Body views at q; sin and cos are evaluated again only when q changed.
   void viewsAt(const System& sys, const Eigen::VectorXd& q);
-  double tolerance(const System& sys, const Eigen::VectorXd& q, double relTol) const;
 
   std::vector<int> rowMap_;
   std::vector<BodyView> views_;

@@ -93,12 +93,14 @@ class Kinematics {
 
   // Replaces the mechanism by an edited version of it and re-solves at the current crank angle,
   // starting from the current pose of every body that is still there (matched by id).
-  // An edit of dimensions only (points or slots moved; see sameTopology) on the closed-form path
-  // re-solves only the groups whose geometry changed and those that depend on them, on the
-  // same assembly branches; other edits, or one that a group cannot follow, are solved whole.
+  // An edit of dimensions only (points or slots moved; see sameTopology) re-solves only the
+  // groups whose geometry changed and those that depend on them, on the same assembly
+  // branches: in closed form on that path, else by Newton on those groups' bodies alone; other
+  // edits, or one that the groups cannot follow, are solved whole.
   // On failure the previous state is kept, as for load().
   Status edit(const Mechanism& m);
-  // Groups the last edit solved again, or -1 when it was solved whole.
+  // Groups (or, off the closed-form path, parts no group reached) the last edit solved again,
+  // or -1 when it was solved whole.
   int lastEditGroups() const;
 
   // Tracks the motion to the given crank angle (degrees, from the start, in the driving
