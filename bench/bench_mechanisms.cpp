@@ -1,7 +1,8 @@
 // A machine's mechanisms solved on their own (issue 18): the 30-body machine of 14 mechanisms
 // on one main shaft (tests/mechanisms.h shaftMachine), an edit of one mechanism's dimensions
-// (rod 0 made 2 mm longer and back) against a solve of the whole machine, the split into
-// mechanisms itself, and one animation step of the whole machine.
+// (rod 0 made 2 mm longer and back) against a solve of the whole machine, on the closed-form
+// path and on the general (Newton) path; the split into mechanisms itself, and one animation
+// step of the whole machine.
 #include <benchmark/benchmark.h>
 
 #include "linkage/kinematics.h"
@@ -18,9 +19,13 @@ Mechanism longerRod0(const Mechanism& m) {
   return e;
 }
 
-void editOneMechanism(benchmark::State& state) {
+// closedForm false: the general path, where an edit is solved by Newton on the touched groups'
+// bodies alone (KinematicsState::editBlocks).
+void editOneMechanism(benchmark::State& state, bool closedForm) {
   const Mechanism m = test::shaftMachine(14), e = longerRod0(m);
-  Kinematics k;
+  KinematicsOptions opt;
+  opt.closedForm = closedForm;
+  Kinematics k(opt);
   if (!k.load(m).ok() || !k.moveTo(40).ok()) std::abort();
   int groups = 0;
   for (auto _ : state) {
@@ -32,10 +37,12 @@ void editOneMechanism(benchmark::State& state) {
   state.counters["edits"] = benchmark::Counter(2, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void solveWholeMachine(benchmark::State& state) {
+void solveWholeMachine(benchmark::State& state, bool closedForm) {
   const Mechanism m = test::shaftMachine(14), e = longerRod0(m);
+  KinematicsOptions opt;
+  opt.closedForm = closedForm;
   for (auto _ : state) {
-    Kinematics k;
+    Kinematics k(opt);
     if (!k.load(e).ok() || !k.moveTo(40).ok()) std::abort();
     benchmark::DoNotOptimize(k);
   }
@@ -64,11 +71,17 @@ void step(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(editOneMechanism)
+BENCHMARK_CAPTURE(editOneMechanism, closed_form, true)
     ->Name("mechanisms/edit_one_of_14_30_bodies")
     ->Unit(benchmark::kMicrosecond);
-BENCHMARK(solveWholeMachine)
+BENCHMARK_CAPTURE(editOneMechanism, general, false)
+    ->Name("mechanisms/edit_one_of_14_30_bodies_general")
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(solveWholeMachine, closed_form, true)
     ->Name("mechanisms/load_whole_30_bodies")
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(solveWholeMachine, general, false)
+    ->Name("mechanisms/load_whole_30_bodies_general")
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK(split)->Name("mechanisms/split_30_bodies")->Unit(benchmark::kMicrosecond);
 BENCHMARK(step)->Name("mechanisms/step_1deg_30_bodies")->Unit(benchmark::kMicrosecond);
