@@ -58,6 +58,7 @@ struct ForceSolver::Impl {
   Eigen::VectorXd Q, lambda, x;
 
   void bodies(const KinematicsState& s);
+  void joints(const KinematicsState& s);
   void undetermined(const KinematicsState& s, Forces& out);
   void appliedAndInertia(const KinematicsState& s, double omega, double crankDeg);
   bool solveWithKinematics(const KinematicsState& s);
@@ -88,6 +89,11 @@ void ForceSolver::Impl::bodies(const KinematicsState& s) {
     }
   }
   gravity = s.mech.gravity.value_or(Vec2::Zero());
+}
+
+// What the reactions read, listed once (shaking() needs none of it).
+void ForceSolver::Impl::joints(const KinematicsState& s) {
+  const System& sys = s.sys;
   jointA.clear();
   restated.clear();
   for (const Joint& j : s.mech.joints) {
@@ -267,6 +273,7 @@ Status ForceSolver::prepare(const Kinematics& k) {
   d_.reset(new Impl);
   d_->revision = k.revision();
   d_->bodies(s);
+  d_->joints(s);
   d_->grouped = s.plan.has_value() && s.decomposition.closedForm();
   if (d_->grouped) d_->groups.prepare(s.sys, s.decomposition);
   d_->undetermined(s, out_);

@@ -1,3 +1,4 @@
+// Newton on a block of bodies, the others held: see block_solve.h.
 #include "kinematics/block_solve.h"
 
 #include <algorithm>

@@ -106,6 +106,7 @@ struct KinematicsState {
   // by Newton on the touched groups' bodies, re-assembled with the analysis kept, or whole
   // (analysed again).
   enum class EditPath { None, InPlace, Blocks, KeptAnalysis, Whole };
+  void noteEdit(int groups, EditPath path);  // the bookkeeping of an edit that kept the analysis
   EditPath lastEdit = EditPath::None;
   std::uint64_t revision = 0;
 };

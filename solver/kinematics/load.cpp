@@ -308,12 +308,17 @@ bool KinematicsState::editInPlace(const Mechanism& m, const std::vector<BodyId>&
   reg.coordinates = false;
   // The same rows, so the structure and the Newton solver's row map stay as they are.
   assembly = {};
+  noteEdit(groups, EditPath::InPlace);
+  return true;
+}
+
+// An edit that kept the analysis: the old assembly's notes no longer describe the pose.
+void KinematicsState::noteEdit(int groups, EditPath path) {
   notes.erase(std::remove_if(notes.begin(), notes.end(),
                              [](const Note& n) { return n.kind == Note::Kind::AssemblyMoved; }),
               notes.end());
   lastEditGroups = groups;
-  lastEdit = EditPath::InPlace;
-  return true;
+  lastEdit = path;
 }
 
 bool KinematicsState::editBlocks(const Mechanism& m) {
@@ -352,11 +357,7 @@ bool KinematicsState::editBlocks(const Mechanism& m) {
   // The same rows: the structure, the row map and J's pattern stay; the factors do not.
   newton.forgetFactors();
   assembly = {};
-  notes.erase(std::remove_if(notes.begin(), notes.end(),
-                             [](const Note& n) { return n.kind == Note::Kind::AssemblyMoved; }),
-              notes.end());
-  lastEditGroups = units;
-  lastEdit = EditPath::Blocks;
+  noteEdit(units, EditPath::Blocks);
   return true;
 }
 
@@ -402,13 +403,8 @@ bool KinematicsState::editKeepingAnalysis(const Mechanism& m) {
     return false;
   }
   trial.notes = notes;
-  trial.notes.erase(
-      std::remove_if(trial.notes.begin(), trial.notes.end(),
-                     [](const Note& n) { return n.kind == Note::Kind::AssemblyMoved; }),
-      trial.notes.end());
   trial.revision = revision;
-  trial.lastEditGroups = -1;
-  trial.lastEdit = EditPath::KeptAnalysis;
+  trial.noteEdit(-1, EditPath::KeptAnalysis);
   *this = std::move(trial);
   return true;
 }
