@@ -288,6 +288,32 @@ TEST_F(ForcesPanelTest, LaysTheExamplesOutInARowOrTwoByTwo) {
   shot(&panel, "forces-panel-drop-feed-narrow");
 }
 
+// The crank-angle axes' labels fit under their plots: four in a row in a dock beside the
+// Properties ran "armshaft angle [deg], counter-clockwise" into each other; the long form
+// where there is room, the brief one ("armshaft [deg], ccw") where there is not.
+TEST_F(ForcesPanelTest, CrankAxisLabelsFitTheirPlots) {
+  open("drop-feed");
+  showAndSettle();
+  ASSERT_TRUE(panel.samples()) << panel.message();
+  const ForceFigure& f = panel.figure();
+  auto label = [&](ForceFigure::Plot p) { return f.rect(p)->axis(QCPAxis::atBottom)->label(); };
+  for (int width : {1400, 960, 620}) {
+    panel.resize(width, 350);
+    settle();
+    for (ForceFigure::Plot p : {ForceFigure::Torque, ForceFigure::Shaking, ForceFigure::Reaction}) {
+      const QCPAxis* x = f.rect(p)->axis(QCPAxis::atBottom);
+      EXPECT_LE(QFontMetrics(x->labelFont()).horizontalAdvance(x->label()),
+                f.rect(p)->outerRect().width())
+          << width << " px: " << x->label().toStdString();
+      EXPECT_TRUE(label(p).startsWith("armshaft")) << label(p).toStdString();
+    }
+    if (width == 960) EXPECT_EQ(label(ForceFigure::Torque), "armshaft [deg], ccw");
+  }
+  panel.resize(2400, 350);
+  settle();
+  EXPECT_EQ(label(ForceFigure::Torque), "armshaft angle [deg], counter-clockwise");
+}
+
 TEST_F(ForcesPanelTest, ExportsTheFigure) {
   open("wanzer-inversion-2-masses");
   QTemporaryDir dir;

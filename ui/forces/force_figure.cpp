@@ -1,5 +1,6 @@
 #include "forces/force_figure.h"
 
+#include <QFontMetrics>
 #include <algorithm>
 #include <cmath>
 
@@ -28,6 +29,7 @@ ForceFigure::ForceFigure(QCustomPlot* plot) : plot_(plot) {
   // diagram's scales are made equal for the size it is drawn at, before it is drawn.
   QObject::connect(plot_, &QCustomPlot::afterLayout, plot_, [this] {
     if (rects_[Polar]) fitEqualScales(rects_[Polar]);
+    fitCrankLabels();
   });
 }
 
@@ -119,10 +121,12 @@ void ForceFigure::fitRanges(const ForceSamples& s, double sizeMm) {
   if (curves_[ReactionX]) fitValues(rects_[Reaction], kFlat * force);
 }
 
-void ForceFigure::build(const ForceSamples& s, const QString& crankLabel, const JointChoice& joint,
-                        const QString& stopNote, double sizeMm) {
+void ForceFigure::build(const ForceSamples& s, const QString& crankLabel, const QString& crankBrief,
+                        const JointChoice& joint, const QString& stopNote, double sizeMm) {
   clear();
   samples_ = &s;
+  crankLabel_ = crankLabel;
+  crankBrief_ = crankBrief;
   columns_ = columnsFor(layoutWidth_ > 0 ? layoutWidth_ : plot_->width());
   layOut(crankLabel, joint, stopNote);
   curves_[TorqueCurve] =
@@ -233,6 +237,18 @@ void ForceFigure::setCursorVisible(bool on) {
 
 void ForceFigure::replot() {
   plot_->replot();
+}
+
+// Four plots in a row are narrower than "armshaft angle [deg], counter-clockwise": side by
+// side, such labels ran into each other. Set as each layout is made, before it is drawn.
+void ForceFigure::fitCrankLabels() {
+  for (int p : {Torque, Shaking, Reaction}) {
+    if (!rects_[p]) continue;
+    QCPAxis* x = rects_[p]->axis(QCPAxis::atBottom);
+    const QFontMetrics fm(x->labelFont());
+    const bool fits = fm.horizontalAdvance(crankLabel_) + 8 <= rects_[p]->outerRect().width();
+    x->setLabel(fits ? crankLabel_ : crankBrief_);
+  }
 }
 
 double ForceFigure::crankAt(const QPointF& pixel, int* plot) const {

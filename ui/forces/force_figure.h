@@ -38,8 +38,10 @@ class ForceFigure {
   // Lays the figure out for the samples (which must outlive the next build and setCursor);
   // `stopNote`, when not empty, says why the curves end before the turn does; `sizeMm`, the
   // mechanism's size, scales what is rounding of a zero torque.
-  void build(const ForceSamples& s, const QString& crankLabel, const JointChoice& joint,
-             const QString& stopNote, double sizeMm);
+  // `crankLabel` and `crankBrief` (crankAxisLabel, briefCrankAxisLabel): the crank-angle axes'
+  // label, the brief one where the plot is too narrow for the other.
+  void build(const ForceSamples& s, const QString& crankLabel, const QString& crankBrief,
+             const JointChoice& joint, const QString& stopNote, double sizeMm);
   // Nothing drawn (the panel shows a sentence instead).
   void clear();
   // Moves the cursor to a crank angle in [0, 360] and repaints the cursor layer only.
@@ -70,6 +72,7 @@ class ForceFigure {
   void layOut(const QString& crankLabel, const JointChoice& joint, const QString& stopNote);
   void addReaction(const ForceSamples& s, const JointChoice& joint);
   void fitRanges(const ForceSamples& s, double sizeMm);
+  void fitCrankLabels();
   void addCursor();
 
   QCustomPlot* plot_;
@@ -77,6 +80,7 @@ class ForceFigure {
   const ForceSamples* samples_ = nullptr;
   int columns_ = 4, layoutWidth_ = 0;
   double cursorDeg_ = 0;
+  QString crankLabel_, crankBrief_;
   QCPAxisRect* rects_[kPlots] = {};
   QCPLayoutGrid* cells_[kPlots] = {};  // each rect's grid, with its legend beside it
   QCPGraph* curves_[kCurves] = {};

@@ -228,7 +228,8 @@ void ForcesPanel::rebuildFigure() {
     stop = tr("Ends at %1°: %2")
                .arg(samples_.crankDeg.back(), 0, 'f', 1)
                .arg(QString::fromStdString(samples_.status.message));
-  figure_->build(samples_, crankAxisLabel(m), choice, stop, doc_->kinematics().size());
+  figure_->build(samples_, crankAxisLabel(m), briefCrankAxisLabel(m), choice, stop,
+                 doc_->kinematics().size());
   updateCursor();
 }
 

@@ -106,15 +106,32 @@ QString shortAxisLabel(bool body, Quantity::Component c, double directionDeg, Or
   return QString("%1 [%2]").arg(componentLabel(c, directionDeg, o), u.name(o, false));
 }
 
+namespace {
+
+// The name of the body the driver turns ("crank" without one).
+QString drivenName(const Mechanism& m) {
+  if (m.driver)
+    if (const Joint* j = m.joint(m.driver->joint))
+      if (const Point* p = m.point(j->b))
+        if (const Body* b = m.body(p->body)) return QString::fromStdString(b->name);
+  return QStringLiteral("crank");
+}
+
+}  // namespace
+
 QString crankAxisLabel(const Mechanism& m) {
   if (!m.driver) return QStringLiteral("crank angle [deg]");
-  QString name = QStringLiteral("crank");
-  if (const Joint* j = m.joint(m.driver->joint))
-    if (const Point* p = m.point(j->b))
-      if (const Body* b = m.body(p->body)) name = QString::fromStdString(b->name);
   return QStringLiteral("%1 angle [deg], %2")
-      .arg(name, m.driver->direction == Direction::Cw ? QStringLiteral("clockwise")
-                                                      : QStringLiteral("counter-clockwise"));
+      .arg(drivenName(m), m.driver->direction == Direction::Cw
+                              ? QStringLiteral("clockwise")
+                              : QStringLiteral("counter-clockwise"));
+}
+
+QString briefCrankAxisLabel(const Mechanism& m) {
+  if (!m.driver) return QStringLiteral("crank [deg]");
+  return QStringLiteral("%1 [deg], %2")
+      .arg(drivenName(m),
+           m.driver->direction == Direction::Cw ? QStringLiteral("cw") : QStringLiteral("ccw"));
 }
 
 QString wrapped(const QString& text, int width) {

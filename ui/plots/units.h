@@ -35,6 +35,8 @@ struct PlotUnits {
 // Wanzer's disk turns clockwise, against the mathematical sense); "crank angle [deg]" without a
 // driver.
 QString crankAxisLabel(const Mechanism& m);
+// The same for a plot too narrow for it: "disk [deg], cw".
+QString briefCrankAxisLabel(const Mechanism& m);
 
 // Words broken into lines of at most `width` characters (plot titles and notes).
 QString wrapped(const QString& text, int width);
