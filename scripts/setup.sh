@@ -23,7 +23,7 @@ BUILD_DIR=${1:-build}
 # GIFs); a font so that labels are not boxes.
 packages=(cmake ninja-build g++ pkg-config libeigen3-dev nlohmann-json3-dev coinor-libclp-dev
   zlib1g-dev libcli11-dev qt6-base-dev qt6-svg-dev libqcustomplot-dev libgif-dev
-  fonts-dejavu-core)
+  fonts-dejavu-core ccache)
 # The tests: GoogleTest and GoogleMock (separate packages on Debian 12), Google Benchmark, a real X
 # server and a way to drive it (Xvfb, xdotool, ImageMagick's import), a comma-decimal locale,
 # pdftotext (poppler-utils) to read the labels of exported PDF figures, the freedesktop validators
