@@ -21,27 +21,32 @@ const char* kHelp =
 
 Finds the counterweights on the given bodies (each pinned to the ground) that minimise the peak
 over the whole cycle (continuous, not only at the samples) of |shaking fx|, |shaking fy| or
-|shaking force| of MODEL at its driver's speed. A counterweight is a point mass whose static
-moment s = m u (kg mm) is measured from the point where its body is pinned to the ground, u
-fixed in the body; its own weight is left out. The shaking force is linear in the static
-moments: a linear programme (COIN-OR CLP) on sampled angles, refined by exchange on the peaks'
-exact angles until the peak and the programme's lower bound agree. Writes CSV:
+|shaking force| of MODEL at its driver's speed, the counterweights' own weight included. A
+counterweight is a point mass m at u from the point where its body is pinned to the ground (u
+fixed in the body, |u| at most the body's farthest drawn point from there: R); its static moment
+s = m u (kg mm) shakes the frame as the body turns, its weight m g pulls on it. The programme in
+(s, m) is convex (|s| <= R m is a cone): linear rows on sampled angles and tangents of the cone
+(COIN-OR CLP), refined by exchange on the peaks' exact angles until the peak and the programme's
+lower bound agree. No counterweight is one of its choices: the peak after is never above the
+peak before. Writes CSV, with a header row:
 
-  counterweight,BODY,KGMM,ANGLE_DEG    (ANGLE_DEG: of u in the body's sketch frame)
-  peak_before,,VALUE                   (N)
-  peak_after,,VALUE                    (N)
+  quantity,body,value,angle_deg
+  counterweight,BODY,KGMM,ANGLE_DEG         static moment (kg mm), angle of u in the body's
+                                            sketch frame
+  counterweight_kg,BODY,KG,                 its mass
+  counterweight_radius_mm,BODY,MM,          |u|: at most R (less under gravity where a heavier
+                                            mass nearer the pivot does better)
+  peak_before,,N,CRANK_DEG                  the peak and where it is
+  peak_after,,N,CRANK_DEG                   with the counterweights as --out writes them
 
-and on standard error the optimality gap (the peak after less the programme's bound) and,
-under gravity, the peak with the counterweights' own weight (as --out writes them as masses,
-they weigh: a constant force on the frame that the balance leaves out).
+and on standard error the optimality gap (the peak after less the programme's bound).
 
   --counterweight BODY  a body to put a counterweight on (repeatable)
   --minimize WHAT       fx, fy or force
   --max-kgmm M          each counterweight's static moment at most M kg mm (0: none; the peak
                         as it is)
   --steps N             samples per turn of the first programme (default 360, at least 8)
-  --out FILE            also write MODEL with the counterweights added as masses (a point mass
-                        at the radius of the body's farthest point from its pivot)
+  --out FILE            also write MODEL with the counterweights added to their bodies' masses
 
 Exit status: 0 success, 2 bad input (options, file, a body not pinned to the ground), 3 the
 mechanism cannot turn through the cycle, 1 the --out file could not be written (the CSV is
@@ -72,6 +77,20 @@ BalanceMeasure measureNamed(const std::string& name) {
   return BalanceMeasure::Force;
 }
 
+std::string table(const Mechanism& m, const BalanceResult& r) {
+  std::string out = "quantity,body,value,angle_deg\n";
+  for (const Counterweight& c : r.counterweights) {
+    const std::string body = m.body(c.body)->name;
+    out += "counterweight," + body + "," + formatNumber(c.kgMm()) + "," +
+           formatNumber(c.angleDeg()) + "\n";
+    out += "counterweight_kg," + body + "," + formatNumber(c.kg) + ",\n";
+    out += "counterweight_radius_mm," + body + "," + formatNumber(c.radiusMm()) + ",\n";
+  }
+  out += "peak_before,," + formatNumber(r.peakBefore) + "," + formatNumber(r.peakBeforeDeg) +
+         "\npeak_after,," + formatNumber(r.peakAfter) + "," + formatNumber(r.peakAfterDeg) + "\n";
+  return out;
+}
+
 int balance(Options& o) {
   o.balance.measure = measureNamed(o.measure);
   std::optional<Mechanism> m = openDrivenModel(o.model);
@@ -91,27 +110,12 @@ int balance(Options& o) {
     error(r.status.message);
     return r.status.code == StatusCode::BadModel ? kBadInput : exitFor(r.status);
   }
-  std::string out;
-  for (const Counterweight& c : r.counterweights)
-    out += "counterweight," + m->body(c.body)->name + "," + formatNumber(c.kgMm()) + "," +
-           formatNumber(c.angleDeg()) + "\n";
-  out += "peak_before,," + formatNumber(r.peakBefore) + "\npeak_after,," +
-         formatNumber(r.peakAfter) + "\n";
-  std::fwrite(out.data(), 1, out.size(), stdout);
-  error("note: peak " + formatNumber(r.peakAfter, 10) + " N at crank " +
-        formatNumber(r.peakAfterDeg, 10) + " deg; optimality gap " + formatNumber(r.gap(), 3) +
-        " N (no counterweights within the bound do better than " + formatNumber(r.lowerBound, 10) +
-        " N), after " + std::to_string(r.exchanges) + " exchange(s)");
-  if (m->gravity && std::any_of(r.counterweights.begin(), r.counterweights.end(),
-                                [](const Counterweight& c) { return c.kgMm() > 0; })) {
-    Status why;
-    const std::optional<double> weighed = peakWithWeight(k, o.balance, r, &why);
-    error(weighed ? "note: under gravity the counterweights also weigh, which the balance leaves "
-                    "out; as masses at their bodies' farthest points (as --out writes them) the "
-                    "peak is " +
-                        formatNumber(*weighed, 10) + " N"
-                  : "note: the peak with the counterweights' weight is not known: " + why.message);
-  }
+  std::fputs(table(*m, r).c_str(), stdout);
+  error("note: peak " + formatShown(r.peakAfter) + " N at crank " + formatShown(r.peakAfterDeg) +
+        " deg; optimality gap " + formatNumber(r.gap(), 3) +
+        " N (no counterweights within the bounds do better than " +
+        formatShown(r.lowerBound, r.peakBefore) + " N), after " + std::to_string(r.exchanges) +
+        " exchange(s)");
   if (!o.out.empty()) {
     addCounterweights(*m, r.counterweights);
     const WriteResult w = saveMechanismFile(*m, o.out);

@@ -158,34 +158,86 @@ TEST(Balance, ACounterweightNeedsABodyPinnedToTheGround) {
 namespace linkage {
 namespace {
 
-// A crank alone, 2 kg at r = 100 mm, under gravity (0, -9.81) m/s^2: its shaking force is the
-// rotating m w^2 r plus the constant weight -m g. The counterweight s = m r opposite cancels the
-// rotating part: the peak after is m g, as the balance counts it (its own weight left out);
-// with the counterweight's mass s / R at the crank's farthest point (R = 100 mm, where --out
-// puts it) it weighs as much again: (m + s / R) g.
-TEST(Balance, UnderGravityTheCounterweightsWeightIsToldApart) {
+// A crank alone, 2 kg at r = 100 mm (its farthest point A: R = 100), under gravity (0, -9.81)
+// m/s^2, turning at w: its shaking force is the rotating 1e-3 w^2 S (S = 200 kg mm plus the
+// counterweight's static moment s, opposite) and the constant weight -(2 + m_c) g, with the
+// counterweight's mass m_c >= |s| / R. The peak of |F| (and of |fy|) is
+//   1e-3 w^2 |200 - |s|| + 9.81 (2 + |s| / 100):
+// each kg mm of counterweight takes 1e-3 w^2 N off the rotating part and puts 0.0981 N of weight
+// on. Above w = 9.9 rad/s the whole 200 kg mm is cancelled (peak 4 g = 39.24 N: the weight of
+// 2 + 2 kg); below it no counterweight lowers the peak, and none is placed (a balance that left
+// the weight out placed the 200 kg mm all the same: its peak "after" was 2 g, applied 4 g, above
+// the peak before).
+Mechanism gravityCrank(double rpm) {
   Mechanism m;
   const BodyId g = m.addBody("ground", true), c = m.addBody("crank");
   const JointId drive = m.addPin(m.addPoint(g, "O", Vec2(0, 0)), m.addPoint(c, "O", Vec2(0, 0)));
   m.addPoint(c, "A", Vec2(100, 0));
   m.body(c)->mass = Mass{2, Vec2(100, 0), 0, ""};
   m.gravity = Vec2(0, -9.81);
-  m.driver = Driver{drive, 600, Direction::Ccw, 0, ""};
+  m.driver = Driver{drive, rpm, Direction::Ccw, 0, ""};
+  return m;
+}
+
+TEST(Balance, UnderGravityTheCounterweightsWeightIsPartOfThePeak) {
+  for (const BalanceMeasure measure : {BalanceMeasure::Force, BalanceMeasure::Fy}) {
+    const Mechanism fast = gravityCrank(600);
+    Kinematics k = loaded(fast);
+    BalanceOptions opt;
+    opt.bodies = {fast.bodyNamed("crank")->id};
+    opt.measure = measure;
+    const BalanceResult r = balanceShaking(k, opt);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    const double w = 600 * 2 * M_PI / 60, before = 1e-3 * w * w * 200 + 2 * 9.81;
+    EXPECT_NEAR(r.peakBefore, before, 1e-9 * before);
+    EXPECT_LT((r.counterweights[0].staticMoment - Vec2(-200, 0)).norm(), 1e-8 * 200);
+    EXPECT_NEAR(r.counterweights[0].kg, 2, 1e-8);
+    EXPECT_NEAR(r.counterweights[0].radiusMm(), 100, 1e-8);
+    EXPECT_NEAR(r.peakAfter, 4 * 9.81, 1e-9 * before);
+    // Slow, the weight costs more than the rotation: the peak is left as it is.
+    const Mechanism slow = gravityCrank(60);
+    Kinematics ks = loaded(slow);
+    opt.bodies = {slow.bodyNamed("crank")->id};
+    const BalanceResult rs = balanceShaking(ks, opt);
+    ASSERT_TRUE(rs.status.ok()) << rs.status.message;
+    const double ws = 2 * M_PI, beforeSlow = 1e-3 * ws * ws * 200 + 2 * 9.81;
+    EXPECT_NEAR(rs.peakBefore, beforeSlow, 1e-9 * beforeSlow);
+    EXPECT_LT(rs.counterweights[0].kgMm(), 1e-8 * 200);
+    EXPECT_LT(rs.counterweights[0].kg, 1e-8);
+    EXPECT_NEAR(rs.peakAfter, beforeSlow, 1e-9 * beforeSlow);
+  }
+}
+
+// The same crank with a constant 50 N upward load at its pivot: the frame feels 50 - 9.81 (2 +
+// m_c) N up plus the rotating part. Both vanish with m_c = 50 / 9.81 - 2 kg and s = -200 kg mm:
+// a counterweight heavier than 200 kg mm needs at R, so nearer the pivot (200 / m_c mm). The
+// peak after is 0.
+TEST(Balance, AHeavierCounterweightNearerThePivotWhenItsWeightHelps) {
+  Mechanism m = gravityCrank(600);
+  Load up;
+  up.point = m.pointNamed(m.bodyNamed("crank")->id, "O")->id;
+  up.forceN = Vec2(0, 50);
+  m.addLoad(up);
   Kinematics k = loaded(m);
   BalanceOptions opt;
-  opt.bodies = {c};
+  opt.bodies = {m.bodyNamed("crank")->id};
   const BalanceResult r = balanceShaking(k, opt);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
-  EXPECT_LT((r.counterweights[0].staticMoment - Vec2(-200, 0)).norm(), 1e-9 * 200);
-  EXPECT_NEAR(r.peakAfter, 2 * 9.81, 1e-9 * 19.62);
-  const std::optional<double> weighed = peakWithWeight(k, opt, r);
-  ASSERT_TRUE(weighed);
-  EXPECT_NEAR(*weighed, 4 * 9.81, 1e-9 * 39.24);
-  // Without gravity there is nothing to tell apart.
-  m.gravity.reset();
-  Kinematics free = loaded(m);
-  const BalanceResult r0 = balanceShaking(free, opt);
-  EXPECT_EQ(peakWithWeight(free, opt, r0), r0.peakAfter);
+  const double mc = 50 / 9.81 - 2;
+  EXPECT_LT((r.counterweights[0].staticMoment - Vec2(-200, 0)).norm(), 1e-7 * 200);
+  EXPECT_NEAR(r.counterweights[0].kg, mc, 1e-7 * mc);
+  EXPECT_NEAR(r.counterweights[0].radiusMm(), 200 / mc, 1e-6);
+  EXPECT_LT(r.peakAfter, 1e-7 * r.peakBefore);
+  // Applied as a mass, the design shakes its frame with what the balance said.
+  addCounterweights(m, r.counterweights);
+  Kinematics b = loaded(m);
+  for (double deg = 0; deg < 360; deg += 13) {
+    ASSERT_TRUE(b.moveTo(deg).ok());
+    Vec2 F;
+    double M;
+    shaking(b, F, M);
+    EXPECT_LT(F.norm(), 1e-7 * r.peakBefore) << deg;
+  }
 }
 
 }  // namespace

@@ -16,9 +16,10 @@ namespace {
 
 constexpr double kDeg = M_PI / 180;
 
-// The shaking force at one crank angle, and what each counterweight's static moment adds to it:
-// F = F0 + sum A_k s_k, A_k = 1e-3 (omega^2 I - alpha perp) R(theta) (N per kg mm) for a point
-// mass turning about a fixed pivot with its body.
+// The shaking force at one crank angle, and what each counterweight adds to it:
+// F = F0 + sum (A_k s_k + m_k g), A_k = 1e-3 (omega^2 I - alpha perp) R(theta) (N per kg mm) for
+// a point mass turning about a fixed pivot with its body, g its weight per kg (the shaking force
+// is sum m (g - a): a mass at rest on the frame adds m g).
 struct Sample {
   double deg = 0;
   Vec2 F0 = Vec2::Zero();
@@ -48,12 +49,30 @@ class Balancer {
   // highest first.
   std::vector<Peak> peaks(const std::vector<double>& x, Status& status);
   void addRows(ChebyshevLP& lp, const Sample& s, const Vec2& F);
+  void addTangent(ChebyshevLP& lp, int k, const Vec2& d);
+  bool cutsAdded(ChebyshevLP& lp, const std::vector<double>& x);
+  bool solve(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r);
   bool exchange(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r);
+  void finish(std::vector<double>& x, BalanceResult& r);
 
   Kinematics work_;
   const BalanceOptions& opt_;
+  Vec2 g_ = Vec2::Zero();          // N per kg of counterweight: its weight on the frame
+  std::vector<double> maxRadius_;  // mm, each counterweight's R
   std::vector<Sample> samples_;
 };
+
+// Each counterweight's unknowns: its static moment (kg mm) and its mass (kg), then t.
+constexpr int kUnknowns = 3;
+int sx(int k) {
+  return kUnknowns * k;
+}
+int kgOf(int k) {
+  return kUnknowns * k + 2;
+}
+Vec2 momentOf(const std::vector<double>& x, int k) {
+  return Vec2(x[sx(k)], x[sx(k) + 1]);
+}
 
 bool Balancer::pivots(BalanceResult& r) {
   const Mechanism& m = work_.mechanism();
@@ -84,6 +103,17 @@ bool Balancer::pivots(BalanceResult& r) {
                                   "moment is measured from that pivot");
       return false;
     }
+    const Vec2 at = m.point(c.pivot)->pos;
+    auto reach = [&](const Vec2& p) { c.maxRadiusMm = std::max(c.maxRadiusMm, (p - at).norm()); };
+    for (const Point& p : m.points)
+      if (p.body == b) reach(p.pos);
+    for (const Slot& sl : m.slots)
+      if (sl.body == b) {
+        reach(sl.p0);
+        reach(sl.p1);
+        if (sl.mid) reach(*sl.mid);
+      }
+    if (!(c.maxRadiusMm > 1e-9)) c.maxRadiusMm = 20;
     r.counterweights.push_back(c);
   }
   return true;
@@ -109,7 +139,8 @@ bool Balancer::sampleAt(double deg, Sample& s, Status& status) {
 
 Vec2 Balancer::force(const Sample& s, const std::vector<double>& x) const {
   Vec2 F = s.F0;
-  for (size_t k = 0; k < s.A.size(); ++k) F += s.A[k] * Vec2(x[2 * k], x[2 * k + 1]);
+  for (size_t k = 0; k < s.A.size(); ++k)
+    F += s.A[k] * momentOf(x, static_cast<int>(k)) + x[kgOf(static_cast<int>(k))] * g_;
   return F;
 }
 
@@ -164,45 +195,74 @@ void Balancer::addRows(ChebyshevLP& lp, const Sample& s, const Vec2& F) {
         dirs.push_back(Vec2(std::cos(j * M_PI / 4), std::sin(j * M_PI / 4)));
     }
   }
-  std::vector<double> c(2 * s.A.size());
+  std::vector<double> c(kUnknowns * s.A.size());
   for (const Vec2& e : dirs) {
     for (size_t k = 0; k < s.A.size(); ++k) {
       const Vec2 a = s.A[k].transpose() * e;
-      c[2 * k] = a.x();
-      c[2 * k + 1] = a.y();
+      const int i = static_cast<int>(k);
+      c[sx(i)] = a.x();
+      c[sx(i) + 1] = a.y();
+      c[kgOf(i)] = e.dot(g_);
     }
     lp.addRow(c.data(), -e.dot(s.F0));
   }
 }
 
-// Solves, finds the true peak and the bounds' violations, adds them; true when they agree.
-bool Balancer::exchange(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r) {
+// d . s_k <= R_k m_k: a tangent of the cone |s_k| <= R_k m_k, which contains it (so the
+// programme stays a relaxation, its optimum a lower bound).
+void Balancer::addTangent(ChebyshevLP& lp, int k, const Vec2& d) {
+  lp.addLimit({{sx(k), d.x()}, {sx(k) + 1, d.y()}, {kgOf(k), -maxRadius_[k]}}, 0);
+}
+
+// The cone's and the bound's tangents where the solution leaves them by more than the programme
+// can resolve (CLP keeps rows to its primal tolerance, 1e-11 absolute: asking for less added
+// the same tangent again at every round until the round limit). True when one was added.
+bool Balancer::cutsAdded(ChebyshevLP& lp, const std::vector<double>& x) {
+  bool added = false;
+  for (int k = 0; k < static_cast<int>(opt_.bodies.size()); ++k) {
+    const Vec2 s = momentOf(x, k);
+    const double slack = std::max(opt_.tolerance * s.norm(), 1e-10);
+    if (opt_.maxKgMm && s.norm() - *opt_.maxKgMm > slack) {
+      lp.addLimit({{sx(k), s.normalized().x()}, {sx(k) + 1, s.normalized().y()}}, *opt_.maxKgMm);
+      added = true;
+    }
+    // Without gravity the mass is set from the moment at the end: only the moment counts.
+    if (g_.norm() > 0 && s.norm() - maxRadius_[k] * x[kgOf(k)] > slack) {
+      addTangent(lp, k, s.normalized());
+      added = true;
+    }
+  }
+  return added;
+}
+
+// The programme's optimum, and of its solutions the lightest where the mass is free (the weight
+// across the measured component): a vertex's mass would be arbitrary.
+bool Balancer::solve(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r) {
   double t = 0;
   if (!lp.solve(x, t)) {
     r.status = Status::failure(StatusCode::NotConverged, "the linear programme has no optimum");
-    return true;
+    return false;
   }
   r.lowerBound = t;
-  bool done = true;
-  // A bound is kept when it is exceeded by no more than the programme can resolve: CLP keeps
-  // rows to its primal tolerance (1e-11, absolute), so asking for less added the same tangent
-  // again at every round until the round limit.
-  if (opt_.maxKgMm)
-    for (size_t k = 0; k < opt_.bodies.size(); ++k) {
-      const Vec2 s(x[2 * k], x[2 * k + 1]);
-      if (s.norm() - *opt_.maxKgMm > std::max(opt_.tolerance * *opt_.maxKgMm, 1e-10)) {
-        lp.addBound(static_cast<int>(k), s.normalized(), *opt_.maxKgMm);
-        done = false;
-      }
-    }
+  if (g_.norm() > 0) {
+    std::vector<double> w(x.size(), 0.0);
+    for (int k = 0; k < static_cast<int>(opt_.bodies.size()); ++k) w[kgOf(k)] = 1;
+    lp.solveLeast(w, t, x);
+  }
+  return true;
+}
+
+// Solves, finds the true peak and the cone's and bounds' violations, adds them; true when they
+// agree.
+bool Balancer::exchange(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r) {
+  if (!solve(lp, x, r)) return true;
+  bool done = !cutsAdded(lp, x);
   const std::vector<Peak> found = peaks(x, r.status);
   if (!r.status.ok() || found.empty()) return true;
-  r.peakAfter = found[0].value;
-  r.peakAfterDeg = found[0].deg;
   // Every peak above the programme's optimum joins it (its exact angle, and direction for |F|).
   const double tol = opt_.tolerance * std::max(r.peakBefore, 1e-300);
   for (const Peak& p : found) {
-    if (p.value - t <= tol) break;
+    if (p.value - r.lowerBound <= tol) break;
     Sample s;
     if (!sampleAt(p.deg, s, r.status)) return true;
     addRows(lp, s, p.F);
@@ -230,16 +290,18 @@ BalanceResult Balancer::run() {
     return r;
   }
   if (!pivots(r)) return r;
+  for (const Counterweight& c : r.counterweights) maxRadius_.push_back(c.maxRadiusMm);
+  g_ = work_.mechanism().gravity.value_or(Vec2::Zero());
   samples_.resize(opt_.steps);
   for (int i = 0; i < opt_.steps; ++i)
     if (!sampleAt(360.0 * i / opt_.steps, samples_[i], r.status)) return r;
   const int n = static_cast<int>(opt_.bodies.size());
-  std::vector<double> x(2 * n, 0.0);
+  std::vector<double> x(kUnknowns * n, 0.0);
   const std::vector<Peak> before = peaks(x, r.status);
   if (!r.status.ok() || before.empty()) return r;
   r.peakBefore = before[0].value;
   r.peakBeforeDeg = before[0].deg;
-  ChebyshevLP lp(2 * n);
+  ChebyshevLP lp(kUnknowns * n);
   // The first programme on at most 360 of the samples: the exchange adds every peak above its
   // optimum (the samples' local maxima, refined on the exact motion) until none is left, so the
   // answer and its certificate are the same, and the simplex works on hundreds of rows, not
@@ -247,19 +309,40 @@ BalanceResult Balancer::run() {
   const int stride = std::max(1, opt_.steps / 360);
   for (int i = 0; i < opt_.steps; i += stride)
     addRows(lp, samples_[i], opt_.measure == BalanceMeasure::Force ? Vec2::Zero() : samples_[i].F0);
-  if (opt_.maxKgMm)
-    for (int k = 0; k < n; ++k)
-      for (int j = 0; j < 16; ++j)
-        lp.addBound(k, Vec2(std::cos(j * M_PI / 8), std::sin(j * M_PI / 8)), *opt_.maxKgMm);
+  for (int k = 0; k < n; ++k) {
+    lp.setLowerBound(kgOf(k), 0);
+    for (int j = 0; j < 16; ++j) {
+      const Vec2 d(std::cos(j * M_PI / 8), std::sin(j * M_PI / 8));
+      addTangent(lp, k, d);
+      if (opt_.maxKgMm) lp.addLimit({{sx(k), d.x()}, {sx(k) + 1, d.y()}}, *opt_.maxKgMm);
+    }
+  }
   for (r.exchanges = 1; r.exchanges <= 200; ++r.exchanges)
     if (exchange(lp, x, r)) break;
   r.angles = lp.rows();
-  for (int k = 0; k < n; ++k) {
-    Vec2 s(x[2 * k], x[2 * k + 1]);
-    if (opt_.maxKgMm && s.norm() > *opt_.maxKgMm) s *= *opt_.maxKgMm / s.norm();
-    r.counterweights[k].staticMoment = s;
-  }
+  if (r.status.ok()) finish(x, r);
   return r;
+}
+
+// The counterweights put exactly inside their bounds (the tangent rows let them out by the
+// programme's tolerance), and the peak they leave found for them as they will be applied.
+void Balancer::finish(std::vector<double>& x, BalanceResult& r) {
+  for (int k = 0; k < static_cast<int>(r.counterweights.size()); ++k) {
+    Vec2 s = momentOf(x, k);
+    if (opt_.maxKgMm && s.norm() > *opt_.maxKgMm) s *= *opt_.maxKgMm / s.norm();
+    // Without gravity the mass does not enter: the lightest, at the farthest radius.
+    const double least = s.norm() / maxRadius_[k];
+    double kg = g_.norm() > 0 ? std::max(x[kgOf(k)], least) : least;
+    x[sx(k)] = s.x();
+    x[sx(k) + 1] = s.y();
+    x[kgOf(k)] = kg;
+    r.counterweights[k].staticMoment = s;
+    r.counterweights[k].kg = kg;
+  }
+  const std::vector<Peak> found = peaks(x, r.status);
+  if (!r.status.ok() || found.empty()) return;
+  r.peakAfter = found[0].value;
+  r.peakAfterDeg = found[0].deg;
 }
 
 BalanceResult balanceShaking(const Kinematics& k, const BalanceOptions& opt) {
@@ -270,13 +353,9 @@ void addCounterweights(Mechanism& m, const std::vector<Counterweight>& cws) {
   for (const Counterweight& c : cws) {
     Body* b = m.body(c.body);
     const Point* pivot = m.point(c.pivot);
-    if (!b || !pivot || c.kgMm() == 0) continue;
-    double radius = 0;
-    for (const Point& p : m.points)
-      if (p.body == c.body) radius = std::max(radius, (p.pos - pivot->pos).norm());
-    if (!(radius > 0)) radius = 20;
-    const double mc = c.kgMm() / radius;
-    const Vec2 at = pivot->pos + radius * c.staticMoment.normalized();
+    if (!b || !pivot || !(c.kg > 0)) continue;
+    const double mc = c.kg;
+    const Vec2 at = pivot->pos + c.staticMoment / mc;
     Mass mass = b->mass.value_or(Mass{});
     const double total = mass.kg + mc;
     const Vec2 com = (mass.kg * mass.com + mc * at) / total;
@@ -286,28 +365,6 @@ void addCounterweights(Mechanism& m, const std::vector<Counterweight>& cws) {
     mass.counterweights.push_back({mc, at});
     b->mass = mass;
   }
-}
-
-std::optional<double> peakWithWeight(const Kinematics& k, const BalanceOptions& opt,
-                                     const BalanceResult& r, Status* why) {
-  if (!k.valid() || !k.mechanism().gravity) return r.peakAfter;
-  Mechanism m = k.mechanism();
-  addCounterweights(m, r.counterweights);
-  Kinematics balanced = k;
-  Status s = balanced.edit(m);
-  // The peak as it is: the same programme allowed no counterweight at all (its peak before).
-  BalanceOptions as = opt;
-  as.maxKgMm = 0;
-  BalanceResult b;
-  if (s.ok()) {
-    b = balanceShaking(balanced, as);
-    s = b.status;
-  }
-  if (!s.ok()) {
-    if (why) *why = s;
-    return std::nullopt;
-  }
-  return b.peakBefore;
 }
 
 }  // namespace linkage

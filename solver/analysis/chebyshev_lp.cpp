@@ -1,6 +1,8 @@
 #include "analysis/chebyshev_lp.h"
 
 #include <ClpSimplex.hpp>
+#include <algorithm>
+#include <cmath>
 
 namespace linkage {
 
@@ -46,10 +48,18 @@ void ChebyshevLP::addRow(const double* c, double rhs) {
   pending(cols.data(), e.data(), n_ + 1, rhs);
 }
 
-void ChebyshevLP::addBound(int k, const Vec2& d, double limit) {
-  const int cols[2] = {2 * k, 2 * k + 1};
-  const double e[2] = {d.x(), d.y()};
-  pending(cols, e, 2, limit);
+void ChebyshevLP::addLimit(const std::vector<std::pair<int, double>>& terms, double limit) {
+  std::vector<int> cols;
+  std::vector<double> e;
+  for (const auto& [i, c] : terms) {
+    cols.push_back(i);
+    e.push_back(c);
+  }
+  pending(cols.data(), e.data(), static_cast<int>(cols.size()), limit);
+}
+
+void ChebyshevLP::setLowerBound(int i, double lower) {
+  lp_->setColumnLower(i, lower);
 }
 
 int ChebyshevLP::rows() const {
@@ -65,6 +75,25 @@ bool ChebyshevLP::solve(std::vector<double>& x, double& t) {
   x.assign(s, s + n_);
   t = s[n_];
   return true;
+}
+
+bool ChebyshevLP::solveLeast(const std::vector<double>& weights, double t, std::vector<double>& x) {
+  flush();
+  // t held at its optimum (and CLP's tolerance above it), the objective moved to the weights;
+  // both put back for the next exchange.
+  lp_->setColumnUpper(n_, t + std::max(1e-12, 1e-12 * std::abs(t)));
+  lp_->setObjectiveCoefficient(n_, 0);
+  for (int i = 0; i < n_; ++i) lp_->setObjectiveCoefficient(i, weights[i]);
+  lp_->primal();
+  const bool ok = lp_->isProvenOptimal();
+  if (ok) {
+    const double* s = lp_->primalColumnSolution();
+    x.assign(s, s + n_);
+  }
+  for (int i = 0; i < n_; ++i) lp_->setObjectiveCoefficient(i, 0);
+  lp_->setObjectiveCoefficient(n_, 1);
+  lp_->setColumnUpper(n_, COIN_DBL_MAX);
+  return ok;
 }
 
 }  // namespace linkage

@@ -1,10 +1,11 @@
 // The linear programme of a Chebyshev (minimax) fit, on COIN-OR CLP: minimise t over x and t
-// subject to rows  c . x - t <= rhs  and bounds  d . (x_2k, x_2k+1) <= limit,  added as the
-// exchange finds them and re-solved from the last basis (the dual simplex: a row added keeps
-// the old optimum dual feasible).
+// subject to rows  c . x - t <= rhs  and plain rows  a . x <= limit,  added as the exchange finds
+// them and re-solved from the last basis (the dual simplex: a row added keeps the old optimum
+// dual feasible). Unknowns may be bounded below (a counterweight's mass is never negative).
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "linkage/geometry.h"
@@ -18,9 +19,16 @@ class ChebyshevLP {
   explicit ChebyshevLP(int unknowns);
   ~ChebyshevLP();
   void addRow(const double* c, double rhs);
-  void addBound(int k, const Vec2& d, double limit);
+  // sum of coefficient * x[index] <= limit
+  void addLimit(const std::vector<std::pair<int, double>>& terms, double limit);
+  void setLowerBound(int i, double lower);
   // False when the programme has no optimum (it is unbounded: no rows yet).
   bool solve(std::vector<double>& x, double& t);
+  // Of the solutions whose t is at most `t` (the optimum solve() found), one that minimises
+  // sum weights[i] x[i]: where the peak does not depend on some unknowns (a counterweight's
+  // mass when its weight is across the measured component), the lightest, not a vertex's
+  // arbitrary value. False (x untouched) when the second programme fails.
+  bool solveLeast(const std::vector<double>& weights, double t, std::vector<double>& x);
   int rows() const;
 
  private:

@@ -19,6 +19,11 @@ std::string formatNumber(double v, int significant) {
   return std::string(buf, end);
 }
 
+std::string formatShown(double v, double scale, int significant) {
+  if (std::isfinite(v) && std::abs(v) <= 1e-9 * std::abs(scale)) return "0";
+  return formatNumber(v, significant);
+}
+
 std::optional<double> parseNumber(std::string_view text) {
   // from_chars refuses a leading '+', people type it; "+-1" and "++1" stay refused below.
   if (!text.empty() && text.front() == '+') {

@@ -117,12 +117,18 @@ QWidget* BalanceDialog::buildChoices() {
   compute_->setDefault(true);
   connect(compute_, &QPushButton::clicked, this, &BalanceDialog::compute);
   column->addWidget(compute_);
-  table_ = new QTableWidget(0, 3);
-  table_->setHorizontalHeaderLabels({tr("Body"), tr("|s| [kg mm]"), tr("Angle [deg]")});
-  table_->horizontalHeaderItem(2)->setToolTip(
+  table_ = new QTableWidget(0, 5);
+  table_->setHorizontalHeaderLabels(
+      {tr("Body"), tr("|s| [kg mm]"), tr("Mass [kg]"), tr("At [mm]"), tr("Angle [°]")});
+  table_->horizontalHeaderItem(1)->setToolTip(tr("Static moment: mass times radius"));
+  table_->horizontalHeaderItem(3)->setToolTip(
+      tr("Radius from the pivot: at most the body's farthest drawn point (less under gravity "
+         "where a heavier mass nearer the pivot weighs in better)"));
+  table_->horizontalHeaderItem(4)->setToolTip(
       tr("Direction of the counterweight from the pivot, in the body's drawing"));
   table_->verticalHeader()->hide();
-  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setMinimumHeight(90);
   column->addWidget(table_, 1);
@@ -141,7 +147,7 @@ void BalanceDialog::buildWidgets() {
   auto* top = new QVBoxLayout(this);
   auto* row = new QHBoxLayout;
   QWidget* left = buildChoices();
-  left->setFixedWidth(330);
+  left->setFixedWidth(400);
   row->addWidget(left);
   plot_ = new QCustomPlot;
   plot_->setMinimumSize(500, 300);
@@ -243,25 +249,21 @@ void BalanceDialog::forget(const QString& why) {
 
 namespace {
 
-// The shaking force before and after over a turn; after without the counterweights' own
-// weight, which the balance leaves out (constant: it does not shake the frame).
+// The shaking force before and after over a turn, after with the counterweights as Apply adds
+// them (their weight included, as the balance counts it).
 BalanceCurves curvesOf(const Kinematics& k, const BalanceResult& r) {
   BalanceCurves c;
   const ForceSamples before = sampleForces(k);
   Mechanism m = k.mechanism();
-  double added = 0;
-  for (const Body& b : m.bodies) added -= b.mass ? b.mass->kg : 0;
   addCounterweights(m, r.counterweights);
-  for (const Body& b : m.bodies) added += b.mass ? b.mass->kg : 0;
   Kinematics balanced = k;
   if (!balanced.edit(m).ok()) return c;
   const ForceSamples after = sampleForces(balanced);
-  const Vec2 weight = added * m.gravity.value_or(Vec2::Zero());
   const size_t n = std::min(before.size(), after.size());
   for (size_t i = 0; i < n; ++i) {
     c.crankDeg.push_back(before.crankDeg[i]);
     c.before.push_back(before.shakingN[i]);
-    c.after.push_back(after.shakingN[i] - weight);
+    c.after.push_back(after.shakingN[i]);
   }
   return c;
 }
@@ -298,8 +300,6 @@ bool BalanceDialog::compute() {
     return false;
   }
   result_ = r;
-  weighed_.reset();
-  if (doc_->design().gravity) weighed_ = peakWithWeight(k, o, r);
   const BalanceCurves curves = curvesOf(k, r);
   drawBalance(plot_, curves, o.measure, r, crankAxisLabel(doc_->design()));
   showResult();
@@ -310,19 +310,29 @@ void BalanceDialog::showResult() {
   const BalanceResult& r = *result_;
   const Mechanism& m = doc_->design();
   table_->setRowCount(static_cast<int>(r.counterweights.size()));
-  int nonzero = 0;
+  int placed = 0;
   for (int i = 0; i < table_->rowCount(); ++i) {
     const Counterweight& c = r.counterweights[i];
     const Body* b = m.body(c.body);
-    nonzero += c.kgMm() > 0;
-    const QString cells[3] = {b ? QString::fromStdString(b->name) : QString("?"), number(c.kgMm()),
+    placed += !c.none();
+    const QString cells[5] = {b ? QString::fromStdString(b->name) : QString("?"),
+                              number(c.kgMm(), 4), number(c.kg, 4), number(c.radiusMm(), 4),
                               c.kgMm() > 0 ? QString::number(c.angleDeg(), 'f', 2) : "\u2013"};
-    for (int col = 0; col < 3; ++col) {
+    for (int col = 0; col < 5; ++col) {
       auto* item = new QTableWidgetItem(cells[col]);
       if (col > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
       table_->setItem(i, col, item);
     }
   }
+  summary_->setText(headline(r));
+  // The programme may keep the peak as it is (no counterweight, or one that changes nothing
+  // worth a part): then nothing is offered as an improvement.
+  const bool better = placed > 0 && r.peakAfter < r.peakBefore - kRoundingFraction * r.peakBefore;
+  applyButton()->setEnabled(better);
+  if (!better) say(tr("Balanced as it is: no counterweight lowers the peak."), false);
+}
+
+QString BalanceDialog::headline(const BalanceResult& r) const {
   const QString what = measure_->currentText();
   // A peak after that is rounding next to the peak before is an exact cancellation: 0, at no
   // angle in particular.
@@ -333,22 +343,14 @@ void BalanceDialog::showResult() {
                             : tr("<b>%1 N</b> at %2° (%3 % lower)")
                                   .arg(number(r.peakAfter), QString::number(r.peakAfterDeg, 'f', 2),
                                        QString::number(drop, 'f', 1));
-  summary_->setText(tr("Peak of %1 before: <b>%2 N</b> at %3°<br>after: %4<br>Certified gap %5 "
-                       "N: no counterweights%6 do better than %7 N.")
-                        .arg(what, number(r.peakBefore), QString::number(r.peakBeforeDeg, 'f', 2),
-                             after, number(std::max(0.0, r.gap()), 2),
-                             bounded_->isChecked() ? tr(" within the bound") : QString(),
-                             number(cleaned(r.lowerBound, r.peakBefore))));
-  // Applied, the counterweights are masses that also weigh: say what the Forces panel will
-  // show then, a peak the curves here (without that constant weight) do not.
-  if (weighed_ && nonzero > 0 &&
-      std::abs(*weighed_ - r.peakAfter) > kRoundingFraction * r.peakBefore)
-    summary_->setText(summary_->text() +
-                      tr("<br>Under gravity the counterweights also weigh (a constant force the "
-                         "balance leaves out): applied, the peak is %1 N.")
-                          .arg(number(*weighed_)));
-  applyButton()->setEnabled(nonzero > 0);
-  if (nonzero == 0) say(tr("Balanced as it is: no counterweight lowers the peak."), false);
+  const bool weighs = doc_->design().gravity.has_value();
+  return tr("Peak of %1 before: <b>%2 N</b> at %3°<br>after, applied%4: %5<br>Certified gap %6 "
+            "N: no counterweights%7 do better than %8 N.")
+      .arg(what, number(r.peakBefore), QString::number(r.peakBeforeDeg, 'f', 2),
+           weighs ? tr(" (their weight included)") : QString(), after,
+           number(std::max(0.0, r.gap()), 2),
+           bounded_->isChecked() ? tr(" within the bounds") : QString(),
+           number(cleaned(r.lowerBound, r.peakBefore)));
 }
 
 bool BalanceDialog::apply() {
@@ -356,7 +358,7 @@ bool BalanceDialog::apply() {
   Mechanism m = doc_->design();
   addCounterweights(m, result_->counterweights);
   int n = 0;
-  for (const Counterweight& c : result_->counterweights) n += c.kgMm() > 0;
+  for (const Counterweight& c : result_->counterweights) n += !c.none();
   applying_ = true;
   commitEdit(doc_,
              n == 1 ? tr("Balance: 1 counterweight") : tr("Balance: %1 counterweights").arg(n), m);

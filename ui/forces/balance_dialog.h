@@ -2,9 +2,11 @@
 // (linkage/balance.h: exact, with a certified gap). The user picks the bodies pinned to the
 // ground that take one, the measure (fx, fy or |F|), an optional bound on each |s| (kg mm) and
 // the samples of the first programme; Compute runs balanceShaking (tens of milliseconds) and
-// shows the counterweights, the peak before and after with their crank angles, the gap, and the
-// shaking force before and after (curves and polar diagrams). Apply adds the counterweights to
-// the bodies' masses (addCounterweights) as one undoable edit.
+// shows the counterweights (static moment, mass, radius, angle), the peak before and after with
+// their crank angles, the gap, and the shaking force before and after (curves and polar
+// diagrams), after as Apply leaves it: under gravity with the counterweights' weight, which the
+// balance minimises with the rest. Apply adds the counterweights to the bodies' masses
+// (addCounterweights) as one undoable edit; it is offered only when the peak goes down.
 #pragma once
 
 #include <QDialog>
@@ -61,12 +63,12 @@ class BalanceDialog : public QDialog {
   QWidget* buildChoices();
   void offerBodies();
   void showResult();
+  QString headline(const BalanceResult& r) const;
   void forget(const QString& why);
   void say(const QString& text, bool error);
 
   QPointer<Document> doc_;
   std::optional<BalanceResult> result_;
-  std::optional<double> weighed_;  // under gravity: the peak with the counterweights' weight
   bool applying_ = false;
 
   std::vector<std::pair<BodyId, QCheckBox*>> bodies_;

@@ -1,12 +1,17 @@
-// Counterweights that balance the shaking force exactly: the shaking force is linear in the
-// counterweights' static moments s_k = m_k u_k (kg mm, u_k fixed in body k from the point where
-// it is pinned to the ground), so minimising its peak over the cycle is a linear programme (a
-// Chebyshev approximation), solved by COIN-OR CLP on sampled angles, then refined to the
-// continuous optimum by exchange: the true peak of the solution is found between the samples by
-// Brent's method on the exact motion, its angle (and, for |F|, its direction) added to the
-// programme, until the peak and the programme's optimum (a lower bound: no counterweights
-// within the bound do better on the angles used) agree. Their difference is the certified gap.
-// A counterweight's own weight is left out (it does not shake the frame at constant speed).
+// Counterweights that balance the shaking force exactly, their own weight included. A
+// counterweight on body k is a point mass m_k at u_k from the point where the body is pinned to
+// the ground (u_k fixed in the body); what it adds to the shaking force is linear in its static
+// moment s_k = m_k u_k (kg mm: the inertia force of a point turning with the body) and in its
+// mass (its weight m_k g, a constant force on the frame). It may sit at most R_k from the pivot
+// (the farthest point or slot end drawn on the body), so |s_k| <= R_k m_k: a cone, convex.
+// Minimising the peak of the shaking force over the cycle is then a convex programme in (s, m):
+// linear rows at sampled angles (a Chebyshev approximation) and the cone by tangent rows that
+// contain it, solved by COIN-OR CLP, then refined to the continuous optimum by exchange: the true
+// peak of the solution is found between the samples by Brent's method on the exact motion, its
+// angle (and, for |F|, its direction) added to the programme, and the cone's tangent where the
+// solution leaves it, until the peak and the programme's optimum (a lower bound: no counterweights
+// within the bounds do better on the angles used) agree. Their difference is the certified gap.
+// No counterweight at all is one of the choices: the peak after is never above the peak before.
 #pragma once
 
 #include <optional>
@@ -30,16 +35,23 @@ struct Counterweight {
   BodyId body;
   PointId pivot;                     // the body's point pinned to the ground
   Vec2 staticMoment = Vec2::Zero();  // kg mm, in the body's sketch frame
+  double kg = 0;                     // its mass (its weight is part of the peak after)
+  double maxRadiusMm =
+      0;  // R: the farthest point or slot end drawn on the body from the pivot (20 mm when none)
   double kgMm() const { return staticMoment.norm(); }
+  // From the pivot: at most maxRadiusMm; less where a heavier mass nearer the pivot does better
+  // under gravity (0: a mass on the pivot itself).
+  double radiusMm() const { return kg > 0 ? staticMoment.norm() / kg : 0; }
   double angleDeg() const;  // of u in the body's sketch frame
+  bool none() const { return kg == 0 && kgMm() == 0; }
 };
 
 struct BalanceResult {
   Status status;  // BadModel naming the body or the option; the tracker's where it cannot turn
   std::vector<Counterweight> counterweights;
   double peakBefore = 0, peakBeforeDeg = 0;  // N, crank degrees
-  double peakAfter = 0, peakAfterDeg = 0;
-  double lowerBound = 0;  // the programme's optimum: the peak cannot go lower
+  double peakAfter = 0, peakAfterDeg = 0;    // with the counterweights as they are applied
+  double lowerBound = 0;                     // the programme's optimum: the peak cannot go lower
   double gap() const { return peakAfter - lowerBound; }
   int exchanges = 0;  // rounds of the exchange
   int angles = 0;     // angles the last programme used
@@ -48,16 +60,8 @@ struct BalanceResult {
 // k is not moved (copies of it are).
 BalanceResult balanceShaking(const Kinematics& k, const BalanceOptions& opt);
 
-// The counterweights as masses of their bodies: a point mass at the radius of the body's
-// farthest drawn point from its pivot (20 mm when it has none), combined with the body's own.
+// The counterweights as masses of their bodies: a point mass kg at pivot + staticMoment / kg,
+// combined with the body's own (and listed in Mass::counterweights).
 void addCounterweights(Mechanism& m, const std::vector<Counterweight>& c);
-
-// Under gravity a counterweight also weighs, which the balance leaves out (a static moment
-// m u fixes its mass only with a radius): the exact peak of the measure over the cycle of k's
-// mechanism with r's counterweights added as addCounterweights makes them (what `balance --out`
-// writes shakes with this). r.peakAfter without gravity; nullopt with `why` when it cannot be
-// found (the tracker's failure).
-std::optional<double> peakWithWeight(const Kinematics& k, const BalanceOptions& opt,
-                                     const BalanceResult& r, Status* why = nullptr);
 
 }  // namespace linkage
