@@ -31,12 +31,11 @@ std::vector<ui::CycleClearanceRow> clearanceRows(const Kinematics& k, int steps)
   ClearanceOptions opt;
   opt.steps = steps;
   for (const ClearanceWatch& w : m.timing.clearances) {
-    const ClearanceItem other = w.other ? ClearanceItem::of(w.other) : ClearanceItem::of(w.slot);
-    Clearance c = findClearance(k, ClearanceItem::of(w.point), other, opt);
+    Clearance c = findClearance(k, ClearancePart::of(w.point), w.other, opt);
     if (!c.status.ok()) continue;  // linkage-cli timing does not judge clearances
-    const std::string b = w.other ? m.pointLabel(w.other) : m.slotLabel(w.slot);
     out.push_back(
-        {QString::fromStdString(m.pointLabel(w.point) + " \u2013 " + b), std::move(c), w.minMm});
+        {QString::fromStdString(m.pointLabel(w.point) + " \u2013 " + m.partLabel(w.other)),
+         std::move(c), w.minMm});
   }
   return out;
 }

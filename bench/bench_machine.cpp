@@ -56,8 +56,8 @@ void cycleDiagram30(benchmark::State& state) {
 
 void clearanceOf(benchmark::State& state, Kinematics k, const char* a, const char* b) {
   const Mechanism& m = k.mechanism();
-  const ClearanceItem x = ClearanceItem::of(*m.findPoint(a)),
-                      y = ClearanceItem::of(*m.findPoint(b));
+  const ClearancePart x = ClearancePart::of(*m.findPoint(a)),
+                      y = ClearancePart::of(*m.findPoint(b));
   for (auto _ : state) {
     const Clearance c = findClearance(k, x, y);
     if (!c.status.ok()) std::abort();

@@ -140,18 +140,51 @@ TEST_F(MachineCli, ClearanceBadInputNamesTheArgument) {
   EXPECT_NE(r.err.find("--between"), std::string::npos) << r.err;
   r = run("clearance " + ex + " --between ground.needle ground.needle");
   EXPECT_EQ(r.exit, 2);
-  EXPECT_NE(r.err.find("two slots"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("two segments or slots"), std::string::npos) << r.err;
   r = run("clearance " + ex + " --between hook.K needlebar.N --min x");
   EXPECT_EQ(r.exit, 2);
   EXPECT_NE(r.err.find("--min"), std::string::npos) << r.err;
   r = run("clearance " + ex + " --between hook.K hook.K");
   EXPECT_EQ(r.exit, 2);
-  EXPECT_NE(r.err.find("a point to itself"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("a point's clearance to itself"), std::string::npos) << r.err;
   r = run("clearance " + ex + " --between hook.K needlebar.N --min -1");
   EXPECT_EQ(r.exit, 2);
   EXPECT_NE(r.err.find("--min: must be 0 or more"), std::string::npos) << r.err;
   EXPECT_EQ(run("clearance " + ex).exit, 2);
   EXPECT_EQ(run("clearance --help").exit, 0);
+}
+
+// Issue 26: the part is named as the designer sees it (the needle between its point N and the
+// bar's pin B), the result says what was measured and where the hook point meets the needle,
+// and the help says what the program does beyond a part's ends (the nearer end; it said the
+// line went on).
+TEST_F(MachineCli, ClearanceToASegmentSaysWhatItMeasuredAndWhereTheyMeet) {
+  const CliResult r = run("clearance lockstitch-arm-shaft --between hook.K needlebar.N-B");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const std::vector<std::string> lines = r.lines();
+  ASSERT_EQ(lines.size(), 4u) << r.out;
+  EXPECT_EQ(lines[3].substr(0, 10), "closest,20");
+  EXPECT_EQ(lines[3].substr(lines[3].size() - 2), ",0");
+  EXPECT_EQ(lines[2], "min" + lines[3].substr(7));  // the closest is one of the minima
+  EXPECT_NE(r.err.find("from the point hook.K to the segment needlebar.N-B"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("meets the segment needlebar.N-B at crank 206.565 deg, 4.7383 mm from "
+                       "needlebar.N"),
+            std::string::npos)
+      << r.err;
+  const CliResult help = run("clearance --help");
+  EXPECT_NE(help.out.find("beyond them to the nearer"), std::string::npos) << help.out;
+  EXPECT_EQ(help.out.find("continued beyond"), std::string::npos) << help.out;
+  // A block's point in its own guide: the distance is 0 on the guide, and the closest is the
+  // minimum where it comes onto it, not crank 0.
+  const CliResult along = run("clearance lockstitch-arm-shaft --between needlebar.N ground.needle");
+  ASSERT_EQ(along.exit, 0) << along.err;
+  ASSERT_EQ(along.lines().size(), 3u) << along.out;
+  EXPECT_EQ(along.lines()[2], "closest" + along.lines()[1].substr(3));
+  EXPECT_NE(along.err.find("runs along the line of the slot ground.needle: on it (distance 0) "
+                           "from crank 281.462 to 78.538 (through 360) deg"),
+            std::string::npos)
+      << along.err;
 }
 
 // Where the offset slider-crank's block height crosses V (closed form, bisected).

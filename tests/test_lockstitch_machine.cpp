@@ -104,14 +104,14 @@ TEST(LockstitchMachine, HookPointClearanceToTheNeedle) {
   Kinematics arm;
   ASSERT_TRUE(arm.load(test::example("lockstitch-arm-shaft")).ok());
   const Mechanism& m = k.mechanism();
-  const Clearance c = findClearance(k, ClearanceItem::of(*m.findPoint("hook.K")),
-                                    ClearanceItem::of(*m.findPoint("needlebar.N")));
+  const Clearance c = findClearance(k, ClearancePart::of(*m.findPoint("hook.K")),
+                                    ClearancePart::of(*m.findPoint("needlebar.N")));
   ASSERT_TRUE(c.status.ok());
   ASSERT_EQ(c.minima.size(), 2u);
   EXPECT_GT(c.closest.crankDeg, 180);
   const Mechanism& n = arm.mechanism();
-  const Clearance alone = findClearance(arm, ClearanceItem::of(*n.findPoint("hook.K")),
-                                        ClearanceItem::of(*n.findPoint("needlebar.N")));
+  const Clearance alone = findClearance(arm, ClearancePart::of(*n.findPoint("hook.K")),
+                                        ClearancePart::of(*n.findPoint("needlebar.N")));
   EXPECT_NEAR(c.closest.crankDeg, alone.closest.crankDeg, 1e-9);
   EXPECT_NEAR(c.closest.distance, alone.closest.distance, 1e-9 * 200);
   EXPECT_LT(c.closest.distance, 5);

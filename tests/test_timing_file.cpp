@@ -25,7 +25,8 @@ const char* kTiming = R"({
   "windows": ["needle=needlebar.N:y<-185", "feed=feedbar.T:y>-185"],
   "conflicts": [["needle", "feed"]],
   "clearances": [{"between": ["hook.K", "needlebar.N"], "min_mm": 0.1},
-                 {"between": ["ground.plate", "hook.K"]}],
+                 {"between": ["ground.plate", "hook.K"]},
+                 {"between": ["needlebar.N-B", "hook.K"], "min_mm": 0.5}],
   "note": "kept"
 })";
 
@@ -44,15 +45,19 @@ TEST(TimingFile, ReadsWritesAndReadsBackTheSame) {
   EXPECT_EQ(t.windows[0].level, -185);
   EXPECT_EQ(t.windows[1].output.point, *m.findPoint("feedbar.T"));
   ASSERT_EQ(t.conflicts.size(), 1u);
-  ASSERT_EQ(t.clearances.size(), 2u);
+  ASSERT_EQ(t.clearances.size(), 3u);
   EXPECT_EQ(t.clearances[0].minMm, 0.1);
-  // A slot named first is the second side: the point comes first.
+  // A slot or a segment named first is the second side: the point comes first.
   EXPECT_EQ(t.clearances[1].point, *m.findPoint("hook.K"));
-  EXPECT_TRUE(t.clearances[1].slot);
+  EXPECT_TRUE(t.clearances[1].other.isSlot());
+  EXPECT_EQ(t.clearances[2].point, *m.findPoint("hook.K"));
+  EXPECT_EQ(t.clearances[2].other,
+            ClearancePart::segment(*m.findPoint("needlebar.N"), *m.findPoint("needlebar.B")));
   EXPECT_EQ(t.extras, R"({"note":"kept"})");
   const std::string text = serializeMechanism(m);
   EXPECT_NE(text.find(R"("needle=needlebar.N:y<-185")"), std::string::npos) << text;
   EXPECT_NE(text.find(R"("hook.K", "ground.plate")"), std::string::npos) << text;
+  EXPECT_NE(text.find(R"("hook.K", "needlebar.N-B")"), std::string::npos) << text;
   LoadResult back = parseMechanism(text);
   ASSERT_TRUE(back.mechanism) << back.error;
   EXPECT_EQ(mechanismDifference(m, *back.mechanism), "");
@@ -79,7 +84,7 @@ TEST(TimingFile, RefusesWithThePlaceNamed) {
        "timing.conflicts[0]: a window cannot conflict with itself"},
       {R"({"conflicts": [["n"]]})", "timing.conflicts[0]: expected two window names"},
       {R"({"clearances": [{"between": ["ground.plate", "ground.needle"]}]})",
-       "timing.clearances[0].between: two slots"},
+       "timing.clearances[0].between: two segments or slots"},
       {R"({"clearances": [{"between": ["ground.O", "ground.plate"]}]})",
        "timing.clearances[0]: the point ground.O is on the body of the slot ground.plate"},
       {R"({"clearances": [{"between": ["hook.K", "hook.K"]}]})",
@@ -88,7 +93,15 @@ TEST(TimingFile, RefusesWithThePlaceNamed) {
        "timing.clearances[0]: the minimum is not a number >= 0"},
       {R"({"clearances": [{"between": ["hook.K"]}]})", "timing.clearances[0].between: expected"},
       {R"({"clearances": [{"between": ["hook.K", "nobody.X"]}]})",
-       R"(timing.clearances[0].between[1]: no point or slot "nobody.X")"},
+       R"(timing.clearances[0].between[1]: no point, segment or slot "nobody.X")"},
+      {R"({"clearances": [{"between": ["needlebar.N-B", "ground.plate"]}]})",
+       "timing.clearances[0].between: two segments or slots"},
+      {R"({"clearances": [{"between": ["needlebar.N", "needlebar.N-B"]}]})",
+       "timing.clearances[0]: a point's clearance to itself"},
+      {R"({"clearances": [{"between": ["needlebar.B", "needlebar.N-X"]}]})",
+       R"(timing.clearances[0].between[1]: no point, segment or slot "needlebar.N-X")"},
+      {R"({"clearances": [{"between": ["needlebar.B", "needlebar.N-N"]}]})",
+       R"(timing.clearances[0].between[1]: no point, segment or slot "needlebar.N-N")"},
   };
   for (const Case& c : cases) {
     LoadResult r = parseMechanism(withTiming(c.timing));
@@ -107,7 +120,7 @@ TEST(TimingFile, ARemovalTakesWhatFollowsItAndRestorePutsItBack) {
   EXPECT_EQ(m.timing.windows[0].name, "feed");
   EXPECT_TRUE(m.timing.conflicts.empty());
   ASSERT_EQ(m.timing.clearances.size(), 1u);
-  EXPECT_TRUE(m.timing.clearances[0].slot);
+  EXPECT_TRUE(m.timing.clearances[0].other.isSlot());
   EXPECT_EQ(m.timing.outputs.size(), 3u);
   EXPECT_EQ(timingProblem(m, m.timing), "");
   EXPECT_TRUE(parseMechanism(serializeMechanism(m)).mechanism);  // what is written reads back

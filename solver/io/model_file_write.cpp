@@ -261,8 +261,7 @@ Json timingJson(const Mechanism& m) {
   });
   texts("clearances", t.clearances, [&](const ClearanceWatch& c) {
     Json x = Json::object();
-    x["between"] =
-        Json::array({m.pointLabel(c.point), c.other ? m.pointLabel(c.other) : m.slotLabel(c.slot)});
+    x["between"] = Json::array({m.pointLabel(c.point), m.partLabel(c.other)});
     if (c.minMm) x["min_mm"] = number(*c.minMm);
     return x;
   });

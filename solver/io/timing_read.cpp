@@ -20,23 +20,23 @@ void readClearance(const Json& c, const std::string& at, Mechanism& m) {
   const Json& between = require(c, "between", at);
   if (!between.is_array() || between.size() != 2)
     refuse(at + ".between",
-           "expected two names [\"body.point\", \"body.point or body.slot\"], got " +
+           "expected two names [\"body.point\", \"body.point, body.P-Q or body.slot\"], got " +
                describe(between));
-  PointId p[2];
-  SlotId s[2];
+  ClearancePart part[2];
   for (size_t i = 0; i < 2; ++i) {
     std::string why;
-    if (!parseClearanceSide(m, getString(between[i], element(at + ".between", i)), p[i], s[i],
-                            &why))
-      refuse(element(at + ".between", i), why);
+    const std::optional<ClearancePart> p =
+        parseClearancePart(m, getString(between[i], element(at + ".between", i)), &why);
+    if (!p) refuse(element(at + ".between", i), why);
+    part[i] = *p;
   }
-  if (!p[0] && !p[1]) refuse(at + ".between", "two slots: one of the two must be a point");
+  // A point on one side at least; it comes first.
+  if (!part[0].isPoint()) std::swap(part[0], part[1]);
+  if (!part[0].isPoint())
+    refuse(at + ".between", "two segments or slots: one of the two must be a point");
   ClearanceWatch w;
-  w.point = p[0] ? p[0] : p[1];
-  if (p[0] && p[1])
-    w.other = p[1];
-  else
-    w.slot = s[0] ? s[0] : s[1];
+  w.point = part[0].point;
+  w.other = part[1];
   if (const Json* min = find(c, "min_mm"))
     w.minMm = getNumber(*min, at + ".min_mm", "a number >= 0 (mm)");
   m.timing.clearances.push_back(w);

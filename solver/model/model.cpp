@@ -62,7 +62,8 @@ void takeTiming(Timing& t, const std::vector<PointId>& goneP, const std::vector<
   take(
       t.clearances,
       [&](const ClearanceWatch& c) {
-        return listed(goneP, c.point) || listed(goneP, c.other) || listed(goneS, c.slot);
+        return listed(goneP, c.point) || listed(goneP, c.other.point) ||
+               listed(goneP, c.other.end) || listed(goneS, c.other.slot);
       },
       r.clearances);
 }
@@ -273,6 +274,20 @@ std::string Mechanism::slotLabel(SlotId id) const {
   if (!s) return "?";
   const Body* b = body(s->body);
   return (b ? b->name : std::string("?")) + "." + s->name;
+}
+
+std::string Mechanism::partLabel(const ClearancePart& part) const {
+  if (part.isSlot()) return slotLabel(part.slot);
+  if (!part.isSegment()) return pointLabel(part.point);
+  const Point* e = point(part.end);
+  return pointLabel(part.point) + "-" + (e ? e->name : std::string("?"));
+}
+
+std::string Mechanism::partDescription(const ClearancePart& part) const {
+  return std::string(part.isSlot()      ? "the slot "
+                     : part.isSegment() ? "the segment "
+                                        : "the point ") +
+         partLabel(part);
 }
 
 int Mechanism::jointIndex(JointId id) const {

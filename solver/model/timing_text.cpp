@@ -88,13 +88,7 @@ std::string clearancesProblem(const Mechanism& m, const Timing& t) {
     const ClearanceWatch& c = t.clearances[i];
     const std::string at = "timing.clearances[" + std::to_string(i) + "]: ";
     if (!m.contains(c.point)) return at + "the point is not in the mechanism";
-    if (c.other.value != 0 && c.slot.value != 0) return at + "a second point or a slot, not both";
-    if (c.other ? !m.contains(c.other) : !m.contains(c.slot))
-      return at + "the other point or slot is not in the mechanism";
-    if (c.other == c.point) return at + "a point's clearance to itself";
-    if (c.slot && m.slot(c.slot)->body == m.point(c.point)->body)
-      return at + "the point " + m.pointLabel(c.point) + " is on the body of the slot " +
-             m.slotLabel(c.slot) + ": their distance does not change";
+    if (std::string p = clearancePartProblem(m, c.point, c.other); !p.empty()) return at + p;
     if (c.minMm && !(std::isfinite(*c.minMm) && *c.minMm >= 0))
       return at + "the minimum is not a number >= 0";
   }
@@ -190,22 +184,48 @@ std::string windowText(const Mechanism& m, const TimingWindow& w) {
   return w.name + "=" + measureText(m, w.output) + (w.below ? "<" : ">") + shortestText(w.level);
 }
 
-bool parseClearanceSide(const Mechanism& m, const std::string& text, PointId& point, SlotId& slot,
-                        std::string* why) {
-  point = {};
-  slot = {};
-  if (std::optional<PointId> p = m.findPoint(text)) {
-    point = *p;
-    return true;
-  }
+std::optional<ClearancePart> parseClearancePart(const Mechanism& m, const std::string& text,
+                                                std::string* why) {
+  if (std::optional<PointId> p = m.findPoint(text)) return ClearancePart::of(*p);
   const size_t dot = text.rfind('.');
-  if (dot != std::string::npos)
-    if (const Body* b = m.bodyNamed(text.substr(0, dot)))
-      if (const Slot* s = m.slotNamed(b->id, text.substr(dot + 1))) {
-        slot = s->id;
-        return true;
+  const Body* b = dot == std::string::npos ? nullptr : m.bodyNamed(text.substr(0, dot));
+  if (b) {
+    const std::string name = text.substr(dot + 1);
+    if (const Slot* s = m.slotNamed(b->id, name)) return ClearancePart::of(s->id);
+    // body.P-Q: a '-' between two of the body's points (points may have '-' in their names).
+    for (size_t dash = name.find('-'); dash != std::string::npos; dash = name.find('-', dash + 1)) {
+      const Point* p = m.pointNamed(b->id, name.substr(0, dash));
+      const Point* q = m.pointNamed(b->id, name.substr(dash + 1));
+      if (p && q) {
+        if (p->id == q->id) break;
+        return ClearancePart::segment(p->id, q->id);
       }
-  return fail(why, "no point or slot " + quoted(text) + " (body.point or body.slot)");
+    }
+  }
+  fail(why, "no point, segment or slot " + quoted(text) +
+                " (body.point, body.P-Q: the segment between two points of a body, or body.slot)");
+  return std::nullopt;
+}
+
+std::string clearancePartProblem(const Mechanism& m, PointId point, const ClearancePart& other) {
+  if (other.isSlot() + other.isPoint() + other.isSegment() != 1 || (other.slot && other.point))
+    return "a second point, a segment or a slot, one of them";
+  const bool there = other.isSlot()
+                         ? m.contains(other.slot)
+                         : m.contains(other.point) && (!other.end || m.contains(other.end));
+  if (!there) return "the other point, segment or slot is not in the mechanism";
+  if (other.point == point || other.end == point) return "a point's clearance to itself";
+  const BodyId pointBody = m.point(point)->body;
+  if (other.isSegment()) {
+    const Point &a = *m.point(other.point), &b = *m.point(other.end);
+    if (a.body != b.body) return "a segment's two ends are on one body";
+    if (!((a.pos - b.pos).norm() > 1e-9)) return "a segment's two ends are in one place";
+  }
+  const BodyId otherBody = other.isSlot() ? m.slot(other.slot)->body : m.point(other.point)->body;
+  if (!other.isPoint() && otherBody == pointBody)
+    return "the point " + m.pointLabel(point) + " is on the body of " + m.partDescription(other) +
+           ": their distance does not change";
+  return "";
 }
 
 std::string timingProblem(const Mechanism& m, const Timing& t) {

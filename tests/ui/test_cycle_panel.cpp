@@ -127,8 +127,8 @@ TEST_F(CyclePanelTest, ClearanceFromTheSelectionMarkedAtItsClosestPose) {
   ASSERT_TRUE(panel.diagram()) << panel.message();
   ASSERT_EQ(panel.clearances().size(), 1u);
   const Mechanism& m = doc.design();
-  const Clearance c = findClearance(doc.kinematics(), ClearanceItem::of(*m.findPoint("hook.K")),
-                                    ClearanceItem::of(*m.findPoint("needlebar.N")));
+  const Clearance c = findClearance(doc.kinematics(), ClearancePart::of(*m.findPoint("hook.K")),
+                                    ClearancePart::of(*m.findPoint("needlebar.N")));
   const Clearance& shown = panel.clearances()[0].clearance;
   EXPECT_EQ(shown.closest.distance, c.closest.distance);
   EXPECT_EQ(shown.closest.crankDeg, c.closest.crankDeg);

@@ -41,22 +41,23 @@ bool readClearance(const Mechanism& m, const QString& text, ClearanceWatch& w, Q
   const QStringList parts = text.split(QChar(' '), Qt::SkipEmptyParts);
   if ((parts.size() != 2 && parts.size() != 4) || (parts.size() == 4 && parts[2] != "min"))
     return fail(why,
-                tr("\"%1\" is not A B or A B min MM (A, B: body.point or body.slot)").arg(text));
-  PointId p[2];
-  SlotId s[2];
+                tr("\"%1\" is not A B or A B min MM (A, B: body.point, body.P-Q for the segment "
+                   "between two points, or body.slot)")
+                    .arg(text));
+  ClearancePart part[2];
   for (int i = 0; i < 2; ++i) {
     std::string bad;
-    if (!parseClearanceSide(m, parts[i].toStdString(), p[i], s[i], &bad)) return fail(why, q(bad));
+    const std::optional<ClearancePart> p = parseClearancePart(m, parts[i].toStdString(), &bad);
+    if (!p) return fail(why, q(bad));
+    part[i] = *p;
   }
-  if (!p[0] && !p[1]) return fail(why, tr("two slots: one of the two must be a point"));
+  // The point first, whichever way round it was typed.
+  if (!part[0].isPoint()) std::swap(part[0], part[1]);
+  if (!part[0].isPoint())
+    return fail(why, tr("two segments or slots: one of the two must be a point"));
   w = {};
-  if (p[0] && p[1]) {
-    w.point = p[0];
-    w.other = p[1];
-  } else {  // the point first, whichever way round it was typed
-    w.point = p[0] ? p[0] : p[1];
-    w.slot = s[0] ? s[0] : s[1];
-  }
+  w.point = part[0].point;
+  w.other = part[1];
   if (parts.size() == 4) {
     bool ok = false;
     const double min = parts[3].toDouble(&ok);
@@ -130,8 +131,7 @@ QString entryText(const Mechanism& m, EntryKind k, int i) {
       return q(t.conflicts[i].first + "," + t.conflicts[i].second);
     case EntryKind::Clearance: {
       const ClearanceWatch& c = t.clearances[i];
-      QString s =
-          q(m.pointLabel(c.point) + " " + (c.other ? m.pointLabel(c.other) : m.slotLabel(c.slot)));
+      QString s = q(m.pointLabel(c.point) + " " + m.partLabel(c.other));
       if (c.minMm) s += " min " + q(shortestText(*c.minMm));
       return s;
     }

@@ -54,13 +54,8 @@ bool inside(const AngleInterval& i, double c) {
   return (c >= i.fromDeg && c <= i.toDeg) || (c + 360 >= i.fromDeg && c + 360 <= i.toDeg);
 }
 
-ClearanceItem otherOf(const ClearanceWatch& w) {
-  return w.other ? ClearanceItem::of(w.other) : ClearanceItem::of(w.slot);
-}
-
 QString watchLabel(const Mechanism& m, const ClearanceWatch& w) {
-  return QString::fromStdString(m.pointLabel(w.point) + " \u2013 " +
-                                (w.other ? m.pointLabel(w.other) : m.slotLabel(w.slot)));
+  return QString::fromStdString(m.pointLabel(w.point) + " \u2013 " + m.partLabel(w.other));
 }
 
 }  // namespace
@@ -360,7 +355,7 @@ void CyclePanel::recompute() {
 void CyclePanel::computeClearances(const Kinematics& k) {
   const Mechanism& m = k.mechanism();
   for (const ClearanceWatch& w : m.timing.clearances) {
-    Clearance c = findClearance(k, ClearanceItem::of(w.point), otherOf(w));
+    Clearance c = findClearance(k, ClearancePart::of(w.point), w.other);
     if (!c.status.ok()) {
       clearanceWhy_.push_back(QString::fromStdString(c.status.message));
       continue;
@@ -488,7 +483,7 @@ void CyclePanel::updateCursor() {
   }
   const Kinematics& k = doc_->kinematics();
   for (const ClearanceWatch& w : doc_->design().timing.clearances) {
-    const double d = clearanceAt(k, ClearanceItem::of(w.point), otherOf(w));
+    const double d = clearanceAt(k, ClearancePart::of(w.point), w.other);
     if (std::isfinite(d)) parts << tr("%1 %2").arg(watchLabel(k.mechanism(), w), mm(d));
   }
   values_->setText(tr("At %1: %2").arg(deg(at), parts.join(", ")));

@@ -158,11 +158,26 @@ struct TimingConflict {
   std::string first, second;
   bool operator==(const TimingConflict&) const = default;
 };
-// A clearance watched over the cycle: between two points, or a point and another body's slot.
+// What a part of a machine is, for its clearance to another: a point; the segment between two
+// points of one body (a needle or a blade between its ends: `point` to `end`); or a slot as
+// drawn (between its ends, or along its arc).
+struct ClearancePart {
+  PointId point;
+  PointId end;  // with point: the segment from point to end
+  SlotId slot;
+  static ClearancePart of(PointId p) { return {p, {}, {}}; }
+  static ClearancePart of(SlotId s) { return {{}, {}, s}; }
+  static ClearancePart segment(PointId a, PointId b) { return {a, b, {}}; }
+  bool isPoint() const { return point && !end; }
+  bool isSegment() const { return point && end; }
+  bool isSlot() const { return static_cast<bool>(slot); }
+  bool operator==(const ClearancePart&) const = default;
+};
+// A clearance watched over the cycle: from a point to another part (a point, a segment of
+// another body, or another body's slot).
 struct ClearanceWatch {
   PointId point;
-  PointId other;  // or
-  SlotId slot;
+  ClearancePart other;
   std::optional<double> minMm;  // the least allowed; none: only shown
   bool operator==(const ClearanceWatch&) const = default;
 };
@@ -292,6 +307,10 @@ struct Mechanism {
   // "body.point" as the file and the command line spell it.
   std::string pointLabel(PointId id) const;
   std::string slotLabel(SlotId id) const;
+  // "body.point", "body.P-Q" (a segment), "body.slot".
+  std::string partLabel(const ClearancePart& part) const;
+  // "the point hook.K", "the segment needlebar.N-G", "the slot ground.plate".
+  std::string partDescription(const ClearancePart& part) const;
   // (A joint's label names its kind: jointLabel() in linkage/elements.h.)
   int jointIndex(JointId id) const;  // -1 when unknown
 

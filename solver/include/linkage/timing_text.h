@@ -3,7 +3,8 @@
 //   an output   "body.point:y", "body.point:x", "body.point:DX,DY" (along that direction),
 //               "body:angle"
 //   a window    "NAME=OUTPUT<VALUE" or "NAME=OUTPUT>VALUE"
-//   a clearance's side   "body.point", or "body.slot" (a point first when a body has both)
+//   a clearance's part   "body.point", "body.P-Q" (the segment between two points of a body: a
+//               needle, a blade), or "body.slot" (a point first when a body has both)
 // Parsing is strict and locale-independent; a failure says which part is wrong and why.
 // Writing gives the shortest text that reads back to the same numbers.
 #pragma once
@@ -27,14 +28,18 @@ std::string windowText(const Mechanism& m, const TimingWindow& w);
 // conflict:N1+N2 rows and the rows of a CSV table).
 bool validWindowName(const std::string& name);
 
-// One side of a clearance: fills `point` or `slot`.
-bool parseClearanceSide(const Mechanism& m, const std::string& text, PointId& point, SlotId& slot,
-                        std::string* why);
+// One part of a clearance; nullopt with `why` when the text names none.
+std::optional<ClearancePart> parseClearancePart(const Mechanism& m, const std::string& text,
+                                                std::string* why);
+// What is wrong with a clearance from `point` to `other` ("" when nothing is): ids m does not
+// hold, a segment whose ends are on two bodies or in one place, a point to itself, or to a
+// segment or slot of its own body.
+std::string clearancePartProblem(const Mechanism& m, PointId point, const ClearancePart& other);
 
 // What is wrong with the timing on m, with the place ("timing.windows[2]: ..."), or "" when
 // nothing is: ids m does not hold, a window name given twice or not valid, a conflict naming a
-// window that is not there or one window twice, a clearance between two slots or between a
-// point and its own body's slot, a negative or non-finite minimum.
+// window that is not there or one window twice, a clearance clearancePartProblem refuses, a
+// negative or non-finite minimum.
 std::string timingProblem(const Mechanism& m, const Timing& t);
 
 // The shortest decimal text of v that reads back as v ("0.1", "-150", "1e-07").
