@@ -247,10 +247,8 @@ TEST_F(LockstitchCli, TimingPrintsTheShippedWindowsWithNoOption) {
   const struct {
     const char* name;
     AngleInterval at;
-  } want[] = {{"needle", {a, 360 - a}},
-              {"hook", hook[0]},
-              {"hook", hook[1]},
-              {"feed", {x[1], 360 + x[0]}}};
+  } want[] = {
+      {"needle", {a, 360 - a}}, {"hook", hook[0]}, {"hook", hook[1]}, {"feed", {x[1], 360 + x[0]}}};
   for (size_t i = 0; i < 4; ++i) {
     const std::string& line = lines[i + 1];
     const size_t c1 = line.find(','), c2 = line.find(',', c1 + 1);
