@@ -67,6 +67,9 @@ class CycleWindowsTest : public ::testing::Test {
     QApplication::sendEvent(plot, &e);
   }
   const TimingWindow& window(int i) const { return doc.design().timing.windows.at(i); }
+  void chooseKind(EntryKind k) {
+    panel.kindBox()->setCurrentIndex(panel.kindBox()->findData(static_cast<int>(k)));
+  }
 
   Document doc;
   CyclePanel panel{&doc};
@@ -74,6 +77,10 @@ class CycleWindowsTest : public ::testing::Test {
 };
 
 TEST_F(CycleWindowsTest, APointFromTheListAThresholdTypedAndAddedAsOneStep) {
+  // The form is there while windows are what the dock adds.
+  EXPECT_FALSE(form.isVisible());
+  chooseKind(EntryKind::Window);
+  EXPECT_TRUE(form.isVisible());
   EXPECT_EQ(form.target(), -1);
   EXPECT_TRUE(form.addButton()->isVisible());
   // The list names points as the canvas does; points that cannot move are not offered.
@@ -166,6 +173,8 @@ TEST_F(CycleWindowsTest, DraggingTheThresholdMovesTheEndsLiveAndOneUndoRestores)
   // Pressed on the needle's threshold line, dragged down (a lower level), not released yet.
   mouse(QEvent::MouseButtonPress, *on, Qt::LeftButton);
   EXPECT_EQ(form.target(), 0);  // the window grabbed is the one the form shows
+  // ... but not shown for it: the diagram does not move under the mouse.
+  EXPECT_FALSE(form.isVisible());
   for (int dy = 2; dy <= 12; dy += 2)
     mouse(QEvent::MouseMove, *on + QPointF(0, dy), Qt::LeftButton);
   settle();
@@ -205,6 +214,7 @@ TEST_F(CycleWindowsTest, DraggingTheThresholdMovesTheEndsLiveAndOneUndoRestores)
 }
 
 TEST_F(CycleWindowsTest, APointPickedIsChosenAndItsOutputsStrokeTakesTheThreshold) {
+  chooseKind(EntryKind::Window);
   QSignalSpy asked(&panel, &CyclePanel::pickPointRequested);
   QTest::mouseClick(form.pickButton(), Qt::LeftButton);
   ASSERT_EQ(asked.size(), 1);
@@ -222,6 +232,19 @@ TEST_F(CycleWindowsTest, APointPickedIsChosenAndItsOutputsStrokeTakesTheThreshol
   EXPECT_EQ(form.resultText(), ends((180 - a0) / 2, (360 - a0) / 2) + "; " +
                                    ends((180 - a0) / 2 + 180, (360 - a0) / 2 + 180));
   EXPECT_EQ(doc.undoStack()->count(), 0);
+}
+
+// Another file opened: the form shows nothing of the last one (a point of the same name is
+// not carried over to a machine that merely has one).
+TEST_F(CycleWindowsTest, AnotherFileLeavesNothingOfTheLastInTheForm) {
+  panel.entryList()->setCurrentItem(panel.entryList()->topLevelItem(0));
+  ASSERT_EQ(form.target(), 0);
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("lockstitch-arm-shaft")), nullptr));
+  EXPECT_EQ(form.target(), -1);
+  EXPECT_EQ(form.pointBox()->currentIndex(), -1);
+  EXPECT_TRUE(form.nameField()->text().isEmpty());
+  EXPECT_GE(form.pointBox()->findText("hook.K"), 0);
+  EXPECT_LT(form.pointBox()->findText("feedbar.T"), 0);  // the machine's, not the arm shaft's
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # A timing window made by picking (issue 26 item 8) in a real X window driven by xdotool: the
-# lockstitch machine, which ships its windows; the Cycle dock by Shift+C; the form's Pick, then
-# a click on the take-up eye on the canvas chooses takeup.E; "above" chosen in its box, the name
-# typed, Return adds it (one undo step); its threshold line dragged down on the diagram: the
-# window's text and ends follow before the release, the release is one undo step; Ctrl+S: the
-# file holds the window at the level the dock shows, and linkage-cli timing of the saved file
-# gives the crank angles the dock shows.
+# lockstitch machine, which ships its windows; the Cycle dock by Shift+C; Window in its kind box
+# shows the window form; its Pick, then a click on the take-up eye on the canvas chooses
+# takeup.E; "above" chosen in its box, the name typed, Return adds it (one undo step); its
+# threshold line dragged down on the diagram: the window's text and ends follow before the
+# release, the release is one undo step; Ctrl+S: the file holds the window at the level the
+# dock shows, and linkage-cli timing of the saved file gives the crank angles the dock shows.
 #   tests/x11/cycle_window_pick.sh path/to/linkage   (linkage-cli beside it)
 set -euo pipefail
 linkage=$1
@@ -25,7 +25,13 @@ wait_probe "cycle entry Window 0: needle=needlebar.N:y<-185 => 131.59°–228.41
   fail "Shift+C did not show the machine's own windows"
 wait_still 1 || fail "the picture does not settle"
 
-# Pick, then the take-up eye E, at (52.258, 79.192) at crank 0, clicked on the canvas.
+# Window in the kind box (typed to it) shows the form; Pick, then the take-up eye E, at
+# (52.258, 79.192) at crank 0, clicked on the canvas.
+grep -q "at cycle window pick" "$work/probe.txt" && fail "the window form is shown before it is asked for"
+xdotool mousemove $(probe "at cycle kind") click 1
+sleep 0.3
+xdotool key W Return
+wait_probe "at cycle window pick: " || fail "choosing Window did not show the window form"
 xdotool mousemove $(probe "at cycle window pick") click 1
 wait_probe "cycle picking: 1" || fail "Pick did not start picking"
 wait_probe "hint: Pick the window's point" || fail "the status bar does not say what to click"

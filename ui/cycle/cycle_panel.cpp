@@ -112,9 +112,9 @@ QWidget* CyclePanel::buildAddRow() {
     QString why;
     if (addEntry(static_cast<EntryKind>(kind_->currentData().toInt()), line_->text(), &why)) {
       line_->clear();
-      error_->clear();
+      setError({});
     } else {
-      error_->setText(why);
+      setError(why);
     }
   };
   connect(line_, &QLineEdit::returnPressed, this, submit);
@@ -129,11 +129,11 @@ void CyclePanel::buildWidgets() {
   top->addWidget(buildAddRow());
   form_ = new WindowForm;
   top->addWidget(form_);
-  connectForm();
   error_ = new QLabel;
   error_->setWordWrap(true);
   error_->setStyleSheet("color: #962020");
   error_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  error_->hide();  // shown with a sentence only: the diagram keeps the height meanwhile
   top->addWidget(error_);
   auto* split = new QSplitter(Qt::Horizontal);
   list_ = new QTreeWidget;
@@ -145,12 +145,6 @@ void CyclePanel::buildWidgets() {
   list_->header()->setStretchLastSection(true);
   list_->setMinimumWidth(200);
   connect(list_, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* i) { itemEdited(i); });
-  // A window chosen in the list is the one the form edits and whose threshold is drawn solid.
-  connect(list_, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* i) {
-    if (!filling_ && i &&
-        static_cast<EntryKind>(i->data(0, kKindRole).toInt()) == EntryKind::Window)
-      setFormTarget(i->data(0, kIndexRole).toInt());
-  });
   connect(list_, &QWidget::customContextMenuRequested, this, [this](const QPoint& at) {
     QTreeWidgetItem* item = list_->itemAt(at);
     if (!item) return;
@@ -195,6 +189,7 @@ void CyclePanel::buildWidgets() {
     dragging_ = false;
     if (levelDrag_ >= 0) endLevelDrag();
   });
+  connectForm();
 }
 
 bool CyclePanel::eventFilter(QObject* watched, QEvent* e) {
@@ -237,7 +232,7 @@ void CyclePanel::itemEdited(QTreeWidgetItem* item) {
   const QString text = item->text(1);
   if (text == entryText(doc_->design(), kind, index)) return;
   if (!editEntry(kind, index, text, &why)) {
-    error_->setText(why);
+    setError(why);
     // Back to what the document holds: the typed text stays in the error's sentence.
     filling_ = true;
     item->setText(1, entryText(doc_->design(), kind, index));
@@ -254,7 +249,7 @@ bool CyclePanel::change(const QString& title, const std::function<bool(Mechanism
     if (why) *why = bad;
     return false;
   }
-  error_->clear();
+  setError({});
   editDesign(doc_, title, std::move(next));
   return true;
 }
@@ -299,6 +294,11 @@ bool CyclePanel::watchSelection(const Selection& s, QString* why) {
     return false;
   }
   return addEntry(EntryKind::Clearance, text, why);
+}
+
+void CyclePanel::setError(const QString& why) {
+  error_->setText(why);
+  error_->setVisible(!why.isEmpty());
 }
 
 QString CyclePanel::entryError() const {

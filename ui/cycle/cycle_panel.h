@@ -123,6 +123,7 @@ class CyclePanel : public QWidget {
   void mouseOnPlot(QMouseEvent* e, bool press);
   void ensureComputed();
   void itemEdited(QTreeWidgetItem* item);
+  void setError(const QString& why);  // "" hides the line
   void emitMarks();
   bool change(const QString& title, const std::function<bool(Mechanism&, QString*)>& edit,
               QString* why);
@@ -132,7 +133,8 @@ class CyclePanel : public QWidget {
   void selectWindowItem(int window);
   void formEdited(bool outputChanged);
   void addFromForm();
-  void setFormTarget(int window);  // -1: a new window
+  // -1: a new window; `reveal` shows the form (Window in the kind box).
+  void setFormTarget(int window, bool reveal = true);
   void showDraftResult(const TimingWindow& w);
   std::optional<std::pair<double, double>> strokeOf(const LimitMeasure& x) const;
   // A threshold dragged on the diagram: shown live (preview_), made one undo step on release.
@@ -149,6 +151,7 @@ class CyclePanel : public QWidget {
   bool stale_ = true, dragging_ = false, filling_ = false;
   std::optional<Timing> preview_;  // the timing shown while a threshold is dragged
   int levelDrag_ = -1;             // the window whose threshold is dragged
+  std::uint32_t formOwner_ = 0;    // the mechanism the form's fields are of (Mechanism::owner)
   int computations_ = 0;
 
   QComboBox* kind_;

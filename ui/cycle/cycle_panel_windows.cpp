@@ -40,7 +40,14 @@ QString windowResult(const std::vector<AngleInterval>& v) {
 
 }  // namespace
 
+// The form is shown while windows are what the dock adds (the kind box says Window; a window
+// chosen in the list chooses it); otherwise the diagram keeps the height.
 void CyclePanel::connectForm() {
+  auto shown = [this] {
+    form_->setVisible(static_cast<EntryKind>(kind_->currentData().toInt()) == EntryKind::Window);
+  };
+  shown();
+  connect(kind_, &QComboBox::currentIndexChanged, this, shown);
   connect(form_, &WindowForm::edited, this, &CyclePanel::formEdited);
   connect(form_, &WindowForm::addRequested, this, &CyclePanel::addFromForm);
   connect(form_, &WindowForm::newRequested, this, [this] {
@@ -48,6 +55,15 @@ void CyclePanel::connectForm() {
     formEdited(false);  // the new window's crank angles
   });
   connect(form_, &WindowForm::pickRequested, this, &CyclePanel::pickPointRequested);
+  // A window chosen in the list (or clicked again) is the one the form edits and whose
+  // threshold is drawn solid.
+  auto chosen = [this](QTreeWidgetItem* i) {
+    if (!filling_ && i &&
+        static_cast<EntryKind>(i->data(0, kKindRole).toInt()) == EntryKind::Window)
+      setFormTarget(i->data(0, kIndexRole).toInt());
+  };
+  connect(list_, &QTreeWidget::currentItemChanged, this, chosen);
+  connect(list_, &QTreeWidget::itemClicked, this, chosen);
 }
 
 // After each change of the design: the form offers what the mechanism has and shows the window
@@ -57,6 +73,12 @@ void CyclePanel::formFollowsDesign() {
   if (!doc_) return;
   const Mechanism& m = doc_->design();
   form_->offer(m);
+  // Another mechanism (a file opened, a new document): nothing of the last one is shown.
+  if (m.owner() != formOwner_) {
+    formOwner_ = m.owner();
+    form_->load(-1, TimingWindow{}, m);
+    form_->setResult({});
+  }
   const int i = form_->target();
   if (i >= static_cast<int>(m.timing.windows.size()))
     form_->startNew();
@@ -79,12 +101,13 @@ void CyclePanel::selectWindowItem(int i) {
   filling_ = false;
 }
 
-void CyclePanel::setFormTarget(int window) {
+void CyclePanel::setFormTarget(int window, bool reveal) {
   if (!doc_) return;
   const Mechanism& m = doc_->design();
   if (window >= 0 && window < static_cast<int>(m.timing.windows.size())) {
     form_->load(window, m.timing.windows[window], m);
     form_->setResult(resultText(EntryKind::Window, window));
+    if (reveal) kind_->setCurrentIndex(kind_->findData(static_cast<int>(EntryKind::Window)));
   } else {
     form_->startNew();
   }
@@ -129,7 +152,7 @@ void CyclePanel::formEdited(bool outputChanged) {
   }
   if (i >= static_cast<int>(m.timing.windows.size()) || *w == m.timing.windows[i]) return;
   if (!editEntry(EntryKind::Window, i, q(windowText(m, *w)), &why)) {
-    error_->setText(why);
+    setError(why);
     form_->load(i, doc_->design().timing.windows[i], doc_->design());
   }
 }
@@ -153,7 +176,7 @@ void CyclePanel::addFromForm() {
   const std::optional<TimingWindow> w = form_->window(m, &why);
   const int n = static_cast<int>(m.timing.windows.size());
   if (!w || !addEntry(EntryKind::Window, q(windowText(m, *w)), &why)) {
-    error_->setText(why);
+    setError(why);
     return;
   }
   setFormTarget(n);  // the window added is the one the form edits now
@@ -178,7 +201,8 @@ std::optional<QPointF> CyclePanel::levelPixel(int window, double crankDeg) const
 
 void CyclePanel::beginLevelDrag(int window) {
   if (!doc_ || window >= static_cast<int>(doc_->design().timing.windows.size())) return;
-  if (form_->target() != window) setFormTarget(window);
+  // Chosen for the form, which is not shown for it: the diagram must not move under the mouse.
+  if (form_->target() != window) setFormTarget(window, false);
   levelDrag_ = window;
   preview_ = doc_->design().timing;
 }
@@ -204,7 +228,7 @@ void CyclePanel::endLevelDrag() {
   if (w < static_cast<int>(m.timing.windows.size()) && x != m.timing.windows[w] &&
       editEntry(EntryKind::Window, w, q(windowText(m, x)), &why))
     return;
-  if (!why.isEmpty()) error_->setText(why);
+  if (!why.isEmpty()) setError(why);
   form_->setLevel(doc_->design().timing.windows.at(w).level);
   markStale();  // back to the document's
 }
