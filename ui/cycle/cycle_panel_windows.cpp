@@ -224,12 +224,12 @@ void CyclePanel::endLevelDrag() {
   const TimingWindow x = preview_->windows.at(w);
   preview_.reset();
   const Mechanism& m = doc_->design();
+  if (w >= static_cast<int>(m.timing.windows.size())) return;
   QString why;
-  if (w < static_cast<int>(m.timing.windows.size()) && x != m.timing.windows[w] &&
-      editEntry(EntryKind::Window, w, q(windowText(m, x)), &why))
+  if (x != m.timing.windows[w] && editEntry(EntryKind::Window, w, q(windowText(m, x)), &why))
     return;
   if (!why.isEmpty()) setError(why);
-  form_->setLevel(doc_->design().timing.windows.at(w).level);
+  form_->setLevel(m.timing.windows[w].level);
   markStale();  // back to the document's
 }
 
