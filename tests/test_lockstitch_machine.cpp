@@ -2,13 +2,20 @@
 // plate and the feed dog above it, windows whose ends are compared with an independent
 // derivation of the feed (circle intersections and one arcsine, bisected in long double), and
 // the hook point's clearance to the needle; the two windows do not overlap, as a machine that
-// sews needs.
+// sews needs. The windows the lockstitch files ship (issue 26): their thresholds are the
+// drawing's own (the plate's line, the needle's line, the top of the hook's circle) and their
+// ends those of the closed forms, in the library and as `linkage-cli timing` prints them.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "examples.h"
+#ifdef LINKAGE_CLI
+#include "cli_harness.h"
+#include "linkage/io/numbers.h"
+#endif
 #include "linkage/clearance.h"
 #include "linkage/slot_travel.h"
 #include "linkage/timing.h"
@@ -116,6 +123,145 @@ TEST(LockstitchMachine, HookPointClearanceToTheNeedle) {
   EXPECT_NEAR(c.closest.distance, alone.closest.distance, 1e-9 * 200);
   EXPECT_LT(c.closest.distance, 5);
 }
+
+// The needle point (a central slider-crank 16, 45 hanging from the arm shaft, the point 131 below
+// the rod's pin) is below y = -185 from crank a to 360 - a: there |OB| = 185 - 131 = 54, and the
+// triangle O, A, B with OA 16, AB 45 gives cos a = (45^2 - 16^2 - 54^2) / (2 16 54) (degrees).
+double needleBelowPlateFrom() {
+  return std::acos((45.0 * 45 - 16 * 16 - 54 * 54) / (108.0 * 16)) * 180 / M_PI;
+}
+
+// The hook point K turns twice as fast as the arm shaft, the same way (counter-clockwise), from
+// atan2(9, 12) at crank 0: it is left of the needle's line x = 0 while its angle is between 90
+// and 270 degrees (mod 360): crank (90 - a0) / 2 to (270 - a0) / 2, and 180 later.
+std::vector<AngleInterval> hookPastTheNeedle() {
+  const double a0 = std::atan2(9.0, 12.0) * 180 / M_PI;
+  return {{(90 - a0) / 2, (270 - a0) / 2}, {(90 - a0) / 2 + 180, (270 - a0) / 2 + 180}};
+}
+
+// The named slot's two ends, as drawn.
+std::pair<Vec2, Vec2> slotEnds(const Mechanism& m, const char* name) {
+  for (const Slot& s : m.slots)
+    if (s.name == name) return {s.p0, s.p1};
+  ADD_FAILURE() << "no slot " << name;
+  return {};
+}
+
+const TimingWindow* windowNamed(const Mechanism& m, const std::string& name) {
+  for (const TimingWindow& w : m.timing.windows)
+    if (w.name == name) return &w;
+  ADD_FAILURE() << "no window " << name;
+  return nullptr;
+}
+
+void expectIntervals(const WindowIntervals& got, const std::vector<AngleInterval>& want) {
+  ASSERT_EQ(got.intervals.size(), want.size()) << got.name;
+  for (size_t i = 0; i < want.size(); ++i) {
+    EXPECT_NEAR(got.intervals[i].fromDeg, want[i].fromDeg, 1e-9) << got.name << " " << i;
+    EXPECT_NEAR(got.intervals[i].toDeg, want[i].toDeg, 1e-9) << got.name << " " << i;
+  }
+}
+
+TEST(LockstitchMachine, ShipsItsWindowsWithTheDrawingsThresholds) {
+  Kinematics k;
+  ASSERT_TRUE(k.load(test::example("lockstitch-machine")).ok());
+  const Mechanism& m = k.mechanism();
+  // The throat plate is the ground slot along y = -185; the needle runs in the slot x = 0.
+  const auto [p0, p1] = slotEnds(m, "plate");
+  ASSERT_EQ(p0.y(), p1.y());
+  const auto [n0, n1] = slotEnds(m, "needle");
+  ASSERT_EQ(n0.x(), n1.x());
+  ASSERT_EQ(m.timing.windows.size(), 3u);
+  const TimingWindow *needle = windowNamed(m, "needle"), *hook = windowNamed(m, "hook"),
+                     *feed = windowNamed(m, "feed");
+  ASSERT_TRUE(needle && hook && feed);
+  EXPECT_EQ(needle->output, LimitMeasure::along(*m.findPoint("needlebar.N"), Vec2(0, 1)));
+  EXPECT_TRUE(needle->below);
+  EXPECT_EQ(needle->level, p0.y());
+  EXPECT_EQ(hook->output, LimitMeasure::along(*m.findPoint("hook.K"), Vec2(1, 0)));
+  EXPECT_TRUE(hook->below);  // it turns counter-clockwise: over the needle it moves to -x
+  EXPECT_EQ(hook->level, n0.x());
+  EXPECT_EQ(feed->output, LimitMeasure::along(*m.findPoint("feedbar.T"), Vec2(0, 1)));
+  EXPECT_FALSE(feed->below);
+  EXPECT_EQ(feed->level, p0.y());
+  ASSERT_EQ(m.timing.conflicts.size(), 1u);
+  EXPECT_EQ(m.timing.conflicts[0], (TimingConflict{"needle", "feed"}));
+
+  const CycleDiagram d = cycleDiagram(k, m.timing);
+  ASSERT_TRUE(d.status.ok()) << d.status.message;
+  ASSERT_EQ(d.windows.size(), 3u);
+  const double a = needleBelowPlateFrom();
+  expectIntervals(d.windows[0], {{a, 360 - a}});
+  expectIntervals(d.windows[1], hookPastTheNeedle());
+  const std::vector<double> x = crossings(p0.y());  // the feed, derived on its own
+  ASSERT_EQ(x.size(), 2u);
+  expectIntervals(d.windows[2], {{x[1], 360 + x[0]}});
+  // The hook point reaches the needle's line after the needle's bottom dead centre (180), while
+  // the needle is below the plate: the loop is taken below it.
+  EXPECT_GT(d.windows[1].intervals[1].fromDeg, 180);
+  EXPECT_LT(d.windows[1].intervals[1].fromDeg, 360 - a);
+  ASSERT_EQ(d.conflicts.size(), 1u);
+  EXPECT_TRUE(d.conflicts[0].overlaps.empty());  // the feed moves the fabric only while free
+}
+
+// The arm shaft alone has no plate: its needle window's level is where the plate of the
+// machine lies, the top of the hook point's circle, L.y + |LK|.
+TEST(LockstitchArmShaft, ShipsTheNeedleAndHookWindows) {
+  Kinematics k;
+  ASSERT_TRUE(k.load(test::example("lockstitch-arm-shaft")).ok());
+  const Mechanism& m = k.mechanism();
+  const Point *l = nullptr, *kp = nullptr;
+  for (const Point& p : m.points) {
+    if (m.pointLabel(p.id) == "hook.L") l = &p;
+    if (m.pointLabel(p.id) == "hook.K") kp = &p;
+  }
+  ASSERT_TRUE(l && kp);
+  const TimingWindow *needle = windowNamed(m, "needle"), *hook = windowNamed(m, "hook");
+  ASSERT_TRUE(needle && hook);
+  EXPECT_EQ(needle->level, l->pos.y() + (kp->pos - l->pos).norm());
+  EXPECT_EQ(hook->level, slotEnds(m, "needle").first.x());
+  EXPECT_TRUE(m.timing.conflicts.empty());
+  const CycleDiagram d = cycleDiagram(k, m.timing);
+  ASSERT_TRUE(d.status.ok()) << d.status.message;
+  ASSERT_EQ(d.windows.size(), 2u);
+  const double a = needleBelowPlateFrom();
+  expectIntervals(d.windows[0], {{a, 360 - a}});
+  expectIntervals(d.windows[1], hookPastTheNeedle());
+}
+
+#ifdef LINKAGE_CLI
+using LockstitchCli = test::CliTest;
+
+// `linkage-cli timing lockstitch-machine`, no option: the file's windows, their ends the closed
+// forms' and the feed's own derivation, exit 0 (the needle and the feed do not overlap).
+TEST_F(LockstitchCli, TimingPrintsTheShippedWindowsWithNoOption) {
+  const test::CliResult r = run("timing lockstitch-machine");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const std::vector<std::string> lines = r.lines();
+  ASSERT_EQ(lines.size(), 5u) << r.out;
+  EXPECT_EQ(lines[0], "window,from_deg,to_deg");
+  const double a = needleBelowPlateFrom();
+  const std::vector<AngleInterval> hook = hookPastTheNeedle();
+  const std::vector<double> x = crossings(-185);
+  ASSERT_EQ(x.size(), 2u);
+  const struct {
+    const char* name;
+    AngleInterval at;
+  } want[] = {
+      {"needle", {a, 360 - a}}, {"hook", hook[0]}, {"hook", hook[1]}, {"feed", {x[1], 360 + x[0]}}};
+  for (size_t i = 0; i < 4; ++i) {
+    const std::string& line = lines[i + 1];
+    const size_t c1 = line.find(','), c2 = line.find(',', c1 + 1);
+    ASSERT_NE(c2, std::string::npos) << line;
+    EXPECT_EQ(line.substr(0, c1), want[i].name);
+    const std::optional<double> from = parseNumber(line.substr(c1 + 1, c2 - c1 - 1)),
+                                to = parseNumber(line.substr(c2 + 1));
+    ASSERT_TRUE(from && to) << line;
+    EXPECT_NEAR(*from, want[i].at.fromDeg, 1e-9) << line;
+    EXPECT_NEAR(*to, want[i].at.toDeg, 1e-9) << line;
+  }
+}
+#endif
 
 }  // namespace
 }  // namespace linkage

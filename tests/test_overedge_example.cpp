@@ -356,6 +356,30 @@ TEST_F(OveredgeCli, TimingWindowsOfTheNeedleAndTheGripperPoint) {
     EXPECT_NEAR(*parseNumber(f[2]), want[i][1], 1e-9) << f[0];
   }
 }
+
+// The same two windows are the file's own (issue 26): `timing` with no option prints them,
+// without the conflict (their overlap is the loop-taking, wanted), exit 0.
+TEST_F(OveredgeCli, ShipsTheNeedleAndGripperWindows) {
+  const std::vector<double> needle =
+      roots([](double deg) { return kH.imag() - needleArm(deg * kDeg, 1).u - kNeedle; });
+  const std::vector<double> grip = roots(
+      [](double deg) { return kK.real() + kP * std::cos(gripperRocker(deg * kDeg, 1).a) - kXs; });
+  ASSERT_EQ(needle.size(), 2u);
+  ASSERT_EQ(grip.size(), 2u);
+  const CliResult r = run("timing overedge-needle-arm");
+  EXPECT_EQ(r.exit, 0) << r.err;
+  const std::vector<std::string> lines = r.lines();
+  ASSERT_EQ(lines.size(), 3u) << r.out;
+  const double want[2][2] = {{needle[0], needle[1]}, {grip[1], grip[0] + 360}};
+  const char* names[2] = {"needle", "gripper"};
+  for (int i = 0; i < 2; ++i) {
+    const std::vector<std::string> f = fields(lines[i + 1]);
+    ASSERT_EQ(f.size(), 3u) << lines[i + 1];
+    EXPECT_EQ(f[0], names[i]);
+    EXPECT_NEAR(*parseNumber(f[1]), want[i][0], 1e-9) << f[0];
+    EXPECT_NEAR(*parseNumber(f[2]), want[i][1], 1e-9) << f[0];
+  }
+}
 #endif
 
 }  // namespace

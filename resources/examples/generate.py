@@ -61,10 +61,14 @@ def newton(residual_jacobian, q, max_iter=60):
     raise RuntimeError("Newton did not converge")
 
 
-def linkage_file(name, bodies, joints, driver, outputs):
-    """A mechanism file's contents, its keys in the order of the format spec."""
-    return {"format": "linkage", "version": 1, "name": name, "units": {"length": "mm"},
+def linkage_file(name, bodies, joints, driver, outputs, timing=None):
+    """A mechanism file's contents, its keys in the order of the format spec (the optional
+    "timing", a machine's cycle as docs/timing.md has it, last)."""
+    data = {"format": "linkage", "version": 1, "name": name, "units": {"length": "mm"},
             "bodies": bodies, "joints": joints, "driver": driver, "outputs": {"points": outputs}}
+    if timing:
+        data["timing"] = timing
+    return data
 
 
 # ----------------------------------------------------------------------------------------------

@@ -6,10 +6,16 @@
   gear-four-bar          a pinion and gear (ratio -1/2) cranking the four-bar-crank-rocker example
   planet-epicycloid      a planet of radius 10 on an arm around a fixed sun of radius 20
   curved-guide           a slider-crank whose block runs in an arc slot of the ground
-  lockstitch-machine     the lockstitch arm shaft with a drop feed on a lower shaft belted 1:1,
-                         a throat plate, and the windows and clearance of its cycle (issue 18)
+  lockstitch-machine     the lockstitch arm shaft with a drop feed on a lower shaft belted 1:1
+                         and a throat plate (issue 18)
   overedge-needle-arm    seed 004's overedge needle arm drive in its plane (the paper's R1, L1,
                          W1, W2, L2), with a lower gripper on a second crank (ours) (issue 18)
+
+The machines (the two lockstitch files and the overedge needle arm) keep the windows of their
+cycle in their "timing" (issue 26), each threshold taken from the file's own geometry: the
+needle point below the throat plate, the hook or gripper point past the needle's line, the feed
+dog above the plate; and the conflict a designer checks (the feed dog moves the fabric only
+while the needle is out of it).
 
 Every coordinate is computed in 50-digit decimal arithmetic (only square roots are needed) and
 stored as the correctly rounded double, as generate.py does for the other examples; each file is
@@ -84,6 +90,11 @@ NR, NL, NEEDLE = D(16), D(45), D(131)
 TR, TL, TQ, TEYE = D(16), D(45), D(55), D(80)
 Q, L = (D(-20), D(48)), (D(0), D(-200))
 HOOK = (D(12), D(9))
+# The needle's line: the guide slot's x. The throat plate lies where the hook point's circle
+# reaches highest, L.y + |LK| = -200 + 15 = -185: the hook point passes just under the plate.
+NEEDLE_X = D(0)
+PLATE_Y = L[1] + (HOOK[0] * HOOK[0] + HOOK[1] * HOOK[1]).sqrt()
+assert PLATE_Y == -185
 
 
 def lockstitch_sketch():
@@ -102,7 +113,8 @@ def lockstitch_file(s):
     return linkage_file(
         "Lockstitch arm shaft: needle bar, take-up lever, hook shaft belted 2:1",
         bodies(
-            ("ground", 1, {"O": O, "Q": Q, "L": L}, {"needle": [(0, -20), (0, -170)]}),
+            ("ground", 1, {"O": O, "Q": Q, "L": L},
+             {"needle": [(NEEDLE_X, -20), (NEEDLE_X, -170)]}),
             ("armshaft", 2, {"O": O, "A": s["A"], "T": s["T"]}, None),
             ("rod", 3, {"A": s["A"], "B": s["B"]}, None),
             ("needlebar", 4, {"B": s["B"], "N": s["N"]}, None),
@@ -122,7 +134,17 @@ def lockstitch_file(s):
             {"type": "gear", "a": "armshaft.O", "b": "hook.L", "ratio": 2},
         ],
         {"joint": 0, "rpm": 1200, "direction": "ccw"},
-        ["needlebar.N", "takeup.E", "hook.K"])
+        ["needlebar.N", "takeup.E", "hook.K"],
+        {"windows": lockstitch_windows()})
+
+
+def lockstitch_windows():
+    """The arm shaft's windows: the needle point below the plate's level, and the hook point past
+    the needle's line. The hook turns counter-clockwise (the belt keeps the arm shaft's sense),
+    so at the top of its circle, where it meets the needle, it moves towards -x: past the line
+    is x < 0."""
+    return [f"needle=needlebar.N:y<{plain(float(PLATE_Y))}",
+            f"hook=hook.K:x<{plain(float(NEEDLE_X))}"]
 
 
 def lockstitch_timing():
@@ -266,7 +288,7 @@ def lockstitch_machine_file(s, f):
     base = lockstitch_file(s)
     base["name"] = "Lockstitch machine: arm shaft, hook shaft 2:1, drop feed on a lower shaft 1:1"
     base["bodies"][0]["points"].update({"S": rounded(FS), "G": rounded(FG)})
-    base["bodies"][0]["slots"]["plate"] = [[-40, -185], [20, -185]]
+    base["bodies"][0]["slots"]["plate"] = [[-40, plain(float(PLATE_Y))], [20, plain(float(PLATE_Y))]]
     E1, E2, R = f["E1"], f["E2"], f["R"]
     fork = [rounded((E1[0] - 6, E1[1])), rounded((E1[0] + 6, E1[1]))]
     base["bodies"] += bodies(
@@ -285,6 +307,11 @@ def lockstitch_machine_file(s, f):
         {"type": "pin-in-slot", "a": "feedshaft.E1", "slot": "feedbar.fork"},
     ]
     base["outputs"]["points"] = ["needlebar.N", "takeup.E", "hook.K", "feedbar.T"]
+    # The feed dog's tooth above the plate; the feed must not move the fabric while the needle
+    # is in it: the two windows must not overlap.
+    base["timing"] = {
+        "windows": lockstitch_windows() + [f"feed=feedbar.T:y>{plain(float(PLATE_Y))}"],
+        "conflicts": [["needle", "feed"]]}
     return base
 
 
@@ -313,6 +340,7 @@ def lockstitch_machine_file(s, f):
 #   x = 41 going right at crank 183 degrees, 26 degrees after the needle's lowest position.
 OV_R1, OV_L1, OV_W1, OV_W2, OV_L2 = D("7.5"), D(67), D("28.5"), D("41.5"), D(16)
 OV_H, OV_XS, OV_NEEDLE = (D(0), D("71.8")), D(41), D(55)
+OV_PLATE = D(0)  # the plate's level (the paper gives none)
 OV_PHASE2 = (D(24) / 25, D(7) / 25)  # W2 from W1
 OV_D, OV_F, OV_K = (D(-6), D(8)), (D(-10), D(-55)), (D(30), D(-60))
 OV_L3, OV_W3, OV_W4, OV_L4, OV_W5, OV_P = D(55), D(24), D(20), D(42), D(22), D(52)
@@ -372,7 +400,12 @@ def overedge_file(s):
             pin("gripper.K", "ground.K"),
         ],
         {"joint": 0, "rpm": 6000, "direction": "ccw"},
-        ["needlearm.N", "gripper.P"])
+        ["needlearm.N", "gripper.P"],
+        # The needle point below the plate (y = 0, our plate level) and the gripper point past
+        # the needle's line, the slot's x = 41, going right (it crosses the line going right
+        # after the needle's lowest position). No conflict: their overlap is the loop-taking.
+        {"windows": [f"needle=needlearm.N:y<{plain(float(OV_PLATE))}",
+                     f"gripper=gripper.P:x>{plain(float(OV_XS))}"]})
 
 
 def overedge_numbers():

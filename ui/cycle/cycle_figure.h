@@ -52,6 +52,9 @@ class CycleFigure {
   QString rowLabel(int row) const;
   double cursor() const { return cursorDeg_; }
   QPointF pixelAt(double crankDeg, double rowHeight, int row) const;
+  // The plot's y coordinate of a height in a row (0 its foot, 1 its top): what is drawn over
+  // the rows (cycle/level_lines.h) is placed by it.
+  double rowCoord(int row, double rowHeight) const { return base(row) + rowHeight; }
 
  private:
   void drawRows(const CycleDiagram& d);

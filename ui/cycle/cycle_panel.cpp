@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cycle/window_form.h"
 #include "document/commands.h"
 #include "document/document.h"
 #include "document/file_folder.h"
@@ -65,13 +66,18 @@ CyclePanel::CyclePanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(d
   if (doc) {
     connect(doc, &Document::designChanged, this, [this] {
       stale_ = true;  // the results are of the entries before: none is shown until recomputed
+      // A threshold's drag ends: its preview is of the design before.
+      preview_.reset();
+      levelDrag_ = -1;
       fillList();
+      formFollowsDesign();
       markStale();
     });
     connect(doc, &Document::poseChanged, this, &CyclePanel::updateCursor);
     connect(doc, &QObject::destroyed, this, [this] { markStale(); });
   }
   fillList();
+  formFollowsDesign();
 }
 
 CyclePanel::~CyclePanel() = default;
@@ -101,9 +107,9 @@ QWidget* CyclePanel::buildAddRow() {
     QString why;
     if (addEntry(static_cast<EntryKind>(kind_->currentData().toInt()), line_->text(), &why)) {
       line_->clear();
-      error_->clear();
+      setError({});
     } else {
-      error_->setText(why);
+      setError(why);
     }
   };
   connect(line_, &QLineEdit::returnPressed, this, submit);
@@ -116,10 +122,13 @@ void CyclePanel::buildWidgets() {
   top->setContentsMargins(4, 4, 4, 4);
   top->setSpacing(3);
   top->addWidget(buildAddRow());
+  form_ = new WindowForm;
+  top->addWidget(form_);
   error_ = new QLabel;
   error_->setWordWrap(true);
   error_->setStyleSheet("color: #962020");
   error_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  error_->hide();  // shown with a sentence only: the diagram keeps the height meanwhile
   top->addWidget(error_);
   auto* split = new QSplitter(Qt::Horizontal);
   list_ = new QTreeWidget;
@@ -149,8 +158,10 @@ void CyclePanel::buildWidgets() {
   plot_ = new QCustomPlot;
   plot_->setMinimumSize(240, 120);
   plot_->setCursor(Qt::CrossCursor);
-  plot_->setInteractions({});  // a drag turns the crank, not the axes
+  plot_->setInteractions({});     // a drag turns the crank, not the axes
+  plot_->setMouseTracking(true);  // the cursor says where a threshold can be grabbed
   figure_ = std::make_unique<CycleFigure>(plot_);
+  levels_ = std::make_unique<LevelLines>(plot_, *figure_);
   sentence_ = new QLabel;
   sentence_->setWordWrap(true);
   sentence_->setAlignment(Qt::AlignCenter);
@@ -169,7 +180,11 @@ void CyclePanel::buildWidgets() {
   top->addWidget(values_);
   connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
   connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { mouseOnPlot(e, false); });
-  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { dragging_ = false; });
+  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) {
+    dragging_ = false;
+    if (levelDrag_ >= 0) endLevelDrag();
+  });
+  connectForm();
 }
 
 bool CyclePanel::eventFilter(QObject* watched, QEvent* e) {
@@ -212,7 +227,7 @@ void CyclePanel::itemEdited(QTreeWidgetItem* item) {
   const QString text = item->text(1);
   if (text == entryText(doc_->design(), kind, index)) return;
   if (!editEntry(kind, index, text, &why)) {
-    error_->setText(why);
+    setError(why);
     // Back to what the document holds: the typed text stays in the error's sentence.
     filling_ = true;
     item->setText(1, entryText(doc_->design(), kind, index));
@@ -229,7 +244,7 @@ bool CyclePanel::change(const QString& title, const std::function<bool(Mechanism
     if (why) *why = bad;
     return false;
   }
-  error_->clear();
+  setError({});
   editDesign(doc_, title, std::move(next));
   return true;
 }
@@ -274,6 +289,11 @@ bool CyclePanel::watchSelection(const Selection& s, QString* why) {
     return false;
   }
   return addEntry(EntryKind::Clearance, text, why);
+}
+
+void CyclePanel::setError(const QString& why) {
+  error_->setText(why);
+  error_->setVisible(!why.isEmpty());
 }
 
 QString CyclePanel::entryError() const {
@@ -338,9 +358,10 @@ void CyclePanel::recompute() {
   if (why_.isEmpty()) {
     const Kinematics& k = doc_->kinematics();  // the document's pose and branch; not moved
     const Mechanism& m = k.mechanism();
-    for (const TimingWindow& w : m.timing.windows)
+    const Timing& t = preview_ ? *preview_ : m.timing;
+    for (const TimingWindow& w : t.windows)
       windows_.push_back({w.name, {measureText(m, w.output), w.output}, w.below, w.level});
-    diagram_ = cycleDiagram(k, m.timing);
+    diagram_ = cycleDiagram(k, t);
     ++computations_;
     if (!diagram_.status.ok())
       why_ = tr("No cycle: %1.").arg(QString::fromStdString(diagram_.status.message));
@@ -380,6 +401,8 @@ void CyclePanel::rebuildFigure() {
   }
   stack_->setCurrentWidget(plot_);
   figure_->build(diagram_, windows_, clearances_, QString(), crankAxisLabel(doc_->design()));
+  levels_->draw(diagram_, windows_, form_->target());
+  plot_->replot(QCustomPlot::rpQueuedReplot);
   updateCursor();
 }
 
@@ -450,8 +473,13 @@ void CyclePanel::showResults() {
     item->setText(2, text);
     item->setToolTip(2, text);
     item->setForeground(2, bad ? QBrush(QColor(150, 32, 32)) : palette().text());
+    // A threshold being dragged: the window's text follows it with its ends.
+    if (preview_ && doc_ && kind == EntryKind::Window &&
+        i < static_cast<int>(preview_->windows.size()))
+      item->setText(1, QString::fromStdString(windowText(doc_->design(), preview_->windows[i])));
   }
   filling_ = false;
+  if (form_->target() >= 0) form_->setResult(resultText(EntryKind::Window, form_->target()));
 }
 
 void CyclePanel::emitMarks() {
@@ -494,7 +522,17 @@ QString CyclePanel::cursorText() const {
 }
 
 void CyclePanel::mouseOnPlot(QMouseEvent* e, bool press) {
-  if (!(e->buttons() & Qt::LeftButton) || !diagram()) return;
+  if (!diagram()) return;
+  if (!(e->buttons() & Qt::LeftButton)) {  // hovering: a threshold can be grabbed here
+    plot_->setCursor(levels_->windowAt(e->position()) >= 0 ? Qt::SizeVerCursor : Qt::CrossCursor);
+    return;
+  }
+  if (press && !dragging_ && levelDrag_ < 0)
+    if (const int w = levels_->windowAt(e->position()); w >= 0) beginLevelDrag(w);
+  if (levelDrag_ >= 0) {
+    if (!press) dragLevel(e->position().y());
+    return;
+  }
   if (press) dragging_ = !std::isnan(figure_->crankAt(e->position()));
   if (!dragging_) return;
   const double d = std::clamp(figure_->crankAtX(e->position().x()), 0.0, 360.0);
@@ -575,6 +613,17 @@ QStringList CyclePanel::probeLines() const {
   };
   at("kind", kind_);
   at("line", line_);
+  out << form_->probeLines();
+  // Each window's threshold line, at crank 345 (clear of the names at the middle of windows).
+  if (diagram() && doc_)
+    for (size_t w = 0; w < windows_.size(); ++w)
+      if (const std::optional<QPointF> p = levelPixel(static_cast<int>(w), 345)) {
+        const QPoint c = plot_->mapToGlobal(p->toPoint());
+        out << QStringLiteral("at cycle threshold %1: %2 %3")
+                   .arg(QString::fromStdString(windows_[w].name))
+                   .arg(c.x())
+                   .arg(c.y());
+      }
   if (diagram() && figure_->rowCount() > 0)
     for (int deg : {90, 250}) {
       const QPoint c = plot_->mapToGlobal(figure_->pixelAt(deg, 0.5, 0).toPoint());

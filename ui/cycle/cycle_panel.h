@@ -4,6 +4,12 @@
 // result (the windows' crank angles, the overlaps, the closest approach) found exactly by the
 // solver. Every change of an entry is an undo step of the document, kept in its file.
 //
+// A window is also made by choosing (issue 26): the form under the line (cycle/window_form.h)
+// takes its point from a list or from the canvas (Pick), its axis, below or above, and the
+// threshold typed; each window's threshold is a line in its row of the diagram
+// (cycle/level_lines.h) that a drag moves, the window's ends and overlaps following live,
+// the release one undo step. The form edits the window chosen in the list, or adds a new one.
+//
 // A cursor follows the document's crank angle; a click or drag on the diagram asks for that
 // angle (the same signal as the plots'). Only determined numbers are shown: a design not
 // solved, a motion the driver does not determine or a crank that cannot turn a whole cycle get
@@ -14,10 +20,13 @@
 #include <QPointer>
 #include <QWidget>
 #include <memory>
+#include <optional>
+#include <utility>
 
 #include "canvas/clearance_marks.h"
 #include "cycle/cycle_entries.h"
 #include "cycle/cycle_figure.h"
+#include "cycle/level_lines.h"
 #include "plots/redraw_throttle.h"
 
 class QComboBox;
@@ -33,6 +42,7 @@ namespace linkage::ui {
 
 class Document;
 class Selection;
+class WindowForm;
 
 class CyclePanel : public QWidget {
   Q_OBJECT
@@ -53,6 +63,15 @@ class CyclePanel : public QWidget {
   bool exportFigure(const QString& path, QSize size, QString* error);
   // The timing table (docs/timing.md), what `linkage-cli timing` writes for the file.
   bool exportTable(const QString& path, QString* error);
+
+  // The window form, and what the canvas answers to its Pick: the point clicked (the form
+  // takes it as if chosen from its list), or that none will come (Esc, another tool).
+  WindowForm* windowForm() const { return form_; }
+  void pointPicked(PointId p);
+  void pickEnded();
+  // Where window i's threshold line is on the screen's plot, at a crank angle (nullopt: it
+  // is not drawn); for tests and the probe.
+  std::optional<QPointF> levelPixel(int window, double crankDeg) const;
 
   // For tests and tools.
   QCustomPlot* plotWidget() const { return plot_; }
@@ -78,6 +97,9 @@ class CyclePanel : public QWidget {
 
  Q_SIGNALS:
   void crankAngleRequested(double deg);
+  // The form's Pick: on, the canvas should give the next point clicked (pointPicked) or say
+  // that none will come (pickEnded); off, give up picking.
+  void pickPointRequested(bool on);
   // Where the clearances' closest approaches are, for the canvas (none while hidden).
   void marksChanged(const std::vector<linkage::ui::ClearanceMark>& marks);
 
@@ -101,9 +123,24 @@ class CyclePanel : public QWidget {
   void mouseOnPlot(QMouseEvent* e, bool press);
   void ensureComputed();
   void itemEdited(QTreeWidgetItem* item);
+  void setError(const QString& why);  // "" hides the line
   void emitMarks();
   bool change(const QString& title, const std::function<bool(Mechanism&, QString*)>& edit,
               QString* why);
+  // The window form (cycle/window_form.h): cycle_panel_windows.cpp.
+  void connectForm();
+  void formFollowsDesign();
+  void selectWindowItem(int window);
+  void formEdited(bool outputChanged);
+  void addFromForm();
+  // -1: a new window; `reveal` shows the form (Window in the kind box).
+  void setFormTarget(int window, bool reveal = true);
+  void showDraftResult(const TimingWindow& w);
+  std::optional<std::pair<double, double>> strokeOf(const LimitMeasure& x) const;
+  // A threshold dragged on the diagram: shown live (preview_), made one undo step on release.
+  void beginLevelDrag(int window);
+  void dragLevel(double pixelY);
+  void endLevelDrag();
 
   QPointer<Document> doc_;
   CycleDiagram diagram_;
@@ -112,15 +149,20 @@ class CyclePanel : public QWidget {
   std::vector<QString> clearanceWhy_;  // per clearance entry: why it is not measured, or ""
   QString why_;
   bool stale_ = true, dragging_ = false, filling_ = false;
+  std::optional<Timing> preview_;  // the timing shown while a threshold is dragged
+  int levelDrag_ = -1;             // the window whose threshold is dragged
+  std::uint32_t formOwner_ = 0;    // the mechanism the form's fields are of (Mechanism::owner)
   int computations_ = 0;
 
   QComboBox* kind_;
   QLineEdit* line_;
+  WindowForm* form_;
   QLabel *error_, *values_, *sentence_;
   QTreeWidget* list_;
   QStackedWidget* stack_;
   QCustomPlot* plot_;
   std::unique_ptr<CycleFigure> figure_;
+  std::unique_ptr<LevelLines> levels_;
   RedrawThrottle throttle_{this, [this] { recompute(); }};
 };
 

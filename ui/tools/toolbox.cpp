@@ -12,6 +12,7 @@
 #include "linkage/edits.h"
 #include "tools/click_tools.h"
 #include "tools/link_tool.h"
+#include "tools/pick_point_tool.h"
 #include "tools/select_tool.h"
 #include "tools/selection.h"
 #include "tools/slot_tools.h"
@@ -73,6 +74,12 @@ Toolbox::Toolbox(ToolContext ctx, QWidget* actionParent) : QObject(actionParent)
   tool("output", tr("O&utput Point"), QKeySequence(tr("O")), tr("Trace, plot and export a point"),
        new OutputTool(&ctx_));
 
+  picker_ = std::make_unique<PickPointTool>(&ctx_);
+  connect(picker_.get(), &Tool::hintChanged, this, [this] {
+    if (current_ == picker_.get()) emit hintChanged(picker_->hint());
+  });
+  connect(picker_.get(), &Tool::finished, this, [this] { setTool(QStringLiteral("select")); });
+
   makeCommands(make);
   connect(ctx_.selection, &Selection::changed, this, &Toolbox::updateCommands);
   connect(ctx_.doc, &Document::designChanged, this, [this] {
@@ -128,6 +135,22 @@ void Toolbox::editWith(const QString& text,
 Tool* Toolbox::switchTo(const QString& name) {
   setTool(name);
   return current_;
+}
+
+void Toolbox::pickPoint(const QString& purpose, std::function<void(PointId)> picked,
+                        std::function<void()> cancelled) {
+  // Whoever was picking before gives up first; so does the tool that was current.
+  if (current_) current_->deactivate();
+  current_ = picker_.get();
+  if (QAction* a = group_->checkedAction()) a->setChecked(false);
+  ctx_.overlay->clearPreview();
+  picker_->start(purpose, std::move(picked), std::move(cancelled));
+  emit hintChanged(picker_->hint());
+  ctx_.view->setFocus();  // Esc on the canvas gives up
+}
+
+bool Toolbox::picking() const {
+  return current_ == picker_.get() && picker_->picking();
 }
 
 QAction* Toolbox::toolAction(const QString& name) const {

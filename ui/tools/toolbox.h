@@ -15,6 +15,8 @@ class QMenu;
 
 namespace linkage::ui {
 
+class PickPointTool;
+
 class Toolbox : public QObject {
   Q_OBJECT
 
@@ -45,6 +47,13 @@ class Toolbox : public QObject {
   void editWith(const QString& text, const std::function<bool(Mechanism&, std::string&)>& change);
   Tool* switchTo(const QString& name);
 
+  // The next click on a point of the canvas gives that point to `picked` (tools/
+  // pick_point_tool.h), then the select tool is back; Esc or another tool calls `cancelled`.
+  // No tool button is checked meanwhile; the status bar says what to click.
+  void pickPoint(const QString& purpose, std::function<void(PointId)> picked,
+                 std::function<void()> cancelled);
+  bool picking() const;
+
  Q_SIGNALS:
   void hintChanged(const QString& hint);
 
@@ -64,6 +73,7 @@ class Toolbox : public QObject {
 
   ToolContext ctx_;
   std::vector<std::unique_ptr<Tool>> tools_;
+  std::unique_ptr<PickPointTool> picker_;
   std::vector<QAction*> actions_;
   QActionGroup* group_;
   Tool* current_ = nullptr;

@@ -8,6 +8,7 @@
 #include "canvas/clearance_marks.h"
 #include "cycle/cycle_panel.h"
 #include "document/document.h"
+#include "tools/toolbox.h"
 #include "window/main_window.h"
 #include "window/message_strip.h"
 #include "window/plots_feature.h"
@@ -41,6 +42,17 @@ void CycleFeature::makeDock() {
   connect(panel_, &CyclePanel::crankAngleRequested, this, [animator, doc](double deg) {
     animator->setPlaying(false);
     if (doc->solved()) doc->setCrankDeg(deg);
+  });
+  // The window form's Pick: the canvas's next click on a point is the window's point.
+  connect(panel_, &CyclePanel::pickPointRequested, this, [this](bool on) {
+    Toolbox* tools = w_.tools().toolbox();
+    if (!on) {
+      if (tools->picking()) tools->setTool(QStringLiteral("select"));
+      return;
+    }
+    tools->pickPoint(
+        tr("the window's point"), [this](PointId p) { panel_->pointPicked(p); },
+        [this] { panel_->pickEnded(); });
   });
   marks_ = new ClearanceMarksItem(w_.scene()->context());
   w_.scene()->addOverlay(marks_);
