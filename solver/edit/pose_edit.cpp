@@ -40,7 +40,12 @@ PoseEdit editAtPose(const Kinematics& current, Mechanism next) {
   out.solved = current.valid() && out.kinematics.edit(next).ok();
   if (out.solved && next.driver) {
     const double sketchDeg = -next.driver->startDeg;
-    if (std::abs(out.kinematics.crankDeg() - sketchDeg) > 1e-12) {
+    if (std::abs(out.kinematics.crankDeg() - sketchDeg) <= 1e-12) {
+      // At the sketch's pose already: the bodies the solve moved to close the loops (a typed
+      // dimension that no longer fits) are drawn where they are, so that the file closes.
+      redraw(next, out.kinematics);
+      out.solved = out.kinematics.edit(next).ok();
+    } else {
       Kinematics atSketch = out.kinematics;
       if (atSketch.moveTo(sketchDeg).ok()) {
         redraw(next, atSketch);

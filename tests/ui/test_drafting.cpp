@@ -21,6 +21,7 @@
 #include "document/document.h"
 #include "drawing.h"
 #include "linkage/edits.h"
+#include "linkage/guide.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "plots/curve_set.h"
@@ -71,6 +72,36 @@ TEST(Drafting, AToolKeyTypedInANumberFieldChoosesTheToolAndKeepsTheValue) {
   QTest::keyClicks(name, "pl");
   EXPECT_EQ(name->text(), "pl");
   EXPECT_TRUE(w.tools().toolbox()->toolAction("select")->isChecked());
+}
+
+// Issue 26: an arc slot's typed point changed, the block in it kept coordinates off the new arc,
+// and the file written then did not close (every tool said the body was moved 20.08 mm to
+// assemble it). The edit keeps the drawing assembled: the block is drawn on the arc, and the
+// file loads with nothing moved.
+TEST(Drafting, ATypedArcKeepsTheBlockInItAndTheFileCloses) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "curved-guide"));
+  const Mechanism& m0 = w.document()->design();
+  const SlotId guide = m0.slotNamed(m0.ground()->id, "guide")->id;
+  w.tools().selection()->add(guide);
+  QLineEdit* xm = fieldOf(w, "xm [mm]");
+  ASSERT_NE(xm, nullptr);
+  xm->setFocus();
+  xm->selectAll();
+  QTest::keyClicks(xm, "9");
+  QTest::keyClick(xm, Qt::Key_Return);
+  const Mechanism& m = w.document()->design();
+  ASSERT_EQ(m.slot(guide)->mid->x(), 9);
+  ASSERT_TRUE(w.document()->solveStatus().ok()) << w.document()->solveStatus().message;
+  const Guide g = *guideOf(*m.slot(guide));
+  const Vec2 b = m.pointNamed(m.bodyNamed("block")->id, "B")->pos;
+  EXPECT_LT(std::abs((b - g.centre).norm() - g.radius), 1e-9);
+  LoadResult saved = parseMechanism(serializeMechanism(m));
+  ASSERT_TRUE(saved.mechanism) << saved.error;
+  Kinematics k;
+  ASSERT_TRUE(k.load(*saved.mechanism).ok());
+  EXPECT_LT(k.assembly().maxMove, 1e-9);
+  EXPECT_EQ(w.document()->undoStack()->count(), 1);
 }
 
 TEST(Drafting, AStartAngleTurnsTheCrankThereAndSaysWhatItMeans) {

@@ -5,12 +5,16 @@
 # end and a third click on the way), a rod from the crank whose end runs in the arc (Pin in
 # Slot, P). Saved through the file dialog, checked with linkage-cli (a gear, a three-point
 # slot, a full revolution in closed form), then opened again in the editor, which animates it.
+# Before saving, the arc's middle point is typed elsewhere in its Properties: the rod's end in it
+# is then off the new arc, and the edit must leave the drawing assembled (issue 26: the file
+# written then did not close, and every tool said the rod was moved 20 mm to assemble it).
 #   tests/x11/draw_belt_and_arc.sh path/to/linkage   (linkage-cli beside it)
 set -euo pipefail
 linkage=$1
 cli="$(dirname "$linkage")/linkage-cli"
 source "$(dirname "$0")/x11_session.sh"
 start_x11
+use_probe
 start_linkage "$linkage"
 
 xdotool mousemove 400 300 click 1   # an empty place on the canvas: it has the keyboard
@@ -46,6 +50,14 @@ xdotool key p; at 64 32; at 72 24
 xdotool key o; at 64 32
 xdotool key s
 wait_still drawn || fail "the canvas does not settle after drawing"
+# The arc selected by a click on it away from its points (30 degrees about its centre), its
+# middle point typed 2 mm further out.
+at 74.641 20
+wait_probe "properties: Slot ground.s1" || fail "a click on the arc did not select it"
+click_field "xm [mm]"
+xdotool key ctrl+a; xdotool type --delay 10 "66"; xdotool key Return
+wait_probe "field xm [mm]: 66" || fail "the arc's middle point was not taken"
+xdotool mousemove 400 300
 
 out="$work/belt-and-arc.linkage.json"
 xdotool key ctrl+s
@@ -64,10 +76,11 @@ grep -q '(gear link2.A - link3.' <<<"$info" || fail "no gear from the crank's sh
 # (The file writes a gear's fields a line each; the arc's middle point is where the third click
 # was, off the 10 mm grid.)
 grep -A4 '"type": "gear"' "$out" | grep -q '"ratio": 1$' || fail "the gear is not a belt of ratio 1"
-grep -qE '"s1": \[\[80, 0\], \[6[34][.0-9]*, 3[12][.0-9]*\], \[40, 40\]\]' "$out" ||
-  fail "no arc slot from (80, 0) through about (64, 32) to (40, 40)"
+grep -qE '"s1": \[\[80, 0\], \[66, 3[12][.0-9]*\], \[40, 40\]\]' "$out" ||
+  fail "no arc slot from (80, 0) through (66, about 32) to (40, 40)"
 grep -q '(pin-in-slot link4\.' <<<"$info" || fail "the rod's end does not run in the slot"
 grep -q "degrees of freedom: 1 " <<<"$info" || fail "not one degree of freedom"
+grep -q "assembly: moved up to 0 mm" <<<"$info" || fail "the file written does not close"
 grep -q "solve: in closed form" <<<"$info" || fail "not solved in closed form"
 grep -q "group 2: geared link3" <<<"$info" || fail "the second shaft is not geared to the first"
 rows=$("$cli" analyze "$out" --steps 36 | wc -l) || fail "analyze failed"

@@ -196,7 +196,9 @@ bool PropertiesPanel::change(const QString& text,
                              const std::function<bool(Mechanism&, QString*)>& edit, QString* why) {
   Mechanism m = doc_->design();
   if (!edit(m, why)) return false;
-  editDesign(doc_, text, std::move(m));
+  // Solved from the pose shown and kept assembled: a typed dimension that no longer fits moves
+  // the bodies it must, and the file closes (it kept the typed drawing, open by 20 mm).
+  commitEdit(doc_, text, std::move(m));
   if (!doc_->solveStatus().ok())
     emit message(QString::fromStdString(doc_->solveStatus().message), true);
   return true;

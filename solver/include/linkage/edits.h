@@ -62,7 +62,10 @@ bool changeJointType(Mechanism& m, JointId j, JointType type, std::string* why =
 // the pose of the sketch (crank angle -start_deg), so when the crank is elsewhere the edited
 // mechanism is solved here first (from `current`, the solver before the edit), turned back
 // along its motion to the sketch's pose, and every body redrawn where it is there (bodies that
-// did not move keep their numbers to the last bit). Where the sketch's pose cannot be reached
+// did not move keep their numbers to the last bit); at the sketch's pose, the bodies the solve
+// moved to assemble the edit are redrawn where they are, so that the drawing closes (a typed
+// dimension that no longer fits moves its bodies, as a file that does not close is assembled
+// when it loads). Where the sketch's pose cannot be reached
 // any more, the drawing becomes the current pose, and so does crank angle 0 (start offset 0: a
 // file must reach its crank angle 0 to load). Not solved: `design` is the edit as given, for
 // the caller to keep with the solver's reason.
