@@ -111,8 +111,14 @@ int balance(Options& o) {
     return r.status.code == StatusCode::BadModel ? kBadInput : exitFor(r.status);
   }
   std::fputs(table(*m, r).c_str(), stdout);
-  error("note: peak " + formatShown(r.peakAfter) + " N at crank " + formatShown(r.peakAfterDeg) +
-        " deg; optimality gap " + formatNumber(r.gap(), 3) +
+  // A peak after that is rounding next to the peak before is an exact cancellation: 0, at no
+  // angle in particular.
+  const bool cancelled = r.peakAfter <= 1e-9 * r.peakBefore;
+  error("note: peak " +
+        (cancelled
+             ? std::string("0 N (cancelled over the whole cycle)")
+             : formatShown(r.peakAfter) + " N at crank " + formatShown(r.peakAfterDeg) + " deg") +
+        "; optimality gap " + formatNumber(r.gap(), 3) +
         " N (no counterweights within the bounds do better than " +
         formatShown(r.lowerBound, r.peakBefore) + " N), after " + std::to_string(r.exchanges) +
         " exchange(s)");

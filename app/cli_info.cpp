@@ -97,7 +97,7 @@ int info(const std::string& model) {
     for (JointId j : s.redundantJoints) std::cout << "redundant: " << jointLabel(*m, j) << "\n";
   }
   if (e == kOk)
-    std::cout << "assembly: moved up to " << formatNumber(k.assembly().maxMove, 6) << " mm\n";
+    std::cout << "assembly: moved up to " << formatShown(k.assembly().maxMove, k.size()) << " mm\n";
   printGroups(*m, k);
   printFourBarLoops(*m);
   if (e == kOk && m->driver) printSlotTravel(*m, k);

@@ -1,5 +1,6 @@
 // linkage-cli slots: how far every slider block and pin in a slot runs along its slot over a
 // turn of the crank, against the slot's drawn ends (linkage/slot_travel.h).
+#include <cmath>
 #include <iostream>
 
 #include "cli_common.h"
@@ -35,11 +36,13 @@ constexpr int kLeavesSlot = 4;
 // "slider.B in ground.guide: 12.5 to 61.25 mm of 0 to 80 mm": what `info` lists.
 std::string describeTravel(const Mechanism& m, const SlotTravel& t) {
   const Joint* j = m.joint(t.joint);
-  std::string s = m.pointLabel(j->a) + " in " + m.slotLabel(t.slot) + ": " +
-                  formatNumber(t.min, 6) + " to " + formatNumber(t.max, 6) + " mm of " +
-                  formatNumber(t.slotFrom, 6) + " to " + formatNumber(t.slotTo, 6) + " mm";
-  if (t.before > 0 && !t.inside) s += ", " + formatNumber(t.before, 6) + " mm before its start";
-  if (t.past > 0 && !t.inside) s += ", " + formatNumber(t.past, 6) + " mm past its end";
+  // Rounded for reading, 0 where a travel's end is rounding next to the slot's length.
+  const double scale = std::abs(t.slotTo - t.slotFrom);
+  auto mm = [scale](double v) { return formatShown(v, scale); };
+  std::string s = m.pointLabel(j->a) + " in " + m.slotLabel(t.slot) + ": " + mm(t.min) + " to " +
+                  mm(t.max) + " mm of " + mm(t.slotFrom) + " to " + mm(t.slotTo) + " mm";
+  if (t.before > 0 && !t.inside) s += ", " + mm(t.before) + " mm before its start";
+  if (t.past > 0 && !t.inside) s += ", " + mm(t.past) + " mm past its end";
   return s;
 }
 

@@ -34,7 +34,7 @@ Exit status: 0 every angle stays in the band, 4 some leave it (the rows are stil
 constexpr int kOutOfBand = 4;
 
 std::string deg(double v) {
-  return formatNumber(v, 6);
+  return formatShown(v, 360);
 }
 
 std::string describe(const Mechanism& m, const TransmissionJoint& t) {

@@ -12,6 +12,7 @@
 #include "export/figure_export.h"
 #include "plots/qcp.h"
 #include "plots/units.h"
+#include "window/qt_notes.h"
 
 namespace linkage::cli {
 
@@ -54,7 +55,7 @@ int cycleFigure(const Options& o) {
     error(d.status.message);
     return exitFor(d.status);
   }
-  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  ui::prepareOffscreen();
   static int qtArgc = 1;
   static char qtName[] = "linkage-plot";
   static char* qtArgv[] = {qtName, nullptr};

@@ -17,6 +17,7 @@
 #include "window/main_window.h"
 #include "window/offscreen_window.h"
 #include "window/probe.h"
+#include "window/qt_notes.h"
 
 namespace {
 
@@ -172,8 +173,7 @@ int main(int argc, char** argv) {
   if (cli.parse(argumentsOf(argc, argv))) {
     if (const int status = answerWithoutWindow(cli, opt); status >= 0) return status;
     // No display needed for pictures (unless one is asked for explicitly).
-    if (cli.isSet(opt.screenshot) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-      qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (cli.isSet(opt.screenshot)) linkage::ui::prepareOffscreen();
   } else if (!onlyQtOptionsUnknown(cli)) {
     std::fprintf(stderr, "linkage: %s\n", qPrintable(cli.errorText()));
     return 2;

@@ -22,6 +22,7 @@
 #include "plots/curve_set.h"
 #include "plots/motion_figure.h"
 #include "plots/qcp.h"
+#include "window/qt_notes.h"
 
 namespace linkage::cli {
 
@@ -199,7 +200,7 @@ int plot(PlotOptions& o) {
   std::vector<std::string> names;
   if (int e = loadModels(o, solved, names); e != kOk) return e;
 
-  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  ui::prepareOffscreen();
   static int qtArgc = 1;
   static char qtName[] = "linkage-cli";
   static char* qtArgv[] = {qtName, nullptr};

@@ -145,6 +145,18 @@ TEST_F(CliForces, BalanceUnderGravityPrintsWhatTheWrittenModelShakesWith) {
   EXPECT_NEAR(number(split(none.lines()[5])[2]), same, 1e-9 * same);
 }
 
+// What people read is rounded: an exact cancellation's peak after is 0 N "cancelled" in the note,
+// not 2.8e-14 N at some angle, and the lower bound 0, not -8.8e-17 (issue 26); the table keeps
+// its 17 digits (and the gap, a tolerance, its size).
+TEST_F(CliForces, BalanceNotesRoundWhatIsRounding) {
+  const CliResult r = run("balance slider-crank-22a-masses --counterweight crank --minimize fx");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  EXPECT_NE(r.err.find("note: peak 0 N (cancelled over the whole cycle)"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("do better than 0 N"), std::string::npos) << r.err;
+  EXPECT_LT(number(split(r.lines().back())[2]), 1e-9);
+}
+
 // A load on the ground acts on the frame itself: the table is that of no load, and a note says
 // the load was left out (a user would otherwise believe it was applied).
 TEST_F(CliForces, DynamicsSaysALoadOnTheGroundIsLeftOut) {

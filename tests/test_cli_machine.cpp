@@ -311,6 +311,15 @@ TEST_F(MachineCli, TimingFigure) {
   const std::string svg = test::slurp(fig);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("needlebar.N:y"), std::string::npos);  // a row's name, as text
+  // Run as root on a server (no XDG_RUNTIME_DIR): standard error holds what the program says,
+  // not Qt's note that it chose a runtime folder (issue 26).
+  const CliResult quiet =
+      run("timing lockstitch-arm-shaft --window 'needle=needlebar.N:y<-170' "
+          "--out '" +
+              fig + "'",
+          "env -u XDG_RUNTIME_DIR");
+  EXPECT_EQ(quiet.exit, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "") << quiet.err;
 }
 
 }  // namespace

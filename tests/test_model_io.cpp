@@ -52,6 +52,16 @@ TEST(Numbers, FormatIsGeneralWithDotAndPlainZero) {
   EXPECT_EQ(formatNumber(0.0), "0");
 }
 
+// What people read (notes, `info`): six digits, and 0 where a value is rounding next to its
+// quantity's scale (-8.8e-17 next to a 62 mm slot is an exact 0, issue 26).
+TEST(Numbers, ShownNumbersRoundRoundingToZero) {
+  EXPECT_EQ(formatShown(-8.8e-17, 62), "0");
+  EXPECT_EQ(formatShown(1.5e-7, 62), "1.5e-07");  // a real 150 nm, above 1e-9 of the scale
+  EXPECT_EQ(formatShown(36.58191234567, 100), "36.5819");
+  EXPECT_EQ(formatShown(2.5e-14), "2.5e-14");  // no scale: the value as it is
+  EXPECT_EQ(formatShown(4.73826, 1, 2), "4.7");
+}
+
 TEST(Numbers, SeventeenDigitsRoundTripExactly) {
   const double values[] = {0.1,
                            1.0 / 3,
