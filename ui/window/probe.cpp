@@ -118,6 +118,18 @@ QString probeText() {
     out << QStringLiteral("window");
     windowText(w, out);
   }
+  // A question asked (a message box): its title and where its buttons are, to answer it.
+  if (QWidget* d = QApplication::activeModalWidget()) {
+    out << QStringLiteral("dialog: ") + d->windowTitle();
+    for (QAbstractButton* b : d->findChildren<QAbstractButton*>()) {
+      if (!b->isVisible() || b->text().isEmpty()) continue;
+      const QPoint c = b->mapToGlobal(b->rect().center());
+      out << QStringLiteral("at dialog button %1: %2 %3")
+                 .arg(QString(b->text()).remove(QLatin1Char('&')))
+                 .arg(c.x())
+                 .arg(c.y());
+    }
+  }
   return out.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }
 
