@@ -44,9 +44,13 @@ class Toolbox : public QObject {
   Document* document() const { return ctx_.doc; }
   void editWith(const QString& text, const std::function<bool(Mechanism&, std::string&)>& change);
   Tool* switchTo(const QString& name);
+  // Selects `joint` alone and asks for its Properties field named `label`, the keyboard in it
+  // (a gear's "Edit Ratio..." on its menu).
+  void editField(JointId joint, const QString& label);
 
  Q_SIGNALS:
   void hintChanged(const QString& hint);
+  void fieldWanted(const QString& label);
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
@@ -61,6 +65,7 @@ class Toolbox : public QObject {
   void makeCommands(Make make);
   void pointMenu(QMenu& menu, const Point& point, const Vec2& at);
   void bodyMenu(QMenu& menu, const Body& body, const Vec2& at);
+  void jointMenu(QMenu& menu, const Joint& joint);
 
   ToolContext ctx_;
   std::vector<std::unique_ptr<Tool>> tools_;

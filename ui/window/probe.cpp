@@ -7,6 +7,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QSaveFile>
 #include <QTabBar>
 #include <QTableWidget>
@@ -21,13 +22,16 @@
 #include "centres/centres_panel.h"
 #include "cycle/cycle_panel.h"
 #include "document/document.h"
+#include "linkage/elements.h"
 #include "linkage/io/model_file.h"
 #include "mechanisms/mechanisms_panel.h"
 #include "plots/plots_panel.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
+#include "tools/selection.h"
 #include "window/features.h"
 #include "window/mechanisms_feature.h"
+#include "window/tools_feature.h"
 
 namespace linkage::ui {
 
@@ -42,6 +46,19 @@ QString plain(const QString& rich) {
   QTextDocument d;
   d.setHtml(rich);
   return oneLine(d.toPlainText());
+}
+
+// What is selected, by the names the messages use: "coupler.P; joints[2] (gear ...)".
+QString selectionText(MainWindow& w) {
+  const Mechanism& m = w.document()->design();
+  const Selection& s = *w.tools().selection();
+  QStringList names;
+  for (BodyId b : s.bodies)
+    if (const Body* body = m.body(b)) names << QString::fromStdString(body->name);
+  for (PointId p : s.points) names << QString::fromStdString(m.pointLabel(p));
+  for (JointId j : s.joints) names << QString::fromStdString(jointLabel(m, j));
+  for (SlotId sl : s.slots_) names << QString::fromStdString(m.slotLabel(sl));
+  return names.join(QStringLiteral("; "));
 }
 
 void windowText(MainWindow* w, QStringList& out) {
@@ -97,6 +114,7 @@ void windowText(MainWindow* w, QStringList& out) {
              .arg(forces.loads.size())
              .arg(forces.reactions.size());
   out << QStringLiteral("properties: ") + plain(w->properties().panel()->title());
+  out << QStringLiteral("selection: ") + selectionText(*w);
   for (QLineEdit* e : w->properties().panel()->findChildren<QLineEdit*>()) {
     const QString label = w->properties().panel()->labelOf(e);
     const QPoint c = e->mapToGlobal(e->rect().center());
@@ -117,6 +135,18 @@ QString probeText() {
   for (MainWindow* w : MainWindow::windows()) {
     out << QStringLiteral("window");
     windowText(w, out);
+  }
+  // A menu open (a right click's): its entries, section titles among them, and where they are.
+  if (auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget())) {
+    QStringList entries;
+    for (QAction* a : menu->actions()) {
+      const QString text = QString(a->text()).remove(QLatin1Char('&'));
+      if (text.isEmpty()) continue;
+      entries << text;
+      const QPoint c = menu->mapToGlobal(menu->actionGeometry(a).center());
+      out << QStringLiteral("at menu item %1: %2 %3").arg(text).arg(c.x()).arg(c.y());
+    }
+    out << QStringLiteral("menu: ") + entries.join(QStringLiteral(" | "));
   }
   // A question asked (a message box): its title and where its buttons are, to answer it.
   if (QWidget* d = QApplication::activeModalWidget()) {
