@@ -30,6 +30,7 @@ CrankBar::CrankBar(Animator* animator, QWidget* parent) : QWidget(parent), anima
   slider_->setToolTip(tr("Crank angle within the current revolution"));
   slider_->setFocusPolicy(Qt::ClickFocus);
   angle_ = new QDoubleSpinBox;
+  angle_->setObjectName("crankAngle");  // for scripts (the probe)
   angle_->setRange(-1e7, 1e7);
   angle_->setDecimals(2);
   angle_->setSuffix(QStringLiteral("\u00b0"));
@@ -38,6 +39,7 @@ CrankBar::CrankBar(Animator* animator, QWidget* parent) : QWidget(parent), anima
   revs_ = new QLabel;
   revs_->setToolTip(tr("Whole revolutions of the crank from the start"));
   increment_ = new QDoubleSpinBox;
+  increment_->setObjectName("crankStep");
   increment_->setRange(0.01, 90);
   increment_->setDecimals(2);
   increment_->setValue(animator_->incrementDeg());

@@ -1,6 +1,7 @@
 #include "window/probe.h"
 
 #include <QAbstractButton>
+#include <QAbstractSpinBox>
 #include <QApplication>
 #include <QComboBox>
 #include <QCryptographicHash>
@@ -59,6 +60,18 @@ QString selectionText(MainWindow& w) {
   for (JointId j : s.joints) names << QString::fromStdString(jointLabel(m, j));
   for (SlotId sl : s.slots_) names << QString::fromStdString(m.slotLabel(sl));
   return names.join(QStringLiteral("; "));
+}
+
+// The docks' named number boxes (the crank's angle and step, the plots' revolutions and
+// steps): what they show and where.
+void spinBoxes(MainWindow& w, QStringList& out) {
+  for (QAbstractSpinBox* s : w.findChildren<QAbstractSpinBox*>()) {
+    // A dock behind another's tab keeps its widgets "visible", moved off the window.
+    if (s->objectName().isEmpty() || s->visibleRegion().isEmpty()) continue;
+    const QPoint c = s->mapToGlobal(s->rect().center());
+    out << QStringLiteral("spin %1: %2").arg(s->objectName(), s->text());
+    out << QStringLiteral("at spin %1: %2 %3").arg(s->objectName()).arg(c.x()).arg(c.y());
+  }
 }
 
 void windowText(MainWindow* w, QStringList& out) {
@@ -121,6 +134,7 @@ void windowText(MainWindow* w, QStringList& out) {
     out << QStringLiteral("field %1: %2").arg(label, e->text());
     out << QStringLiteral("at field %1: %2 %3").arg(label).arg(c.x()).arg(c.y());
   }
+  spinBoxes(*w, out);
   out << w->mechanisms().panel->probeLines();
   out << w->cycle().panel()->probeLines();
   out << QStringLiteral("clearance marks: %1").arg(w->cycle().marks()->marks().size());
