@@ -104,7 +104,10 @@ void CrankBar::showPose() {
   QSignalBlocker a(slider_), b(angle_);
   slider_->setValue(static_cast<int>(std::lround((deg - 360.0 * rev) / 360.0 * kSliderSteps)));
   angle_->setValue(deg);
-  revs_->setText(tr("rev %1").arg(static_cast<long long>(rev)));
+  // A crank turned by a start angle of a file's making (1e300) has more turns than an integer
+  // holds: those are written as a number, not converted (undefined behaviour).
+  revs_->setText(std::abs(rev) < 1e15 ? tr("rev %1").arg(static_cast<long long>(rev))
+                                      : tr("rev %1").arg(rev, 0, 'g', 6));
 }
 
 void CrankBar::showDriver() {
