@@ -8,8 +8,11 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QImage>
+#include <QLineEdit>
 #include <QMenu>
 #include <QTest>
+#include <QUndoStack>
 
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
@@ -168,6 +171,127 @@ TEST(ElementsUi, SlotToolDrawsAnArcAndThePanelTypesItsRadius) {
   ASSERT_TRUE(shape);
   shape->activated(1);
   EXPECT_TRUE(doc->design().slots[0].arc());
+}
+
+// The gear-four-bar example at a known zoom: the pinion on ground.I (-45, 0), pitch radius 15,
+// in mesh with the gear on ground.O2 (0, 0), radius 30 (ratio -0.5: radii 45 * 1/3 and 2/3);
+// the pitch point at (-30, 0). Nothing is selected.
+JointId showGearPair(MainWindow& w) {
+  w.resize(1300, 900);
+  EXPECT_TRUE(w.openExample("gear-four-bar"));
+  w.show();
+  QApplication::processEvents();
+  w.canvas()->setZoom(4);
+  w.canvas()->centerOn(-10, 0);
+  w.tools().selection()->clear();
+  return gearOf(w.document()->design())->id;
+}
+
+bool onlyGearSelected(MainWindow& w, JointId gear) {
+  const Selection& s = *w.tools().selection();
+  return s.size() == 1 && s.contains(gear);
+}
+
+TEST(ElementsUi, AGearIsSelectedByItsPitchCirclesPitchPointCentreAndBand) {
+  MainWindow w;
+  const JointId gear = showGearPair(w);
+  test::Draw d{w};
+  // Each pitch circle, a few pixels off its line.
+  for (const auto& [x, y] : {std::pair{-45.0, 15.5}, {0.0, -29.5}, {30.5, 0.0}}) {
+    d.click(200, 200);  // empty canvas: nothing selected
+    ASSERT_TRUE(w.tools().selection()->empty());
+    d.click(x, y);
+    EXPECT_TRUE(onlyGearSelected(w, gear)) << "a click at " << x << ", " << y;
+  }
+  // Its Properties: the coupling named, its ratio and type.
+  EXPECT_NE(w.properties().panel()->title().indexOf("gear pinion.I - gear.O2"), -1)
+      << w.properties().panel()->title();
+  EXPECT_NE(w.properties().panel()->field("Ratio"), nullptr);
+  EXPECT_NE(w.properties().panel()->field("Type"), nullptr);
+  // The pitch point, where the circles touch.
+  d.click(200, 200);
+  d.click(-30, 0);
+  EXPECT_TRUE(onlyGearSelected(w, gear));
+  // The centre area: inside the gear's circle, clear of its arm.
+  d.click(200, 200);
+  d.click(-8, -12);
+  EXPECT_TRUE(onlyGearSelected(w, gear));
+  // The pinion's centre is its pivot first; clicked again, what is under it in turn, the
+  // pinion's gear among them.
+  d.click(200, 200);
+  bool reached = false;
+  for (int i = 0; i < 5 && !reached; ++i) {
+    d.click(-45, 0);
+    reached = onlyGearSelected(w, gear);
+  }
+  EXPECT_TRUE(reached) << "clicks on the pinion's centre never reached its gear";
+  // A band over both pitch circles holds the coupling (with what else it holds), and it is
+  // seen selected: its circles traced over (the bottom of the gear's, far from any point,
+  // pin or link, changes).
+  d.click(200, 200);
+  d.move(200, 200);
+  const QRect bottom(d.at(0, -30) - QPoint(6, 6), QSize(13, 13));
+  const QImage before = w.canvas()->viewport()->grab(bottom).toImage();
+  d.drag(-65, -35, 35, 35);
+  EXPECT_TRUE(w.tools().selection()->contains(gear));
+  d.move(200, 200);
+  EXPECT_NE(w.canvas()->viewport()->grab(bottom).toImage(), before)
+      << "the selected gear's circle is not drawn selected";
+}
+
+// The right-click menu's entries on the canvas (the visible menu's actions, by text).
+QAction* menuEntry(MainWindow& w, const QString& start) {
+  for (QMenu* menu : w.canvas()->findChildren<QMenu*>())
+    if (menu->isVisible())
+      for (QAction* a : menu->actions())
+        if (a->text().startsWith(start)) return a;
+  return nullptr;
+}
+
+TEST(ElementsUi, AGearsMenuNamesItAndEditsItsRatioAndTypeAsOneStepEach) {
+  MainWindow w;
+  const JointId gear = showGearPair(w);
+  test::Draw d{w};
+  Document* doc = w.document();
+  QApplication::setActiveWindow(&w);
+  d.rightClick(0, -30);  // on the gear's pitch circle
+  QApplication::processEvents();
+  const QString name = "joints[2] (gear pinion.I - gear.O2)";
+  QAction* section = menuEntry(w, name);
+  ASSERT_TRUE(section) << "the menu does not name the gear";
+  EXPECT_TRUE(section->isSeparator());
+  ASSERT_TRUE(menuEntry(w, "Gears in Mesh"));
+  EXPECT_TRUE(menuEntry(w, "Gears in Mesh")->isChecked());
+  ASSERT_TRUE(menuEntry(w, "Belt"));
+  QAction* edit = menuEntry(w, "Edit &Ratio");
+  ASSERT_TRUE(edit);
+  qobject_cast<QWidget*>(edit->parent())->close();  // as a menu does: closed, then acts
+  edit->trigger();
+  QApplication::processEvents();
+  // Selected, its Ratio field has the keyboard, its value selected to be typed over.
+  EXPECT_TRUE(onlyGearSelected(w, gear));
+  auto* ratio = qobject_cast<QLineEdit*>(w.properties().panel()->field("Ratio"));
+  ASSERT_TRUE(ratio);
+  EXPECT_TRUE(ratio->hasFocus());
+  EXPECT_EQ(ratio->selectedText(), "-0.5");
+  const int before = doc->undoStack()->index();
+  QTest::keyClicks(ratio, "-0.25");
+  QTest::keyClick(ratio, Qt::Key_Return);
+  EXPECT_EQ(doc->design().joint(gear)->ratio, -0.25);
+  EXPECT_EQ(doc->undoStack()->index(), before + 1);
+  EXPECT_EQ(doc->undoStack()->text(before), "Gear ratio");
+  ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
+  // Its type: a belt (the same ratio, the same way), one step; undone.
+  auto* type = qobject_cast<QComboBox*>(w.properties().panel()->field("Type"));
+  ASSERT_TRUE(type);
+  EXPECT_EQ(type->currentIndex(), 0);
+  type->setCurrentIndex(1);
+  emit type->activated(1);
+  EXPECT_EQ(doc->design().joint(gear)->ratio, 0.25);
+  EXPECT_EQ(doc->undoStack()->index(), before + 2);
+  doc->undoStack()->undo();
+  EXPECT_EQ(doc->design().joint(gear)->ratio, -0.25);
+  EXPECT_EQ(type->currentIndex(), 0);
 }
 
 }  // namespace

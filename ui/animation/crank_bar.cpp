@@ -30,6 +30,7 @@ CrankBar::CrankBar(Animator* animator, QWidget* parent) : QWidget(parent), anima
   slider_->setToolTip(tr("Crank angle within the current revolution"));
   slider_->setFocusPolicy(Qt::ClickFocus);
   angle_ = new QDoubleSpinBox;
+  angle_->setObjectName("crankAngle");  // for scripts (the probe)
   angle_->setRange(-1e7, 1e7);
   angle_->setDecimals(2);
   angle_->setSuffix(QStringLiteral("\u00b0"));
@@ -38,6 +39,7 @@ CrankBar::CrankBar(Animator* animator, QWidget* parent) : QWidget(parent), anima
   revs_ = new QLabel;
   revs_->setToolTip(tr("Whole revolutions of the crank from the start"));
   increment_ = new QDoubleSpinBox;
+  increment_->setObjectName("crankStep");
   increment_->setRange(0.01, 90);
   increment_->setDecimals(2);
   increment_->setValue(animator_->incrementDeg());
@@ -102,7 +104,10 @@ void CrankBar::showPose() {
   QSignalBlocker a(slider_), b(angle_);
   slider_->setValue(static_cast<int>(std::lround((deg - 360.0 * rev) / 360.0 * kSliderSteps)));
   angle_->setValue(deg);
-  revs_->setText(tr("rev %1").arg(static_cast<long long>(rev)));
+  // A crank turned by a start angle of a file's making (1e300) has more turns than an integer
+  // holds: those are written as a number, not converted (undefined behaviour).
+  revs_->setText(std::abs(rev) < 1e15 ? tr("rev %1").arg(static_cast<long long>(rev))
+                                      : tr("rev %1").arg(rev, 0, 'g', 6));
 }
 
 void CrankBar::showDriver() {

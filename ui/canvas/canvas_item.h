@@ -46,6 +46,7 @@ class CanvasItem : public QGraphicsItem {
   }
 
  protected:
+  // May replace this item's own children (labels), never another item.
   virtual void rebuild() {}
   const CanvasContext& ctx() const { return *ctx_; }
   double px() const { return ctx_->px; }

@@ -31,6 +31,14 @@ BodyGeometry geometryOf(const Mechanism& m, const Drawing::Body& b) {
   return g;
 }
 
+// An item restyled, then its children as they are after it: its rebuild may have made them
+// anew (the clearance marks' labels), so a list of them taken before would name deleted items.
+void restyleTree(QGraphicsItem* item) {
+  if (auto* c = dynamic_cast<CanvasItem*>(item)) c->restyle();
+  const QList<QGraphicsItem*> children = item->childItems();
+  for (QGraphicsItem* child : children) restyleTree(child);
+}
+
 }  // namespace
 
 CanvasScene::CanvasScene(QObject* parent) : QGraphicsScene(parent) {
@@ -69,18 +77,25 @@ void CanvasScene::addOverlay(QGraphicsItem* item) {
   addItem(item);
 }
 
+void CanvasScene::restyleItems() {
+  // The top-level items first collected (an item's rebuild replaces only its own children),
+  // each then restyled with what it holds after: never items() of all levels, taken before.
+  QList<QGraphicsItem*> top;
+  for (QGraphicsItem* i : items())
+    if (!i->parentItem()) top.append(i);
+  for (QGraphicsItem* i : top) restyleTree(i);
+}
+
 void CanvasScene::setPixelSize(double mmPerPx) {
   if (!(mmPerPx > 0) || mmPerPx == ctx_.px) return;
   ctx_.px = mmPerPx;
-  for (QGraphicsItem* i : items())
-    if (auto* c = dynamic_cast<CanvasItem*>(i)) c->restyle();
+  restyleItems();
 }
 
 void CanvasScene::setPalette(const QPalette& p) {
   ctx_.style = CanvasStyle::fromPalette(p);
   setBackgroundBrush(ctx_.style.paper);
-  for (QGraphicsItem* i : items())
-    if (auto* c = dynamic_cast<CanvasItem*>(i)) c->restyle();
+  restyleItems();
   for (QGraphicsPathItem* t : traces_) {
     QPen pen(ctx_.style.trace, 1.2, Qt::DashLine);
     pen.setCosmetic(true);

@@ -89,6 +89,8 @@ class CanvasScene : public QGraphicsScene {
 
  private:
   void rebuild();
+  // The scale or the palette changed: every item made again for it.
+  void restyleItems();
   void updatePose();
   void updateTraces();
   void updateFlags();

@@ -4,6 +4,9 @@
 // the animation runs.
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "canvas/joint_items.h"
 
 namespace linkage::ui {
@@ -20,7 +23,20 @@ class GearItem : public JointItem {
   void setBodyColour(int k, const QColor& c);
   QColor bodyColour(int k) const { return colour_[k]; }
 
+  // What a click finds it by, in scene coordinates (mm): the distance to its drawn lines (the
+  // pitch circles, which touch at a gear pair's pitch point, and a belt's runs), and the
+  // radius of its smallest pitch circle that holds the point (its centre area; else infinity).
+  double distanceToLines(const Vec2& at) const;
+  double radiusHolding(const Vec2& at) const;
+  // Its drawn lines in scene coordinates, to outline it selected or under the cursor.
+  QPainterPath lines() const;
+
  private:
+  // A belt's two straight runs (item coordinates), from pulley a to pulley b; none for gears
+  // or pulleys that overlap.
+  std::vector<std::pair<Vec2, Vec2>> beltRuns() const;
+  Vec2 centre(int k) const { return k == 0 ? Vec2::Zero() : Vec2(s_.at2 - s_.at); }
+
   JointSymbol s_;
   QColor colour_[2], own_[2];
 };

@@ -611,6 +611,7 @@ QStringList CyclePanel::probeLines() const {
     const QPoint c = w->mapToGlobal(w->rect().center());
     out << QStringLiteral("at cycle %1: %2 %3").arg(QLatin1String(name)).arg(c.x()).arg(c.y());
   };
+  out << QStringLiteral("cycle kind: ") + kind_->currentText();
   at("kind", kind_);
   at("line", line_);
   out << form_->probeLines();

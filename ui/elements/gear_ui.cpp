@@ -1,6 +1,8 @@
 // The gear in the editor: pitch circles (a belt: pulleys and the belt), the Gear tool (E: two
-// pivoted bodies; Shift for a belt), its ratio, carrier and centres in the panel, "Gears in
-// Mesh" / "Belt" on its menu, and "Couple to..." on a pivoted body's menu.
+// pivoted bodies; Shift for a belt), its type and ratio (edited), carrier and centres in the
+// panel, "Gears in Mesh" / "Belt" / "Edit Ratio..." on its menu, and "Couple to..." on a
+// pivoted body's menu.
+#include <QComboBox>
 #include <QMenu>
 
 #include "canvas/canvas_item.h"
@@ -28,10 +30,23 @@ Tool* tool(ToolContext* ctx) {
 void form(PropertiesPanel& panel, JointId id) {
   Document* doc = panel.document();
   auto joint = [doc, id] { return *doc->design().joint(id); };
-  panel.addInfo(PropertiesPanel::tr("Type"), [joint] {
-    return joint().ratio < 0 ? PropertiesPanel::tr("gears in mesh (turn opposite ways)")
-                             : PropertiesPanel::tr("belt or chain (turn the same way)");
-  });
+  // Gears in mesh turn opposite ways (a negative ratio), a belt or chain the same way.
+  auto* type = new QComboBox;
+  type->addItems({PropertiesPanel::tr("gears in mesh (turn opposite ways)"),
+                  PropertiesPanel::tr("belt or chain (turn the same way)")});
+  panel.addChoice(
+      PropertiesPanel::tr("Type"), type, [joint] { return joint().ratio < 0 ? 0 : 1; },
+      [&panel, id](int i) {
+        panel.change(
+            PropertiesPanel::tr("Gear type"),
+            [&](Mechanism& m, QString*) {
+              double& r = m.joint(id)->ratio;
+              if ((r > 0) == (i == 1)) return false;  // the type it has: no edit
+              r = -r;
+              return true;
+            },
+            nullptr);
+      });
   panel.addNumber(
       PropertiesPanel::tr("Ratio"), [joint] { return joint().ratio; },
       [&panel, id](double v, QString* why) {
@@ -73,6 +88,9 @@ void jointMenu(Toolbox& box, QMenu& menu, const Joint& j) {
     a->setCheckable(true);
     a->setChecked((j.ratio > 0) == belt);
   }
+  // The ratio typed where it always is, the Properties: one field, one way to change it.
+  menu.addAction(Toolbox::tr("Edit &Ratio..."), &box,
+                 [&box, id] { box.editField(id, PropertiesPanel::tr("Ratio")); });
 }
 
 void bodyMenu(Toolbox& box, QMenu& menu, BodyId body) {

@@ -59,9 +59,11 @@ void PlotControls::addOrdersRow() {
   }
   orders_[3]->setToolTip("Spectral derivative of the exact accelerations over one revolution");
   revs_ = new QSpinBox;
+  revs_->setObjectName("plotRevs");  // for scripts (the probe)
   revs_->setRange(1, 20);
   revs_->setSuffix(" rev");
   steps_ = new QSpinBox;
+  steps_->setObjectName("plotSteps");
   steps_->setRange(12, 36000);
   steps_->setSingleStep(60);
   steps_->setSuffix(" steps/rev");

@@ -14,6 +14,7 @@
 #include "document/document.h"
 #include "linkage/edits.h"
 #include "linkage/io/numbers.h"
+#include "properties/number_keys.h"
 #include "tools/selection.h"
 
 namespace linkage::ui {
@@ -31,31 +32,6 @@ QString exactText(double v) {
 }
 
 namespace {
-
-// A number field keeps what can be part of a number; any other key a user types there (the
-// L of the Link tool after "-29.34") is meant for the window: its shortcut acts (the field is
-// committed as it leaves), and a key without one is dropped rather than corrupting the value.
-class NumberKeys : public QObject {
- public:
-  using QObject::QObject;
-  bool eventFilter(QObject* watched, QEvent* e) override {
-    if (e->type() != QEvent::ShortcutOverride && e->type() != QEvent::KeyPress)
-      return QObject::eventFilter(watched, e);
-    auto* k = static_cast<QKeyEvent*>(e);
-    const QString text = k->text();
-    const bool plain =
-        !(k->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier));
-    if (!plain || text.size() != 1 || !text[0].isPrint() ||
-        QStringLiteral("0123456789.+-eE").contains(text[0]))
-      return QObject::eventFilter(watched, e);
-    if (e->type() == QEvent::ShortcutOverride) {
-      // The value as typed is committed first: the shortcut may take the keyboard away.
-      if (auto* field = qobject_cast<QLineEdit*>(watched)) Q_EMIT field->editingFinished();
-      e->ignore();  // the shortcut may act
-    }
-    return true;
-  }
-};
 
 void markBad(QWidget* w, bool bad) {
   w->setStyleSheet(bad ? QStringLiteral("background: rgba(220, 40, 30, 60);") : QString());
@@ -305,7 +281,11 @@ void PropertiesPanel::addNumber(const QString& label, std::function<double()> va
         }
         return commit(*v, why);
       });
-  field(full)->installEventFilter(new NumberKeys(field(full)));
+  new NumberKeys(qobject_cast<QLineEdit*>(field(full)), [this, full](const QString& key) {
+    emit message(tr("%1 takes a number (digits, \".\", \"+\", \"-\", \"e\"): \"%2\" was not typed")
+                     .arg(full, key),
+                 true);
+  });
 }
 
 }  // namespace linkage::ui

@@ -3,10 +3,36 @@
 #include <cmath>
 
 #include "canvas/canvas_scene.h"
+#include "canvas/gear_item.h"
 #include "linkage/elements.h"
 #include "linkage/guide.h"
 
 namespace linkage::ui {
+
+namespace {
+
+// The gear or belt under the cursor: drawn lines within a few pixels (the nearest), else the
+// smallest pitch circle that holds it. Gears are no pins: they have no point of their own to
+// click, so their lines and circles are what a user aims at.
+void pickCoupling(const CanvasScene& s, const Vec2& world, double px, Pick& pick) {
+  double bestLine = kCouplingPixels * px, bestArea = INFINITY;  // mm
+  JointId inside;
+  for (JointItem* j : s.jointItems()) {
+    auto* g = dynamic_cast<GearItem*>(j);
+    if (!g || !g->isVisible()) continue;
+    if (const double d = g->distanceToLines(world); d < bestLine) {
+      bestLine = d;
+      pick.coupling = g->joint();
+      pick.onCouplingLines = true;
+    } else if (const double r = g->radiusHolding(world); r < bestArea) {
+      bestArea = r;
+      inside = g->joint();
+    }
+  }
+  if (!pick.coupling) pick.coupling = inside;
+}
+
+}  // namespace
 
 Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   Pick pick;
@@ -50,6 +76,7 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
         pick.joint = j.id;
         break;
       }
+  pickCoupling(s, world, px, pick);
   // The top body whose drawn shape holds the point. Bounding rectangles first, shapes of the
   // bodies only: a Kennedy line's shape is its stroked outline, which cost a mouse move with the
   // instant centres shown a millisecond or more.
@@ -109,6 +136,7 @@ Snap snapAt(const CanvasScene& s, const Pick& pick, const Vec2& world, double px
 QString describePick(const Mechanism& m, const Pick& p) {
   if (p.point) return QString::fromStdString(m.pointLabel(p.point));
   if (p.joint) return QString::fromStdString(jointLabel(m, p.joint));
+  if (p.coupling && p.onCouplingLines) return QString::fromStdString(jointLabel(m, p.coupling));
   if (p.slot) return QStringLiteral("slot %1").arg(QString::fromStdString(m.slotLabel(p.slot)));
   if (const Body* b = m.body(p.body))
     return b->ground ? QStringLiteral("the ground")

@@ -20,11 +20,15 @@ struct Pick {
   BodyId body;    // the top body under the cursor (the ground when nothing else)
   bool onGround = false;
   bool onBlock = false;  // the body is a slider block under the cursor
-  bool empty() const { return !point && !joint && !slot && (!body || onGround); }
+  // A gear or belt: the one whose drawn lines (pitch circles, pitch point, belt) are nearest
+  // within reach (`onCouplingLines`), else the smallest pitch circle holding the cursor.
+  JointId coupling;
+  bool onCouplingLines = false;
+  bool empty() const { return !point && !joint && !slot && !coupling && (!body || onGround); }
 };
 
-// Reach in screen pixels.
-constexpr double kPickPixels = 8;
+// Reach in screen pixels: of a point, and of a gear's or belt's drawn lines.
+constexpr double kPickPixels = 8, kCouplingPixels = 5;
 
 Pick pickAt(const CanvasScene& s, const Vec2& world, double px);
 

@@ -105,8 +105,9 @@ bool SelectTool::key(QKeyEvent* e) {
 void SelectTool::select(const Pick& p, bool toggle) {
   Selection& s = *ctx().selection;
   // What is under the cursor, the most specific first: a joint, a point, a slider block, a
-  // slot, a link. A click again on what is selected takes the next: things drawn on top of one
-  // another (a block on its pin and its slot) are each reached.
+  // gear's or belt's drawn lines, a slot, a link, the gear or belt whose pitch circle holds the
+  // cursor. A click again on what is selected takes the next: things drawn on top of one
+  // another (a block on its pin and its slot, a pulley's pivot and its belt) are each reached.
   struct Candidate {
     PointId point;
     JointId joint;
@@ -117,8 +118,10 @@ void SelectTool::select(const Pick& p, bool toggle) {
   if (p.joint) under.push_back({{}, p.joint, {}, {}});
   if (p.point) under.push_back({p.point, {}, {}, {}});
   if (p.body && p.onBlock) under.push_back({{}, {}, {}, p.body});
+  if (p.coupling && p.onCouplingLines) under.push_back({{}, p.coupling, {}, {}});
   if (p.slot) under.push_back({{}, {}, p.slot, {}});
   if (p.body && !p.onGround && !p.onBlock) under.push_back({{}, {}, {}, p.body});
+  if (p.coupling && !p.onCouplingLines) under.push_back({{}, p.coupling, {}, {}});
   size_t next = 0;
   if (!toggle && s.size() == 1)
     for (size_t i = 0; i < under.size(); ++i) {

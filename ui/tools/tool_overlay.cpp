@@ -4,9 +4,20 @@
 #include <QPainter>
 
 #include "canvas/canvas_scene.h"
+#include "canvas/gear_item.h"
 #include "tools/selection.h"
 
 namespace linkage::ui {
+
+namespace {
+
+const GearItem* gearItem(const CanvasScene& s, JointId j) {
+  for (const JointItem* item : s.jointItems())
+    if (item->joint() == j && item->isVisible()) return dynamic_cast<const GearItem*>(item);
+  return nullptr;
+}
+
+}  // namespace
 
 ToolOverlay::ToolOverlay(const CanvasContext* ctx, const CanvasScene* scene,
                          const Selection* selection)
@@ -17,7 +28,8 @@ ToolOverlay::ToolOverlay(const CanvasContext* ctx, const CanvasScene* scene,
 
 void ToolOverlay::setHover(const Pick& p) {
   if (p.point == hover_.point && p.body == hover_.body && p.slot == hover_.slot &&
-      p.joint == hover_.joint)
+      p.joint == hover_.joint && p.coupling == hover_.coupling &&
+      p.onCouplingLines == hover_.onCouplingLines)
     return;
   hover_ = p;
   update();
@@ -83,7 +95,12 @@ void ToolOverlay::paintSelection(QPainter* p) const {
     if (at.allFinite()) p->drawEllipse(toQt(at), 8 * u, 8 * u);
   }
   for (JointId j : selection_->joints)
-    if (const Joint* joint = m.joint(j)) {
+    if (const GearItem* g = gearItem(*scene_, j)) {
+      // A gear or belt: its pitch circles (and belt) traced over.
+      p->setPen(cosmetic(st.highlight, 3));
+      p->drawPath(g->lines());
+      p->setPen(ring);
+    } else if (const Joint* joint = m.joint(j)) {
       const Vec2 at = scene_->worldOf(joint->a);
       if (at.allFinite())
         p->drawRect(QRectF(toQt(at) - QPointF(10 * u, 10 * u), QSizeF(20 * u, 20 * u)));
@@ -108,6 +125,13 @@ void ToolOverlay::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) 
       p->setPen(cosmetic(st.highlight, 1.5, Qt::DashLine));
       p->setBrush(Qt::NoBrush);
       p->drawPolygon(cutToDevice(item->sceneTransform().map(item->outline()), p));
+    }
+  // The gear or belt whose lines are under the cursor, traced.
+  if (hover_.coupling && hover_.onCouplingLines)
+    if (const GearItem* g = gearItem(*scene_, hover_.coupling)) {
+      p->setPen(cosmetic(st.highlight, 1.5, Qt::DashLine));
+      p->setBrush(Qt::NoBrush);
+      p->drawPath(g->lines());
     }
   // The link being drawn.
   if (!path_.empty()) {

@@ -46,6 +46,9 @@ class Toolbox : public QObject {
   Document* document() const { return ctx_.doc; }
   void editWith(const QString& text, const std::function<bool(Mechanism&, std::string&)>& change);
   Tool* switchTo(const QString& name);
+  // Selects `joint` alone and asks for its Properties field named `label`, the keyboard in it
+  // (a gear's "Edit Ratio..." on its menu).
+  void editField(JointId joint, const QString& label);
 
   // The next click on a point of the canvas gives that point to `picked` (tools/
   // pick_point_tool.h), then the select tool is back; Esc or another tool calls `cancelled`.
@@ -56,6 +59,7 @@ class Toolbox : public QObject {
 
  Q_SIGNALS:
   void hintChanged(const QString& hint);
+  void fieldWanted(const QString& label);
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
@@ -70,6 +74,7 @@ class Toolbox : public QObject {
   void makeCommands(Make make);
   void pointMenu(QMenu& menu, const Point& point, const Vec2& at);
   void bodyMenu(QMenu& menu, const Body& body, const Vec2& at);
+  void jointMenu(QMenu& menu, const Joint& joint);
 
   ToolContext ctx_;
   std::vector<std::unique_ptr<Tool>> tools_;

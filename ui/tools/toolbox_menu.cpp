@@ -91,6 +91,28 @@ void Toolbox::bodyMenu(QMenu& menu, const Body& body, const Vec2& at) {
   });
 }
 
+// A joint's entries, under its name: its kind's, then delete.
+void Toolbox::jointMenu(QMenu& menu, const Joint& joint) {
+  Document* doc = ctx_.doc;
+  const JointId id = joint.id;
+  const QString label = QString::fromStdString(jointLabel(doc->design(), id));
+  menu.addSection(label);
+  elementUi(joint.type).jointMenu(*this, menu, joint);
+  menu.addAction(tr("Delete Joint"), this, [doc, id, label] {
+    Mechanism n = doc->design();
+    n.remove(id);
+    editDesign(doc, tr("Delete %1").arg(label), std::move(n));
+  });
+}
+
+void Toolbox::editField(JointId joint, const QString& label) {
+  ctx_.selection->blockSignals(true);
+  ctx_.selection->clear();
+  ctx_.selection->blockSignals(false);
+  ctx_.selection->add(joint);
+  emit fieldWanted(label);
+}
+
 QMenu* Toolbox::contextMenu(const CanvasMouse& e, QWidget* parent) {
   Document* doc = ctx_.doc;
   const Mechanism& m = doc->design();
@@ -99,17 +121,10 @@ QMenu* Toolbox::contextMenu(const CanvasMouse& e, QWidget* parent) {
   const Point* point = m.point(p.point);
   const Joint* joint = m.joint(p.joint);
   if (point) pointMenu(*menu, *point, ctx_.scene->worldOf(point->id));
-  if (joint) {
-    const JointId id = joint->id;
-    const QString label = QString::fromStdString(jointLabel(m, id));
-    menu->addSection(label);
-    elementUi(joint->type).jointMenu(*this, *menu, *joint);
-    menu->addAction(tr("Delete Joint"), this, [doc, id, label] {
-      Mechanism n = doc->design();
-      n.remove(id);
-      editDesign(doc, tr("Delete %1").arg(label), std::move(n));
-    });
-  }
+  if (joint) jointMenu(*menu, *joint);
+  // A gear or belt under the cursor (its lines, or inside a pitch circle).
+  if (const Joint* coupling = m.joint(p.coupling); coupling && coupling != joint)
+    jointMenu(*menu, *coupling);
   const Body* body = m.body(p.body);
   if (body && !body->ground && !point) bodyMenu(*menu, *body, e.snap.at);
   if (!point && !joint && (!body || body->ground)) {

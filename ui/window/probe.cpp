@@ -1,12 +1,14 @@
 #include "window/probe.h"
 
 #include <QAbstractButton>
+#include <QAbstractSpinBox>
 #include <QApplication>
 #include <QComboBox>
 #include <QCryptographicHash>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QSaveFile>
 #include <QTabBar>
 #include <QTableWidget>
@@ -21,13 +23,16 @@
 #include "centres/centres_panel.h"
 #include "cycle/cycle_panel.h"
 #include "document/document.h"
+#include "linkage/elements.h"
 #include "linkage/io/model_file.h"
 #include "mechanisms/mechanisms_panel.h"
 #include "plots/plots_panel.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
+#include "tools/selection.h"
 #include "window/features.h"
 #include "window/mechanisms_feature.h"
+#include "window/tools_feature.h"
 
 namespace linkage::ui {
 
@@ -42,6 +47,31 @@ QString plain(const QString& rich) {
   QTextDocument d;
   d.setHtml(rich);
   return oneLine(d.toPlainText());
+}
+
+// What is selected, by the names the messages use: "coupler.P; joints[2] (gear ...)".
+QString selectionText(MainWindow& w) {
+  const Mechanism& m = w.document()->design();
+  const Selection& s = *w.tools().selection();
+  QStringList names;
+  for (BodyId b : s.bodies)
+    if (const Body* body = m.body(b)) names << QString::fromStdString(body->name);
+  for (PointId p : s.points) names << QString::fromStdString(m.pointLabel(p));
+  for (JointId j : s.joints) names << QString::fromStdString(jointLabel(m, j));
+  for (SlotId sl : s.slots_) names << QString::fromStdString(m.slotLabel(sl));
+  return names.join(QStringLiteral("; "));
+}
+
+// The docks' named number boxes (the crank's angle and step, the plots' revolutions and
+// steps): what they show and where.
+void spinBoxes(MainWindow& w, QStringList& out) {
+  for (QAbstractSpinBox* s : w.findChildren<QAbstractSpinBox*>()) {
+    // A dock behind another's tab keeps its widgets "visible", moved off the window.
+    if (s->objectName().isEmpty() || s->visibleRegion().isEmpty()) continue;
+    const QPoint c = s->mapToGlobal(s->rect().center());
+    out << QStringLiteral("spin %1: %2").arg(s->objectName(), s->text());
+    out << QStringLiteral("at spin %1: %2 %3").arg(s->objectName()).arg(c.x()).arg(c.y());
+  }
 }
 
 void windowText(MainWindow* w, QStringList& out) {
@@ -97,12 +127,14 @@ void windowText(MainWindow* w, QStringList& out) {
              .arg(forces.loads.size())
              .arg(forces.reactions.size());
   out << QStringLiteral("properties: ") + plain(w->properties().panel()->title());
+  out << QStringLiteral("selection: ") + selectionText(*w);
   for (QLineEdit* e : w->properties().panel()->findChildren<QLineEdit*>()) {
     const QString label = w->properties().panel()->labelOf(e);
     const QPoint c = e->mapToGlobal(e->rect().center());
     out << QStringLiteral("field %1: %2").arg(label, e->text());
     out << QStringLiteral("at field %1: %2 %3").arg(label).arg(c.x()).arg(c.y());
   }
+  spinBoxes(*w, out);
   out << w->mechanisms().panel->probeLines();
   out << w->cycle().panel()->probeLines();
   out << QStringLiteral("clearance marks: %1").arg(w->cycle().marks()->marks().size());
@@ -117,6 +149,30 @@ QString probeText() {
   for (MainWindow* w : MainWindow::windows()) {
     out << QStringLiteral("window");
     windowText(w, out);
+  }
+  // A menu open (a right click's): its entries, section titles among them, and where they are.
+  if (auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget())) {
+    QStringList entries;
+    for (QAction* a : menu->actions()) {
+      const QString text = QString(a->text()).remove(QLatin1Char('&'));
+      if (text.isEmpty()) continue;
+      entries << text;
+      const QPoint c = menu->mapToGlobal(menu->actionGeometry(a).center());
+      out << QStringLiteral("at menu item %1: %2 %3").arg(text).arg(c.x()).arg(c.y());
+    }
+    out << QStringLiteral("menu: ") + entries.join(QStringLiteral(" | "));
+  }
+  // A question asked (a message box): its title and where its buttons are, to answer it.
+  if (QWidget* d = QApplication::activeModalWidget()) {
+    out << QStringLiteral("dialog: ") + d->windowTitle();
+    for (QAbstractButton* b : d->findChildren<QAbstractButton*>()) {
+      if (!b->isVisible() || b->text().isEmpty()) continue;
+      const QPoint c = b->mapToGlobal(b->rect().center());
+      out << QStringLiteral("at dialog button %1: %2 %3")
+                 .arg(QString(b->text()).remove(QLatin1Char('&')))
+                 .arg(c.x())
+                 .arg(c.y());
+    }
   }
   return out.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }

@@ -4,12 +4,14 @@
 #include <QDockWidget>
 #include <QEvent>
 #include <QLayout>
+#include <QLineEdit>
 #include <QScrollArea>
 #include <QSplitter>
 
 #include "document/document.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
+#include "tools/toolbox.h"
 #include "window/main_window.h"
 #include "window/message_strip.h"
 #include "window/tools_feature.h"
@@ -28,6 +30,22 @@ PropertiesFeature::PropertiesFeature(MainWindow& w, WindowLayout& layout)
   MessageStrip* strip = w.messageStrip();
   connect(panel_, &PropertiesPanel::message, strip, &MessageStrip::setMessage);
   connect(strip, &MessageStrip::messageChanged, panel_, &PropertiesPanel::messageShown);
+  // A menu's "Edit ..." (a gear's ratio): the field shown, the keyboard in it, its value
+  // selected to be typed over.
+  // Queued: the rows just made for the selection are shown by their layout first (a hidden
+  // field takes no focus).
+  connect(
+      w.tools().toolbox(), &Toolbox::fieldWanted, this,
+      [this](const QString& label) {
+        dock->show();
+        dock->raise();
+        QWidget* f = panel_->field(label);
+        if (!f) return;
+        scroll_->ensureWidgetVisible(f);
+        f->setFocus(Qt::OtherFocusReason);
+        if (auto* e = qobject_cast<QLineEdit*>(f)) e->selectAll();
+      },
+      Qt::QueuedConnection);
   connect(doc_, &Document::designChanged, this, &PropertiesFeature::updateWork);
   connect(doc_, &Document::poseChanged, inspector_, &InspectorPanel::refreshMotion);
   // Work only while seen: a dock's visibility says so (a tab behind another is moved off the
