@@ -9,6 +9,8 @@
 #include "ui_test.h"
 
 #include <QAbstractSpinBox>
+#include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QLineEdit>
 #include <QTest>
@@ -151,6 +153,32 @@ TEST(FieldKeys, TheWindowsKeysTypedIntoEveryKindOfFieldChooseNoTool) {
   for (const char* box : {"crankAngle", "crankStep", "plotRevs", "plotSteps"})
     typeWindowKeys(w, w.findChild<QAbstractSpinBox*>(box), box, true);
   typeWindowKeys(w, w.cycle().panel()->entryLine(), "cycle line", false);
+}
+
+// A choice box (a gear's Type, the Cycle dock's kind) finds its entries by the letters typed in
+// it; none of them is the window's (the B typed in a gear's Type box chose the Slider block
+// tool).
+TEST(FieldKeys, LettersTypedIntoAChoiceBoxAreTheBoxs) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "gear-four-bar"));
+  const Mechanism& m = w.document()->design();
+  JointId gear;
+  for (const Joint& j : m.joints)
+    if (j.type == JointType::Gear) gear = j.id;
+  ASSERT_TRUE(gear);
+  w.tools().selection()->add(gear);
+  QApplication::processEvents();
+  auto* type = qobject_cast<QComboBox*>(w.properties().panel()->field("Type"));
+  ASSERT_TRUE(type);
+  const Untouched untouched{w};
+  type->setFocus();
+  ASSERT_TRUE(type->hasFocus());
+  QTest::keyClicks(type, kWindowKeys);
+  untouched.expect("gear Type");
+  // The box itself found its entry by its first letter: "belt".
+  QTest::qWait(1100);  // the box's search starts again after a pause
+  QTest::keyClicks(type, "b");
+  EXPECT_TRUE(type->currentText().startsWith("belt", Qt::CaseInsensitive)) << type->currentText();
 }
 
 }  // namespace

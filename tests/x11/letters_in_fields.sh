@@ -2,7 +2,7 @@
 # Issue 26, item 9, in a real X window driven by xdotool: the window's one-letter keys (S, flip
 # X, instant centres I, fit F, then the tools L G T B P M O) typed into every kind of field: the
 # Properties' names, numbers, angles and "x, y" pairs, the docks' number boxes and the Cycle
-# dock's line. No tool is chosen, the document and its history stay as they were, the keyboard
+# dock's line, a choice box. No tool is chosen, the document and its history stay as they were, the keyboard
 # stays in the field; a number field keeps its value (and says why the letters were not
 # typed), a text field has them as its text. "abc" in Mass chose the Slider block tool before.
 #   tests/x11/letters_in_fields.sh path/to/linkage
@@ -77,6 +77,20 @@ for box in crankAngle crankStep plotSteps; do
   was=$(probe "spin $box")
   type_into "$(probe "at spin $box")" "$box" "spin $box" "$was"
 done
+# A choice box (the plotted component), as a user leaves it after choosing: clicked (its list
+# opens), closed with Esc, the keyboard still in it. The letters find its entries; none is the
+# window's.
+wait_probe "at combo plotComponent" || fail "no plotComponent in the probe"
+design=$(probe design); hist=$(history)
+xdotool mousemove $(probe "at combo plotComponent") click 1; sleep 0.4
+xdotool key Escape; sleep 0.3
+wait_probe "focus: QComboBox" || fail "the component box does not have the keyboard"
+xdotool type --delay 30 "$keys"
+sleep 0.6
+probe hint | grep -q "^Select:" || fail "a key typed in the choice box chose a tool ($(probe hint))"
+[ "$(probe design)" = "$design" ] || fail "the keys typed in the choice box changed the design"
+[ "$(history)" = "$hist" ] || fail "the keys typed in the choice box made an undo step"
+
 xdotool mousemove 640 300 click 1
 xdotool key shift+c
 wait_probe "tab Cycle" || fail "Shift+C did not show the Cycle dock"

@@ -32,6 +32,7 @@ void PlotControls::addPlotRow() {
   target_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   target_->setMinimumContentsLength(14);
   component_ = new QComboBox;
+  component_->setObjectName("plotComponent");  // for scripts (the probe)
   component_->addItems({"x", "y", "magnitude", "along"});
   component_->setToolTip(
       "Component of the point's motion: x, y, the vectors' lengths, or along a direction");

@@ -27,6 +27,7 @@
 #include "tools/toolbox.h"
 #include "window/animation_feature.h"
 #include "window/centres_feature.h"
+#include "window/choice_keys.h"
 #include "window/cycle_feature.h"
 #include "window/design_feature.h"
 #include "window/edit_feature.h"
@@ -56,6 +57,7 @@ QList<MainWindow*> MainWindow::windows() {
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setAttribute(Qt::WA_DeleteOnClose);
   setAcceptDrops(true);
+  ChoiceKeys::install();
   openWindows().append(this);
   doc_ = new Document(this);
   autosave_ = new Autosaver(doc_, this);
