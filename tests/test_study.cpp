@@ -3,6 +3,8 @@
 // paper's adjustment of the 876 needle mechanism, and the same rows on any number of threads.
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -232,6 +234,46 @@ TEST(Study, SameRowsOnAnyNumberOfThreadsAndBadSpecs) {
   bad.point = PointId{};
   EXPECT_EQ(runStudy(m, bad).status.code, StatusCode::BadModel);
   EXPECT_TRUE(runStudy(m, bad).rows.empty());
+}
+
+// The one pool of threads for studies, watched and stopped from outside (what the editor's
+// study runner does from its thread): progress after every variant, and a cancel keeps the
+// rows computed, the first values of t, each the same as a whole run's.
+TEST(Study, ProgressAfterEveryVariantAndACancelKeepsTheFirstRows) {
+  const Mechanism m = example("needle-876-alpha-0");
+  StudySpec spec;
+  spec.move.point = *m.findPoint("ground.C");
+  spec.move.by = Vec2(0.5, -0.25);
+  spec.from = -4;
+  spec.to = 4;
+  spec.values = 17;
+  spec.point = *m.findPoint("needlebar.G");
+  spec.threads = 2;
+  std::atomic<int> calls{0}, last{0};
+  StudyControl watch;
+  watch.progress = [&](int done, int total) {
+    ++calls;
+    EXPECT_EQ(total, 17);
+    last = std::max(last.load(), done);
+  };
+  const Study whole = runStudy(m, spec, watch);
+  EXPECT_EQ(calls, 17);
+  EXPECT_EQ(last, 17);
+  EXPECT_FALSE(whole.cancelled);
+  std::atomic<bool> cancel{false};
+  StudyControl stop;
+  stop.cancel = &cancel;
+  stop.progress = [&](int done, int) {
+    if (done >= 5) cancel = true;
+  };
+  const Study part = runStudy(m, spec, stop);
+  EXPECT_TRUE(part.cancelled);
+  ASSERT_GE(part.rows.size(), 5u);
+  ASSERT_LT(part.rows.size(), 17u);
+  for (size_t i = 0; i < part.rows.size(); ++i) {
+    EXPECT_EQ(part.rows[i].t, whole.rows[i].t);
+    EXPECT_EQ(part.rows[i].point.stroke, whole.rows[i].point.stroke);
+  }
 }
 
 }  // namespace

@@ -11,30 +11,6 @@ namespace linkage {
 
 namespace {
 
-// Andrew's monotone chain; collinear points are dropped, so a row of points gives its two ends.
-std::vector<Vec2> convexHull(std::vector<Vec2> p) {
-  std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
-    return a.x() != b.x() ? a.x() < b.x() : a.y() < b.y();
-  });
-  p.erase(std::unique(p.begin(), p.end()), p.end());
-  if (p.size() < 3) return p;
-  std::vector<Vec2> h(2 * p.size());
-  size_t k = 0;
-  auto turnsLeft = [&](const Vec2& a, const Vec2& b, const Vec2& c) {
-    return cross(b - a, c - a) > 0;
-  };
-  for (size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && !turnsLeft(h[k - 2], h[k - 1], p[i])) --k;
-    h[k++] = p[i];
-  }
-  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
-    while (k >= t && !turnsLeft(h[k - 2], h[k - 1], p[i - 1])) --k;
-    h[k++] = p[i - 1];
-  }
-  h.resize(k - 1);
-  return h;
-}
-
 // Whether the points and the slot a joint's kind reads are in the mechanism (a design being
 // drawn is not checked).
 bool resolves(const Mechanism& m, const Joint& j) {

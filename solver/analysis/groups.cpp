@@ -11,12 +11,6 @@ const char* toString(GroupKind k) {
   return names[static_cast<int>(k)];
 }
 
-// The same kinds in the same order as the decomposition's.
-static_assert(static_cast<int>(GroupKind::Other) == static_cast<int>(Group::Kind::Other) &&
-              static_cast<int>(GroupKind::Geared) == static_cast<int>(Group::Kind::Geared) &&
-              static_cast<int>(GroupKind::Triad) == static_cast<int>(Group::Kind::Triad) &&
-              static_cast<int>(GroupKind::PR) == static_cast<int>(Group::Kind::PR));
-
 int AssurDecomposition::groupOf(BodyId b) const {
   if (b == ground) return -1;
   for (const auto& [id, group] : solvedBy)
@@ -33,7 +27,7 @@ AssurDecomposition decomposeAssur(const Mechanism& m) {
   const Decomposition d = decompose(*sys);
   for (const Group& g : d.groups) {
     AssurGroup a;
-    a.kind = static_cast<GroupKind>(g.kind);
+    a.kind = g.kind;
     for (int b : g.bodies) a.bodies.push_back(sys->bodyIds[b]);
     for (int j : g.joints) a.joints.push_back(m.joints[j].id);
     for (int b : g.bodies) out.solvedBy.emplace_back(sys->bodyIds[b], out.groups.size());

@@ -63,25 +63,34 @@ Status movePoint(Mechanism& m, const PointMove& mv, double t) {
   return Status::success();
 }
 
-Study runStudy(const Mechanism& m, const StudySpec& spec) {
+namespace {
+
+// What a spec that cannot run is missing, or "" (then `dir` is the stroke's direction).
+std::string specProblem(const Mechanism& m, const StudySpec& spec, Vec2& dir) {
+  if (!m.driver) return "the mechanism has no driver";
+  if (!m.contains(spec.move.point)) return "the point to move is not in the mechanism";
+  if (!m.contains(spec.point)) return "the point to measure is not in the mechanism";
+  for (BodyId b : spec.bodies)
+    if (!m.contains(b)) return "a body to measure is not in the mechanism";
+  if (spec.values < 1) return "a study needs at least one value of t";
+  if (spec.steps < 4) return "a study needs at least 4 steps per turn";
+  if (!std::isfinite(spec.from) || !std::isfinite(spec.to)) return "t is not finite";
+  Mechanism probe = m;
+  if (Status s = movePoint(probe, spec.move, spec.from); !s.ok()) return s.message;
+  dir = spec.direction.value_or(defaultDirection(m, spec.point));
+  if (!dir.allFinite() || dir.norm() == 0) return "the direction is not a finite non-zero vector";
+  return "";
+}
+
+}  // namespace
+
+Study runStudy(const Mechanism& m, const StudySpec& spec, const StudyControl& control) {
   Study out;
-  auto bad = [&](const std::string& why) {
+  Vec2 dir;
+  if (std::string why = specProblem(m, spec, dir); !why.empty()) {
     out.status = Status::failure(StatusCode::BadModel, why);
     return out;
-  };
-  if (!m.driver) return bad("the mechanism has no driver");
-  if (!m.contains(spec.move.point)) return bad("the point to move is not in the mechanism");
-  if (!m.contains(spec.point)) return bad("the point to measure is not in the mechanism");
-  for (BodyId b : spec.bodies)
-    if (!m.contains(b)) return bad("a body to measure is not in the mechanism");
-  if (spec.values < 1) return bad("a study needs at least one value of t");
-  if (spec.steps < 4) return bad("a study needs at least 4 steps per turn");
-  if (!std::isfinite(spec.from) || !std::isfinite(spec.to)) return bad("t is not finite");
-  Mechanism probe = m;
-  if (Status s = movePoint(probe, spec.move, spec.from); !s.ok()) return bad(s.message);
-  const Vec2 dir = spec.direction.value_or(defaultDirection(m, spec.point));
-  if (!dir.allFinite() || dir.norm() == 0)
-    return bad("the direction is not a finite non-zero vector");
+  }
   out.joints = transmissionJoints(m);
   out.rows.resize(spec.values);
   for (int i = 0; i < spec.values; ++i)
@@ -89,20 +98,33 @@ Study runStudy(const Mechanism& m, const StudySpec& spec) {
         spec.values == 1 ? spec.from : spec.from + (spec.to - spec.from) * i / (spec.values - 1);
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   out.threads = std::min(spec.threads > 0 ? spec.threads : cores, spec.values);
-  std::atomic<int> next{0};
+  std::atomic<int> next{0}, done{0};
+  std::vector<char> computed(spec.values, 0);
+  // A variant taken is computed: the rows computed are the first ones, whenever a cancel comes.
   auto work = [&] {
-    for (int i = next++; i < spec.values; i = next++) {
+    while (!(control.cancel && *control.cancel)) {
+      const int i = next++;
+      if (i >= spec.values) break;
       Mechanism moved = m;
       const double t = out.rows[i].t;
       movePoint(moved, spec.move, t);
       out.rows[i] = measureVariant(moved, spec, dir, out.joints);
       out.rows[i].t = t;
+      computed[i] = 1;
+      if (control.progress) control.progress(++done, spec.values);
     }
   };
   std::vector<std::thread> pool;
   for (int k = 1; k < out.threads; ++k) pool.emplace_back(work);
   work();
   for (std::thread& th : pool) th.join();
+  if (done < spec.values) {
+    out.cancelled = true;
+    std::vector<StudyRow> kept;
+    for (int i = 0; i < spec.values; ++i)
+      if (computed[i]) kept.push_back(std::move(out.rows[i]));
+    out.rows = std::move(kept);
+  }
   return out;
 }
 

@@ -218,7 +218,7 @@ std::string clearancePartProblem(const Mechanism& m, PointId point, const Cleara
   const BodyId pointBody = m.point(point)->body;
   if (other.isSegment()) {
     const Point &a = *m.point(other.point), &b = *m.point(other.end);
-    if (a.body != b.body) return "a segment's two ends are on one body";
+    if (a.body != b.body) return "a segment's two ends must be points of one body";
     if (!((a.pos - b.pos).norm() > 1e-9)) return "a segment's two ends are in one place";
   }
   const BodyId otherBody = other.isSlot() ? m.slot(other.slot)->body : m.point(other.point)->body;

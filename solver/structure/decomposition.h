@@ -15,6 +15,7 @@
 
 #include <vector>
 
+#include "linkage/groups.h"
 #include "system/system.h"
 
 namespace linkage {
@@ -37,7 +38,7 @@ struct Group {
   //         pins (two), its points on known bodies' straight slots (one), and slider blocks
   //         pinned to it running in known bodies' straight slots (one); rows in body order.
   // Other:  any other group; rows in order.
-  enum class Kind { Crank, Geared, RRR, RRP, RP, PR, Triad, Other };
+  using Kind = GroupKind;  // the one list of kinds, public (linkage/groups.h)
   Kind kind = Kind::Other;
   std::vector<int> bodies;
   std::vector<int> rows;

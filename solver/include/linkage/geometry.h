@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <vector>
 
 namespace linkage {
 
@@ -37,5 +38,9 @@ struct Transform {
   Vec2 operator*(const Vec2& sketch) const { return R * sketch + t; }
   Vec2 inverse(const Vec2& world) const { return R.inverse() * (world - t); }
 };
+
+// The convex hull, counter-clockwise (Andrew's monotone chain), without collinear points: a row
+// of points gives its two ends.
+std::vector<Vec2> convexHull(std::vector<Vec2> points);
 
 }  // namespace linkage

@@ -45,7 +45,4 @@ struct PolygonMoments {
 };
 PolygonMoments polygonMoments(const std::vector<Vec2>& polygon);
 
-// The convex hull, counter-clockwise, without collinear points.
-std::vector<Vec2> convexHull(std::vector<Vec2> points);
-
 }  // namespace linkage

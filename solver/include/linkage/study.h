@@ -10,9 +10,13 @@
 // point on a line, not at a place).
 //
 // Every variant is a fresh load of the moved mechanism, so a row is what a separate run on the
-// moved model file gives; variants run in parallel, one solver per thread.
+// moved model file gives; variants run in parallel, one solver per thread (the one pool of
+// threads for studies: an editor runs runStudy on a thread of its own and watches it through
+// StudyControl).
 #pragma once
 
+#include <atomic>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -71,10 +75,19 @@ struct StudyRow {
 struct Study {
   Status status;  // BadModel for a spec that cannot run (the rows are then empty)
   std::vector<TransmissionJoint> joints;  // of the mechanism (the same in every variant)
-  std::vector<StudyRow> rows;             // in t order
+  std::vector<StudyRow> rows;             // in t order: every value's, or those computed
+  bool cancelled = false;                 // stopped before every value had its row
   int threads = 1;                        // the threads that ran
 };
 
-Study runStudy(const Mechanism& m, const StudySpec& spec);
+// How a caller off the run's threads follows and stops it: `progress` after each variant (on
+// the thread that computed it, any of the pool's), `cancel` read before each variant is taken:
+// the variants under way finish, no other starts, and the rows computed are kept.
+struct StudyControl {
+  std::function<void(int done, int total)> progress;
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+Study runStudy(const Mechanism& m, const StudySpec& spec, const StudyControl& control = {});
 
 }  // namespace linkage
