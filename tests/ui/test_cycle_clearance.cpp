@@ -114,7 +114,7 @@ TEST_F(CycleClearanceTest, TheSegmentSaysWhereTheHookPointMeetsTheNeedle) {
   ASSERT_FALSE(marks.isEmpty());
   const auto last = marks.back().at(0).value<std::vector<ClearanceMark>>();
   ASSERT_EQ(last.size(), 1u);
-  EXPECT_EQ(last[0].text, "hook.K – segment needlebar.N-B: " + figures);
+  EXPECT_EQ(last[0].text, QString("hook.K – segment needlebar.N-B: meets it at %1°").arg(f2(meet)));
   EXPECT_NEAR((last[0].a - Vec2(0, -185)).norm(), 0, 1e-9);
   EXPECT_NEAR((last[0].b - Vec2(0, -185)).norm(), 0, 1e-9);
   ASSERT_EQ(last[0].part.size(), 2u);

@@ -177,8 +177,7 @@ TEST_F(CycleWindowsTest, DraggingTheThresholdMovesTheEndsLiveAndOneUndoRestores)
   EXPECT_FALSE(form.isVisible());
   // (8 pixels: the needle's row of the shipped machine, with its clearance's row under the
   // others, is about 50 pixels for its 32 mm stroke.)
-  for (int dy = 2; dy <= 8; dy += 2)
-    mouse(QEvent::MouseMove, *on + QPointF(0, dy), Qt::LeftButton);
+  for (int dy = 2; dy <= 8; dy += 2) mouse(QEvent::MouseMove, *on + QPointF(0, dy), Qt::LeftButton);
   settle();
   const double level = form.level();
   EXPECT_LT(level, -185);

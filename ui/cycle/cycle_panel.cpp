@@ -495,17 +495,14 @@ void CyclePanel::showResults() {
 void CyclePanel::emitMarks() {
   if (!isVisible() || !doc_) return;
   std::vector<ClearanceMark> marks;
-  const Mechanism& m = doc_->design();
   if (diagram())
-    for (size_t i = 0; i < m.timing.clearances.size(); ++i)
-      if (const CycleClearanceRow* c = clearanceRow(static_cast<int>(i))) {
-        const Clearance& k = c->clearance;
-        const bool close = c->minMm && k.closest.distance < *c->minMm;
-        marks.push_back(
-            {k.closestPoint, k.closestOther,
-             c->label + QStringLiteral(": ") + clearanceFigures(m, m.timing.clearances[i], k),
-             close, k.closestPart});
-      }
+    for (const CycleClearanceRow& c : clearances_) {
+      const Clearance& k = c.clearance;
+      const bool close = c.minMm && k.closest.distance < *c.minMm;
+      // Brief on the canvas: the part drawn there shows where along it they meet.
+      marks.push_back({k.closestPoint, k.closestOther,
+                       c.label + QStringLiteral(": ") + clearanceNote(k, 2), close, k.closestPart});
+    }
   Q_EMIT marksChanged(marks);
 }
 
