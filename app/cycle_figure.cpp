@@ -8,6 +8,7 @@
 #include "cli_common.h"
 #include "cli_cycle_setup.h"
 #include "cli_parser.h"
+#include "cycle/clearance_text.h"
 #include "cycle/cycle_figure.h"
 #include "export/figure_export.h"
 #include "plots/qcp.h"
@@ -34,9 +35,7 @@ std::vector<ui::CycleClearanceRow> clearanceRows(const Kinematics& k, int steps)
   for (const ClearanceWatch& w : m.timing.clearances) {
     Clearance c = findClearance(k, ClearancePart::of(w.point), w.other, opt);
     if (!c.status.ok()) continue;  // linkage-cli timing does not judge clearances
-    out.push_back(
-        {QString::fromStdString(m.pointLabel(w.point) + " \u2013 " + m.partLabel(w.other)),
-         std::move(c), w.minMm});
+    out.push_back({ui::clearanceLabel(m, w), std::move(c), w.minMm});
   }
   return out;
 }

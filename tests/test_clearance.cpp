@@ -171,6 +171,10 @@ TEST(Clearance, PointAgainstASlotAsDrawn) {
     EXPECT_NEAR((k.closestPoint - r * Vec2(std::cos(t), std::sin(t))).norm(), 0, 1e-9);
     EXPECT_NEAR((k.closestOther - c.other).norm(), 0, 1e-9);
     EXPECT_NEAR((k.closestPoint - k.closestOther).norm(), k.closest.distance, 1e-9);
+    // The ground's slot, where it is drawn, for a figure.
+    ASSERT_EQ(k.closestPart.size(), 2u);
+    EXPECT_EQ(k.closestPart[0], s.m.slot(c.slot)->p0);
+    EXPECT_EQ(k.closestPart[1], s.m.slot(c.slot)->p1);
     // The curve's samples are the distances at those angles.
     ASSERT_EQ(k.crankDeg.size(), k.distance.size());
     EXPECT_EQ(k.crankDeg.front(), 0);
@@ -277,7 +281,15 @@ TEST(Clearance, LockstitchHookPointToTheNeedleAsASegment) {
     }
   }
   EXPECT_EQ(on, 1);
+  // Where they meet, the needle as it is then: N and B on x = 0 at the needle's height.
+  const LD t = c.closest.crankDeg * deg, ny = needleY(t);
+  EXPECT_NEAR((c.closestPoint - Vec2(0, -185)).norm(), 0, 1e-9);
+  EXPECT_NEAR((c.closestOther - c.closestPoint).norm(), 0, 1e-9);
+  ASSERT_EQ(c.closestPart.size(), 2u);
+  EXPECT_NEAR((c.closestPart[0] - Vec2(0, static_cast<double>(ny))).norm(), 0, 1e-9);
+  EXPECT_NEAR((c.closestPart[1] - Vec2(0, static_cast<double>(ny + 131))).norm(), 0, 1e-9);
   const Clearance toN = findClearance(k, ClearancePart::of(K), ClearancePart::of(N));
+  EXPECT_TRUE(toN.closestPart.empty());  // a point: no part to draw
   ASSERT_EQ(c.minima.size(), 2u);
   EXPECT_NEAR(c.minima[0].crankDeg, toN.minima[0].crankDeg, 1e-9);
   EXPECT_NEAR(c.minima[0].distance, toN.minima[0].distance, 1e-9);

@@ -229,6 +229,40 @@ TEST(LockstitchArmShaft, ShipsTheNeedleAndHookWindows) {
   expectIntervals(d.windows[1], hookPastTheNeedle());
 }
 
+// Both lockstitch files watch the hook point's clearance to the needle as the segment from its
+// point N up to the bar's pin B: the hook point meets it where it passes over the needle's line
+// after the needle's bottom dead centre, at the top of its circle (0, -185), N_y(t) below it
+// (the needle's closed form); on its idle turn it passes below the needle's point.
+TEST(LockstitchMachine, ShipsTheHookPointsClearanceToTheNeedleSegment) {
+  for (const char* name : {"lockstitch-machine", "lockstitch-arm-shaft"}) {
+    Kinematics k;
+    ASSERT_TRUE(k.load(test::example(name)).ok()) << name;
+    const Mechanism& m = k.mechanism();
+    ASSERT_EQ(m.timing.clearances.size(), 1u) << name;
+    const ClearanceWatch& w = m.timing.clearances[0];
+    EXPECT_EQ(w.point, *m.findPoint("hook.K")) << name;
+    EXPECT_EQ(w.other,
+              ClearancePart::segment(*m.findPoint("needlebar.N"), *m.findPoint("needlebar.B")))
+        << name;
+    EXPECT_FALSE(w.minMm) << name;  // they are meant to meet: no least distance
+    const Clearance c = findClearance(k, ClearancePart::of(w.point), w.other);
+    ASSERT_TRUE(c.status.ok()) << name << ": " << c.status.message;
+    const double meet = hookPastTheNeedle()[1].fromDeg, t = meet * M_PI / 180;
+    const double needleY =
+        16 * std::cos(t) - std::sqrt(45 * 45 - 256 * std::sin(t) * std::sin(t)) - 131;
+    EXPECT_EQ(c.closest.distance, 0) << name;
+    EXPECT_NEAR(c.closest.crankDeg, meet, 1e-9) << name;
+    int on = 0;
+    for (const ClearanceCrossing& x : c.crossings)
+      if (x.onPart) {
+        ++on;
+        EXPECT_NEAR(x.crankDeg, meet, 1e-9) << name;
+        EXPECT_NEAR(x.alongMm, -185 - needleY, 1e-9) << name;
+      }
+    EXPECT_EQ(on, 1) << name;
+  }
+}
+
 #ifdef LINKAGE_CLI
 using LockstitchCli = test::CliTest;
 

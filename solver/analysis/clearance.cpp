@@ -113,6 +113,11 @@ void placeClosest(const Kinematics& k, const ClearancePart& a, const ClearancePa
   BodyId body;
   const Guide g = *curveOf(k.mechanism(), b, body, nullptr);  // quantitiesOf has checked it
   out.closestOther = at.toWorld(body, g.nearest(at.toSketch(body, out.closestPoint)));
+  const int pieces = g.arc ? 48 : 1;
+  for (int i = 0; i <= pieces; ++i)
+    out.closestPart.push_back(at.toWorld(body, i == 0        ? g.p0
+                                               : i == pieces ? g.p1
+                                                             : g.at(g.length() * i / pieces)));
 }
 
 // Where along the segment or slot the point crosses its line or circle, at each crossing.

@@ -133,9 +133,10 @@ TEST(DocumentStress, OpeningEditingAutosavingAndClosingInterleavedWithClearances
   w->autosaver()->setInterval(0);
   ASSERT_TRUE(w->openExample("lockstitch-machine"));
   w->cycle().dock->show();
+  // The example's own clearance (to the needle as a segment), and one more.
   ASSERT_TRUE(w->cycle().panel()->addEntry(EntryKind::Clearance, "hook.K needlebar.N"));
   settle(*w);
-  ASSERT_EQ(w->cycle().marks()->marks().size(), 1u);
+  ASSERT_EQ(w->cycle().marks()->marks().size(), 2u);
   // The sequence first: another example over the marked clearance.
   ASSERT_TRUE(w->openExample("slider-crank-22a-masses"));
   settle(*w);

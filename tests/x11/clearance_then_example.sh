@@ -32,9 +32,10 @@ wait_probe "cycle kind: Clearance" || fail "the kind box did not take Clearance"
 xdotool mousemove $(probe "at cycle line") click 1
 xdotool type --delay 20 "hook.K needlebar.N"
 xdotool key Return
-wait_probe "cycle entry Clearance 0: hook.K needlebar.N => closest" ||
+# (The example ships the hook point's clearance to the needle as a segment: this is the second.)
+wait_probe "cycle entry Clearance 1: hook.K needlebar.N => point needlebar.N: closest" ||
   fail "the clearance typed was not computed"
-wait_probe "clearance marks: 1" || fail "the closest approach is not marked on the canvas"
+wait_probe "clearance marks: 2" || fail "the closest approach is not marked on the canvas"
 wait_still marked || fail "the picture does not settle"
 alive
 

@@ -46,7 +46,7 @@ xdotool keydown shift
 click_mm 0 -160
 xdotool keyup shift
 xdotool key shift+w
-wait_probe "cycle entry Clearance 0: hook.K needlebar.N => closest 4.411 mm at 210.25°" ||
+wait_probe "cycle entry Clearance 0: hook.K needlebar.N => point needlebar.N: closest 4.411 mm at 210.25°" ||
   fail "Shift+W did not watch the clearance of the two points picked"
 wait_probe "clearance marks: 1" || fail "the closest approach is not marked on the canvas"
 wait_still 2 || fail "the picture does not settle"

@@ -1,7 +1,9 @@
 // The clearances a machine's Cycle dock watches, on the canvas: for each, where its two things
 // are at their closest approach over the cycle (a ring at each, a dashed line between them) with
 // the distance and the crank angle, in the warning colour when it is under the least allowed.
-// The closest pose is usually not the pose shown: the marks say where the parts will meet.
+// The closest pose is usually not the pose shown: the marks say where the parts will meet, and
+// a segment or slot measured to is drawn where it is then (a needle lower than drawn: the ring
+// on it, not below its point as drawn).
 #pragma once
 
 #include <QString>
@@ -16,8 +18,9 @@ class LabelItem;
 
 struct ClearanceMark {
   Vec2 a = Vec2::Zero(), b = Vec2::Zero();  // world, mm
-  QString text;                             // "hook.K – needlebar.N 0.42 mm at 201.3°"
+  QString text;                             // "hook.K – needlebar.N: closest 0.42 mm at 201.3°"
   bool tooClose = false;
+  std::vector<Vec2> part;  // the segment or slot at that pose (world, mm); empty for a point
 };
 
 class ClearanceMarksItem : public CanvasItem {

@@ -101,7 +101,9 @@ QString kindHint(EntryKind k) {
     case EntryKind::Conflict:
       return tr("WINDOW1,WINDOW2  (they must not overlap)");
     case EntryKind::Clearance:
-      return tr("body.point body.point|body.slot [min MM]");
+      return tr(
+          "body.point  and body.point, body.P-Q (the segment between two points of a "
+          "body: a needle, a blade) or body.slot  [min MM]");
   }
   return {};
 }

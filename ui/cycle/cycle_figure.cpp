@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cycle/clearance_text.h"
 #include "forces/force_plots.h"
 #include "plots/qcp.h"
 
@@ -211,11 +212,9 @@ void CycleFigure::drawClearance(const CycleClearanceRow& c, int row) {
       QCPScatterStyle(QCPScatterStyle::ssDisc, tooClose ? kConflict : QColor(Qt::black), 6));
   dot->addData(k.closest.crankDeg, b + k.closest.distance / top);
   // Above the dot: the closest approach is the row's lowest point.
+  // What it is: the closest approach, where the two meet, or where the point is on the part.
   QCPItemText* t = label(*plot_, k.closest.crankDeg, b + k.closest.distance / top + 0.06,
-                         QStringLiteral("closest %1 at %2°")
-                             .arg(mm(k.closest.distance))
-                             .arg(k.closest.crankDeg, 0, 'f', 1),
-                         tooClose ? kConflict : QColor(Qt::black));
+                         clearanceNote(k), tooClose ? kConflict : QColor(Qt::black));
   // Kept inside the plot at either end of the cycle.
   t->setPositionAlignment(k.closest.crankDeg < 60    ? Qt::AlignLeft | Qt::AlignBottom
                           : k.closest.crankDeg > 300 ? Qt::AlignRight | Qt::AlignBottom

@@ -24,7 +24,7 @@ class QCPLayer;
 namespace linkage::ui {
 
 struct CycleClearanceRow {
-  QString label;  // "hook.K – needlebar.N"
+  QString label;  // "hook.K – segment needlebar.N-B" (cycle/clearance_text.h)
   Clearance clearance;
   std::optional<double> minMm;
 };

@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cycle/clearance_selection.h"
+#include "cycle/clearance_text.h"
 #include "cycle/window_form.h"
 #include "document/commands.h"
 #include "document/document.h"
@@ -53,10 +55,6 @@ QString mm(double v) {
 // Whether crank angle c (in [0, 360)) is inside an interval that may run past 360.
 bool inside(const AngleInterval& i, double c) {
   return (c >= i.fromDeg && c <= i.toDeg) || (c + 360 >= i.fromDeg && c + 360 <= i.toDeg);
-}
-
-QString watchLabel(const Mechanism& m, const ClearanceWatch& w) {
-  return QString::fromStdString(m.pointLabel(w.point) + " \u2013 " + m.partLabel(w.other));
 }
 
 }  // namespace
@@ -211,6 +209,8 @@ void CyclePanel::fillList() {
         item->setData(0, kKindRole, static_cast<int>(k));
         item->setData(0, kIndexRole, i);
         item->setFlags(item->flags() | Qt::ItemIsEditable);
+        if (k == EntryKind::Clearance)
+          item->setToolTip(1, clearanceDescription(m, m.timing.clearances[i]));
       }
   }
   list_->resizeColumnToContents(0);
@@ -275,17 +275,13 @@ void CyclePanel::removeEntry(EntryKind kind, int index) {
 
 bool CyclePanel::watchSelection(const Selection& s, QString* why) {
   if (!doc_) return false;
-  QString text;
-  const Mechanism& m = doc_->design();
-  if (s.points.size() == 2 && s.slots_.empty() && s.size() == 2)
-    text = QString::fromStdString(m.pointLabel(s.points[0]) + " " + m.pointLabel(s.points[1]));
-  else if (s.points.size() == 1 && s.slots_.size() == 1 && s.size() == 2)
-    text = QString::fromStdString(m.pointLabel(s.points[0]) + " " + m.slotLabel(s.slots_[0]));
+  const QString text = clearanceOfSelection(doc_->design(), s);
   if (text.isEmpty()) {
     if (why)
       *why =
-          tr("Select two points, or a point and a slot of another body (Shift+click adds to "
-             "the selection), then watch their clearance.");
+          tr("Select two points, a point and a slot of another body, or a point and two "
+             "points of one other body (the segment between them: a needle, a blade); "
+             "Shift+click adds to the selection. Then watch their clearance.");
     return false;
   }
   return addEntry(EntryKind::Clearance, text, why);
@@ -342,8 +338,9 @@ QString CyclePanel::whyNoDiagram() const {
     return tr(
         "The machine's cycle diagram: add a row (needlebar.N:y), a window "
         "(needle=needlebar.N:y<-150), a conflict between two windows, or the clearance "
-        "between two moving parts (select two points on the canvas, then Analysis > "
-        "Watch Clearance).");
+        "between two moving parts (select two points on the canvas, or a point and two "
+        "points of another body for the segment between them, then Analysis > Watch "
+        "Clearance).");
   return {};
 }
 
@@ -382,8 +379,15 @@ void CyclePanel::computeClearances(const Kinematics& k) {
       continue;
     }
     clearanceWhy_.push_back({});
-    clearances_.push_back({watchLabel(m, w), std::move(c), w.minMm});
+    clearances_.push_back({clearanceLabel(m, w), std::move(c), w.minMm});
   }
+}
+
+const CycleClearanceRow* CyclePanel::clearanceRow(int i) const {
+  if (i < 0 || i >= static_cast<int>(clearanceWhy_.size()) || !clearanceWhy_[i].isEmpty())
+    return nullptr;
+  // Those measured are in clearances_, in the entries' order.
+  return &clearances_[std::count(clearanceWhy_.begin(), clearanceWhy_.begin() + i, QString())];
 }
 
 const CycleDiagram* CyclePanel::diagram() const {
@@ -442,11 +446,10 @@ QString CyclePanel::resultText(EntryKind kind, int i) const {
     case EntryKind::Clearance: {
       if (i >= static_cast<int>(clearanceWhy_.size())) return {};
       if (!clearanceWhy_[i].isEmpty()) return clearanceWhy_[i];
-      const int row =
-          static_cast<int>(std::count(clearanceWhy_.begin(), clearanceWhy_.begin() + i, QString()));
-      const CycleClearanceRow& c = clearances_[row];
-      QString t = tr("closest %1 at %2")
-                      .arg(mm(c.clearance.closest.distance), deg(c.clearance.closest.crankDeg));
+      const CycleClearanceRow& c = *clearanceRow(i);
+      const ClearanceWatch& w = m.timing.clearances[i];
+      // What it measured to, then what it found: a 0 says that they meet or how.
+      QString t = partName(m, w.other) + QStringLiteral(": ") + clearanceFigures(m, w, c.clearance);
       if (c.minMm && c.clearance.closest.distance < *c.minMm)
         t += tr(": under the minimum, %1").arg(mm(*c.minMm));
       return t;
@@ -472,6 +475,13 @@ void CyclePanel::showResults() {
             (i < static_cast<int>(clearanceWhy_.size()) && !clearanceWhy_[i].isEmpty());
     item->setText(2, text);
     item->setToolTip(2, text);
+    // A clearance's tooltip: every crossing of the part's line, where along it.
+    if (kind == EntryKind::Clearance && !text.isEmpty() && doc_)
+      if (const CycleClearanceRow* c = clearanceRow(i))
+        if (const QString x = clearanceCrossings(doc_->design(),
+                                                 doc_->design().timing.clearances[i], c->clearance);
+            !x.isEmpty())
+          item->setToolTip(2, text + QLatin1Char('\n') + x);
     item->setForeground(2, bad ? QBrush(QColor(150, 32, 32)) : palette().text());
     // A threshold being dragged: the window's text follows it with its ends.
     if (preview_ && doc_ && kind == EntryKind::Window &&
@@ -487,12 +497,11 @@ void CyclePanel::emitMarks() {
   std::vector<ClearanceMark> marks;
   if (diagram())
     for (const CycleClearanceRow& c : clearances_) {
-      const bool close = c.minMm && c.clearance.closest.distance < *c.minMm;
-      marks.push_back(
-          {c.clearance.closestPoint, c.clearance.closestOther,
-           tr("%1: %2 at %3")
-               .arg(c.label, mm(c.clearance.closest.distance), deg(c.clearance.closest.crankDeg)),
-           close});
+      const Clearance& k = c.clearance;
+      const bool close = c.minMm && k.closest.distance < *c.minMm;
+      // Brief on the canvas: the part drawn there shows where along it they meet.
+      marks.push_back({k.closestPoint, k.closestOther,
+                       c.label + QStringLiteral(": ") + clearanceNote(k, 2), close, k.closestPart});
     }
   Q_EMIT marksChanged(marks);
 }
@@ -512,7 +521,7 @@ void CyclePanel::updateCursor() {
   const Kinematics& k = doc_->kinematics();
   for (const ClearanceWatch& w : doc_->design().timing.clearances) {
     const double d = clearanceAt(k, ClearancePart::of(w.point), w.other);
-    if (std::isfinite(d)) parts << tr("%1 %2").arg(watchLabel(k.mechanism(), w), mm(d));
+    if (std::isfinite(d)) parts << tr("%1 %2").arg(clearanceLabel(k.mechanism(), w), mm(d));
   }
   values_->setText(tr("At %1: %2").arg(deg(at), parts.join(", ")));
 }

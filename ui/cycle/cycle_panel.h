@@ -116,6 +116,8 @@ class CyclePanel : public QWidget {
   void schedule();
   void recompute();
   void computeClearances(const Kinematics& k);
+  // Clearance entry i's result (null when it is not measured).
+  const CycleClearanceRow* clearanceRow(int i) const;
   void rebuildFigure();
   void showResults();
   QString whyNoDiagram() const;

@@ -63,8 +63,10 @@ void CycleFeature::makeDock() {
 void CycleFeature::makeActions() {
   watchClearance = makeAction(
       &w_, "watchClearance", tr("&Watch Clearance"), QKeySequence(tr("Shift+W")),
-      tr("Watch the distance between the two things selected (two points, or a point and a "
-         "slot) over the cycle: its closest approach in the Cycle dock and on the canvas"));
+      tr("Watch the clearance of what is selected over the cycle: two points, a point and a "
+         "slot, or a point and two points of another body (the segment between them: a needle, "
+         "a blade; Shift+click adds to the selection); its closest approach in the Cycle dock "
+         "and on the canvas"));
   connect(watchClearance, &QAction::triggered, this, [this] {
     QString why;
     if (!panel_->watchSelection(*w_.tools().selection(), &why)) {

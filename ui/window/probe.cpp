@@ -138,6 +138,8 @@ void windowText(MainWindow* w, QStringList& out) {
   out << w->mechanisms().panel->probeLines();
   out << w->cycle().panel()->probeLines();
   out << QStringLiteral("clearance marks: %1").arg(w->cycle().marks()->marks().size());
+  for (const ClearanceMark& m : w->cycle().marks()->marks())
+    out << QStringLiteral("clearance mark: %1 (part of %2 points)").arg(m.text).arg(m.part.size());
   const QUndoStack* u = w->document()->undoStack();
   for (int i = 0; i < u->count(); ++i) out << QStringLiteral("history: ") + u->text(i);
 }

@@ -57,6 +57,10 @@ struct Clearance {
   // Where the two things are at the closest approach (world coordinates, mm): the point, and
   // the other point or the nearest point of the segment or slot as drawn.
   Vec2 closestPoint = Vec2::Zero(), closestOther = Vec2::Zero();
+  // The segment or slot as drawn at the closest approach (world, mm, from its first end): its
+  // two ends, or points along an arc; empty for a point. The pose shown is seldom that one: a
+  // figure draws the part where the point comes closest to it.
+  std::vector<Vec2> closestPart;
 };
 
 struct ClearanceOptions {
