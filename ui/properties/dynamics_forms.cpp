@@ -4,6 +4,7 @@
 #include <QRegularExpression>
 
 #include "document/document.h"
+#include "document/shown_numbers.h"
 #include "linkage/io/numbers.h"
 #include "properties/mass_dialog.h"
 #include "properties/properties_panel.h"
@@ -22,8 +23,11 @@ std::optional<Vec2> parsePair(const QString& text) {
   return Vec2(*x, *y);
 }
 
+// "x, y" rounded for people; a component that is rounding next to the other (the x of a
+// counterweight placed straight below its pivot, -2.8e-15) reads 0.
 QString pairText(const Vec2& v) {
-  return exactText(v.x()) + QStringLiteral(", ") + exactText(v.y());
+  const double scale = std::hypot(v.x(), v.y());
+  return shownText(cleaned(v.x(), scale)) + QStringLiteral(", ") + shownText(cleaned(v.y(), scale));
 }
 
 // Where a massless body's mass would start: the middle of its points.
@@ -88,10 +92,13 @@ void PropertiesPanel::fillMass(BodyId id) {
       tr("kg\u00b7mm\u00b2"));
   addButton(QString(), tr("Estimate from Outline\u2026"), [this, id] { estimateMass(id); });
   addInfo(tr("Counterweights"), [mass] {
-    if (!mass() || mass()->counterweights.empty()) return tr("none");
+    // A copy held while it is read: a loop over mass()->counterweights read the temporary's
+    // vector after the temporary was gone (the "4.941e-321 g" of issue 26).
+    const std::optional<Mass> held = mass();
+    if (!held || held->counterweights.empty()) return tr("none");
     QStringList parts;
-    for (const PointMass& c : mass()->counterweights)
-      parts << tr("%1 g at %2").arg(c.kg * 1000, 0, 'g', 4).arg(pairText(c.at));
+    for (const PointMass& c : held->counterweights)
+      parts << tr("%1 kg at (%2)").arg(shownText(c.kg), pairText(c.at));
     return parts.join(QStringLiteral("; "));
   });
 }
@@ -160,7 +167,7 @@ void PropertiesPanel::fillLoad(LoadId id, int number) {
       [load] {
         const Load l = load();
         if (!l.fromDeg) return tr("always");
-        return tr("%1 to %2\u00b0").arg(exactText(*l.fromDeg), exactText(*l.toDeg));
+        return tr("%1 to %2\u00b0").arg(shownText(*l.fromDeg), shownText(*l.toDeg));
       },
       [edit](const QString& t, QString* why) {
         const QString text = QString(t).remove(QChar(0x00b0)).trimmed();

@@ -11,6 +11,7 @@
 
 #include "document/commands.h"
 #include "document/document.h"
+#include "document/shown_numbers.h"
 #include "elements/element_ui.h"
 #include "linkage/edits.h"
 #include "linkage/elements.h"
@@ -114,7 +115,7 @@ void PropertiesPanel::fillDriver() {
     const Driver& d = *doc_->design().driver;
     if (d.startDeg == 0) return tr("the drawing as it is");
     return tr("the drawing turned %1\u00b0 %2")
-        .arg(exactText(d.startDeg))
+        .arg(shownText(d.startDeg))
         .arg(d.direction == Direction::Cw ? tr("clockwise") : tr("counter-clockwise"));
   });
 }
