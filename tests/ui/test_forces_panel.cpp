@@ -233,6 +233,60 @@ TEST_F(ForcesPanelTest, ARedundantJointsReactionIsASentence) {
   shot(&panel, "forces-panel-redundant");
 }
 
+// Issue 26: forces past 1e154 N (a mass of 1e300 kg then, a load now) read "torque 0 N m;
+// shaking force (0, 0) N" (the peak's norm() overflowed, and everything was rounding next to it)
+// and filled the plots solid (axes past QCustomPlot's 1e250). Forces the plots can draw are
+// drawn and read as the solver has them; larger ones are a sentence with their numbers; forces
+// that overflow say so. Never 0 where they are not, never inf or NaN.
+Mechanism withLoad(Mechanism m, double n, int loads = 1) {
+  Load l;
+  l.point = *m.findPoint("needlebar.B");
+  l.forceN = Vec2(n, -n);
+  for (int i = 0; i < loads; ++i) m.addLoad(l);
+  return m;
+}
+
+TEST_F(ForcesPanelTest, HugeForcesReadAsTheyAreNeverAsZero) {
+  open("slider-crank-22a-masses");
+  showAndSettle();
+  doc.setContents(withLoad(doc.design(), 1e200), "", "1e200 N");
+  ASSERT_TRUE(doc.setCrankDeg(40).ok());
+  settle();
+  ASSERT_TRUE(panel.samples()) << panel.message();
+  const Forces f = computeForces(doc.kinematics());
+  ASSERT_TRUE(f.status.ok()) << f.status.message;
+  const double norm = std::hypot(f.shakingForceN.x(), f.shakingForceN.y());
+  ASSERT_GT(norm, 1e200);
+  const QString text = panel.cursorText();
+  for (double v : {f.driverTorqueNm, f.shakingForceN.x(), f.shakingForceN.y(), norm})
+    EXPECT_TRUE(text.contains(QString::number(v, 'g', 5))) << v << ": " << text;
+  EXPECT_FALSE(text.contains("(0, 0)")) << text;
+  // The shaking force's plot spans its curves, and the |F| curve is a number.
+  const ForceFigure& fig = panel.figure();
+  const QCPRange y = fig.rect(ForceFigure::Shaking)->axis(QCPAxis::atLeft)->range();
+  EXPECT_GE(y.upper, 1e200);
+  EXPECT_LE(y.lower, -1e200);
+  EXPECT_LT(y.size(), 1e202);
+  for (int i = 0; i < 361; i += 30)
+    EXPECT_TRUE(std::isfinite(at(fig.curve(ForceFigure::ReactionNorm), i)));
+  shot(&panel, "forces-panel-1e200");
+
+  doc.setContents(withLoad(doc.design(), 1e300), "", "1e300 N");
+  settle();
+  EXPECT_FALSE(panel.samples());
+  EXPECT_TRUE(panel.message().contains("too large to plot")) << panel.message();
+  EXPECT_TRUE(panel.message().contains("e+300 N")) << panel.message();
+  EXPECT_FALSE(panel.plotWidget()->isVisible());
+
+  doc.setContents(withLoad(doc.design(), 1e308, 2), "", "overflow");
+  settle();
+  EXPECT_FALSE(panel.samples());
+  EXPECT_TRUE(panel.message().contains("overflow (beyond 1e308 N")) << panel.message();
+  for (const char* word : {"inf", "nan"})
+    EXPECT_FALSE(panel.message().contains(word, Qt::CaseInsensitive)) << panel.message();
+  shot(&panel, "forces-panel-overflow");
+}
+
 TEST_F(ForcesPanelTest, WorksOnlyWhenShown) {
   open("slider-crank-22a-masses");
   EXPECT_EQ(panel.computations(), 0);

@@ -12,6 +12,7 @@
 #include <QMenu>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 
 #include "canvas/canvas_scene.h"
@@ -167,6 +168,35 @@ TEST(ForcesProperties, ABalancesCounterweightReadsAsTheModelHoldsIt) {
   EXPECT_EQ(reopened->mass, held);  // every digit kept
   SCOPED_TRACE("saved and reopened");
   expectCounterweightsRead(again, reopened->id, held);
+}
+
+// Issue 26: a mass of 1e300 kg was taken and its forces shown as 0 N. The field refuses what
+// the file reader refuses (linkage/model.h's bounds), naming the field and the link.
+TEST(ForcesProperties, AMassBeyondAThousandTonnesIsRefusedNamingTheLink) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  Document* doc = w.document();
+  const BodyId coupler = doc->design().bodyNamed("coupler")->id;
+  w.tools().selection()->add(coupler);
+  type(fieldOf(w, "Mass [kg]"), "0.25");
+  const int steps = doc->undoStack()->count();
+  QSignalSpy said(w.properties().panel(), &PropertiesPanel::message);
+  for (const char* kg : {"1e300", "1e308", "1000001"}) {
+    type(fieldOf(w, "Mass [kg]"), kg);
+    ASSERT_FALSE(said.isEmpty()) << kg;
+    EXPECT_EQ(said.back().at(0).toString(),
+              "Mass [kg]: on coupler, " + QString::fromStdString(massRefusal(1e300)))
+        << kg;
+    EXPECT_EQ(w.properties().panel()->refusedField(), fieldOf(w, "Mass [kg]"));
+    EXPECT_EQ(fieldOf(w, "Mass [kg]")->text(), "0.25");
+  }
+  type(fieldOf(w, "Moment of inertia [kg\u00b7mm\u00b2]"), "1e300");
+  EXPECT_EQ(said.back().at(0).toString(), "Moment of inertia [kg\u00b7mm\u00b2]: on coupler, " +
+                                              QString::fromStdString(inertiaRefusal(1e300)));
+  EXPECT_EQ(doc->undoStack()->count(), steps);
+  EXPECT_EQ(doc->design().body(coupler)->mass->kg, 0.25);
+  type(fieldOf(w, "Mass [kg]"), "1e6");  // a thousand tonnes is a mass
+  EXPECT_EQ(doc->design().body(coupler)->mass->kg, 1e6);
 }
 
 TEST(ForcesProperties, TheOutlineEstimateIsTheSolversAndOneUndoStep) {

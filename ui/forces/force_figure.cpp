@@ -15,7 +15,7 @@ namespace {
 std::vector<double> component(const std::vector<Vec2>& v, int c) {
   std::vector<double> out;
   out.reserve(v.size());
-  for (const Vec2& f : v) out.push_back(c == 0 ? f.x() : c == 1 ? f.y() : f.norm());
+  for (const Vec2& f : v) out.push_back(c == 0 ? f.x() : c == 1 ? f.y() : std::hypot(f.x(), f.y()));
   return out;
 }
 

@@ -188,8 +188,20 @@ void ForcesPanel::recompute() {
     for (const std::vector<Vec2>& r : samples_.reactionN)
       forceScale_ = std::max(forceScale_, peakOf(r));
     torqueScale_ = std::max(peakOf(samples_.driverTorqueNm), forceScale_ * k.size() * 1e-3);
+    if (why_.isEmpty()) why_ = beyondThePlots();
   }
   rebuildFigure();
+}
+
+QString ForcesPanel::beyondThePlots() const {
+  // QCustomPlot takes no axis range past 1e250 (QCPRange::maxRange): forces of a load of 1e300
+  // N filled the plots solid, and a scale that overflowed made every value read 0. Such forces
+  // are said in numbers instead; the force table has each of them.
+  const double kDrawable = QCPRange::maxRange * 1e-3;
+  if (forceScale_ <= kDrawable && peakOf(samples_.driverTorqueNm) <= kDrawable) return {};
+  return tr("The forces reach %1 N and the driver's torque %2 N m: too large to plot (beyond "
+            "%3); File > Export > Force Table writes every value.")
+      .arg(number(forceScale_), number(peakOf(samples_.driverTorqueNm)), number(kDrawable));
 }
 
 const ForceSamples* ForcesPanel::samples() const {
@@ -253,7 +265,8 @@ void ForcesPanel::updateCursor() {
       tr("At %1°: torque %2 N m; shaking force (%3, %4) N, |F| %5 N")
           .arg(c, 0, 'f', 1)
           .arg(number(cleaned(f.driverTorqueNm, torqueScale_)), force(f.shakingForceN.x()),
-               force(f.shakingForceN.y()), force(f.shakingForceN.norm()));
+               force(f.shakingForceN.y()),
+               force(std::hypot(f.shakingForceN.x(), f.shakingForceN.y())));
   const int j = joint();
   const bool undetermined =
       j >= 0 && j < static_cast<int>(f.joints.size()) && !std::isfinite(f.joints[j].force.x());

@@ -86,6 +86,8 @@ class ForcesPanel : public QWidget {
   void recompute();
   void rebuildFigure();
   QString whyNoForces() const;
+  // The sentence for forces too large for the plots' axes, "" when they can be drawn.
+  QString beyondThePlots() const;
   void updateCursor();
   void mouseOnPlot(QMouseEvent* e, bool press);
   void ensureComputed();

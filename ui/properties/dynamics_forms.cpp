@@ -62,10 +62,17 @@ QString loadsShape(const Mechanism& m, BodyId body, PointId point) {
 
 void PropertiesPanel::fillMass(BodyId id) {
   auto mass = [this, id]() -> std::optional<Mass> { return doc_->design().body(id)->mass; };
+  // The file reader's bounds (linkage/model.h), said with the link's name.
+  auto refused = [this, id](const std::string& why, QString* out) {
+    *out = tr("on %1, %2")
+               .arg(QString::fromStdString(doc_->design().body(id)->name),
+                    QString::fromStdString(why));
+    return !why.empty();
+  };
   addNumber(
       tr("Mass"), [mass] { return mass() ? mass()->kg : 0.0; },
-      [this, id](double v, QString* why) {
-        if (!(v >= 0) || !std::isfinite(v)) return *why = tr("a mass must be 0 or more"), false;
+      [this, id, refused](double v, QString* why) {
+        if (refused(massRefusal(v), why)) return false;
         return change(
             tr("Mass"), [&](Mechanism& m, QString*) { return massOf(m, id).kg = v, true; }, why);
       },
@@ -83,8 +90,8 @@ void PropertiesPanel::fillMass(BodyId id) {
   field(tr("Centre of mass"))->setToolTip(tr("x, y in mm, in the drawing's coordinates"));
   addNumber(
       tr("Moment of inertia"), [mass] { return mass() ? mass()->jKgMm2 : 0.0; },
-      [this, id](double v, QString* why) {
-        if (!(v >= 0) || !std::isfinite(v)) return *why = tr("must be 0 or more"), false;
+      [this, id, refused](double v, QString* why) {
+        if (refused(inertiaRefusal(v), why)) return false;
         return change(
             tr("Moment of inertia"),
             [&](Mechanism& m, QString*) { return massOf(m, id).jKgMm2 = v, true; }, why);
@@ -111,7 +118,7 @@ void PropertiesPanel::estimateMass(BodyId id) {
   const QString name = QString::fromStdString(doc_->design().body(id)->name);
   change(
       tr("Estimate the mass of %1").arg(name),
-      [&](Mechanism& m, QString*) {
+      [&](Mechanism& m, QString* refusal) {
         Mass& to = massOf(m, id);
         // The counterweights a balance added stay: they are on the body, not in its outline.
         Mass next = e;
@@ -125,10 +132,17 @@ void PropertiesPanel::estimateMass(BodyId id) {
           next.com = com;
         }
         next.counterweights = to.counterweights;
+        // An outline of a ship's size is no link's: refused as the field and the file refuse it.
+        for (const std::string& no : {massRefusal(next.kg), inertiaRefusal(next.jKgMm2)})
+          if (!no.empty())
+            return *refusal =
+                       tr("Estimate from Outline: on %1, %2").arg(name, QString::fromStdString(no)),
+                   false;
         to = next;
         return true;
       },
       &why);
+  if (!why.isEmpty()) emit message(why, true);
 }
 
 void PropertiesPanel::fillLoads(BodyId body, PointId point) {
