@@ -300,5 +300,29 @@ TEST(Compile, AbsurdSizesAreRefusedWithAReason) {
   EXPECT_TRUE(k.load(small).ok());
 }
 
+// Issue 26: the first ground pivot of a new drawing was refused as "the drawing's extent is
+// below 1e-9 of its size": one point has no extent, but nothing moves to be swamped by rounding.
+// The ground alone loads; a link whose points all coincide is still refused.
+TEST(Compile, TheGroundAloneIsADrawingEvenAsOnePoint) {
+  for (const Vec2 at : {Vec2(0, 0), Vec2(25, -40), Vec2(2e11, 0)}) {
+    Mechanism m;
+    const BodyId g = m.addBody("ground", true);
+    m.addPoint(g, "A", at);
+    Kinematics k;
+    const Status s = k.load(m);
+    EXPECT_TRUE(s.ok()) << at.transpose() << ": " << s.message;
+    m.addPoint(g, "B", at);  // a second pivot on the first
+    EXPECT_TRUE(k.load(m).ok()) << at.transpose();
+  }
+  Mechanism m;
+  const BodyId g = m.addBody("ground", true), l = m.addBody("link");
+  m.addPin(m.addPoint(g, "A", Vec2(5, 5)), m.addPoint(l, "A", Vec2(5, 5)));
+  m.addPoint(l, "B", Vec2(5, 5));
+  Kinematics k;
+  const Status s = k.load(m);
+  EXPECT_EQ(s.code, StatusCode::BadModel);
+  EXPECT_NE(s.message.find("all its points coincide"), std::string::npos) << s.message;
+}
+
 }  // namespace
 }  // namespace linkage
