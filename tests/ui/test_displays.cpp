@@ -10,6 +10,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QRegularExpression>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -515,6 +516,33 @@ TEST(Displays, TheHistoryNamesTheDraggedPoint) {
   d.drag(p.x(), p.y(), p.x() + 5, p.y() + 3, Qt::ControlModifier);
   ASSERT_EQ(w.document()->undoStack()->count(), 1);
   EXPECT_EQ(w.document()->undoStack()->text(0), "Move coupler.P");
+}
+
+// Issue 26: the editor's messages named "joints[0]" where the canvas shows a pin at A. In the
+// editor a joint is named as it is seen: its kind and the points it joins.
+TEST(Displays, MessagesNameAJointAsTheCanvasShowsIt) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  // The rocker's pivot 200 mm away: the loop cannot close at the rocker's pin to the coupler.
+  Mechanism m = w.document()->design();
+  for (Point& p : m.points)
+    if (p.name == "O4" && p.body == m.ground()->id) p.pos += Vec2(200, 0);
+  editDesign(w.document(), "far", m);
+  QTest::qWait(60);
+  ASSERT_FALSE(w.document()->solved());
+  const QString problem = w.messageStrip()->problem();
+  EXPECT_TRUE(problem.contains(QRegularExpression(
+      R"(pin (crank\.A - coupler\.A|coupler\.B - rocker\.B|rocker\.O4 - ground\.O4) stays)")))
+      << problem;
+  EXPECT_FALSE(problem.contains("joints[")) << problem;
+  // The joint's Properties and its tooltip on the canvas: the same name.
+  w.document()->undoStack()->undo();
+  QTest::qWait(60);
+  ASSERT_TRUE(w.document()->solved());
+  const Mechanism& back = w.document()->design();
+  w.tools().selection()->add(back.joints[2].id);
+  QApplication::processEvents();
+  EXPECT_EQ(w.properties().panel()->title(), "<b>Joint</b> pin coupler.B - rocker.B");
 }
 
 }  // namespace

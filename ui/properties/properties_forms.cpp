@@ -331,7 +331,7 @@ void PropertiesPanel::fillPolar(PointId id) {
 void PropertiesPanel::fillJoint(JointId id) {
   const Mechanism& m0 = doc_->design();
   title_->setText(
-      tr("<b>Joint</b> %1").arg(QString::fromStdString(jointLabel(m0, id)).toHtmlEscaped()));
+      tr("<b>Joint</b> %1").arg(QString::fromStdString(jointName(m0, id)).toHtmlEscaped()));
   elementUi(m0.joint(id)->type).form(*this, id);
 }
 

@@ -101,7 +101,7 @@ QMenu* Toolbox::contextMenu(const CanvasMouse& e, QWidget* parent) {
   if (point) pointMenu(*menu, *point, ctx_.scene->worldOf(point->id));
   if (joint) {
     const JointId id = joint->id;
-    const QString label = QString::fromStdString(jointLabel(m, id));
+    const QString label = QString::fromStdString(jointName(m, id));
     menu->addSection(label);
     elementUi(joint->type).jointMenu(*this, *menu, *joint);
     menu->addAction(tr("Delete Joint"), this, [doc, id, label] {
