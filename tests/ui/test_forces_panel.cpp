@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <QComboBox>
+#include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QImage>
 #include <QProcess>
@@ -21,6 +23,8 @@
 #include "mechanisms.h"
 #include "plots/qcp.h"
 #include "ui_test.h"
+#include "window/features.h"
+#include "window/forces_feature.h"
 
 namespace linkage::ui {
 namespace {
@@ -285,6 +289,56 @@ TEST_F(ForcesPanelTest, HugeForcesReadAsTheyAreNeverAsZero) {
   for (const char* word : {"inf", "nan"})
     EXPECT_FALSE(panel.message().contains(word, Qt::CaseInsensitive)) << panel.message();
   shot(&panel, "forces-panel-overflow");
+}
+
+// Issue 26: at the window's first layout (1280 x 800) the Forces dock drew its four plots two
+// by two, about 40 px high, and the polar diagram on equal scales as a flat strip. Each plot has
+// a height to read its curves by, and the polar diagram is square; in a dock lower still the
+// plots keep that height and the dock scrolls.
+TEST(ForcesDock, AtTheFirstLayoutEachPlotHasAHeightToReadAndThePolarDiagramIsSquare) {
+  MainWindow w;
+  w.resize(1280, 800);
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2-masses"));
+  w.show();
+  QApplication::processEvents();
+  w.forces().dock->show();
+  w.forces().dock->raise();  // its tab in front of the Plots'
+  ForcesPanel* panel = w.forces().panel();
+  auto settle = [&] {
+    QTest::qWait(40);
+    QElapsedTimer t;
+    t.start();
+    while (panel->redrawPending() && t.elapsed() < 10000) QTest::qWait(5);
+    panel->plotWidget()->replot();
+  };
+  settle();
+  ASSERT_TRUE(panel->samples()) << panel->message();
+  const ForceFigure& f = panel->figure();
+  auto readable = [&](const char* when) {
+    SCOPED_TRACE(when);
+    for (ForceFigure::Plot p :
+         {ForceFigure::Torque, ForceFigure::Shaking, ForceFigure::Polar, ForceFigure::Reaction}) {
+      EXPECT_GE(f.rect(p)->height(), 80) << p;
+      EXPECT_GE(f.rect(p)->width(), 80) << p;
+    }
+    // Square, or near it: never a strip.
+    const QCPAxisRect* polar = f.rect(ForceFigure::Polar);
+    EXPECT_LE(std::max(polar->width(), polar->height()),
+              1.2 * std::min(polar->width(), polar->height()))
+        << polar->width() << " x " << polar->height();
+    const double nx = polar->axis(QCPAxis::atBottom)->range().size() / polar->width();
+    const double ny = polar->axis(QCPAxis::atLeft)->range().size() / polar->height();
+    EXPECT_NEAR(nx, ny, 1e-9 * ny);
+  };
+  readable("the first layout");
+  EXPECT_EQ(f.columns(), 4);  // a dock under the canvas, wide and low: one row
+  shot(&w, "forces-dock-1280x800");
+  // The dock made lower than the plots need: they keep their height, and it scrolls.
+  w.forces().dock->setMaximumHeight(150);
+  settle();
+  readable("a low dock");
+  EXPECT_GE(panel->plotWidget()->height(), ForceFigure::kLeastPlotHeight);
+  shot(&w, "forces-dock-low");
 }
 
 TEST_F(ForcesPanelTest, WorksOnlyWhenShown) {
