@@ -25,6 +25,7 @@ class QCustomPlot;
 class QLabel;
 class QLineEdit;
 class QMouseEvent;
+class QScrollArea;
 class QStackedWidget;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -89,6 +90,7 @@ class CyclePanel : public QWidget {
  private:
   void buildWidgets();
   QWidget* buildAddRow();
+  void buildList();  // the entries and their results
   void fillList();
   void markStale();
   void schedule();
@@ -101,6 +103,7 @@ class CyclePanel : public QWidget {
   void mouseOnPlot(QMouseEvent* e, bool press);
   void ensureComputed();
   void itemEdited(QTreeWidgetItem* item);
+  void fitEntryColumn();
   void emitMarks();
   bool change(const QString& title, const std::function<bool(Mechanism&, QString*)>& edit,
               QString* why);
@@ -119,6 +122,7 @@ class CyclePanel : public QWidget {
   QLabel *error_, *values_, *sentence_;
   QTreeWidget* list_;
   QStackedWidget* stack_;
+  QScrollArea* scroll_;  // the diagram, scrolled in a dock too low for its rows
   QCustomPlot* plot_;
   std::unique_ptr<CycleFigure> figure_;
   RedrawThrottle throttle_{this, [this] { recompute(); }};
