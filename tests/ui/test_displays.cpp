@@ -172,6 +172,14 @@ TEST(Displays, UndoOfAStartAngleBeyondReachLeavesTheDesignSolved) {
   editDesign(w.document(), "start", m);
   QApplication::processEvents();
   EXPECT_EQ(w.width(), width);
+  // The revolutions under the canvas counted as a number however large (their conversion to a
+  // long long was undefined behaviour: UBSan stopped here).
+  const double rev = std::floor(w.document()->crankDeg() / 360);
+  ASSERT_GT(std::abs(rev), 1e15);
+  QString revs;
+  for (QLabel* l : w.findChildren<QLabel*>())
+    if (l->text().startsWith("rev ")) revs = l->text();
+  EXPECT_EQ(revs, "rev " + QString::number(rev, 'g', 6));
   w.edit().undo->trigger();
   w.animation().toStart->trigger();
   QApplication::processEvents();
