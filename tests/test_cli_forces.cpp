@@ -210,6 +210,32 @@ TEST_F(CliForces, BadInputExitsTwoNamingThePlace) {
   EXPECT_NE(r.err.find("--steps"), std::string::npos) << r.err;
 }
 
+// Issue 26: 1e300 kg gave rows of 1e303 N with noise of 1e287 N, 1e308 kg "a singular
+// position" and exit 3. A mass beyond a thousand tonnes is refused naming its place; forces that
+// overflow (loads of 1e308 N) end in a sentence, and no row holds inf or NaN.
+TEST_F(CliForces, AHugeMassIsRefusedAndForcesThatOverflowSaySo) {
+  const std::string text =
+      test::slurp(std::string(LINKAGE_EXAMPLES_DIR) + "/slider-crank-22a-masses.linkage.json");
+  for (const char* kg : {"1e300", "1e308"}) {
+    std::string t = text;
+    const size_t at = t.find("\"kg\": 0.04");
+    ASSERT_NE(at, std::string::npos);
+    t.replace(at, 10, std::string("\"kg\": ") + kg);
+    const CliResult r = run("dynamics '" + writeFile("huge.linkage.json", t) + "' --steps 4");
+    EXPECT_EQ(r.exit, 2) << kg;
+    EXPECT_EQ(r.out, "") << kg;
+    EXPECT_NE(r.err.find(".mass.kg: a mass beyond 1e6 kg"), std::string::npos) << r.err;
+  }
+  std::string t = text;
+  t.insert(t.find('{') + 1,
+           "\"loads\": [{\"point\": \"needlebar.B\", \"force_N\": [1e308, 1e308]}],");
+  const CliResult r = run("dynamics '" + writeFile("overflow.linkage.json", t) + "' --steps 4");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("the forces at crank angle 0 deg overflow"), std::string::npos) << r.err;
+  for (const char* word : {"inf", "nan", "INF", "NAN"})
+    EXPECT_EQ(r.out.find(word), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace linkage
 #endif

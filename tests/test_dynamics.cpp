@@ -390,6 +390,72 @@ TEST(Dynamics, MassesGravityAndLoadsRoundTripAndBadOnesAreRefused) {
             "bodies[1].mass.counterweights: expected an array of {\"kg\", \"at\"}, got 3");
 }
 
+// Issue 26: a mass of 1e300 kg gave forces of 1e303 N with noise of 1e287 N where 0 is meant (the
+// others' lost in rounding), 1e308 kg "a singular position". Beyond a thousand tonnes a mass is
+// refused, named by its place in the file, as the editor's field refuses it (massRefusal).
+TEST(Dynamics, AMassBeyondAThousandTonnesIsRefusedNamingItsPlace) {
+  Mechanism m = withMasses(test::example("wanzer-inversion-2"), 5);
+  m.bodies[1].mass->kg = 0.5;
+  m.bodies[1].mass->jKgMm2 = 20;
+  m.bodies[1].mass->counterweights = {{0.125, Vec2(3, -4.5)}};
+  const std::string text = serializeMechanism(m);
+  auto read = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    const size_t at = t.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    t.replace(at, from.size(), to);
+    return parseMechanism(t);
+  };
+  const std::string beyond =
+      "a mass beyond 1e6 kg (a thousand tonnes): no link of a machine has that, and its forces "
+      "would overflow or drown the others' in rounding";
+  EXPECT_EQ(massRefusal(1e300), beyond);
+  EXPECT_EQ(read("\"kg\": 0.5", "\"kg\": 1e300").error, "bodies[1].mass.kg: " + beyond);
+  EXPECT_EQ(read("\"kg\": 0.5", "\"kg\": 1e308").error, "bodies[1].mass.kg: " + beyond);
+  EXPECT_EQ(read("\"kg\": 0.125", "\"kg\": 1.5e6").error,
+            "bodies[1].mass.counterweights[0].kg: " + beyond);
+  EXPECT_EQ(read("\"j_kg_mm2\": 20", "\"j_kg_mm2\": 1e300").error,
+            "bodies[1].mass.j_kg_mm2: " + inertiaRefusal(1e300));
+  EXPECT_NE(inertiaRefusal(1e300).find("beyond 1e15 kg mm^2"), std::string::npos);
+  // A thousand tonnes itself is a mass.
+  const LoadResult most = read("\"kg\": 0.5", "\"kg\": 1e6");
+  ASSERT_TRUE(most.mechanism) << most.error;
+  EXPECT_EQ(most.mechanism->bodies[1].mass->kg, 1e6);
+  EXPECT_EQ(massRefusal(1e6), "");
+  EXPECT_EQ(inertiaRefusal(1e15), "");
+  EXPECT_NE(massRefusal(-1), "");
+  EXPECT_NE(massRefusal(NAN), "");
+}
+
+// Forces past double's range, from loads (or a speed) no mass bound holds back: BadModel with
+// the crank angle and the cause, NaN in the numbers (never inf, never the "singular position"
+// the solve's failure on an infinite right-hand side used to be taken for).
+TEST(Dynamics, ForcesThatOverflowSaySoAndAreNoNumbers) {
+  Mechanism m = test::example("slider-crank-22a-masses");
+  Load load;
+  load.point = *m.findPoint("needlebar.B");
+  load.forceN = Vec2(1e308, 1e308);  // each finite; its magnitude is not
+  m.addLoad(load);
+  for (int loads : {1, 2}) {  // two: their sum overflows before the solve
+    if (loads == 2) m.addLoad(load);
+    Kinematics k = loaded(m, true);
+    ForceSolver f;
+    ASSERT_TRUE(f.prepare(k).ok());
+    ASSERT_TRUE(k.moveTo(30).ok());
+    const Forces& r = f.compute(k);
+    EXPECT_EQ(r.status.code, StatusCode::BadModel) << loads;
+    EXPECT_EQ(r.status.message,
+              "the forces at crank angle 30 deg overflow (beyond 1e308 N or N m): a speed, a "
+              "load or a mass too large to compute with");
+    EXPECT_FALSE(finiteForces(r));
+    EXPECT_TRUE(std::isnan(r.driverTorqueNm));
+    EXPECT_TRUE(std::isnan(r.shakingForceN.x()));
+    const ForceSamples s = sampleForces(k, 36);
+    EXPECT_EQ(s.status.code, StatusCode::BadModel);
+    EXPECT_EQ(s.size(), 0u);
+  }
+}
+
 TEST(Dynamics, SamplesCoverWholeTurnsAndStopWhereTheCrankCannotPass) {
   const Mechanism m = withMasses(test::example("wanzer-inversion-2"), 11);
   Kinematics k = loaded(m, true);

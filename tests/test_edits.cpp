@@ -21,6 +21,7 @@ TEST(Edits, LinksPinWhereTheyAreDrawnAndTakeTextbookNames) {
   EXPECT_EQ(m.body(crank)->name, "link2");
   ASSERT_EQ(m.joints.size(), 1u);
   EXPECT_EQ(jointLabel(m, m.joints[0].id), "joints[0] (pin ground.A - link2.A)");
+  EXPECT_EQ(jointName(m, m.joints[0].id), "pin ground.A - link2.A");
   std::string why;
   EXPECT_FALSE(addLink(m, {{Vec2(0, 0), {}}}, &why));
   EXPECT_EQ(why, "a link needs two points at least");

@@ -3,6 +3,7 @@
 
 #include <Eigen/LU>
 #include <Eigen/SparseLU>
+#include <charconv>
 #include <cmath>
 
 #include "analysis/group_forces.h"
@@ -345,11 +346,21 @@ const Forces& ForceSolver::compute(const Kinematics& k) {
   }
   viewsOf(s, d_->views);
   d_->appliedAndInertia(s, k.omega(), out.crankDeg);
+  // Forces past double's range (a speed of 1e200 rpm, loads of 1e308 N) are no figures: said so,
+  // not taken for a singular position, and never written as inf or NaN.
+  if (!d_->Q.allFinite()) return overflowed(out);
   d_->shakingOf(s.sys, out.shakingForceN, out.shakingMomentNm);
-  const bool solved =
-      d_->grouped ? d_->groups.solve(s.sys, d_->views, d_->Q, d_->lambda) || d_->solveWhole(s)
-                  : d_->solveWithKinematics(s) || d_->solveWhole(s);
-  if (!solved) {
+  auto solve = [&] {
+    return d_->grouped ? d_->groups.solve(s.sys, d_->views, d_->Q, d_->lambda) || d_->solveWhole(s)
+                       : d_->solveWithKinematics(s) || d_->solveWhole(s);
+  };
+  if (!solve()) {
+    // The multipliers are linear in Q: where Q scaled down solves, the solve overflowed (a load
+    // of 1e308 N), the pose is no singular one.
+    if (const double most = d_->Q.cwiseAbs().maxCoeff(); most > 1) {
+      d_->Q /= most;
+      if (solve()) return overflowed(out);
+    }
     out.status = Status::failure(StatusCode::Singular,
                                  "the constraint forces cannot be solved at "
                                  "this pose (a singular position)");
@@ -358,7 +369,37 @@ const Forces& ForceSolver::compute(const Kinematics& k) {
   // The driver's couple on the body of its b point: -c L lambda, c = 1 there.
   out.driverTorqueNm = -s.sys.size * d_->lambda[s.sys.driverRow] / 1000;
   d_->reactions(s, k, out);
+  if (!finiteForces(out)) return overflowed(out);
   return out;
+}
+
+const Forces& ForceSolver::overflowed(Forces& out) {
+  char deg[32];
+  const auto end =
+      std::to_chars(deg, deg + sizeof deg, out.crankDeg, std::chars_format::general, 6);
+  out.status = Status::badModel(
+      "the forces at crank angle " + std::string(deg, end.ptr) +
+      " deg overflow (beyond 1e308 N or N m): a speed, a load or a mass too large to compute "
+      "with");
+  out.status.crankDeg = out.crankDeg;
+  out.driverTorqueNm = kNaN;
+  out.shakingForceN = Vec2::Constant(kNaN);
+  out.shakingMomentNm = kNaN;
+  for (JointReaction& r : out.joints) r = {Vec2::Constant(kNaN), Vec2::Constant(kNaN), kNaN};
+  return out;
+}
+
+bool finiteForces(const Forces& f) {
+  // Each force with its magnitude: a force of (1e200, 1e200) N has none a double holds.
+  auto finite = [](const Vec2& v) {
+    return v.allFinite() && std::isfinite(std::hypot(v.x(), v.y()));
+  };
+  if (!std::isfinite(f.driverTorqueNm) || !finite(f.shakingForceN) ||
+      !std::isfinite(f.shakingMomentNm))
+    return false;
+  for (const JointReaction& r : f.joints)
+    if (!std::isnan(r.force.x()) && (!finite(r.force) || !std::isfinite(r.coupleNm))) return false;
+  return true;
 }
 
 Forces computeForces(const Kinematics& k) {

@@ -126,7 +126,7 @@ Status startFromCrank(const Kinematics& k, const InstantCentres& ics, VelocityCh
     ch.crankMotion.omega = -sigma * k.omega();
   } else {
     return fail(StatusCode::BadModel,
-                "the driver at " + jointLabel(m, dj->id) +
+                "the driver at " + jointName(m, dj->id) +
                     " turns one moving body relative to another: the chain starts from a "
                     "crank pivoted to the ground");
   }

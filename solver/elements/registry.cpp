@@ -70,16 +70,18 @@ bool centreLineAt(const CentreData& c, const Pose& pose, Eigen::Vector3d through
   return true;
 }
 
-std::string jointLabel(const Mechanism& m, JointId id) {
+std::string jointName(const Mechanism& m, JointId id) {
   const Joint* j = m.joint(id);
   if (!j) return "unknown joint";
   const ElementKind& k = kindOf(*j);
-  std::string s = "joints[" + std::to_string(m.jointIndex(id)) + "] (" + k.name + " ";
   if (k.reads(JointField::Slot))
-    s += m.pointLabel(j->a) + " in " + m.slotLabel(j->slot);
-  else
-    s += m.pointLabel(j->a) + " - " + m.pointLabel(j->b);
-  return s + ")";
+    return std::string(k.name) + " " + m.pointLabel(j->a) + " in " + m.slotLabel(j->slot);
+  return std::string(k.name) + " " + m.pointLabel(j->a) + " - " + m.pointLabel(j->b);
+}
+
+std::string jointLabel(const Mechanism& m, JointId id) {
+  if (!m.joint(id)) return "unknown joint";
+  return "joints[" + std::to_string(m.jointIndex(id)) + "] (" + jointName(m, id) + ")";
 }
 
 namespace {

@@ -10,6 +10,13 @@ double nonNegative(const Json& v, const std::string& path) {
   return x;
 }
 
+// A mass or a moment of inertia: a number >= 0 (said as before), then within its bound.
+double bounded(const Json& v, const std::string& path, std::string (*refusal)(double)) {
+  const double x = nonNegative(v, path);
+  if (std::string why = refusal(x); !why.empty()) refuse(path, why);
+  return x;
+}
+
 Vec2 finitePair(const Json& v, const std::string& path) {
   const std::optional<Vec2> p = asPair(v);
   if (!p) refuse(path, "expected [x, y] with two finite numbers, got " + describe(v));
@@ -32,16 +39,17 @@ void readWindow(const Json& l, const std::string& path, Load& load) {
 Mass readMass(const Json& v, const std::string& path) {
   requireObject(v, path);
   Mass m;
-  m.kg = nonNegative(require(v, "kg", path), path + ".kg");
+  m.kg = bounded(require(v, "kg", path), path + ".kg", massRefusal);
   m.com = finitePair(require(v, "com", path), path + ".com");
-  if (const Json* j = find(v, "j_kg_mm2")) m.jKgMm2 = nonNegative(*j, path + ".j_kg_mm2");
+  if (const Json* j = find(v, "j_kg_mm2"))
+    m.jKgMm2 = bounded(*j, path + ".j_kg_mm2", inertiaRefusal);
   if (const Json* c = find(v, "counterweights")) {
     const std::string at = path + ".counterweights";
     if (!c->is_array()) refuse(at, "expected an array of {\"kg\", \"at\"}, got " + describe(*c));
     for (size_t i = 0; i < c->size(); ++i) {
       const std::string e = element(at, i);
       requireObject((*c)[i], e);
-      m.counterweights.push_back({nonNegative(require((*c)[i], "kg", e), e + ".kg"),
+      m.counterweights.push_back({bounded(require((*c)[i], "kg", e), e + ".kg", massRefusal),
                                   finitePair(require((*c)[i], "at", e), e + ".at")});
     }
   }

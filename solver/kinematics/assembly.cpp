@@ -182,7 +182,7 @@ Status assemble(const Mechanism& m, const System& sys, const Structure& st, Newt
     auto idOf = [&](int j) { return j < nj ? m.joints[j].id : JointId{}; };
     if (worst < nj) {
       s.joints.push_back(m.joints[worst].id);
-      what = jointLabel(m, m.joints[worst].id);
+      what = jointName(m, m.joints[worst].id);
     } else {
       what = "the driver";
     }
@@ -193,7 +193,7 @@ Status assemble(const Mechanism& m, const System& sys, const Structure& st, Newt
         s.gaps.push_back({idOf(j), gaps[j]});
         if (j == nj) continue;
         s.joints.push_back(m.joints[j].id);
-        others.push_back("joints[" + std::to_string(j) + "]");
+        others.push_back(jointName(m, m.joints[j].id));
       }
     s.message = "cannot assemble the mechanism as drawn: " + what + " stays " + mm(gaps[worst]) +
                 " open at best";
@@ -220,7 +220,7 @@ Status checkRedundant(const Mechanism& m, const System& sys, const Structure& st
     if (gaps[j] > 1e-9 * sys.size) {
       if (s.ok()) {
         s = Status::failure(StatusCode::Conflicting, "");
-        s.message = jointLabel(m, m.joints[j].id) +
+        s.message = jointName(m, m.joints[j].id) +
                     " conflicts with the other joints: they hold but it stays " + mm(gaps[j]) +
                     " open";
       }

@@ -97,7 +97,7 @@ Status Kinematics::flipBranch(JointId id, Mechanism* redrawn) {
   const int j = valid() ? d_->mech.jointIndex(id) : -1;
   if (j < 0) return Status::badModel(valid() ? "unknown joint" : "no mechanism is loaded");
   const int group = d_->plan ? d_->plan->groupOfJoint(j) : -1;
-  return d_->flip(group, jointLabel(d_->mech, id), redrawn);
+  return d_->flip(group, jointName(d_->mech, id), redrawn);
 }
 
 std::vector<BodyId> Kinematics::flippableBodies() const {

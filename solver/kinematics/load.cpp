@@ -131,7 +131,7 @@ Status KinematicsState::analyse(const Mechanism& m, const Eigen::VectorXd& q) {
     const JointId dj = m.driver->joint;
     Status s = Status::failure(StatusCode::Locked, "");
     s.joints.push_back(dj);
-    s.message = "the driver at " + jointLabel(m, dj) + " cannot turn: " +
+    s.message = "the driver at " + jointName(m, dj) + " cannot turn: " +
                 (structure.mobility == 0
                      ? "the mechanism has no degree of freedom (it is a structure)"
                      : "either the other joints hold the two bodies it joins rigidly together, "
@@ -143,7 +143,7 @@ Status KinematicsState::analyse(const Mechanism& m, const Eigen::VectorXd& q) {
     Note n{Note::Kind::RedundantJoints, "redundant joint(s): ", {}, {}};
     for (int j : structure.redundantJoints) {
       n.joints.push_back(m.joints[j].id);
-      n.text += (n.joints.size() > 1 ? ", " : "") + jointLabel(m, m.joints[j].id);
+      n.text += (n.joints.size() > 1 ? ", " : "") + jointName(m, m.joints[j].id);
     }
     n.text += " repeat constraints of the others; checked, not needed by the solve";
     notes.push_back(std::move(n));

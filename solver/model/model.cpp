@@ -72,6 +72,28 @@ void takeTiming(Timing& t, const std::vector<PointId>& goneP, const std::vector<
 
 Mechanism::Mechanism() : owner_(newOwner()) {}
 
+namespace {
+
+std::string beyond(double v, double most, const char* bound, const char* what) {
+  if (!std::isfinite(v)) return std::string("not a number: a ") + what + " is a finite number";
+  if (v < 0) return std::string("a ") + what + " is 0 or more";
+  if (v <= most) return {};
+  return std::string("a ") + what + " beyond " + bound +
+         ": no link of a machine has that, and its forces would overflow or drown the others' "
+         "in rounding";
+}
+
+}  // namespace
+
+std::string massRefusal(double kg) {
+  return beyond(kg, kMaxMassKg, "1e6 kg (a thousand tonnes)", "mass");
+}
+
+std::string inertiaRefusal(double kgMm2) {
+  return beyond(kgMm2, kMaxInertiaKgMm2, "1e15 kg mm^2 (a thousand tonnes 31.6 m from its centre)",
+                "moment of inertia");
+}
+
 BodyId Mechanism::addBody(std::string name, bool isGround) {
   Body b;
   b.id = make<BodyId>();

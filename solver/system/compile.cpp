@@ -119,7 +119,11 @@ class Compiler : public Frames {
     if (lo.allFinite() && std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) > kLargest)
       return fail("coordinates beyond 1e12 mm: the drawing is too large to compute with");
     sys_.size = (lo.allFinite() && hi.allFinite()) ? (hi - lo).norm() : 1.0;
-    if (lo.allFinite() && sys_.size < kSmallest * std::max(1.0, hi.cwiseAbs().maxCoeff()))
+    // The ground alone (the first pivot of a new drawing): nothing moves, so no rounding can
+    // swamp a motion; a single point has no extent, and a millimetre stands for it.
+    if (sys_.nBodies == 0) sys_.size = std::max(sys_.size, 1.0);
+    if (sys_.nBodies > 0 && lo.allFinite() &&
+        sys_.size < kSmallest * std::max(1.0, hi.cwiseAbs().maxCoeff()))
       return fail(
           "the drawing's extent is below 1e-9 of its size or distance from the origin "
           "(or all its points coincide): rounding would swamp it");

@@ -13,12 +13,15 @@
 #include "animation/animator.h"
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
+#include "canvas/style.h"
 #include "centres/centres_panel.h"
 #include "document/document.h"
 #include "drawing.h"
 #include "linkage/guide.h"
 #include "linkage/io/model_lookup.h"
 #include "mechanisms.h"
+#include "tools/selection.h"
+#include "tools/tool_overlay.h"
 #include "window/features.h"
 #include "window/message_strip.h"
 #include "window/offscreen_window.h"
@@ -390,6 +393,43 @@ TEST(Canvas, GeometryTheSolverRefusesIsNotDrawnAndSaysWhy) {
       << doc->solveStatus().message;
   EXPECT_EQ(doc->design().slots.size(), 1u);  // kept as typed
   w.canvas()->viewport()->repaint();          // and painted, with the far slot left out
+}
+
+// Issue 26: a selected arc slot was outlined as the capsule around its chord. Its outline runs
+// along the arc: it holds the arc's middle, and not the chord's, at any pose of its body.
+TEST(Canvas, ASelectedArcSlotIsOutlinedAlongItsArc) {
+  Mechanism m;
+  const BodyId b = m.addBody("plate");
+  const SlotId id =
+      m.addArcSlot(b, "arc", Vec2(-50, 0), Vec2(0, 50), Vec2(50, 0));  // a half circle, R 50
+  const Slot& s = *m.slot(id);
+  const double px = 0.1;  // mm per pixel
+  for (const Transform pose : {Transform(), Transform{Rot::of(0.7), Vec2(30, -12)}}) {
+    const QPolygonF outline = slotOutline(s, pose, px);
+    EXPECT_TRUE(outline.containsPoint(toQt(pose * Vec2(0, 50)), Qt::OddEvenFill));
+    EXPECT_TRUE(outline.containsPoint(toQt(pose * Vec2(50 * std::sqrt(0.5), 50 * std::sqrt(0.5))),
+                                      Qt::OddEvenFill));
+    EXPECT_FALSE(outline.containsPoint(toQt(pose * Vec2(0, 0)), Qt::OddEvenFill));
+    // Every vertex within the channel's half width and the margin of the circle.
+    const double r = (CanvasStyle::channelWidth / 2 + 3) * px;
+    for (const QPointF& q : outline) {
+      const Vec2 local = pose.inverse(Vec2(q.x(), q.y()));
+      EXPECT_NEAR(local.norm(), 50, r * 1.01) << q.x() << ", " << q.y();
+    }
+  }
+  // A straight slot: the capsule around its two ends, as before.
+  const SlotId line = m.addSlot(b, "line", Vec2(0, 0), Vec2(40, 0));
+  const QPolygonF capsuleOutline = slotOutline(*m.slot(line), Transform(), px);
+  EXPECT_TRUE(capsuleOutline.containsPoint(QPointF(20, 0), Qt::OddEvenFill));
+  EXPECT_FALSE(capsuleOutline.containsPoint(QPointF(20, 5), Qt::OddEvenFill));
+  // The curved guide's arc selected, to look at.
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "curved-guide"));
+  const Mechanism& guide = w.document()->design();
+  ASSERT_TRUE(guide.slots.at(0).mid);
+  w.tools().selection()->add(guide.slots[0].id);
+  QApplication::processEvents();
+  shot(&w, "arc-slot-selected");
 }
 
 }  // namespace

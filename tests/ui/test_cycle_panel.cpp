@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <QFile>
+#include <QHeaderView>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -88,6 +89,57 @@ TEST_F(CyclePanelTest, EntriesAreUndoStepsWithTheSolversResults) {
   EXPECT_FALSE(panel.addEntry(EntryKind::Window, "needle=needlebar.N:y<0", &why));
   EXPECT_TRUE(why.contains("a second window named")) << why;
   EXPECT_EQ(doc.undoStack()->count(), 3);
+}
+
+// The pixel rect of a label on the diagram.
+QRectF rectOf(const QCPItemText* t) {
+  return QRectF(t->topLeft->pixelPosition(), t->bottomRight->pixelPosition()).normalized();
+}
+
+// Issue 26: two windows on one row of the cycle diagram printed their names over each other,
+// and the list's Result column was cut off at its edge. At the dock's size in the window's
+// first layout (1280 x 800: about 880 x 190 px) and in a larger one: the names of windows of one
+// row apart, each result whole in its column (wrapped), the rows' labels apart.
+TEST_F(CyclePanelTest, WindowsOfOneRowAndTheResultsAreReadWhole) {
+  openBare("lockstitch-machine");
+  QString why;
+  for (const char* w : {"needle_below_plate=needlebar.N:y<-185",
+                        "needle_in_hook_zone=needlebar.N:y<-175", "feed=feedbar.T:y>-185"})
+    ASSERT_TRUE(panel.addEntry(EntryKind::Window, w, &why)) << why;
+  ASSERT_TRUE(panel.addEntry(EntryKind::Row, "takeup.E:y", &why)) << why;
+  ASSERT_TRUE(panel.addEntry(EntryKind::Conflict, "needle_below_plate,feed", &why)) << why;
+  for (const QSize size : {QSize(880, 190), QSize(1400, 350)}) {
+    SCOPED_TRACE(size.width());
+    panel.resize(size);
+    panel.show();
+    settle();
+    QTest::qWait(20);  // the list's rows laid out again for its columns
+    ASSERT_TRUE(panel.diagram()) << panel.message();
+    panel.plotWidget()->replot();
+    std::vector<const QCPItemText*> names;
+    for (int i = 0; i < panel.plotWidget()->itemCount(); ++i)
+      if (auto* t = qobject_cast<QCPItemText*>(panel.plotWidget()->item(i)))
+        if (t->text().startsWith("needle_")) names.push_back(t);
+    ASSERT_EQ(names.size(), 2u);  // one interval each
+    EXPECT_FALSE(rectOf(names[0]).intersects(rectOf(names[1])))
+        << names[0]->text() << " over " << names[1]->text();
+    // The rows a label's two lines apart, at least.
+    const CycleFigure& f = panel.figure();
+    for (int r = 0; r + 1 < f.rowCount(); ++r)
+      EXPECT_GE(f.pixelAt(0, 0, r + 1).y() - f.pixelAt(0, 0, r).y(), 34) << r;
+    // Each result whole: its column within the list, its row as tall as its text wrapped there.
+    QTreeWidget* list = panel.entryList();
+    const QHeaderView* h = list->header();
+    EXPECT_LE(h->sectionViewportPosition(2) + h->sectionSize(2), list->viewport()->width());
+    for (int r = 0; r < list->topLevelItemCount(); ++r) {
+      QTreeWidgetItem* item = list->topLevelItem(r);
+      const QRect cell = list->visualItemRect(item);
+      const QRect text = list->fontMetrics().boundingRect(QRect(0, 0, h->sectionSize(2) - 8, 10000),
+                                                          Qt::TextWordWrap, item->text(2));
+      EXPECT_GE(cell.height(), text.height()) << item->text(2);
+    }
+    shot(&panel, size.width() < 1000 ? "cycle-panel-880x190" : "cycle-panel-1400x350");
+  }
 }
 
 TEST_F(CyclePanelTest, TypedInTheLineAndEditedInTheList) {

@@ -8,10 +8,13 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
+#include <QHelpEvent>
 #include <QLabel>
 #include <QLineEdit>
+#include <QRegularExpression>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QToolTip>
 #include <QUndoStack>
 
 #include "animation/animator.h"
@@ -169,6 +172,14 @@ TEST(Displays, UndoOfAStartAngleBeyondReachLeavesTheDesignSolved) {
   editDesign(w.document(), "start", m);
   QApplication::processEvents();
   EXPECT_EQ(w.width(), width);
+  // The revolutions under the canvas counted as a number however large (their conversion to a
+  // long long was undefined behaviour: UBSan stopped here).
+  const double rev = std::floor(w.document()->crankDeg() / 360);
+  ASSERT_GT(std::abs(rev), 1e15);
+  QString revs;
+  for (QLabel* l : w.findChildren<QLabel*>())
+    if (l->text().startsWith("rev ")) revs = l->text();
+  EXPECT_EQ(revs, "rev " + QString::number(rev, 'g', 6));
   w.edit().undo->trigger();
   w.animation().toStart->trigger();
   QApplication::processEvents();
@@ -515,6 +526,90 @@ TEST(Displays, TheHistoryNamesTheDraggedPoint) {
   d.drag(p.x(), p.y(), p.x() + 5, p.y() + 3, Qt::ControlModifier);
   ASSERT_EQ(w.document()->undoStack()->count(), 1);
   EXPECT_EQ(w.document()->undoStack()->text(0), "Move coupler.P");
+}
+
+// Issue 26: the editor's messages named "joints[0]" where the canvas shows a pin at A. In the
+// editor a joint is named as it is seen: its kind and the points it joins.
+TEST(Displays, MessagesNameAJointAsTheCanvasShowsIt) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  // The rocker's pivot 200 mm away: the loop cannot close at the rocker's pin to the coupler.
+  Mechanism m = w.document()->design();
+  for (Point& p : m.points)
+    if (p.name == "O4" && p.body == m.ground()->id) p.pos += Vec2(200, 0);
+  editDesign(w.document(), "far", m);
+  QTest::qWait(60);
+  ASSERT_FALSE(w.document()->solved());
+  const QString problem = w.messageStrip()->problem();
+  EXPECT_TRUE(problem.contains(QRegularExpression(
+      R"(pin (crank\.A - coupler\.A|coupler\.B - rocker\.B|rocker\.O4 - ground\.O4) stays)")))
+      << problem;
+  EXPECT_FALSE(problem.contains("joints[")) << problem;
+  // The joint's Properties and its tooltip on the canvas: the same name.
+  w.document()->undoStack()->undo();
+  QTest::qWait(60);
+  ASSERT_TRUE(w.document()->solved());
+  const Mechanism& back = w.document()->design();
+  w.tools().selection()->add(back.joints[2].id);
+  QApplication::processEvents();
+  EXPECT_EQ(w.properties().panel()->title(), "<b>Joint</b> pin coupler.B - rocker.B");
+}
+
+// Issue 26: a red message was clipped at both ends: a word longer than the line (a 300-digit
+// number, a path) ran past the canvas's edge, and on a low canvas the strip's first rows were
+// above it. Each row fits the canvas's width, the strip lies within the canvas, a message past
+// its rows ends in an ellipsis, and the whole text is the strip's tooltip.
+TEST(Displays, ALongRedMessageFitsTheCanvasAndIsWholeInItsTooltip) {
+  MainWindow w;
+  w.resize(1280, 800);
+  ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
+  w.show();
+  QApplication::processEvents();
+  MessageStrip* strip = w.messageStrip();
+  auto* label = strip->findChild<QLabel*>("message");
+  ASSERT_TRUE(label);
+  auto fits = [&](const char* when) {
+    SCOPED_TRACE(when);
+    EXPECT_GE(strip->geometry().top(), 0);
+    EXPECT_LE(strip->geometry().bottom(), w.canvas()->height());
+    const QStringList rows = label->text().split('\n');
+    for (const QString& r : rows)
+      EXPECT_LE(label->fontMetrics().horizontalAdvance(r), label->width()) << r;
+    EXPECT_LE(label->geometry().bottom(), strip->height());
+    return rows;
+  };
+  const QString digits = "Mass [kg]: \"" + QString(150, QLatin1Char('9')) + "\" is not a number";
+  strip->setMessage(digits, true);
+  QApplication::processEvents();
+  QStringList rows = fits("150 digits");
+  EXPECT_GE(rows.size(), 2);
+  EXPECT_EQ(rows.join("").remove(' '), QString(digits).remove(' '));  // all of it, in rows
+  EXPECT_EQ(strip->message(), digits);
+  shot(&w, "message-strip-digits");
+  // Longer than three rows: elided, and whole in the tooltip over the strip.
+  const QString path =
+      "Could not open " + QString("/a/folder/of/many/sewing/machines").repeated(20) + ".json";
+  strip->setMessage(path, true);
+  QApplication::processEvents();
+  rows = fits("a long path");
+  EXPECT_EQ(rows.size(), 3);
+  EXPECT_TRUE(rows.back().endsWith(QChar(0x2026))) << rows.back();
+  const QPoint inStrip = strip->geometry().center();
+  EXPECT_TRUE(strip->toolTipAt(inStrip).contains(path));
+  EXPECT_EQ(strip->toolTipAt(QPoint(inStrip.x(), strip->geometry().top() - 5)), "");
+  auto* view = qobject_cast<QAbstractScrollArea*>(w.canvas());
+  QHelpEvent help(QEvent::ToolTip, view->viewport()->mapFrom(w.canvas(), inStrip),
+                  w.canvas()->mapToGlobal(inStrip));
+  QApplication::sendEvent(view->viewport(), &help);
+  EXPECT_TRUE(QToolTip::text().contains(path)) << QToolTip::text();
+  // A low canvas: one row each, all within it.
+  strip->setProblem(QString("cannot assemble the mechanism as drawn ").repeated(8));
+  strip->setHint(QString("Select: click a point, joint, slot or link ").repeated(4));
+  w.resize(700, 360);
+  QApplication::processEvents();
+  rows = fits("a low canvas");
+  EXPECT_EQ(rows.size(), 1);
+  shot(&w, "message-strip-low");
 }
 
 }  // namespace

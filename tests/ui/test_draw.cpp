@@ -336,6 +336,27 @@ QString statusText(const MainWindow& w) {
   return all + m->hint() + "\n" + m->problem() + "\n" + m->message() + "\n";
 }
 
+// Issue 26: the first ground pivot of a new drawing said, in red, "the drawing's extent is below
+// 1e-9 of its size": a single point is a valid start of a drawing.
+TEST(Draw, TheFirstGroundPivotOfANewDrawingIsNoError) {
+  MainWindow w;
+  w.resize(1200, 800);
+  w.show();
+  QApplication::processEvents();
+  test::Draw d{w};
+  d.key("G");
+  d.click(20, 10);
+  QApplication::processEvents();
+  ASSERT_EQ(w.document()->design().points.size(), 1u);
+  EXPECT_TRUE(w.document()->solveStatus().ok()) << w.document()->solveStatus().message;
+  EXPECT_EQ(w.messageStrip()->problem(), "");
+  EXPECT_FALSE(statusText(w).contains("extent")) << statusText(w);
+  EXPECT_FALSE(statusText(w).contains("rounding")) << statusText(w);
+  d.click(20, 10);  // the same place again: a second pivot on it, still nothing wrong
+  QApplication::processEvents();
+  EXPECT_EQ(w.messageStrip()->problem(), "");
+}
+
 // Over-constrained: a second coupler beside the first says the same thing twice; the solver
 // names the redundant joint, the canvas draws it in the warning colour and the status bar
 // says so. Under-constrained: a link hanging from the crank is free with the crank held.

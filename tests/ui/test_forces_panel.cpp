@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <QComboBox>
+#include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QImage>
 #include <QProcess>
@@ -21,6 +23,8 @@
 #include "mechanisms.h"
 #include "plots/qcp.h"
 #include "ui_test.h"
+#include "window/features.h"
+#include "window/forces_feature.h"
 
 namespace linkage::ui {
 namespace {
@@ -231,6 +235,110 @@ TEST_F(ForcesPanelTest, ARedundantJointsReactionIsASentence) {
   EXPECT_TRUE(panel.cursorText().contains("torque")) << panel.cursorText();
   EXPECT_FALSE(panel.cursorText().contains("; pin:")) << panel.cursorText();
   shot(&panel, "forces-panel-redundant");
+}
+
+// Issue 26: forces past 1e154 N (a mass of 1e300 kg then, a load now) read "torque 0 N m;
+// shaking force (0, 0) N" (the peak's norm() overflowed, and everything was rounding next to it)
+// and filled the plots solid (axes past QCustomPlot's 1e250). Forces the plots can draw are
+// drawn and read as the solver has them; larger ones are a sentence with their numbers; forces
+// that overflow say so. Never 0 where they are not, never inf or NaN.
+Mechanism withLoad(Mechanism m, double n, int loads = 1) {
+  Load l;
+  l.point = *m.findPoint("needlebar.B");
+  l.forceN = Vec2(n, -n);
+  for (int i = 0; i < loads; ++i) m.addLoad(l);
+  return m;
+}
+
+TEST_F(ForcesPanelTest, HugeForcesReadAsTheyAreNeverAsZero) {
+  open("slider-crank-22a-masses");
+  showAndSettle();
+  doc.setContents(withLoad(doc.design(), 1e200), "", "1e200 N");
+  ASSERT_TRUE(doc.setCrankDeg(40).ok());
+  settle();
+  ASSERT_TRUE(panel.samples()) << panel.message();
+  const Forces f = computeForces(doc.kinematics());
+  ASSERT_TRUE(f.status.ok()) << f.status.message;
+  const double norm = std::hypot(f.shakingForceN.x(), f.shakingForceN.y());
+  ASSERT_GT(norm, 1e200);
+  const QString text = panel.cursorText();
+  for (double v : {f.driverTorqueNm, f.shakingForceN.x(), f.shakingForceN.y(), norm})
+    EXPECT_TRUE(text.contains(QString::number(v, 'g', 5))) << v << ": " << text;
+  EXPECT_FALSE(text.contains("(0, 0)")) << text;
+  // The shaking force's plot spans its curves, and the |F| curve is a number.
+  const ForceFigure& fig = panel.figure();
+  const QCPRange y = fig.rect(ForceFigure::Shaking)->axis(QCPAxis::atLeft)->range();
+  EXPECT_GE(y.upper, 1e200);
+  EXPECT_LE(y.lower, -1e200);
+  EXPECT_LT(y.size(), 1e202);
+  for (int i = 0; i < 361; i += 30)
+    EXPECT_TRUE(std::isfinite(at(fig.curve(ForceFigure::ReactionNorm), i)));
+  shot(&panel, "forces-panel-1e200");
+
+  doc.setContents(withLoad(doc.design(), 1e300), "", "1e300 N");
+  settle();
+  EXPECT_FALSE(panel.samples());
+  EXPECT_TRUE(panel.message().contains("too large to plot")) << panel.message();
+  EXPECT_TRUE(panel.message().contains("e+300 N")) << panel.message();
+  EXPECT_FALSE(panel.plotWidget()->isVisible());
+
+  doc.setContents(withLoad(doc.design(), 1e308, 2), "", "overflow");
+  settle();
+  EXPECT_FALSE(panel.samples());
+  EXPECT_TRUE(panel.message().contains("overflow (beyond 1e308 N")) << panel.message();
+  for (const char* word : {"inf", "nan"})
+    EXPECT_FALSE(panel.message().contains(word, Qt::CaseInsensitive)) << panel.message();
+  shot(&panel, "forces-panel-overflow");
+}
+
+// Issue 26: at the window's first layout (1280 x 800) the Forces dock drew its four plots two
+// by two, about 40 px high, and the polar diagram on equal scales as a flat strip. Each plot has
+// a height to read its curves by, and the polar diagram is square; in a dock lower still the
+// plots keep that height and the dock scrolls.
+TEST(ForcesDock, AtTheFirstLayoutEachPlotHasAHeightToReadAndThePolarDiagramIsSquare) {
+  MainWindow w;
+  w.resize(1280, 800);
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2-masses"));
+  w.show();
+  QApplication::processEvents();
+  w.forces().dock->show();
+  w.forces().dock->raise();  // its tab in front of the Plots'
+  ForcesPanel* panel = w.forces().panel();
+  auto settle = [&] {
+    QTest::qWait(40);
+    QElapsedTimer t;
+    t.start();
+    while (panel->redrawPending() && t.elapsed() < 10000) QTest::qWait(5);
+    panel->plotWidget()->replot();
+  };
+  settle();
+  ASSERT_TRUE(panel->samples()) << panel->message();
+  const ForceFigure& f = panel->figure();
+  auto readable = [&](const char* when) {
+    SCOPED_TRACE(when);
+    for (ForceFigure::Plot p :
+         {ForceFigure::Torque, ForceFigure::Shaking, ForceFigure::Polar, ForceFigure::Reaction}) {
+      EXPECT_GE(f.rect(p)->height(), 80) << p;
+      EXPECT_GE(f.rect(p)->width(), 80) << p;
+    }
+    // Square, or near it: never a strip.
+    const QCPAxisRect* polar = f.rect(ForceFigure::Polar);
+    EXPECT_LE(std::max(polar->width(), polar->height()),
+              1.2 * std::min(polar->width(), polar->height()))
+        << polar->width() << " x " << polar->height();
+    const double nx = polar->axis(QCPAxis::atBottom)->range().size() / polar->width();
+    const double ny = polar->axis(QCPAxis::atLeft)->range().size() / polar->height();
+    EXPECT_NEAR(nx, ny, 1e-9 * ny);
+  };
+  readable("the first layout");
+  EXPECT_EQ(f.columns(), 4);  // a dock under the canvas, wide and low: one row
+  shot(&w, "forces-dock-1280x800");
+  // The dock made lower than the plots need: they keep their height, and it scrolls.
+  w.forces().dock->setMaximumHeight(150);
+  settle();
+  readable("a low dock");
+  EXPECT_GE(panel->plotWidget()->height(), ForceFigure::kLeastPlotHeight);
+  shot(&w, "forces-dock-low");
 }
 
 TEST_F(ForcesPanelTest, WorksOnlyWhenShown) {

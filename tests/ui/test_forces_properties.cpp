@@ -7,14 +7,20 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QPushButton>
+#include <QRegularExpression>
+#include <QSignalSpy>
+#include <QTemporaryDir>
 
 #include "canvas/canvas_scene.h"
 #include "dialogs.h"
 #include "document/document.h"
 #include "drawing.h"
+#include "forces/balance_dialog.h"
+#include "linkage/io/numbers.h"
 #include "linkage/mass_estimate.h"
 #include "properties/mass_dialog.h"
 #include "properties/properties_panel.h"
@@ -76,6 +82,121 @@ TEST(ForcesProperties, ALinksMassIsTypedAsOneUndoStepEach) {
   doc->undoStack()->undo();
   doc->undoStack()->undo();
   EXPECT_FALSE(doc->design().body(coupler)->mass);
+}
+
+// The significant digits of a number as written ("0.0982" 3, "-15" 2, "1.25e-05" 3).
+int significantDigits(const QString& text) {
+  QString m = text.section(QRegularExpression("[eE]"), 0, 0);
+  m.remove(QRegularExpression("[-+.]"));
+  m.remove(QRegularExpression("^0+"));
+  return static_cast<int>(m.size());
+}
+
+// What a Properties row says of a body's counterweights, read back as numbers: each
+// "KG kg at (X, Y)", none when it says anything else.
+std::vector<PointMass> counterweightsRead(const QString& text) {
+  static const QRegularExpression one(R"((\S+) kg at \((\S+), (\S+)\))");
+  std::vector<PointMass> out;
+  for (const QString& part : text.split(QStringLiteral("; "))) {
+    const QRegularExpressionMatch m = one.match(part);
+    if (!m.hasMatch() || m.capturedLength(0) != part.size()) return {};
+    const auto kg = parseNumber(m.captured(1).toStdString());
+    const auto x = parseNumber(m.captured(2).toStdString());
+    const auto y = parseNumber(m.captured(3).toStdString());
+    if (!kg || !x || !y) return {};
+    for (int i = 1; i <= 3; ++i)
+      if (significantDigits(m.captured(i)) > 6) return {};
+    out.push_back({*kg, Vec2(*x, *y)});
+  }
+  return out;
+}
+
+// The body's Properties in `w` read its counterweights and mass as `want` holds them, rounded
+// for people (no more than 6 significant digits).
+void expectCounterweightsRead(MainWindow& w, BodyId body, const Mass& want) {
+  w.tools().selection()->clear();
+  w.tools().selection()->add(body);
+  QApplication::processEvents();
+  auto* row = qobject_cast<QLabel*>(w.properties().panel()->field("Counterweights"));
+  ASSERT_NE(row, nullptr);
+  const std::vector<PointMass> read = counterweightsRead(row->text());
+  ASSERT_EQ(read.size(), want.counterweights.size()) << row->text();
+  for (size_t i = 0; i < read.size(); ++i) {
+    const PointMass& c = want.counterweights[i];
+    EXPECT_NEAR(read[i].kg, c.kg, 1e-5 * c.kg) << row->text();
+    const double scale = std::max(1.0, c.at.norm());
+    EXPECT_NEAR(read[i].at.x(), c.at.x(), 1e-5 * scale) << row->text();
+    EXPECT_NEAR(read[i].at.y(), c.at.y(), 1e-5 * scale) << row->text();
+  }
+  const QString kg = fieldOf(w, "Mass [kg]")->text();
+  EXPECT_LE(significantDigits(kg), 6) << kg;
+  EXPECT_NEAR(parseNumber(kg.toStdString()).value_or(NAN), want.kg, 1e-5 * want.kg) << kg;
+}
+
+// Issue 26: after Balance > Apply the crank's Properties read "4.941e-321 g at 1.0235e-306,
+// 4.45e-308" (a row that read a temporary's counterweights after it was gone), also after save
+// and reopen, and the Mass field showed 17 digits. The row reads what the model holds, rounded
+// for people; the Mass field too; the file keeps every digit.
+TEST(ForcesProperties, ABalancesCounterweightReadsAsTheModelHoldsIt) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "wanzer-inversion-2-masses"));
+  Document* doc = w.document();
+  BalanceDialog d(doc);
+  ASSERT_FALSE(d.offeredBodies().empty());
+  ASSERT_TRUE(d.compute()) << d.message();
+  ASSERT_TRUE(d.apply());
+  const BodyId body = d.offeredBodies()[0];
+  ASSERT_TRUE(doc->design().body(body)->mass);
+  const Mass held = *doc->design().body(body)->mass;
+  ASSERT_FALSE(held.counterweights.empty());
+  ASSERT_GT(held.counterweights[0].kg, 1e-3);  // a counterweight that matters
+  {
+    SCOPED_TRACE("applied");
+    expectCounterweightsRead(w, body, held);
+  }
+  QTemporaryDir dir;
+  const QString path = dir.filePath("balanced.linkage.json");
+  QString why;
+  ASSERT_TRUE(doc->save(path, &why)) << why;
+  MainWindow again;
+  again.resize(1200, 800);
+  ASSERT_TRUE(again.openFile(path, &why)) << why;
+  again.show();
+  QApplication::processEvents();
+  const Body* reopened = again.document()->design().bodyNamed(doc->design().body(body)->name);
+  ASSERT_NE(reopened, nullptr);
+  EXPECT_EQ(reopened->mass, held);  // every digit kept
+  SCOPED_TRACE("saved and reopened");
+  expectCounterweightsRead(again, reopened->id, held);
+}
+
+// Issue 26: a mass of 1e300 kg was taken and its forces shown as 0 N. The field refuses what
+// the file reader refuses (linkage/model.h's bounds), naming the field and the link.
+TEST(ForcesProperties, AMassBeyondAThousandTonnesIsRefusedNamingTheLink) {
+  MainWindow w;
+  ASSERT_TRUE(test::showExample(w, "four-bar-crank-rocker"));
+  Document* doc = w.document();
+  const BodyId coupler = doc->design().bodyNamed("coupler")->id;
+  w.tools().selection()->add(coupler);
+  type(fieldOf(w, "Mass [kg]"), "0.25");
+  const int steps = doc->undoStack()->count();
+  QSignalSpy said(w.properties().panel(), &PropertiesPanel::message);
+  for (const char* kg : {"1e300", "1e308", "1000001"}) {
+    type(fieldOf(w, "Mass [kg]"), kg);
+    ASSERT_FALSE(said.isEmpty()) << kg;
+    EXPECT_EQ(said.back().at(0).toString(),
+              "Mass [kg]: on coupler, " + QString::fromStdString(massRefusal(1e300)))
+        << kg;
+    EXPECT_EQ(w.properties().panel()->refusedField(), fieldOf(w, "Mass [kg]"));
+    EXPECT_EQ(fieldOf(w, "Mass [kg]")->text(), "0.25");
+  }
+  type(fieldOf(w, "Moment of inertia [kg\u00b7mm\u00b2]"), "1e300");
+  EXPECT_EQ(said.back().at(0).toString(), "Moment of inertia [kg\u00b7mm\u00b2]: on coupler, " +
+                                              QString::fromStdString(inertiaRefusal(1e300)));
+  EXPECT_EQ(doc->undoStack()->count(), steps);
+  EXPECT_EQ(doc->design().body(coupler)->mass->kg, 0.25);
+  type(fieldOf(w, "Mass [kg]"), "1e6");  // a thousand tonnes is a mass
+  EXPECT_EQ(doc->design().body(coupler)->mass->kg, 1e6);
 }
 
 TEST(ForcesProperties, TheOutlineEstimateIsTheSolversAndOneUndoStep) {

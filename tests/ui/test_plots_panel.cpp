@@ -286,6 +286,35 @@ TEST_F(PlotsPanelTest, APointTheEditRemovesGivesWayToTheFirstOutput) {
   EXPECT_EQ(panel.curves(0)->quantity().point, *doc.design().findPoint("needlebar.G"));
 }
 
+// Issue 26: a point chosen in the plots' list stayed chosen when another design was opened in
+// the window (by name: the last design's point). It stays through edits of its design; a design
+// opened in its place plots its own default point.
+TEST_F(PlotsPanelTest, AnotherDesignOpenedPlotsItsOwnPoint) {
+  panel.setDocument(&doc);
+  showAndSettle();
+  QComboBox* target = nullptr;
+  for (QComboBox* c : panel.findChildren<QComboBox*>())
+    if (c->findText("triangle.E") >= 0) target = c;
+  ASSERT_TRUE(target);
+  const int e = target->findText("triangle.E");
+  target->setCurrentIndex(e);  // as the user picks it
+  Q_EMIT target->activated(e);
+  settle();
+  ASSERT_EQ(panel.request().target, "triangle.E");
+  Mechanism edited = doc.design();
+  edited.point(*edited.findPoint("triangle.G"))->pos += Vec2(0.5, 0);
+  doc.setDesign(edited);
+  settle();
+  EXPECT_EQ(panel.request().target, "triangle.E");  // the user's choice, through an edit
+  // Another design with a triangle.E of its own: its own first output.
+  ASSERT_TRUE(doc.open(example("wanzer-inversion-2-masses"), nullptr));
+  settle();
+  ASSERT_TRUE(doc.design().findPoint("triangle.E"));
+  EXPECT_EQ(panel.request().target, "needlebar.G");
+  ASSERT_NE(panel.curves(0), nullptr);
+  EXPECT_EQ(panel.curves(0)->quantity().point, *doc.design().findPoint("needlebar.G"));
+}
+
 TEST_F(PlotsPanelTest, EmptyDocumentSaysWhy) {
   Document empty;  // a ground and nothing else: no driver, nothing to plot
   panel.setDocument(&empty);

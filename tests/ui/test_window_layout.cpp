@@ -92,6 +92,38 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
   EXPECT_EQ(words(menu(bar, "Help")), QStringList({"about"}));
 }
 
+// Issue 26: View and Analysis held two entries both called "Forces" (Shift+F, the reactions on
+// the canvas; Shift+G, the dock of force plots), and View two "Instant Centres" (I, the canvas's;
+// the dock). No menu holds two entries of one text, and each says what it shows.
+TEST(WindowLayout, NoMenuHoldsTwoEntriesOfOneName) {
+  MainWindow w;
+  const QList<QMenu*> menus = w.menuBar()->findChildren<QMenu*>();
+  ASSERT_GE(menus.size(), 7);
+  for (QMenu* m : menus) {
+    QStringList seen;
+    for (QAction* a : m->actions()) {
+      if (a->isSeparator()) continue;
+      const QString text = a->text().remove('&');
+      EXPECT_FALSE(seen.contains(text)) << m->title() << ": \"" << text << "\" twice";
+      seen << text;
+    }
+  }
+  QAction* reactions = w.findChild<QAction*>("showForces");
+  ASSERT_TRUE(reactions);
+  EXPECT_EQ(reactions->shortcut(), QKeySequence("Shift+F"));
+  EXPECT_EQ(reactions->text().remove('&'), "Joint Reactions");
+  QAction* dock = nullptr;
+  for (QAction* a : w.findChildren<QAction*>())
+    if (a->objectName() == "showForcesPanel") dock = a;
+  ASSERT_TRUE(dock);
+  EXPECT_EQ(dock->shortcut(), QKeySequence("Shift+G"));
+  EXPECT_EQ(dock->text().remove('&'), "Forces");
+  // The same in the View menu: the centres drawn on the canvas (I) beside their dock.
+  QAction* centres = w.findChild<QAction*>("showCentres");
+  ASSERT_TRUE(centres);
+  EXPECT_EQ(centres->text().remove('&'), "Instant Centres on Canvas");
+}
+
 TEST(WindowLayout, EveryToolbarHoldsItsEntriesInOrder) {
   MainWindow w;
   std::map<QString, QStringList> bars;

@@ -17,7 +17,7 @@ gears="$work/gears.linkage.json"
 cp "$examples/gear-four-bar.linkage.json" "$gears"
 start_linkage "$linkage" "$gears"
 wait_probe "title: gears.linkage.json" || fail "no probe"
-gear="joints[2] (gear pinion.I - gear.O2)"
+gear="gear pinion.I - gear.O2"
 empty() { click_mm -70 50; wait_probe "properties: Mechanism" || fail "a click on nothing kept a selection"; }
 
 # A click on the pinion's pitch circle (its top).
@@ -87,8 +87,8 @@ run=$(python3 -c "import math; d=200; ra=d/6; rb=d/12; a=(ra-rb)/d; c=math.sqrt(
 # u = (0, -1), perp(u) = (1, 0): the normal n = a u + c perp(u) on the +x side
 n=(c, -a); pa=(ra*n[0], ra*n[1]); pb=(rb*n[0], -d+rb*n[1]); print((pa[0]+pb[0])/2, (pa[1]+pb[1])/2)")
 click_mm $run
-wait_probe "properties: Joint joints[" || fail "a click on the belt's run at ($run) did not select it"
-probe properties | grep -qF "(gear armshaft.O - hook.L)" || fail "not the 2:1 belt: $(probe properties)"
+wait_probe "properties: Joint gear " || fail "a click on the belt's run at ($run) did not select it"
+probe properties | grep -qF "gear armshaft.O - hook.L" || fail "not the 2:1 belt: $(probe properties)"
 grep -q "field Ratio: 2" "$work/probe.txt" || fail "the belt's ratio is not shown as 2"
 shot belt
 echo "ok: a gear selected by its circles, pitch point, centre area and a band; its ratio typed and edited from its menu; saved; a belt selected by its run"

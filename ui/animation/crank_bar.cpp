@@ -6,6 +6,7 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <algorithm>
 #include <cmath>
 
 #include "animation/animator.h"
@@ -102,7 +103,10 @@ void CrankBar::showPose() {
   const double deg = doc_ ? doc_->crankDeg() : 0.0;
   const double rev = std::floor(deg / 360.0);
   QSignalBlocker a(slider_), b(angle_);
-  slider_->setValue(static_cast<int>(std::lround((deg - 360.0 * rev) / 360.0 * kSliderSteps)));
+  // Within the turn (at a crank angle of 1e300 the difference is rounding of any size), and the
+  // turns as a number however many (a long long of 2.8e297 was undefined behaviour).
+  const double within = std::clamp(deg - 360.0 * rev, 0.0, 360.0);
+  slider_->setValue(static_cast<int>(std::lround(within / 360.0 * kSliderSteps)));
   angle_->setValue(deg);
   // A crank turned by a start angle of a file's making (1e300) has more turns than an integer
   // holds: those are written as a number, not converted (undefined behaviour).

@@ -204,7 +204,7 @@ void CanvasScene::rebuild() {
   // Each joint as its kind draws it (ui/elements/element_ui.h).
   for (const JointSymbol& sym : drawing_.joints) {
     JointItem* item = elementUi(sym.type).item(&ctx_, sym, drawing_);
-    item->setToolTip(QString::fromStdString(jointLabel(m, sym.joint)));
+    item->setToolTip(QString::fromStdString(jointName(m, sym.joint)));
     item->place(sym);
     addItem(item);
     joints_.push_back(item);

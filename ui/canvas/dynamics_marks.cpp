@@ -59,7 +59,7 @@ void addLoads(const CanvasScene& scene, const Mechanism& m, double crankDeg, Dyn
     } else {
       mark.at = toQt(scene.worldOf(l.point));
       mark.forceN = QPointF(l.forceN.x(), l.forceN.y());
-      mark.label = number(l.forceN.norm()) + QStringLiteral(" N");
+      mark.label = number(std::hypot(l.forceN.x(), l.forceN.y())) + QStringLiteral(" N");
     }
     if (!mark.active) mark.label += QStringLiteral(" (off)");
     out.loads.push_back(std::move(mark));
@@ -96,7 +96,8 @@ double reactionScale(const Kinematics& k, double extentMm) {
   double most = 0;
   for (const std::vector<Vec2>& joint : s.reactionN)
     for (const Vec2& f : joint)
-      if (std::isfinite(f.x()) && std::isfinite(f.y())) most = std::max(most, f.norm());
+      if (std::isfinite(f.x()) && std::isfinite(f.y()))
+        most = std::max(most, std::hypot(f.x(), f.y()));
   if (!(most > 0) || !(extentMm > 0)) return 0;
   const double perTen = most / (0.25 * extentMm) * 10;  // N per 10 mm
   // The smallest 1-2-5 step of newtons not under it: arrows at most a quarter of the extent.

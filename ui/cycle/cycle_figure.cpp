@@ -46,8 +46,8 @@ QCPItemText* label(QCustomPlot& p, double x, double y, const QString& text, QCol
 }
 
 // A label centred at crank angle x, moved in from either end of the cycle to be read whole.
-void labelAt(QCustomPlot& p, double x, double y, const QString& text, QColor colour,
-             Qt::Alignment vertical) {
+QCPItemText* labelAt(QCustomPlot& p, double x, double y, const QString& text, QColor colour,
+                     Qt::Alignment vertical) {
   QCPItemText* t = label(p, x, y, text, colour);
   if (x < 25) {
     t->position->setCoords(1, y);
@@ -58,6 +58,7 @@ void labelAt(QCustomPlot& p, double x, double y, const QString& text, QColor col
   } else {
     t->setPositionAlignment(Qt::AlignHCenter | vertical);
   }
+  return t;
 }
 
 // The middle of an interval's longer piece (a wrapping one is drawn in two).
@@ -80,6 +81,10 @@ double CycleFigure::base(int row) const {
 
 int CycleFigure::heightFor(int rows) {
   return 90 + 70 * std::max(rows, 1);
+}
+
+int CycleFigure::leastHeightFor(int rows) {
+  return 70 + 48 * std::max(rows, 1);
 }
 
 void CycleFigure::clear() {
@@ -151,6 +156,10 @@ void CycleFigure::drawRows(const CycleDiagram& d) {
 }
 
 void CycleFigure::drawWindows(const CycleDiagram& d, const std::vector<CycleWindow>& ws) {
+  // Each window of a row names itself a line below the one before it on that row: two windows
+  // of one output overlap (the needle below the plate, and in the hook's zone), and their
+  // names, both at the row's top, were printed over each other.
+  std::vector<QCPItemText*> lastOnRow(d.rows.size(), nullptr);
   for (size_t w = 0; w < ws.size() && w < d.windows.size(); ++w) {
     const auto row = std::find_if(d.rows.begin(), d.rows.end(), [&](const CycleRow& r) {
       return r.output.name == ws[w].output.name;
@@ -160,11 +169,20 @@ void CycleFigure::drawWindows(const CycleDiagram& d, const std::vector<CycleWind
     const double b = base(r);
     QColor fill = rowColour(r);
     fill.setAlpha(50);
+    QCPItemText* first = nullptr;
     for (const AngleInterval& i : d.windows[w].intervals) {
       shade(*plot_, i, b - 0.15, b + 1.15, fill);
-      labelAt(*plot_, middleOf(i), b + 1.13, QString::fromStdString(ws[w].name), Qt::black,
-              Qt::AlignTop);
+      QCPItemText* t = labelAt(*plot_, middleOf(i), b + 1.13, QString::fromStdString(ws[w].name),
+                               Qt::black, Qt::AlignTop);
+      if (QCPItemText* above = lastOnRow[r]) {
+        // Its top a pixel under the bottom of the name above (in pixels, whatever the zoom).
+        t->position->setTypeY(QCPItemPosition::ptAbsolute);
+        t->position->setParentAnchorY(above->bottom);
+        t->position->setCoords(t->position->coords().x(), 1);
+      }
+      if (!first) first = t;
     }
+    if (first) lastOnRow[r] = first;
   }
   const double top = kRowPitch * rows_;
   for (const Conflict& c : d.conflicts)

@@ -46,6 +46,9 @@ class CycleFigure {
   double crankAtX(double pixelX) const;
   // The height in pixels the rows want (an export's or the dock's).
   static int heightFor(int rows);
+  // The least height the rows are read at (their two-line labels apart, a window's name or two
+  // above the curve): below it the dock scrolls.
+  static int leastHeightFor(int rows);
 
   // For tests and tools: the rows drawn (outputs, then clearances), top first.
   int rowCount() const { return rows_; }

@@ -13,8 +13,10 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QStackedWidget>
+#include <QStyledItemDelegate>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -115,27 +117,47 @@ QWidget* CyclePanel::buildAddRow() {
   return row;
 }
 
-void CyclePanel::buildWidgets() {
-  auto* top = new QVBoxLayout(this);
-  top->setContentsMargins(4, 4, 4, 4);
-  top->setSpacing(3);
-  top->addWidget(buildAddRow());
-  form_ = new WindowForm;
-  top->addWidget(form_);
-  error_ = new QLabel;
-  error_->setWordWrap(true);
-  error_->setStyleSheet("color: #962020");
-  error_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-  error_->hide();  // shown with a sentence only: the diagram keeps the height meanwhile
-  top->addWidget(error_);
-  auto* split = new QSplitter(Qt::Horizontal);
+namespace {
+
+// A column whose rows are as tall as their text wrapped at the column's width (a view's rows
+// are one line unless their delegate says otherwise).
+class WrappedColumn : public QStyledItemDelegate {
+ public:
+  explicit WrappedColumn(QTreeWidget* list) : QStyledItemDelegate(list), list_(list) {}
+  QSize sizeHint(const QStyleOptionViewItem& o, const QModelIndex& index) const override {
+    QStyleOptionViewItem opt = o;
+    initStyleOption(&opt, index);
+    const int width = std::max(20, list_->columnWidth(index.column()) - 8);
+    const QRect text =
+        opt.fontMetrics.boundingRect(QRect(0, 0, width, 100000), Qt::TextWordWrap, opt.text);
+    return {width, std::max(text.height() + 4, QStyledItemDelegate::sizeHint(o, index).height())};
+  }
+
+ private:
+  QTreeWidget* list_;
+};
+
+}  // namespace
+
+void CyclePanel::buildList() {
   list_ = new QTreeWidget;
   list_->setColumnCount(3);
   list_->setHeaderLabels({tr("Kind"), tr("Entry"), tr("Result")});
   list_->setRootIsDecorated(false);
   list_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
   list_->setContextMenuPolicy(Qt::CustomContextMenu);
+  // The result is what is read: the entry's column is held to part of the list, the result
+  // takes the rest and wraps to be read whole (it was cut off at the list's edge).
   list_->header()->setStretchLastSection(true);
+  list_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  list_->setWordWrap(true);
+  list_->setTextElideMode(Qt::ElideMiddle);
+  list_->setItemDelegateForColumn(2, new WrappedColumn(list_));
+  // The rows' heights follow the result's column as it narrows or widens (the view lays its
+  // rows out only when asked).
+  connect(list_->header(), &QHeaderView::sectionResized, list_, [this] {
+    QMetaObject::invokeMethod(list_, &QTreeWidget::doItemsLayout, Qt::QueuedConnection);
+  });
   list_->setMinimumWidth(200);
   connect(list_, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* i) { itemEdited(i); });
   connect(list_, &QWidget::customContextMenuRequested, this, [this](const QPoint& at) {
@@ -152,6 +174,23 @@ void CyclePanel::buildWidgets() {
   // Delete in the list removes its entry (a key, not an action: the window's Delete is Edit >
   // Delete, and each shortcut is one action's).
   list_->installEventFilter(this);
+}
+
+void CyclePanel::buildWidgets() {
+  auto* top = new QVBoxLayout(this);
+  top->setContentsMargins(4, 4, 4, 4);
+  top->setSpacing(3);
+  top->addWidget(buildAddRow());
+  form_ = new WindowForm;
+  top->addWidget(form_);
+  error_ = new QLabel;
+  error_->setWordWrap(true);
+  error_->setStyleSheet("color: #962020");
+  error_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  error_->hide();  // shown with a sentence only: the diagram keeps the height meanwhile
+  top->addWidget(error_);
+  auto* split = new QSplitter(Qt::Horizontal);
+  buildList();
   stack_ = new QStackedWidget;
   plot_ = new QCustomPlot;
   plot_->setMinimumSize(240, 120);
@@ -164,7 +203,13 @@ void CyclePanel::buildWidgets() {
   sentence_->setWordWrap(true);
   sentence_->setAlignment(Qt::AlignCenter);
   sentence_->setMargin(16);
-  stack_->addWidget(plot_);
+  // A dock too low for the rows scrolls rather than print their labels over each other.
+  scroll_ = new QScrollArea;
+  scroll_->setWidget(plot_);
+  scroll_->setWidgetResizable(true);
+  scroll_->setFrameShape(QFrame::NoFrame);
+  scroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  stack_->addWidget(scroll_);
   stack_->addWidget(sentence_);
   split->addWidget(list_);
   split->addWidget(stack_);
@@ -193,6 +238,7 @@ bool CyclePanel::eventFilter(QObject* watched, QEvent* e) {
                 i->data(0, kIndexRole).toInt());
     return true;
   }
+  if (watched == list_ && e->type() == QEvent::Resize) fitEntryColumn();
   return QWidget::eventFilter(watched, e);
 }
 
@@ -206,6 +252,7 @@ void CyclePanel::fillList() {
     for (EntryKind k : kEntryKinds)
       for (int i = 0; i < entryCount(m.timing, k); ++i) {
         auto* item = new QTreeWidgetItem(list_, {kindName(k), entryText(m, k, i), QString()});
+        item->setToolTip(1, item->text(1));  // whole where its column elides it
         item->setData(0, kKindRole, static_cast<int>(k));
         item->setData(0, kIndexRole, i);
         item->setFlags(item->flags() | Qt::ItemIsEditable);
@@ -213,10 +260,18 @@ void CyclePanel::fillList() {
           item->setToolTip(1, clearanceDescription(m, m.timing.clearances[i]));
       }
   }
-  list_->resizeColumnToContents(0);
-  list_->resizeColumnToContents(1);
+  fitEntryColumn();
   filling_ = false;
   showResults();
+}
+
+void CyclePanel::fitEntryColumn() {
+  // The entry as wide as its longest, but no more than half of what the kind leaves: the
+  // result's column, which wraps, keeps the rest (it was cut off at the list's edge).
+  list_->resizeColumnToContents(0);
+  list_->resizeColumnToContents(1);
+  const int half = std::max(80, (list_->viewport()->width() - list_->columnWidth(0)) / 2);
+  if (list_->columnWidth(1) > half) list_->setColumnWidth(1, half);
 }
 
 void CyclePanel::itemEdited(QTreeWidgetItem* item) {
@@ -403,8 +458,9 @@ void CyclePanel::rebuildFigure() {
     values_->clear();
     return;
   }
-  stack_->setCurrentWidget(plot_);
+  stack_->setCurrentWidget(scroll_);
   figure_->build(diagram_, windows_, clearances_, QString(), crankAxisLabel(doc_->design()));
+  plot_->setMinimumHeight(CycleFigure::leastHeightFor(figure_->rowCount()));
   levels_->draw(diagram_, windows_, form_->target());
   plot_->replot(QCustomPlot::rpQueuedReplot);
   updateCursor();

@@ -34,6 +34,7 @@ class QCustomPlot;
 class QLabel;
 class QLineEdit;
 class QMouseEvent;
+class QScrollArea;
 class QStackedWidget;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -111,6 +112,7 @@ class CyclePanel : public QWidget {
  private:
   void buildWidgets();
   QWidget* buildAddRow();
+  void buildList();  // the entries and their results
   void fillList();
   void markStale();
   void schedule();
@@ -126,6 +128,7 @@ class CyclePanel : public QWidget {
   void ensureComputed();
   void itemEdited(QTreeWidgetItem* item);
   void setError(const QString& why);  // "" hides the line
+  void fitEntryColumn();
   void emitMarks();
   bool change(const QString& title, const std::function<bool(Mechanism&, QString*)>& edit,
               QString* why);
@@ -162,6 +165,7 @@ class CyclePanel : public QWidget {
   QLabel *error_, *values_, *sentence_;
   QTreeWidget* list_;
   QStackedWidget* stack_;
+  QScrollArea* scroll_;  // the diagram, scrolled in a dock too low for its rows
   QCustomPlot* plot_;
   std::unique_ptr<CycleFigure> figure_;
   std::unique_ptr<LevelLines> levels_;

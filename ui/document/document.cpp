@@ -60,6 +60,7 @@ void Document::replace(DocumentState s, const QString& path, const QString& titl
   undo_.clear();
   icFresh_ = false;
   forcesFresh_ = forcesPrepared_ = false;
+  emit contentsReplaced();
   emit designChanged();
   emit poseChanged();
   emit fileStateChanged();

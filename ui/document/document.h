@@ -92,6 +92,10 @@ class Document : public QObject {
   const Forces& forces();
 
  Q_SIGNALS:
+  // Another design took this one's place (a file opened, New, an example, a recovery), just
+  // before designChanged: what a view chose for the last design (a point to plot) is not this
+  // one's.
+  void contentsReplaced();
   // The design changed (an edit, an undo, a file): items are rebuilt.
   void designChanged();
   // The pose changed (crank angle): items move.

@@ -7,6 +7,7 @@
 #include <QString>
 #include <cmath>
 
+#include "linkage/io/numbers.h"
 #include "linkage/kinematics.h"
 
 namespace linkage::ui {
@@ -42,6 +43,24 @@ inline QString fixedText(double v, int decimals) {
 inline QString angleText(double deg, int decimals) {
   return std::abs(deg) < 1e9 || !std::isfinite(deg) ? fixedText(deg, decimals)
                                                     : QString::number(deg, 'g', 6);
+}
+
+// A number for a person to read (a Properties field, a row): a value typed shows as it was typed
+// (at most kTypedDigits significant digits: all of them, "12.3456789"), a value that comes of
+// arithmetic is rounded to kShownDigits ("0.248223", not the 17 digits 0.24822347805543243 needs
+// to be exact; "40", not 39.99999999999999); whole digits are never dropped into an exponent
+// ("1234568"). Never "-0"; a dash for what is not a number. Files keep every digit.
+constexpr int kTypedDigits = 9;
+constexpr int kShownDigits = 6;
+inline QString shownText(double v) {
+  if (!std::isfinite(v)) return QStringLiteral("\u2013");
+  const double a = std::abs(v);
+  const int whole = a >= 1 && a < 1e15 ? static_cast<int>(std::floor(std::log10(a))) + 1 : 1;
+  for (int digits = whole; digits <= kTypedDigits; ++digits) {
+    const std::string s = formatNumber(v, digits);
+    if (parseNumber(s) == v) return QString::fromStdString(s);
+  }
+  return QString::fromStdString(formatNumber(v, std::max(kShownDigits, whole)));
 }
 
 }  // namespace linkage::ui

@@ -80,7 +80,7 @@ void addTypeMenu(Toolbox& box, QMenu& menu, const Joint& j) {
   if (kinds.size() < 2) return;
   QMenu* type = menu.addMenu(Toolbox::tr("Change Type"));
   const JointId id = j.id;
-  const QString label = QString::fromStdString(jointLabel(box.document()->design(), id));
+  const QString label = QString::fromStdString(jointName(box.document()->design(), id));
   for (JointType t : kinds) {
     QAction* a = type->addAction(describe(t), &box, [&box, id, t, label] {
       box.editWith(Toolbox::tr("Change type of %1").arg(label),

@@ -74,7 +74,7 @@ void form(PropertiesPanel& panel, JointId id) {
 
 void jointMenu(Toolbox& box, QMenu& menu, const Joint& j) {
   const JointId id = j.id;
-  const QString label = QString::fromStdString(jointLabel(box.document()->design(), id));
+  const QString label = QString::fromStdString(jointName(box.document()->design(), id));
   for (bool belt : {false, true}) {
     QAction* a = menu.addAction(
         belt ? Toolbox::tr("Belt (the same way)") : Toolbox::tr("Gears in Mesh (opposite ways)"),

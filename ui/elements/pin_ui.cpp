@@ -45,7 +45,7 @@ void form(PropertiesPanel& panel, JointId id) {
 void jointMenu(Toolbox& box, QMenu& menu, const Joint& j) {
   const Mechanism& m = box.document()->design();
   const JointId id = j.id;
-  const QString label = QString::fromStdString(jointLabel(m, id));
+  const QString label = QString::fromStdString(jointName(m, id));
   QAction* drive = menu.addAction(Toolbox::tr("Make It the Driver"), &box, [&box, id, label] {
     box.editWith(Toolbox::tr("Driver at %1").arg(label),
                  [&](Mechanism& n, std::string& why) { return setDriver(n, id, &why); });

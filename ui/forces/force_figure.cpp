@@ -3,6 +3,7 @@
 #include <QFontMetrics>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "forces/force_plots.h"
 #include "plots/qcp.h"
@@ -15,7 +16,7 @@ namespace {
 std::vector<double> component(const std::vector<Vec2>& v, int c) {
   std::vector<double> out;
   out.reserve(v.size());
-  for (const Vec2& f : v) out.push_back(c == 0 ? f.x() : c == 1 ? f.y() : f.norm());
+  for (const Vec2& f : v) out.push_back(c == 0 ? f.x() : c == 1 ? f.y() : std::hypot(f.x(), f.y()));
   return out;
 }
 
@@ -28,13 +29,29 @@ ForceFigure::ForceFigure(QCustomPlot* plot) : plot_(plot) {
   // Every draw lays the plots out first (on the screen, or at an export's size): the polar
   // diagram's scales are made equal for the size it is drawn at, before it is drawn.
   QObject::connect(plot_, &QCustomPlot::afterLayout, plot_, [this] {
-    if (rects_[Polar]) fitEqualScales(rects_[Polar]);
+    if (rects_[Polar]) {
+      squarePolar();
+      fitEqualScales(rects_[Polar]);
+    }
     fitCrankLabels();
   });
 }
 
-int ForceFigure::columnsFor(int width) {
-  return width >= 900 ? 4 : 2;
+int ForceFigure::columnsFor(QSize area) {
+  // The room a plot's curves get in a cell, less its title, tick labels and axis labels.
+  constexpr int kAxesWidth = 70, kAxesHeight = 60;
+  int best = 4, most = std::numeric_limits<int>::min();
+  for (int columns : {4, 2, 1}) {
+    const int rows = kPlots / columns;
+    const int least =
+        std::min(area.width() / columns - kAxesWidth, area.height() / rows - kAxesHeight);
+    if (least > most) best = columns, most = least;
+  }
+  return best;
+}
+
+int ForceFigure::leastHeightFor(int columns) {
+  return kPlots / std::max(1, columns) * kLeastPlotHeight;
 }
 
 void ForceFigure::clear() {
@@ -127,7 +144,11 @@ void ForceFigure::build(const ForceSamples& s, const QString& crankLabel, const 
   samples_ = &s;
   crankLabel_ = crankLabel;
   crankBrief_ = crankBrief;
-  columns_ = columnsFor(layoutWidth_ > 0 ? layoutWidth_ : plot_->width());
+  const QSize size = layoutSize_.isEmpty() ? plot_->size() : layoutSize_;
+  columns_ = columnsFor(size);
+  // A legend beside its plot where the cell has the room; in its emptiest corner where the
+  // column beside would leave the curves too narrow to read their crank angles.
+  const bool beside = size.width() / columns_ >= 320;
   layOut(crankLabel, joint, stopNote);
   curves_[TorqueCurve] =
       addCurve(rects_[Torque], s.crankDeg, s.driverTorqueNm, forceColours::kX, "torque");
@@ -138,10 +159,11 @@ void ForceFigure::build(const ForceSamples& s, const QString& crankLabel, const 
   addReaction(s, joint);
   polar_ = addPolarCurve(rects_[Polar], s.shakingN, forceColours::kPolar, "shaking force");
   fitRanges(s, sizeMm);
-  addLegend(rects_[Shaking], {curves_[ShakingX], curves_[ShakingY]}, cells_[Shaking]);
+  addLegend(rects_[Shaking], {curves_[ShakingX], curves_[ShakingY]},
+            beside ? cells_[Shaking] : nullptr);
   if (curves_[ReactionX])
     addLegend(rects_[Reaction], {curves_[ReactionX], curves_[ReactionY], curves_[ReactionNorm]},
-              cells_[Reaction]);
+              beside ? cells_[Reaction] : nullptr);
   addCursor();
   setCursor(cursorDeg_);
   replot();
@@ -237,6 +259,16 @@ void ForceFigure::setCursorVisible(bool on) {
 
 void ForceFigure::replot() {
   plot_->replot();
+}
+
+// The polar diagram's axes as wide as they are high, in the middle of its cell: on equal scales
+// in a cell much wider than high it was a flat strip with its curve in the middle. Set on each
+// layout, after it (the next layout sets the cell's rect again).
+void ForceFigure::squarePolar() {
+  QCPAxisRect* polar = rects_[Polar];
+  const int extra = polar->rect().width() - polar->rect().height();
+  if (extra <= 0) return;
+  polar->setOuterRect(polar->outerRect().adjusted(extra / 2, 0, -(extra - extra / 2), 0));
 }
 
 // Four plots in a row are narrower than "armshaft angle [deg], counter-clockwise": side by

@@ -2,10 +2,12 @@
 // fy and a joint's reaction against the crank angle over one turn, and the polar diagram of the
 // shaking force (fy against fx, equal scales); a cursor at the pose on a layer of its own (a
 // line on each crank-angle plot, the pose's point and force vector on the polar diagram).
-// Laid out in one row of four plots in a wide dock, two by two in a narrower one.
+// Laid out as one row of four plots in a wide low dock, two by two in a squarer one, one column
+// in a tall narrow one (columnsFor).
 #pragma once
 
 #include <QPointF>
+#include <QSize>
 #include <QString>
 #include <vector>
 
@@ -48,11 +50,17 @@ class ForceFigure {
   void setCursor(double deg);
   double cursor() const { return cursorDeg_; }
   void setCursorVisible(bool on);
-  // Plots across the figure for a plot `width` pixels wide: 4 or 2.
-  static int columnsFor(int width);
+  // Plots across a figure of `area` pixels: 4 in a row, 2 by 2 or 4 in a column, whichever
+  // gives each plot the largest least side (a short wide dock: a row; a square one: 2 by 2),
+  // so that the curves get a height to read and the polar diagram is drawn near square.
+  static int columnsFor(QSize area);
   int columns() const { return columns_; }
-  // Lay the next builds out for this width rather than the plot's (an export); 0: the plot's.
-  void setLayoutWidth(int width) { layoutWidth_ = width; }
+  // The least height the figure needs with `columns` plots across (rows of plots of
+  // kLeastPlotHeight): below it, the panel scrolls rather than squash the plots flat.
+  static int leastHeightFor(int columns);
+  static constexpr int kLeastPlotHeight = 170;  // a title, 100 px of curves, the axes' text
+  // Lay the next builds out for this size rather than the plot's (an export); empty: the plot's.
+  void setLayoutSize(QSize size) { layoutSize_ = size; }
 
   // The crank angle under a pixel of a crank-angle plot (NaN elsewhere), the plot in `plot`.
   double crankAt(const QPointF& pixel, int* plot = nullptr) const;
@@ -73,12 +81,14 @@ class ForceFigure {
   void addReaction(const ForceSamples& s, const JointChoice& joint);
   void fitRanges(const ForceSamples& s, double sizeMm);
   void fitCrankLabels();
+  void squarePolar();
   void addCursor();
 
   QCustomPlot* plot_;
   QCPLayer* cursorLayer_;
   const ForceSamples* samples_ = nullptr;
-  int columns_ = 4, layoutWidth_ = 0;
+  int columns_ = 4;
+  QSize layoutSize_;
   double cursorDeg_ = 0;
   QString crankLabel_, crankBrief_;
   QCPAxisRect* rects_[kPlots] = {};

@@ -47,7 +47,7 @@ double peakOf(const std::vector<double>& v) {
 double peakOf(const std::vector<Vec2>& v) {
   double p = 0;
   for (const Vec2& x : v)
-    if (x.allFinite()) p = std::max(p, x.norm());
+    if (x.allFinite()) p = std::max(p, std::hypot(x.x(), x.y()));  // norm() overflows past 1e154
   return p;
 }
 

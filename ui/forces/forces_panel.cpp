@@ -7,6 +7,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QStackedWidget>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -93,7 +94,14 @@ void ForcesPanel::buildWidgets() {
   sentence_->setAlignment(Qt::AlignCenter);
   sentence_->setMargin(16);
   sentence_->setStyleSheet("color: #962020");
-  stack_->addWidget(plot_);
+  // In a low dock the plots keep a height to read (ForceFigure::leastHeightFor) and the dock
+  // scrolls: at 1280 x 800 they were 40 px high, the polar diagram a flat strip.
+  scroll_ = new QScrollArea;
+  scroll_->setWidget(plot_);
+  scroll_->setWidgetResizable(true);
+  scroll_->setFrameShape(QFrame::NoFrame);
+  scroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  stack_->addWidget(scroll_);
   stack_->addWidget(sentence_);
   top->addWidget(stack_, 1);
 
@@ -150,9 +158,16 @@ void ForcesPanel::showEvent(QShowEvent* e) {
 
 void ForcesPanel::resizeEvent(QResizeEvent* e) {
   QWidget::resizeEvent(e);
-  // One row of plots in a wide dock, two in a narrow one: lay them out again when that changes.
-  if (!stale_ && samples() && ForceFigure::columnsFor(plot_->width()) != figure_->columns())
+  // A row of plots in a wide low dock, two by two in a squarer one: laid out again when that
+  // changes.
+  if (!stale_ && samples() && ForceFigure::columnsFor(room()) != figure_->columns())
     rebuildFigure();
+}
+
+QSize ForcesPanel::room() const {
+  // The scroll area's, less the panel's other rows once it is laid out; the panel's before.
+  const QSize view = scroll_->maximumViewportSize();
+  return view.isValid() && view.height() > 0 ? view : size();
 }
 
 void ForcesPanel::ensureComputed() {
@@ -188,8 +203,20 @@ void ForcesPanel::recompute() {
     for (const std::vector<Vec2>& r : samples_.reactionN)
       forceScale_ = std::max(forceScale_, peakOf(r));
     torqueScale_ = std::max(peakOf(samples_.driverTorqueNm), forceScale_ * k.size() * 1e-3);
+    if (why_.isEmpty()) why_ = beyondThePlots();
   }
   rebuildFigure();
+}
+
+QString ForcesPanel::beyondThePlots() const {
+  // QCustomPlot takes no axis range past 1e250 (QCPRange::maxRange): forces of a load of 1e300
+  // N filled the plots solid, and a scale that overflowed made every value read 0. Such forces
+  // are said in numbers instead; the force table has each of them.
+  const double kDrawable = QCPRange::maxRange * 1e-3;
+  if (forceScale_ <= kDrawable && peakOf(samples_.driverTorqueNm) <= kDrawable) return {};
+  return tr("The forces reach %1 N and the driver's torque %2 N m: too large to plot (beyond "
+            "%3); File > Export > Force Table writes every value.")
+      .arg(number(forceScale_), number(peakOf(samples_.driverTorqueNm)), number(kDrawable));
 }
 
 const ForceSamples* ForcesPanel::samples() const {
@@ -209,7 +236,7 @@ void ForcesPanel::rebuildFigure() {
     values_->clear();
     return;
   }
-  stack_->setCurrentWidget(plot_);
+  stack_->setCurrentWidget(scroll_);
   const Mechanism& m = doc_->design();
   ForceFigure::JointChoice choice;
   choice.index = joint();
@@ -228,8 +255,11 @@ void ForcesPanel::rebuildFigure() {
     stop = tr("Ends at %1°: %2")
                .arg(samples_.crankDeg.back(), 0, 'f', 1)
                .arg(QString::fromStdString(samples_.status.message));
+  figure_->setLayoutSize(exportSize_.isEmpty() ? room() : exportSize_);
   figure_->build(samples_, crankAxisLabel(m), briefCrankAxisLabel(m), choice, stop,
                  doc_->kinematics().size());
+  if (exportSize_.isEmpty())
+    plot_->setMinimumHeight(ForceFigure::leastHeightFor(figure_->columns()));
   updateCursor();
 }
 
@@ -249,11 +279,11 @@ void ForcesPanel::updateCursor() {
     return;
   }
   auto force = [this](double v) { return number(cleaned(v, forceScale_)); };
-  QString text =
-      tr("At %1°: torque %2 N m; shaking force (%3, %4) N, |F| %5 N")
-          .arg(c, 0, 'f', 1)
-          .arg(number(cleaned(f.driverTorqueNm, torqueScale_)), force(f.shakingForceN.x()),
-               force(f.shakingForceN.y()), force(f.shakingForceN.norm()));
+  QString text = tr("At %1°: torque %2 N m; shaking force (%3, %4) N, |F| %5 N")
+                     .arg(c, 0, 'f', 1)
+                     .arg(number(cleaned(f.driverTorqueNm, torqueScale_)),
+                          force(f.shakingForceN.x()), force(f.shakingForceN.y()),
+                          force(std::hypot(f.shakingForceN.x(), f.shakingForceN.y())));
   const int j = joint();
   const bool undetermined =
       j >= 0 && j < static_cast<int>(f.joints.size()) && !std::isfinite(f.joints[j].force.x());
@@ -288,16 +318,16 @@ bool ForcesPanel::exportFigure(const QString& path, QSize size, QString* error) 
     return false;
   }
   // Laid out for the figure's size (one row of plots in a wide one), then back as shown.
-  const bool relayout = ForceFigure::columnsFor(size.width()) != figure_->columns();
+  const bool relayout = ForceFigure::columnsFor(size) != figure_->columns();
   if (relayout) {
-    figure_->setLayoutWidth(size.width());
+    exportSize_ = size;
     rebuildFigure();
   }
   figure_->setCursorVisible(false);
   const bool ok = exportPlot(plot_, path, size, error);
   figure_->setCursorVisible(true);
   if (relayout) {
-    figure_->setLayoutWidth(0);
+    exportSize_ = QSize();
     rebuildFigure();
   }
   return ok;

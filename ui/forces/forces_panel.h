@@ -27,6 +27,7 @@ class QComboBox;
 class QCustomPlot;
 class QLabel;
 class QMouseEvent;
+class QScrollArea;
 class QStackedWidget;
 
 namespace linkage::ui {
@@ -86,6 +87,10 @@ class ForcesPanel : public QWidget {
   void recompute();
   void rebuildFigure();
   QString whyNoForces() const;
+  // The sentence for forces too large for the plots' axes, "" when they can be drawn.
+  QString beyondThePlots() const;
+  // The room the figure has: the scroll area's viewport without scroll bars.
+  QSize room() const;
   void updateCursor();
   void mouseOnPlot(QMouseEvent* e, bool press);
   void ensureComputed();
@@ -102,7 +107,9 @@ class ForcesPanel : public QWidget {
   QComboBox* joints_;
   QLabel *values_, *sentence_;
   QStackedWidget* stack_;
+  QScrollArea* scroll_;  // the plot, scrolled in a dock too low for it
   QCustomPlot* plot_;
+  QSize exportSize_;  // while a figure is exported: the size it is laid out for
   std::unique_ptr<ForceFigure> figure_;
 };
 

@@ -40,6 +40,9 @@ class PlotControls : public QWidget {
   // returns whether r changed. `k`: m solved (nullptr when it is not), to leave out the points
   // the driver does not move.
   bool offerTargets(const Mechanism* m, const Kinematics* k, CurveRequest& r);
+  // The target follows the design again, as if the user had not chosen one (another design:
+  // its own default, not a point of the last one's name).
+  void followDesign() { autoTarget_ = true; }
   // The points of the other windows' mechanisms to compare with ("body.point"), after the
   // first choice, the point of the same name; `current` chosen ("" for the same name).
   void offerComparisonTargets(const QStringList& labels, const QString& current);

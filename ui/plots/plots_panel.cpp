@@ -144,7 +144,10 @@ void PlotsPanel::setDocument(Document* doc) {
   delete docContext_;
   docContext_ = new QObject(this);
   doc_ = doc;
+  controls_->followDesign();
   if (doc) {
+    // A design opened in its place plots its own point (issue 26: the last one's, by name).
+    connect(doc, &Document::contentsReplaced, docContext_, [this] { controls_->followDesign(); });
     connect(doc, &Document::designChanged, docContext_, [this, doc] {
       offerTargets();
       markStale(doc);

@@ -4,6 +4,7 @@
 #include <QRegularExpression>
 
 #include "document/document.h"
+#include "document/shown_numbers.h"
 #include "linkage/io/numbers.h"
 #include "properties/mass_dialog.h"
 #include "properties/properties_panel.h"
@@ -22,8 +23,11 @@ std::optional<Vec2> parsePair(const QString& text) {
   return Vec2(*x, *y);
 }
 
+// "x, y" rounded for people; a component that is rounding next to the other (the x of a
+// counterweight placed straight below its pivot, -2.8e-15) reads 0.
 QString pairText(const Vec2& v) {
-  return exactText(v.x()) + QStringLiteral(", ") + exactText(v.y());
+  const double scale = std::hypot(v.x(), v.y());
+  return shownText(cleaned(v.x(), scale)) + QStringLiteral(", ") + shownText(cleaned(v.y(), scale));
 }
 
 // Where a massless body's mass would start: the middle of its points.
@@ -58,10 +62,17 @@ QString loadsShape(const Mechanism& m, BodyId body, PointId point) {
 
 void PropertiesPanel::fillMass(BodyId id) {
   auto mass = [this, id]() -> std::optional<Mass> { return doc_->design().body(id)->mass; };
+  // The file reader's bounds (linkage/model.h), said with the link's name.
+  auto refused = [this, id](const std::string& why, QString* out) {
+    *out = tr("on %1, %2")
+               .arg(QString::fromStdString(doc_->design().body(id)->name),
+                    QString::fromStdString(why));
+    return !why.empty();
+  };
   addNumber(
       tr("Mass"), [mass] { return mass() ? mass()->kg : 0.0; },
-      [this, id](double v, QString* why) {
-        if (!(v >= 0) || !std::isfinite(v)) return *why = tr("a mass must be 0 or more"), false;
+      [this, id, refused](double v, QString* why) {
+        if (refused(massRefusal(v), why)) return false;
         return change(
             tr("Mass"), [&](Mechanism& m, QString*) { return massOf(m, id).kg = v, true; }, why);
       },
@@ -79,8 +90,8 @@ void PropertiesPanel::fillMass(BodyId id) {
   field(tr("Centre of mass"))->setToolTip(tr("x, y in mm, in the drawing's coordinates"));
   addNumber(
       tr("Moment of inertia"), [mass] { return mass() ? mass()->jKgMm2 : 0.0; },
-      [this, id](double v, QString* why) {
-        if (!(v >= 0) || !std::isfinite(v)) return *why = tr("must be 0 or more"), false;
+      [this, id, refused](double v, QString* why) {
+        if (refused(inertiaRefusal(v), why)) return false;
         return change(
             tr("Moment of inertia"),
             [&](Mechanism& m, QString*) { return massOf(m, id).jKgMm2 = v, true; }, why);
@@ -88,10 +99,13 @@ void PropertiesPanel::fillMass(BodyId id) {
       tr("kg\u00b7mm\u00b2"));
   addButton(QString(), tr("Estimate from Outline\u2026"), [this, id] { estimateMass(id); });
   addInfo(tr("Counterweights"), [mass] {
-    if (!mass() || mass()->counterweights.empty()) return tr("none");
+    // A copy held while it is read: a loop over mass()->counterweights read the temporary's
+    // vector after the temporary was gone (the "4.941e-321 g" of issue 26).
+    const std::optional<Mass> held = mass();
+    if (!held || held->counterweights.empty()) return tr("none");
     QStringList parts;
-    for (const PointMass& c : mass()->counterweights)
-      parts << tr("%1 g at %2").arg(c.kg * 1000, 0, 'g', 4).arg(pairText(c.at));
+    for (const PointMass& c : held->counterweights)
+      parts << tr("%1 kg at (%2)").arg(shownText(c.kg), pairText(c.at));
     return parts.join(QStringLiteral("; "));
   });
 }
@@ -104,7 +118,7 @@ void PropertiesPanel::estimateMass(BodyId id) {
   const QString name = QString::fromStdString(doc_->design().body(id)->name);
   change(
       tr("Estimate the mass of %1").arg(name),
-      [&](Mechanism& m, QString*) {
+      [&](Mechanism& m, QString* refusal) {
         Mass& to = massOf(m, id);
         // The counterweights a balance added stay: they are on the body, not in its outline.
         Mass next = e;
@@ -118,10 +132,17 @@ void PropertiesPanel::estimateMass(BodyId id) {
           next.com = com;
         }
         next.counterweights = to.counterweights;
+        // An outline of a ship's size is no link's: refused as the field and the file refuse it.
+        for (const std::string& no : {massRefusal(next.kg), inertiaRefusal(next.jKgMm2)})
+          if (!no.empty())
+            return *refusal =
+                       tr("Estimate from Outline: on %1, %2").arg(name, QString::fromStdString(no)),
+                   false;
         to = next;
         return true;
       },
       &why);
+  if (!why.isEmpty()) emit message(why, true);
 }
 
 void PropertiesPanel::fillLoads(BodyId body, PointId point) {
@@ -160,7 +181,7 @@ void PropertiesPanel::fillLoad(LoadId id, int number) {
       [load] {
         const Load l = load();
         if (!l.fromDeg) return tr("always");
-        return tr("%1 to %2\u00b0").arg(exactText(*l.fromDeg), exactText(*l.toDeg));
+        return tr("%1 to %2\u00b0").arg(shownText(*l.fromDeg), shownText(*l.toDeg));
       },
       [edit](const QString& t, QString* why) {
         const QString text = QString(t).remove(QChar(0x00b0)).trimmed();

@@ -11,6 +11,7 @@
 
 #include "document/commands.h"
 #include "document/document.h"
+#include "document/shown_numbers.h"
 #include "elements/element_ui.h"
 #include "linkage/edits.h"
 #include "linkage/elements.h"
@@ -114,7 +115,7 @@ void PropertiesPanel::fillDriver() {
     const Driver& d = *doc_->design().driver;
     if (d.startDeg == 0) return tr("the drawing as it is");
     return tr("the drawing turned %1\u00b0 %2")
-        .arg(exactText(d.startDeg))
+        .arg(shownText(d.startDeg))
         .arg(d.direction == Direction::Cw ? tr("clockwise") : tr("counter-clockwise"));
   });
 }
@@ -330,7 +331,7 @@ void PropertiesPanel::fillPolar(PointId id) {
 void PropertiesPanel::fillJoint(JointId id) {
   const Mechanism& m0 = doc_->design();
   title_->setText(
-      tr("<b>Joint</b> %1").arg(QString::fromStdString(jointLabel(m0, id)).toHtmlEscaped()));
+      tr("<b>Joint</b> %1").arg(QString::fromStdString(jointName(m0, id)).toHtmlEscaped()));
   elementUi(m0.joint(id)->type).form(*this, id);
 }
 

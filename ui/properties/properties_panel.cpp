@@ -12,24 +12,13 @@
 
 #include "document/commands.h"
 #include "document/document.h"
+#include "document/shown_numbers.h"
 #include "linkage/edits.h"
 #include "linkage/io/numbers.h"
 #include "properties/number_keys.h"
 #include "tools/selection.h"
 
 namespace linkage::ui {
-
-QString exactText(double v) {
-  // Whole digits are never dropped into an exponent ("240", not "2.4e+02").
-  const int whole = std::abs(v) >= 1 && std::abs(v) < 1e15
-                        ? static_cast<int>(std::floor(std::log10(std::abs(v)))) + 1
-                        : 1;
-  for (int digits = whole; digits <= 17; ++digits) {
-    const std::string s = formatNumber(v, digits);
-    if (parseNumber(s) == v) return QString::fromStdString(s);
-  }
-  return QString::fromStdString(formatNumber(v, 17));
-}
 
 namespace {
 
@@ -268,10 +257,12 @@ void PropertiesPanel::addNumber(const QString& label, std::function<double()> va
   const QString full = unit.isEmpty() ? label : QStringLiteral("%1 [%2]").arg(label, unit);
   addText(
       // Out of double's range (a distance between points dragged to 1e300): no number to show.
+      // A field shows the value rounded for people; left as shown, it commits nothing (addText),
+      // so the model keeps every digit.
       full,
       [value] {
         const double v = value();
-        return std::isfinite(v) ? exactText(v) : QStringLiteral("\u2014");
+        return std::isfinite(v) ? shownText(v) : QStringLiteral("\u2014");
       },
       [commit](const QString& text, QString* why) {
         const std::optional<double> v = parseNumber(text.toStdString());

@@ -3,8 +3,9 @@
 // moves its second point), a triangle plate's three sides, a slot's ends, a joint's type, the
 // driver's rpm, direction and start angle, whether a point is an output; the mechanism's own
 // name and driver when nothing is selected. Millimetres and degrees, in the drawing's
-// coordinates (the sketch, at crank angle -start), typed values taken exactly (never snapped).
-// Every change is one undo step.
+// coordinates (the sketch, at crank angle -start), typed values taken exactly (never snapped)
+// and shown as typed; values of arithmetic are shown rounded for people (shownText), the model
+// and the file keeping every digit. Every change is one undo step.
 #pragma once
 
 #include <QPointer>
@@ -110,8 +111,5 @@ class PropertiesPanel : public QWidget {
 // What of the loads and counterweights a form's rows depend on (rows are made anew when it
 // changes): the loads on `body` (torques) or at `point`, and the body's counterweights.
 QString loadsShape(const Mechanism& m, BodyId body, PointId point);
-
-// The shortest decimal text that reads back as exactly v ("0.1", not "0.10000000000000001").
-QString exactText(double v);
 
 }  // namespace linkage::ui

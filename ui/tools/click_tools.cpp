@@ -60,7 +60,7 @@ void DriverTool::press(const CanvasMouse& e) {
     say(QString::fromStdString(why), true);
     return;
   }
-  const QString what = QString::fromStdString(jointLabel(m, id));
+  const QString what = QString::fromStdString(jointName(m, id));
   commitEdit(doc, tr("Driver at %1").arg(what), std::move(m));
   // Only a design the solver takes is driven by it; else the red line above says why not.
   if (doc->solved())

@@ -135,8 +135,8 @@ Snap snapAt(const CanvasScene& s, const Pick& pick, const Vec2& world, double px
 
 QString describePick(const Mechanism& m, const Pick& p) {
   if (p.point) return QString::fromStdString(m.pointLabel(p.point));
-  if (p.joint) return QString::fromStdString(jointLabel(m, p.joint));
-  if (p.coupling && p.onCouplingLines) return QString::fromStdString(jointLabel(m, p.coupling));
+  if (p.joint) return QString::fromStdString(jointName(m, p.joint));
+  if (p.coupling && p.onCouplingLines) return QString::fromStdString(jointName(m, p.coupling));
   if (p.slot) return QStringLiteral("slot %1").arg(QString::fromStdString(m.slotLabel(p.slot)));
   if (const Body* b = m.body(p.body))
     return b->ground ? QStringLiteral("the ground")

@@ -45,7 +45,7 @@ struct Snap {
 // else on the grid (`gridStep` mm, 0 for off), else where the cursor is.
 Snap snapAt(const CanvasScene& s, const Pick& pick, const Vec2& world, double px, double gridStep);
 
-// "coupler.B", "slot disk.B", "joints[2] (pin ...)", "body coupler": for status messages.
+// "coupler.B", "slot disk.B", "pin coupler.A - rocker.A", "body coupler": for status messages.
 QString describePick(const Mechanism& m, const Pick& p);
 
 }  // namespace linkage::ui

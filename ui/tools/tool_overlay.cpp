@@ -5,6 +5,7 @@
 
 #include "canvas/canvas_scene.h"
 #include "canvas/gear_item.h"
+#include "linkage/guide.h"
 #include "tools/selection.h"
 
 namespace linkage::ui {
@@ -106,11 +107,15 @@ void ToolOverlay::paintSelection(QPainter* p) const {
         p->drawRect(QRectF(toQt(at) - QPointF(10 * u, 10 * u), QSizeF(20 * u, 20 * u)));
     }
   for (SlotId s : selection_->slots_)
-    if (const Slot* sl = m.slot(s)) {
-      const Transform T = scene_->poseOf(sl->body);
-      p->drawPolygon(cutToDevice(
-          capsule(T * sl->p0, T * sl->p1, (CanvasStyle::channelWidth / 2 + 3) * u, u), p));
-    }
+    if (const Slot* sl = m.slot(s))
+      p->drawPolygon(cutToDevice(slotOutline(*sl, scene_->poseOf(sl->body), u), p));
+}
+
+QPolygonF slotOutline(const Slot& s, const Transform& pose, double px, double margin) {
+  const double r = (CanvasStyle::channelWidth / 2 + margin) * px;
+  // Around the channel as BodyItem draws it: an arc's outline was once its chord's capsule.
+  if (const std::optional<Guide> g = guideOf(s)) return toQt(pose).map(channel(*g, r, px));
+  return capsule(pose * s.p0, pose * s.p1, r, px);
 }
 
 void ToolOverlay::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {

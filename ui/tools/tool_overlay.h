@@ -13,6 +13,10 @@ namespace linkage::ui {
 class CanvasScene;
 class Selection;
 
+// The outline a selected slot is drawn with, in scene coordinates, its body at `pose`: around
+// its curve (an arc slot's along the arc, not its chord), `margin` px wider than its channel.
+QPolygonF slotOutline(const Slot& s, const Transform& pose, double px, double margin = 3);
+
 class ToolOverlay : public CanvasItem {
  public:
   ToolOverlay(const CanvasContext* ctx, const CanvasScene* scene, const Selection* selection);

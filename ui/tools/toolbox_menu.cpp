@@ -95,7 +95,7 @@ void Toolbox::bodyMenu(QMenu& menu, const Body& body, const Vec2& at) {
 void Toolbox::jointMenu(QMenu& menu, const Joint& joint) {
   Document* doc = ctx_.doc;
   const JointId id = joint.id;
-  const QString label = QString::fromStdString(jointLabel(doc->design(), id));
+  const QString label = QString::fromStdString(jointName(doc->design(), id));
   menu.addSection(label);
   elementUi(joint.type).jointMenu(*this, menu, joint);
   menu.addAction(tr("Delete Joint"), this, [doc, id, label] {

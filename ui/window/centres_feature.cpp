@@ -16,7 +16,8 @@ namespace linkage::ui {
 
 CentresFeature::CentresFeature(MainWindow& w, WindowLayout& layout) : WindowFeature(&w) {
   CanvasScene* scene = w.scene();
-  show = makeToggle(&w, "showCentres", tr("&Instant Centres"), QKeySequence(tr("I")),
+  // Not "Instant Centres": the dock of that name is beside it in the View menu.
+  show = makeToggle(&w, "showCentres", tr("&Instant Centres on Canvas"), QKeySequence(tr("I")),
                     tr("Show every instant centre; hover one for its Kennedy lines"));
   connect(show, &QAction::toggled, scene, &CanvasScene::setCentresVisible);
   panel_ = new CentresPanel;

@@ -47,7 +47,8 @@ void ForcesFeature::makeDock() {
 
 void ForcesFeature::makeActions() {
   show =
-      makeToggle(&w_, "showForces", tr("&Forces"), QKeySequence(tr("Shift+F")),
+      // Not "Forces": the dock of force plots (Shift+G) is; these are the arrows on the canvas.
+      makeToggle(&w_, "showForces", tr("Joint &Reactions"), QKeySequence(tr("Shift+F")),
                  tr("Show each joint's reaction at this angle, on one scale for the whole turn"));
   connect(show, &QAction::toggled, w_.scene(), &CanvasScene::setForcesVisible);
   balance = makeAction(&w_, "balance", tr("&Balance..."), QKeySequence(),

@@ -49,7 +49,7 @@ QString plain(const QString& rich) {
   return oneLine(d.toPlainText());
 }
 
-// What is selected, by the names the messages use: "coupler.P; joints[2] (gear ...)".
+// What is selected, by the names the messages use: "coupler.P; gear pinion.I - gear.O2".
 QString selectionText(MainWindow& w) {
   const Mechanism& m = w.document()->design();
   const Selection& s = *w.tools().selection();
@@ -57,7 +57,7 @@ QString selectionText(MainWindow& w) {
   for (BodyId b : s.bodies)
     if (const Body* body = m.body(b)) names << QString::fromStdString(body->name);
   for (PointId p : s.points) names << QString::fromStdString(m.pointLabel(p));
-  for (JointId j : s.joints) names << QString::fromStdString(jointLabel(m, j));
+  for (JointId j : s.joints) names << QString::fromStdString(jointName(m, j));
   for (SlotId sl : s.slots_) names << QString::fromStdString(m.slotLabel(sl));
   return names.join(QStringLiteral("; "));
 }

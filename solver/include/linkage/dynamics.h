@@ -48,12 +48,14 @@ class ForceSolver {
   // kinematics hold nothing; Underconstrained where the driver leaves freedoms (a motion not
   // determined has no forces). Names the joints whose reactions are not determined.
   Status prepare(const Kinematics& k);
-  // At k's pose (k holds the mechanism prepare() saw): NaN everywhere at a singular position.
+  // At k's pose (k holds the mechanism prepare() saw): NaN everywhere at a singular position;
+  // BadModel, and NaN everywhere, where the forces overflow (past 1e308).
   const Forces& compute(const Kinematics& k);
   const Forces& result() const { return out_; }
 
  private:
   friend void shaking(const Kinematics& k, Vec2& forceN, double& momentNm);
+  const Forces& overflowed(Forces& out);
   struct Impl;
   struct ImplDeleter {
     void operator()(Impl* p) const;
@@ -61,6 +63,10 @@ class ForceSolver {
   std::unique_ptr<Impl, ImplDeleter> d_;
   Forces out_;
 };
+
+// Whether every force, torque and force's magnitude of f is a finite number (the undetermined
+// reactions, NaN by design, aside). ForceSolver::compute() says BadModel where they are not.
+bool finiteForces(const Forces& f);
 
 // One-off: prepared and computed at k's pose.
 Forces computeForces(const Kinematics& k);

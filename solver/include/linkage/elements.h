@@ -131,7 +131,11 @@ inline const ElementKind& kindOf(const Joint& j) {
   return elementKind(j.type);
 }
 
-// A short description for messages, e.g. `joints[2] (slider slider4.E in disk.B)`.
+// A joint as a person sees it, for messages about the mechanism (the solver's, the editor's):
+// its kind and what it joins, "pin coupler.A - rocker.A", "slider slider4.E in disk.B".
+std::string jointName(const Mechanism& m, JointId id);
+// The same with its place in the file, for what names the file's entries (the command line's
+// listings): `joints[2] (slider slider4.E in disk.B)`.
 std::string jointLabel(const Mechanism& m, JointId id);
 // Checks every joint's kind-specific rules (check()) in file order: "" when all hold, else the
 // first problem as `joints[3].ratio: ...`, with the joint's index in `index`.

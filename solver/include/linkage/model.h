@@ -59,6 +59,17 @@ struct Mass {
   bool operator==(const Mass&) const = default;
 };
 
+// The largest mass (kg) and moment of inertia (kg mm^2) a body or a counterweight may have: no
+// link of a machine weighs a thousand tonnes, and the forces of a mass far beyond it are no
+// machine's (1e300 kg on the slider-crank of grams: forces of 1e303 N with noise of 1e287 N
+// where 0 is meant, the others' 0.1 N lost; 1e308 kg: they overflow).
+inline constexpr double kMaxMassKg = 1e6;
+inline constexpr double kMaxInertiaKgMm2 = 1e15;  // a thousand tonnes 31.6 m from its centre
+// Why a value is no mass (no moment of inertia) a body can have, "" when it is one: not a
+// number, negative, or beyond the largest. The file reader and the editor's fields both say it.
+std::string massRefusal(double kg);
+std::string inertiaRefusal(double kgMm2);
+
 struct Body {
   BodyId id;
   std::string name;
