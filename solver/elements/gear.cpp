@@ -21,6 +21,7 @@
 
 #include "elements/frames.h"
 #include "elements/rows.h"
+#include "linkage/gear.h"
 
 namespace linkage {
 
@@ -28,10 +29,10 @@ namespace {
 
 constexpr const char* kForceColumns[] = {"fx_N", "fy_N"};
 
-constexpr FieldSpec kFields[] = {{JointField::A, true},
-                                 {JointField::B, true},
-                                 {JointField::Ratio, true},
-                                 {JointField::Carrier, false}};
+constexpr FieldSpec kFields[] = {{"a", FieldType::Point, 0, true},
+                                 {"b", FieldType::Point, 1, true},
+                                 {"ratio", FieldType::Number, 0, true},
+                                 {"carrier", FieldType::Body, 0, false}};
 
 BodyId carrierOf(const Mechanism& m, const Joint& j) {
   if (j.carrier) return j.carrier;
@@ -63,20 +64,21 @@ std::string quoted(const std::string& s) {
   return q;
 }
 
-std::string check(const Mechanism& m, const Joint& j, JointField& where) {
-  where = JointField::Ratio;
-  if (!std::isfinite(j.ratio) || j.ratio == 0)
+std::string check(const Mechanism& m, const Joint& j, const char*& where) {
+  where = "ratio";
+  const double ratio = gearRatio(j);
+  if (!std::isfinite(ratio) || ratio == 0)
     return "expected a finite number other than 0 (the speed of b relative to a)";
-  if (std::abs(j.ratio) > 1e6 || std::abs(j.ratio) < 1e-6)
+  if (std::abs(ratio) > 1e6 || std::abs(ratio) < 1e-6)
     return "a ratio beyond 1e6 (or below 1e-6) in size is no gear: the equations would drown "
            "in rounding";
   const Point *a = m.point(j.a), *b = m.point(j.b);
   const BodyId c = carrierOf(m, j);
   const Body* cb = m.body(c);
   const std::string carrier = cb ? quoted(cb->name) : "(none)";
-  where = JointField::B;
+  where = "b";
   if (a->body == b->body) return "a and b are on one body: a gear couples two bodies";
-  for (const auto& [p, field] : {std::pair{a, JointField::A}, std::pair{b, JointField::B}}) {
+  for (const auto& [p, field] : {std::pair{a, "a"}, std::pair{b, "b"}}) {
     where = field;
     if (p->body == c)
       return quoted(m.pointLabel(p->id)) + " is on the carrier " + carrier +
@@ -104,8 +106,8 @@ bool compile(const Mechanism& m, const Joint& j, const Frames& f, std::vector<Ro
   r.body[1] = f.point(j.a)->body;
   r.body[2] = c;
   r.c[0] = 1;
-  r.c[1] = -j.ratio;
-  r.c[2] = j.ratio - 1;
+  r.c[1] = -gearRatio(j);
+  r.c[2] = gearRatio(j) - 1;
   rows.push_back(r);
   return true;
 }
@@ -118,7 +120,7 @@ CentreData centre(const Mechanism& m, const Joint& j) {
   c.bodies[1] = c.pBody[1] = b->body;
   c.p[0] = a->pos;
   c.p[1] = b->pos;
-  c.ratio = j.ratio;
+  c.ratio = gearRatio(j);
   return c;
 }
 
@@ -128,9 +130,9 @@ void symbol(const Mechanism& m, const Joint& j, JointSymbol& s) {
   s.bodies[1] = b ? b->body : BodyId{};
   s.carrier = carrierOf(m, j);
   if (!a || !b) return;
-  const double d = (a->pos - b->pos).norm(), r = std::abs(j.ratio);
+  const double d = (a->pos - b->pos).norm(), r = std::abs(gearRatio(j));
   if (d > 0) s.direction = (b->pos - a->pos) / d;
-  s.belt = j.ratio > 0;
+  s.belt = gearRatio(j) > 0;
   if (!s.belt) {
     s.radius[0] = r * d / (1 + r);
     s.radius[1] = d / (1 + r);
@@ -177,7 +179,7 @@ void react(const Mechanism& m, int index, const Pose& pose, std::vector<JointRea
   const double d = (B - A).norm();
   if (!(d > 0)) return;  // coaxial: a couple is all there is
   const Vec2 u = (B - A) / d;
-  if (j.ratio > 0) {
+  if (gearRatio(j) > 0) {
     JointSymbol s;
     symbol(m, j, s);
     // The run: tangent to both pulleys on the same side, n its normal from the centres.
@@ -187,7 +189,7 @@ void react(const Mechanism& m, int index, const Pose& pose, std::vector<JointRea
     const Vec2 run = (B + s.radius[1] * n - r.at).normalized();
     r.force = M / cross(r.at - A, run) * run;  // cross(at - A, F) = M
   } else {
-    const double toPitch = std::abs(j.ratio) * d / (1 + std::abs(j.ratio));
+    const double toPitch = std::abs(gearRatio(j)) * d / (1 + std::abs(gearRatio(j)));
     r.at = A + toPitch * u;
     r.force = M / toPitch * perp(u);
   }
@@ -204,21 +206,20 @@ void react(const Mechanism& m, int index, const Pose& pose, std::vector<JointRea
 
 }  // namespace
 
-const ElementKind& gearElement() {
-  static const ElementKind kind{JointType::Gear,
-                                "gear",
-                                "couples the bodies of points \"a\" and \"b\"",
-                                Role::Coupling,
-                                1,
-                                kFields,
-                                check,
-                                compile,
-                                centre,
-                                symbol,
-                                place,
-                                kForceColumns,
-                                react};
-  return kind;
+ElementKind gearElement(JointType t) {
+  return {t,
+          "gear",
+          "couples the bodies of points \"a\" and \"b\"",
+          Role::Coupling,
+          1,
+          kFields,
+          check,
+          compile,
+          centre,
+          symbol,
+          place,
+          kForceColumns,
+          react};
 }
 
 }  // namespace linkage

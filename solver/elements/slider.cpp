@@ -77,21 +77,20 @@ CentreData centre(const Mechanism& m, const Joint& j) {
 
 }  // namespace
 
-const ElementKind& sliderElement() {
-  static const ElementKind kind{JointType::Slider,
-                                "slider",
-                                "joins point \"a\" to a \"slot\"",
-                                Role::Prismatic,
-                                2,
-                                slot_joint::kFields,
-                                slot_joint::noCheck,
-                                compile,
-                                centre,
-                                slot_joint::symbol,
-                                slot_joint::place,
-                                kColumns,
-                                nullptr};
-  return kind;
+ElementKind sliderElement(JointType t) {
+  return {t,
+          "slider",
+          "joins point \"a\" to a \"slot\"",
+          Role::Prismatic,
+          2,
+          slot_joint::kFields,
+          slot_joint::noCheck,
+          compile,
+          centre,
+          slot_joint::symbol,
+          slot_joint::place,
+          kColumns,
+          nullptr};
 }
 
 }  // namespace linkage

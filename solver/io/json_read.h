@@ -2,6 +2,8 @@
 // that name the place, and readers of fields that refuse anything else with what was found.
 #pragma once
 
+#include <span>
+
 #include <climits>
 #include <cmath>
 #include <cstring>
@@ -115,7 +117,7 @@ inline std::optional<Vec2> asPair(const Json& v) {
 }
 
 // Keys outside `known` in their original order, as compact JSON object text; "" when none.
-inline Extras unknownFields(const Json& obj, std::initializer_list<const char*> known) {
+inline Extras unknownFields(const Json& obj, std::span<const char* const> known) {
   Json extras = Json::object();
   for (auto it = obj.begin(); it != obj.end(); ++it) {
     bool isKnown = false;
@@ -123,6 +125,9 @@ inline Extras unknownFields(const Json& obj, std::initializer_list<const char*> 
     if (!isKnown) json_tree::appendMember(extras, it.key(), it.value());
   }
   return extras.empty() ? Extras() : extras.dump();
+}
+inline Extras unknownFields(const Json& obj, std::initializer_list<const char*> known) {
+  return unknownFields(obj, std::span<const char* const>(known.begin(), known.size()));
 }
 
 // References are "body.point" and names are checked to have no '.', so the first dot splits.

@@ -221,61 +221,51 @@ class Reader {
     const ElementKind* kind =
         type.is_string() ? elementKindNamed(type.get<std::string>()) : nullptr;
     if (!kind) refuse(path + ".type", "expected " + elementKindNames() + ", got " + describe(type));
-    for (JointField f : kAllFields)
-      if (!kind->reads(f) && find(j, fieldKey(f)))
-        refuse(path + "." + fieldKey(f),
-               std::string("a ") + kind->name + " " + kind->joins + "; it has no " + noun(f));
+    for (const char* key : elementFieldKeys())
+      if (!kind->field(key) && find(j, key))
+        refuse(path + "." + key,
+               std::string("a ") + kind->name + " " + kind->joins + "; it has no " + noun(key));
     Joint joint;
     joint.type = kind->type;
     const BodyNames* sides[2] = {nullptr, nullptr};
     for (const FieldSpec& f : kind->fields) {
-      const Json* v =
-          f.required ? &require(j, fieldKey(f.field), path) : find(j, fieldKey(f.field));
-      if (v) readField(joint, f.field, *v, path + "." + fieldKey(f.field), sides);
+      const Json* v = f.required ? &require(j, f.key, path) : find(j, f.key);
+      if (v) readField(joint, f, *v, path + "." + f.key, sides);
     }
     if (sides[0] && sides[0] == sides[1])
       refuse(path, "both sides are on body " + literal(sides[0]->name));
-    joint.extras = unknownFields(j, {"type", "a", "b", "slot", "carrier", "ratio"});
+    std::vector<const char*> known{"type"};
+    for (const char* key : elementFieldKeys()) known.push_back(key);
+    joint.extras = unknownFields(j, known);
     m_.addJoint(std::move(joint));
   }
 
-  static constexpr JointField kAllFields[] = {JointField::A, JointField::B, JointField::Slot,
-                                              JointField::Carrier, JointField::Ratio};
-  static std::string noun(JointField f) {
-    switch (f) {
-      case JointField::A:
-        return "point \"a\"";
-      case JointField::B:
-        return "point \"b\"";
-      case JointField::Slot:
-        return "slot";
-      default:
-        return literal(fieldKey(f));
-    }
+  // What a key names in a message, by the type other kinds give it.
+  static std::string noun(const char* key) {
+    for (const ElementKind& k : elementKinds())
+      if (const FieldSpec* f = k.field(key)) {
+        if (f->type == FieldType::Point) return std::string("point ") + literal(key);
+        if (f->type == FieldType::Slot) return "slot";
+      }
+    return literal(key);
   }
 
   // One field into the joint; the bodies of what it joins (a, and b or the slot) to `sides`.
-  void readField(Joint& joint, JointField f, const Json& v, const std::string& path,
+  void readField(Joint& joint, const FieldSpec& f, const Json& v, const std::string& path,
                  const BodyNames* sides[2]) {
-    switch (f) {
-      case JointField::A:
-        std::tie(joint.a, sides[0]) = readPointRef(v, path);
+    switch (f.type) {
+      case FieldType::Point:
+        std::tie(pointField(joint, f), sides[f.index == 0 ? 0 : 1]) = readPointRef(v, path);
         break;
-      case JointField::B:
-        std::tie(joint.b, sides[1]) = readPointRef(v, path);
-        break;
-      case JointField::Slot:
+      case FieldType::Slot:
         std::tie(joint.slot, sides[1]) = readSlotRef(v, path);
         break;
-      case JointField::Carrier: {
-        const std::string& name = getString(v, path);
-        auto it = bodies_.find(name);
-        if (it == bodies_.end()) refuse(path, "no body " + literal(name));
-        joint.carrier = it->second.id;
+      case FieldType::Body:
+        joint.carrier = bodyRef(v, path);
         break;
-      }
-      case JointField::Ratio:
-        joint.ratio = getNumber(v, path);
+      case FieldType::Number:
+        if (joint.numbers.size() <= f.index) joint.numbers.resize(f.index + 1, 0.0);
+        joint.numbers[f.index] = getNumber(v, path);
         break;
     }
   }

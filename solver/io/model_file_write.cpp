@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <unordered_map>
 
 #include "io/json_tree.h"
@@ -39,13 +40,17 @@ Json parseExtras(const Extras& text) {
 }
 
 // A key the reader would take for a known field must not come back from Extras.
-void appendExtras(Json& obj, const Extras& extras, std::initializer_list<const char*> known) {
+void appendExtras(Json& obj, const Extras& extras, std::span<const char* const> known) {
   Json e = parseExtras(extras);
   for (auto it = e.begin(); it != e.end(); ++it) {
     bool isKnown = false;
     for (const char* k : known) isKnown = isKnown || it.key() == k;
     if (!isKnown) json_tree::appendMember(obj, it.key(), it.value());
   }
+}
+
+void appendExtras(Json& obj, const Extras& extras, std::initializer_list<const char*> known) {
+  appendExtras(obj, extras, std::span<const char* const>(known.begin(), known.size()));
 }
 
 std::string scalar(const Json& v) {
@@ -179,26 +184,24 @@ Json jointJson(const Labels& labels, const Joint& jt) {
   Json j = Json::object();
   j["type"] = toString(jt.type);
   for (const FieldSpec& f : kindOf(jt).fields) {
-    const char* key = fieldKey(f.field);
-    switch (f.field) {
-      case JointField::A:
-        j[key] = Labels::of(labels.points, jt.a.value);
+    switch (f.type) {
+      case FieldType::Point:
+        j[f.key] = Labels::of(labels.points, pointField(jt, f).value);
         break;
-      case JointField::B:
-        j[key] = Labels::of(labels.points, jt.b.value);
+      case FieldType::Slot:
+        j[f.key] = Labels::of(labels.slots, jt.slot.value);
         break;
-      case JointField::Slot:
-        j[key] = Labels::of(labels.slots, jt.slot.value);
+      case FieldType::Body:
+        if (jt.carrier) j[f.key] = Labels::of(labels.bodies, jt.carrier.value);
         break;
-      case JointField::Carrier:
-        if (jt.carrier) j[key] = Labels::of(labels.bodies, jt.carrier.value);
-        break;
-      case JointField::Ratio:
-        j[key] = number(jt.ratio);
+      case FieldType::Number:
+        j[f.key] = number(jt.number(f.index));
         break;
     }
   }
-  appendExtras(j, jt.extras, {"type", "a", "b", "slot", "carrier", "ratio"});
+  std::vector<const char*> known{"type"};
+  for (const char* key : elementFieldKeys()) known.push_back(key);
+  appendExtras(j, jt.extras, known);
   return j;
 }
 
@@ -445,15 +448,17 @@ std::string mechanismDifference(const Mechanism& a, const Mechanism& b) {
     if (ja.type != jb.type) return w + ".type differs";
     if (a.pointLabel(ja.a) != b.pointLabel(jb.a)) return w + ".a differs";
     const ElementKind& kind = kindOf(ja);
-    if (kind.reads(JointField::B) && a.pointLabel(ja.b) != b.pointLabel(jb.b))
+    if (kind.reads(FieldType::Point, 1) && a.pointLabel(ja.b) != b.pointLabel(jb.b))
       return w + ".b differs";
-    if (kind.reads(JointField::Slot) && a.slotLabel(ja.slot) != b.slotLabel(jb.slot))
+    if (kind.reads(FieldType::Slot) && a.slotLabel(ja.slot) != b.slotLabel(jb.slot))
       return w + ".slot differs";
     const Body *ca = a.body(ja.carrier), *cb = b.body(jb.carrier);
-    if (kind.reads(JointField::Carrier) && (ca ? ca->name : "") != (cb ? cb->name : ""))
+    if (kind.reads(FieldType::Body) && (ca ? ca->name : "") != (cb ? cb->name : ""))
       return w + ".carrier differs";
-    if (kind.reads(JointField::Ratio) && ja.ratio != jb.ratio)
-      return w + ".ratio: " + shortest(ja.ratio) + " vs " + shortest(jb.ratio);
+    for (const FieldSpec& f : kind.fields)
+      if (f.type == FieldType::Number && ja.number(f.index) != jb.number(f.index))
+        return w + "." + f.key + ": " + shortest(ja.number(f.index)) + " vs " +
+               shortest(jb.number(f.index));
     if (auto d = compareExtras(ja.extras, jb.extras, w); !d.empty()) return d;
   }
   if (a.driver.has_value() != b.driver.has_value()) return "driver: present in only one";

@@ -131,19 +131,19 @@ LoadId Mechanism::addLoad(Load l) {
 }
 
 JointId Mechanism::addPin(PointId a, PointId b) {
-  return addJoint(Joint{{}, JointType::Pin, a, b, {}, {}, 0, {}});
+  return addJoint(Joint{{}, JointType::Pin, a, b, {}, {}, {}, {}});
 }
 
 JointId Mechanism::addSlider(PointId a, SlotId s) {
-  return addJoint(Joint{{}, JointType::Slider, a, {}, s, {}, 0, {}});
+  return addJoint(Joint{{}, JointType::Slider, a, {}, s, {}, {}, {}});
 }
 
 JointId Mechanism::addPinInSlot(PointId a, SlotId s) {
-  return addJoint(Joint{{}, JointType::PinInSlot, a, {}, s, {}, 0, {}});
+  return addJoint(Joint{{}, JointType::PinInSlot, a, {}, s, {}, {}, {}});
 }
 
 JointId Mechanism::addGear(PointId a, PointId b, double ratio, BodyId carrier) {
-  return addJoint(Joint{{}, JointType::Gear, a, b, {}, carrier, ratio, {}});
+  return addJoint(Joint{{}, JointType::Gear, a, b, {}, carrier, {ratio}, {}});
 }
 
 Removal Mechanism::remove(const std::vector<BodyId>& bodyIds, const std::vector<PointId>& pointIds,
@@ -354,7 +354,7 @@ bool sameTopology(const Mechanism& a, const Mechanism& b, std::vector<BodyId>& r
   for (size_t i = 0; i < a.joints.size(); ++i) {
     const Joint &p = a.joints[i], &q = b.joints[i];
     if (p.id != q.id || p.type != q.type || p.a != q.a || p.b != q.b || p.slot != q.slot ||
-        p.carrier != q.carrier || p.ratio != q.ratio)
+        p.carrier != q.carrier || p.numbers != q.numbers)
       return false;
   }
   if (a.driver &&

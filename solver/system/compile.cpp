@@ -178,9 +178,9 @@ class Compiler : public Frames {
       sys_.jointIds.push_back(j.id);
       const std::string where = "joints[" + std::to_string(ji) + "]";
       if (!references(j, kind, where)) return false;
-      JointField field = JointField::A;
+      const char* field = "a";
       if (std::string why = kind.check(m_, j, field); !why.empty())
-        return fail(where + "." + fieldKey(field) + ": " + why);
+        return fail(where + "." + field + ": " + why);
       rows.clear();
       std::string why;
       if (!kind.compile(m_, j, *this, rows, why)) return fail(where + ": " + why);
@@ -198,17 +198,17 @@ class Compiler : public Frames {
     const PointLocation* a = sys_.point(j.a);
     if (!a) return fail(where + ".a: unknown point");
     int other = -3;
-    if (kind.reads(JointField::B)) {
+    if (kind.reads(FieldType::Point, 1)) {
       const PointLocation* b = sys_.point(j.b);
       if (!b) return fail(where + ".b: unknown point");
       other = b->body;
     }
-    if (kind.reads(JointField::Slot)) {
+    if (kind.reads(FieldType::Slot)) {
       const Slot* s = slot(j.slot);
       if (!s) return fail(where + ".slot: unknown slot");
       other = sys_.bodyIndex(s->body);
     }
-    if (kind.reads(JointField::Carrier) && j.carrier && !knownBody(j.carrier))
+    if (kind.reads(FieldType::Body) && j.carrier && !knownBody(j.carrier))
       return fail(where + ".carrier: unknown body");
     if (other == a->body) return fail(where + ": both sides are on one body");
     return true;

@@ -23,7 +23,7 @@ std::span<const ElementUi* const> elementUis() {
 }
 
 const ElementUi& elementUi(JointType t) {
-  return *elementUis()[static_cast<size_t>(t)];
+  return *elementUis()[t.index];
 }
 
 QString describe(JointType t) {
@@ -40,8 +40,8 @@ namespace {
 // The kinds a joint of kind t can change into (t among them), in table order.
 std::vector<JointType> sameKinds(JointType t) {
   std::vector<JointType> out;
-  for (const ElementKind* k : elementKinds())
-    if (sameFields(k->type, t)) out.push_back(k->type);
+  for (const ElementKind& k : elementKinds())
+    if (sameFields(k.type, t)) out.push_back(k.type);
   return out;
 }
 }  // namespace

@@ -10,6 +10,7 @@
 #include "document/document.h"
 #include "elements/element_ui.h"
 #include "linkage/edits.h"
+#include "linkage/gear.h"
 #include "properties/properties_panel.h"
 #include "tools/gear_tool.h"
 #include "tools/toolbox.h"
@@ -35,25 +36,25 @@ void form(PropertiesPanel& panel, JointId id) {
   type->addItems({PropertiesPanel::tr("gears in mesh (turn opposite ways)"),
                   PropertiesPanel::tr("belt or chain (turn the same way)")});
   panel.addChoice(
-      PropertiesPanel::tr("Type"), type, [joint] { return joint().ratio < 0 ? 0 : 1; },
+      PropertiesPanel::tr("Type"), type, [joint] { return gearRatio(joint()) < 0 ? 0 : 1; },
       [&panel, id](int i) {
         panel.change(
             PropertiesPanel::tr("Gear type"),
             [&](Mechanism& m, QString*) {
-              double& r = m.joint(id)->ratio;
-              if ((r > 0) == (i == 1)) return false;  // the type it has: no edit
-              r = -r;
+              Joint& j = *m.joint(id);
+              if ((gearRatio(j) > 0) == (i == 1)) return false;  // the type it has: no edit
+              setGearRatio(j, -gearRatio(j));
               return true;
             },
             nullptr);
       });
   panel.addNumber(
-      PropertiesPanel::tr("Ratio"), [joint] { return joint().ratio; },
+      PropertiesPanel::tr("Ratio"), [joint] { return gearRatio(joint()); },
       [&panel, id](double v, QString* why) {
         return panel.change(
             PropertiesPanel::tr("Gear ratio"),
             [&](Mechanism& m, QString* w) {
-              m.joint(id)->ratio = v;
+              setGearRatio(*m.joint(id), v);
               const std::string problem = checkJoints(m);
               *w = QString::fromStdString(problem);
               return problem.empty();
@@ -80,13 +81,13 @@ void jointMenu(Toolbox& box, QMenu& menu, const Joint& j) {
         belt ? Toolbox::tr("Belt (the same way)") : Toolbox::tr("Gears in Mesh (opposite ways)"),
         &box, [&box, id, label, belt] {
           box.editWith(Toolbox::tr("Change %1").arg(label), [&](Mechanism& n, std::string&) {
-            double& r = n.joint(id)->ratio;
-            if ((r > 0) != belt) r = -r;
+            Joint& g = *n.joint(id);
+            if ((gearRatio(g) > 0) != belt) setGearRatio(g, -gearRatio(g));
             return true;
           });
         });
     a->setCheckable(true);
-    a->setChecked((j.ratio > 0) == belt);
+    a->setChecked((gearRatio(j) > 0) == belt);
   }
   // The ratio typed where it always is, the Properties: one field, one way to change it.
   menu.addAction(Toolbox::tr("Edit &Ratio..."), &box,

@@ -124,7 +124,7 @@ void PropertiesPanel::rebuild() {
       const Joint* j = m.joint(selection_->joints[0]);
       shape = QStringLiteral("joint %1 type %2 at %3")
                   .arg(j->id.value)
-                  .arg(static_cast<int>(j->type))
+                  .arg(int(j->type.index))
                   .arg(j->a.value);
     } else if (!selection_->slots_.empty() && m.contains(selection_->slots_[0])) {
       const Slot* sl = m.slot(selection_->slots_[0]);

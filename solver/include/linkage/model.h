@@ -97,21 +97,32 @@ struct Slot {
   bool arc() const { return mid.has_value(); }
 };
 
-// The element kinds a joint can be: an index into the element table (linkage/elements.h), where
-// each kind is described once (its fields, equations, instant centre and symbol). The model
-// itself knows nothing of them.
-enum class JointType : unsigned char { Pin, Slider, PinInSlot, Gear };
+// A joint's kind: its place in the element table (linkage/elements.h), where each kind describes
+// itself once (its fields, equations, instant centre and symbol) and is registered once. The
+// model knows no kinds; the constants name the table's first entries for the code that makes
+// joints of them (a kind added later is found by its name: elementKindNamed()).
+struct JointType {
+  std::uint8_t index = 0;
+  friend bool operator==(JointType, JointType) = default;
+  static const JointType Pin, Slider, PinInSlot, Gear;
+};
+inline constexpr JointType JointType::Pin{0};
+inline constexpr JointType JointType::Slider{1};
+inline constexpr JointType JointType::PinInSlot{2};
+inline constexpr JointType JointType::Gear{3};
 
-// A joint of any kind, with the fields its kind reads (linkage/elements.h lists which).
+// A joint of any kind. Its kind's fields (linkage/elements.h: FieldSpec) say which of these it
+// reads and under what names: up to two points, a slot, a body and numbers.
 struct Joint {
   JointId id;
   JointType type = JointType::Pin;
-  PointId a;         // every kind
-  PointId b;         // a second point (pin, gear)
-  SlotId slot;       // the slot it runs in (slider, pin-in-slot)
-  BodyId carrier;    // a body it is carried by (gear; none: the ground)
-  double ratio = 0;  // a number it takes (gear)
+  PointId a;       // every kind: its first point
+  PointId b;       // a second point
+  SlotId slot;     // a slot it runs in
+  BodyId carrier;  // a body it is carried by (none: the ground)
+  std::vector<double> numbers;
   Extras extras;
+  double number(size_t k) const { return k < numbers.size() ? numbers[k] : 0.0; }
 };
 
 // An external load: a force on a point's body at the point (N, in sketch axes), or a torque on
