@@ -4,7 +4,7 @@
 // arrow, output points with their labels. Sizes are in screen pixels (CanvasStyle).
 #pragma once
 
-#include "canvas/canvas_item.h"
+#include "draw/canvas_item.h"
 #include "linkage/drawing.h"
 
 namespace linkage::ui {

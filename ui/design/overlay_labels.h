@@ -12,7 +12,7 @@
 #include <QString>
 #include <vector>
 
-#include "canvas/label_board.h"
+#include "draw/label_board.h"
 
 namespace linkage::ui {
 

@@ -5,9 +5,9 @@
 #include <QComboBox>
 #include <QMenu>
 
-#include "canvas/canvas_item.h"
 #include "canvas/gear_item.h"
 #include "document/document.h"
+#include "draw/canvas_item.h"
 #include "elements/element_ui.h"
 #include "linkage/edits.h"
 #include "properties/properties_panel.h"
