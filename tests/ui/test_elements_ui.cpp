@@ -16,9 +16,9 @@
 
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
-#include "canvas/gear_item.h"
 #include "document/document.h"
 #include "drawing.h"
+#include "elements/gear_item.h"
 #include "linkage/elements.h"
 #include "linkage/guide.h"
 #include "linkage/io/model_file.h"

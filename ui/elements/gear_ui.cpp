@@ -5,10 +5,9 @@
 #include <QComboBox>
 #include <QMenu>
 
-#include "canvas/gear_item.h"
 #include "document/document.h"
-#include "draw/canvas_item.h"
 #include "elements/element_ui.h"
+#include "elements/gear_item.h"
 #include "linkage/edits.h"
 #include "properties/properties_panel.h"
 #include "tools/gear_tool.h"

@@ -2,8 +2,8 @@
 // point, then the slot), its type (it changes into a slider) and place in the panel and menu.
 #include <QMenu>
 
-#include "canvas/joint_items.h"
 #include "elements/element_ui.h"
+#include "elements/pin_item.h"
 #include "tools/slot_tools.h"
 
 namespace linkage::ui {

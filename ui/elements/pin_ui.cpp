@@ -4,9 +4,9 @@
 #include <QCheckBox>
 #include <QMenu>
 
-#include "canvas/joint_items.h"
 #include "document/document.h"
 #include "elements/element_ui.h"
+#include "elements/pin_item.h"
 #include "linkage/edits.h"
 #include "properties/properties_panel.h"
 #include "tools/toolbox.h"

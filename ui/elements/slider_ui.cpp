@@ -2,7 +2,7 @@
 // the slot), its type (it changes into a pin in the slot) and place in the panel and menu.
 #include <QMenu>
 
-#include "canvas/joint_items.h"
+#include "elements/block_item.h"
 #include "elements/element_ui.h"
 #include "tools/slot_tools.h"
 
