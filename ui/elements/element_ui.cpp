@@ -5,10 +5,9 @@
 #include <QMenu>
 
 #include "document/document.h"
+#include "elements/menu_actions.h"
 #include "linkage/edits.h"
 #include "properties/properties_panel.h"
-#include "tools/slot_tools.h"
-#include "tools/toolbox.h"
 
 namespace linkage::ui {
 
@@ -75,15 +74,15 @@ void addTypeChoice(PropertiesPanel& panel, JointId id) {
   });
 }
 
-void addTypeMenu(Toolbox& box, QMenu& menu, const Joint& j) {
+void addTypeMenu(MenuActions& box, QMenu& menu, const Joint& j) {
   const std::vector<JointType> kinds = sameKinds(j.type);
   if (kinds.size() < 2) return;
-  QMenu* type = menu.addMenu(Toolbox::tr("Change Type"));
+  QMenu* type = menu.addMenu(MenuActions::tr("Change Type"));
   const JointId id = j.id;
   const QString label = QString::fromStdString(jointName(box.document()->design(), id));
   for (JointType t : kinds) {
-    QAction* a = type->addAction(describe(t), &box, [&box, id, t, label] {
-      box.editWith(Toolbox::tr("Change type of %1").arg(label),
+    QAction* a = type->addAction(describe(t), type, [&box, id, t, label] {
+      box.editWith(MenuActions::tr("Change type of %1").arg(label),
                    [&](Mechanism& n, std::string& why) { return changeJointType(n, id, t, &why); });
     });
     a->setCheckable(true);
@@ -91,9 +90,10 @@ void addTypeMenu(Toolbox& box, QMenu& menu, const Joint& j) {
   }
 }
 
-void addSlotJointStart(Toolbox& box, QMenu& menu, PointId p, const char* tool, const char* text) {
-  menu.addAction(QCoreApplication::translate("Toolbox", text), &box, [&box, p, tool] {
-    static_cast<SlotJointTool*>(box.switchTo(QString::fromLatin1(tool)))->startAt(p);
+void addSlotJointStart(MenuActions& box, QMenu& menu, PointId p, const char* tool,
+                       const char* text) {
+  menu.addAction(QCoreApplication::translate("Toolbox", text), &menu, [&box, p, tool] {
+    box.startTool(QString::fromLatin1(tool), ToolStart{.point = p});
   });
 }
 

@@ -8,10 +8,9 @@
 #include "document/document.h"
 #include "elements/element_ui.h"
 #include "elements/gear_item.h"
+#include "elements/menu_actions.h"
 #include "linkage/edits.h"
 #include "properties/properties_panel.h"
-#include "tools/gear_tool.h"
-#include "tools/toolbox.h"
 
 namespace linkage::ui {
 
@@ -20,10 +19,6 @@ namespace {
 JointItem* item(const CanvasContext* ctx, const JointSymbol& s, const Drawing& d) {
   return new GearItem(ctx, s, ctx->style.body(bodyNumber(d, s.bodies[0])),
                       ctx->style.body(bodyNumber(d, s.bodies[1])));
-}
-
-Tool* tool(ToolContext* ctx) {
-  return new GearTool(ctx);
 }
 
 void form(PropertiesPanel& panel, JointId id) {
@@ -71,32 +66,32 @@ void form(PropertiesPanel& panel, JointId id) {
   });
 }
 
-void jointMenu(Toolbox& box, QMenu& menu, const Joint& j) {
+void jointMenu(MenuActions& box, QMenu& menu, const Joint& j) {
   const JointId id = j.id;
   const QString label = QString::fromStdString(jointName(box.document()->design(), id));
   for (bool belt : {false, true}) {
-    QAction* a = menu.addAction(
-        belt ? Toolbox::tr("Belt (the same way)") : Toolbox::tr("Gears in Mesh (opposite ways)"),
-        &box, [&box, id, label, belt] {
-          box.editWith(Toolbox::tr("Change %1").arg(label), [&](Mechanism& n, std::string&) {
-            double& r = n.joint(id)->ratio;
-            if ((r > 0) != belt) r = -r;
-            return true;
-          });
-        });
+    QAction* a = menu.addAction(belt ? MenuActions::tr("Belt (the same way)")
+                                     : MenuActions::tr("Gears in Mesh (opposite ways)"),
+                                &menu, [&box, id, label, belt] {
+                                  box.editWith(MenuActions::tr("Change %1").arg(label),
+                                               [&](Mechanism& n, std::string&) {
+                                                 double& r = n.joint(id)->ratio;
+                                                 if ((r > 0) != belt) r = -r;
+                                                 return true;
+                                               });
+                                });
     a->setCheckable(true);
     a->setChecked((j.ratio > 0) == belt);
   }
   // The ratio typed where it always is, the Properties: one field, one way to change it.
-  menu.addAction(Toolbox::tr("Edit &Ratio..."), &box,
+  menu.addAction(MenuActions::tr("Edit &Ratio..."), &menu,
                  [&box, id] { box.editField(id, PropertiesPanel::tr("Ratio")); });
 }
 
-void bodyMenu(Toolbox& box, QMenu& menu, BodyId body) {
+void bodyMenu(MenuActions& box, QMenu& menu, BodyId body) {
   if (pivotsOf(box.document()->design(), body).empty()) return;
-  menu.addAction(Toolbox::tr("Couple to (Gear or Belt)..."), &box, [&box, body] {
-    static_cast<GearTool*>(box.switchTo(QStringLiteral("gear")))->startAt(body);
-  });
+  menu.addAction(MenuActions::tr("Couple to (Gear or Belt)..."), &menu,
+                 [&box, body] { box.startTool(QStringLiteral("gear"), ToolStart{.body = body}); });
 }
 
 }  // namespace
@@ -109,7 +104,7 @@ const ElementUi& gearUi() {
       {"gear", QT_TRANSLATE_NOOP("Toolbox", "G&ear or Belt"), "E",
        QT_TRANSLATE_NOOP("Toolbox",
                          "Couple two pivoted bodies by gears in mesh, or a belt (Shift)"),
-       "tool-gear", tool},
+       "tool-gear", "gear"},
       form,
       jointMenu,
       bodyMenu,

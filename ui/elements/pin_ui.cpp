@@ -6,10 +6,10 @@
 
 #include "document/document.h"
 #include "elements/element_ui.h"
+#include "elements/menu_actions.h"
 #include "elements/pin_item.h"
 #include "linkage/edits.h"
 #include "properties/properties_panel.h"
-#include "tools/toolbox.h"
 
 namespace linkage::ui {
 
@@ -42,12 +42,12 @@ void form(PropertiesPanel& panel, JointId id) {
   if (isDriver()) panel.fillDriver();
 }
 
-void jointMenu(Toolbox& box, QMenu& menu, const Joint& j) {
+void jointMenu(MenuActions& box, QMenu& menu, const Joint& j) {
   const Mechanism& m = box.document()->design();
   const JointId id = j.id;
   const QString label = QString::fromStdString(jointName(m, id));
-  QAction* drive = menu.addAction(Toolbox::tr("Make It the Driver"), &box, [&box, id, label] {
-    box.editWith(Toolbox::tr("Driver at %1").arg(label),
+  QAction* drive = menu.addAction(MenuActions::tr("Make It the Driver"), &menu, [&box, id, label] {
+    box.editWith(MenuActions::tr("Driver at %1").arg(label),
                  [&](Mechanism& n, std::string& why) { return setDriver(n, id, &why); });
   });
   drive->setEnabled(!(m.driver && m.driver->joint == id));
