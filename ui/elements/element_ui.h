@@ -18,7 +18,7 @@ namespace linkage::ui {
 struct CanvasContext;
 class JointItem;
 class MenuActions;
-class PropertiesPanel;
+class Form;
 
 struct ToolSpec {
   const char* name;  // the action is "tool:<name>"
@@ -37,7 +37,7 @@ struct ElementUi {
   // The item for a joint's symbol (placed at each pose by the scene); `d` for body numbers.
   JointItem* (*item)(const CanvasContext* ctx, const JointSymbol& s, const Drawing& d);
   ToolSpec tool;
-  void (*form)(PropertiesPanel& panel, JointId id);
+  void (*form)(Form& panel, JointId id);
   // Its entries on a joint's right-click menu, acting through the toolbox (menu_actions.h).
   void (*jointMenu)(MenuActions& box, QMenu& menu, const Joint& j);
   // Entries on a moving body's and on a point's right-click menus (nullptr: none).
@@ -54,13 +54,13 @@ QString describe(JointType t);
 // into each other) in the panel and in a joint's menu; the point's coordinates, moving every
 // point pinned to it.
 int bodyNumber(const Drawing& d, BodyId b);
-void addTypeChoice(PropertiesPanel& panel, JointId id);
+void addTypeChoice(Form& panel, JointId id);
 void addTypeMenu(MenuActions& box, QMenu& menu, const Joint& j);
-void addPointPlace(PropertiesPanel& panel, PointId a);
+void addPointPlace(Form& panel, PointId a);
 // A point's menu entry that starts a slot joint's tool at the point ("... in a Slot Here").
 void addSlotJointStart(MenuActions& box, QMenu& menu, PointId p, const char* tool,
                        const char* text);
 // A slot joint's panel rows: its type, its point's place.
-void slotJointForm(PropertiesPanel& panel, JointId id);
+void slotJointForm(Form& panel, JointId id);
 
 }  // namespace linkage::ui

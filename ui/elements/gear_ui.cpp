@@ -2,15 +2,14 @@
 // pivoted bodies; Shift for a belt), its type and ratio (edited), carrier and centres in the
 // panel, "Gears in Mesh" / "Belt" / "Edit Ratio..." on its menu, and "Couple to..." on a
 // pivoted body's menu.
-#include <QComboBox>
 #include <QMenu>
 
 #include "document/document.h"
 #include "elements/element_ui.h"
 #include "elements/gear_item.h"
 #include "elements/menu_actions.h"
+#include "forms/form.h"
 #include "linkage/edits.h"
-#include "properties/properties_panel.h"
 
 namespace linkage::ui {
 
@@ -21,18 +20,18 @@ JointItem* item(const CanvasContext* ctx, const JointSymbol& s, const Drawing& d
                       ctx->style.body(bodyNumber(d, s.bodies[1])));
 }
 
-void form(PropertiesPanel& panel, JointId id) {
+void form(Form& panel, JointId id) {
   Document* doc = panel.document();
   auto joint = [doc, id] { return *doc->design().joint(id); };
   // Gears in mesh turn opposite ways (a negative ratio), a belt or chain the same way.
-  auto* type = new QComboBox;
-  type->addItems({PropertiesPanel::tr("gears in mesh (turn opposite ways)"),
-                  PropertiesPanel::tr("belt or chain (turn the same way)")});
   panel.addChoice(
-      PropertiesPanel::tr("Type"), type, [joint] { return joint().ratio < 0 ? 0 : 1; },
+      Form::tr("Type"),
+      {Form::tr("gears in mesh (turn opposite ways)"),
+       Form::tr("belt or chain (turn the same way)")},
+      [joint] { return joint().ratio < 0 ? 0 : 1; },
       [&panel, id](int i) {
         panel.change(
-            PropertiesPanel::tr("Gear type"),
+            Form::tr("Gear type"),
             [&](Mechanism& m, QString*) {
               double& r = m.joint(id)->ratio;
               if ((r > 0) == (i == 1)) return false;  // the type it has: no edit
@@ -42,10 +41,10 @@ void form(PropertiesPanel& panel, JointId id) {
             nullptr);
       });
   panel.addNumber(
-      PropertiesPanel::tr("Ratio"), [joint] { return joint().ratio; },
+      Form::tr("Ratio"), [joint] { return joint().ratio; },
       [&panel, id](double v, QString* why) {
         return panel.change(
-            PropertiesPanel::tr("Gear ratio"),
+            Form::tr("Gear ratio"),
             [&](Mechanism& m, QString* w) {
               m.joint(id)->ratio = v;
               const std::string problem = checkJoints(m);
@@ -55,11 +54,11 @@ void form(PropertiesPanel& panel, JointId id) {
             why);
       },
       QString());
-  panel.addInfo(PropertiesPanel::tr("Carrier"), [doc, joint] {
+  panel.addInfo(Form::tr("Carrier"), [doc, joint] {
     const Body* c = doc->design().body(joint().carrier);
-    return c ? QString::fromStdString(c->name) : PropertiesPanel::tr("the ground");
+    return c ? QString::fromStdString(c->name) : Form::tr("the ground");
   });
-  panel.addInfo(PropertiesPanel::tr("Centres"), [doc, joint] {
+  panel.addInfo(Form::tr("Centres"), [doc, joint] {
     const Mechanism& m = doc->design();
     return QStringLiteral("%1, %2").arg(QString::fromStdString(m.pointLabel(joint().a)),
                                         QString::fromStdString(m.pointLabel(joint().b)));
@@ -85,7 +84,7 @@ void jointMenu(MenuActions& box, QMenu& menu, const Joint& j) {
   }
   // The ratio typed where it always is, the Properties: one field, one way to change it.
   menu.addAction(MenuActions::tr("Edit &Ratio..."), &menu,
-                 [&box, id] { box.editField(id, PropertiesPanel::tr("Ratio")); });
+                 [&box, id] { box.editField(id, Form::tr("Ratio")); });
 }
 
 void bodyMenu(MenuActions& box, QMenu& menu, BodyId body) {

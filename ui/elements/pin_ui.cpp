@@ -8,8 +8,9 @@
 #include "elements/element_ui.h"
 #include "elements/menu_actions.h"
 #include "elements/pin_item.h"
+#include "forms/driver_rows.h"
+#include "forms/form.h"
 #include "linkage/edits.h"
-#include "properties/properties_panel.h"
 
 namespace linkage::ui {
 
@@ -19,18 +20,18 @@ JointItem* item(const CanvasContext* ctx, const JointSymbol& s, const Drawing&) 
   return new PinItem(ctx, s.joint, s.groundPivot ? PinItem::Kind::GroundPivot : PinItem::Kind::Pin);
 }
 
-void form(PropertiesPanel& panel, JointId id) {
+void form(Form& panel, JointId id) {
   Document* doc = panel.document();
   addTypeChoice(panel, id);
   addPointPlace(panel, doc->design().joint(id)->a);
   auto isDriver = [doc, id] { return doc->design().driver && doc->design().driver->joint == id; };
   panel.addCheck(
-      PropertiesPanel::tr("Driver"), PropertiesPanel::tr("drives the mechanism (the crank)"),
-      isDriver, [isDriver] { return !isDriver(); },
+      Form::tr("Driver"), Form::tr("drives the mechanism (the crank)"), isDriver,
+      [isDriver] { return !isDriver(); },
       [&panel, id](bool) {
         QString why;
         panel.change(
-            PropertiesPanel::tr("Driver"),
+            Form::tr("Driver"),
             [&](Mechanism& m, QString* w) {
               std::string s;
               const bool ok = setDriver(m, id, &s);
@@ -39,7 +40,7 @@ void form(PropertiesPanel& panel, JointId id) {
             },
             &why);
       });
-  if (isDriver()) panel.fillDriver();
+  if (isDriver()) addDriverRows(panel);
 }
 
 void jointMenu(MenuActions& box, QMenu& menu, const Joint& j) {
