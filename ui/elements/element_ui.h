@@ -37,6 +37,7 @@ struct ElementUi {
   // The item for a joint's symbol (placed at each pose by the scene); `d` for body numbers.
   JointItem* (*item)(const CanvasContext* ctx, const JointSymbol& s, const Drawing& d);
   ToolSpec tool;
+  // Its rows on a joint's Properties form, after the title (forms/form.h).
   void (*form)(Form& panel, JointId id);
   // Its entries on a joint's right-click menu, acting through the toolbox (menu_actions.h).
   void (*jointMenu)(MenuActions& box, QMenu& menu, const Joint& j);

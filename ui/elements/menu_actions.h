@@ -18,8 +18,10 @@ class Document;
 // Where a tool started from a menu begins: at a point (a slot joint's point, a link's first
 // point), on a body (the first of a gear pair, the body a slot is cut in), at a place (mm).
 struct ToolStart {
-  PointId point;
-  BodyId body;
+  // Initialised, so that a start naming one of them (.point = p) leaves the other unset
+  // without a missing-initialiser warning.
+  PointId point{};
+  BodyId body{};
   Vec2 at = Vec2::Zero();
 };
 
