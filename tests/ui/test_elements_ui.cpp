@@ -16,15 +16,17 @@
 
 #include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
-#include "canvas/gear_item.h"
 #include "document/document.h"
 #include "drawing.h"
+#include "elements/element_ui.h"
+#include "elements/gear_item.h"
 #include "linkage/elements.h"
 #include "linkage/gear.h"
 #include "linkage/guide.h"
 #include "linkage/io/model_file.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
+#include "tools/toolbox.h"
 #include "window/features.h"
 
 namespace linkage::ui {
@@ -61,6 +63,26 @@ void twoShafts(MainWindow& w, test::Draw& d) {
   d.key("M");
   d.click(0, 0);
   d.key("S");
+}
+
+// A kind's tool is made by the name its ToolSpec gives (tools/tool_registry.h), registered by
+// the tool's own file: each is in the toolbox, with its key, and becomes the current tool.
+TEST(ElementsUi, EveryKindsToolIsMadeByTheToolRegisteredUnderItsName) {
+  MainWindow w;
+  Toolbox* box = w.tools().toolbox();
+  int tools = 0;
+  for (const ElementUi* k : elementUis()) {
+    if (!k->tool.maker) continue;
+    ++tools;
+    QAction* a = box->toolAction(QString::fromLatin1(k->tool.name));
+    ASSERT_TRUE(a) << k->tool.name << " made by " << k->tool.maker;
+    EXPECT_EQ(a->shortcut(), QKeySequence(QString::fromLatin1(k->tool.key)));
+    a->trigger();
+    EXPECT_TRUE(a->isChecked()) << k->tool.name;
+    ASSERT_TRUE(box->tool());
+    EXPECT_FALSE(box->tool()->hint().isEmpty()) << k->tool.name;
+  }
+  EXPECT_EQ(tools, 3);  // the slider's block, the pin in a slot, the gear
 }
 
 TEST(ElementsUi, GearToolCouplesTwoShaftsAndTheRatioIsTyped) {

@@ -20,9 +20,9 @@
 #include "document/document.h"
 #include "drawing.h"
 #include "forces/balance_dialog.h"
+#include "forces/mass_dialog.h"
 #include "linkage/io/numbers.h"
 #include "linkage/mass_estimate.h"
-#include "properties/mass_dialog.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
 

@@ -12,9 +12,9 @@
 #include <cmath>
 
 #include "canvas/canvas_scene.h"
-#include "canvas/gear_item.h"
 #include "document/commands.h"
 #include "document/document.h"
+#include "elements/gear_item.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "mechanisms.h"

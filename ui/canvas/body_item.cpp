@@ -9,15 +9,6 @@
 
 namespace linkage::ui {
 
-QPointF toQt(const Vec2& v) {
-  return QPointF(v.x(), v.y());
-}
-
-QTransform toQt(const Transform& t) {
-  // world = R sketch + t; QTransform maps (x, y) to (m11 x + m21 y + dx, m12 x + m22 y + dy).
-  return QTransform(t.R.c, t.R.s, -t.R.s, t.R.c, t.t.x(), t.t.y());
-}
-
 namespace {
 
 // Arc points about c from angle a0 through a positive sweep (radians, y up), close enough that

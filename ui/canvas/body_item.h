@@ -7,7 +7,7 @@
 #include <QString>
 #include <vector>
 
-#include "canvas/canvas_item.h"
+#include "draw/canvas_item.h"
 #include "linkage/drawing.h"
 #include "linkage/guide.h"
 
@@ -70,7 +70,5 @@ QPolygonF channel(const Guide& g, double r, double px);
 QPolygonF roundedHull(const std::vector<Vec2>& hull, double r, double px);
 // A body's outline as BodyItem draws it (sketch coordinates); empty for the ground and blocks.
 QPolygonF bodyOutline(const Drawing::Body& b, double px);
-QPointF toQt(const Vec2& v);
-QTransform toQt(const Transform& t);
 
 }  // namespace linkage::ui

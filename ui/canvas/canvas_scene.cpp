@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "canvas/dynamics_marks.h"
-#include "canvas/gear_item.h"
 #include "canvas/traces.h"
 #include "document/document.h"
 #include "elements/element_ui.h"
@@ -266,9 +265,7 @@ void CanvasScene::applyMechanisms() {
   }
   for (JointItem* j : joints_) {
     j->setVisible(!jointHidden(j->joint()));
-    if (auto* b = dynamic_cast<BlockItem*>(j)) b->setColour(colourOf(b->body()));
-    if (auto* g = dynamic_cast<GearItem*>(j))
-      for (int side : {0, 1}) g->setBodyColour(side, colourOf(g->body(side)));
+    j->setBodyColours(colourOf);
   }
   for (OutputItem* o : outputs_) {
     const Point* p = m.point(o->point());

@@ -9,13 +9,16 @@
 #include <vector>
 
 #include "canvas/body_item.h"
-#include "canvas/canvas_item.h"
 #include "canvas/centres_item.h"
 #include "canvas/chain_item.h"
+#include "canvas/driver_item.h"
 #include "canvas/dynamics_item.h"
-#include "canvas/joint_items.h"
+#include "canvas/output_item.h"
 #include "canvas/slot_warnings.h"
 #include "document/document.h"
+#include "draw/canvas_item.h"
+#include "elements/block_item.h"
+#include "elements/pin_item.h"
 #include "linkage/drawing.h"
 #include "linkage/mechanisms.h"
 

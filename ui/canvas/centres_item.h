@@ -15,7 +15,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "canvas/canvas_item.h"
+#include "draw/canvas_item.h"
 #include "linkage/drawing.h"
 
 namespace linkage::ui {

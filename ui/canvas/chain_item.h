@@ -5,7 +5,7 @@
 
 #include <optional>
 
-#include "canvas/canvas_item.h"
+#include "draw/canvas_item.h"
 #include "linkage/velocity_chain.h"
 
 namespace linkage::ui {

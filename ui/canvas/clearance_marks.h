@@ -9,7 +9,7 @@
 #include <QString>
 #include <vector>
 
-#include "canvas/canvas_item.h"
+#include "draw/canvas_item.h"
 #include "linkage/geometry.h"
 
 namespace linkage::ui {

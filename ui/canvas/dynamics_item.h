@@ -10,7 +10,7 @@
 #include <QString>
 #include <vector>
 
-#include "canvas/canvas_item.h"
+#include "draw/canvas_item.h"
 
 namespace linkage::ui {
 

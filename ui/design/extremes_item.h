@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "canvas/canvas_item.h"
+#include "draw/canvas_item.h"
 #include "linkage/drawing.h"
 #include "linkage/limits.h"
 

@@ -8,8 +8,8 @@
 #include <memory>
 #include <vector>
 
-#include "canvas/canvas_item.h"
 #include "design/overlay_labels.h"
+#include "draw/canvas_item.h"
 
 namespace linkage::ui {
 

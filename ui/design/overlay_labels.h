@@ -2,7 +2,7 @@
 // on a backing of the paper colour, each moved off the labels placed before it in the same
 // frame (the output points' names, values at neighbouring joints, extremes close together, the
 // arcs' values beside the stroke's) and kept inside the view: the canvas's LabelBoard
-// (canvas/label_board.h). Unlike the centres' labels these are always drawn: they are values.
+// (draw/label_board.h). Unlike the centres' labels these are always drawn: they are values.
 #pragma once
 
 #include <QColor>
@@ -12,7 +12,7 @@
 #include <QString>
 #include <vector>
 
-#include "canvas/label_board.h"
+#include "draw/label_board.h"
 
 namespace linkage::ui {
 

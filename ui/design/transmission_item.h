@@ -14,8 +14,8 @@
 
 #include <memory>
 
-#include "canvas/canvas_item.h"
 #include "design/overlay_labels.h"
+#include "draw/canvas_item.h"
 #include "linkage/transmission.h"
 
 namespace linkage::ui {

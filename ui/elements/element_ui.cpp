@@ -1,14 +1,12 @@
 #include "elements/element_ui.h"
 
-#include <QComboBox>
 #include <QCoreApplication>
 #include <QMenu>
 
 #include "document/document.h"
+#include "elements/menu_actions.h"
+#include "forms/form.h"
 #include "linkage/edits.h"
-#include "properties/properties_panel.h"
-#include "tools/slot_tools.h"
-#include "tools/toolbox.h"
 
 namespace linkage::ui {
 
@@ -46,24 +44,23 @@ std::vector<JointType> sameKinds(JointType t) {
 }
 }  // namespace
 
-void addTypeChoice(PropertiesPanel& panel, JointId id) {
+void addTypeChoice(Form& panel, JointId id) {
   Document* doc = panel.document();
   const std::vector<JointType> kinds = sameKinds(doc->design().joint(id)->type);
   if (kinds.size() < 2) {
-    panel.addInfo(PropertiesPanel::tr("Type"),
-                  [doc, id] { return describe(doc->design().joint(id)->type); });
+    panel.addInfo(Form::tr("Type"), [doc, id] { return describe(doc->design().joint(id)->type); });
     return;
   }
-  auto* type = new QComboBox;
-  for (JointType t : kinds) type->addItem(describe(t));
+  QStringList items;
+  for (JointType t : kinds) items << describe(t);
   auto current = [doc, id, kinds] {
     const JointType t = doc->design().joint(id)->type;
     return int(std::find(kinds.begin(), kinds.end(), t) - kinds.begin());
   };
-  panel.addChoice(PropertiesPanel::tr("Type"), type, current, [&panel, id, kinds](int i) {
+  panel.addChoice(Form::tr("Type"), items, current, [&panel, id, kinds](int i) {
     QString why;
     if (!panel.change(
-            PropertiesPanel::tr("Joint type"),
+            Form::tr("Joint type"),
             [&](Mechanism& m, QString* w) {
               std::string s;
               const bool ok = changeJointType(m, id, kinds[i], &s);
@@ -71,19 +68,19 @@ void addTypeChoice(PropertiesPanel& panel, JointId id) {
               return ok;
             },
             &why))
-      emit panel.message(why, true);
+      panel.warn(why);
   });
 }
 
-void addTypeMenu(Toolbox& box, QMenu& menu, const Joint& j) {
+void addTypeMenu(MenuActions& box, QMenu& menu, const Joint& j) {
   const std::vector<JointType> kinds = sameKinds(j.type);
   if (kinds.size() < 2) return;
-  QMenu* type = menu.addMenu(Toolbox::tr("Change Type"));
+  QMenu* type = menu.addMenu(MenuActions::tr("Change Type"));
   const JointId id = j.id;
   const QString label = QString::fromStdString(jointName(box.document()->design(), id));
   for (JointType t : kinds) {
-    QAction* a = type->addAction(describe(t), &box, [&box, id, t, label] {
-      box.editWith(Toolbox::tr("Change type of %1").arg(label),
+    QAction* a = type->addAction(describe(t), type, [&box, id, t, label] {
+      box.editWith(MenuActions::tr("Change type of %1").arg(label),
                    [&](Mechanism& n, std::string& why) { return changeJointType(n, id, t, &why); });
     });
     a->setCheckable(true);
@@ -91,18 +88,19 @@ void addTypeMenu(Toolbox& box, QMenu& menu, const Joint& j) {
   }
 }
 
-void addSlotJointStart(Toolbox& box, QMenu& menu, PointId p, const char* tool, const char* text) {
-  menu.addAction(QCoreApplication::translate("Toolbox", text), &box, [&box, p, tool] {
-    static_cast<SlotJointTool*>(box.switchTo(QString::fromLatin1(tool)))->startAt(p);
+void addSlotJointStart(MenuActions& box, QMenu& menu, PointId p, const char* tool,
+                       const char* text) {
+  menu.addAction(QCoreApplication::translate("Toolbox", text), &menu, [&box, p, tool] {
+    box.startTool(QString::fromLatin1(tool), ToolStart{.point = p});
   });
 }
 
-void slotJointForm(PropertiesPanel& panel, JointId id) {
+void slotJointForm(Form& panel, JointId id) {
   addTypeChoice(panel, id);
   addPointPlace(panel, panel.document()->design().joint(id)->a);
 }
 
-void addPointPlace(PropertiesPanel& panel, PointId a) {
+void addPointPlace(Form& panel, PointId a) {
   Document* doc = panel.document();
   for (int axis = 0; axis < 2; ++axis)
     panel.addNumber(
@@ -110,14 +108,14 @@ void addPointPlace(PropertiesPanel& panel, PointId a) {
         [doc, a, axis] { return doc->design().point(a)->pos[axis]; },
         [&panel, a, axis](double v, QString* why) {
           return panel.change(
-              PropertiesPanel::tr("Move joint"),
+              Form::tr("Move joint"),
               [&](Mechanism& m, QString*) {
                 for (PointId q : pinnedTogether(m, a)) m.point(q)->pos[axis] = v;
                 return true;
               },
               why);
         },
-        PropertiesPanel::tr("mm"));
+        Form::tr("mm"));
 }
 
 }  // namespace linkage::ui

@@ -17,18 +17,18 @@ namespace linkage::ui {
 
 struct CanvasContext;
 class JointItem;
-class PropertiesPanel;
-class Tool;
-class Toolbox;
-struct ToolContext;
+class MenuActions;
+class Form;
 
 struct ToolSpec {
-  const char* name;                 // the action is "tool:<name>"
-  const char* text;                 // menu text (translated in the "Toolbox" context)
-  const char* key;                  // its shortcut
-  const char* tip;                  // status tip
-  const char* icon;                 // resources/icons/<icon>.svg
-  Tool* (*make)(ToolContext* ctx);  // nullptr: another tool makes it (a pin: link, ground)
+  const char* name;  // the action is "tool:<name>"
+  const char* text;  // menu text (translated in the "Toolbox" context)
+  const char* key;   // its shortcut
+  const char* tip;   // status tip
+  const char* icon;  // resources/icons/<icon>.svg
+  // The tool it is made with, by its registered name (ui/tools/tool_registry.h): "gear",
+  // "slotJoint" (told the kind); nullptr: the toolbox's own tools make it (a pin: link, ground).
+  const char* maker;
 };
 
 struct ElementUi {
@@ -37,11 +37,13 @@ struct ElementUi {
   // The item for a joint's symbol (placed at each pose by the scene); `d` for body numbers.
   JointItem* (*item)(const CanvasContext* ctx, const JointSymbol& s, const Drawing& d);
   ToolSpec tool;
-  void (*form)(PropertiesPanel& panel, JointId id);
-  void (*jointMenu)(Toolbox& box, QMenu& menu, const Joint& j);
+  // Its rows on a joint's Properties form, after the title (forms/form.h).
+  void (*form)(Form& panel, JointId id);
+  // Its entries on a joint's right-click menu, acting through the toolbox (menu_actions.h).
+  void (*jointMenu)(MenuActions& box, QMenu& menu, const Joint& j);
   // Entries on a moving body's and on a point's right-click menus (nullptr: none).
-  void (*bodyMenu)(Toolbox& box, QMenu& menu, BodyId body);
-  void (*pointMenu)(Toolbox& box, QMenu& menu, PointId point);
+  void (*bodyMenu)(MenuActions& box, QMenu& menu, BodyId body);
+  void (*pointMenu)(MenuActions& box, QMenu& menu, PointId point);
 };
 
 const ElementUi& elementUi(JointType t);
@@ -53,12 +55,13 @@ QString describe(JointType t);
 // into each other) in the panel and in a joint's menu; the point's coordinates, moving every
 // point pinned to it.
 int bodyNumber(const Drawing& d, BodyId b);
-void addTypeChoice(PropertiesPanel& panel, JointId id);
-void addTypeMenu(Toolbox& box, QMenu& menu, const Joint& j);
-void addPointPlace(PropertiesPanel& panel, PointId a);
+void addTypeChoice(Form& panel, JointId id);
+void addTypeMenu(MenuActions& box, QMenu& menu, const Joint& j);
+void addPointPlace(Form& panel, PointId a);
 // A point's menu entry that starts a slot joint's tool at the point ("... in a Slot Here").
-void addSlotJointStart(Toolbox& box, QMenu& menu, PointId p, const char* tool, const char* text);
+void addSlotJointStart(MenuActions& box, QMenu& menu, PointId p, const char* tool,
+                       const char* text);
 // A slot joint's panel rows: its type, its point's place.
-void slotJointForm(PropertiesPanel& panel, JointId id);
+void slotJointForm(Form& panel, JointId id);
 
 }  // namespace linkage::ui

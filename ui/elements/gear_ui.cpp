@@ -2,18 +2,15 @@
 // pivoted bodies; Shift for a belt), its type and ratio (edited), carrier and centres in the
 // panel, "Gears in Mesh" / "Belt" / "Edit Ratio..." on its menu, and "Couple to..." on a
 // pivoted body's menu.
-#include <QComboBox>
 #include <QMenu>
 
-#include "canvas/canvas_item.h"
-#include "canvas/gear_item.h"
 #include "document/document.h"
 #include "elements/element_ui.h"
+#include "elements/gear_item.h"
+#include "elements/menu_actions.h"
+#include "forms/form.h"
 #include "linkage/edits.h"
 #include "linkage/gear.h"
-#include "properties/properties_panel.h"
-#include "tools/gear_tool.h"
-#include "tools/toolbox.h"
 
 namespace linkage::ui {
 
@@ -24,22 +21,18 @@ JointItem* item(const CanvasContext* ctx, const JointSymbol& s, const Drawing& d
                       ctx->style.body(bodyNumber(d, s.bodies[1])));
 }
 
-Tool* tool(ToolContext* ctx) {
-  return new GearTool(ctx);
-}
-
-void form(PropertiesPanel& panel, JointId id) {
+void form(Form& panel, JointId id) {
   Document* doc = panel.document();
   auto joint = [doc, id] { return *doc->design().joint(id); };
   // Gears in mesh turn opposite ways (a negative ratio), a belt or chain the same way.
-  auto* type = new QComboBox;
-  type->addItems({PropertiesPanel::tr("gears in mesh (turn opposite ways)"),
-                  PropertiesPanel::tr("belt or chain (turn the same way)")});
   panel.addChoice(
-      PropertiesPanel::tr("Type"), type, [joint] { return gearRatio(joint()) < 0 ? 0 : 1; },
+      Form::tr("Type"),
+      {Form::tr("gears in mesh (turn opposite ways)"),
+       Form::tr("belt or chain (turn the same way)")},
+      [joint] { return gearRatio(joint()) < 0 ? 0 : 1; },
       [&panel, id](int i) {
         panel.change(
-            PropertiesPanel::tr("Gear type"),
+            Form::tr("Gear type"),
             [&](Mechanism& m, QString*) {
               Joint& j = *m.joint(id);
               if ((gearRatio(j) > 0) == (i == 1)) return false;  // the type it has: no edit
@@ -49,10 +42,10 @@ void form(PropertiesPanel& panel, JointId id) {
             nullptr);
       });
   panel.addNumber(
-      PropertiesPanel::tr("Ratio"), [joint] { return gearRatio(joint()); },
+      Form::tr("Ratio"), [joint] { return gearRatio(joint()); },
       [&panel, id](double v, QString* why) {
         return panel.change(
-            PropertiesPanel::tr("Gear ratio"),
+            Form::tr("Gear ratio"),
             [&](Mechanism& m, QString* w) {
               setGearRatio(*m.joint(id), v);
               const std::string problem = checkJoints(m);
@@ -62,43 +55,44 @@ void form(PropertiesPanel& panel, JointId id) {
             why);
       },
       QString());
-  panel.addInfo(PropertiesPanel::tr("Carrier"), [doc, joint] {
+  panel.addInfo(Form::tr("Carrier"), [doc, joint] {
     const Body* c = doc->design().body(joint().carrier);
-    return c ? QString::fromStdString(c->name) : PropertiesPanel::tr("the ground");
+    return c ? QString::fromStdString(c->name) : Form::tr("the ground");
   });
-  panel.addInfo(PropertiesPanel::tr("Centres"), [doc, joint] {
+  panel.addInfo(Form::tr("Centres"), [doc, joint] {
     const Mechanism& m = doc->design();
     return QStringLiteral("%1, %2").arg(QString::fromStdString(m.pointLabel(joint().a)),
                                         QString::fromStdString(m.pointLabel(joint().b)));
   });
 }
 
-void jointMenu(Toolbox& box, QMenu& menu, const Joint& j) {
+void jointMenu(MenuActions& box, QMenu& menu, const Joint& j) {
   const JointId id = j.id;
   const QString label = QString::fromStdString(jointName(box.document()->design(), id));
   for (bool belt : {false, true}) {
-    QAction* a = menu.addAction(
-        belt ? Toolbox::tr("Belt (the same way)") : Toolbox::tr("Gears in Mesh (opposite ways)"),
-        &box, [&box, id, label, belt] {
-          box.editWith(Toolbox::tr("Change %1").arg(label), [&](Mechanism& n, std::string&) {
-            Joint& g = *n.joint(id);
-            if ((gearRatio(g) > 0) != belt) setGearRatio(g, -gearRatio(g));
-            return true;
-          });
-        });
+    QAction* a = menu.addAction(belt ? MenuActions::tr("Belt (the same way)")
+                                     : MenuActions::tr("Gears in Mesh (opposite ways)"),
+                                &menu, [&box, id, label, belt] {
+                                  box.editWith(MenuActions::tr("Change %1").arg(label),
+                                               [&](Mechanism& n, std::string&) {
+                                                 Joint& g = *n.joint(id);
+                                                 if ((gearRatio(g) > 0) != belt)
+                                                   setGearRatio(g, -gearRatio(g));
+                                                 return true;
+                                               });
+                                });
     a->setCheckable(true);
     a->setChecked((gearRatio(j) > 0) == belt);
   }
   // The ratio typed where it always is, the Properties: one field, one way to change it.
-  menu.addAction(Toolbox::tr("Edit &Ratio..."), &box,
-                 [&box, id] { box.editField(id, PropertiesPanel::tr("Ratio")); });
+  menu.addAction(MenuActions::tr("Edit &Ratio..."), &menu,
+                 [&box, id] { box.editField(id, Form::tr("Ratio")); });
 }
 
-void bodyMenu(Toolbox& box, QMenu& menu, BodyId body) {
+void bodyMenu(MenuActions& box, QMenu& menu, BodyId body) {
   if (pivotsOf(box.document()->design(), body).empty()) return;
-  menu.addAction(Toolbox::tr("Couple to (Gear or Belt)..."), &box, [&box, body] {
-    static_cast<GearTool*>(box.switchTo(QStringLiteral("gear")))->startAt(body);
-  });
+  menu.addAction(MenuActions::tr("Couple to (Gear or Belt)..."), &menu,
+                 [&box, body] { box.startTool(QStringLiteral("gear"), ToolStart{.body = body}); });
 }
 
 }  // namespace
@@ -111,7 +105,7 @@ const ElementUi& gearUi() {
       {"gear", QT_TRANSLATE_NOOP("Toolbox", "G&ear or Belt"), "E",
        QT_TRANSLATE_NOOP("Toolbox",
                          "Couple two pivoted bodies by gears in mesh, or a belt (Shift)"),
-       "tool-gear", tool},
+       "tool-gear", "gear"},
       form,
       jointMenu,
       bodyMenu,

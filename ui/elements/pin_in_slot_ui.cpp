@@ -2,9 +2,8 @@
 // point, then the slot), its type (it changes into a slider) and place in the panel and menu.
 #include <QMenu>
 
-#include "canvas/joint_items.h"
 #include "elements/element_ui.h"
-#include "tools/slot_tools.h"
+#include "elements/pin_item.h"
 
 namespace linkage::ui {
 
@@ -14,11 +13,7 @@ JointItem* item(const CanvasContext* ctx, const JointSymbol& s, const Drawing&) 
   return new PinItem(ctx, s.joint, PinItem::Kind::InSlot);
 }
 
-Tool* tool(ToolContext* ctx) {
-  return new SlotJointTool(ctx, JointType::PinInSlot);
-}
-
-void pointMenu(Toolbox& box, QMenu& menu, PointId p) {
+void pointMenu(MenuActions& box, QMenu& menu, PointId p) {
   addSlotJointStart(box, menu, p, "pinInSlot",
                     QT_TRANSLATE_NOOP("Toolbox", "Pin in a Slot Here..."));
 }
@@ -32,7 +27,7 @@ const ElementUi& pinInSlotUi() {
       item,
       {"pinInSlot", QT_TRANSLATE_NOOP("Toolbox", "&Pin in Slot"), "P",
        QT_TRANSLATE_NOOP("Toolbox", "Let a point run in a slot, turning freely"),
-       "tool-pin-in-slot", tool},
+       "tool-pin-in-slot", "slotJoint"},
       slotJointForm,
       addTypeMenu,
       nullptr,

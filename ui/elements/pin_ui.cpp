@@ -4,12 +4,13 @@
 #include <QCheckBox>
 #include <QMenu>
 
-#include "canvas/joint_items.h"
 #include "document/document.h"
 #include "elements/element_ui.h"
+#include "elements/menu_actions.h"
+#include "elements/pin_item.h"
+#include "forms/driver_rows.h"
+#include "forms/form.h"
 #include "linkage/edits.h"
-#include "properties/properties_panel.h"
-#include "tools/toolbox.h"
 
 namespace linkage::ui {
 
@@ -19,18 +20,18 @@ JointItem* item(const CanvasContext* ctx, const JointSymbol& s, const Drawing&) 
   return new PinItem(ctx, s.joint, s.groundPivot ? PinItem::Kind::GroundPivot : PinItem::Kind::Pin);
 }
 
-void form(PropertiesPanel& panel, JointId id) {
+void form(Form& panel, JointId id) {
   Document* doc = panel.document();
   addTypeChoice(panel, id);
   addPointPlace(panel, doc->design().joint(id)->a);
   auto isDriver = [doc, id] { return doc->design().driver && doc->design().driver->joint == id; };
   panel.addCheck(
-      PropertiesPanel::tr("Driver"), PropertiesPanel::tr("drives the mechanism (the crank)"),
-      isDriver, [isDriver] { return !isDriver(); },
+      Form::tr("Driver"), Form::tr("drives the mechanism (the crank)"), isDriver,
+      [isDriver] { return !isDriver(); },
       [&panel, id](bool) {
         QString why;
         panel.change(
-            PropertiesPanel::tr("Driver"),
+            Form::tr("Driver"),
             [&](Mechanism& m, QString* w) {
               std::string s;
               const bool ok = setDriver(m, id, &s);
@@ -39,15 +40,15 @@ void form(PropertiesPanel& panel, JointId id) {
             },
             &why);
       });
-  if (isDriver()) panel.fillDriver();
+  if (isDriver()) addDriverRows(panel);
 }
 
-void jointMenu(Toolbox& box, QMenu& menu, const Joint& j) {
+void jointMenu(MenuActions& box, QMenu& menu, const Joint& j) {
   const Mechanism& m = box.document()->design();
   const JointId id = j.id;
   const QString label = QString::fromStdString(jointName(m, id));
-  QAction* drive = menu.addAction(Toolbox::tr("Make It the Driver"), &box, [&box, id, label] {
-    box.editWith(Toolbox::tr("Driver at %1").arg(label),
+  QAction* drive = menu.addAction(MenuActions::tr("Make It the Driver"), &menu, [&box, id, label] {
+    box.editWith(MenuActions::tr("Driver at %1").arg(label),
                  [&](Mechanism& n, std::string& why) { return setDriver(n, id, &why); });
   });
   drive->setEnabled(!(m.driver && m.driver->joint == id));

@@ -2,9 +2,8 @@
 // the slot), its type (it changes into a pin in the slot) and place in the panel and menu.
 #include <QMenu>
 
-#include "canvas/joint_items.h"
+#include "elements/block_item.h"
 #include "elements/element_ui.h"
-#include "tools/slot_tools.h"
 
 namespace linkage::ui {
 
@@ -14,11 +13,7 @@ JointItem* item(const CanvasContext* ctx, const JointSymbol& s, const Drawing& d
   return new BlockItem(ctx, s.joint, s.bodies[0], bodyNumber(d, s.bodies[0]));
 }
 
-Tool* tool(ToolContext* ctx) {
-  return new SlotJointTool(ctx, JointType::Slider);
-}
-
-void pointMenu(Toolbox& box, QMenu& menu, PointId p) {
+void pointMenu(MenuActions& box, QMenu& menu, PointId p) {
   addSlotJointStart(box, menu, p, "block",
                     QT_TRANSLATE_NOOP("Toolbox", "Slider Block in a Slot Here..."));
 }
@@ -32,7 +27,7 @@ const ElementUi& sliderUi() {
       item,
       {"block", QT_TRANSLATE_NOOP("Toolbox", "Slider &Block"), "B",
        QT_TRANSLATE_NOOP("Toolbox", "Put a slider block at a point, sliding in a slot"),
-       "tool-block", tool},
+       "tool-block", "slotJoint"},
       slotJointForm,
       addTypeMenu,
       nullptr,

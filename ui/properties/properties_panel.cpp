@@ -15,6 +15,7 @@
 #include "document/shown_numbers.h"
 #include "linkage/edits.h"
 #include "linkage/io/numbers.h"
+#include "properties/forms.h"
 #include "properties/number_keys.h"
 #include "tools/selection.h"
 
@@ -67,6 +68,7 @@ void PropertiesPanel::setDocument(Document* doc, Selection* selection) {
   if (selection_) disconnect(selection_, nullptr, this, nullptr);
   doc_ = doc;
   selection_ = selection;
+  shape_.clear();  // the rows read the document they were made for
   if (doc_) connect(doc_, &Document::designChanged, this, &PropertiesPanel::rebuild);
   if (selection_) connect(selection_, &Selection::changed, this, &PropertiesPanel::rebuild);
   rebuild();
@@ -97,64 +99,57 @@ void PropertiesPanel::refresh() {
   for (const Row& r : rows_) r.refresh();
 }
 
+void PropertiesPanel::addSection(const FormSection& section) {
+  sections_.push_back(section);
+  shape_.clear();
+  rebuild();
+}
+
+FormTarget PropertiesPanel::target() const {
+  FormTarget t;
+  if (selection_->size() != 1) return t;
+  if (!selection_->bodies.empty()) t.body = selection_->bodies[0];
+  if (!selection_->points.empty()) t.point = selection_->points[0];
+  if (!selection_->joints.empty()) t.joint = selection_->joints[0];
+  if (!selection_->slots_.empty()) t.slot = selection_->slots_[0];
+  return t;
+}
+
 void PropertiesPanel::rebuild() {
   if (!doc_ || !selection_) return;
   const Mechanism& m = doc_->design();
-  // One thing selected is edited; several or none: the mechanism.
-  // The rows are made for a shape and only refreshed while it stays: the shape says everything
-  // the rows are made from (a bar's two points, a joint's type), so that an edit or an undo that
-  // changes it (a bar turned plate, a point gone) makes them again, never reads what is gone.
-  QString shape = QStringLiteral("mechanism");
-  if (selection_->size() == 1) {
-    if (!selection_->bodies.empty() && m.contains(selection_->bodies[0])) {
-      const BodyId b = selection_->bodies[0];
-      shape =
-          QStringLiteral("body %1%2 points").arg(b.value).arg(m.body(b)->ground ? " ground" : "");
-      for (const Point& p : m.points)
-        if (p.body == b) shape += QStringLiteral(" %1").arg(p.id.value);
-      shape += loadsShape(m, b, PointId{});
-    } else if (!selection_->points.empty() && m.contains(selection_->points[0])) {
-      // Its distance and angle are from another point of its link (fillPolar): those too.
-      const Point* pt = m.point(selection_->points[0]);
-      shape = QStringLiteral("point %1 on %2 with").arg(pt->id.value).arg(pt->body.value);
-      for (const Point& p : m.points)
-        if (p.body == pt->body) shape += QStringLiteral(" %1").arg(p.id.value);
-      shape += loadsShape(m, BodyId{}, selection_->points[0]);
-    } else if (!selection_->joints.empty() && m.contains(selection_->joints[0])) {
-      const Joint* j = m.joint(selection_->joints[0]);
-      shape = QStringLiteral("joint %1 type %2 at %3")
-                  .arg(j->id.value)
-                  .arg(int(j->type.index))
-                  .arg(j->a.value);
-    } else if (!selection_->slots_.empty() && m.contains(selection_->slots_[0])) {
-      const Slot* sl = m.slot(selection_->slots_[0]);
-      shape = QStringLiteral("slot %1%2").arg(sl->id.value).arg(sl->arc() ? " arc" : "");
+  // One thing selected is edited; several or none: the mechanism. The rows are made for a
+  // shape, the form's and its sections', and only refreshed while it stays (forms.h).
+  const FormTarget t = target();
+  const FormDescriptor* form = nullptr;
+  for (const FormDescriptor* d : formDescriptors())
+    if (d->takes(m, t)) {
+      form = d;
+      break;
     }
-  }
-  // A driver that appears or goes changes the rows too.
-  shape += m.driver ? QStringLiteral(" driven %1").arg(m.driver->joint.value) : QString();
+  if (!form) return;
+  auto joins = [form](const FormSection& s) { return qstrcmp(s.form, form->name) == 0; };
+  QString shape = QString::fromLatin1(form->name) + QLatin1Char(' ') + form->shape(m, t);
+  for (const FormSection& s : sections_)
+    if (joins(s)) shape += QLatin1Char(';') + s.shape(m, t);
   if (shape == shape_) {
     refresh();
     return;
   }
   shape_ = shape;
   clearRows();
-  if (shape.startsWith(QStringLiteral("body"))) {
-    // Its geometry first; then, for a moving link, its mass and loads.
-    fillBody(selection_->bodies[0]);
-    if (!m.body(selection_->bodies[0])->ground) {
-      fillMass(selection_->bodies[0]);
-      fillLoads(selection_->bodies[0], PointId{});
-    }
-  } else if (shape.startsWith(QStringLiteral("point")))
-    fillPoint(selection_->points[0]);
-  else if (shape.startsWith(QStringLiteral("joint")))
-    fillJoint(selection_->joints[0]);
-  else if (shape.startsWith(QStringLiteral("slot")))
-    fillSlot(selection_->slots_[0]);
-  else
-    fillMechanism();
+  form->fill(*this, t);
+  for (const FormSection& s : sections_)
+    if (joins(s)) s.fill(*this, t);
   emit rebuilt();
+}
+
+void PropertiesPanel::setTitle(const QString& html) {
+  title_->setText(html);
+}
+
+void PropertiesPanel::setTip(const QString& label, const QString& tip) {
+  if (QWidget* f = field(label)) f->setToolTip(tip);
 }
 
 bool PropertiesPanel::change(const QString& text,
@@ -176,15 +171,27 @@ void PropertiesPanel::addInfo(const QString& label, std::function<QString()> val
   rows_.push_back({label, l, [l, value] { l->setText(value()); }});
 }
 
-void PropertiesPanel::addChoice(const QString& label, QComboBox* box, std::function<int()> current,
-                                std::function<void(int)> activated) {
+void PropertiesPanel::addChoice(const QString& label, const QStringList& items,
+                                std::function<int()> current, std::function<void(int)> chosen) {
+  auto* box = new QComboBox;
+  box->addItems(items);
   box->setCurrentIndex(current());
   form_->addRow(label, box);
   rows_.push_back({label, box, [box, current] {
                      QSignalBlocker b(box);
                      box->setCurrentIndex(current());
                    }});
-  connect(box, &QComboBox::activated, this, std::move(activated));
+  connect(box, &QComboBox::activated, this, std::move(chosen));
+}
+
+std::function<int()> PropertiesPanel::addSelector(const QString& label, const QStringList& items) {
+  auto* box = new QComboBox;
+  box->addItems(items);
+  form_->addRow(label, box);
+  rows_.push_back({label, box, [] {}});
+  connect(box, &QComboBox::currentIndexChanged, this, [this] { refresh(); });
+  const QPointer<QComboBox> held(box);
+  return [held] { return held ? held->currentIndex() : 0; };
 }
 
 void PropertiesPanel::addButton(const QString& label, const QString& text,

@@ -6,63 +6,64 @@
 // coordinates (the sketch, at crank angle -start), typed values taken exactly (never snapped)
 // and shown as typed; values of arithmetic are shown rounded for people (shownText), the model
 // and the file keeping every digit. Every change is one undo step.
+//
+// The panel is a form builder (forms/form.h): which rows a selection has is said by the form
+// descriptors (forms.h, one file each) and the sections other folders add (addSection).
 #pragma once
 
 #include <QPointer>
 #include <QWidget>
 #include <functional>
-#include <optional>
 #include <vector>
 
-#include "linkage/model.h"
+#include "forms/form.h"
 
-class QComboBox;
 class QFormLayout;
 class QLabel;
-class QLineEdit;
 
 namespace linkage::ui {
 
 class Document;
 class Selection;
 
-class PropertiesPanel : public QWidget {
+class PropertiesPanel : public QWidget, public Form {
   Q_OBJECT
 
  public:
   explicit PropertiesPanel(QWidget* parent = nullptr);
   void setDocument(Document* doc, Selection* selection);
+  // Rows another folder adds after a form's own (the forces' mass and loads), in the order
+  // added; the rows are made anew.
+  void addSection(const FormSection& section);
   // The field with this label (for tests and scripts), or nullptr.
   QWidget* field(const QString& label) const;
   // The label of a field (the inverse of field()), or empty.
   QString labelOf(const QWidget* editor) const;
   QString title() const;
-
-  // What the element kinds' forms (ui/elements/) build their rows with.
-  Document* document() const { return doc_; }
-  // Editors that commit on Enter or leaving the field; a refused value turns the field red and
-  // puts the old one back.
-  void addText(const QString& label, std::function<QString()> value,
-               std::function<bool(const QString&, QString*)> commit);
-  void addNumber(const QString& label, std::function<double()> value,
-                 std::function<bool(double, QString*)> commit, const QString& unit);
-  void addInfo(const QString& label, std::function<QString()> value);
-  // A choice (its items already in `box`), set from current() and acting on activation.
-  void addChoice(const QString& label, QComboBox* box, std::function<int()> current,
-                 std::function<void(int)> activated);
-  void addCheck(const QString& label, const QString& text, std::function<bool()> checked,
-                std::function<bool()> enabled, std::function<void(bool)> clicked);
-  // Applies a change to a copy of the design as one undo step.
-  bool change(const QString& text, const std::function<bool(Mechanism&, QString*)>& edit,
-              QString* why);
-  // The driver's speed, direction and start angle.
-  void fillDriver();
   // The message line now shows `text`: a field refused with another message is no longer red.
   void messageShown(const QString& text);
   // The field last marked red for a refused value, while it is.
   QWidget* refusedField() const { return refused_; }
-  // A button that acts at once (a dialog, typically).
-  void addButton(const QString& label, const QString& text, std::function<void()> clicked);
+
+  // The rows the forms are made of (forms/form.h).
+  Document* document() const override { return doc_; }
+  void setTitle(const QString& html) override;
+  void addText(const QString& label, std::function<QString()> value,
+               std::function<bool(const QString&, QString*)> commit) override;
+  void addNumber(const QString& label, std::function<double()> value,
+                 std::function<bool(double, QString*)> commit, const QString& unit) override;
+  void addInfo(const QString& label, std::function<QString()> value) override;
+  void addChoice(const QString& label, const QStringList& items, std::function<int()> current,
+                 std::function<void(int)> chosen) override;
+  std::function<int()> addSelector(const QString& label, const QStringList& items) override;
+  void addCheck(const QString& label, const QString& text, std::function<bool()> checked,
+                std::function<bool()> enabled, std::function<void(bool)> clicked) override;
+  void addButton(const QString& label, const QString& text, std::function<void()> clicked) override;
+  void setTip(const QString& label, const QString& tip) override;
+  bool change(const QString& text, const std::function<bool(Mechanism&, QString*)>& edit,
+              QString* why) override;
+  void warn(const QString& text) override { emit message(text, true); }
+  QWidget* widget() override { return this; }
 
  Q_SIGNALS:
   void message(const QString& text, bool warning);
@@ -78,38 +79,18 @@ class PropertiesPanel : public QWidget {
   void rebuild();
   void refresh();
   void clearRows();
-  void fillMechanism();
-  void fillBody(BodyId id);
-  void fillPoint(PointId id);
-  // A triangle's three sides; a point's distance and angle from another of its link.
-  void fillTriangle(BodyId id);
-  void fillPolar(PointId id);
-  // A body's mass, centre of mass, moment of inertia, counterweights (dynamics_forms.cpp); the
-  // loads on a body (torques) or at a point (forces).
-  void fillMass(BodyId id);
-  void fillLoads(BodyId body, PointId point);
-  void fillLoad(LoadId id, int number);
-  void estimateMass(BodyId id);
-  void fillJoint(JointId id);
-  void fillSlot(SlotId id);
-  void fillSlotShape(SlotId id);
-  void fillSlotEnds(SlotId id);
-  void fillArc(SlotId id);
-  bool setSlot(SlotId id, const Vec2& p0, const std::optional<Vec2>& mid, const Vec2& p1,
-               QString* why);
+  // The one thing selected (none: the mechanism).
+  FormTarget target() const;
 
   QPointer<Document> doc_;
   Selection* selection_ = nullptr;
   QLabel* title_;
   QFormLayout* form_;
   std::vector<Row> rows_;
+  std::vector<FormSection> sections_;
   QString shape_;  // what the rows are for: rebuilt when it changes, refreshed otherwise
   QPointer<QWidget> refused_;
   QString refusal_;  // the message that says why
 };
-
-// What of the loads and counterweights a form's rows depend on (rows are made anew when it
-// changes): the loads on `body` (torques) or at `point`, and the body's counterweights.
-QString loadsShape(const Mechanism& m, BodyId body, PointId point);
 
 }  // namespace linkage::ui

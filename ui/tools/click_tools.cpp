@@ -5,8 +5,21 @@
 #include "document/document.h"
 #include "linkage/edits.h"
 #include "linkage/elements.h"
+#include "tools/tool_registry.h"
 
 namespace linkage::ui {
+
+namespace {
+[[maybe_unused]] const bool ground = registerTool(
+    "ground",
+    [](ToolContext* ctx, std::optional<JointType>) -> Tool* { return new GroundTool(ctx); });
+[[maybe_unused]] const bool driver = registerTool(
+    "driver",
+    [](ToolContext* ctx, std::optional<JointType>) -> Tool* { return new DriverTool(ctx); });
+[[maybe_unused]] const bool output = registerTool(
+    "output",
+    [](ToolContext* ctx, std::optional<JointType>) -> Tool* { return new OutputTool(ctx); });
+}  // namespace
 
 QString GroundTool::hint() const {
   return tr(

@@ -6,8 +6,14 @@
 #include "document/document.h"
 #include "linkage/edits.h"
 #include "tools/selection.h"
+#include "tools/tool_registry.h"
 
 namespace linkage::ui {
+
+namespace {
+[[maybe_unused]] const bool registered = registerTool(
+    "gear", [](ToolContext* ctx, std::optional<JointType>) -> Tool* { return new GearTool(ctx); });
+}  // namespace
 
 QString GearTool::hint() const {
   if (!first_) return tr("Gear or belt: click a body that turns about a pivot");

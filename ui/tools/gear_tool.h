@@ -19,6 +19,7 @@ class GearTool : public Tool {
   bool key(QKeyEvent* e) override;
   // The first body is chosen (the body's menu: "Couple to..."): the next click picks the second.
   void startAt(BodyId first);
+  void start(const ToolStart& s) override { startAt(s.body); }
 
  private:
   BodyId first_;

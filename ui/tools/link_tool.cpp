@@ -4,8 +4,14 @@
 #include "document/commands.h"
 #include "document/document.h"
 #include "tools/tool_overlay.h"
+#include "tools/tool_registry.h"
 
 namespace linkage::ui {
+
+namespace {
+[[maybe_unused]] const bool registered = registerTool(
+    "link", [](ToolContext* ctx, std::optional<JointType>) -> Tool* { return new LinkTool(ctx); });
+}  // namespace
 
 QString LinkTool::hint() const {
   if (vertices_.empty())

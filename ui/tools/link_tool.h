@@ -25,6 +25,7 @@ class LinkTool : public Tool {
   bool drawing() const { return !vertices_.empty(); }
   // Starts a link at a point (the context menu's "attach a link here").
   void startAt(const LinkVertex& v);
+  void start(const ToolStart& s) override { startAt(LinkVertex{s.at, s.point}); }
 
  private:
   void finish();

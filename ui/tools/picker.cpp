@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "canvas/canvas_scene.h"
-#include "canvas/gear_item.h"
 #include "linkage/elements.h"
 #include "linkage/guide.h"
 
@@ -17,16 +16,15 @@ namespace {
 void pickCoupling(const CanvasScene& s, const Vec2& world, double px, Pick& pick) {
   double bestLine = kCouplingPixels * px, bestArea = INFINITY;  // mm
   JointId inside;
-  for (JointItem* j : s.jointItems()) {
-    auto* g = dynamic_cast<GearItem*>(j);
-    if (!g || !g->isVisible()) continue;
-    if (const double d = g->distanceToLines(world); d < bestLine) {
+  for (const JointItem* j : s.jointItems()) {
+    if (!j->pickedByLines() || !j->isVisible()) continue;
+    if (const double d = j->distanceToLines(world); d < bestLine) {
       bestLine = d;
-      pick.coupling = g->joint();
+      pick.coupling = j->joint();
       pick.onCouplingLines = true;
-    } else if (const double r = g->radiusHolding(world); r < bestArea) {
+    } else if (const double r = j->radiusHolding(world); r < bestArea) {
       bestArea = r;
-      inside = g->joint();
+      inside = j->joint();
     }
   }
   if (!pick.coupling) pick.coupling = inside;
@@ -82,11 +80,13 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   // instant centres shown a millisecond or more.
   const QPointF q(world.x(), world.y());
   for (QGraphicsItem* item : s.items(q, Qt::IntersectsItemBoundingRect, Qt::DescendingOrder)) {
+    // A body, or a joint's symbol that draws one (a slider's block).
     auto* b = dynamic_cast<BodyItem*>(item);
-    auto* bl = b ? nullptr : dynamic_cast<BlockItem*>(item);
-    if ((!b && !bl) || !item->isVisible() || !item->contains(item->mapFromScene(q))) continue;
-    pick.body = b ? b->id() : bl->body();
-    pick.onBlock = bl != nullptr;
+    auto* j = b ? nullptr : dynamic_cast<JointItem*>(item);
+    const BodyId drawn = j ? j->drawnBody() : BodyId{};
+    if ((!b && !drawn) || !item->isVisible() || !item->contains(item->mapFromScene(q))) continue;
+    pick.body = b ? b->id() : drawn;
+    pick.onBlock = !b;
     break;
   }
   if (!pick.body && pick.point) pick.body = m.point(pick.point)->body;

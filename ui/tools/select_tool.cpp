@@ -6,8 +6,15 @@
 #include "linkage/edits.h"
 #include "tools/selection.h"
 #include "tools/tool_overlay.h"
+#include "tools/tool_registry.h"
 
 namespace linkage::ui {
+
+namespace {
+[[maybe_unused]] const bool registered = registerTool(
+    "select",
+    [](ToolContext* ctx, std::optional<JointType>) -> Tool* { return new SelectTool(ctx); });
+}  // namespace
 
 namespace {
 constexpr int kDragStartPixels = 4;

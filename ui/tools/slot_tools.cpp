@@ -7,8 +7,20 @@
 #include "linkage/elements.h"
 #include "linkage/guide.h"
 #include "tools/tool_overlay.h"
+#include "tools/tool_registry.h"
 
 namespace linkage::ui {
+
+namespace {
+[[maybe_unused]] const bool slotTool = registerTool(
+    "slot", [](ToolContext* ctx, std::optional<JointType>) -> Tool* { return new SlotTool(ctx); });
+// The slot joints' tool, for the kind whose tool it is (ui/elements/: a slider block, a pin in
+// a slot).
+[[maybe_unused]] const bool slotJoint =
+    registerTool("slotJoint", [](ToolContext* ctx, std::optional<JointType> kind) -> Tool* {
+      return kind ? new SlotJointTool(ctx, *kind) : nullptr;
+    });
+}  // namespace
 
 QString SlotTool::hint() const {
   if (!start_)

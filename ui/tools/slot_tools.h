@@ -22,6 +22,7 @@ class SlotTool : public Tool {
   bool key(QKeyEvent* e) override;
   // Starts a slot at a place on a body (the context menu's "add a slot from here").
   void startAt(const Vec2& at, BodyId body);
+  void start(const ToolStart& s) override { startAt(s.at, s.body); }
 
  private:
   // The end is given: a straight slot, or with `arc` wait for the point on the way.
@@ -47,6 +48,7 @@ class SlotJointTool : public Tool {
   bool key(QKeyEvent* e) override;
   // The point is chosen (the context menu): the next click picks the slot.
   void startAt(PointId p);
+  void start(const ToolStart& s) override { startAt(s.point); }
 
  private:
   JointType type_;

@@ -8,6 +8,7 @@
 #include <QPointF>
 #include <functional>
 
+#include "elements/menu_actions.h"
 #include "tools/picker.h"
 
 class QMenu;
@@ -61,6 +62,9 @@ class Tool : public QObject {
   virtual bool key(QKeyEvent*) { return false; }
   // A right click: true when the tool used it (ending a link); else the context menu opens.
   virtual bool rightClick(const CanvasMouse&) { return false; }
+  // Made current from a right-click menu, at a thing (the point a link starts at): the tool
+  // takes what it starts from; the others ignore it.
+  virtual void start(const ToolStart&) {}
 
  Q_SIGNALS:
   void hintChanged();

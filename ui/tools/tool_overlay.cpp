@@ -4,7 +4,6 @@
 #include <QPainter>
 
 #include "canvas/canvas_scene.h"
-#include "canvas/gear_item.h"
 #include "linkage/guide.h"
 #include "tools/selection.h"
 
@@ -12,9 +11,10 @@ namespace linkage::ui {
 
 namespace {
 
-const GearItem* gearItem(const CanvasScene& s, JointId j) {
+// The symbol of `j` when it is outlined by lines of its own (a gear's or belt's), else nullptr.
+const JointItem* linesItem(const CanvasScene& s, JointId j) {
   for (const JointItem* item : s.jointItems())
-    if (item->joint() == j && item->isVisible()) return dynamic_cast<const GearItem*>(item);
+    if (item->joint() == j && item->isVisible()) return item->pickedByLines() ? item : nullptr;
   return nullptr;
 }
 
@@ -96,7 +96,7 @@ void ToolOverlay::paintSelection(QPainter* p) const {
     if (at.allFinite()) p->drawEllipse(toQt(at), 8 * u, 8 * u);
   }
   for (JointId j : selection_->joints)
-    if (const GearItem* g = gearItem(*scene_, j)) {
+    if (const JointItem* g = linesItem(*scene_, j)) {
       // A gear or belt: its pitch circles (and belt) traced over.
       p->setPen(cosmetic(st.highlight, 3));
       p->drawPath(g->lines());
@@ -133,7 +133,7 @@ void ToolOverlay::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) 
     }
   // The gear or belt whose lines are under the cursor, traced.
   if (hover_.coupling && hover_.onCouplingLines)
-    if (const GearItem* g = gearItem(*scene_, hover_.coupling)) {
+    if (const JointItem* g = linesItem(*scene_, hover_.coupling)) {
       p->setPen(cosmetic(st.highlight, 1.5, Qt::DashLine));
       p->setBrush(Qt::NoBrush);
       p->drawPath(g->lines());

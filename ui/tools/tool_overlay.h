@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "canvas/canvas_item.h"
+#include "draw/canvas_item.h"
 #include "tools/picker.h"
 
 namespace linkage::ui {

@@ -10,13 +10,10 @@
 #include "document/document.h"
 #include "elements/element_ui.h"
 #include "linkage/edits.h"
-#include "tools/click_tools.h"
-#include "tools/link_tool.h"
 #include "tools/pick_point_tool.h"
-#include "tools/select_tool.h"
 #include "tools/selection.h"
-#include "tools/slot_tools.h"
 #include "tools/tool_overlay.h"
+#include "tools/tool_registry.h"
 
 namespace linkage::ui {
 
@@ -36,6 +33,10 @@ Toolbox::Toolbox(ToolContext ctx, QWidget* actionParent) : QObject(actionParent)
   };
   auto tool = [&](const QString& name, const QString& text, const QKeySequence& key,
                   const QString& tip, Tool* t) {
+    if (!t) {
+      qWarning("Toolbox: no tool is registered for \"%s\"", qPrintable(name));
+      return;
+    }
     QAction* a = make(QStringLiteral("tool:") + name, text, key, tip);
     a->setCheckable(true);
     a->setData(name);
@@ -54,25 +55,27 @@ Toolbox::Toolbox(ToolContext ctx, QWidget* actionParent) : QObject(actionParent)
   };
   tool("select", tr("&Select"), QKeySequence(tr("S")),
        tr("Select and drag: a drag moves the mechanism, Ctrl+drag changes the design"),
-       new SelectTool(&ctx_));
+       makeTool(QStringLiteral("select"), &ctx_));
   tool("link", tr("&Link"), QKeySequence(tr("L")),
        tr("Draw a link point by point; on a point of another link it pins there"),
-       new LinkTool(&ctx_));
+       makeTool(QStringLiteral("link"), &ctx_));
   tool("ground", tr("&Ground Pivot"), QKeySequence(tr("G")),
-       tr("Pin a point to the ground, or put a ground point on the canvas"), new GroundTool(&ctx_));
+       tr("Pin a point to the ground, or put a ground point on the canvas"),
+       makeTool(QStringLiteral("ground"), &ctx_));
   tool("slot", tr("Sl&ot"), QKeySequence(tr("T")),
-       tr("Draw a slot on the link under the first click, or in the ground"), new SlotTool(&ctx_));
+       tr("Draw a slot on the link under the first click, or in the ground"),
+       makeTool(QStringLiteral("slot"), &ctx_));
   // The element kinds' own tools, in the kinds' order (ui/elements/element_ui.h).
   for (const ElementUi* k : elementUis()) {
     const ToolSpec& t = k->tool;
-    if (!t.make) continue;
+    if (!t.maker) continue;
     tool(QString::fromLatin1(t.name), tr(t.text), QKeySequence(tr(t.key)), tr(t.tip),
-         t.make(&ctx_));
+         makeTool(QString::fromLatin1(t.maker), &ctx_, k->type));
   }
   tool("driver", tr("&Driver"), QKeySequence(tr("M")), tr("Make a pin the driver (the crank)"),
-       new DriverTool(&ctx_));
+       makeTool(QStringLiteral("driver"), &ctx_));
   tool("output", tr("O&utput Point"), QKeySequence(tr("O")), tr("Trace, plot and export a point"),
-       new OutputTool(&ctx_));
+       makeTool(QStringLiteral("output"), &ctx_));
 
   picker_ = std::make_unique<PickPointTool>(&ctx_);
   connect(picker_.get(), &Tool::hintChanged, this, [this] {
@@ -132,9 +135,9 @@ void Toolbox::editWith(const QString& text,
   commitEdit(ctx_.doc, text, std::move(next));
 }
 
-Tool* Toolbox::switchTo(const QString& name) {
+void Toolbox::startTool(const QString& name, const ToolStart& from) {
   setTool(name);
-  return current_;
+  if (const QAction* a = toolAction(name); a && a->isChecked()) current_->start(from);
 }
 
 void Toolbox::pickPoint(const QString& purpose, std::function<void(PointId)> picked,

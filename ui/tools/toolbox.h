@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "elements/menu_actions.h"
 #include "tools/tool.h"
 
 class QMenu;
@@ -17,7 +18,7 @@ namespace linkage::ui {
 
 class PickPointTool;
 
-class Toolbox : public QObject {
+class Toolbox : public QObject, public MenuActions {
   Q_OBJECT
 
  public:
@@ -27,7 +28,8 @@ class Toolbox : public QObject {
   // The tool actions in toolbar order (objectName "tool:select", "tool:link", ...).
   const std::vector<QAction*>& toolActions() const { return actions_; }
   // A tool's action by the tool's name ("select", "link", ...; the element kinds' tools come
-  // from a table, ui/elements/), or nullptr.
+  // from their table, ui/elements/, made by the tools registered by name,
+  // tools/tool_registry.h), or nullptr.
   QAction* toolAction(const QString& name) const;
   QAction* deleteAction() const { return delete_; }
   QAction* flipAction() const { return flip_; }
@@ -40,15 +42,12 @@ class Toolbox : public QObject {
   // The menu a right click at `e` opens (what can be done with what is there).
   QMenu* contextMenu(const CanvasMouse& e, QWidget* parent);
 
-  // What the element kinds' menus (ui/elements/) work with: the document; an edit of a copy
-  // of the design made as one undo step (drawn where the mechanism is now), or refused with
-  // the reason on the status bar; a tool made current, returned.
-  Document* document() const { return ctx_.doc; }
-  void editWith(const QString& text, const std::function<bool(Mechanism&, std::string&)>& change);
-  Tool* switchTo(const QString& name);
-  // Selects `joint` alone and asks for its Properties field named `label`, the keyboard in it
-  // (a gear's "Edit Ratio..." on its menu).
-  void editField(JointId joint, const QString& label);
+  // What the element kinds' menus (ui/elements/) act through (elements/menu_actions.h).
+  Document* document() const override { return ctx_.doc; }
+  void editWith(const QString& text,
+                const std::function<bool(Mechanism&, std::string&)>& change) override;
+  void startTool(const QString& name, const ToolStart& from) override;
+  void editField(JointId joint, const QString& label) override;
 
   // The next click on a point of the canvas gives that point to `picked` (tools/
   // pick_point_tool.h), then the select tool is back; Esc or another tool calls `cancelled`.

@@ -8,9 +8,7 @@
 #include "elements/element_ui.h"
 #include "linkage/edits.h"
 #include "linkage/elements.h"
-#include "tools/link_tool.h"
 #include "tools/selection.h"
-#include "tools/slot_tools.h"
 #include "tools/toolbox.h"
 
 namespace linkage::ui {
@@ -23,8 +21,7 @@ void Toolbox::pointMenu(QMenu& menu, const Point& point, const Vec2& at) {
   const QString label = QString::fromStdString(m.pointLabel(id));
   menu.addSection(label);
   menu.addAction(tr("Attach a Link Here"), this, [this, id, at] {
-    setTool(QStringLiteral("link"));
-    static_cast<LinkTool*>(current_)->startAt(LinkVertex{at, id});
+    startTool(QStringLiteral("link"), ToolStart{.point = id, .at = at});
   });
   if (!m.body(point.body)->ground)
     menu.addAction(tr("Pin to the Ground Here"), this, [this, id, at, label] {
@@ -64,8 +61,7 @@ void Toolbox::bodyMenu(QMenu& menu, const Body& body, const Vec2& at) {
              [&](Mechanism& n, std::string&) { return bool(addBodyPoint(n, id, sketch)); });
   });
   menu.addAction(tr("Add a Slot From Here"), this, [this, id, at] {
-    setTool(QStringLiteral("slot"));
-    static_cast<SlotTool*>(current_)->startAt(at, id);
+    startTool(QStringLiteral("slot"), ToolStart{.body = id, .at = at});
   });
   for (const ElementUi* k : elementUis())
     if (k->bodyMenu) k->bodyMenu(*this, menu, id);

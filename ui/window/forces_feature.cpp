@@ -8,9 +8,12 @@
 #include "canvas/canvas_scene.h"
 #include "document/document.h"
 #include "forces/balance_dialog.h"
+#include "forces/force_rows.h"
 #include "forces/forces_panel.h"
+#include "properties/properties_panel.h"
 #include "window/main_window.h"
 #include "window/plots_feature.h"
+#include "window/properties_feature.h"
 #include "window/window_layout.h"
 
 namespace linkage::ui {
@@ -18,6 +21,8 @@ namespace linkage::ui {
 ForcesFeature::ForcesFeature(MainWindow& w, WindowLayout& layout) : WindowFeature(&w), w_(w) {
   makeDock();
   makeActions();
+  // A link's mass and loads and a point's loads, in their Properties forms.
+  for (const FormSection& s : forceSections()) w.properties().panel()->addSection(s);
   layout.add(Slot::ViewForces, show);
   layout.add(Slot::ViewForcesDock, dock->toggleViewAction());
   layout.add(Slot::AnalysisForcesDock, showPanel);

@@ -47,7 +47,7 @@ void ToolsFeature::applyIcons(const QPalette& p) {
   for (QAction* a : toolbox_->toolActions())
     a->setIcon(themedIcon(QStringLiteral("tool-") + a->data().toString(), p));
   for (const ElementUi* k : elementUis())
-    if (k->tool.make)
+    if (k->tool.maker)
       if (QAction* a = toolbox_->toolAction(QString::fromLatin1(k->tool.name)))
         a->setIcon(themedIcon(QString::fromLatin1(k->tool.icon), p));
   toolbox_->deleteAction()->setIcon(themedIcon(QStringLiteral("delete"), p));

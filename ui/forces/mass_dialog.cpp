@@ -1,4 +1,4 @@
-#include "properties/mass_dialog.h"
+#include "forces/mass_dialog.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

@@ -1,4 +1,4 @@
-#include "canvas/style.h"
+#include "draw/style.h"
 
 #include <cmath>
 

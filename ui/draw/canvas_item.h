@@ -1,15 +1,18 @@
 // The base of the canvas's items: what they share is the scale (millimetres per screen pixel,
 // so that symbols keep their size on screen at any zoom) and the style (palette colours).
-// Items are in scene coordinates, millimetres with y up (the view flips the y axis).
+// Items are in scene coordinates, millimetres with y up (the view flips the y axis). ui/draw/
+// is the layer below the canvas and the element kinds (ui/elements/): both draw with it.
 #pragma once
 
 #include <QGraphicsItem>
 #include <QPainterPath>
 #include <QPen>
 #include <QPolygonF>
+#include <QTransform>
 
-#include "canvas/label_board.h"
-#include "canvas/style.h"
+#include "draw/label_board.h"
+#include "draw/style.h"
+#include "linkage/geometry.h"
 
 namespace linkage::ui {
 
@@ -20,6 +23,10 @@ inline QPen cosmetic(const QColor& c, double width, Qt::PenStyle style = Qt::Sol
   p.setCosmetic(true);
   return p;
 }
+
+// The solver's vectors and poses in Qt's terms (scene coordinates: millimetres, y up).
+QPointF toQt(const Vec2& v);
+QTransform toQt(const Transform& t);
 
 // A polygon far larger than what the painter paints on, cut to that area and as much again on
 // every side: Qt's raster engine strokes coordinates beyond its fast path's range on a slow one

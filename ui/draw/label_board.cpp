@@ -1,4 +1,4 @@
-#include "canvas/label_board.h"
+#include "draw/label_board.h"
 
 #include <QGraphicsScene>
 #include <QPainter>

@@ -1,12 +1,15 @@
-#include "canvas/gear_item.h"
+#include "elements/gear_item.h"
 
 #include <QPainter>
 #include <algorithm>
 #include <cmath>
 
-#include "canvas/body_item.h"
-
 namespace linkage::ui {
+
+namespace {
+// Over the bodies (at 0), under the blocks and pins.
+constexpr double kGearZ = 10;
+}  // namespace
 
 GearItem::GearItem(const CanvasContext* ctx, const JointSymbol& s, QColor colourA, QColor colourB)
     : JointItem(ctx, s.joint), s_(s), colour_{colourA, colourB}, own_{colourA, colourB} {
@@ -19,6 +22,10 @@ void GearItem::setBodyColour(int k, const QColor& c) {
   if (next == colour_[k]) return;
   colour_[k] = next;
   update();
+}
+
+void GearItem::setBodyColours(const std::function<QColor(BodyId)>& colourOf) {
+  for (int side : {0, 1}) setBodyColour(side, colourOf(body(side)));
 }
 
 void GearItem::place(const JointSymbol& s) {

@@ -1,9 +1,18 @@
-#include "canvas/canvas_item.h"
+#include "draw/canvas_item.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
 
 namespace linkage::ui {
+
+QPointF toQt(const Vec2& v) {
+  return QPointF(v.x(), v.y());
+}
+
+QTransform toQt(const Transform& t) {
+  // world = R sketch + t; QTransform maps (x, y) to (m11 x + m21 y + dx, m12 x + m22 y + dy).
+  return QTransform(t.R.c, t.R.s, -t.R.s, t.R.c, t.t.x(), t.t.y());
+}
 
 QPolygonF cutToDevice(const QPolygonF& poly, const QPainter* p) {
   const QRectF device(0, 0, p->device()->width(), p->device()->height());

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "canvas/joint_items.h"
+#include "elements/joint_item.h"
 
 namespace linkage::ui {
 
@@ -22,14 +22,16 @@ class GearItem : public JointItem {
   BodyId body(int k) const { return s_.bodies[k]; }
   void setBodyColour(int k, const QColor& c);
   QColor bodyColour(int k) const { return colour_[k]; }
+  void setBodyColours(const std::function<QColor(BodyId)>& colourOf) override;
 
   // What a click finds it by, in scene coordinates (mm): the distance to its drawn lines (the
   // pitch circles, which touch at a gear pair's pitch point, and a belt's runs), and the
   // radius of its smallest pitch circle that holds the point (its centre area; else infinity).
-  double distanceToLines(const Vec2& at) const;
-  double radiusHolding(const Vec2& at) const;
+  bool pickedByLines() const override { return true; }
+  double distanceToLines(const Vec2& at) const override;
+  double radiusHolding(const Vec2& at) const override;
   // Its drawn lines in scene coordinates, to outline it selected or under the cursor.
-  QPainterPath lines() const;
+  QPainterPath lines() const override;
 
  private:
   // A belt's two straight runs (item coordinates), from pulley a to pulley b; none for gears
