@@ -6,6 +6,7 @@
 // points and slots as drawn are its geometry.
 #pragma once
 
+#include <compare>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -103,7 +104,7 @@ struct Slot {
 // joints of them (a kind added later is found by its name: elementKindNamed()).
 struct JointType {
   std::uint8_t index = 0;
-  friend bool operator==(JointType, JointType) = default;
+  friend auto operator<=>(JointType, JointType) = default;
   static const JointType Pin, Slider, PinInSlot, Gear;
 };
 inline constexpr JointType JointType::Pin{0};
