@@ -10,9 +10,9 @@
 #include "cli_parser.h"
 #include "cycle/clearance_text.h"
 #include "cycle/cycle_figure.h"
-#include "export/figure_export.h"
-#include "plots/qcp.h"
-#include "plots/units.h"
+#include "figures/figure_export.h"
+#include "figures/qcp.h"
+#include "figures/units.h"
 #include "window/qt_notes.h"
 
 namespace linkage::cli {

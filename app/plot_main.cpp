@@ -16,12 +16,12 @@
 
 #include <QApplication>
 
-#include "export/figure_export.h"
+#include "figures/figure_export.h"
+#include "figures/qcp.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
 #include "plots/curve_set.h"
 #include "plots/motion_figure.h"
-#include "plots/qcp.h"
 #include "window/qt_notes.h"
 
 namespace linkage::cli {

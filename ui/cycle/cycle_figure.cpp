@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "cycle/clearance_text.h"
+#include "figures/qcp.h"
 #include "forces/force_plots.h"
-#include "plots/qcp.h"
 
 namespace linkage::ui {
 

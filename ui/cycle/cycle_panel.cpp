@@ -28,12 +28,12 @@
 #include "document/commands.h"
 #include "document/document.h"
 #include "document/file_folder.h"
-#include "export/figure_export.h"
+#include "figures/figure_export.h"
+#include "figures/qcp.h"
+#include "figures/redraw_throttle.h"
+#include "figures/units.h"
 #include "linkage/tables/timing_table.h"
 #include "linkage/timing_text.h"
-#include "plots/qcp.h"
-#include "plots/redraw_throttle.h"
-#include "plots/units.h"
 #include "tools/selection.h"
 
 namespace linkage::ui {

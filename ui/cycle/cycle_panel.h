@@ -27,7 +27,7 @@
 #include "cycle/cycle_entries.h"
 #include "cycle/cycle_figure.h"
 #include "cycle/level_lines.h"
-#include "plots/redraw_throttle.h"
+#include "figures/redraw_throttle.h"
 
 class QComboBox;
 class QCustomPlot;

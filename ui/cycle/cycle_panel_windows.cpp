@@ -10,8 +10,8 @@
 #include "cycle/cycle_panel.h"
 #include "cycle/window_form.h"
 #include "document/document.h"
+#include "figures/qcp.h"
 #include "linkage/timing_text.h"
-#include "plots/qcp.h"
 
 namespace linkage::ui {
 

@@ -6,8 +6,8 @@
 #include <QVBoxLayout>
 
 #include "design/study_table_model.h"
-#include "plots/qcp.h"
-#include "plots/units.h"
+#include "figures/qcp.h"
+#include "figures/units.h"
 
 namespace linkage::ui {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "figures/qcp.h"
+#include "figures/units.h"
 #include "forces/force_plots.h"
-#include "plots/qcp.h"
-#include "plots/units.h"
 
 namespace linkage::ui {
 

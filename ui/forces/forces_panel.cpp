@@ -16,14 +16,14 @@
 #include "document/document.h"
 #include "document/file_folder.h"
 #include "document/shown_numbers.h"
-#include "export/figure_export.h"
 #include "export/table_size_dialog.h"
+#include "figures/figure_export.h"
+#include "figures/qcp.h"
+#include "figures/redraw_throttle.h"
+#include "figures/units.h"
 #include "forces/force_plots.h"
 #include "forces/force_table_export.h"
 #include "linkage/elements.h"
-#include "plots/qcp.h"
-#include "plots/redraw_throttle.h"
-#include "plots/units.h"
 
 namespace linkage::ui {
 

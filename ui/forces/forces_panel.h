@@ -19,9 +19,9 @@
 #include <QWidget>
 #include <memory>
 
+#include "figures/redraw_throttle.h"
 #include "forces/force_figure.h"
 #include "linkage/force_samples.h"
-#include "plots/redraw_throttle.h"
 
 class QComboBox;
 class QCustomPlot;

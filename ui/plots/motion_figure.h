@@ -11,8 +11,8 @@
 #include <cmath>
 #include <vector>
 
+#include "figures/units.h"
 #include "plots/curve_set.h"
-#include "plots/units.h"
 
 class QCustomPlot;
 class QCPAxisRect;

@@ -10,12 +10,12 @@
 #include <cmath>
 
 #include "document/document.h"
-#include "export/figure_export.h"
+#include "figures/figure_export.h"
+#include "figures/qcp.h"
 #include "plots/curve_lists.h"
 #include "plots/harmonics_figure.h"
 #include "plots/motion_figure.h"
 #include "plots/plot_controls.h"
-#include "plots/qcp.h"
 
 namespace linkage::ui {
 

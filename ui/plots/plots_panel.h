@@ -21,9 +21,9 @@
 #include <memory>
 #include <vector>
 
+#include "figures/redraw_throttle.h"
+#include "figures/units.h"
 #include "plots/curve_set.h"
-#include "plots/redraw_throttle.h"
-#include "plots/units.h"
 
 class QCustomPlot;
 class QLabel;

@@ -1,4 +1,4 @@
-#include "plots/redraw_throttle.h"
+#include "figures/redraw_throttle.h"
 
 #include <QTimer>
 #include <algorithm>
