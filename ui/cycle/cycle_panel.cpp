@@ -61,17 +61,17 @@ bool inside(const AngleInterval& i, double c) {
 
 }  // namespace
 
-CyclePanel::CyclePanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+CyclePanel::CyclePanel(Document* doc, QWidget* parent)
+    : DockPanel(Redraw::Throttled, Behind::Works, parent), doc_(doc) {
   buildWidgets();
   if (doc) {
     connect(doc, &Document::designChanged, this, [this] {
-      stale_ = true;  // the results are of the entries before: none is shown until recomputed
+      markStale();  // the results are of the entries before: none is shown until recomputed
       // A threshold's drag ends: its preview is of the design before.
       preview_.reset();
       levelDrag_ = -1;
       fillList();
       formFollowsDesign();
-      markStale();
     });
     connect(doc, &Document::poseChanged, this, &CyclePanel::updateCursor);
     connect(doc, &QObject::destroyed, this, [this] { markStale(); });
@@ -353,30 +353,14 @@ QString CyclePanel::entryError() const {
 
 // --- work -----------------------------------------------------------------------------------
 
-void CyclePanel::markStale() {
-  stale_ = true;
-  schedule();
-}
-
-void CyclePanel::schedule() {
-  throttle_.ask();
-}
-
-void CyclePanel::showEvent(QShowEvent* e) {
-  QWidget::showEvent(e);
-  ensureComputed();
+void CyclePanel::cameIntoView() {
   updateCursor();
   emitMarks();
 }
 
-void CyclePanel::hideEvent(QHideEvent* e) {
-  QWidget::hideEvent(e);
+void CyclePanel::leftView() {
   // The canvas shows what this dock watches only while the dock is seen.
   Q_EMIT marksChanged({});
-}
-
-void CyclePanel::ensureComputed() {
-  if (stale_) recompute();
 }
 
 QString CyclePanel::whyNoDiagram() const {
@@ -399,9 +383,7 @@ QString CyclePanel::whyNoDiagram() const {
   return {};
 }
 
-void CyclePanel::recompute() {
-  throttle_.done();
-  stale_ = false;
+void CyclePanel::compute() {
   diagram_ = CycleDiagram{};
   windows_.clear();
   clearances_.clear();
@@ -467,7 +449,7 @@ void CyclePanel::rebuildFigure() {
 }
 
 QString CyclePanel::resultText(EntryKind kind, int i) const {
-  if (stale_ || !diagram() || !doc_ || i < 0 || i >= entryCount(doc_->design().timing, kind))
+  if (stale() || !diagram() || !doc_ || i < 0 || i >= entryCount(doc_->design().timing, kind))
     return {};
   const Mechanism& m = doc_->design();
   switch (kind) {
@@ -524,9 +506,9 @@ void CyclePanel::showResults() {
     const int i = item->data(0, kIndexRole).toInt();
     const QString text = resultText(kind, i);
     bool bad = false;
-    if (!stale_ && diagram() && kind == EntryKind::Conflict)
+    if (!stale() && diagram() && kind == EntryKind::Conflict)
       bad = !diagram_.conflicts[i].overlaps.empty();
-    if (!stale_ && diagram() && kind == EntryKind::Clearance)
+    if (!stale() && diagram() && kind == EntryKind::Clearance)
       bad = text.contains(tr("under the minimum")) ||
             (i < static_cast<int>(clearanceWhy_.size()) && !clearanceWhy_[i].isEmpty());
     item->setText(2, text);
@@ -549,7 +531,7 @@ void CyclePanel::showResults() {
 }
 
 void CyclePanel::emitMarks() {
-  if (!isVisible() || !doc_) return;
+  if (!shown() || !doc_) return;
   std::vector<ClearanceMark> marks;
   if (diagram())
     for (const CycleClearanceRow& c : clearances_) {
@@ -565,7 +547,7 @@ void CyclePanel::emitMarks() {
 // --- the cursor -----------------------------------------------------------------------------
 
 void CyclePanel::updateCursor() {
-  if (!isVisible() || !doc_ || !diagram()) return;
+  if (!shown() || !doc_ || !diagram()) return;
   const double c = doc_->crankDeg(), at = c - 360.0 * std::floor(c / 360.0);
   figure_->setCursor(at);
   QStringList parts;

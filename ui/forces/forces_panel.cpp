@@ -47,7 +47,8 @@ QString number(double v) {
 
 }  // namespace
 
-ForcesPanel::ForcesPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+ForcesPanel::ForcesPanel(Document* doc, QWidget* parent)
+    : DockPanel(Redraw::Throttled, Behind::Works, parent), doc_(doc) {
   buildWidgets();
   if (doc) {
     connect(doc, &Document::designChanged, this, [this] {
@@ -129,10 +130,10 @@ void ForcesPanel::setJoint(int index) {
   if (index < 0 || index >= joints_->count()) index = -1;
   joints_->setCurrentIndex(index);
   const QString name = joints_->currentText();
-  if (name == jointName_ && !stale_) return;
+  if (name == jointName_ && !stale()) return;
   jointName_ = name;
   // The samples hold every joint's reaction: only the figure changes.
-  if (isVisible() && !stale_) rebuildFigure();
+  if (shown() && !stale()) rebuildFigure();
 }
 
 int ForcesPanel::joint() const {
@@ -141,18 +142,7 @@ int ForcesPanel::joint() const {
 
 // --- work -----------------------------------------------------------------------------------
 
-void ForcesPanel::markStale() {
-  stale_ = true;
-  schedule();
-}
-
-void ForcesPanel::schedule() {
-  throttle_.ask();
-}
-
-void ForcesPanel::showEvent(QShowEvent* e) {
-  QWidget::showEvent(e);
-  ensureComputed();
+void ForcesPanel::cameIntoView() {
   updateCursor();
 }
 
@@ -160,7 +150,7 @@ void ForcesPanel::resizeEvent(QResizeEvent* e) {
   QWidget::resizeEvent(e);
   // A row of plots in a wide low dock, two by two in a squarer one: laid out again when that
   // changes.
-  if (!stale_ && samples() && ForceFigure::columnsFor(room()) != figure_->columns())
+  if (!stale() && samples() && ForceFigure::columnsFor(room()) != figure_->columns())
     rebuildFigure();
 }
 
@@ -168,10 +158,6 @@ QSize ForcesPanel::room() const {
   // The scroll area's, less the panel's other rows once it is laid out; the panel's before.
   const QSize view = scroll_->maximumViewportSize();
   return view.isValid() && view.height() > 0 ? view : size();
-}
-
-void ForcesPanel::ensureComputed() {
-  if (stale_) recompute();
 }
 
 QString ForcesPanel::whyNoForces() const {
@@ -187,9 +173,7 @@ QString ForcesPanel::whyNoForces() const {
   return {};
 }
 
-void ForcesPanel::recompute() {
-  throttle_.done();
-  stale_ = false;
+void ForcesPanel::compute() {
   samples_ = ForceSamples{};
   why_ = whyNoForces();
   if (why_.isEmpty()) {
@@ -264,7 +248,7 @@ void ForcesPanel::rebuildFigure() {
 }
 
 void ForcesPanel::updateCursor() {
-  if (!isVisible() || !doc_ || !samples()) return;
+  if (!shown() || !doc_ || !samples()) return;
   const double c = doc_->crankDeg();
   figure_->setCursor(c - 360.0 * std::floor(c / 360.0));
   // The values at the pose exactly, not read off the curves: a solver of its own on a copy (a

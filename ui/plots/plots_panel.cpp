@@ -28,7 +28,8 @@ QString titleOf(const Document* d) {
 
 }  // namespace
 
-PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent), units_(PlotUnits::fromSettings()) {
+PlotsPanel::PlotsPanel(QWidget* parent)
+    : DockPanel(Redraw::Throttled, Behind::Works, parent), units_(PlotUnits::fromSettings()) {
   buildWidgets();
   writeControls();
 }
@@ -116,7 +117,7 @@ void PlotsPanel::setRequest(const CurveRequest& r) {
   writeControls();
   for (auto& s : sets_) s.second.reset();
   figureStale_ = true;
-  throttle_.ask();
+  markStale();
 }
 
 void PlotsPanel::setUnits(const PlotUnits& u) {
@@ -126,7 +127,10 @@ void PlotsPanel::setUnits(const PlotUnits& u) {
   writeControls();
   // The curves are kept in the solver's units: only the figure changes.
   figureStale_ = true;
-  if (isVisible()) rebuildFigure();
+  if (shown())
+    rebuildFigure();
+  else
+    markStale();
 }
 
 void PlotsPanel::setHarmonicsShown(bool on) {
@@ -135,7 +139,10 @@ void PlotsPanel::setHarmonicsShown(bool on) {
   writeControls();
   stack_->setCurrentIndex(on ? 1 : 0);
   figureStale_ = true;
-  if (isVisible()) rebuildFigure();
+  if (shown())
+    rebuildFigure();
+  else
+    markStale();
 }
 
 // --- documents ------------------------------------------------------------------------------
@@ -150,13 +157,13 @@ void PlotsPanel::setDocument(Document* doc) {
     connect(doc, &Document::contentsReplaced, docContext_, [this] { controls_->followDesign(); });
     connect(doc, &Document::designChanged, docContext_, [this, doc] {
       offerTargets();
-      markStale(doc);
+      resample(doc);
     });
     connect(doc, &Document::poseChanged, docContext_, [this] { updateCursor(); });
     connect(doc, &QObject::destroyed, docContext_, [this] { setDocument(nullptr); });
   }
   offerTargets();
-  markStale(doc);
+  resample(doc);
 }
 
 void PlotsPanel::setComparisonDocuments(const QList<Document*>& docs) {
@@ -168,14 +175,14 @@ void PlotsPanel::setComparisonDocuments(const QList<Document*>& docs) {
     others_.push_back(d);
     connect(d, &Document::designChanged, othersContext_, [this, d] {
       offerComparisonTargets();
-      markStale(d);
+      resample(d);
     });
-    connect(d, &QObject::destroyed, othersContext_, [this] { throttle_.ask(); });
+    connect(d, &QObject::destroyed, othersContext_, [this] { markStale(); });
   }
   writeControls();
   offerComparisonTargets();
   figureStale_ = true;
-  throttle_.ask();
+  markStale();
 }
 
 void PlotsPanel::setComparisonTarget(const QString& target) {
@@ -185,7 +192,7 @@ void PlotsPanel::setComparisonTarget(const QString& target) {
     if (s.first != doc_) s.second.reset();
   offerComparisonTargets();
   figureStale_ = true;
-  throttle_.ask();
+  markStale();
 }
 
 void PlotsPanel::offerComparisonTargets() {
@@ -220,7 +227,7 @@ void PlotsPanel::setCompare(Compare c) {
   compare_ = c;
   writeControls();
   figureStale_ = true;
-  throttle_.ask();
+  markStale();
 }
 
 std::vector<Document*> PlotsPanel::shownDocuments() const {
@@ -246,30 +253,19 @@ const CurveSet* PlotsPanel::curves(int i) const {
 
 // --- work -----------------------------------------------------------------------------------
 
-void PlotsPanel::markStale(Document* d) {
+void PlotsPanel::resample(Document* d) {
   // The curves are sampled again; the figure keeps its layout if the new curves fit it
   // (MotionFigure::refresh), which a drag that reshapes the design relies on.
   for (auto& s : sets_)
     if (s.first == d) s.second.reset();
-  throttle_.ask();
+  markStale();
 }
 
-void PlotsPanel::showEvent(QShowEvent* e) {
-  QWidget::showEvent(e);
-  ensureComputed();
+void PlotsPanel::cameIntoView() {
   updateCursor();
 }
 
-void PlotsPanel::ensureComputed() {
-  const std::vector<Document*> docs = shownDocuments();
-  bool stale = figureStale_ || docs.size() != sets_.size();
-  for (size_t i = 0; !stale && i < docs.size(); ++i)
-    stale = sets_[i].first != docs[i] || !sets_[i].second;
-  if (stale) recompute();
-}
-
-void PlotsPanel::recompute() {
-  throttle_.done();
+void PlotsPanel::compute() {
   std::vector<std::pair<QPointer<Document>, std::unique_ptr<CurveSet>>> next;
   for (Document* d : shownDocuments()) {
     std::unique_ptr<CurveSet> set;
@@ -319,7 +315,7 @@ double PlotsPanel::cursorDeg() const {
 }
 
 void PlotsPanel::updateCursor() {
-  if (!isVisible() || sets_.empty() || !doc_) return;
+  if (!shown() || sets_.empty() || !doc_) return;
   CurveSet* main = sets_[0].second.get();
   if (!main) return;
   const double c = doc_->crankDeg(), period = 360.0 * request_.revs;
