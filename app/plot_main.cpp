@@ -16,7 +16,6 @@
 
 #include <QApplication>
 
-#include "figures/figure_export.h"
 #include "figures/qcp.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
@@ -183,7 +182,7 @@ int writeFigure(const PlotOptions& o, const std::vector<const ui::CurveSet*>& sh
   plot.resize(w, h);
   figure.build(shown, fo);
   QString err;
-  if (!ui::exportPlot(&plot, QString::fromStdString(o.out), QSize(w, h), &err)) {
+  if (!figure.exportFigure(QString::fromStdString(o.out), QSize(w, h), &err)) {
     error(err.toStdString());
     return kFailure;
   }

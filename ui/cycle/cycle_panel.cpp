@@ -28,9 +28,7 @@
 #include "document/commands.h"
 #include "document/document.h"
 #include "document/file_folder.h"
-#include "figures/figure_export.h"
 #include "figures/qcp.h"
-#include "figures/redraw_throttle.h"
 #include "figures/units.h"
 #include "linkage/tables/timing_table.h"
 #include "linkage/timing_text.h"
@@ -224,7 +222,7 @@ void CyclePanel::buildWidgets() {
   connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
   connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { mouseOnPlot(e, false); });
   connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) {
-    dragging_ = false;
+    figure_->endDrag();
     if (levelDrag_ >= 0) endLevelDrag();
   });
   connectForm();
@@ -548,7 +546,7 @@ void CyclePanel::emitMarks() {
 
 void CyclePanel::updateCursor() {
   if (!shown() || !doc_ || !diagram()) return;
-  const double c = doc_->crankDeg(), at = c - 360.0 * std::floor(c / 360.0);
+  const double at = crankInPeriod(doc_->crankDeg(), 360);
   figure_->setCursor(at);
   QStringList parts;
   for (const WindowIntervals& w : diagram_.windows) {
@@ -574,17 +572,16 @@ void CyclePanel::mouseOnPlot(QMouseEvent* e, bool press) {
     plot_->setCursor(levels_->windowAt(e->position()) >= 0 ? Qt::SizeVerCursor : Qt::CrossCursor);
     return;
   }
-  if (press && !dragging_ && levelDrag_ < 0)
+  if (press && !figure_->dragging() && levelDrag_ < 0)
     if (const int w = levels_->windowAt(e->position()); w >= 0) beginLevelDrag(w);
   if (levelDrag_ >= 0) {
     if (!press) dragLevel(e->position().y());
     return;
   }
-  if (press) dragging_ = !std::isnan(figure_->crankAt(e->position()));
-  if (!dragging_) return;
-  const double d = std::clamp(figure_->crankAtX(e->position().x()), 0.0, 360.0);
-  const double base = doc_ ? 360.0 * std::floor(doc_->crankDeg() / 360.0) : 0.0;
-  Q_EMIT crankAngleRequested(base + d);
+  const double d = figure_->crankDragged(e->position(), press);
+  if (std::isnan(d)) return;
+  Q_EMIT crankAngleRequested(
+      crankNear(std::clamp(d, 0.0, 360.0), doc_ ? doc_->crankDeg() : 0.0, 360));
 }
 
 // --- export ---------------------------------------------------------------------------------
@@ -599,9 +596,7 @@ bool CyclePanel::exportFigure(const QString& path, QSize size, QString* error) {
   figure_->build(diagram_, windows_, clearances_,
                  (name.isEmpty() ? QString() : name + ": ") + tr("cycle diagram"),
                  crankAxisLabel(doc_->design()));
-  figure_->setCursorVisible(false);
-  const bool ok = exportPlot(plot_, path, size, error);
-  figure_->setCursorVisible(true);
+  const bool ok = figure_->exportFigure(path, size, error);
   rebuildFigure();
   return ok;
 }

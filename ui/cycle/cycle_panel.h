@@ -148,7 +148,7 @@ class CyclePanel : public DockPanel {
   std::vector<CycleClearanceRow> clearances_;
   std::vector<QString> clearanceWhy_;  // per clearance entry: why it is not measured, or ""
   QString why_;
-  bool dragging_ = false, filling_ = false;
+  bool filling_ = false;
   std::optional<Timing> preview_;  // the timing shown while a threshold is dragged
   int levelDrag_ = -1;             // the window whose threshold is dragged
   std::uint32_t formOwner_ = 0;    // the mechanism the form's fields are of (Mechanism::owner)

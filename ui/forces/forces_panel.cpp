@@ -17,9 +17,7 @@
 #include "document/file_folder.h"
 #include "document/shown_numbers.h"
 #include "export/table_size_dialog.h"
-#include "figures/figure_export.h"
 #include "figures/qcp.h"
-#include "figures/redraw_throttle.h"
 #include "figures/units.h"
 #include "forces/force_plots.h"
 #include "forces/force_table_export.h"
@@ -109,7 +107,7 @@ void ForcesPanel::buildWidgets() {
   connect(joints_, &QComboBox::activated, this, [this](int i) { setJoint(i); });
   connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
   connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { mouseOnPlot(e, false); });
-  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { dragging_ = false; });
+  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { figure_->endDrag(); });
 }
 
 // --- the joint ------------------------------------------------------------------------------
@@ -250,7 +248,7 @@ void ForcesPanel::rebuildFigure() {
 void ForcesPanel::updateCursor() {
   if (!shown() || !doc_ || !samples()) return;
   const double c = doc_->crankDeg();
-  figure_->setCursor(c - 360.0 * std::floor(c / 360.0));
+  figure_->setCursor(crankInPeriod(c, 360));
   // The values at the pose exactly, not read off the curves: a solver of its own on a copy (a
   // solver works on the kinematics it was prepared with; about as long as a kinematic step).
   Kinematics k = doc_->kinematics();
@@ -284,13 +282,11 @@ QString ForcesPanel::cursorText() const {
 
 void ForcesPanel::mouseOnPlot(QMouseEvent* e, bool press) {
   if (!(e->buttons() & Qt::LeftButton) || !samples()) return;
-  if (press) dragging_ = !std::isnan(figure_->crankAt(e->position(), &dragPlot_));
-  if (!dragging_) return;
-  // While dragging, the plot pressed on gives the angle even outside its axes.
+  const double deg = figure_->crankDragged(e->position(), press);
+  if (std::isnan(deg)) return;
   const double hi = samples_.complete ? 360.0 : samples_.crankDeg.back();
-  const double deg = std::clamp(figure_->crankAtX(dragPlot_, e->position().x()), 0.0, hi);
-  const double base = doc_ ? 360.0 * std::floor(doc_->crankDeg() / 360.0) : 0.0;
-  Q_EMIT crankAngleRequested(base + deg);
+  Q_EMIT crankAngleRequested(
+      crankNear(std::clamp(deg, 0.0, hi), doc_ ? doc_->crankDeg() : 0.0, 360));
 }
 
 // --- export ---------------------------------------------------------------------------------
@@ -307,9 +303,7 @@ bool ForcesPanel::exportFigure(const QString& path, QSize size, QString* error) 
     exportSize_ = size;
     rebuildFigure();
   }
-  figure_->setCursorVisible(false);
-  const bool ok = exportPlot(plot_, path, size, error);
-  figure_->setCursorVisible(true);
+  const bool ok = figure_->exportFigure(path, size, error);
   if (relayout) {
     exportSize_ = QSize();
     rebuildFigure();

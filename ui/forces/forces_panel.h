@@ -96,8 +96,7 @@ class ForcesPanel : public DockPanel {
   double forceScale_ = 0, torqueScale_ = 0;  // the peaks: what is rounding next to them
   QString why_;                              // the sentence in place of the curves
   QString jointName_;                        // the chosen joint, by the force table's name
-  bool dragging_ = false;
-  int dragPlot_ = -1, computations_ = 0;
+  int computations_ = 0;
 
   QComboBox* joints_;
   QLabel *values_, *sentence_;

@@ -91,7 +91,7 @@ void PlotsPanel::buildWidgets() {
   plot_->setInteractions({});  // a drag moves the crank, not the axes
   connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
   connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { mouseOnPlot(e, false); });
-  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { dragging_ = false; });
+  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { figure_->endDrag(); });
 }
 
 // --- what is plotted ------------------------------------------------------------------------
@@ -320,7 +320,7 @@ void PlotsPanel::updateCursor() {
   if (!main) return;
   const double c = doc_->crankDeg(), period = 360.0 * request_.revs;
   // Periodic curves: the revolution window the crank is in; otherwise the angle itself.
-  const double x = main->periodic() ? c - period * std::floor(c / period) : c;
+  const double x = main->periodic() ? crankInPeriod(c, period) : c;
   if (!harmonics_) figure_->setCursor(x);
   std::vector<CurveSet*> sets;
   for (auto& s : sets_)
@@ -349,20 +349,15 @@ QString PlotsPanel::extremesText() const {
 
 void PlotsPanel::mouseOnPlot(QMouseEvent* e, bool press) {
   if (!(e->buttons() & Qt::LeftButton) || harmonics_) return;
-  if (press) dragging_ = !std::isnan(figure_->crankAt(e->position(), &dragRect_));
-  if (!dragging_) return;
-  // While dragging, the plot pressed on gives the angle even outside its axes.
-  double deg = figure_->crankAtX(dragRect_, e->position().x());
+  double deg = figure_->crankDragged(e->position(), press);
+  if (std::isnan(deg)) return;
   const CurveSet* main = curves(0);
   double hi = figure_->xMax();
   if (main && !main->empty() && !main->periodic()) hi = std::min(hi, main->lastDeg());
   deg = std::clamp(deg, 0.0, hi);
-  double base = 0;
-  if (doc_ && main && main->periodic()) {
-    const double period = figure_->xMax();
-    base = period * std::floor(doc_->crankDeg() / period);
-  }
-  Q_EMIT crankAngleRequested(base + deg);
+  // Periodic curves: the angle in the revolution window the crank is in.
+  if (doc_ && main && main->periodic()) deg = crankNear(deg, doc_->crankDeg(), figure_->xMax());
+  Q_EMIT crankAngleRequested(deg);
 }
 
 // --- export ---------------------------------------------------------------------------------
@@ -374,10 +369,7 @@ bool PlotsPanel::exportFigure(const QString& path, QSize size, QString* error) {
     return false;
   }
   if (harmonics_) return exportPlot(harmonicsPlot_, path, size, error);
-  figure_->setCursorVisible(false);
-  const bool ok = exportPlot(plot_, path, size, error);
-  figure_->setCursorVisible(true);
-  return ok;
+  return figure_->exportFigure(path, size, error);
 }
 
 }  // namespace linkage::ui

@@ -116,8 +116,7 @@ class PlotsPanel : public DockPanel {
 
   // One curve set per shown document (same order as shownDocuments()), null when stale.
   std::vector<std::pair<QPointer<Document>, std::unique_ptr<CurveSet>>> sets_;
-  bool figureStale_ = true, dragging_ = false;
-  int dragRect_ = -1;  // the plot a drag started on
+  bool figureStale_ = true;
   // Receivers of the documents' signals: replaced (and so disconnected) with the documents.
   QObject *docContext_ = nullptr, *othersContext_ = nullptr;
   int computations_ = 0;
