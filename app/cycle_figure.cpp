@@ -10,9 +10,8 @@
 #include "cli_parser.h"
 #include "cycle/clearance_text.h"
 #include "cycle/cycle_figure.h"
-#include "export/figure_export.h"
-#include "plots/qcp.h"
-#include "plots/units.h"
+#include "figures/qcp.h"
+#include "figures/units.h"
 #include "window/qt_notes.h"
 
 namespace linkage::cli {
@@ -66,12 +65,11 @@ int cycleFigure(const Options& o) {
   figure.build(d, s->windows, clearances,
                QString::fromStdString(m->name) + QStringLiteral(": cycle diagram"),
                ui::crankAxisLabel(*m));
-  figure.setCursorVisible(false);
   const int rows = static_cast<int>(d.rows.size() + clearances.size());
   const QSize size(900, ui::CycleFigure::heightFor(rows) + 40);
   p.resize(size);
   QString err;
-  if (!ui::exportPlot(&p, QString::fromStdString(o.out), size, &err)) {
+  if (!figure.exportFigure(QString::fromStdString(o.out), size, &err)) {
     error(err.toStdString());
     return kFailure;
   }

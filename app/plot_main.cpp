@@ -16,12 +16,11 @@
 
 #include <QApplication>
 
-#include "export/figure_export.h"
+#include "figures/qcp.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
 #include "plots/curve_set.h"
 #include "plots/motion_figure.h"
-#include "plots/qcp.h"
 #include "window/qt_notes.h"
 
 namespace linkage::cli {
@@ -183,7 +182,7 @@ int writeFigure(const PlotOptions& o, const std::vector<const ui::CurveSet*>& sh
   plot.resize(w, h);
   figure.build(shown, fo);
   QString err;
-  if (!ui::exportPlot(&plot, QString::fromStdString(o.out), QSize(w, h), &err)) {
+  if (!figure.exportFigure(QString::fromStdString(o.out), QSize(w, h), &err)) {
     error(err.toStdString());
     return kFailure;
   }

@@ -15,12 +15,12 @@
 
 #include "bench_common.h"
 #include "export/animation_export.h"
-#include "export/figure_export.h"
+#include "figures/figure_export.h"
+#include "figures/qcp.h"
 #include "linkage/extremes.h"
 #include "linkage/motion_samples.h"
 #include "plots/curve_set.h"
 #include "plots/motion_figure.h"
-#include "plots/qcp.h"
 #include "reference/dual.h"
 
 namespace {

@@ -16,25 +16,26 @@ layers='
 document:
 draw:
 forms:       document
+figures:
+docks:       figures
 elements:    document draw forms
 canvas:      document draw elements
 tools:       document draw elements canvas
 properties:  document forms elements tools
 mechanisms:  document tools
 animation:   document
-centres:     document
-export:      document
-plots:       document export
-forces:      document forms export plots
-design:      document draw canvas plots
-cycle:       document canvas tools export plots forces
+centres:     document docks
+export:      document figures
+plots:       document docks figures export
+forces:      document draw forms docks figures canvas export plots
+design:      document draw docks figures canvas plots
+cycle:       document docks figures canvas tools export plots forces
 window:      *
 '
 
 # Single includes allowed against the table until the change named takes them away: FILE (in
 # ui/), the include, why. One that no longer occurs fails the test too: delete its line.
 exceptions='
-export/figure_export.cpp plots/qcp.h   ui/figures (branch figbase) takes qcp.h and figure_export
 '
 
 self=$(cd "$(dirname "$0")" && pwd)/$(basename "$0")

@@ -10,13 +10,13 @@
 #include <cmath>
 
 #include "document/document.h"
+#include "figures/qcp.h"
 #include "forces/balance_dialog.h"
 #include "linkage/force_samples.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
 #include "mechanisms.h"
-#include "plots/qcp.h"
 #include "ui_test.h"
 
 namespace linkage::ui {

@@ -15,10 +15,10 @@
 
 #include "cycle/cycle_panel.h"
 #include "document/document.h"
+#include "figures/qcp.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/tables/timing_table.h"
-#include "plots/qcp.h"
 #include "tools/selection.h"
 #include "ui_test.h"
 

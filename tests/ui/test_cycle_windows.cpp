@@ -17,10 +17,10 @@
 #include "cycle/cycle_panel.h"
 #include "cycle/window_form.h"
 #include "document/document.h"
+#include "figures/qcp.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/timing_text.h"
-#include "plots/qcp.h"
 #include "ui_test.h"
 
 namespace linkage::ui {

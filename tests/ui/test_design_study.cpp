@@ -23,8 +23,8 @@
 #include "design/study_runner.h"
 #include "design/study_table_model.h"
 #include "document/document.h"
+#include "figures/qcp.h"
 #include "linkage/tables/study_table.h"
-#include "plots/qcp.h"
 #include "window/features.h"
 
 namespace linkage::ui {

@@ -31,12 +31,14 @@
 #include "document/document.h"
 #include "document/shown_numbers.h"
 #include "drawing.h"
+#include "figures/qcp.h"
+#include "forces/dynamics_item.h"
+#include "forces/forces_overlay.h"
 #include "forces/forces_panel.h"
 #include "linkage/edits.h"
 #include "linkage/io/model_file.h"
 #include "plots/curve_set.h"
 #include "plots/plots_panel.h"
-#include "plots/qcp.h"
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
@@ -335,7 +337,7 @@ void expectNoOverlayNumbers(MainWindow& w) {
   for (const QGraphicsPathItem* t : w.scene()->traceItems()) EXPECT_TRUE(t->path().isEmpty());
   EXPECT_TRUE(w.designChecks().overlays()->extremesItem()->poses().poses.empty());
   EXPECT_TRUE(w.designChecks().overlays()->transmissionItem()->arcs().empty());
-  EXPECT_TRUE(w.scene()->dynamicsItem()->marks().reactions.empty());
+  EXPECT_TRUE(w.forces().overlay()->item()->marks().reactions.empty());
 }
 
 void showEveryOverlay(MainWindow& w) {

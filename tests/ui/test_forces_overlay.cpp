@@ -7,19 +7,23 @@
 #include "ui_test.h"
 
 #include "canvas/canvas_scene.h"
-#include "canvas/dynamics_marks.h"
 #include "document/commands.h"
 #include "document/document.h"
 #include "forces/balance_dialog.h"
+#include "forces/dynamics_marks.h"
+#include "forces/forces_overlay.h"
 #include "forces/forces_panel.h"
 #include "linkage/balance.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_samples.h"
+#include "window/export_feature.h"
 #include "window/features.h"
 
 #include <QApplication>
 #include <QDockWidget>
+#include <QImage>
 #include <QMenuBar>
+#include <QUndoStack>
 
 namespace linkage::ui {
 namespace {
@@ -38,10 +42,10 @@ TEST(ForcesOverlay, ReactionsAreTheSolversOnOneScaleForTheTurn) {
   ASSERT_TRUE(w.openExample("wanzer-inversion-2-masses"));
   Document* d = w.document();
   CanvasScene* s = w.scene();
-  EXPECT_TRUE(s->dynamicsItem()->marks().reactions.empty());  // hidden: nothing computed
+  EXPECT_TRUE(w.forces().overlay()->item()->marks().reactions.empty());  // hidden: nothing computed
   w.forces().show->setChecked(true);
-  ASSERT_TRUE(s->forcesVisible());
-  const double scale = s->dynamicsItem()->marks().mmPerN;
+  ASSERT_TRUE(w.forces().overlay()->reactionsVisible());
+  const double scale = w.forces().overlay()->item()->marks().mmPerN;
   ASSERT_GT(scale, 0);
   const ForceSamples turn = sampleForces(d->kinematics(), 72);
   ASSERT_TRUE(turn.complete);
@@ -54,7 +58,7 @@ TEST(ForcesOverlay, ReactionsAreTheSolversOnOneScaleForTheTurn) {
   for (double deg : {0.0, 47.0, 181.0, 300.0}) {
     ASSERT_TRUE(d->setCrankDeg(deg).ok());
     const Forces ref = computeForces(d->kinematics());
-    const DynamicsMarks& m = s->dynamicsItem()->marks();
+    const DynamicsMarks& m = w.forces().overlay()->item()->marks();
     EXPECT_EQ(m.mmPerN, scale) << "one scale for the turn";
     ASSERT_EQ(m.reactions.size(), ref.joints.size());
     for (size_t j = 0; j < ref.joints.size(); ++j) {
@@ -76,13 +80,13 @@ TEST(ForcesOverlay, ReactionsAreTheSolversOnOneScaleForTheTurn) {
   for (const Body& b : design.bodies)
     if (!b.ground && b.mass && b.mass->kg > 0) {
       const QPointF want = qt(d->kinematics().bodyTransform(b.id) * b.mass->com);
-      EXPECT_LT(distance(s->dynamicsItem()->marks().masses.at(massive).com, want), 1e-9);
+      EXPECT_LT(distance(w.forces().overlay()->item()->marks().masses.at(massive).com, want), 1e-9);
       ++massive;
     }
-  EXPECT_EQ(s->dynamicsItem()->marks().masses.size(), massive);
+  EXPECT_EQ(w.forces().overlay()->item()->marks().masses.size(), massive);
   w.forces().show->setChecked(false);
-  EXPECT_TRUE(s->dynamicsItem()->marks().reactions.empty());
-  EXPECT_TRUE(s->dynamicsItem()->marks().legend.isEmpty());
+  EXPECT_TRUE(w.forces().overlay()->item()->marks().reactions.empty());
+  EXPECT_TRUE(w.forces().overlay()->item()->marks().legend.isEmpty());
 }
 
 TEST(ForcesOverlay, CounterweightsOfABalanceAreDrawnOnTheirBodies) {
@@ -102,7 +106,7 @@ TEST(ForcesOverlay, CounterweightsOfABalanceAreDrawnOnTheirBodies) {
   const Body* crank = d->design().body(opt.bodies[0]);
   ASSERT_EQ(crank->mass->counterweights.size(), 1u);
   bool found = false;
-  for (const DynamicsMarks::Mass& mark : w.scene()->dynamicsItem()->marks().masses)
+  for (const DynamicsMarks::Mass& mark : w.forces().overlay()->item()->marks().masses)
     if (mark.counterweights.size() == 1) {
       found = true;
       const Vec2 at = d->kinematics().bodyTransform(crank->id) * crank->mass->counterweights[0].at;
@@ -121,20 +125,44 @@ TEST(ForcesOverlay, NoArrowWhereNothingIsDeterminedButASentence) {
   Mechanism m = d->design();
   m.joints.erase(m.joints.begin() + 2);
   commitEdit(d, QStringLiteral("Delete"), m);
-  const DynamicsMarks& marks = w.scene()->dynamicsItem()->marks();
+  const DynamicsMarks& marks = w.forces().overlay()->item()->marks();
   EXPECT_TRUE(marks.reactions.empty());
   EXPECT_TRUE(marks.legend.startsWith(QStringLiteral("Forces not shown"))) << marks.legend;
   // No masses: every force is zero, and the window says what to do.
   ASSERT_TRUE(w.openExample("four-bar-crank-rocker"));
-  EXPECT_TRUE(w.scene()->dynamicsItem()->marks().reactions.empty());
-  EXPECT_TRUE(w.scene()->dynamicsItem()->marks().legend.startsWith(QStringLiteral("No masses")));
+  EXPECT_TRUE(w.forces().overlay()->item()->marks().reactions.empty());
+  EXPECT_TRUE(w.forces().overlay()->item()->marks().legend.startsWith(QStringLiteral("No masses")));
+}
+
+// An animation's frames show what the window shows: the masses and the loads too (the frames'
+// scene of their own has the forces' overlay as the window's has).
+TEST(ForcesOverlay, AnAnimationsFramesDrawTheMassesAndLoads) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2-masses"));
+  Document* d = w.document();
+  const QImage with = w.exports().renderFrame(30, QSize(400, 300));
+  w.exports().endFrames();
+  Mechanism m = d->design();
+  ASSERT_FALSE(m.loads.empty());
+  m.loads.clear();
+  for (Body& b : m.bodies) b.mass.reset();
+  commitEdit(d, QStringLiteral("No masses"), m);
+  ASSERT_TRUE(d->solved());
+  const QImage without = w.exports().renderFrame(30, QSize(400, 300));
+  w.exports().endFrames();
+  EXPECT_NE(with, without);
+  // The same design again: the same picture (what differed was the masses and loads).
+  ASSERT_TRUE(d->undoStack()->canUndo());
+  d->undoStack()->undo();
+  EXPECT_EQ(w.exports().renderFrame(30, QSize(400, 300)), with);
+  w.exports().endFrames();
 }
 
 TEST(ForcesOverlay, TheScaleIsAOneTwoFiveStepOfNewtonsPerTenMillimetres) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("drop-feed"));
   w.forces().show->setChecked(true);
-  const double perTen = 10 / w.scene()->dynamicsItem()->marks().mmPerN;
+  const double perTen = 10 / w.forces().overlay()->item()->marks().mmPerN;
   const double decade = std::pow(10.0, std::floor(std::log10(perTen) + 1e-12));
   const double digit = perTen / decade;
   EXPECT_TRUE(std::abs(digit - 1) < 1e-9 || std::abs(digit - 2) < 1e-9 ||

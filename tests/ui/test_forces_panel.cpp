@@ -15,13 +15,13 @@
 #include <cmath>
 
 #include "document/document.h"
+#include "figures/qcp.h"
 #include "forces/force_figure.h"
 #include "forces/forces_panel.h"
 #include "linkage/force_samples.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/tables/force_table.h"
 #include "mechanisms.h"
-#include "plots/qcp.h"
 #include "ui_test.h"
 #include "window/features.h"
 #include "window/forces_feature.h"

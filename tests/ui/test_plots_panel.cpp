@@ -12,12 +12,12 @@
 #include <cstdlib>
 
 #include "document/document.h"
+#include "figures/qcp.h"
 #include "linkage/extremes.h"
 #include "linkage/io/model_lookup.h"
 #include "mechanisms.h"
 #include "plots/motion_figure.h"
 #include "plots/plots_panel.h"
-#include "plots/qcp.h"
 
 namespace linkage::ui {
 namespace {

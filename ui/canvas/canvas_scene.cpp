@@ -3,7 +3,6 @@
 #include <QGraphicsPathItem>
 #include <cmath>
 
-#include "canvas/dynamics_marks.h"
 #include "canvas/traces.h"
 #include "document/document.h"
 #include "elements/element_ui.h"
@@ -52,8 +51,6 @@ CanvasScene::CanvasScene(QObject* parent) : QGraphicsScene(parent) {
   addItem(centres_);
   chain_ = new ChainItem(&ctx_);
   addItem(chain_);
-  dynamics_ = new DynamicsItem(&ctx_);
-  addItem(dynamics_);
 }
 
 CanvasScene::~CanvasScene() = default;
@@ -61,10 +58,8 @@ CanvasScene::~CanvasScene() = default;
 void CanvasScene::setDocument(Document* doc) {
   for (auto& c : connections_) disconnect(c);
   connections_.clear();
-  if (doc_ && doc != doc_) doc_->setForcesWanted(false);
   doc_ = doc;
   if (doc_) {
-    doc_->setForcesWanted(forcesVisible_);
     connections_.push_back(connect(doc_, &Document::designChanged, this, &CanvasScene::rebuild));
     connections_.push_back(connect(doc_, &Document::poseChanged, this, &CanvasScene::updatePose));
   }
@@ -109,21 +104,6 @@ void CanvasScene::setCentresVisible(bool on) {
   updatePose();
 }
 
-void CanvasScene::setForcesVisible(bool on) {
-  if (on == forcesVisible_) return;
-  forcesVisible_ = on;
-  if (doc_) doc_->setForcesWanted(on);
-  updateScale();
-  updatePose();
-}
-
-void CanvasScene::updateScale() {
-  mmPerN_ = 0;
-  if (!forcesVisible_ || !doc_ || !solverShown_ || !doc_->motionStatus().ok()) return;
-  const QRectF r = extent_.isEmpty() ? QRectF(toQt(drawing_.min), toQt(drawing_.max)) : extent_;
-  mmPerN_ = reactionScale(doc_->kinematics(), std::hypot(r.width(), r.height()));
-}
-
 void CanvasScene::setTracesVisible(bool on) {
   if (on == tracesVisible_) return;
   tracesVisible_ = on;
@@ -166,7 +146,7 @@ void CanvasScene::clearItems() {
   // items() also lists.
   QList<QGraphicsItem*> doomed;
   for (QGraphicsItem* i : items())
-    if (i != centres_ && i != chain_ && i != dynamics_ && !i->parentItem() &&
+    if (i != centres_ && i != chain_ && !i->parentItem() &&
         std::find(overlays_.begin(), overlays_.end(), i) == overlays_.end())
       doomed.append(i);
   for (QGraphicsItem* i : doomed) {
@@ -230,7 +210,6 @@ void CanvasScene::rebuild() {
     const auto [lo, hi] = motionExtent(k);
     extent_ = QRectF(toQt(lo), toQt(hi)).normalized();
   }
-  updateScale();
   updateTraces();
   updatePose();
 }
@@ -279,8 +258,6 @@ void CanvasScene::updatePose() {
   if (!solverShown_) {
     // The sketch of a design the solver cannot take: no overlay of the solver's last state.
     centres_->setCentres({});
-    // With the forces on, their legend says why there are none (the document's reason).
-    dynamics_->setMarks(dynamicsMarks(*this, *doc_, forcesVisible_, 0));
     updateFlags();
     emit redrawn();
     return;
@@ -298,7 +275,6 @@ void CanvasScene::updatePose() {
   if (driver_ && !drawing_.drivers.empty()) driver_->setAt(drawing_.drivers[0].at);
   for (size_t i = 0; i < outputs_.size(); ++i) outputs_[i]->setAt(drawing_.outputs[i].at);
   centres_->setCentres(ics ? determinedCentres(k) : std::vector<Drawing::Centre>{});
-  dynamics_->setMarks(dynamicsMarks(*this, *doc_, forcesVisible_, mmPerN_));
   updateFlags();
   emit redrawn();
 }

@@ -1,6 +1,7 @@
 // The mechanism on the canvas: one item per body and per joint symbol, built from the solver's
 // paint list (linkage/drawing.h) when the design changes and only moved when the pose changes.
-// Overlays (instant centres, traced paths) are computed only while they are shown.
+// Overlays (instant centres, traced paths) are computed only while they are shown; others
+// (the forces', the design's) are added by their folders and follow redrawn().
 #pragma once
 
 #include <QGraphicsScene>
@@ -12,7 +13,6 @@
 #include "canvas/centres_item.h"
 #include "canvas/chain_item.h"
 #include "canvas/driver_item.h"
-#include "canvas/dynamics_item.h"
 #include "canvas/output_item.h"
 #include "canvas/slot_warnings.h"
 #include "document/document.h"
@@ -49,9 +49,6 @@ class CanvasScene : public QGraphicsScene {
 
   void setCentresVisible(bool on);
   bool centresVisible() const { return centresVisible_; }
-  // Joint reactions at the pose (the masses, counterweights and loads are always drawn).
-  void setForcesVisible(bool on);
-  bool forcesVisible() const { return forcesVisible_; }
   void setTracesVisible(bool on);
   bool tracesVisible() const { return tracesVisible_; }
 
@@ -59,9 +56,10 @@ class CanvasScene : public QGraphicsScene {
   const Drawing& drawing() const { return drawing_; }
   // What fitting the view shows: the mechanism now and everywhere it goes in a revolution.
   QRectF mechanismRect() const;
+  // Where the solver's mechanism goes in a revolution (empty: the solver does not hold it).
+  QRectF motionRect() const { return extent_; }
   CentresItem* centresItem() const { return centres_; }
   ChainItem* chainItem() const { return chain_; }
-  DynamicsItem* dynamicsItem() const { return dynamics_; }
   BodyItem* bodyItem(BodyId id) const;
 
   // The machine's mechanisms as drawn (names, colours, visibility): a hidden one's bodies,
@@ -87,7 +85,8 @@ class CanvasScene : public QGraphicsScene {
   const std::vector<QGraphicsPathItem*>& traceItems() const { return traces_; }
 
  Q_SIGNALS:
-  // Emitted after the items moved (a new pose or design): views repaint.
+  // Emitted after the items moved (a new pose or design): the overlays that other folders add
+  // follow (forces/forces_overlay.h).
   void redrawn();
 
  private:
@@ -97,7 +96,6 @@ class CanvasScene : public QGraphicsScene {
   void updatePose();
   void updateTraces();
   void updateFlags();
-  void updateScale();
   std::vector<Drawing::Centre> determinedCentres(const Kinematics& k) const;
   void clearItems();
   void applyMechanisms();
@@ -126,10 +124,8 @@ class CanvasScene : public QGraphicsScene {
   DriverItem* driver_ = nullptr;
   CentresItem* centres_ = nullptr;
   ChainItem* chain_ = nullptr;
-  DynamicsItem* dynamics_ = nullptr;
-  double mmPerN_ = 0;  // the reactions' scale, fixed per design
   std::vector<QGraphicsItem*> overlays_;
-  bool centresVisible_ = false, tracesVisible_ = false, forcesVisible_ = false;
+  bool centresVisible_ = false, tracesVisible_ = false;
   std::vector<QMetaObject::Connection> connections_;
 };
 

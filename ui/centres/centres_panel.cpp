@@ -37,7 +37,7 @@ QString bodyName(const Document& d, const InstantCentres& ics, int n) {
 
 }  // namespace
 
-CentresPanel::CentresPanel(QWidget* parent) : QWidget(parent) {
+CentresPanel::CentresPanel(QWidget* parent) : DockPanel(Redraw::NextTurn, Behind::Rests, parent) {
   table_ = new QTableWidget(0, 6);
   table_->setHorizontalHeaderLabels(
       {tr("i,j"), tr("bodies"), tr("x [mm]"), tr("y [mm]"), tr("at \u221e"), tr("found by")});
@@ -138,32 +138,28 @@ void CentresPanel::rebuildPoints() {
   refresh();
 }
 
-void CentresPanel::showEvent(QShowEvent* e) {
-  QWidget::showEvent(e);
-  refresh();
-}
-
 void CentresPanel::refresh() {
-  if (pending_) return;
-  pending_ = true;
-  QTimer::singleShot(0, this, [this] {
-    pending_ = false;
-    update();
-  });
+  markStale();
 }
 
-void CentresPanel::update() {
-  // Seen: not only visible, but on the window (a dock in a tab behind another is moved off it
-  // and stays "visible").
-  const bool seen = isVisible() && !visibleRegion().isEmpty() && doc_;
+void CentresPanel::dropChain() {
+  if (!chain_) return;
+  chain_.reset();
+  emit chainChanged();
+}
+
+void CentresPanel::leftView() {
+  // The canvas draws the chain's distances only while the panel is seen.
+  dropChain();
+  markStale();
+}
+
+void CentresPanel::compute() {
   // Nothing of a design the solver has not taken: the last good state is another design, or
   // another document's (a file that cannot be solved).
-  if (!seen || !doc_->solved()) {
-    if (chain_) {
-      chain_.reset();
-      emit chainChanged();
-    }
-    if (doc_ && !doc_->solved()) {
+  if (!doc_ || !doc_->solved()) {
+    dropChain();
+    if (doc_) {
       table_->setRowCount(0);
       textTimer_.stop();
       steps_->setHtml(

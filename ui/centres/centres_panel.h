@@ -1,16 +1,17 @@
 // The instant-centres panel: every centre at the current crank angle (i, j, bodies, where, at
 // infinity, how it was found), following the animation; and for a chosen point, its velocity by
 // a chain of centres written out step by step as the homework writes it, beside the solver's
-// exact velocity and their difference. Work is done only while the panel is visible.
+// exact velocity and their difference. Work is done only while the panel is seen
+// (docks/dock_panel.h), once per turn of the event loop.
 #pragma once
 
 #include <QElapsedTimer>
 #include <QPointer>
 #include <QStringList>
 #include <QTimer>
-#include <QWidget>
 #include <optional>
 
+#include "docks/dock_panel.h"
 #include "linkage/velocity_chain.h"
 
 class QComboBox;
@@ -22,13 +23,13 @@ namespace linkage::ui {
 
 class Document;
 
-class CentresPanel : public QWidget {
+class CentresPanel : public DockPanel {
   Q_OBJECT
 
  public:
   explicit CentresPanel(QWidget* parent = nullptr);
   void setDocument(Document* doc);
-  // Asks for what is shown to be recomputed (when visible), once per turn of the event loop
+  // Asks for what is shown to be recomputed (while seen), once per turn of the event loop
   // however often it is asked (an edit changes the design and the pose at once); the window
   // calls it on every pose change.
   void refresh();
@@ -44,12 +45,11 @@ class CentresPanel : public QWidget {
   // The chain changed (or is gone): the canvas draws its distances.
   void chainChanged();
 
- protected:
-  void showEvent(QShowEvent* e) override;
-
  private:
+  void compute() override;
+  void leftView() override;
+  void dropChain();
   void rebuildPoints();
-  void update();
   void fillTable(const InstantCentres& ics);
   std::pair<int, int> shownRows() const;  // [first, last) with a margin
   void fillRows(const InstantCentres& ics, int from, int to);
@@ -68,19 +68,18 @@ class CentresPanel : public QWidget {
 
   QPointer<Document> doc_;
   QTableWidget* table_;
-  std::vector<bool> fresh_;  // the rows written at this pose
-  std::uint64_t tableRevision_ = 0;
+  std::vector<bool> fresh_;          // the rows written at this pose
+  std::uint64_t tableRevision_ = 0;  // the revision the columns were sized for
   QComboBox* point_;
   QLineEdit* via_;
   QTextBrowser* steps_;
   std::optional<VelocityChain> chain_;
   QStringList pointLabels_;  // the choices of point_
-  bool choseNone_ = false;
-  bool pending_ = false;
+  bool choseNone_ = false;   // the user asked for no chain
   // The written-out chain is laid out as rich text, which costs more than a frame: while the
   // mechanism moves it is rewritten at most ten times a second, and once more when it stops.
   QElapsedTimer lastText_;
-  QTimer textTimer_;  // the user asked for no chain  // the revision the columns were sized for
+  QTimer textTimer_;
 };
 
 }  // namespace linkage::ui

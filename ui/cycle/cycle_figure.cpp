@@ -4,8 +4,7 @@
 #include <cmath>
 
 #include "cycle/clearance_text.h"
-#include "forces/force_plots.h"
-#include "plots/qcp.h"
+#include "figures/qcp.h"
 
 namespace linkage::ui {
 
@@ -73,7 +72,7 @@ QString mm(double v) {
 
 }  // namespace
 
-CycleFigure::CycleFigure(QCustomPlot* plot) : plot_(plot), cursorLayer_(cursorLayer(plot)) {}
+CycleFigure::CycleFigure(QCustomPlot* plot) : CrankFigure(plot) {}
 
 double CycleFigure::base(int row) const {
   return kRowPitch * static_cast<double>(rows_ - 1 - row);
@@ -88,15 +87,12 @@ int CycleFigure::leastHeightFor(int rows) {
 }
 
 void CycleFigure::clear() {
-  plot_->clearGraphs();
-  plot_->clearItems();
-  plot_->clearPlottables();
+  clearPlot();
   // The title's row, when there is one above the axes.
   if (plot_->plotLayout()->rowCount() > 1) {
     plot_->plotLayout()->removeAt(0);
     plot_->plotLayout()->simplify();
   }
-  cursor_ = nullptr;
   labels_.clear();
   rows_ = 0;
 }
@@ -114,19 +110,14 @@ void CycleFigure::build(const CycleDiagram& d, const std::vector<CycleWindow>& w
   for (int r = 0; r < rows_; ++r) ticks->addTick(base(r) + 0.5, labels_[r]);
   plot_->yAxis->setTicker(ticks);
   plot_->yAxis->setRange(-0.3, kRowPitch * rows_ - 0.2);
-  plot_->xAxis->setRange(0, 360);
-  plot_->xAxis->setLabel(crankLabel);
-  auto xt = QSharedPointer<QCPAxisTickerFixed>::create();
-  xt->setTickStep(30);
-  plot_->xAxis->setTicker(xt);
+  // Ticks every 30 degrees: the diagram is as wide as the dock, the angles read off it.
+  setCrankAxis(plot_->xAxis, 360, crankLabel, 12);
   if (!title.isEmpty()) {
     plot_->plotLayout()->insertRow(0);
     plot_->plotLayout()->addElement(0, 0, new QCPTextElement(plot_, title));
   }
-  cursor_ = new QCPItemStraightLine(plot_);
-  cursor_->setLayer(cursorLayer_);
-  cursor_->setPen(QPen(QColor(0, 0, 0, 140), 1, Qt::DashLine));
-  setCursor(cursorDeg_);
+  addCursorLine(plot_->axisRect());
+  setCursor(cursor());
   plot_->replot();
 }
 
@@ -238,28 +229,6 @@ void CycleFigure::drawClearance(const CycleClearanceRow& c, int row) {
                           : k.closest.crankDeg > 300 ? Qt::AlignRight | Qt::AlignBottom
                                                      : Qt::AlignHCenter | Qt::AlignBottom);
   labels_.push_back(c.label + "\n" + QStringLiteral("0 to ") + mm(top));
-}
-
-void CycleFigure::setCursor(double deg) {
-  cursorDeg_ = deg;
-  if (!cursor_) return;
-  cursor_->point1->setCoords(deg, 0);
-  cursor_->point2->setCoords(deg, 1);
-  cursorLayer_->replot();
-}
-
-void CycleFigure::setCursorVisible(bool on) {
-  cursorLayer_->setVisible(on);
-  cursorLayer_->replot();
-}
-
-double CycleFigure::crankAt(const QPointF& pixel) const {
-  if (!plot_->axisRect()->rect().contains(pixel.toPoint())) return NAN;
-  return crankAtX(pixel.x());
-}
-
-double CycleFigure::crankAtX(double pixelX) const {
-  return plot_->xAxis->pixelToCoord(pixelX);
 }
 
 QString CycleFigure::rowLabel(int row) const {

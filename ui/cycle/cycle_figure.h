@@ -4,7 +4,7 @@
 // named; the overlaps of windows that must not overlap in red across every row; under them a
 // row per clearance watched (linkage/clearance.h), in mm from 0 at the row's foot, with its
 // least allowed distance (a red line), the closest approach marked and named, and what is under
-// the minimum drawn red. A cursor at the pose on a layer of its own.
+// the minimum drawn red. The cursor at the pose (figures/crank_figure.h).
 //
 // Drawn by the editor's Cycle dock and by linkage-plot (linkage-cli timing --out).
 #pragma once
@@ -14,12 +14,11 @@
 #include <optional>
 #include <vector>
 
+#include "figures/crank_figure.h"
 #include "linkage/clearance.h"
 #include "linkage/timing.h"
 
 class QCustomPlot;
-class QCPItemStraightLine;
-class QCPLayer;
 
 namespace linkage::ui {
 
@@ -29,7 +28,7 @@ struct CycleClearanceRow {
   std::optional<double> minMm;
 };
 
-class CycleFigure {
+class CycleFigure : public CrankFigure {
  public:
   explicit CycleFigure(QCustomPlot* plot);
 
@@ -38,12 +37,6 @@ class CycleFigure {
              const std::vector<CycleClearanceRow>& clearances, const QString& title,
              const QString& crankLabel);
   void clear();
-  // The cursor at a crank angle in [0, 360]; repaints its layer only.
-  void setCursor(double deg);
-  void setCursorVisible(bool on);
-  // The crank angle under a pixel of the diagram (NaN outside its axes).
-  double crankAt(const QPointF& pixel) const;
-  double crankAtX(double pixelX) const;
   // The height in pixels the rows want (an export's or the dock's).
   static int heightFor(int rows);
   // The least height the rows are read at (their two-line labels apart, a window's name or two
@@ -53,7 +46,6 @@ class CycleFigure {
   // For tests and tools: the rows drawn (outputs, then clearances), top first.
   int rowCount() const { return rows_; }
   QString rowLabel(int row) const;
-  double cursor() const { return cursorDeg_; }
   QPointF pixelAt(double crankDeg, double rowHeight, int row) const;
   // The plot's y coordinate of a height in a row (0 its foot, 1 its top): what is drawn over
   // the rows (cycle/level_lines.h) is placed by it.
@@ -65,12 +57,8 @@ class CycleFigure {
   void drawClearance(const CycleClearanceRow& c, int row);
   double base(int row) const;
 
-  QCustomPlot* plot_;
-  QCPLayer* cursorLayer_;
-  QCPItemStraightLine* cursor_ = nullptr;
   std::vector<QString> labels_;
   int rows_ = 0;
-  double cursorDeg_ = 0;
 };
 
 }  // namespace linkage::ui

@@ -28,12 +28,10 @@
 #include "document/commands.h"
 #include "document/document.h"
 #include "document/file_folder.h"
-#include "export/figure_export.h"
+#include "figures/qcp.h"
+#include "figures/units.h"
 #include "linkage/tables/timing_table.h"
 #include "linkage/timing_text.h"
-#include "plots/qcp.h"
-#include "plots/redraw_throttle.h"
-#include "plots/units.h"
 #include "tools/selection.h"
 
 namespace linkage::ui {
@@ -61,17 +59,17 @@ bool inside(const AngleInterval& i, double c) {
 
 }  // namespace
 
-CyclePanel::CyclePanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+CyclePanel::CyclePanel(Document* doc, QWidget* parent)
+    : DockPanel(Redraw::Throttled, Behind::Works, parent), doc_(doc) {
   buildWidgets();
   if (doc) {
     connect(doc, &Document::designChanged, this, [this] {
-      stale_ = true;  // the results are of the entries before: none is shown until recomputed
+      markStale();  // the results are of the entries before: none is shown until recomputed
       // A threshold's drag ends: its preview is of the design before.
       preview_.reset();
       levelDrag_ = -1;
       fillList();
       formFollowsDesign();
-      markStale();
     });
     connect(doc, &Document::poseChanged, this, &CyclePanel::updateCursor);
     connect(doc, &QObject::destroyed, this, [this] { markStale(); });
@@ -224,7 +222,7 @@ void CyclePanel::buildWidgets() {
   connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
   connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { mouseOnPlot(e, false); });
   connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) {
-    dragging_ = false;
+    figure_->endDrag();
     if (levelDrag_ >= 0) endLevelDrag();
   });
   connectForm();
@@ -353,30 +351,14 @@ QString CyclePanel::entryError() const {
 
 // --- work -----------------------------------------------------------------------------------
 
-void CyclePanel::markStale() {
-  stale_ = true;
-  schedule();
-}
-
-void CyclePanel::schedule() {
-  throttle_.ask();
-}
-
-void CyclePanel::showEvent(QShowEvent* e) {
-  QWidget::showEvent(e);
-  ensureComputed();
+void CyclePanel::cameIntoView() {
   updateCursor();
   emitMarks();
 }
 
-void CyclePanel::hideEvent(QHideEvent* e) {
-  QWidget::hideEvent(e);
+void CyclePanel::leftView() {
   // The canvas shows what this dock watches only while the dock is seen.
   Q_EMIT marksChanged({});
-}
-
-void CyclePanel::ensureComputed() {
-  if (stale_) recompute();
 }
 
 QString CyclePanel::whyNoDiagram() const {
@@ -399,9 +381,7 @@ QString CyclePanel::whyNoDiagram() const {
   return {};
 }
 
-void CyclePanel::recompute() {
-  throttle_.done();
-  stale_ = false;
+void CyclePanel::compute() {
   diagram_ = CycleDiagram{};
   windows_.clear();
   clearances_.clear();
@@ -467,7 +447,7 @@ void CyclePanel::rebuildFigure() {
 }
 
 QString CyclePanel::resultText(EntryKind kind, int i) const {
-  if (stale_ || !diagram() || !doc_ || i < 0 || i >= entryCount(doc_->design().timing, kind))
+  if (stale() || !diagram() || !doc_ || i < 0 || i >= entryCount(doc_->design().timing, kind))
     return {};
   const Mechanism& m = doc_->design();
   switch (kind) {
@@ -524,9 +504,9 @@ void CyclePanel::showResults() {
     const int i = item->data(0, kIndexRole).toInt();
     const QString text = resultText(kind, i);
     bool bad = false;
-    if (!stale_ && diagram() && kind == EntryKind::Conflict)
+    if (!stale() && diagram() && kind == EntryKind::Conflict)
       bad = !diagram_.conflicts[i].overlaps.empty();
-    if (!stale_ && diagram() && kind == EntryKind::Clearance)
+    if (!stale() && diagram() && kind == EntryKind::Clearance)
       bad = text.contains(tr("under the minimum")) ||
             (i < static_cast<int>(clearanceWhy_.size()) && !clearanceWhy_[i].isEmpty());
     item->setText(2, text);
@@ -549,7 +529,7 @@ void CyclePanel::showResults() {
 }
 
 void CyclePanel::emitMarks() {
-  if (!isVisible() || !doc_) return;
+  if (!shown() || !doc_) return;
   std::vector<ClearanceMark> marks;
   if (diagram())
     for (const CycleClearanceRow& c : clearances_) {
@@ -565,8 +545,8 @@ void CyclePanel::emitMarks() {
 // --- the cursor -----------------------------------------------------------------------------
 
 void CyclePanel::updateCursor() {
-  if (!isVisible() || !doc_ || !diagram()) return;
-  const double c = doc_->crankDeg(), at = c - 360.0 * std::floor(c / 360.0);
+  if (!shown() || !doc_ || !diagram()) return;
+  const double at = crankInPeriod(doc_->crankDeg(), 360);
   figure_->setCursor(at);
   QStringList parts;
   for (const WindowIntervals& w : diagram_.windows) {
@@ -592,17 +572,16 @@ void CyclePanel::mouseOnPlot(QMouseEvent* e, bool press) {
     plot_->setCursor(levels_->windowAt(e->position()) >= 0 ? Qt::SizeVerCursor : Qt::CrossCursor);
     return;
   }
-  if (press && !dragging_ && levelDrag_ < 0)
+  if (press && !figure_->dragging() && levelDrag_ < 0)
     if (const int w = levels_->windowAt(e->position()); w >= 0) beginLevelDrag(w);
   if (levelDrag_ >= 0) {
     if (!press) dragLevel(e->position().y());
     return;
   }
-  if (press) dragging_ = !std::isnan(figure_->crankAt(e->position()));
-  if (!dragging_) return;
-  const double d = std::clamp(figure_->crankAtX(e->position().x()), 0.0, 360.0);
-  const double base = doc_ ? 360.0 * std::floor(doc_->crankDeg() / 360.0) : 0.0;
-  Q_EMIT crankAngleRequested(base + d);
+  const double d = figure_->crankDragged(e->position(), press);
+  if (std::isnan(d)) return;
+  Q_EMIT crankAngleRequested(
+      crankNear(std::clamp(d, 0.0, 360.0), doc_ ? doc_->crankDeg() : 0.0, 360));
 }
 
 // --- export ---------------------------------------------------------------------------------
@@ -617,9 +596,7 @@ bool CyclePanel::exportFigure(const QString& path, QSize size, QString* error) {
   figure_->build(diagram_, windows_, clearances_,
                  (name.isEmpty() ? QString() : name + ": ") + tr("cycle diagram"),
                  crankAxisLabel(doc_->design()));
-  figure_->setCursorVisible(false);
-  const bool ok = exportPlot(plot_, path, size, error);
-  figure_->setCursorVisible(true);
+  const bool ok = figure_->exportFigure(path, size, error);
   rebuildFigure();
   return ok;
 }

@@ -14,11 +14,10 @@
 // angle (the same signal as the plots'). Only determined numbers are shown: a design not
 // solved, a motion the driver does not determine or a crank that cannot turn a whole cycle get
 // a sentence in place of the diagram; an entry that cannot be measured says why in its row.
-// Work only while seen: hidden, an edit marks the diagram stale.
+// Work only while seen (docks/dock_panel.h): hidden, an edit marks the diagram stale.
 #pragma once
 
 #include <QPointer>
-#include <QWidget>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -27,7 +26,7 @@
 #include "cycle/cycle_entries.h"
 #include "cycle/cycle_figure.h"
 #include "cycle/level_lines.h"
-#include "plots/redraw_throttle.h"
+#include "docks/dock_panel.h"
 
 class QComboBox;
 class QCustomPlot;
@@ -45,7 +44,7 @@ class Document;
 class Selection;
 class WindowForm;
 
-class CyclePanel : public QWidget {
+class CyclePanel : public DockPanel {
   Q_OBJECT
 
  public:
@@ -90,7 +89,6 @@ class CyclePanel : public QWidget {
   // What a script driving the editor reads (window/probe.h): the sentence or the rows, each
   // entry with its result, where the kind box, the line and the diagram's angles are.
   QStringList probeLines() const;
-  bool redrawPending() const { return throttle_.pending(); }
 
  public Q_SLOTS:
   void saveFigureAs();
@@ -105,8 +103,6 @@ class CyclePanel : public QWidget {
   void marksChanged(const std::vector<linkage::ui::ClearanceMark>& marks);
 
  protected:
-  void showEvent(QShowEvent* e) override;
-  void hideEvent(QHideEvent* e) override;
   bool eventFilter(QObject* watched, QEvent* e) override;
 
  private:
@@ -114,9 +110,9 @@ class CyclePanel : public QWidget {
   QWidget* buildAddRow();
   void buildList();  // the entries and their results
   void fillList();
-  void markStale();
-  void schedule();
-  void recompute();
+  void compute() override;
+  void cameIntoView() override;
+  void leftView() override;
   void computeClearances(const Kinematics& k);
   // Clearance entry i's result (null when it is not measured).
   const CycleClearanceRow* clearanceRow(int i) const;
@@ -125,7 +121,6 @@ class CyclePanel : public QWidget {
   QString whyNoDiagram() const;
   void updateCursor();
   void mouseOnPlot(QMouseEvent* e, bool press);
-  void ensureComputed();
   void itemEdited(QTreeWidgetItem* item);
   void setError(const QString& why);  // "" hides the line
   void fitEntryColumn();
@@ -153,7 +148,7 @@ class CyclePanel : public QWidget {
   std::vector<CycleClearanceRow> clearances_;
   std::vector<QString> clearanceWhy_;  // per clearance entry: why it is not measured, or ""
   QString why_;
-  bool stale_ = true, dragging_ = false, filling_ = false;
+  bool filling_ = false;
   std::optional<Timing> preview_;  // the timing shown while a threshold is dragged
   int levelDrag_ = -1;             // the window whose threshold is dragged
   std::uint32_t formOwner_ = 0;    // the mechanism the form's fields are of (Mechanism::owner)
@@ -169,7 +164,6 @@ class CyclePanel : public QWidget {
   QCustomPlot* plot_;
   std::unique_ptr<CycleFigure> figure_;
   std::unique_ptr<LevelLines> levels_;
-  RedrawThrottle throttle_{this, [this] { recompute(); }};
 };
 
 }  // namespace linkage::ui

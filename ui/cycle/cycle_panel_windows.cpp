@@ -10,8 +10,8 @@
 #include "cycle/cycle_panel.h"
 #include "cycle/window_form.h"
 #include "document/document.h"
+#include "figures/qcp.h"
 #include "linkage/timing_text.h"
-#include "plots/qcp.h"
 
 namespace linkage::ui {
 
@@ -120,7 +120,7 @@ std::optional<std::pair<double, double>> CyclePanel::strokeOf(const LimitMeasure
   if (!doc_ || !doc_->solved() || !doc_->motionStatus().ok() || !doc_->design().driver)
     return std::nullopt;
   const std::string name = measureText(doc_->design(), x);
-  if (!stale_ && diagram())
+  if (!stale() && diagram())
     for (const CycleRow& r : diagram_.rows)
       if (r.output.name == name) return std::pair{r.min, r.max};
   const CycleDiagram d = cycleDiagram(doc_->kinematics(), {{name, x}}, {}, {});

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "plots/qcp.h"
+#include "figures/qcp.h"
 
 namespace linkage::ui {
 

@@ -67,7 +67,7 @@ QLabel* note() {
 }  // namespace
 
 ChecksPanel::ChecksPanel(DesignChoices* choices, QWidget* parent)
-    : QWidget(parent), choices_(choices) {
+    : DockPanel(Redraw::Now, Behind::Rests, parent), choices_(choices) {
   buildWidgets();
   connect(choices_, &DesignChoices::bandChanged, this, [this] {
     QSignalBlocker a(lo_), b(hi_);
@@ -194,18 +194,7 @@ QString ChecksPanel::limitsStatus() const {
   return limitsNote_->text();
 }
 
-void ChecksPanel::setShown(bool on) {
-  shown_ = on;
-  if (shown_ && stale_) recompute();
-}
-
-void ChecksPanel::markStale() {
-  stale_ = true;
-  if (shown_) recompute();
-}
-
-void ChecksPanel::recompute() {
-  stale_ = false;
+void ChecksPanel::compute() {
   ++computations_;
   offerSubjects();
   fillGrashof();

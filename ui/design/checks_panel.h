@@ -9,13 +9,14 @@
 //   or of a body's angle, with the crank angles and the stroke (findLimits); the same subject
 //   as the canvas's extreme positions.
 // Double-clicking a value turns the crank to where it occurs. Values follow edits: recomputed
-// when the design, the band or the subject changes, only while the panel is seen (setShown:
-// its dock's visibility); unseen, an edit only marks it stale. Each number's exact value is in
+// at once when the design, the band or the subject changes, only while the panel is seen
+// (docks/dock_panel.h); unseen, an edit only marks it stale. Each number's exact value is in
 // its cell's Qt::UserRole, the crank angle it occurs at in CrankRole.
 #pragma once
 
 #include <QPointer>
-#include <QWidget>
+
+#include "docks/dock_panel.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -30,7 +31,7 @@ namespace linkage::ui {
 class DesignChoices;
 class Document;
 
-class ChecksPanel : public QWidget {
+class ChecksPanel : public DockPanel {
   Q_OBJECT
 
  public:
@@ -38,11 +39,6 @@ class ChecksPanel : public QWidget {
 
   explicit ChecksPanel(DesignChoices* choices, QWidget* parent = nullptr);
   void setDocument(Document* doc);
-  // Whether the panel is seen (its dock's visibilityChanged): computed when it comes into view
-  // if anything changed meanwhile, and on every change while it is seen.
-  void setShown(bool on);
-  bool shown() const { return shown_; }
-
   QTableWidget* grashofTable() const { return grashof_; }
   QTableWidget* transmissionTable() const { return transmission_; }
   QTableWidget* limitsTable() const { return limits_; }
@@ -65,8 +61,7 @@ class ChecksPanel : public QWidget {
   void layOut(QHBoxLayout* band, QFormLayout* form);
   void offerSubjects();
   void subjectEdited();
-  void markStale();
-  void recompute();
+  void compute() override;
   // Empties a section's table and note; false, with the note saying why, without motion.
   bool clearSection(QTableWidget* table, QLabel* note) const;
   void fillGrashof();
@@ -76,7 +71,6 @@ class ChecksPanel : public QWidget {
 
   QPointer<Document> doc_;
   DesignChoices* choices_;
-  bool stale_ = true, shown_ = false;
   int computations_ = 0;
   QTableWidget *grashof_, *transmission_, *limits_;
   QComboBox* subject_;

@@ -6,8 +6,9 @@
 #include <QVBoxLayout>
 
 #include "design/study_table_model.h"
-#include "plots/qcp.h"
-#include "plots/units.h"
+#include "figures/crank_figure.h"
+#include "figures/qcp.h"
+#include "figures/units.h"
 
 namespace linkage::ui {
 
@@ -183,13 +184,11 @@ void StudyPlots::plotFamily() {
     family_->xAxis->setLabel(pointLabel_ + QStringLiteral(" x [mm]"));
     family_->yAxis->setLabel(pointLabel_ + QStringLiteral(" y [mm]"));
   } else {
-    family_->xAxis->setLabel(crankLabel_);
+    setCrankAxis(family_->xAxis, 360, crankLabel_);
     family_->yAxis->setLabel(QStringLiteral("%1 along (%2, %3) [mm]")
                                  .arg(pointLabel_)
                                  .arg(direction_.x(), 0, 'g', 3)
                                  .arg(direction_.y(), 0, 'g', 3));
-    family_->xAxis->setTicker(QSharedPointer<QCPAxisTickerFixed>::create());
-    qSharedPointerCast<QCPAxisTickerFixed>(family_->xAxis->ticker())->setTickStep(45);
   }
   fitFamily();
 }
@@ -199,12 +198,15 @@ void StudyPlots::fitFamily() {
     family_->replot();
     return;
   }
-  family_->rescaleAxes();
-  for (QCPAxis* a : {family_->xAxis, family_->yAxis}) a->scaleRange(1.08, a->range().center());
   if (familyBox_->currentData().toInt() != static_cast<int>(Family::Paths)) {
+    // Against the crank angle: one turn, as every crank-angle figure shows it.
+    family_->yAxis->rescale();
+    family_->yAxis->scaleRange(1.08, family_->yAxis->range().center());
     family_->replot();
     return;
   }
+  family_->rescaleAxes();
+  for (QCPAxis* a : {family_->xAxis, family_->yAxis}) a->scaleRange(1.08, a->range().center());
   // Equal millimetres on both axes: the paths' shapes as they are. Widen whichever axis
   // would otherwise squeeze the other.
   family_->plotLayout()->update(QCPLayoutElement::upLayout);

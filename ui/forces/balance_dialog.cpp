@@ -19,12 +19,12 @@
 #include "document/commands.h"
 #include "document/document.h"
 #include "document/shown_numbers.h"
+#include "figures/qcp.h"
+#include "figures/units.h"
 #include "forces/balance_figure.h"
 #include "forces/force_plots.h"
 #include "linkage/elements.h"
 #include "linkage/force_samples.h"
-#include "plots/qcp.h"
-#include "plots/units.h"
 
 namespace linkage::ui {
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "figures/qcp.h"
 #include "forces/force_plots.h"
-#include "plots/qcp.h"
 
 namespace linkage::ui {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "figures/qcp.h"
+#include "figures/units.h"
 #include "forces/force_plots.h"
-#include "plots/qcp.h"
-#include "plots/units.h"
 
 namespace linkage::ui {
 
@@ -22,10 +22,7 @@ std::vector<double> component(const std::vector<Vec2>& v, int c) {
 
 }  // namespace
 
-ForceFigure::ForceFigure(QCustomPlot* plot) : plot_(plot) {
-  plot_->setAutoAddPlottableToLegend(false);
-  plot_->setPlottingHint(QCP::phFastPolylines, true);
-  cursorLayer_ = cursorLayer(plot_);
+ForceFigure::ForceFigure(QCustomPlot* plot) : CrankFigure(plot) {
   // Every draw lays the plots out first (on the screen, or at an export's size): the polar
   // diagram's scales are made equal for the size it is drawn at, before it is drawn.
   QObject::connect(plot_, &QCustomPlot::afterLayout, plot_, [this] {
@@ -55,8 +52,7 @@ int ForceFigure::leastHeightFor(int columns) {
 }
 
 void ForceFigure::clear() {
-  plot_->clearItems();
-  plot_->clearPlottables();
+  clearPlot();
   plot_->plotLayout()->clear();
   for (auto& r : rects_) r = nullptr;
   for (auto& c : cells_) c = nullptr;
@@ -64,8 +60,6 @@ void ForceFigure::clear() {
   polar_ = nullptr;
   polarDot_ = nullptr;
   polarArrow_ = nullptr;
-  lines_.clear();
-  tracers_.clear();
   samples_ = nullptr;
 }
 
@@ -165,34 +159,14 @@ void ForceFigure::build(const ForceSamples& s, const QString& crankLabel, const 
     addLegend(rects_[Reaction], {curves_[ReactionX], curves_[ReactionY], curves_[ReactionNorm]},
               beside ? cells_[Reaction] : nullptr);
   addCursor();
-  setCursor(cursorDeg_);
+  setCursor(cursor());
   replot();
 }
 
 void ForceFigure::addCursor() {
-  for (Plot p : {Torque, Shaking, Reaction}) {
-    QCPAxisRect* rect = rects_[p];
-    auto* line = new QCPItemStraightLine(plot_);
-    line->setLayer(cursorLayer_);
-    line->setClipAxisRect(rect);
-    line->point1->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-    line->point2->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-    line->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
-    lines_.push_back(line);
-  }
-  for (QCPGraph* g : curves_) {
-    if (!g) continue;
-    auto* t = new QCPItemTracer(plot_);
-    t->setLayer(cursorLayer_);
-    t->setGraph(g);
-    t->setInterpolating(true);
-    t->setStyle(QCPItemTracer::tsCircle);
-    t->setSize(6);
-    t->setPen(QPen(g->pen().color().darker(130)));
-    t->setBrush(Qt::white);
-    t->setClipAxisRect(g->keyAxis()->axisRect());
-    tracers_.push_back(t);
-  }
+  for (Plot p : {Torque, Shaking, Reaction}) addCursorLine(rects_[p]);
+  for (QCPGraph* g : curves_)
+    if (g) addCursorDot(g);
   QCPAxisRect* polar = rects_[Polar];
   polarArrow_ = new QCPItemLine(plot_);
   polarDot_ = new QCPItemTracer(plot_);
@@ -204,7 +178,7 @@ void ForceFigure::addCursor() {
   polarDot_->setBrush(QColor(255, 200, 40));
   for (QCPAbstractItem* i :
        {static_cast<QCPAbstractItem*>(polarArrow_), static_cast<QCPAbstractItem*>(polarDot_)}) {
-    i->setLayer(cursorLayer_);
+    i->setLayer(cursorLayer());
     i->setClipAxisRect(polar);
     for (QCPItemPosition* p : i->positions())
       p->setAxes(polar->axis(QCPAxis::atBottom), polar->axis(QCPAxis::atLeft));
@@ -216,7 +190,7 @@ QPointF ForceFigure::polarMark() const {
   if (!samples_ || samples_->size() == 0) return {NAN, NAN};
   const ForceSamples& s = *samples_;
   const double step = 360.0 / static_cast<double>(s.steps);
-  const double at = cursorDeg_ / step;
+  const double at = cursor() / step;
   const size_t i = static_cast<size_t>(std::max(0.0, std::floor(at)));
   if (i + 1 >= s.size()) {
     // At the last sample exactly, or past where the sweep stopped (nothing known there).
@@ -229,32 +203,14 @@ QPointF ForceFigure::polarMark() const {
   return {f.x(), f.y()};
 }
 
-void ForceFigure::setCursor(double deg) {
-  cursorDeg_ = deg;
-  for (QCPItemStraightLine* l : lines_) {
-    l->point1->setCoords(deg, 0);
-    l->point2->setCoords(deg, 1);
-  }
-  for (QCPItemTracer* t : tracers_) {
-    t->setGraphKey(deg);
-    const QCPGraph* g = t->graph();
-    t->setVisible(!g->data()->isEmpty() && deg >= g->data()->constBegin()->key &&
-                  deg <= (g->data()->constEnd() - 1)->key);
-  }
-  if (polarDot_) {
-    const QPointF f = polarMark();
-    const bool known = std::isfinite(f.x());
-    polarDot_->position->setCoords(f);
-    polarArrow_->end->setCoords(f);
-    polarDot_->setVisible(known);
-    polarArrow_->setVisible(known);
-  }
-  cursorLayer_->replot();
-}
-
-void ForceFigure::setCursorVisible(bool on) {
-  cursorLayer_->setVisible(on);
-  cursorLayer_->replot();
+void ForceFigure::cursorMoved(double) {
+  if (!polarDot_) return;
+  const QPointF f = polarMark();
+  const bool known = std::isfinite(f.x());
+  polarDot_->position->setCoords(f);
+  polarArrow_->end->setCoords(f);
+  polarDot_->setVisible(known);
+  polarArrow_->setVisible(known);
 }
 
 void ForceFigure::replot() {
@@ -281,21 +237,6 @@ void ForceFigure::fitCrankLabels() {
     const bool fits = fm.horizontalAdvance(crankLabel_) + 8 <= rects_[p]->outerRect().width();
     x->setLabel(fits ? crankLabel_ : crankBrief_);
   }
-}
-
-double ForceFigure::crankAt(const QPointF& pixel, int* plot) const {
-  if (plot) *plot = -1;
-  for (Plot p : {Torque, Shaking, Reaction})
-    if (rects_[p] && rects_[p]->rect().contains(pixel.toPoint())) {
-      if (plot) *plot = p;
-      return crankAtX(p, pixel.x());
-    }
-  return NAN;
-}
-
-double ForceFigure::crankAtX(int plot, double pixelX) const {
-  if (plot < 0 || plot >= kPlots || plot == Polar || !rects_[plot]) return NAN;
-  return rects_[plot]->axis(QCPAxis::atBottom)->pixelToCoord(pixelX);
 }
 
 QPointF ForceFigure::pixelAt(Plot p, double x, double y) const {

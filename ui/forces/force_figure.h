@@ -1,7 +1,7 @@
 // The forces panel's figure in a QCustomPlot: the driver's torque, the shaking force's fx and
 // fy and a joint's reaction against the crank angle over one turn, and the polar diagram of the
-// shaking force (fy against fx, equal scales); a cursor at the pose on a layer of its own (a
-// line on each crank-angle plot, the pose's point and force vector on the polar diagram).
+// shaking force (fy against fx, equal scales); the cursor at the pose (figures/crank_figure.h:
+// a line on each crank-angle plot, and the pose's point and force vector on the polar diagram).
 // Laid out as one row of four plots in a wide low dock, two by two in a squarer one, one column
 // in a tall narrow one (columnsFor).
 #pragma once
@@ -11,6 +11,7 @@
 #include <QString>
 #include <vector>
 
+#include "figures/crank_figure.h"
 #include "linkage/force_samples.h"
 
 class QCustomPlot;
@@ -18,14 +19,12 @@ class QCPAxisRect;
 class QCPCurve;
 class QCPGraph;
 class QCPItemLine;
-class QCPItemStraightLine;
 class QCPItemTracer;
-class QCPLayer;
 class QCPLayoutGrid;
 
 namespace linkage::ui {
 
-class ForceFigure {
+class ForceFigure : public CrankFigure {
  public:
   enum Plot { Torque, Shaking, Polar, Reaction, kPlots };
   enum Curve { TorqueCurve, ShakingX, ShakingY, ReactionX, ReactionY, ReactionNorm, kCurves };
@@ -46,10 +45,6 @@ class ForceFigure {
              const JointChoice& joint, const QString& stopNote, double sizeMm);
   // Nothing drawn (the panel shows a sentence instead).
   void clear();
-  // Moves the cursor to a crank angle in [0, 360] and repaints the cursor layer only.
-  void setCursor(double deg);
-  double cursor() const { return cursorDeg_; }
-  void setCursorVisible(bool on);
   // Plots across a figure of `area` pixels: 4 in a row, 2 by 2 or 4 in a column, whichever
   // gives each plot the largest least side (a short wide dock: a row; a square one: 2 by 2),
   // so that the curves get a height to read and the polar diagram is drawn near square.
@@ -61,10 +56,6 @@ class ForceFigure {
   static constexpr int kLeastPlotHeight = 170;  // a title, 100 px of curves, the axes' text
   // Lay the next builds out for this size rather than the plot's (an export); empty: the plot's.
   void setLayoutSize(QSize size) { layoutSize_ = size; }
-
-  // The crank angle under a pixel of a crank-angle plot (NaN elsewhere), the plot in `plot`.
-  double crankAt(const QPointF& pixel, int* plot = nullptr) const;
-  double crankAtX(int plot, double pixelX) const;
 
   // For tests and tools.
   QCPAxisRect* rect(Plot p) const { return rects_[p]; }
@@ -83,20 +74,16 @@ class ForceFigure {
   void fitCrankLabels();
   void squarePolar();
   void addCursor();
+  void cursorMoved(double deg) override;
 
-  QCustomPlot* plot_;
-  QCPLayer* cursorLayer_;
   const ForceSamples* samples_ = nullptr;
   int columns_ = 4;
   QSize layoutSize_;
-  double cursorDeg_ = 0;
   QString crankLabel_, crankBrief_;
   QCPAxisRect* rects_[kPlots] = {};
   QCPLayoutGrid* cells_[kPlots] = {};  // each rect's grid, with its legend beside it
   QCPGraph* curves_[kCurves] = {};
   QCPCurve* polar_ = nullptr;
-  std::vector<QCPItemStraightLine*> lines_;
-  std::vector<QCPItemTracer*> tracers_;
   QCPItemTracer* polarDot_ = nullptr;
   QCPItemLine* polarArrow_ = nullptr;
 };

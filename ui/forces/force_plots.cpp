@@ -3,25 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
-#include "plots/qcp.h"
+#include "figures/crank_figure.h"
+#include "figures/qcp.h"
 
 namespace linkage::ui {
 
 QCPAxisRect* addCrankRect(QCustomPlot* plot, const QString& crankLabel, const QString& yLabel) {
   auto* rect = new QCPAxisRect(plot);
-  QCPAxis* x = rect->axis(QCPAxis::atBottom);
+  rect->setMinimumMargins(QMargins());  // no room beyond the axes' own (QCPAxisRect keeps 15 px)
+  // Ticks every 90 degrees: the plots are narrow, four of them side by side.
+  setCrankAxis(rect->axis(QCPAxis::atBottom), 360, crankLabel, 4);
   QCPAxis* y = rect->axis(QCPAxis::atLeft);
-  auto ticker = QSharedPointer<QCPAxisTickerFixed>::create();
-  ticker->setTickStep(90);
-  ticker->setScaleStrategy(QCPAxisTickerFixed::ssNone);
-  x->setTicker(ticker);
-  x->setRange(0, 360);
-  x->setLabel(crankLabel);
   y->setLabel(yLabel);
   y->ticker()->setTickCount(5);
-  // The last tick label ("360") is centred on the right edge: room for its half.
-  rect->setMinimumMargins(
-      QMargins(0, 0, QFontMetrics(x->tickLabelFont()).horizontalAdvance("360"), 0));
   return rect;
 }
 
@@ -241,14 +235,6 @@ bool fitEqualScales(QCPAxisRect* rect) {
   ax->setRange(x);
   ay->setRange(y);
   return true;
-}
-
-QCPLayer* cursorLayer(QCustomPlot* plot) {
-  if (QCPLayer* l = plot->layer("cursor")) return l;
-  plot->addLayer("cursor", plot->layer("main"), QCustomPlot::limAbove);
-  QCPLayer* l = plot->layer("cursor");
-  l->setMode(QCPLayer::lmBuffered);
-  return l;
 }
 
 }  // namespace linkage::ui

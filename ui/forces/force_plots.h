@@ -15,7 +15,6 @@ class QCPAbstractPlottable;
 class QCPAxisRect;
 class QCPCurve;
 class QCPGraph;
-class QCPLayer;
 class QCPLayoutGrid;
 class QCPRange;
 
@@ -26,7 +25,8 @@ inline const QColor kX{31, 119, 180}, kY{214, 39, 40}, kNorm{90, 90, 90}, kPolar
     kBefore{150, 150, 150}, kAfter{31, 119, 180}, kNote{150, 20, 20};
 }
 
-// A rect of the plot's layout with the crank angle from 0 to 360 on x and `yLabel` on y.
+// A rect of the plot's layout with the crank angle from 0 to 360 on x (setCrankAxis,
+// figures/crank_figure.h) and `yLabel` on y.
 QCPAxisRect* addCrankRect(QCustomPlot* plot, const QString& crankLabel, const QString& yLabel);
 // A curve of values against the crank angles (the same length), pen of `colour`.
 QCPGraph* addCurve(QCPAxisRect* rect, const std::vector<double>& deg,
@@ -63,9 +63,5 @@ void polarBox(QCPAxisRect* rect, QCPRange& x, QCPRange& y);
 // Sets the rect's ranges so that a newton is as long on x as on y and the box shows whole,
 // centred: true when a range changed. Needs the rect laid out (QCustomPlot::afterLayout).
 bool fitEqualScales(QCPAxisRect* rect);
-
-// A cursor layer over the curves with its own paint buffer: moving the cursor repaints it
-// alone.
-QCPLayer* cursorLayer(QCustomPlot* plot);
 
 }  // namespace linkage::ui

@@ -16,14 +16,12 @@
 #include "document/document.h"
 #include "document/file_folder.h"
 #include "document/shown_numbers.h"
-#include "export/figure_export.h"
 #include "export/table_size_dialog.h"
+#include "figures/qcp.h"
+#include "figures/units.h"
 #include "forces/force_plots.h"
 #include "forces/force_table_export.h"
 #include "linkage/elements.h"
-#include "plots/qcp.h"
-#include "plots/redraw_throttle.h"
-#include "plots/units.h"
 
 namespace linkage::ui {
 
@@ -47,7 +45,8 @@ QString number(double v) {
 
 }  // namespace
 
-ForcesPanel::ForcesPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+ForcesPanel::ForcesPanel(Document* doc, QWidget* parent)
+    : DockPanel(Redraw::Throttled, Behind::Works, parent), doc_(doc) {
   buildWidgets();
   if (doc) {
     connect(doc, &Document::designChanged, this, [this] {
@@ -108,7 +107,7 @@ void ForcesPanel::buildWidgets() {
   connect(joints_, &QComboBox::activated, this, [this](int i) { setJoint(i); });
   connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
   connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { mouseOnPlot(e, false); });
-  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { dragging_ = false; });
+  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { figure_->endDrag(); });
 }
 
 // --- the joint ------------------------------------------------------------------------------
@@ -129,10 +128,10 @@ void ForcesPanel::setJoint(int index) {
   if (index < 0 || index >= joints_->count()) index = -1;
   joints_->setCurrentIndex(index);
   const QString name = joints_->currentText();
-  if (name == jointName_ && !stale_) return;
+  if (name == jointName_ && !stale()) return;
   jointName_ = name;
   // The samples hold every joint's reaction: only the figure changes.
-  if (isVisible() && !stale_) rebuildFigure();
+  if (shown() && !stale()) rebuildFigure();
 }
 
 int ForcesPanel::joint() const {
@@ -141,18 +140,7 @@ int ForcesPanel::joint() const {
 
 // --- work -----------------------------------------------------------------------------------
 
-void ForcesPanel::markStale() {
-  stale_ = true;
-  schedule();
-}
-
-void ForcesPanel::schedule() {
-  throttle_.ask();
-}
-
-void ForcesPanel::showEvent(QShowEvent* e) {
-  QWidget::showEvent(e);
-  ensureComputed();
+void ForcesPanel::cameIntoView() {
   updateCursor();
 }
 
@@ -160,7 +148,7 @@ void ForcesPanel::resizeEvent(QResizeEvent* e) {
   QWidget::resizeEvent(e);
   // A row of plots in a wide low dock, two by two in a squarer one: laid out again when that
   // changes.
-  if (!stale_ && samples() && ForceFigure::columnsFor(room()) != figure_->columns())
+  if (!stale() && samples() && ForceFigure::columnsFor(room()) != figure_->columns())
     rebuildFigure();
 }
 
@@ -168,10 +156,6 @@ QSize ForcesPanel::room() const {
   // The scroll area's, less the panel's other rows once it is laid out; the panel's before.
   const QSize view = scroll_->maximumViewportSize();
   return view.isValid() && view.height() > 0 ? view : size();
-}
-
-void ForcesPanel::ensureComputed() {
-  if (stale_) recompute();
 }
 
 QString ForcesPanel::whyNoForces() const {
@@ -187,9 +171,7 @@ QString ForcesPanel::whyNoForces() const {
   return {};
 }
 
-void ForcesPanel::recompute() {
-  throttle_.done();
-  stale_ = false;
+void ForcesPanel::compute() {
   samples_ = ForceSamples{};
   why_ = whyNoForces();
   if (why_.isEmpty()) {
@@ -264,9 +246,9 @@ void ForcesPanel::rebuildFigure() {
 }
 
 void ForcesPanel::updateCursor() {
-  if (!isVisible() || !doc_ || !samples()) return;
+  if (!shown() || !doc_ || !samples()) return;
   const double c = doc_->crankDeg();
-  figure_->setCursor(c - 360.0 * std::floor(c / 360.0));
+  figure_->setCursor(crankInPeriod(c, 360));
   // The values at the pose exactly, not read off the curves: a solver of its own on a copy (a
   // solver works on the kinematics it was prepared with; about as long as a kinematic step).
   Kinematics k = doc_->kinematics();
@@ -300,13 +282,11 @@ QString ForcesPanel::cursorText() const {
 
 void ForcesPanel::mouseOnPlot(QMouseEvent* e, bool press) {
   if (!(e->buttons() & Qt::LeftButton) || !samples()) return;
-  if (press) dragging_ = !std::isnan(figure_->crankAt(e->position(), &dragPlot_));
-  if (!dragging_) return;
-  // While dragging, the plot pressed on gives the angle even outside its axes.
+  const double deg = figure_->crankDragged(e->position(), press);
+  if (std::isnan(deg)) return;
   const double hi = samples_.complete ? 360.0 : samples_.crankDeg.back();
-  const double deg = std::clamp(figure_->crankAtX(dragPlot_, e->position().x()), 0.0, hi);
-  const double base = doc_ ? 360.0 * std::floor(doc_->crankDeg() / 360.0) : 0.0;
-  Q_EMIT crankAngleRequested(base + deg);
+  Q_EMIT crankAngleRequested(
+      crankNear(std::clamp(deg, 0.0, hi), doc_ ? doc_->crankDeg() : 0.0, 360));
 }
 
 // --- export ---------------------------------------------------------------------------------
@@ -323,9 +303,7 @@ bool ForcesPanel::exportFigure(const QString& path, QSize size, QString* error) 
     exportSize_ = size;
     rebuildFigure();
   }
-  figure_->setCursorVisible(false);
-  const bool ok = exportPlot(plot_, path, size, error);
-  figure_->setCursorVisible(true);
+  const bool ok = figure_->exportFigure(path, size, error);
   if (relayout) {
     exportSize_ = QSize();
     rebuildFigure();

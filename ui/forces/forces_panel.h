@@ -7,7 +7,8 @@
 // Only determined numbers are shown: a design not solved, a motion the driver does not
 // determine, or a design with no masses and no loads gets a sentence in place of the curves;
 // a joint whose reaction is not determined (a redundant joint) gets one in place of its curves.
-// Work only while seen: hidden, an edit marks the curves stale; a pose change moves the cursor.
+// Work only while seen (docks/dock_panel.h): hidden, an edit marks the curves stale; a pose
+// change moves the cursor.
 //
 // Wiring in a main window:
 //   auto* forces = new ForcesPanel(doc, dock);
@@ -16,12 +17,11 @@
 #pragma once
 
 #include <QPointer>
-#include <QWidget>
 #include <memory>
 
+#include "docks/dock_panel.h"
 #include "forces/force_figure.h"
 #include "linkage/force_samples.h"
-#include "plots/redraw_throttle.h"
 
 class QComboBox;
 class QCustomPlot;
@@ -34,7 +34,7 @@ namespace linkage::ui {
 
 class Document;
 
-class ForcesPanel : public QWidget {
+class ForcesPanel : public DockPanel {
   Q_OBJECT
 
  public:
@@ -62,7 +62,6 @@ class ForcesPanel : public QWidget {
   QString cursorText() const;  // the values at the pose, as shown
   double cursorDeg() const { return figure_->cursor(); }
   int computations() const { return computations_; }
-  bool redrawPending() const { return throttle_.pending(); }
 
  public Q_SLOTS:
   // Asks for a file (SVG, PDF, PNG) and writes the figure; a failure in a message box.
@@ -76,15 +75,13 @@ class ForcesPanel : public QWidget {
   void crankAngleRequested(double deg);
 
  protected:
-  void showEvent(QShowEvent* e) override;
   void resizeEvent(QResizeEvent* e) override;
 
  private:
   void buildWidgets();
   void offerJoints();
-  void markStale();
-  void schedule();
-  void recompute();
+  void compute() override;
+  void cameIntoView() override;
   void rebuildFigure();
   QString whyNoForces() const;
   // The sentence for forces too large for the plots' axes, "" when they can be drawn.
@@ -93,16 +90,13 @@ class ForcesPanel : public QWidget {
   QSize room() const;
   void updateCursor();
   void mouseOnPlot(QMouseEvent* e, bool press);
-  void ensureComputed();
 
   QPointer<Document> doc_;
   ForceSamples samples_;
   double forceScale_ = 0, torqueScale_ = 0;  // the peaks: what is rounding next to them
   QString why_;                              // the sentence in place of the curves
   QString jointName_;                        // the chosen joint, by the force table's name
-  bool stale_ = true, dragging_ = false;
-  int dragPlot_ = -1, computations_ = 0;
-  RedrawThrottle throttle_{this, [this] { recompute(); }};
+  int computations_ = 0;
 
   QComboBox* joints_;
   QLabel *values_, *sentence_;

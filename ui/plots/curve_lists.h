@@ -5,8 +5,8 @@
 #include <QString>
 #include <vector>
 
+#include "figures/units.h"
 #include "plots/curve_set.h"
-#include "plots/units.h"
 
 class QTreeWidget;
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "document/shown_numbers.h"
-#include "plots/units.h"
+#include "figures/units.h"
 
 namespace linkage::ui {
 

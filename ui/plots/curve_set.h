@@ -39,7 +39,7 @@ class CurveSet {
   const Status& status() const { return status_; }
   bool empty() const { return samples_ == nullptr || samples_->size() == 0; }
   bool periodic() const { return samples_ && samples_->periodic; }
-  // "disk angle [deg], clockwise" (crankAxisLabel, plots/units.h).
+  // "disk angle [deg], clockwise" (crankAxisLabel, figures/units.h).
   const QString& crankLabel() const { return crankLabel_; }
   const Quantity& quantity() const { return quantity_; }
 

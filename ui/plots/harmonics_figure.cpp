@@ -1,7 +1,7 @@
 #include "plots/harmonics_figure.h"
 
+#include "figures/qcp.h"
 #include "plots/motion_figure.h"
-#include "plots/qcp.h"
 
 namespace linkage::ui {
 

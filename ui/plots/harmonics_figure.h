@@ -6,8 +6,8 @@
 
 #include <vector>
 
+#include "figures/units.h"
 #include "plots/curve_set.h"
-#include "plots/units.h"
 
 class QCustomPlot;
 class QCPMarginGroup;

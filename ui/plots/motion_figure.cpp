@@ -3,18 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "plots/qcp.h"
+#include "figures/qcp.h"
 
 namespace linkage::ui {
 
 namespace {
-
-// Crank-angle ticks: a divisor or multiple of a turn, at most 8 intervals over the range.
-double tickStep(double range) {
-  for (double s : {15.0, 30.0, 45.0, 90.0, 180.0, 360.0, 720.0, 1440.0})
-    if (range / s <= 8 + 1e-9) return s;
-  return 360.0 * std::ceil(range / 8 / 360);
-}
 
 // Why a set's curves stop early or are missing, under its column's title.
 QString statusNote(const CurveSet& set, bool named, int width) {
@@ -62,17 +55,7 @@ QColor MotionFigure::colour(int set) {
   return colours[set % 6];
 }
 
-MotionFigure::MotionFigure(QCustomPlot* plot) : plot_(plot) {
-  // A legend added to the layout makes itself the plot's legend, which would then collect
-  // every graph (markers included): the figure adds the curves itself.
-  plot_->setAutoAddPlottableToLegend(false);
-  // Curves as one polyline each (not segment by segment): a replot costs a fraction, which a
-  // drag that reshapes the design and redraws the curves 30 times a second needs.
-  plot_->setPlottingHint(QCP::phFastPolylines, true);
-  plot_->addLayer("cursor", plot_->layer("main"), QCustomPlot::limAbove);
-  cursorLayer_ = plot_->layer("cursor");
-  // Its own paint buffer: replotting it leaves the curves' buffer as it is.
-  cursorLayer_->setMode(QCPLayer::lmBuffered);
+MotionFigure::MotionFigure(QCustomPlot* plot) : CrankFigure(plot) {
   // A resized widget (a dock made lower or higher) lays the rows out again: refit the labels.
   QObject::connect(plot_, &QCustomPlot::afterReplot, plot_, [this] {
     if (fitLabels()) plot_->replot(QCustomPlot::rpQueuedReplot);
@@ -80,14 +63,11 @@ MotionFigure::MotionFigure(QCustomPlot* plot) : plot_(plot) {
 }
 
 void MotionFigure::clear() {
-  plot_->clearItems();
-  plot_->clearPlottables();
+  clearPlot();
   plot_->plotLayout()->clear();
   for (QCPMarginGroup* g : groups_) delete g;
   groups_.clear();
   rects_.clear();
-  lines_.clear();
-  tracers_.clear();
   rowOrders_.clear();
   labels_.clear();
   corners_.clear();
@@ -217,7 +197,7 @@ bool MotionFigure::refresh(const std::vector<const CurveSet*>& sets, const Optio
     }
   }
   for (int r = 0; r < rows(); ++r) setValueRange(r, ranges[r]);
-  for (QCPItemTracer* t : tracers_) t->updatePosition();
+  placeCursorDots();
   plot_->replot();
   return true;
 }
@@ -238,8 +218,8 @@ void MotionFigure::build(const std::vector<const CurveSet*>& sets, const Options
   const int firstRow = addTitles(sets, opt.layout == Layout::SideBySide);
   addPlots(sets, opt, firstRow);
   addLegendEntries();
-  cursorLayer_->setVisible(opt.cursor);
-  setCursor(cursorDeg_);
+  cursorLayer()->setVisible(opt.cursor);
+  setCursor(cursor());
   plot_->replot();
   // The rows' heights are known once laid out: labels that do not fit are shortened.
   if (fitLabels()) plot_->replot();
@@ -309,15 +289,12 @@ void MotionFigure::addPlots(const std::vector<const CurveSet*>& sets, const Opti
   // Plots in a row share their top and bottom margins, in a column their left and right ones.
   groups_.push_back(new QCPMarginGroup(plot_));
   for (int c = 0; c < columns_; ++c) groups_.push_back(new QCPMarginGroup(plot_));
-  auto ticker = QSharedPointer<QCPAxisTickerFixed>::create();
-  ticker->setTickStep(tickStep(xMax_));
-  ticker->setScaleStrategy(QCPAxisTickerFixed::ssNone);
   const CurveRequest& req = sets[0]->request();
   const bool side = opt.layout == Layout::SideBySide;
   for (int r = 0; r < rows(); ++r) {
     ValueRange range;
     for (int c = 0; c < columns_; ++c) {
-      QCPAxisRect* rect = addAxisRect(req, opt.units, r, c, firstRow, ticker);
+      QCPAxisRect* rect = addAxisRect(req, opt.units, r, c, firstRow);
       int notes = 0;
       for (int i : setsInColumn(sets.size(), side, c)) {
         const Curve& curve = sets[i]->curve(rowOrders_[r]);
@@ -334,22 +311,20 @@ void MotionFigure::addPlots(const std::vector<const CurveSet*>& sets, const Opti
 }
 
 QCPAxisRect* MotionFigure::addAxisRect(const CurveRequest& req, const PlotUnits& units, int row,
-                                       int column, int firstRow,
-                                       const QSharedPointer<QCPAxisTicker>& ticker) {
+                                       int column, int firstRow) {
   auto* rect = new QCPAxisRect(plot_);
   plot_->plotLayout()->addElement(firstRow + row, column, rect);
   rects_.push_back(rect);
   rect->setMarginGroup(QCP::msTop | QCP::msBottom, groups_[0]);
   rect->setMarginGroup(QCP::msLeft | QCP::msRight, groups_[1 + column]);
+  // The crank angle's label is under the bottom row, across the column (addTitles).
+  // No room kept beyond the axes' own (QCPAxisRect keeps 15 px a side): the rows stay tall.
+  rect->setMinimumMargins(QMargins());
   QCPAxis* x = rect->axis(QCPAxis::atBottom);
-  x->setTicker(ticker);
-  x->setRange(0, xMax_);
+  setCrankAxis(x, xMax_, QString());
   // All rows keep room for tick labels (the margin group), so every plot is as tall;
   // only the bottom row writes them.
   x->setTickLabels(row + 1 == rows());
-  // The last tick label is centred on the right edge: leave room for its half.
-  rect->setMinimumMargins(QMargins(
-      0, 0, QFontMetrics(x->tickLabelFont()).horizontalAdvance(QString::number(xMax_)) / 2 + 6, 0));
   const Order o = rowOrders_[row];
   labels_.emplace_back(axisLabel(req.body, req.component, req.directionDeg, o, units),
                        shortAxisLabel(req.body, req.component, req.directionDeg, o, units));
@@ -380,30 +355,7 @@ void MotionFigure::addCurve(const CurveSet& set, int index, Order o, QCPAxisRect
     marks->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, colour(index), 7));
     markExtremes(marks, set, o, main.revs, scale);
   }
-  addTracer(g, index, rect);
-}
-
-void MotionFigure::addTracer(QCPGraph* graph, int index, QCPAxisRect* rect) {
-  auto* tracer = new QCPItemTracer(plot_);
-  tracer->setLayer(cursorLayer_);
-  tracer->setGraph(graph);
-  tracer->setInterpolating(true);
-  tracer->setStyle(QCPItemTracer::tsCircle);
-  tracer->setSize(6);
-  tracer->setPen(QPen(colour(index).darker(130)));
-  tracer->setBrush(QBrush(Qt::white));
-  tracer->setClipAxisRect(rect);
-  tracers_.push_back(tracer);
-}
-
-void MotionFigure::addCursorLine(QCPAxisRect* rect) {
-  auto* line = new QCPItemStraightLine(plot_);
-  line->setLayer(cursorLayer_);
-  line->setClipAxisRect(rect);
-  line->point1->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-  line->point2->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-  line->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
-  lines_.push_back(line);
+  addCursorDot(g);
 }
 
 void MotionFigure::setValueRange(int row, ValueRange range) {
@@ -423,43 +375,6 @@ void MotionFigure::addLegendEntries() {
         g->lineStyle() != QCPGraph::lsNone)
       g->addToLegend(legend_);
   }
-}
-
-void MotionFigure::setCursor(double deg) {
-  cursorDeg_ = deg;
-  for (QCPItemStraightLine* l : lines_) {
-    l->point1->setCoords(deg, 0);
-    l->point2->setCoords(deg, 1);
-  }
-  for (QCPItemTracer* t : tracers_) {
-    t->setGraphKey(deg);
-    // Outside a curve that stops early the tracer would sit at its end: hide it there.
-    const QCPGraph* g = t->graph();
-    const bool inside = !g->data()->isEmpty() && deg >= g->data()->constBegin()->key &&
-                        deg <= (g->data()->constEnd() - 1)->key;
-    t->setVisible(inside);
-  }
-  cursorLayer_->replot();
-}
-
-void MotionFigure::setCursorVisible(bool on) {
-  cursorLayer_->setVisible(on);
-  cursorLayer_->replot();
-}
-
-double MotionFigure::crankAt(const QPointF& pixel, int* rect) const {
-  if (rect) *rect = -1;
-  for (size_t i = 0; i < rects_.size(); ++i)
-    if (rects_[i]->rect().contains(pixel.toPoint())) {
-      if (rect) *rect = static_cast<int>(i);
-      return crankAtX(static_cast<int>(i), pixel.x());
-    }
-  return NAN;
-}
-
-double MotionFigure::crankAtX(int rect, double pixelX) const {
-  if (rect < 0 || rect >= static_cast<int>(rects_.size())) return NAN;
-  return rects_[rect]->axis(QCPAxis::atBottom)->pixelToCoord(pixelX);
 }
 
 QPointF MotionFigure::pixelAt(int row, int column, double deg, double value) const {

@@ -1,33 +1,28 @@
 // The motion curves as a figure in a QCustomPlot: one row per order shown (position, velocity,
 // acceleration, jerk) sharing the crank-angle axis, one column per mechanism side by side (the
-// homework's 3 x 2 figure) or all of them overlaid in one column; extremes marked; a cursor
-// line on every plot on a layer of its own, so that moving it repaints that layer only.
-// The plots panel and `linkage-cli plot` both draw with it.
+// homework's 3 x 2 figure) or all of them overlaid in one column; extremes marked; the cursor
+// on every plot (figures/crank_figure.h). The plots panel and `linkage-cli plot` both draw
+// with it.
 #pragma once
 
 #include <QColor>
 #include <QPointF>
-#include <QSharedPointer>
 #include <cmath>
 #include <vector>
 
+#include "figures/crank_figure.h"
+#include "figures/units.h"
 #include "plots/curve_set.h"
-#include "plots/units.h"
 
 class QCustomPlot;
 class QCPAxisRect;
-class QCPAxisTicker;
-class QCPGraph;
 class QCPLegend;
-class QCPLayer;
-class QCPItemStraightLine;
 class QCPItemText;
-class QCPItemTracer;
 class QCPMarginGroup;
 
 namespace linkage::ui {
 
-class MotionFigure {
+class MotionFigure : public CrankFigure {
  public:
   enum class Layout { Overlay, SideBySide };
   struct Options {
@@ -38,7 +33,6 @@ class MotionFigure {
   };
 
   explicit MotionFigure(QCustomPlot* plot);
-  QCustomPlot* plot() const { return plot_; }
 
   // Lays the figure out anew for these curve sets (the first is the main document's) and
   // replots. The sets must outlive the next build (the figure keeps no copy of them).
@@ -48,17 +42,6 @@ class MotionFigure {
   // again. False, and nothing done, when the layout would differ: build() then.
   bool refresh(const std::vector<const CurveSet*>& sets, const Options& options);
 
-  // Moves the cursor to a crank angle within the plotted range and repaints the cursor layer
-  // only (the curves' layers keep their buffers).
-  void setCursor(double deg);
-  double cursor() const { return cursorDeg_; }
-  void setCursorVisible(bool on);
-
-  // The crank angle under a pixel of one of the plots (inside its axes), or NaN elsewhere;
-  // `rect` receives the plot's index (row-major) or -1.
-  double crankAt(const QPointF& pixel, int* rect = nullptr) const;
-  // The crank angle at a pixel column of plot `rect`, inside its axes or not (a drag).
-  double crankAtX(int rect, double pixelX) const;
   // The pixel of a crank angle on a plot (for tests and tools).
   QPointF pixelAt(int row, int column, double deg, double value) const;
 
@@ -92,11 +75,9 @@ class MotionFigure {
   bool addStatusNote(const std::vector<const CurveSet*>& sets, int column, bool side);
   void addPlots(const std::vector<const CurveSet*>& sets, const Options& opt, int firstRow);
   QCPAxisRect* addAxisRect(const CurveRequest& req, const PlotUnits& units, int row, int column,
-                           int firstRow, const QSharedPointer<QCPAxisTicker>& ticker);
+                           int firstRow);
   void addCurve(const CurveSet& set, int index, Order o, QCPAxisRect* rect,
                 const CurveRequest& main, const Options& opt, ValueRange& range);
-  void addTracer(QCPGraph* graph, int index, QCPAxisRect* rect);
-  void addCursorLine(QCPAxisRect* rect);
   void addLegendEntries();
   // A row's value axes over its range, padded.
   void setValueRange(int row, ValueRange range);
@@ -112,16 +93,12 @@ class MotionFigure {
   std::vector<GraphSlot> slots_;  // the graphs in the order build() made them
   QString key_;                   // the layout they were made for
 
-  QCustomPlot* plot_;
-  QCPLayer* cursorLayer_;
   std::vector<QCPMarginGroup*> groups_;
   std::vector<Order> rowOrders_;
   int columns_ = 0;
   std::vector<QCPAxisRect*> rects_;  // row-major
-  std::vector<QCPItemStraightLine*> lines_;
-  std::vector<QCPItemTracer*> tracers_;
   QCPLegend* legend_ = nullptr;
-  double cursorDeg_ = 0, xMax_ = 360;
+  double xMax_ = 360;
 };
 
 }  // namespace linkage::ui

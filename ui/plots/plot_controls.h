@@ -6,8 +6,8 @@
 #include <QWidget>
 #include <optional>
 
+#include "figures/units.h"
 #include "plots/curve_set.h"
-#include "plots/units.h"
 
 class QCheckBox;
 class QComboBox;

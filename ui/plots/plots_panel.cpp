@@ -10,12 +10,12 @@
 #include <cmath>
 
 #include "document/document.h"
-#include "export/figure_export.h"
+#include "figures/figure_export.h"
+#include "figures/qcp.h"
 #include "plots/curve_lists.h"
 #include "plots/harmonics_figure.h"
 #include "plots/motion_figure.h"
 #include "plots/plot_controls.h"
-#include "plots/qcp.h"
 
 namespace linkage::ui {
 
@@ -28,7 +28,8 @@ QString titleOf(const Document* d) {
 
 }  // namespace
 
-PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent), units_(PlotUnits::fromSettings()) {
+PlotsPanel::PlotsPanel(QWidget* parent)
+    : DockPanel(Redraw::Throttled, Behind::Works, parent), units_(PlotUnits::fromSettings()) {
   buildWidgets();
   writeControls();
 }
@@ -90,7 +91,7 @@ void PlotsPanel::buildWidgets() {
   plot_->setInteractions({});  // a drag moves the crank, not the axes
   connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) { mouseOnPlot(e, true); });
   connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) { mouseOnPlot(e, false); });
-  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { dragging_ = false; });
+  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { figure_->endDrag(); });
 }
 
 // --- what is plotted ------------------------------------------------------------------------
@@ -116,7 +117,7 @@ void PlotsPanel::setRequest(const CurveRequest& r) {
   writeControls();
   for (auto& s : sets_) s.second.reset();
   figureStale_ = true;
-  throttle_.ask();
+  markStale();
 }
 
 void PlotsPanel::setUnits(const PlotUnits& u) {
@@ -126,7 +127,10 @@ void PlotsPanel::setUnits(const PlotUnits& u) {
   writeControls();
   // The curves are kept in the solver's units: only the figure changes.
   figureStale_ = true;
-  if (isVisible()) rebuildFigure();
+  if (shown())
+    rebuildFigure();
+  else
+    markStale();
 }
 
 void PlotsPanel::setHarmonicsShown(bool on) {
@@ -135,7 +139,10 @@ void PlotsPanel::setHarmonicsShown(bool on) {
   writeControls();
   stack_->setCurrentIndex(on ? 1 : 0);
   figureStale_ = true;
-  if (isVisible()) rebuildFigure();
+  if (shown())
+    rebuildFigure();
+  else
+    markStale();
 }
 
 // --- documents ------------------------------------------------------------------------------
@@ -150,13 +157,13 @@ void PlotsPanel::setDocument(Document* doc) {
     connect(doc, &Document::contentsReplaced, docContext_, [this] { controls_->followDesign(); });
     connect(doc, &Document::designChanged, docContext_, [this, doc] {
       offerTargets();
-      markStale(doc);
+      resample(doc);
     });
     connect(doc, &Document::poseChanged, docContext_, [this] { updateCursor(); });
     connect(doc, &QObject::destroyed, docContext_, [this] { setDocument(nullptr); });
   }
   offerTargets();
-  markStale(doc);
+  resample(doc);
 }
 
 void PlotsPanel::setComparisonDocuments(const QList<Document*>& docs) {
@@ -168,14 +175,14 @@ void PlotsPanel::setComparisonDocuments(const QList<Document*>& docs) {
     others_.push_back(d);
     connect(d, &Document::designChanged, othersContext_, [this, d] {
       offerComparisonTargets();
-      markStale(d);
+      resample(d);
     });
-    connect(d, &QObject::destroyed, othersContext_, [this] { throttle_.ask(); });
+    connect(d, &QObject::destroyed, othersContext_, [this] { markStale(); });
   }
   writeControls();
   offerComparisonTargets();
   figureStale_ = true;
-  throttle_.ask();
+  markStale();
 }
 
 void PlotsPanel::setComparisonTarget(const QString& target) {
@@ -185,7 +192,7 @@ void PlotsPanel::setComparisonTarget(const QString& target) {
     if (s.first != doc_) s.second.reset();
   offerComparisonTargets();
   figureStale_ = true;
-  throttle_.ask();
+  markStale();
 }
 
 void PlotsPanel::offerComparisonTargets() {
@@ -220,7 +227,7 @@ void PlotsPanel::setCompare(Compare c) {
   compare_ = c;
   writeControls();
   figureStale_ = true;
-  throttle_.ask();
+  markStale();
 }
 
 std::vector<Document*> PlotsPanel::shownDocuments() const {
@@ -246,30 +253,19 @@ const CurveSet* PlotsPanel::curves(int i) const {
 
 // --- work -----------------------------------------------------------------------------------
 
-void PlotsPanel::markStale(Document* d) {
+void PlotsPanel::resample(Document* d) {
   // The curves are sampled again; the figure keeps its layout if the new curves fit it
   // (MotionFigure::refresh), which a drag that reshapes the design relies on.
   for (auto& s : sets_)
     if (s.first == d) s.second.reset();
-  throttle_.ask();
+  markStale();
 }
 
-void PlotsPanel::showEvent(QShowEvent* e) {
-  QWidget::showEvent(e);
-  ensureComputed();
+void PlotsPanel::cameIntoView() {
   updateCursor();
 }
 
-void PlotsPanel::ensureComputed() {
-  const std::vector<Document*> docs = shownDocuments();
-  bool stale = figureStale_ || docs.size() != sets_.size();
-  for (size_t i = 0; !stale && i < docs.size(); ++i)
-    stale = sets_[i].first != docs[i] || !sets_[i].second;
-  if (stale) recompute();
-}
-
-void PlotsPanel::recompute() {
-  throttle_.done();
+void PlotsPanel::compute() {
   std::vector<std::pair<QPointer<Document>, std::unique_ptr<CurveSet>>> next;
   for (Document* d : shownDocuments()) {
     std::unique_ptr<CurveSet> set;
@@ -319,12 +315,12 @@ double PlotsPanel::cursorDeg() const {
 }
 
 void PlotsPanel::updateCursor() {
-  if (!isVisible() || sets_.empty() || !doc_) return;
+  if (!shown() || sets_.empty() || !doc_) return;
   CurveSet* main = sets_[0].second.get();
   if (!main) return;
   const double c = doc_->crankDeg(), period = 360.0 * request_.revs;
   // Periodic curves: the revolution window the crank is in; otherwise the angle itself.
-  const double x = main->periodic() ? c - period * std::floor(c / period) : c;
+  const double x = main->periodic() ? crankInPeriod(c, period) : c;
   if (!harmonics_) figure_->setCursor(x);
   std::vector<CurveSet*> sets;
   for (auto& s : sets_)
@@ -353,20 +349,15 @@ QString PlotsPanel::extremesText() const {
 
 void PlotsPanel::mouseOnPlot(QMouseEvent* e, bool press) {
   if (!(e->buttons() & Qt::LeftButton) || harmonics_) return;
-  if (press) dragging_ = !std::isnan(figure_->crankAt(e->position(), &dragRect_));
-  if (!dragging_) return;
-  // While dragging, the plot pressed on gives the angle even outside its axes.
-  double deg = figure_->crankAtX(dragRect_, e->position().x());
+  double deg = figure_->crankDragged(e->position(), press);
+  if (std::isnan(deg)) return;
   const CurveSet* main = curves(0);
   double hi = figure_->xMax();
   if (main && !main->empty() && !main->periodic()) hi = std::min(hi, main->lastDeg());
   deg = std::clamp(deg, 0.0, hi);
-  double base = 0;
-  if (doc_ && main && main->periodic()) {
-    const double period = figure_->xMax();
-    base = period * std::floor(doc_->crankDeg() / period);
-  }
-  Q_EMIT crankAngleRequested(base + deg);
+  // Periodic curves: the angle in the revolution window the crank is in.
+  if (doc_ && main && main->periodic()) deg = crankNear(deg, doc_->crankDeg(), figure_->xMax());
+  Q_EMIT crankAngleRequested(deg);
 }
 
 // --- export ---------------------------------------------------------------------------------
@@ -378,10 +369,7 @@ bool PlotsPanel::exportFigure(const QString& path, QSize size, QString* error) {
     return false;
   }
   if (harmonics_) return exportPlot(harmonicsPlot_, path, size, error);
-  figure_->setCursorVisible(false);
-  const bool ok = exportPlot(plot_, path, size, error);
-  figure_->setCursorVisible(true);
-  return ok;
+  return figure_->exportFigure(path, size, error);
 }
 
 }  // namespace linkage::ui

@@ -4,10 +4,11 @@
 // harmonics as bar charts; extremes marked and listed; a cursor on every plot at the current
 // crank angle, and clicking or dragging on a plot asks for that crank angle.
 //
-// Work is done only for what is seen: hidden, the panel computes nothing (an edit marks the
-// curves stale; they are sampled when it is shown again, or when a figure is exported); a pose
-// change only moves the cursor (its own layer is repainted, the curves are not recomputed);
-// an edit of one document resamples that document's curves only, and only the orders shown.
+// Work is done only for what is seen (docks/dock_panel.h): hidden or behind another tab, the
+// panel computes nothing (an edit marks the curves stale; they are sampled when it is seen
+// again, or when a figure is exported); a pose change only moves the cursor (its own layer is
+// repainted, the curves are not recomputed); an edit of one document resamples that document's
+// curves only, and only the orders shown.
 //
 // Wiring in a main window:
 //   auto* plots = new PlotsPanel(dock);
@@ -17,13 +18,12 @@
 
 #include <QList>
 #include <QPointer>
-#include <QWidget>
 #include <memory>
 #include <vector>
 
+#include "docks/dock_panel.h"
+#include "figures/units.h"
 #include "plots/curve_set.h"
-#include "plots/redraw_throttle.h"
-#include "plots/units.h"
 
 class QCustomPlot;
 class QLabel;
@@ -38,7 +38,7 @@ class HarmonicsFigure;
 class MotionFigure;
 class PlotControls;
 
-class PlotsPanel : public QWidget {
+class PlotsPanel : public DockPanel {
   Q_OBJECT
 
  public:
@@ -80,8 +80,7 @@ class PlotsPanel : public QWidget {
   QString cursorText() const;    // the values at the cursor, as shown
   QString extremesText() const;  // the extremes list, one line per row
   QString statusText() const;    // the line over the plots: why there is nothing to plot
-  int computations() const { return computations_; }          // curve sets sampled so far
-  bool redrawPending() const { return throttle_.pending(); }  // a throttled redraw is yet to run
+  int computations() const { return computations_; }  // curve sets sampled so far
   const CurveSet* curves(int i) const;  // 0: the document's; then the comparisons shown
 
  Q_SIGNALS:
@@ -89,15 +88,14 @@ class PlotsPanel : public QWidget {
   // crank is in, so that following it moves the mechanism the short way.
   void crankAngleRequested(double deg);
 
- protected:
-  void showEvent(QShowEvent* e) override;
-
  private:
+  void compute() override;
+  void cameIntoView() override;
   void buildWidgets();
   void offerTargets();
   void writeControls();
-  void markStale(Document* d);
-  void recompute();
+  // Document d's curves sampled again (an edit of it).
+  void resample(Document* d);
   void rebuildFigure();
   void updateCursor();
   void updateExtremes();
@@ -107,7 +105,6 @@ class PlotsPanel : public QWidget {
   CurveRequest requestFor(const Document* d) const;
   void offerComparisonTargets();
   std::vector<const CurveSet*> shownSets() const;
-  void ensureComputed();
 
   QPointer<Document> doc_;
   QList<QPointer<Document>> others_;
@@ -119,12 +116,10 @@ class PlotsPanel : public QWidget {
 
   // One curve set per shown document (same order as shownDocuments()), null when stale.
   std::vector<std::pair<QPointer<Document>, std::unique_ptr<CurveSet>>> sets_;
-  bool figureStale_ = true, dragging_ = false;
-  int dragRect_ = -1;  // the plot a drag started on
+  bool figureStale_ = true;
   // Receivers of the documents' signals: replaced (and so disconnected) with the documents.
   QObject *docContext_ = nullptr, *othersContext_ = nullptr;
   int computations_ = 0;
-  RedrawThrottle throttle_{this, [this] { recompute(); }};
 
   PlotControls* controls_;
   QStackedWidget* stack_;

@@ -32,9 +32,6 @@ CentresFeature::CentresFeature(MainWindow& w, WindowLayout& layout) : WindowFeat
   connect(panel_, &CentresPanel::centreChosen, w.canvas(), &CanvasView::setSelectedCentre);
   connect(w.document(), &Document::poseChanged, panel_, &CentresPanel::refresh);
   connect(w.document(), &Document::designChanged, panel_, &CentresPanel::refresh);
-  // Computed while seen (queued: the dock tells before its contents know).
-  connect(dock, &QDockWidget::visibilityChanged, panel_, &CentresPanel::refresh,
-          Qt::QueuedConnection);
   layout.add(Slot::ViewCentres, show);
   layout.add(Slot::ViewBarCentres, show);
   layout.add(Slot::ViewCentresDock, dock->toggleViewAction());

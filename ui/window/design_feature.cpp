@@ -55,11 +55,8 @@ void DesignFeature::makeDock() {
   dock = addDock(&w_, "designChecks", tr("Design Checks"), panel_, Qt::RightDockWidgetArea);
   // A tab beside the instant centres: under them the right side has no room for its tables.
   w_.tabifyDockWidget(w_.centres().dock, dock);
+  // Computed only while seen (a tab behind the instant centres' is not: docks/dock_panel.h).
   dock->hide();
-  // Computed only while seen: a dock's visibility, not its widget's, says so (a tab behind
-  // another is moved off the window, still "visible"). Queued, as the other docks' are.
-  connect(dock, &QDockWidget::visibilityChanged, panel_, &ChecksPanel::setShown,
-          Qt::QueuedConnection);
   show = raisingToggle(dock, "showDesignChecks", QKeySequence(tr("Shift+D")),
                        tr("Grashof's class of each four-bar loop, the transmission angles, the "
                           "limit positions and stroke"));

@@ -10,9 +10,10 @@
 #include "document/document.h"
 #include "document/file_folder.h"
 #include "export/animation_export_dialog.h"
-#include "export/figure_export.h"
 #include "export/motion_table_export.h"
 #include "export/table_size_dialog.h"
+#include "figures/figure_export.h"
+#include "forces/forces_overlay.h"
 #include "plots/plots_panel.h"
 #include "window/main_window.h"
 #include "window/message_strip.h"
@@ -77,6 +78,7 @@ QImage ExportFeature::renderFrame(double deg, QSize size) {
   Document* doc = w_.document();
   if (!frameView_) {
     frameScene_ = std::make_unique<CanvasScene>();
+    frameForces_ = std::make_unique<ForcesOverlay>(frameScene_.get());
     frameScene_->setDocument(doc);
     frameScene_->setPalette(w_.canvas()->palette());
     frameScene_->setCentresVisible(w_.scene()->centresVisible());
@@ -94,6 +96,7 @@ QImage ExportFeature::renderFrame(double deg, QSize size) {
 
 void ExportFeature::endFrames() {
   frameView_.reset();
+  frameForces_.reset();
   frameScene_.reset();
 }
 

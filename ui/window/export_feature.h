@@ -12,6 +12,7 @@ namespace linkage::ui {
 
 class CanvasScene;
 class CanvasView;
+class ForcesOverlay;
 class MainWindow;
 class WindowLayout;
 
@@ -36,6 +37,7 @@ class ExportFeature : public WindowFeature {
 
   MainWindow& w_;
   std::unique_ptr<CanvasScene> frameScene_;
+  std::unique_ptr<ForcesOverlay> frameForces_;  // the masses and loads, as the window draws them
   std::unique_ptr<CanvasView> frameView_;
 };
 

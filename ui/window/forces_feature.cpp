@@ -9,6 +9,7 @@
 #include "document/document.h"
 #include "forces/balance_dialog.h"
 #include "forces/force_rows.h"
+#include "forces/forces_overlay.h"
 #include "forces/forces_panel.h"
 #include "properties/properties_panel.h"
 #include "window/main_window.h"
@@ -55,7 +56,8 @@ void ForcesFeature::makeActions() {
       // Not "Forces": the dock of force plots (Shift+G) is; these are the arrows on the canvas.
       makeToggle(&w_, "showForces", tr("Joint &Reactions"), QKeySequence(tr("Shift+F")),
                  tr("Show each joint's reaction at this angle, on one scale for the whole turn"));
-  connect(show, &QAction::toggled, w_.scene(), &CanvasScene::setForcesVisible);
+  overlay_ = new ForcesOverlay(w_.scene(), this);
+  connect(show, &QAction::toggled, overlay_, &ForcesOverlay::setReactionsVisible);
   balance = makeAction(&w_, "balance", tr("&Balance..."), QKeySequence(),
                        tr("Counterweights on the links pinned to the ground that minimise the "
                           "peak shaking force, found exactly"));

@@ -8,6 +8,7 @@
 namespace linkage::ui {
 
 class BalanceDialog;
+class ForcesOverlay;
 class ForcesPanel;
 class MainWindow;
 class WindowLayout;
@@ -19,6 +20,7 @@ class ForcesFeature : public WindowFeature {
   void writeSettings(QSettings& s) const override;
 
   ForcesPanel* panel() const { return panel_; }
+  ForcesOverlay* overlay() const { return overlay_; }
 
   QAction* show;  // the reactions on the canvas
   QDockWidget* dock;
@@ -33,6 +35,7 @@ class ForcesFeature : public WindowFeature {
 
   MainWindow& w_;
   ForcesPanel* panel_ = nullptr;
+  ForcesOverlay* overlay_ = nullptr;
   BalanceDialog* balance_ = nullptr;
 };
 

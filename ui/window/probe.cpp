@@ -23,6 +23,8 @@
 #include "centres/centres_panel.h"
 #include "cycle/cycle_panel.h"
 #include "document/document.h"
+#include "forces/dynamics_item.h"
+#include "forces/forces_overlay.h"
 #include "linkage/elements.h"
 #include "linkage/io/model_file.h"
 #include "mechanisms/mechanisms_panel.h"
@@ -120,7 +122,7 @@ void windowText(MainWindow* w, QStringList& out) {
     out << QStringLiteral("combo %1: %2").arg(c->objectName(), c->currentText());
     out << QStringLiteral("at combo %1: %2 %3").arg(c->objectName()).arg(at.x()).arg(at.y());
   }
-  const DynamicsMarks& forces = w->scene()->dynamicsItem()->marks();
+  const DynamicsMarks& forces = w->forces().overlay()->item()->marks();
   out << QStringLiteral("forces: ") + forces.legend;
   out << QStringLiteral("dynamics: masses %1 loads %2 reactions %3")
              .arg(forces.masses.size())

@@ -1,4 +1,4 @@
-#include "canvas/dynamics_marks.h"
+#include "forces/dynamics_marks.h"
 
 #include <cmath>
 

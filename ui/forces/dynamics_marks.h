@@ -2,7 +2,7 @@
 // drawn, and the reactions of Document::forces() while forces are shown.
 #pragma once
 
-#include "canvas/dynamics_item.h"
+#include "forces/dynamics_item.h"
 #include "linkage/kinematics.h"
 
 namespace linkage::ui {

@@ -1,4 +1,4 @@
-#include "export/figure_export.h"
+#include "figures/figure_export.h"
 
 #include <QBuffer>
 #include <QFileInfo>
@@ -6,8 +6,8 @@
 #include <QPdfWriter>
 #include <QSvgGenerator>
 
+#include "figures/qcp.h"
 #include "linkage/io/atomic_file.h"
-#include "plots/qcp.h"
 
 namespace linkage::ui {
 

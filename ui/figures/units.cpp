@@ -1,4 +1,4 @@
-#include "plots/units.h"
+#include "figures/units.h"
 
 #include <QSettings>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "canvas/dynamics_item.h"
+#include "forces/dynamics_item.h"
 
 #include <QGraphicsScene>
 #include <QPainter>

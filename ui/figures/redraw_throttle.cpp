@@ -1,18 +1,17 @@
-#include "plots/redraw_throttle.h"
+#include "figures/redraw_throttle.h"
 
 #include <QTimer>
 #include <algorithm>
 
 namespace linkage::ui {
 
-RedrawThrottle::RedrawThrottle(QWidget* owner, std::function<void()> work)
-    : owner_(owner), work_(std::move(work)) {}
+RedrawThrottle::RedrawThrottle(QWidget* owner, std::function<void()> work, int minMs)
+    : owner_(owner), work_(std::move(work)), minMs_(minMs) {}
 
 void RedrawThrottle::ask() {
   if (!owner_ || !owner_->isVisible() || pending_) return;
   pending_ = true;
-  constexpr int kMinMs = 33;
-  const int wait = last_.isValid() ? std::max(0, kMinMs - int(last_.elapsed())) : 0;
+  const int wait = last_.isValid() ? std::max(0, minMs_ - int(last_.elapsed())) : 0;
   QTimer::singleShot(wait, owner_, [this] {
     if (!pending_) return;  // done meanwhile
     pending_ = false;
