@@ -8,6 +8,9 @@
 //   checks:   ratio finite, non-zero and within 1e-6 to 1e6 in size; a and b on two bodies, neither
 //             the carrier; each of a and b where its body is pinned to the carrier (a pin joins
 //             that body to the carrier at that point).
+//   in space: between bodies of planes that are not parallel (linkage/space.h) it is a bevel
+//             pair: the same row, the carrier the ground (each angle about its own plane's
+//             normal, as the file format counts it); the axes need not meet.
 //   centre:   on the line of the centres A, B where the two bodies' velocities are equal:
 //             (A - ratio B) / (1 - ratio): the pitch point of a gear pair (ratio < 0, between
 //             the centres), outside them for a belt or an internal pair (ratio > 0), at
@@ -22,6 +25,7 @@
 #include "elements/frames.h"
 #include "elements/rows.h"
 #include "linkage/gear.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -78,6 +82,14 @@ std::string check(const Mechanism& m, const Joint& j, const char*& where) {
   const std::string carrier = cb ? quoted(cb->name) : "(none)";
   where = "b";
   if (a->body == b->body) return "a and b are on one body: a gear couples two bodies";
+  // Across planes that are not parallel it is a bevel pair: theta_b = ratio theta_a about the
+  // ground; a moving carrier of planes at an angle is no gear train this program knows.
+  const Plane &pa = planeOf(m, a->body), &pb = planeOf(m, b->body);
+  if (j.carrier && (!parallel(pa, pb) || !parallel(pa, planeOf(m, j.carrier)))) {
+    where = "carrier";
+    return "a bevel pair (bodies of planes that are not parallel) turns about the ground only, "
+           "and a carrier joins bodies of its own plane";
+  }
   for (const auto& [p, field] : {std::pair{a, "a"}, std::pair{b, "b"}}) {
     where = field;
     if (p->body == c)
@@ -219,7 +231,8 @@ ElementKind gearElement(JointType t) {
           symbol,
           place,
           kForceColumns,
-          react};
+          react,
+          true};
 }
 
 }  // namespace linkage

@@ -72,7 +72,8 @@ ElementKind pinElement(JointType t) {
           symbol,
           place,
           kForceColumns,
-          nullptr};
+          nullptr,
+          false};
 }
 
 }  // namespace linkage

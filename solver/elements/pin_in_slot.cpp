@@ -75,7 +75,8 @@ ElementKind pinInSlotElement(JointType t) {
           slot_joint::symbol,
           slot_joint::place,
           kForceColumns,
-          nullptr};
+          nullptr,
+          false};
 }
 
 }  // namespace linkage

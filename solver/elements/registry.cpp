@@ -2,11 +2,13 @@
 // shares: lookups by name, the fields read and checked by their specs.
 #include <algorithm>
 
+#include "elements/ball_rod.h"
 #include "elements/gear.h"
 #include "elements/pin.h"
 #include "elements/pin_in_slot.h"
 #include "elements/slider.h"
 #include "linkage/elements.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -14,7 +16,8 @@ namespace {
 
 // The table: one line a kind. A kind's place here is its JointType.
 using Make = ElementKind (*)(JointType);
-constexpr Make kMakers[] = {pinElement, sliderElement, pinInSlotElement, gearElement};
+constexpr Make kMakers[] = {pinElement, sliderElement, pinInSlotElement, gearElement,
+                            ballRodElement};
 
 std::vector<ElementKind> makeTable() {
   std::vector<ElementKind> kinds;
@@ -146,14 +149,59 @@ std::string unresolved(const Mechanism& m, const Joint& j, const char*& where) {
   return {};
 }
 
+std::string planeLabel(const Mechanism& m, BodyId b) {
+  const Body* body = m.body(b);
+  return body && !body->ground && !body->plane.empty() ? body->plane : "drawing";
+}
+
+// A kind of parallel planes: the bodies it joins are of parallel planes, the ground's slot
+// parallel to them; "" when they are, else why, with the key of the field at fault.
+std::string planesOf(const Mechanism& m, const Joint& j, const char*& where) {
+  const ElementKind& k = kindOf(j);
+  std::vector<std::pair<BodyId, const char*>> sides;
+  for (const FieldSpec& f : k.fields) {
+    if (f.type == FieldType::Point) sides.push_back({m.point(pointField(j, f))->body, f.key});
+    if (f.type == FieldType::Slot) sides.push_back({m.slot(j.slot)->body, f.key});
+  }
+  const Body* g = m.ground();
+  auto moving = [&](BodyId b) { return !g || b != g->id; };
+  BodyId first;  // the body whose plane the joint is written in
+  for (const auto& [b, key] : sides)
+    if (!first && moving(b)) first = b;
+  if (!first) return {};
+  const Plane& plane = planeOf(m, first);
+  for (const auto& [b, key] : sides) {
+    if (!moving(b) || parallel(planeOf(m, b), plane)) continue;
+    where = key;
+    return std::string("a ") + k.name + " joins bodies of parallel planes only: \"" +
+           m.body(first)->name + "\" moves in plane \"" + planeLabel(m, first) + "\", \"" +
+           m.body(b)->name + "\" in \"" + planeLabel(m, b) + "\" (a ball rod joins any planes)";
+  }
+  const Slot* s = k.reads(FieldType::Slot) ? m.slot(j.slot) : nullptr;
+  if (s && !s->z.empty()) {
+    const Vec3 d = Vec3(s->p1.x(), s->p1.y(), s->z.back()) - Vec3(s->p0.x(), s->p0.y(), s->z[0]);
+    if (std::abs(d.normalized().dot(plane.normal())) > 1e-9) {
+      where = "slot";
+      return "the ground's slot " + m.slotLabel(s->id) + " is not parallel to plane \"" +
+             planeLabel(m, first) + "\" of its block (to 1e-9)";
+    }
+  }
+  return {};
+}
+
 }  // namespace
+
+std::string checkJoint(const Mechanism& m, const Joint& j, const char*& where) {
+  std::string why = kindOf(j).anyPlanes ? std::string() : planesOf(m, j, where);
+  return why.empty() ? kindOf(j).check(m, j, where) : why;
+}
 
 std::string checkJoints(const Mechanism& m, int* index) {
   for (size_t i = 0; i < m.joints.size(); ++i) {
     const Joint& j = m.joints[i];
     const char* where = "a";
     std::string why = unresolved(m, j, where);
-    if (why.empty()) why = kindOf(j).check(m, j, where);
+    if (why.empty()) why = checkJoint(m, j, where);
     if (why.empty()) continue;
     if (index) *index = static_cast<int>(i);
     return "joints[" + std::to_string(i) + "]." + where + ": " + why;

@@ -116,6 +116,19 @@ inline std::optional<Vec2> asPair(const Json& v) {
   return p;
 }
 
+// [x, y] or [x, y, third] with finite numbers; the third, when given, to `third`.
+inline std::optional<Vec2> asPoint(const Json& v, std::optional<double>& third) {
+  third.reset();
+  if (v.is_array() && v.size() == 3) {
+    if (!v[2].is_number() || !std::isfinite(v[2].get<double>())) return {};
+    const Json xy = Json::array({v[0], v[1]});
+    std::optional<Vec2> p = asPair(xy);
+    if (p) third = v[2].get<double>();
+    return p;
+  }
+  return asPair(v);
+}
+
 // Keys outside `known` in their original order, as compact JSON object text; "" when none.
 inline Extras unknownFields(const Json& obj, std::span<const char* const> known) {
   Json extras = Json::object();

@@ -121,19 +121,35 @@ struct BodyContents {
   std::vector<const Slot*> slots;
 };
 
+// [x, y], or [x, y, third] when a third number was written.
+Json coordinates(const Vec2& p, const std::optional<double>& third) {
+  Json j = pair(p);
+  if (third) j.push_back(number(*third));
+  return j;
+}
+
+Json slotJson(const Slot& s) {
+  std::vector<Vec2> ends{s.p0};
+  if (s.mid) ends.push_back(*s.mid);
+  ends.push_back(s.p1);
+  Json j = Json::array();
+  for (size_t k = 0; k < ends.size(); ++k)
+    j.push_back(coordinates(ends[k], k < s.z.size() ? std::optional(s.z[k]) : std::nullopt));
+  return j;
+}
+
 Json bodyJson(const Body& b, const BodyContents& contents) {
   Json j = Json::object();
   j["name"] = b.name;
   if (b.ground) j["ground"] = true;
+  if (!b.plane.empty()) j["plane"] = b.plane;
   if (b.number) j["number"] = *b.number;
   Json points = Json::object();
-  for (const Point* p : contents.points) json_tree::appendMember(points, p->name, pair(p->pos));
+  for (const Point* p : contents.points)
+    json_tree::appendMember(points, p->name, coordinates(p->pos, p->third));
   j["points"] = std::move(points);
   Json slots = Json::object();
-  for (const Slot* s : contents.slots)
-    json_tree::appendMember(slots, s->name,
-                            s->mid ? Json::array({pair(s->p0), pair(*s->mid), pair(s->p1)})
-                                   : Json::array({pair(s->p0), pair(s->p1)}));
+  for (const Slot* s : contents.slots) json_tree::appendMember(slots, s->name, slotJson(*s));
   if (!slots.empty()) j["slots"] = std::move(slots);
   if (b.mass) {
     Json mass = Json::object();
@@ -153,7 +169,7 @@ Json bodyJson(const Body& b, const BodyContents& contents) {
     appendExtras(mass, b.mass->extras, {"kg", "com", "j_kg_mm2", "counterweights"});
     j["mass"] = std::move(mass);
   }
-  appendExtras(j, b.extras, {"name", "ground", "number", "points", "slots", "mass"});
+  appendExtras(j, b.extras, {"name", "ground", "plane", "number", "points", "slots", "mass"});
   return j;
 }
 
@@ -283,6 +299,18 @@ std::string serializeMechanism(const Mechanism& m) {
   units["length"] = "mm";
   appendExtras(units, m.unitsExtras, {"length"});
   doc["units"] = std::move(units);
+  if (m.planes) {
+    Json planes = Json::object();
+    for (const Plane& p : *m.planes) {
+      Json e = Json::object();
+      for (const auto& [key, v] : {std::pair{"origin", &p.origin}, std::pair{"x_axis", &p.xAxis},
+                                   std::pair{"y_axis", &p.yAxis}})
+        e[key] = Json::array({number(v->x()), number(v->y()), number(v->z())});
+      appendExtras(e, p.extras, {"origin", "x_axis", "y_axis"});
+      json_tree::appendMember(planes, p.name, std::move(e));
+    }
+    doc["planes"] = std::move(planes);
+  }
   std::unordered_map<std::uint32_t, BodyContents> contents;
   for (const Point& p : m.points) contents[p.body.value].points.push_back(&p);
   for (const Slot& s : m.slots) contents[s.body.value].slots.push_back(&s);
@@ -318,8 +346,8 @@ std::string serializeMechanism(const Mechanism& m) {
   if (Json e = mechanismsJson(m); !e.empty()) doc["mechanisms"] = std::move(e);
   if (Json t = timingJson(m); !t.empty()) doc["timing"] = std::move(t);
   appendExtras(doc, m.extras,
-               {"format", "version", "name", "units", "bodies", "joints", "driver", "outputs",
-                "gravity", "loads", "mechanisms", "timing"});
+               {"format", "version", "name", "units", "planes", "bodies", "joints", "driver",
+                "outputs", "gravity", "loads", "mechanisms", "timing"});
   std::string out;
   emit(doc, 0, out);
   out += "\n";

@@ -14,9 +14,11 @@ const ElementUi& pinUi();
 const ElementUi& sliderUi();
 const ElementUi& pinInSlotUi();
 const ElementUi& gearUi();
+const ElementUi& ballRodUi();
 
 std::span<const ElementUi* const> elementUis() {
-  static const ElementUi* const table[] = {&pinUi(), &sliderUi(), &pinInSlotUi(), &gearUi()};
+  static const ElementUi* const table[] = {&pinUi(), &sliderUi(), &pinInSlotUi(), &gearUi(),
+                                           &ballRodUi()};
   return table;
 }
 

@@ -45,7 +45,8 @@ PointId& pointField(Joint& j, const FieldSpec& f);
 // role a driver can have). Prismatic: a block keeps its angle to a slot (drawn as a block).
 // PointOnCurve: a point runs in a slot, rotation free. Coupling: the bodies' rotations are tied
 // (gears, belts).
-enum class Role : unsigned char { Revolute, Prismatic, PointOnCurve, Coupling };
+// Distance: two points keep their distance (a rod with a ball at each end).
+enum class Role : unsigned char { Revolute, Prismatic, PointOnCurve, Coupling, Distance };
 
 // What a joint says by itself about the instant centre of two bodies, from sketch data: points
 // p[k] fixed in body pBody[k], a direction n fixed in body nBody. At a pose (world coordinates):
@@ -121,6 +122,9 @@ struct ElementKind {
   // others' (`all`, in Mechanism::joints order; `index` its own).
   std::span<const char* const> reactionColumns;
   void (*react)(const Mechanism& m, int index, const Pose& pose, std::vector<JointReaction>& all);
+  // Whether it may join bodies of planes that are not parallel (linkage/space.h: a ball rod, a
+  // bevel pair); the others join bodies of parallel planes only, which checkJoints() holds.
+  bool anyPlanes;
 
   // Whether it has a field of this type (a slot, a second point, ...).
   bool reads(FieldType t, unsigned char index = 0) const;
@@ -147,6 +151,10 @@ std::string jointName(const Mechanism& m, JointId id);
 // The same with its place in the file, for what names the file's entries (the command line's
 // listings): `joints[2] (slider slider4.E in disk.B)`.
 std::string jointLabel(const Mechanism& m, JointId id);
+// A joint's rules beyond its references (which resolve): the planes of what it joins, for the
+// kinds of parallel planes, and its kind's check(); "" when they hold, else why, with the key of
+// the field at fault in `where`.
+std::string checkJoint(const Mechanism& m, const Joint& j, const char*& where);
 // Checks every joint's kind-specific rules (check()) in file order: "" when all hold, else the
 // first problem as `joints[3].ratio: ...`, with the joint's index in `index`.
 std::string checkJoints(const Mechanism& m, int* index = nullptr);

@@ -75,6 +75,7 @@ struct Body {
   BodyId id;
   std::string name;
   bool ground = false;
+  std::string plane;          // the plane it moves in ("": the drawing plane; linkage/space.h)
   std::optional<int> number;  // textbook number for instant centres (ground is 1)
   std::optional<Mass> mass;   // none: massless (the ground's is not used)
   Extras extras;
@@ -84,7 +85,10 @@ struct Point {
   PointId id;
   BodyId body;
   std::string name;  // unique within its body
-  Vec2 pos;
+  Vec2 pos;          // in its body's plane (the ground's: the drawing plane)
+  // A third number as written: a moving body's depth along its plane's normal (studs at several
+  // depths of one shaft), the ground's world z. None: [x, y].
+  std::optional<double> third;
 };
 
 // A slot: the straight line through p0 and p1 (which also bound its drawn length), or, with a
@@ -95,7 +99,25 @@ struct Slot {
   std::string name;  // unique within its body
   Vec2 p0, p1;
   std::optional<Vec2> mid;
+  // The ground's slot ends in the world: their z as written, in the order p0, (mid,) p1; empty
+  // for [x, y] ends.
+  std::vector<double> z;
   bool arc() const { return mid.has_value(); }
+};
+
+// A plane placed in space (the file's "planes"): its (x, y) is origin + x xAxis + y yAxis in the
+// world (mm), the axes unit and perpendicular; its normal n = xAxis x yAxis. A body of it moves
+// in it, turning about n (linkage/space.h).
+struct Plane {
+  std::string name;
+  Vec3 origin = Vec3::Zero();
+  Vec3 xAxis = Vec3::UnitX();
+  Vec3 yAxis = Vec3::UnitY();
+  Extras extras;
+  Vec3 normal() const { return xAxis.cross(yAxis); }
+  Vec3 world(const Vec2& p, double depth = 0) const {
+    return origin + p.x() * xAxis + p.y() * yAxis + depth * normal();
+  }
 };
 
 // A joint's kind: its place in the element table (linkage/elements.h), where each kind describes
@@ -256,6 +278,8 @@ struct Removal {
 
 struct Mechanism {
   std::string name;
+  // The file's "planes" (none: no such key), in file order; the drawing plane is not among them.
+  std::optional<std::vector<Plane>> planes;
   std::vector<Body> bodies;  // file order
   std::vector<Point>
       points;  // grouped by body in no particular order; order within a body = file order
