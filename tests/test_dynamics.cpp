@@ -11,6 +11,7 @@
 
 #include "examples.h"
 #include "linkage/dynamics.h"
+#include "linkage/gear.h"
 #include "linkage/elements.h"
 #include "linkage/force_samples.h"
 #include "linkage/io/model_file.h"
@@ -137,7 +138,7 @@ std::vector<Wrench> jointWrenches(const Kinematics& k, const Forces& r) {
     const Joint& j = m.joints[i];
     const JointReaction& x = r.joints[i];
     const BodyId a = m.point(j.a)->body;
-    const BodyId o = kindOf(j).reads(JointField::Slot) ? m.slot(j.slot)->body : m.point(j.b)->body;
+    const BodyId o = kindOf(j).reads(FieldType::Slot) ? m.slot(j.slot)->body : m.point(j.b)->body;
     const double moment = cross(x.at, x.force) + 1000 * x.coupleNm;
     on[index(a)].f += x.force;
     on[index(a)].m += moment;
@@ -148,7 +149,7 @@ std::vector<Wrench> jointWrenches(const Kinematics& k, const Forces& r) {
       // b's body: -F with the couple c_b / c_a of a's about its centre B.
       const Vec2 A = k.position(j.a), B = k.position(j.b);
       const double Ma = cross(x.at - A, x.force);
-      on[index(o)].m += cross(B, -x.force) - Ma / j.ratio;
+      on[index(o)].m += cross(B, -x.force) - Ma / gearRatio(j);
     }
   }
   return on;

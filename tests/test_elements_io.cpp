@@ -5,6 +5,7 @@
 #include <string>
 
 #include "linkage/edits.h"
+#include "linkage/gear.h"
 #include "linkage/elements.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
@@ -62,7 +63,7 @@ TEST(ElementFiles, GearsAndArcsRoundTripAndSolve) {
   ASSERT_TRUE(r.mechanism) << r.error;
   const Mechanism& m = *r.mechanism;
   ASSERT_EQ(m.joints[2].type, JointType::Gear);
-  EXPECT_EQ(m.joints[2].ratio, 2);
+  EXPECT_EQ(gearRatio(m.joints[2]), 2);
   EXPECT_FALSE(m.joints[2].carrier);  // the ground
   EXPECT_EQ(m.joints[6].carrier, m.bodyNamed("arm")->id);
   const Slot* arc = m.slotNamed(m.ground()->id, "arc");
@@ -139,7 +140,7 @@ TEST(ElementFiles, TheEditorsCouplingsAndArcsFollowTheSameRules) {
   EXPECT_TRUE(addBodyArcSlot(m, rod, Vec2(0, 0), Vec2(5, 1), Vec2(10, 0)));
   EXPECT_FALSE(addBodyArcSlot(m, rod, Vec2(0, 0), Vec2(5, 0), Vec2(10, 0)));
   // A gear's ratio set to 0 in the editor is refused by compile with the place.
-  m.joint(j)->ratio = 0;
+  setGearRatio(*m.joint(j), 0);
   EXPECT_EQ(checkJoints(m).substr(0, 16), "joints[10].ratio");
   Kinematics k;
   const Status s = k.load(m);

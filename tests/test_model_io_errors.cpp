@@ -134,9 +134,11 @@ TEST(ModelFileErrors, BodyNumbers) {
 }
 
 TEST(ModelFileErrors, PointsAndSlots) {
-  const std::string expectedPair = "bodies[2].points.E: expected [x, y] with two finite numbers";
+  const std::string expectedPair =
+      "bodies[2].points.E: expected [x, y] (or [x, y, depth]) with finite numbers";
   EXPECT_EQ(refusedEdit("[10, 5]", "[10]"), expectedPair + ", got [10]");
-  EXPECT_EQ(refusedEdit("[10, 5]", "[10, 5, 0]"), expectedPair + ", got [10, 5, 0]");
+  EXPECT_EQ(refusedEdit("[10, 5]", "[10, 5, 0, 1]"), expectedPair + ", got [10, 5, 0, 1]");
+  EXPECT_EQ(refusedEdit("[10, 5]", R"([10, 5, "0"])"), expectedPair + ", got [10, 5, \"0\"]");
   EXPECT_EQ(refusedEdit("[10, 5]", R"(["10", 5])"), expectedPair + ", got [\"10\", 5]");
   EXPECT_EQ(refusedEdit("[10, 5]", "null"), expectedPair + ", got null");
   EXPECT_EQ(refusedEdit("[10, 5]", "[10, 1e999]"),
@@ -172,8 +174,8 @@ TEST(ModelFileErrors, ExactlyOneGround) {
 
 TEST(ModelFileErrors, JointReferences) {
   EXPECT_EQ(refusedEdit(R"("type": "slider")", R"("type": "hinge")"),
-            "joints[1].type: expected \"pin\", \"slider\", \"pin-in-slot\" or \"gear\", got "
-            "\"hinge\"");
+            "joints[1].type: expected \"pin\", \"slider\", \"pin-in-slot\", \"gear\" or "
+            "\"ball-rod\", got \"hinge\"");
   EXPECT_EQ(refusedEdit(R"("a": "ground.A")", R"("a": "X.A")"), "joints[0].a: no body \"X\"");
   EXPECT_EQ(refusedEdit(R"("b": "disk.A")", R"("b": "disk.Q")"),
             "joints[0].b: no point \"Q\" on body \"disk\"");

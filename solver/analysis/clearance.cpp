@@ -1,5 +1,6 @@
 // Clearance: see linkage/clearance.h.
 #include "linkage/clearance.h"
+#include "linkage/space.h"
 
 #include <algorithm>
 #include <optional>
@@ -247,6 +248,10 @@ Clearance findClearance(const Kinematics& k, const ClearancePart& a0, const Clea
   Clearance out;
   if (!k.valid()) {
     out.status = Status::badModel("no mechanism is loaded");
+    return out;
+  }
+  if (std::string why = notInSpaceYet(k.mechanism(), "clearances"); !why.empty()) {
+    out.status = Status::badModel(why);
     return out;
   }
   ClearancePart a, b;

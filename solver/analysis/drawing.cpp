@@ -15,8 +15,8 @@ namespace {
 // drawn is not checked).
 bool resolves(const Mechanism& m, const Joint& j) {
   const ElementKind& k = kindOf(j);
-  return m.contains(j.a) && (!k.reads(JointField::B) || m.contains(j.b)) &&
-         (!k.reads(JointField::Slot) || m.contains(j.slot));
+  return m.contains(j.a) && (!k.reads(FieldType::Point, 1) || m.contains(j.b)) &&
+         (!k.reads(FieldType::Slot) || m.contains(j.slot));
 }
 
 // Drawn as the block of a prismatic joint it is the point of.

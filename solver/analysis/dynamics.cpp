@@ -1,5 +1,6 @@
 // Forces at the driver's constant speed: see linkage/dynamics.h.
 #include "linkage/dynamics.h"
+#include "linkage/space.h"
 
 #include <Eigen/LU>
 #include <Eigen/SparseLU>
@@ -262,6 +263,8 @@ Status ForceSolver::prepare(const Kinematics& k) {
   out_ = Forces{};
   d_.reset();
   if (!k.valid()) return out_.status = Status::badModel("no mechanism is loaded");
+  if (std::string why = notInSpaceYet(k.mechanism(), "forces"); !why.empty())
+    return out_.status = Status::badModel(why);
   const KinematicsState& s = internal::state(k);
   if (!s.sys.hasDriver)
     return out_.status = Status::badModel(

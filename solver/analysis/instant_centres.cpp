@@ -1,4 +1,5 @@
 #include "linkage/instant_centres.h"
+#include "linkage/space.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -162,6 +163,10 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
     return out_.status;
   }
   const Mechanism& m = k.mechanism();
+  if (std::string why = notInSpaceYet(m, "instant centres"); !why.empty()) {
+    out_.status = Status::badModel(why);
+    return out_.status;
+  }
   const System& sys = internal::system(k);
   revision_ = k.revision();
   out_.revision = revision_;

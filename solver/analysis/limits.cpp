@@ -1,5 +1,6 @@
 // Limit positions: see linkage/limits.h.
 #include "linkage/limits.h"
+#include "linkage/space.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,6 +57,8 @@ Vec2 defaultDirection(const Mechanism& m, PointId p) {
 
 Status checkMeasure(const Kinematics& k, const LimitMeasure& w) {
   if (!k.valid()) return Status::failure(StatusCode::BadModel, "no mechanism is loaded");
+  if (std::string why = notInSpaceYet(k.mechanism(), "limits and windows"); !why.empty())
+    return Status::failure(StatusCode::BadModel, why);
   if (!(k.omega() > 0) || !std::isfinite(k.omega()))
     return Status::failure(StatusCode::BadModel, "the driver's speed is not a positive number");
   if (w.body) {

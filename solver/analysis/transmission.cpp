@@ -115,7 +115,7 @@ namespace {
 // The arc guide of a slot joint (a slider or a pin in a slot on an arc), if it is one.
 std::optional<Guide> arcOf(const Mechanism& m, JointId joint) {
   const Joint* j = m.joint(joint);
-  if (!j || !kindOf(*j).reads(JointField::Slot)) return std::nullopt;
+  if (!j || !kindOf(*j).reads(FieldType::Slot)) return std::nullopt;
   const Slot* s = m.slot(j->slot);
   std::optional<Guide> g = s ? guideOf(*s) : std::nullopt;
   return g && g->arc ? g : std::nullopt;

@@ -119,7 +119,7 @@ SlotId addBodySlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& p1) {
 
 SlotId addBodyArcSlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& mid, const Vec2& p1) {
   if (!m.contains(body)) return {};
-  Slot probe{{}, body, "", p0, p1, mid};
+  Slot probe{{}, body, "", p0, p1, mid, {}};
   if (!guideOf(probe)) return {};
   return m.addArcSlot(body, newSlotName(m, body), p0, mid, p1);
 }

@@ -8,6 +8,9 @@
 //   checks:   ratio finite, non-zero and within 1e-6 to 1e6 in size; a and b on two bodies, neither
 //             the carrier; each of a and b where its body is pinned to the carrier (a pin joins
 //             that body to the carrier at that point).
+//   in space: between bodies of planes that are not parallel (linkage/space.h) it is a bevel
+//             pair: the same row, the carrier the ground (each angle about its own plane's
+//             normal, as the file format counts it); the axes need not meet.
 //   centre:   on the line of the centres A, B where the two bodies' velocities are equal:
 //             (A - ratio B) / (1 - ratio): the pitch point of a gear pair (ratio < 0, between
 //             the centres), outside them for a belt or an internal pair (ratio > 0), at
@@ -21,6 +24,8 @@
 
 #include "elements/frames.h"
 #include "elements/rows.h"
+#include "linkage/gear.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -28,10 +33,10 @@ namespace {
 
 constexpr const char* kForceColumns[] = {"fx_N", "fy_N"};
 
-constexpr FieldSpec kFields[] = {{JointField::A, true},
-                                 {JointField::B, true},
-                                 {JointField::Ratio, true},
-                                 {JointField::Carrier, false}};
+constexpr FieldSpec kFields[] = {{"a", FieldType::Point, 0, true},
+                                 {"b", FieldType::Point, 1, true},
+                                 {"ratio", FieldType::Number, 0, true},
+                                 {"carrier", FieldType::Body, 0, false}};
 
 BodyId carrierOf(const Mechanism& m, const Joint& j) {
   if (j.carrier) return j.carrier;
@@ -63,20 +68,29 @@ std::string quoted(const std::string& s) {
   return q;
 }
 
-std::string check(const Mechanism& m, const Joint& j, JointField& where) {
-  where = JointField::Ratio;
-  if (!std::isfinite(j.ratio) || j.ratio == 0)
+std::string check(const Mechanism& m, const Joint& j, const char*& where) {
+  where = "ratio";
+  const double ratio = gearRatio(j);
+  if (!std::isfinite(ratio) || ratio == 0)
     return "expected a finite number other than 0 (the speed of b relative to a)";
-  if (std::abs(j.ratio) > 1e6 || std::abs(j.ratio) < 1e-6)
+  if (std::abs(ratio) > 1e6 || std::abs(ratio) < 1e-6)
     return "a ratio beyond 1e6 (or below 1e-6) in size is no gear: the equations would drown "
            "in rounding";
   const Point *a = m.point(j.a), *b = m.point(j.b);
   const BodyId c = carrierOf(m, j);
   const Body* cb = m.body(c);
   const std::string carrier = cb ? quoted(cb->name) : "(none)";
-  where = JointField::B;
+  where = "b";
   if (a->body == b->body) return "a and b are on one body: a gear couples two bodies";
-  for (const auto& [p, field] : {std::pair{a, JointField::A}, std::pair{b, JointField::B}}) {
+  // Across planes that are not parallel it is a bevel pair: theta_b = ratio theta_a about the
+  // ground; a moving carrier of planes at an angle is no gear train this program knows.
+  const Plane &pa = planeOf(m, a->body), &pb = planeOf(m, b->body);
+  if (j.carrier && (!parallel(pa, pb) || !parallel(pa, planeOf(m, j.carrier)))) {
+    where = "carrier";
+    return "a bevel pair (bodies of planes that are not parallel) turns about the ground only, "
+           "and a carrier joins bodies of its own plane";
+  }
+  for (const auto& [p, field] : {std::pair{a, "a"}, std::pair{b, "b"}}) {
     where = field;
     if (p->body == c)
       return quoted(m.pointLabel(p->id)) + " is on the carrier " + carrier +
@@ -104,8 +118,8 @@ bool compile(const Mechanism& m, const Joint& j, const Frames& f, std::vector<Ro
   r.body[1] = f.point(j.a)->body;
   r.body[2] = c;
   r.c[0] = 1;
-  r.c[1] = -j.ratio;
-  r.c[2] = j.ratio - 1;
+  r.c[1] = -gearRatio(j);
+  r.c[2] = gearRatio(j) - 1;
   rows.push_back(r);
   return true;
 }
@@ -118,7 +132,7 @@ CentreData centre(const Mechanism& m, const Joint& j) {
   c.bodies[1] = c.pBody[1] = b->body;
   c.p[0] = a->pos;
   c.p[1] = b->pos;
-  c.ratio = j.ratio;
+  c.ratio = gearRatio(j);
   return c;
 }
 
@@ -128,9 +142,9 @@ void symbol(const Mechanism& m, const Joint& j, JointSymbol& s) {
   s.bodies[1] = b ? b->body : BodyId{};
   s.carrier = carrierOf(m, j);
   if (!a || !b) return;
-  const double d = (a->pos - b->pos).norm(), r = std::abs(j.ratio);
+  const double d = (a->pos - b->pos).norm(), r = std::abs(gearRatio(j));
   if (d > 0) s.direction = (b->pos - a->pos) / d;
-  s.belt = j.ratio > 0;
+  s.belt = gearRatio(j) > 0;
   if (!s.belt) {
     s.radius[0] = r * d / (1 + r);
     s.radius[1] = d / (1 + r);
@@ -177,7 +191,7 @@ void react(const Mechanism& m, int index, const Pose& pose, std::vector<JointRea
   const double d = (B - A).norm();
   if (!(d > 0)) return;  // coaxial: a couple is all there is
   const Vec2 u = (B - A) / d;
-  if (j.ratio > 0) {
+  if (gearRatio(j) > 0) {
     JointSymbol s;
     symbol(m, j, s);
     // The run: tangent to both pulleys on the same side, n its normal from the centres.
@@ -187,7 +201,7 @@ void react(const Mechanism& m, int index, const Pose& pose, std::vector<JointRea
     const Vec2 run = (B + s.radius[1] * n - r.at).normalized();
     r.force = M / cross(r.at - A, run) * run;  // cross(at - A, F) = M
   } else {
-    const double toPitch = std::abs(j.ratio) * d / (1 + std::abs(j.ratio));
+    const double toPitch = std::abs(gearRatio(j)) * d / (1 + std::abs(gearRatio(j)));
     r.at = A + toPitch * u;
     r.force = M / toPitch * perp(u);
   }
@@ -204,21 +218,21 @@ void react(const Mechanism& m, int index, const Pose& pose, std::vector<JointRea
 
 }  // namespace
 
-const ElementKind& gearElement() {
-  static const ElementKind kind{JointType::Gear,
-                                "gear",
-                                "couples the bodies of points \"a\" and \"b\"",
-                                Role::Coupling,
-                                1,
-                                kFields,
-                                check,
-                                compile,
-                                centre,
-                                symbol,
-                                place,
-                                kForceColumns,
-                                react};
-  return kind;
+ElementKind gearElement(JointType t) {
+  return {t,
+          "gear",
+          "couples the bodies of points \"a\" and \"b\"",
+          Role::Coupling,
+          1,
+          kFields,
+          check,
+          compile,
+          centre,
+          symbol,
+          place,
+          kForceColumns,
+          react,
+          true};
 }
 
 }  // namespace linkage

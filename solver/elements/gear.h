@@ -5,6 +5,7 @@
 
 namespace linkage {
 
-const ElementKind& gearElement();
+// Its descriptor, at place t of the registry's table.
+ElementKind gearElement(JointType t);
 
 }  // namespace linkage

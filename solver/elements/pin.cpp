@@ -15,9 +15,10 @@ namespace {
 
 constexpr const char* kForceColumns[] = {"fx_N", "fy_N"};
 
-constexpr FieldSpec kFields[] = {{JointField::A, true}, {JointField::B, true}};
+constexpr FieldSpec kFields[] = {{"a", FieldType::Point, 0, true},
+                                 {"b", FieldType::Point, 1, true}};
 
-std::string check(const Mechanism&, const Joint&, JointField&) {
+std::string check(const Mechanism&, const Joint&, const char*&) {
   return {};
 }
 
@@ -58,13 +59,21 @@ void place(const Mechanism&, const Joint& j, const Pose& pose, JointSymbol& s) {
 
 }  // namespace
 
-const ElementKind& pinElement() {
-  static const ElementKind kind{JointType::Pin, "pin",   "joins points \"a\" and \"b\"",
-                                Role::Revolute, 2,       kFields,
-                                check,          compile, centre,
-                                symbol,         place,   kForceColumns,
-                                nullptr};
-  return kind;
+ElementKind pinElement(JointType t) {
+  return {t,
+          "pin",
+          "joins points \"a\" and \"b\"",
+          Role::Revolute,
+          2,
+          kFields,
+          check,
+          compile,
+          centre,
+          symbol,
+          place,
+          kForceColumns,
+          nullptr,
+          false};
 }
 
 }  // namespace linkage

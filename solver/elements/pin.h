@@ -5,6 +5,7 @@
 
 namespace linkage {
 
-const ElementKind& pinElement();
+// Its descriptor, at place t of the registry's table.
+ElementKind pinElement(JointType t);
 
 }  // namespace linkage

@@ -62,21 +62,21 @@ CentreData centre(const Mechanism& m, const Joint& j) {
 
 }  // namespace
 
-const ElementKind& pinInSlotElement() {
-  static const ElementKind kind{JointType::PinInSlot,
-                                "pin-in-slot",
-                                "joins point \"a\" to a \"slot\"",
-                                Role::PointOnCurve,
-                                1,
-                                slot_joint::kFields,
-                                slot_joint::noCheck,
-                                compile,
-                                centre,
-                                slot_joint::symbol,
-                                slot_joint::place,
-                                kForceColumns,
-                                nullptr};
-  return kind;
+ElementKind pinInSlotElement(JointType t) {
+  return {t,
+          "pin-in-slot",
+          "joins point \"a\" to a \"slot\"",
+          Role::PointOnCurve,
+          1,
+          slot_joint::kFields,
+          slot_joint::noCheck,
+          compile,
+          centre,
+          slot_joint::symbol,
+          slot_joint::place,
+          kForceColumns,
+          nullptr,
+          false};
 }
 
 }  // namespace linkage

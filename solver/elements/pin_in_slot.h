@@ -5,6 +5,7 @@
 
 namespace linkage {
 
-const ElementKind& pinInSlotElement();
+// Its descriptor, at place t of the registry's table.
+ElementKind pinInSlotElement(JointType t);
 
 }  // namespace linkage

@@ -1,27 +1,59 @@
-// The one table of element kinds (linkage/elements.h), in JointType order.
+// The one table of element kinds (linkage/elements.h), in JointType order, and what every kind
+// shares: lookups by name, the fields read and checked by their specs.
 #include <algorithm>
 
+#include "elements/ball_rod.h"
 #include "elements/gear.h"
 #include "elements/pin.h"
 #include "elements/pin_in_slot.h"
 #include "elements/slider.h"
 #include "linkage/elements.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
-std::span<const ElementKind* const> elementKinds() {
-  static const ElementKind* const kinds[] = {&pinElement(), &sliderElement(), &pinInSlotElement(),
-                                             &gearElement()};
+namespace {
+
+// The table: one line a kind. A kind's place here is its JointType.
+using Make = ElementKind (*)(JointType);
+constexpr Make kMakers[] = {pinElement, sliderElement, pinInSlotElement, gearElement,
+                            ballRodElement};
+
+std::vector<ElementKind> makeTable() {
+  std::vector<ElementKind> kinds;
+  for (size_t i = 0; i < std::size(kMakers); ++i)
+    kinds.push_back(kMakers[i](JointType{static_cast<std::uint8_t>(i)}));
   return kinds;
 }
 
+}  // namespace
+
+std::span<const ElementKind> elementKinds() {
+  static const std::vector<ElementKind> kinds = makeTable();
+  return kinds;
+}
+
+std::span<const char* const> elementFieldKeys() {
+  static const std::vector<const char*> keys = [] {
+    std::vector<const char*> out;
+    for (const ElementKind& k : elementKinds())
+      for (const FieldSpec& f : k.fields)
+        if (std::none_of(out.begin(), out.end(),
+                         [&](const char* key) { return std::string_view(key) == f.key; }))
+          out.push_back(f.key);
+    return out;
+  }();
+  return keys;
+}
+
 const ElementKind& elementKind(JointType t) {
-  return *elementKinds()[static_cast<size_t>(t)];
+  const auto kinds = elementKinds();
+  return kinds[t.index < kinds.size() ? t.index : 0];
 }
 
 const ElementKind* elementKindNamed(std::string_view name) {
-  for (const ElementKind* k : elementKinds())
-    if (name == k->name) return k;
+  for (const ElementKind& k : elementKinds())
+    if (name == k.name) return &k;
   return nullptr;
 }
 
@@ -30,7 +62,7 @@ std::string elementKindNames() {
   const auto kinds = elementKinds();
   const size_t n = kinds.size();
   for (size_t i = 0; i < n; ++i)
-    s += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + "\"" + kinds[i]->name + "\"";
+    s += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + "\"" + kinds[i].name + "\"";
   return s;
 }
 
@@ -38,21 +70,31 @@ const char* toString(JointType t) {
   return elementKind(t).name;
 }
 
-const char* fieldKey(JointField f) {
-  static const char* const keys[] = {"a", "b", "slot", "carrier", "ratio"};
-  return keys[static_cast<int>(f)];
+PointId pointField(const Joint& j, const FieldSpec& f) {
+  return f.index == 0 ? j.a : j.b;
+}
+PointId& pointField(Joint& j, const FieldSpec& f) {
+  return f.index == 0 ? j.a : j.b;
 }
 
-bool ElementKind::reads(JointField f) const {
+bool ElementKind::reads(FieldType t, unsigned char index) const {
   return std::any_of(fields.begin(), fields.end(),
-                     [&](const FieldSpec& s) { return s.field == f; });
+                     [&](const FieldSpec& s) { return s.type == t && s.index == index; });
+}
+
+const FieldSpec* ElementKind::field(std::string_view key) const {
+  for (const FieldSpec& f : fields)
+    if (key == f.key) return &f;
+  return nullptr;
 }
 
 bool sameFields(JointType a, JointType b) {
   const ElementKind &x = elementKind(a), &y = elementKind(b);
   if (x.fields.size() != y.fields.size()) return false;
-  for (const FieldSpec& f : x.fields)
-    if (!y.reads(f.field)) return false;
+  for (const FieldSpec& f : x.fields) {
+    const FieldSpec* g = y.field(f.key);
+    if (!g || g->type != f.type || g->index != f.index) return false;
+  }
   return true;
 }
 
@@ -74,7 +116,7 @@ std::string jointName(const Mechanism& m, JointId id) {
   const Joint* j = m.joint(id);
   if (!j) return "unknown joint";
   const ElementKind& k = kindOf(*j);
-  if (k.reads(JointField::Slot))
+  if (k.reads(FieldType::Slot))
     return std::string(k.name) + " " + m.pointLabel(j->a) + " in " + m.slotLabel(j->slot);
   return std::string(k.name) + " " + m.pointLabel(j->a) + " - " + m.pointLabel(j->b);
 }
@@ -87,30 +129,82 @@ std::string jointLabel(const Mechanism& m, JointId id) {
 namespace {
 
 // The first field of j whose reference the mechanism does not hold.
-std::string unresolved(const Mechanism& m, const Joint& j, JointField& where) {
+std::string unresolved(const Mechanism& m, const Joint& j, const char*& where) {
   for (const FieldSpec& f : kindOf(j).fields) {
-    where = f.field;
-    const bool ok = f.field == JointField::A         ? m.contains(j.a)
-                    : f.field == JointField::B       ? m.contains(j.b)
-                    : f.field == JointField::Slot    ? m.contains(j.slot)
-                    : f.field == JointField::Carrier ? !j.carrier || m.contains(j.carrier)
-                                                     : true;
-    if (!ok) return f.field == JointField::Carrier ? "unknown body" : "unknown reference";
+    where = f.key;
+    switch (f.type) {
+      case FieldType::Point:
+        if (!m.contains(pointField(j, f))) return "unknown reference";
+        break;
+      case FieldType::Slot:
+        if (!m.contains(j.slot)) return "unknown reference";
+        break;
+      case FieldType::Body:
+        if (j.carrier && !m.contains(j.carrier)) return "unknown body";
+        break;
+      case FieldType::Number:
+        break;
+    }
+  }
+  return {};
+}
+
+std::string planeLabel(const Mechanism& m, BodyId b) {
+  const Body* body = m.body(b);
+  return body && !body->ground && !body->plane.empty() ? body->plane : "drawing";
+}
+
+// A kind of parallel planes: the bodies it joins are of parallel planes, the ground's slot
+// parallel to them; "" when they are, else why, with the key of the field at fault.
+std::string planesOf(const Mechanism& m, const Joint& j, const char*& where) {
+  const ElementKind& k = kindOf(j);
+  std::vector<std::pair<BodyId, const char*>> sides;
+  for (const FieldSpec& f : k.fields) {
+    if (f.type == FieldType::Point) sides.push_back({m.point(pointField(j, f))->body, f.key});
+    if (f.type == FieldType::Slot) sides.push_back({m.slot(j.slot)->body, f.key});
+  }
+  const Body* g = m.ground();
+  auto moving = [&](BodyId b) { return !g || b != g->id; };
+  BodyId first;  // the body whose plane the joint is written in
+  for (const auto& [b, key] : sides)
+    if (!first && moving(b)) first = b;
+  if (!first) return {};
+  const Plane& plane = planeOf(m, first);
+  for (const auto& [b, key] : sides) {
+    if (!moving(b) || parallel(planeOf(m, b), plane)) continue;
+    where = key;
+    return std::string("a ") + k.name + " joins bodies of parallel planes only: \"" +
+           m.body(first)->name + "\" moves in plane \"" + planeLabel(m, first) + "\", \"" +
+           m.body(b)->name + "\" in \"" + planeLabel(m, b) + "\" (a ball rod joins any planes)";
+  }
+  const Slot* s = k.reads(FieldType::Slot) ? m.slot(j.slot) : nullptr;
+  if (s && !s->z.empty()) {
+    const Vec3 d = Vec3(s->p1.x(), s->p1.y(), s->z.back()) - Vec3(s->p0.x(), s->p0.y(), s->z[0]);
+    if (std::abs(d.normalized().dot(plane.normal())) > 1e-9) {
+      where = "slot";
+      return "the ground's slot " + m.slotLabel(s->id) + " is not parallel to plane \"" +
+             planeLabel(m, first) + "\" of its block (to 1e-9)";
+    }
   }
   return {};
 }
 
 }  // namespace
 
+std::string checkJoint(const Mechanism& m, const Joint& j, const char*& where) {
+  std::string why = kindOf(j).anyPlanes ? std::string() : planesOf(m, j, where);
+  return why.empty() ? kindOf(j).check(m, j, where) : why;
+}
+
 std::string checkJoints(const Mechanism& m, int* index) {
   for (size_t i = 0; i < m.joints.size(); ++i) {
     const Joint& j = m.joints[i];
-    JointField where = JointField::A;
+    const char* where = "a";
     std::string why = unresolved(m, j, where);
-    if (why.empty()) why = kindOf(j).check(m, j, where);
+    if (why.empty()) why = checkJoint(m, j, where);
     if (why.empty()) continue;
     if (index) *index = static_cast<int>(i);
-    return "joints[" + std::to_string(i) + "]." + fieldKey(where) + ": " + why;
+    return "joints[" + std::to_string(i) + "]." + where + ": " + why;
   }
   return {};
 }

@@ -22,7 +22,7 @@ namespace {
 
 constexpr const char* kColumns[] = {"fx_N", "fy_N", "m_Nm"};
 
-bool compile(const Mechanism& m, const Joint& j, const Frames& f, std::vector<Row>& rows,
+bool compile(const Mechanism&, const Joint& j, const Frames& f, std::vector<Row>& rows,
              std::string& why) {
   const PointLocation* a = f.point(j.a);
   const Slot* s = f.slot(j.slot);
@@ -33,7 +33,7 @@ bool compile(const Mechanism& m, const Joint& j, const Frames& f, std::vector<Ro
   r.body[0] = a->body;
   r.body[1] = sb;
   if (g->arc) {
-    const Vec2 p = m.point(j.a)->pos, d = p - g->centre;
+    const Vec2 p = f.position(j.a), d = p - g->centre;
     if (!(d.norm() > 1e-9 * g->radius)) {
       why = "the block's point is at the centre of its arc slot: it has no radius to keep";
       return false;
@@ -77,21 +77,21 @@ CentreData centre(const Mechanism& m, const Joint& j) {
 
 }  // namespace
 
-const ElementKind& sliderElement() {
-  static const ElementKind kind{JointType::Slider,
-                                "slider",
-                                "joins point \"a\" to a \"slot\"",
-                                Role::Prismatic,
-                                2,
-                                slot_joint::kFields,
-                                slot_joint::noCheck,
-                                compile,
-                                centre,
-                                slot_joint::symbol,
-                                slot_joint::place,
-                                kColumns,
-                                nullptr};
-  return kind;
+ElementKind sliderElement(JointType t) {
+  return {t,
+          "slider",
+          "joins point \"a\" to a \"slot\"",
+          Role::Prismatic,
+          2,
+          slot_joint::kFields,
+          slot_joint::noCheck,
+          compile,
+          centre,
+          slot_joint::symbol,
+          slot_joint::place,
+          kColumns,
+          nullptr,
+          false};
 }
 
 }  // namespace linkage

@@ -5,6 +5,7 @@
 
 namespace linkage {
 
-const ElementKind& sliderElement();
+// Its descriptor, at place t of the registry's table.
+ElementKind sliderElement(JointType t);
 
 }  // namespace linkage

@@ -9,9 +9,10 @@
 
 namespace linkage::slot_joint {
 
-inline constexpr FieldSpec kFields[] = {{JointField::A, true}, {JointField::Slot, true}};
+inline constexpr FieldSpec kFields[] = {{"a", FieldType::Point, 0, true},
+                                        {"slot", FieldType::Slot, 0, true}};
 
-inline std::string noCheck(const Mechanism&, const Joint&, JointField&) {
+inline std::string noCheck(const Mechanism&, const Joint&, const char*&) {
   return {};
 }
 

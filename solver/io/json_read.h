@@ -2,6 +2,8 @@
 // that name the place, and readers of fields that refuse anything else with what was found.
 #pragma once
 
+#include <span>
+
 #include <climits>
 #include <cmath>
 #include <cstring>
@@ -114,8 +116,21 @@ inline std::optional<Vec2> asPair(const Json& v) {
   return p;
 }
 
+// [x, y] or [x, y, third] with finite numbers; the third, when given, to `third`.
+inline std::optional<Vec2> asPoint(const Json& v, std::optional<double>& third) {
+  third.reset();
+  if (v.is_array() && v.size() == 3) {
+    if (!v[2].is_number() || !std::isfinite(v[2].get<double>())) return {};
+    const Json xy = Json::array({v[0], v[1]});
+    std::optional<Vec2> p = asPair(xy);
+    if (p) third = v[2].get<double>();
+    return p;
+  }
+  return asPair(v);
+}
+
 // Keys outside `known` in their original order, as compact JSON object text; "" when none.
-inline Extras unknownFields(const Json& obj, std::initializer_list<const char*> known) {
+inline Extras unknownFields(const Json& obj, std::span<const char* const> known) {
   Json extras = Json::object();
   for (auto it = obj.begin(); it != obj.end(); ++it) {
     bool isKnown = false;
@@ -123,6 +138,9 @@ inline Extras unknownFields(const Json& obj, std::initializer_list<const char*> 
     if (!isKnown) json_tree::appendMember(extras, it.key(), it.value());
   }
   return extras.empty() ? Extras() : extras.dump();
+}
+inline Extras unknownFields(const Json& obj, std::initializer_list<const char*> known) {
+  return unknownFields(obj, std::span<const char* const>(known.begin(), known.size()));
 }
 
 // References are "body.point" and names are checked to have no '.', so the first dot splits.

@@ -21,6 +21,7 @@
 #include "linkage/elements.h"
 #include "linkage/guide.h"
 #include "linkage/io/model_file.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -33,7 +34,9 @@ class Reader {
   Mechanism read(const Json& root) {
     if (!root.is_object()) refuse("", "expected a JSON object {...}, got " + describe(root));
     readHeader(root);
+    if (const Json* p = find(root, "planes")) readPlanes(*p);
     readBodies(require(root, "bodies", ""));
+    if (std::string why = planesProblem(m_); !why.empty()) throw Refusal{why};
     const Json& joints = require(root, "joints", "");
     if (!joints.is_array())
       refuse("joints", "expected an array of joints, got " + describe(joints));
@@ -54,8 +57,8 @@ class Reader {
                            [this](const Json& v, const std::string& at) { return bodyRef(v, at); });
     if (const Json* t = find(root, "timing")) readTiming(*t, "timing", m_);
     m_.extras =
-        unknownFields(root, {"format", "version", "name", "units", "bodies", "joints", "driver",
-                             "outputs", "gravity", "loads", "mechanisms", "timing"});
+        unknownFields(root, {"format", "version", "name", "units", "planes", "bodies", "joints",
+                             "driver", "outputs", "gravity", "loads", "mechanisms", "timing"});
     return std::move(m_);
   }
 
@@ -100,6 +103,30 @@ class Reader {
     }
   }
 
+  // "planes": {"name": {"origin": [x, y, z], "x_axis": [...], "y_axis": [...]}, ...}; the
+  // axes' checks come with the bodies' (planesProblem).
+  void readPlanes(const Json& planes) {
+    requireObject(planes, "planes");
+    m_.planes.emplace();
+    for (auto it = planes.begin(); it != planes.end(); ++it) {
+      const std::string path = member("planes", it.key());
+      requireObject(it.value(), path);
+      Plane p;
+      p.name = it.key();
+      for (const auto& [key, v] : {std::pair{"origin", &p.origin}, std::pair{"x_axis", &p.xAxis},
+                                   std::pair{"y_axis", &p.yAxis}}) {
+        const Json& x = require(it.value(), key, path);
+        if (!x.is_array() || x.size() != 3 || !x[0].is_number() || !x[1].is_number() ||
+            !x[2].is_number())
+          refuse(path + "." + key,
+                 "expected [x, y, z] with three finite numbers, got " + describe(x));
+        *v = Vec3(x[0].get<double>(), x[1].get<double>(), x[2].get<double>());
+      }
+      p.extras = unknownFields(it.value(), {"origin", "x_axis", "y_axis"});
+      m_.planes->push_back(std::move(p));
+    }
+  }
+
   void readBodies(const Json& bodies) {
     if (!bodies.is_array() || bodies.empty())
       refuse("bodies", "expected a non-empty array of bodies, got " + describe(bodies));
@@ -134,17 +161,22 @@ class Reader {
         body.number = static_cast<int>(num);
       }
       if (const Json* mass = find(b, "mass")) body.mass = readMass(*mass, path + ".mass");
-      body.extras = unknownFields(b, {"name", "ground", "number", "points", "slots", "mass"});
+      if (const Json* plane = find(b, "plane")) body.plane = getString(*plane, path + ".plane");
+      body.extras =
+          unknownFields(b, {"name", "ground", "plane", "number", "points", "slots", "mass"});
 
       const Json& points = require(b, "points", path);
       requireObject(points, path + ".points");
       for (auto it = points.begin(); it != points.end(); ++it) {
         const std::string ppath = member(path + ".points", it.key());
         checkName(it.key(), ppath, "point");
-        std::optional<Vec2> p = asPair(it.value());
+        std::optional<double> third;
+        std::optional<Vec2> p = asPoint(it.value(), third);
         if (!p)
-          refuse(ppath, "expected [x, y] with two finite numbers, got " + describe(it.value()));
+          refuse(ppath, "expected [x, y] (or [x, y, " + std::string(body.ground ? "z" : "depth") +
+                            "]) with finite numbers, got " + describe(it.value()));
         names.points[it.key()] = m_.addPoint(id, it.key(), *p);
+        m_.points.back().third = third;
       }
       if (const Json* slots = find(b, "slots")) {
         requireObject(*slots, path + ".slots");
@@ -168,20 +200,28 @@ class Reader {
                 BodyNames& names) {
     checkName(name, spath, "slot");
     std::optional<Vec2> p[3];
+    std::optional<double> z[3];
     const size_t n = s.is_array() ? s.size() : 0;
+    const bool ground = m_.body(body)->ground;
     if (n == 2 || n == 3)
-      for (size_t k = 0; k < n; ++k) p[k] = asPair(s[k]);
+      for (size_t k = 0; k < n; ++k) p[k] = ground ? asPoint(s[k], z[k]) : asPair(s[k]);
     if (n < 2 || n > 3 || !p[0] || !p[1] || (n == 3 && !p[2]))
       refuse(spath,
              "expected [[x0, y0], [x1, y1]] (or an arc [[x0, y0], [xm, ym], [x1, y1]]) with finite "
              "numbers, got " +
                  describe(s));
-    Slot slot{{}, body, name, *p[0], *p[n - 1], std::nullopt};
+    Slot slot{{}, body, name, *p[0], *p[n - 1], std::nullopt, {}};
     if (n == 3) slot.mid = *p[1];
     std::string why;
     if (!guideOf(slot, &why)) refuse(spath, why);
     names.slots[name] = slot.mid ? m_.addArcSlot(body, name, slot.p0, *slot.mid, slot.p1)
                                  : m_.addSlot(body, name, slot.p0, slot.p1);
+    // The ground's ends in the world: all with z or none (a slot half in the drawing plane is
+    // more likely a slip than meant).
+    const int withZ = (z[0] ? 1 : 0) + (z[1] ? 1 : 0) + (z[2] ? 1 : 0);
+    if (withZ > 0 && withZ != static_cast<int>(n))
+      refuse(spath, "give every end three numbers [x, y, z] or every end two");
+    for (size_t k = 0; k < n && withZ > 0; ++k) m_.slots.back().z.push_back(*z[k]);
   }
 
   // "body.name" to the body and the name after the dot.
@@ -221,61 +261,51 @@ class Reader {
     const ElementKind* kind =
         type.is_string() ? elementKindNamed(type.get<std::string>()) : nullptr;
     if (!kind) refuse(path + ".type", "expected " + elementKindNames() + ", got " + describe(type));
-    for (JointField f : kAllFields)
-      if (!kind->reads(f) && find(j, fieldKey(f)))
-        refuse(path + "." + fieldKey(f),
-               std::string("a ") + kind->name + " " + kind->joins + "; it has no " + noun(f));
+    for (const char* key : elementFieldKeys())
+      if (!kind->field(key) && find(j, key))
+        refuse(path + "." + key,
+               std::string("a ") + kind->name + " " + kind->joins + "; it has no " + noun(key));
     Joint joint;
     joint.type = kind->type;
     const BodyNames* sides[2] = {nullptr, nullptr};
     for (const FieldSpec& f : kind->fields) {
-      const Json* v =
-          f.required ? &require(j, fieldKey(f.field), path) : find(j, fieldKey(f.field));
-      if (v) readField(joint, f.field, *v, path + "." + fieldKey(f.field), sides);
+      const Json* v = f.required ? &require(j, f.key, path) : find(j, f.key);
+      if (v) readField(joint, f, *v, path + "." + f.key, sides);
     }
     if (sides[0] && sides[0] == sides[1])
       refuse(path, "both sides are on body " + literal(sides[0]->name));
-    joint.extras = unknownFields(j, {"type", "a", "b", "slot", "carrier", "ratio"});
+    std::vector<const char*> known{"type"};
+    for (const char* key : elementFieldKeys()) known.push_back(key);
+    joint.extras = unknownFields(j, known);
     m_.addJoint(std::move(joint));
   }
 
-  static constexpr JointField kAllFields[] = {JointField::A, JointField::B, JointField::Slot,
-                                              JointField::Carrier, JointField::Ratio};
-  static std::string noun(JointField f) {
-    switch (f) {
-      case JointField::A:
-        return "point \"a\"";
-      case JointField::B:
-        return "point \"b\"";
-      case JointField::Slot:
-        return "slot";
-      default:
-        return literal(fieldKey(f));
-    }
+  // What a key names in a message, by the type other kinds give it.
+  static std::string noun(const char* key) {
+    for (const ElementKind& k : elementKinds())
+      if (const FieldSpec* f = k.field(key)) {
+        if (f->type == FieldType::Point) return std::string("point ") + literal(key);
+        if (f->type == FieldType::Slot) return "slot";
+      }
+    return literal(key);
   }
 
   // One field into the joint; the bodies of what it joins (a, and b or the slot) to `sides`.
-  void readField(Joint& joint, JointField f, const Json& v, const std::string& path,
+  void readField(Joint& joint, const FieldSpec& f, const Json& v, const std::string& path,
                  const BodyNames* sides[2]) {
-    switch (f) {
-      case JointField::A:
-        std::tie(joint.a, sides[0]) = readPointRef(v, path);
+    switch (f.type) {
+      case FieldType::Point:
+        std::tie(pointField(joint, f), sides[f.index == 0 ? 0 : 1]) = readPointRef(v, path);
         break;
-      case JointField::B:
-        std::tie(joint.b, sides[1]) = readPointRef(v, path);
-        break;
-      case JointField::Slot:
+      case FieldType::Slot:
         std::tie(joint.slot, sides[1]) = readSlotRef(v, path);
         break;
-      case JointField::Carrier: {
-        const std::string& name = getString(v, path);
-        auto it = bodies_.find(name);
-        if (it == bodies_.end()) refuse(path, "no body " + literal(name));
-        joint.carrier = it->second.id;
+      case FieldType::Body:
+        joint.carrier = bodyRef(v, path);
         break;
-      }
-      case JointField::Ratio:
-        joint.ratio = getNumber(v, path);
+      case FieldType::Number:
+        if (joint.numbers.size() <= f.index) joint.numbers.resize(f.index + 1, 0.0);
+        joint.numbers[f.index] = getNumber(v, path);
         break;
     }
   }

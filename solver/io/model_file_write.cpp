@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <unordered_map>
 
 #include "io/json_tree.h"
@@ -39,13 +40,17 @@ Json parseExtras(const Extras& text) {
 }
 
 // A key the reader would take for a known field must not come back from Extras.
-void appendExtras(Json& obj, const Extras& extras, std::initializer_list<const char*> known) {
+void appendExtras(Json& obj, const Extras& extras, std::span<const char* const> known) {
   Json e = parseExtras(extras);
   for (auto it = e.begin(); it != e.end(); ++it) {
     bool isKnown = false;
     for (const char* k : known) isKnown = isKnown || it.key() == k;
     if (!isKnown) json_tree::appendMember(obj, it.key(), it.value());
   }
+}
+
+void appendExtras(Json& obj, const Extras& extras, std::initializer_list<const char*> known) {
+  appendExtras(obj, extras, std::span<const char* const>(known.begin(), known.size()));
 }
 
 std::string scalar(const Json& v) {
@@ -116,19 +121,35 @@ struct BodyContents {
   std::vector<const Slot*> slots;
 };
 
+// [x, y], or [x, y, third] when a third number was written.
+Json coordinates(const Vec2& p, const std::optional<double>& third) {
+  Json j = pair(p);
+  if (third) j.push_back(number(*third));
+  return j;
+}
+
+Json slotJson(const Slot& s) {
+  std::vector<Vec2> ends{s.p0};
+  if (s.mid) ends.push_back(*s.mid);
+  ends.push_back(s.p1);
+  Json j = Json::array();
+  for (size_t k = 0; k < ends.size(); ++k)
+    j.push_back(coordinates(ends[k], k < s.z.size() ? std::optional(s.z[k]) : std::nullopt));
+  return j;
+}
+
 Json bodyJson(const Body& b, const BodyContents& contents) {
   Json j = Json::object();
   j["name"] = b.name;
   if (b.ground) j["ground"] = true;
+  if (!b.plane.empty()) j["plane"] = b.plane;
   if (b.number) j["number"] = *b.number;
   Json points = Json::object();
-  for (const Point* p : contents.points) json_tree::appendMember(points, p->name, pair(p->pos));
+  for (const Point* p : contents.points)
+    json_tree::appendMember(points, p->name, coordinates(p->pos, p->third));
   j["points"] = std::move(points);
   Json slots = Json::object();
-  for (const Slot* s : contents.slots)
-    json_tree::appendMember(slots, s->name,
-                            s->mid ? Json::array({pair(s->p0), pair(*s->mid), pair(s->p1)})
-                                   : Json::array({pair(s->p0), pair(s->p1)}));
+  for (const Slot* s : contents.slots) json_tree::appendMember(slots, s->name, slotJson(*s));
   if (!slots.empty()) j["slots"] = std::move(slots);
   if (b.mass) {
     Json mass = Json::object();
@@ -148,7 +169,7 @@ Json bodyJson(const Body& b, const BodyContents& contents) {
     appendExtras(mass, b.mass->extras, {"kg", "com", "j_kg_mm2", "counterweights"});
     j["mass"] = std::move(mass);
   }
-  appendExtras(j, b.extras, {"name", "ground", "number", "points", "slots", "mass"});
+  appendExtras(j, b.extras, {"name", "ground", "plane", "number", "points", "slots", "mass"});
   return j;
 }
 
@@ -179,26 +200,24 @@ Json jointJson(const Labels& labels, const Joint& jt) {
   Json j = Json::object();
   j["type"] = toString(jt.type);
   for (const FieldSpec& f : kindOf(jt).fields) {
-    const char* key = fieldKey(f.field);
-    switch (f.field) {
-      case JointField::A:
-        j[key] = Labels::of(labels.points, jt.a.value);
+    switch (f.type) {
+      case FieldType::Point:
+        j[f.key] = Labels::of(labels.points, pointField(jt, f).value);
         break;
-      case JointField::B:
-        j[key] = Labels::of(labels.points, jt.b.value);
+      case FieldType::Slot:
+        j[f.key] = Labels::of(labels.slots, jt.slot.value);
         break;
-      case JointField::Slot:
-        j[key] = Labels::of(labels.slots, jt.slot.value);
+      case FieldType::Body:
+        if (jt.carrier) j[f.key] = Labels::of(labels.bodies, jt.carrier.value);
         break;
-      case JointField::Carrier:
-        if (jt.carrier) j[key] = Labels::of(labels.bodies, jt.carrier.value);
-        break;
-      case JointField::Ratio:
-        j[key] = number(jt.ratio);
+      case FieldType::Number:
+        j[f.key] = number(jt.number(f.index));
         break;
     }
   }
-  appendExtras(j, jt.extras, {"type", "a", "b", "slot", "carrier", "ratio"});
+  std::vector<const char*> known{"type"};
+  for (const char* key : elementFieldKeys()) known.push_back(key);
+  appendExtras(j, jt.extras, known);
   return j;
 }
 
@@ -280,6 +299,18 @@ std::string serializeMechanism(const Mechanism& m) {
   units["length"] = "mm";
   appendExtras(units, m.unitsExtras, {"length"});
   doc["units"] = std::move(units);
+  if (m.planes) {
+    Json planes = Json::object();
+    for (const Plane& p : *m.planes) {
+      Json e = Json::object();
+      for (const auto& [key, v] : {std::pair{"origin", &p.origin}, std::pair{"x_axis", &p.xAxis},
+                                   std::pair{"y_axis", &p.yAxis}})
+        e[key] = Json::array({number(v->x()), number(v->y()), number(v->z())});
+      appendExtras(e, p.extras, {"origin", "x_axis", "y_axis"});
+      json_tree::appendMember(planes, p.name, std::move(e));
+    }
+    doc["planes"] = std::move(planes);
+  }
   std::unordered_map<std::uint32_t, BodyContents> contents;
   for (const Point& p : m.points) contents[p.body.value].points.push_back(&p);
   for (const Slot& s : m.slots) contents[s.body.value].slots.push_back(&s);
@@ -315,8 +346,8 @@ std::string serializeMechanism(const Mechanism& m) {
   if (Json e = mechanismsJson(m); !e.empty()) doc["mechanisms"] = std::move(e);
   if (Json t = timingJson(m); !t.empty()) doc["timing"] = std::move(t);
   appendExtras(doc, m.extras,
-               {"format", "version", "name", "units", "bodies", "joints", "driver", "outputs",
-                "gravity", "loads", "mechanisms", "timing"});
+               {"format", "version", "name", "units", "planes", "bodies", "joints", "driver",
+                "outputs", "gravity", "loads", "mechanisms", "timing"});
   std::string out;
   emit(doc, 0, out);
   out += "\n";
@@ -445,15 +476,17 @@ std::string mechanismDifference(const Mechanism& a, const Mechanism& b) {
     if (ja.type != jb.type) return w + ".type differs";
     if (a.pointLabel(ja.a) != b.pointLabel(jb.a)) return w + ".a differs";
     const ElementKind& kind = kindOf(ja);
-    if (kind.reads(JointField::B) && a.pointLabel(ja.b) != b.pointLabel(jb.b))
+    if (kind.reads(FieldType::Point, 1) && a.pointLabel(ja.b) != b.pointLabel(jb.b))
       return w + ".b differs";
-    if (kind.reads(JointField::Slot) && a.slotLabel(ja.slot) != b.slotLabel(jb.slot))
+    if (kind.reads(FieldType::Slot) && a.slotLabel(ja.slot) != b.slotLabel(jb.slot))
       return w + ".slot differs";
     const Body *ca = a.body(ja.carrier), *cb = b.body(jb.carrier);
-    if (kind.reads(JointField::Carrier) && (ca ? ca->name : "") != (cb ? cb->name : ""))
+    if (kind.reads(FieldType::Body) && (ca ? ca->name : "") != (cb ? cb->name : ""))
       return w + ".carrier differs";
-    if (kind.reads(JointField::Ratio) && ja.ratio != jb.ratio)
-      return w + ".ratio: " + shortest(ja.ratio) + " vs " + shortest(jb.ratio);
+    for (const FieldSpec& f : kind.fields)
+      if (f.type == FieldType::Number && ja.number(f.index) != jb.number(f.index))
+        return w + "." + f.key + ": " + shortest(ja.number(f.index)) + " vs " +
+               shortest(jb.number(f.index));
     if (auto d = compareExtras(ja.extras, jb.extras, w); !d.empty()) return d;
   }
   if (a.driver.has_value() != b.driver.has_value()) return "driver: present in only one";

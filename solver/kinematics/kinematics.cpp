@@ -1,6 +1,7 @@
 // Kinematics: the public face of KinematicsState. Loads and edits are made on a new state and
 // take its place only when they succeed, so that a failure leaves the last good state whole.
 #include "linkage/kinematics.h"
+#include "linkage/space.h"
 
 #include <atomic>
 #include <cmath>
@@ -226,6 +227,22 @@ Kinematics::PointMotion Kinematics::motion(PointId p) const {
   const PointLocation* l = valid() ? d_->sys.point(p) : nullptr;
   if (!l) return {kNaN2, kNaN2, kNaN2};
   return motionAt(*d_, omega(), l->body, l->s);
+}
+
+Kinematics::PointMotion3 Kinematics::motionInSpace(PointId p) const {
+  const PointLocation* l = valid() ? d_->sys.point(p) : nullptr;
+  const Vec3 nan = Vec3::Constant(kNaN2.x());
+  if (!l) return {nan, nan, nan};
+  if (l->body < 0) {
+    const Point* pt = mechanism().point(p);
+    return {worldOf(mechanism(), *pt), Vec3::Zero(), Vec3::Zero()};
+  }
+  const PointMotion m = motion(p);
+  const Plane& f = d_->sys.frames[d_->sys.classOf[l->body]];
+  const double depth = p.value < d_->sys.pointDepth.size() ? d_->sys.pointDepth[p.value] : 0.0;
+  auto lift = [&](const Vec2& v) { return Vec3(v.x() * f.xAxis + v.y() * f.yAxis); };
+  return {Vec3(f.origin + lift(m.position) + depth * f.normal()), lift(m.velocity),
+          lift(m.acceleration)};
 }
 
 Kinematics::PointMotion Kinematics::motionOf(BodyId b, const Vec2& sketch) const {

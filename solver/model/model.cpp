@@ -104,17 +104,17 @@ BodyId Mechanism::addBody(std::string name, bool isGround) {
 }
 
 PointId Mechanism::addPoint(BodyId bodyId, std::string name, Vec2 pos) {
-  points.push_back(Point{make<PointId>(), bodyId, std::move(name), pos});
+  points.push_back(Point{make<PointId>(), bodyId, std::move(name), pos, std::nullopt});
   return points.back().id;
 }
 
 SlotId Mechanism::addSlot(BodyId bodyId, std::string name, Vec2 p0, Vec2 p1) {
-  slots.push_back(Slot{make<SlotId>(), bodyId, std::move(name), p0, p1, std::nullopt});
+  slots.push_back(Slot{make<SlotId>(), bodyId, std::move(name), p0, p1, std::nullopt, {}});
   return slots.back().id;
 }
 
 SlotId Mechanism::addArcSlot(BodyId bodyId, std::string name, Vec2 p0, Vec2 mid, Vec2 p1) {
-  slots.push_back(Slot{make<SlotId>(), bodyId, std::move(name), p0, p1, mid});
+  slots.push_back(Slot{make<SlotId>(), bodyId, std::move(name), p0, p1, mid, {}});
   return slots.back().id;
 }
 
@@ -131,19 +131,19 @@ LoadId Mechanism::addLoad(Load l) {
 }
 
 JointId Mechanism::addPin(PointId a, PointId b) {
-  return addJoint(Joint{{}, JointType::Pin, a, b, {}, {}, 0, {}});
+  return addJoint(Joint{{}, JointType::Pin, a, b, {}, {}, {}, {}});
 }
 
 JointId Mechanism::addSlider(PointId a, SlotId s) {
-  return addJoint(Joint{{}, JointType::Slider, a, {}, s, {}, 0, {}});
+  return addJoint(Joint{{}, JointType::Slider, a, {}, s, {}, {}, {}});
 }
 
 JointId Mechanism::addPinInSlot(PointId a, SlotId s) {
-  return addJoint(Joint{{}, JointType::PinInSlot, a, {}, s, {}, 0, {}});
+  return addJoint(Joint{{}, JointType::PinInSlot, a, {}, s, {}, {}, {}});
 }
 
 JointId Mechanism::addGear(PointId a, PointId b, double ratio, BodyId carrier) {
-  return addJoint(Joint{{}, JointType::Gear, a, b, {}, carrier, ratio, {}});
+  return addJoint(Joint{{}, JointType::Gear, a, b, {}, carrier, {ratio}, {}});
 }
 
 Removal Mechanism::remove(const std::vector<BodyId>& bodyIds, const std::vector<PointId>& pointIds,
@@ -329,32 +329,47 @@ std::optional<PointId> Mechanism::findPoint(const std::string& dotted) const {
   return p->id;
 }
 
+// A plane moved moves its bodies in space: another mechanism for the solver.
+static bool samePlanes(const Mechanism& a, const Mechanism& b) {
+  if (a.planes.has_value() != b.planes.has_value()) return false;
+  if (!a.planes) return true;
+  if (a.planes->size() != b.planes->size()) return false;
+  for (size_t i = 0; i < a.planes->size(); ++i) {
+    const Plane &p = (*a.planes)[i], &q = (*b.planes)[i];
+    if (p.name != q.name || p.origin != q.origin || p.xAxis != q.xAxis || p.yAxis != q.yAxis)
+      return false;
+  }
+  return true;
+}
+
 bool sameTopology(const Mechanism& a, const Mechanism& b, std::vector<BodyId>& reshaped) {
   reshaped.clear();
   if (a.bodies.size() != b.bodies.size() || a.points.size() != b.points.size() ||
       a.slots.size() != b.slots.size() || a.joints.size() != b.joints.size() ||
-      a.driver.has_value() != b.driver.has_value())
+      a.driver.has_value() != b.driver.has_value() || !samePlanes(a, b))
     return false;
   for (size_t i = 0; i < a.bodies.size(); ++i)
-    if (a.bodies[i].id != b.bodies[i].id || a.bodies[i].ground != b.bodies[i].ground) return false;
+    if (a.bodies[i].id != b.bodies[i].id || a.bodies[i].ground != b.bodies[i].ground ||
+        a.bodies[i].plane != b.bodies[i].plane)
+      return false;
   auto reshape = [&](BodyId id) {
     if (std::find(reshaped.begin(), reshaped.end(), id) == reshaped.end()) reshaped.push_back(id);
   };
   for (size_t i = 0; i < a.points.size(); ++i) {
     const Point &p = a.points[i], &q = b.points[i];
     if (p.id != q.id || p.body != q.body) return false;
-    if (p.pos != q.pos) reshape(p.body);
+    if (p.pos != q.pos || p.third != q.third) reshape(p.body);
   }
   for (size_t i = 0; i < a.slots.size(); ++i) {
     const Slot &p = a.slots[i], &q = b.slots[i];
     if (p.id != q.id || p.body != q.body) return false;
     if (p.arc() != q.arc()) return false;
-    if (p.p0 != q.p0 || p.p1 != q.p1 || p.mid != q.mid) reshape(p.body);
+    if (p.p0 != q.p0 || p.p1 != q.p1 || p.mid != q.mid || p.z != q.z) reshape(p.body);
   }
   for (size_t i = 0; i < a.joints.size(); ++i) {
     const Joint &p = a.joints[i], &q = b.joints[i];
     if (p.id != q.id || p.type != q.type || p.a != q.a || p.b != q.b || p.slot != q.slot ||
-        p.carrier != q.carrier || p.ratio != q.ratio)
+        p.carrier != q.carrier || p.numbers != q.numbers)
       return false;
   }
   if (a.driver &&

@@ -3,11 +3,13 @@
 // linkage/elements.h), the driver's row. Linear in the size of the mechanism.
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "elements/angles.h"
 #include "elements/frames.h"
 #include "linkage/elements.h"
 #include "linkage/guide.h"
+#include "linkage/space.h"
 #include "system/system.h"
 
 namespace linkage {
@@ -23,19 +25,39 @@ class Compiler : public Frames {
   Compiler(const Mechanism& m, Status& status) : m_(m), status_(status) {}
 
   int body(BodyId id) const override { return knownBody(id) ? sys_.bodyIndex(id) : -2; }
-  const PointLocation* point(PointId p) const override { return sys_.point(p); }
+  const PointLocation* point(PointId p) const override {
+    const PointLocation* at = sys_.point(p);
+    if (!spatial_ || !at || at->body >= 0) return at;
+    auto [it, fresh] = groundAt_.try_emplace({cls_, p.value});
+    if (fresh) it->second = PointLocation{-1, classes_.project(cls_, world_[p.value])};
+    return &it->second;
+  }
   Vec2 local(int k, const Vec2& p) const override {
     return k >= 0 ? Vec2(p - sys_.frameOrigin[k]) : p;
   }
   const Slot* slot(SlotId id) const override {
-    return id.owner == sys_.owner && id.value < slotById_.size() ? slotById_[id.value] : nullptr;
+    const Slot* s =
+        id.owner == sys_.owner && id.value < slotById_.size() ? slotById_[id.value] : nullptr;
+    return spatial_ && s ? inClass(*s) : s;
+  }
+  Vec2 position(PointId p) const override {
+    const PointLocation* at = point(p);
+    return at->body >= 0 ? Vec2(at->s + sys_.frameOrigin[at->body]) : at->s;
+  }
+  InSpace inSpace(PointId p) const override {
+    const PointLocation* at = sys_.point(p);
+    if (!spatial_) return {at->body, at->s, 0, 0.0};
+    if (at->body >= 0) return {at->body, at->s, sys_.classOf[at->body], depth_[p.value]};
+    double depth = 0;
+    const Vec2 s = classes_.project(0, world_[p.value], &depth);
+    return {-1, s, 0, depth};
   }
   double size() const override { return sys_.size; }
 
   std::optional<System> run() {
     status_ = Status::success();
     sys_.owner = m_.owner();
-    if (!bodies() || !geometry() || !joints() || !driver()) return std::nullopt;
+    if (!bodies() || !planes() || !geometry() || !joints() || !driver()) return std::nullopt;
     sys_.nRows = row_;
     return std::move(sys_);
   }
@@ -82,6 +104,58 @@ class Compiler : public Frames {
     return true;
   }
 
+  // The plane classes, each body's place in its class, each point's position there and in the
+  // world. With no planes, every position is the drawing's own.
+  bool planes() {
+    spatial_ = isSpatial(m_);
+    sys_.classOf.assign(sys_.nBodies, 0);
+    placing_.assign(sys_.nBodies, PlaneInClass{});
+    std::uint32_t maxId = 0;
+    for (const Point& p : m_.points) maxId = std::max(maxId, p.id.value);
+    classPos_.assign(maxId + 1, Vec2::Zero());
+    if (spatial_) {
+      if (std::string why = planesProblem(m_); !why.empty()) return fail(why);
+      classes_ = planeClasses(m_);
+      sys_.frames = classes_.frames;
+      for (int k = 0; k < sys_.nBodies; ++k) {
+        placing_[k] = classes_.of(m_.body(sys_.bodyIds[k])->plane);
+        sys_.classOf[k] = placing_[k].cls;
+      }
+      world_.assign(maxId + 1, Vec3::Zero());
+      depth_.assign(maxId + 1, 0.0);
+    }
+    for (const Point& p : m_.points) {
+      const int k = sys_.bodyIndex(p.body);
+      classPos_[p.id.value] = k >= 0 ? placing_[k].toClass(p.pos) : p.pos;
+      if (!spatial_) continue;
+      world_[p.id.value] = worldOf(m_, p);
+      if (k >= 0) depth_[p.id.value] = placing_[k].depth + p.third.value_or(0.0);
+    }
+    sys_.pointDepth = depth_;
+    return true;
+  }
+
+  // A slot as the current joint's class sees it: a moving body's mapped from its plane, the
+  // ground's projected onto the class's frame.
+  const Slot* inClass(const Slot& s) const {
+    auto [it, fresh] = slotAt_.try_emplace({cls_, s.id.value}, s);
+    if (!fresh) return &it->second;
+    Slot& c = it->second;
+    c.z.clear();
+    const int k = sys_.bodyIndex(s.body);
+    std::vector<Vec2*> ends{&c.p0, &c.p1};
+    if (c.mid) ends.insert(ends.begin() + 1, &*c.mid);
+    for (size_t e = 0; e < ends.size(); ++e) {
+      if (k >= 0) {
+        *ends[e] = placing_[k].toClass(*ends[e]);
+      } else {
+        const double z = e < s.z.size() ? s.z[e] : 0.0;
+        *ends[e] = classes_.project(cls_, Vec3(ends[e]->x(), ends[e]->y(), z));
+      }
+    }
+    return &c;
+  }
+
   bool knownBody(BodyId id) const {
     return id.owner == sys_.owner && id.value < isBody_.size() && isBody_[id.value];
   }
@@ -94,10 +168,13 @@ class Compiler : public Frames {
   bool geometry() {
     std::vector<Vec2> sum(sys_.nBodies, Vec2::Zero());
     std::vector<int> count(sys_.nBodies, 0);
-    Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+    Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+    auto extend = [&](const Vec3& w) {
+      lo = lo.cwiseMin(w);
+      hi = hi.cwiseMax(w);
+    };
     auto add = [&](BodyId body, const Vec2& p) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
+      if (!spatial_) extend(Vec3(p.x(), p.y(), 0));
       const int k = sys_.bodyIndex(body);
       if (k >= 0) {
         sum[k] += p;
@@ -106,15 +183,18 @@ class Compiler : public Frames {
     };
     for (const Point& p : m_.points) {
       if (!knownBody(p.body)) return fail("point \"" + p.name + "\" belongs to no body");
-      add(p.body, p.pos);
+      add(p.body, classPos_[p.id.value]);
+      // In space the size is the world's extent (the classes' frames may be far apart).
+      if (spatial_) extend(world_[p.id.value]);
     }
     for (const Slot& s : m_.slots) {
       if (!knownBody(s.body)) return fail("slot \"" + s.name + "\" belongs to no body");
       std::string why;
       if (!guideOf(s, &why)) return fail("slot " + m_.slotLabel(s.id) + ": " + why);
-      add(s.body, s.p0);
-      add(s.body, s.p1);
-      if (s.mid) add(s.body, *s.mid);
+      const Slot& c = spatial_ && sys_.bodyIndex(s.body) >= 0 ? *inClass(s) : s;
+      add(s.body, c.p0);
+      add(s.body, c.p1);
+      if (c.mid) add(s.body, *c.mid);
     }
     if (lo.allFinite() && std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) > kLargest)
       return fail("coordinates beyond 1e12 mm: the drawing is too large to compute with");
@@ -151,11 +231,12 @@ class Compiler : public Frames {
     sys_.points.assign(maxId + 1, PointLocation{});
     sys_.hasPoint.assign(maxId + 1, 0);
     for (const Point& p : m_.points) {
-      sys_.points[p.id.value] = at(p.body, p.pos);
+      sys_.points[p.id.value] = at(p.body, classPos_[p.id.value]);
       sys_.hasPoint[p.id.value] = 1;
       weigh(sys_.points[p.id.value]);
     }
-    for (const Slot& s : m_.slots) {
+    for (const Slot& sl : m_.slots) {
+      const Slot& s = spatial_ && sys_.bodyIndex(sl.body) >= 0 ? *inClass(sl) : sl;
       weigh(at(s.body, s.p0));
       weigh(at(s.body, s.p1));
       if (s.mid) weigh(at(s.body, *s.mid));
@@ -178,9 +259,10 @@ class Compiler : public Frames {
       sys_.jointIds.push_back(j.id);
       const std::string where = "joints[" + std::to_string(ji) + "]";
       if (!references(j, kind, where)) return false;
-      JointField field = JointField::A;
-      if (std::string why = kind.check(m_, j, field); !why.empty())
-        return fail(where + "." + fieldKey(field) + ": " + why);
+      cls_ = jointClass(j, kind);
+      const char* field = "a";
+      if (std::string why = checkJoint(m_, j, field); !why.empty())
+        return fail(where + "." + field + ": " + why);
       rows.clear();
       std::string why;
       if (!kind.compile(m_, j, *this, rows, why)) return fail(where + ": " + why);
@@ -193,22 +275,34 @@ class Compiler : public Frames {
     return true;
   }
 
+  // The class a joint is written in: its first moving body's (a's, else b's or the slot's).
+  int jointClass(const Joint& j, const ElementKind& kind) const {
+    if (!spatial_) return 0;
+    for (const FieldSpec& f : kind.fields) {
+      int k = -1;
+      if (f.type == FieldType::Point) k = sys_.point(pointField(j, f))->body;
+      if (f.type == FieldType::Slot) k = sys_.bodyIndex(slotById_[j.slot.value]->body);
+      if (k >= 0) return sys_.classOf[k];
+    }
+    return 0;
+  }
+
   // The points, slot and carrier the kind reads exist; the sides it joins are two bodies.
   bool references(const Joint& j, const ElementKind& kind, const std::string& where) {
     const PointLocation* a = sys_.point(j.a);
     if (!a) return fail(where + ".a: unknown point");
     int other = -3;
-    if (kind.reads(JointField::B)) {
+    if (kind.reads(FieldType::Point, 1)) {
       const PointLocation* b = sys_.point(j.b);
       if (!b) return fail(where + ".b: unknown point");
       other = b->body;
     }
-    if (kind.reads(JointField::Slot)) {
+    if (kind.reads(FieldType::Slot)) {
       const Slot* s = slot(j.slot);
       if (!s) return fail(where + ".slot: unknown slot");
       other = sys_.bodyIndex(s->body);
     }
-    if (kind.reads(JointField::Carrier) && j.carrier && !knownBody(j.carrier))
+    if (kind.reads(FieldType::Body) && j.carrier && !knownBody(j.carrier))
       return fail(where + ".carrier: unknown body");
     if (other == a->body) return fail(where + ": both sides are on one body");
     return true;
@@ -248,6 +342,15 @@ class Compiler : public Frames {
   Status& status_;
   System sys_;
   int row_ = 0;
+  bool spatial_ = false;
+  int cls_ = 0;  // the class of the joint being compiled
+  PlaneClasses classes_;
+  std::vector<PlaneInClass> placing_;  // by body index
+  std::vector<Vec2> classPos_;         // by point id value: in its body's class frame
+  std::vector<Vec3> world_;            // by point id value (in space only)
+  std::vector<double> depth_;          // by point id value: along its class's normal
+  mutable std::map<std::pair<int, std::uint32_t>, PointLocation> groundAt_;
+  mutable std::map<std::pair<int, std::uint32_t>, Slot> slotAt_;
   std::vector<char> isBody_;
   std::vector<const Slot*> slotById_;
 };

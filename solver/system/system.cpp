@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "elements/coincident.h"
+#include "elements/distance3.h"
 #include "elements/on_circle.h"
 #include "elements/on_line.h"
 
@@ -72,6 +73,11 @@ double coordinate(const std::vector<BodyView>& views, int col) {
 
 }  // namespace
 
+// End k of a Distance3 row at the views.
+static distance3::End end(const System& sys, const BodyView& b, const Row& c, int k) {
+  return {b, c.s[k], sys.frames[c.frame[k]], c.depth[k]};
+}
+
 // The angle combination of an Angles row at the views' angles.
 static double angleSum(const Row& c, const std::vector<BodyView>& views) {
   double sum = 0;
@@ -100,6 +106,9 @@ void evalResidual(const System& sys, const std::vector<BodyView>& views, double 
         break;
       case Primitive::OnCircle:
         out[r] = on_circle::residual(i, c.s[0], j, c.s[1], c.c[0]);
+        break;
+      case Primitive::Distance3:
+        out[r] = distance3::residual(end(sys, i, c, 0), end(sys, j, c, 1), c.c[0]);
         break;
       case Primitive::Angles:
         out[r] = L * (angleSum(c, views) - c.value - c.driven * phi);
@@ -145,6 +154,9 @@ void addJacobian(const System& sys, const std::vector<BodyView>& views,
         break;
       case Primitive::OnCircle:
         on_circle::jacobian(rows, 0, i, c.s[0], j, c.s[1], c.c[0]);
+        break;
+      case Primitive::Distance3:
+        distance3::jacobian(rows, 0, end(sys, i, c, 0), end(sys, j, c, 1), c.c[0]);
         break;
       case Primitive::Angles:
         for (int k = 0; k < 3; ++k)
@@ -235,6 +247,9 @@ Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<Bod
     case Primitive::OnCircle:
       on_circle::jacobian(J, 0, v[0], r.s[0], v[1], r.s[1], r.c[0]);
       break;
+    case Primitive::Distance3:
+      distance3::jacobian(J, 0, end(sys, v[0], r, 0), end(sys, v[1], r, 1), r.c[0]);
+      break;
     case Primitive::Angles:
       for (int k = 0; k < 3; ++k)
         if (r.body[k] >= 0) J(0, 3 * k + 2) = sys.size * r.c[k];
@@ -254,6 +269,14 @@ void rowForce(const System& sys, const std::vector<BodyView>& views, const Row& 
   }
   const BodyView& i = views[r.body[0] + 1];
   const BodyView& j = views[r.body[1] + 1];
+  f.twoEnds = r.kind == Primitive::Distance3;
+  if (f.twoEnds) {
+    Vec2 at[2];
+    distance3::force(end(sys, i, r, 0), end(sys, j, r, 1), r.c[0], at, f.u);
+    f.P = at[0];
+    f.P1 = at[1];
+    return;
+  }
   f.P = i.r + i.R * r.s[0];
   if (r.kind == Primitive::Coincident) {
     f.u[0] = Vec2(1, 0);
@@ -283,6 +306,9 @@ void evalGamma(const System& sys, const std::vector<BodyView>& views,
         break;
       case Primitive::OnCircle:
         if (r >= 0) out[r] = on_circle::gamma(i, c.s[0], j, c.s[1], c.c[0]);
+        break;
+      case Primitive::Distance3:
+        if (r >= 0) out[r] = distance3::gamma(end(sys, i, c, 0), end(sys, j, c, 1), c.c[0]);
         break;
       case Primitive::Angles:
       case Primitive::Hold:

@@ -35,6 +35,11 @@ struct System {
   int nJointRows = 0;  // rows from joints only (no driver, no holds)
   int driverRow = -1;
   double size = 1;  // L: diagonal of the drawing's bounding box, the length scale of everything
+  // The frames of the plane classes (linkage/space.h): a body's q is planar in its class's;
+  // frames[0] is the drawing plane's class. classOf[k]: body k's class.
+  std::vector<Plane> frames{Plane{"drawing", Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), {}}};
+  std::vector<int> classOf;
+  std::vector<double> pointDepth;  // by PointId value: along its class's normal (in space only)
 
   bool hasDriver = false;
   double sigma = 1;  // +1 ccw, -1 cw
@@ -97,10 +102,18 @@ struct RowForce {
   Vec2 u[2] = {Vec2::Zero(), Vec2::Zero()};
   double couple[3] = {0, 0, 0};
   bool isCouple = false;
+  // A Distance3 row: its two ends are two points, each in its own class frame: the force u[0]
+  // at P on body[0], -u[1] at P1 on body[1].
+  bool twoEnds = false;
+  Vec2 P1 = Vec2::Zero();
   // Scalar row e's generalized force on body[k] (whose frame origin is at r): x, y, the moment
   // about r.
   Eigen::Matrix<double, 1, 3> on(int k, int e, const Vec2& r) const {
     if (isCouple) return Eigen::Matrix<double, 1, 3>(0, 0, couple[k]);
+    if (twoEnds) {
+      const Vec2 f = k == 0 ? u[0] : Vec2(-u[1]);
+      return Eigen::Matrix<double, 1, 3>(f.x(), f.y(), cross((k == 0 ? P : P1) - r, f));
+    }
     const Vec2 f = k == 0 ? u[e] : Vec2(-u[e]);
     return Eigen::Matrix<double, 1, 3>(f.x(), f.y(), cross(P - r, f));
   }

@@ -21,6 +21,7 @@
 #include "elements/element_ui.h"
 #include "elements/gear_item.h"
 #include "linkage/elements.h"
+#include "linkage/gear.h"
 #include "linkage/guide.h"
 #include "linkage/io/model_file.h"
 #include "properties/properties_panel.h"
@@ -96,7 +97,7 @@ TEST(ElementsUi, GearToolCouplesTwoShaftsAndTheRatioIsTyped) {
   d.click(-34, -20, Qt::ShiftModifier);  // a belt
   const Joint* g = gearOf(doc->design());
   ASSERT_TRUE(g);
-  EXPECT_EQ(g->ratio, 1);
+  EXPECT_EQ(gearRatio(*g), 1);
   EXPECT_EQ(doc->design().pointLabel(g->a), "link2.A");
   EXPECT_EQ(doc->undoStack()->index(), before + 1);
   ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
@@ -104,7 +105,7 @@ TEST(ElementsUi, GearToolCouplesTwoShaftsAndTheRatioIsTyped) {
   EXPECT_NE(w.properties().panel()->title().indexOf("gear"), -1)
       << w.properties().panel()->title().toStdString();
   type(w, "Ratio", "-2");
-  EXPECT_EQ(gearOf(doc->design())->ratio, -2);
+  EXPECT_EQ(gearRatio(*gearOf(doc->design())), -2);
   ASSERT_TRUE(doc->solved());
   ASSERT_TRUE(doc->setCrankDeg(30).ok());
   const BodyId arm = doc->design().bodyNamed("link3")->id;
@@ -120,7 +121,7 @@ TEST(ElementsUi, GearToolCouplesTwoShaftsAndTheRatioIsTyped) {
   EXPECT_EQ(serializeMechanism(doc->design()), kept);
   // Undo takes the coupling away again, step by step.
   w.edit().undo->trigger();
-  EXPECT_EQ(gearOf(doc->design())->ratio, 1);
+  EXPECT_EQ(gearRatio(*gearOf(doc->design())), 1);
   w.edit().undo->trigger();
   EXPECT_EQ(gearOf(doc->design()), nullptr);
 }
@@ -143,7 +144,7 @@ TEST(ElementsUi, CoupleToOnABodysMenuStartsTheGearToolFromIt) {
   d.click(5, 0);
   const Joint* g = gearOf(doc->design());
   ASSERT_TRUE(g);
-  EXPECT_EQ(g->ratio, -1);
+  EXPECT_EQ(gearRatio(*g), -1);
   EXPECT_EQ(doc->design().pointLabel(g->a), "link3.B");
 }
 
@@ -299,7 +300,7 @@ TEST(ElementsUi, AGearsMenuNamesItAndEditsItsRatioAndTypeAsOneStepEach) {
   const int before = doc->undoStack()->index();
   QTest::keyClicks(ratio, "-0.25");
   QTest::keyClick(ratio, Qt::Key_Return);
-  EXPECT_EQ(doc->design().joint(gear)->ratio, -0.25);
+  EXPECT_EQ(gearRatio(*doc->design().joint(gear)), -0.25);
   EXPECT_EQ(doc->undoStack()->index(), before + 1);
   EXPECT_EQ(doc->undoStack()->text(before), "Gear ratio");
   ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
@@ -309,10 +310,10 @@ TEST(ElementsUi, AGearsMenuNamesItAndEditsItsRatioAndTypeAsOneStepEach) {
   EXPECT_EQ(type->currentIndex(), 0);
   type->setCurrentIndex(1);
   emit type->activated(1);
-  EXPECT_EQ(doc->design().joint(gear)->ratio, 0.25);
+  EXPECT_EQ(gearRatio(*doc->design().joint(gear)), 0.25);
   EXPECT_EQ(doc->undoStack()->index(), before + 2);
   doc->undoStack()->undo();
-  EXPECT_EQ(doc->design().joint(gear)->ratio, -0.25);
+  EXPECT_EQ(gearRatio(*doc->design().joint(gear)), -0.25);
   EXPECT_EQ(type->currentIndex(), 0);
 }
 

@@ -14,14 +14,16 @@ const ElementUi& pinUi();
 const ElementUi& sliderUi();
 const ElementUi& pinInSlotUi();
 const ElementUi& gearUi();
+const ElementUi& ballRodUi();
 
 std::span<const ElementUi* const> elementUis() {
-  static const ElementUi* const table[] = {&pinUi(), &sliderUi(), &pinInSlotUi(), &gearUi()};
+  static const ElementUi* const table[] = {&pinUi(), &sliderUi(), &pinInSlotUi(), &gearUi(),
+                                           &ballRodUi()};
   return table;
 }
 
 const ElementUi& elementUi(JointType t) {
-  return *elementUis()[static_cast<size_t>(t)];
+  return *elementUis()[t.index];
 }
 
 QString describe(JointType t) {
@@ -38,8 +40,8 @@ namespace {
 // The kinds a joint of kind t can change into (t among them), in table order.
 std::vector<JointType> sameKinds(JointType t) {
   std::vector<JointType> out;
-  for (const ElementKind* k : elementKinds())
-    if (sameFields(k->type, t)) out.push_back(k->type);
+  for (const ElementKind& k : elementKinds())
+    if (sameFields(k.type, t)) out.push_back(k.type);
   return out;
 }
 }  // namespace

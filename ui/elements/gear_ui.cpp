@@ -10,6 +10,7 @@
 #include "elements/menu_actions.h"
 #include "forms/form.h"
 #include "linkage/edits.h"
+#include "linkage/gear.h"
 
 namespace linkage::ui {
 
@@ -28,25 +29,25 @@ void form(Form& panel, JointId id) {
       Form::tr("Type"),
       {Form::tr("gears in mesh (turn opposite ways)"),
        Form::tr("belt or chain (turn the same way)")},
-      [joint] { return joint().ratio < 0 ? 0 : 1; },
+      [joint] { return gearRatio(joint()) < 0 ? 0 : 1; },
       [&panel, id](int i) {
         panel.change(
             Form::tr("Gear type"),
             [&](Mechanism& m, QString*) {
-              double& r = m.joint(id)->ratio;
-              if ((r > 0) == (i == 1)) return false;  // the type it has: no edit
-              r = -r;
+              Joint& j = *m.joint(id);
+              if ((gearRatio(j) > 0) == (i == 1)) return false;  // the type it has: no edit
+              setGearRatio(j, -gearRatio(j));
               return true;
             },
             nullptr);
       });
   panel.addNumber(
-      Form::tr("Ratio"), [joint] { return joint().ratio; },
+      Form::tr("Ratio"), [joint] { return gearRatio(joint()); },
       [&panel, id](double v, QString* why) {
         return panel.change(
             Form::tr("Gear ratio"),
             [&](Mechanism& m, QString* w) {
-              m.joint(id)->ratio = v;
+              setGearRatio(*m.joint(id), v);
               const std::string problem = checkJoints(m);
               *w = QString::fromStdString(problem);
               return problem.empty();
@@ -74,13 +75,14 @@ void jointMenu(MenuActions& box, QMenu& menu, const Joint& j) {
                                 &menu, [&box, id, label, belt] {
                                   box.editWith(MenuActions::tr("Change %1").arg(label),
                                                [&](Mechanism& n, std::string&) {
-                                                 double& r = n.joint(id)->ratio;
-                                                 if ((r > 0) != belt) r = -r;
+                                                 Joint& g = *n.joint(id);
+                                                 if ((gearRatio(g) > 0) != belt)
+                                                   setGearRatio(g, -gearRatio(g));
                                                  return true;
                                                });
                                 });
     a->setCheckable(true);
-    a->setChecked((j.ratio > 0) == belt);
+    a->setChecked((gearRatio(j) > 0) == belt);
   }
   // The ratio typed where it always is, the Properties: one field, one way to change it.
   menu.addAction(MenuActions::tr("Edit &Ratio..."), &menu,

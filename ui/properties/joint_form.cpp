@@ -16,7 +16,7 @@ QString shape(const Mechanism& m, const FormTarget& t) {
   const Joint* j = m.joint(t.joint);
   return QStringLiteral("%1 type %2 at %3%4")
       .arg(j->id.value)
-      .arg(static_cast<int>(j->type))
+      .arg(int(j->type.index))
       .arg(j->a.value)
       .arg(m.driver ? QStringLiteral(" driven %1").arg(m.driver->joint.value) : QString());
 }

@@ -69,7 +69,7 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   // Blocks and slot pins under the cursor are their joints.
   if (!pick.joint)
     for (const Joint& j : m.joints)
-      if (kindOf(j).reads(JointField::Slot) && m.point(j.a) && !s.bodyHidden(m.point(j.a)->body) &&
+      if (kindOf(j).reads(FieldType::Slot) && m.point(j.a) && !s.bodyHidden(m.point(j.a)->body) &&
           (s.worldOf(j.a) - world).norm() < CanvasStyle::blockLength / 2 * px) {
         pick.joint = j.id;
         break;

@@ -101,7 +101,7 @@ void SlotTool::preview(const Vec2& cursor) {
     return;
   }
   // The arc from the start through the cursor to the end, as it would be made.
-  const std::optional<Guide> g = guideOf(Slot{{}, {}, "", *start_, *end_, cursor});
+  const std::optional<Guide> g = guideOf(Slot{{}, {}, "", *start_, *end_, cursor, {}});
   if (!g) {
     ctx().overlay->setPath({*start_, *end_}, std::nullopt);
     return;

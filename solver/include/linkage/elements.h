@@ -27,19 +27,26 @@ struct Pose {
   virtual Transform body(BodyId b) const = 0;
 };
 
-// The fields of a joint object in a file, and where each goes in a Joint.
-enum class JointField : unsigned char { A, B, Slot, Carrier, Ratio };
-const char* fieldKey(JointField f);  // "a", "b", "slot", "carrier", "ratio"
+// A field of a joint object in a file, as its kind declares it: the key, what it holds and where
+// it goes in a Joint (points: a for index 0, b for 1; slot; carrier; numbers[index]). The reader,
+// the writer and the checks go by these alone, so a new kind needs no code of theirs.
+enum class FieldType : unsigned char { Point, Slot, Body, Number };
 struct FieldSpec {
-  JointField field;
+  const char* key;
+  FieldType type;
+  unsigned char index;
   bool required;
 };
+// The joint's point of a Point field (a or b).
+PointId pointField(const Joint& j, const FieldSpec& f);
+PointId& pointField(Joint& j, const FieldSpec& f);
 
 // What a kind does structurally. Revolute: two points are one (relative rotation free; the only
 // role a driver can have). Prismatic: a block keeps its angle to a slot (drawn as a block).
 // PointOnCurve: a point runs in a slot, rotation free. Coupling: the bodies' rotations are tied
 // (gears, belts).
-enum class Role : unsigned char { Revolute, Prismatic, PointOnCurve, Coupling };
+// Distance: two points keep their distance (a rod with a ball at each end).
+enum class Role : unsigned char { Revolute, Prismatic, PointOnCurve, Coupling, Distance };
 
 // What a joint says by itself about the instant centre of two bodies, from sketch data: points
 // p[k] fixed in body pBody[k], a direction n fixed in body nBody. At a pose (world coordinates):
@@ -93,7 +100,7 @@ struct JointReaction {
 };
 
 struct ElementKind {
-  JointType type;
+  JointType type;     // its place in the table (set by the registry)
   const char* name;   // in files, messages and the command line
   const char* joins;  // what it joins, for messages: `joins points "a" and "b"`
   Role role;
@@ -101,9 +108,9 @@ struct ElementKind {
   std::span<const FieldSpec> fields;
 
   // What the references alone do not check (a ratio of 0, a gear not on its carrier's pins):
-  // the field it is about and why, or an empty string when the joint is sound. The references
-  // are known to resolve when it is called.
-  std::string (*check)(const Mechanism& m, const Joint& j, JointField& where);
+  // the key of the field it is about and why, or an empty string when the joint is sound. The
+  // references are known to resolve when it is called.
+  std::string (*check)(const Mechanism& m, const Joint& j, const char*& where);
   // Its rows (elements/rows.h), appended to `rows`; false with `why` where it cannot have any.
   bool (*compile)(const Mechanism& m, const Joint& j, const Frames& f, std::vector<Row>& rows,
                   std::string& why);
@@ -115,16 +122,23 @@ struct ElementKind {
   // others' (`all`, in Mechanism::joints order; `index` its own).
   std::span<const char* const> reactionColumns;
   void (*react)(const Mechanism& m, int index, const Pose& pose, std::vector<JointReaction>& all);
+  // Whether it may join bodies of planes that are not parallel (linkage/space.h: a ball rod, a
+  // bevel pair); the others join bodies of parallel planes only, which checkJoints() holds.
+  bool anyPlanes;
 
-  bool reads(JointField f) const;
+  // Whether it has a field of this type (a slot, a second point, ...).
+  bool reads(FieldType t, unsigned char index = 0) const;
+  const FieldSpec* field(std::string_view key) const;
 };
 
 const ElementKind& elementKind(JointType t);
 // nullptr for a name no kind has.
 const ElementKind* elementKindNamed(std::string_view name);
-// Every kind, in JointType order.
-std::span<const ElementKind* const> elementKinds();
-// The names for a message: "pin", "slider", "pin-in-slot" or "gear" (quoted).
+// Every kind, in JointType order (the registry's table: elements/registry.cpp).
+std::span<const ElementKind> elementKinds();
+// Every key any kind reads, once each, in table order.
+std::span<const char* const> elementFieldKeys();
+// The names for a message: "pin", "slider", ... or "gear" (quoted).
 std::string elementKindNames();
 const char* toString(JointType t);
 inline const ElementKind& kindOf(const Joint& j) {
@@ -137,6 +151,10 @@ std::string jointName(const Mechanism& m, JointId id);
 // The same with its place in the file, for what names the file's entries (the command line's
 // listings): `joints[2] (slider slider4.E in disk.B)`.
 std::string jointLabel(const Mechanism& m, JointId id);
+// A joint's rules beyond its references (which resolve): the planes of what it joins, for the
+// kinds of parallel planes, and its kind's check(); "" when they hold, else why, with the key of
+// the field at fault in `where`.
+std::string checkJoint(const Mechanism& m, const Joint& j, const char*& where);
 // Checks every joint's kind-specific rules (check()) in file order: "" when all hold, else the
 // first problem as `joints[3].ratio: ...`, with the joint's index in `index`.
 std::string checkJoints(const Mechanism& m, int* index = nullptr);

@@ -4,12 +4,14 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <vector>
 
 namespace linkage {
 
 using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
 
 // Rotation by +90 degrees: d/dtheta (R(theta) s) = perp(R(theta) s).
 inline Vec2 perp(const Vec2& v) {

@@ -190,6 +190,13 @@ class Kinematics {
     Vec2 position, velocity, acceleration;
   };
   PointMotion motion(PointId p) const;
+  // The same in the world (mm, linkage/space.h): the planar motion of the point's body lifted
+  // from its plane class's frame, at its depth; a ground point where it is, at rest. NaN for an
+  // unknown point. With no planes, motion() with z = 0.
+  struct PointMotion3 {
+    Vec3 position, velocity, acceleration;
+  };
+  PointMotion3 motionInSpace(PointId p) const;
   // The same of any point fixed in a body, given in the body's sketch coordinates (an arc
   // slot's centre, a point being drawn); NaN for an unknown body.
   PointMotion motionOf(BodyId b, const Vec2& sketch) const;

@@ -6,6 +6,7 @@
 // points and slots as drawn are its geometry.
 #pragma once
 
+#include <compare>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -74,6 +75,7 @@ struct Body {
   BodyId id;
   std::string name;
   bool ground = false;
+  std::string plane;          // the plane it moves in ("": the drawing plane; linkage/space.h)
   std::optional<int> number;  // textbook number for instant centres (ground is 1)
   std::optional<Mass> mass;   // none: massless (the ground's is not used)
   Extras extras;
@@ -83,7 +85,10 @@ struct Point {
   PointId id;
   BodyId body;
   std::string name;  // unique within its body
-  Vec2 pos;
+  Vec2 pos;          // in its body's plane (the ground's: the drawing plane)
+  // A third number as written: a moving body's depth along its plane's normal (studs at several
+  // depths of one shaft), the ground's world z. None: [x, y].
+  std::optional<double> third;
 };
 
 // A slot: the straight line through p0 and p1 (which also bound its drawn length), or, with a
@@ -94,24 +99,53 @@ struct Slot {
   std::string name;  // unique within its body
   Vec2 p0, p1;
   std::optional<Vec2> mid;
+  // The ground's slot ends in the world: their z as written, in the order p0, (mid,) p1; empty
+  // for [x, y] ends.
+  std::vector<double> z;
   bool arc() const { return mid.has_value(); }
 };
 
-// The element kinds a joint can be: an index into the element table (linkage/elements.h), where
-// each kind is described once (its fields, equations, instant centre and symbol). The model
-// itself knows nothing of them.
-enum class JointType : unsigned char { Pin, Slider, PinInSlot, Gear };
+// A plane placed in space (the file's "planes"): its (x, y) is origin + x xAxis + y yAxis in the
+// world (mm), the axes unit and perpendicular; its normal n = xAxis x yAxis. A body of it moves
+// in it, turning about n (linkage/space.h).
+struct Plane {
+  std::string name;
+  Vec3 origin = Vec3::Zero();
+  Vec3 xAxis = Vec3::UnitX();
+  Vec3 yAxis = Vec3::UnitY();
+  Extras extras;
+  Vec3 normal() const { return xAxis.cross(yAxis); }
+  Vec3 world(const Vec2& p, double depth = 0) const {
+    return origin + p.x() * xAxis + p.y() * yAxis + depth * normal();
+  }
+};
 
-// A joint of any kind, with the fields its kind reads (linkage/elements.h lists which).
+// A joint's kind: its place in the element table (linkage/elements.h), where each kind describes
+// itself once (its fields, equations, instant centre and symbol) and is registered once. The
+// model knows no kinds; the constants name the table's first entries for the code that makes
+// joints of them (a kind added later is found by its name: elementKindNamed()).
+struct JointType {
+  std::uint8_t index = 0;
+  friend auto operator<=>(JointType, JointType) = default;
+  static const JointType Pin, Slider, PinInSlot, Gear;
+};
+inline constexpr JointType JointType::Pin{0};
+inline constexpr JointType JointType::Slider{1};
+inline constexpr JointType JointType::PinInSlot{2};
+inline constexpr JointType JointType::Gear{3};
+
+// A joint of any kind. Its kind's fields (linkage/elements.h: FieldSpec) say which of these it
+// reads and under what names: up to two points, a slot, a body and numbers.
 struct Joint {
   JointId id;
   JointType type = JointType::Pin;
-  PointId a;         // every kind
-  PointId b;         // a second point (pin, gear)
-  SlotId slot;       // the slot it runs in (slider, pin-in-slot)
-  BodyId carrier;    // a body it is carried by (gear; none: the ground)
-  double ratio = 0;  // a number it takes (gear)
+  PointId a;       // every kind: its first point
+  PointId b;       // a second point
+  SlotId slot;     // a slot it runs in
+  BodyId carrier;  // a body it is carried by (none: the ground)
+  std::vector<double> numbers;
   Extras extras;
+  double number(size_t k) const { return k < numbers.size() ? numbers[k] : 0.0; }
 };
 
 // An external load: a force on a point's body at the point (N, in sketch axes), or a torque on
@@ -244,6 +278,8 @@ struct Removal {
 
 struct Mechanism {
   std::string name;
+  // The file's "planes" (none: no such key), in file order; the drawing plane is not among them.
+  std::optional<std::vector<Plane>> planes;
   std::vector<Body> bodies;  // file order
   std::vector<Point>
       points;  // grouped by body in no particular order; order within a body = file order

@@ -1,5 +1,6 @@
 // The motion table of the spec (../shared/specs/model-format.md): header, then one row per crank
-// angle with t, crank angle and x, y, vx, vy, ax, ay of each point. Shared by every front end.
+// angle with t, crank angle and x, y, vx, vy, ax, ay of each point (x, y, z, vx, vy, vz, ax, ay,
+// az in the world for a model with planes: linkage/space.h). Shared by every front end.
 #pragma once
 
 #include <functional>

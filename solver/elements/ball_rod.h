@@ -1,0 +1,11 @@
+// The ball rod element: see ball_rod.cpp (its equations on top) and linkage/elements.h.
+#pragma once
+
+#include "linkage/elements.h"
+
+namespace linkage {
+
+// Its descriptor, at place t of the registry's table.
+ElementKind ballRodElement(JointType t);
+
+}  // namespace linkage

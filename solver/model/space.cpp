@@ -1,0 +1,155 @@
+// Planes in space: lookups, the checks of the file format and the plane classes
+// (linkage/space.h).
+#include "linkage/space.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace linkage {
+
+namespace {
+
+constexpr double kTol = 1e-9;
+
+std::string literal(const std::string& s) {
+  std::string q = "\"";
+  q += s;
+  q += '"';
+  return q;
+}
+
+std::string axisProblem(const Plane& p) {
+  const std::string at = "planes." + p.name;
+  for (const auto& [v, key] : {std::pair{&p.origin, ".origin"}, std::pair{&p.xAxis, ".x_axis"},
+                               std::pair{&p.yAxis, ".y_axis"}})
+    if (!v->allFinite()) return at + key + ": expected three finite numbers";
+  if (std::abs(p.xAxis.norm() - 1) > kTol) return at + ".x_axis: not a unit vector (to 1e-9)";
+  if (std::abs(p.yAxis.norm() - 1) > kTol) return at + ".y_axis: not a unit vector (to 1e-9)";
+  if (std::abs(p.xAxis.dot(p.yAxis)) > kTol)
+    return at + ".y_axis: not perpendicular to x_axis (to 1e-9)";
+  return {};
+}
+
+}  // namespace
+
+const Plane& drawingPlane() {
+  static const Plane p{"drawing", Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), {}};
+  return p;
+}
+
+const Plane* planeNamed(const Mechanism& m, const std::string& name) {
+  if (name.empty() || name == "drawing") return &drawingPlane();
+  if (m.planes)
+    for (const Plane& p : *m.planes)
+      if (p.name == name) return &p;
+  return nullptr;
+}
+
+const Plane& planeOf(const Mechanism& m, BodyId body) {
+  const Body* b = m.body(body);
+  const Plane* p = b ? planeNamed(m, b->plane) : nullptr;
+  return p ? *p : drawingPlane();
+}
+
+bool isSpatial(const Mechanism& m) {
+  if (m.planes) return true;
+  if (std::any_of(m.points.begin(), m.points.end(), [](const Point& p) { return p.third; }))
+    return true;
+  return std::any_of(m.slots.begin(), m.slots.end(), [](const Slot& s) { return !s.z.empty(); });
+}
+
+std::string notInSpaceYet(const Mechanism& m, const std::string& what) {
+  if (!isSpatial(m)) return {};
+  for (const Body& b : m.bodies)
+    if (!b.ground && !b.plane.empty() && b.plane != "drawing")
+      return what + " of a machine in space (body \"" + b.name + "\" moves in plane \"" + b.plane +
+             "\") are not computed yet: the motion table and the kinematics are";
+  const bool third =
+      std::any_of(m.points.begin(), m.points.end(), [](const Point& p) { return p.third; }) ||
+      std::any_of(m.slots.begin(), m.slots.end(), [](const Slot& s) { return !s.z.empty(); });
+  if (!third) return {};  // "planes" named, none used: a planar machine
+  return what +
+         " of a machine in space (points with a third number) are not computed yet: "
+         "the motion table and the kinematics are";
+}
+
+bool parallel(const Plane& a, const Plane& b) {
+  return (a.normal() - b.normal()).lpNorm<Eigen::Infinity>() <= kTol;
+}
+
+Vec3 worldOf(const Mechanism& m, const Point& p) {
+  const Body* b = m.body(p.body);
+  if (!b || b->ground) return Vec3(p.pos.x(), p.pos.y(), p.third.value_or(0.0));
+  return planeOf(m, p.body).world(p.pos, p.third.value_or(0.0));
+}
+
+std::string planesProblem(const Mechanism& m) {
+  if (m.planes) {
+    const std::vector<Plane>& planes = *m.planes;
+    for (size_t i = 0; i < planes.size(); ++i) {
+      const Plane& p = planes[i];
+      if (p.name.empty()) return "planes: a plane name may not be empty";
+      if (p.name == "drawing")
+        return "planes.drawing: the drawing plane is fixed (origin 0, x (1, 0, 0), y (0, 1, 0)) "
+               "and cannot be redefined";
+      for (size_t k = 0; k < i; ++k)
+        if (planes[k].name == p.name) return "planes: two planes are named " + literal(p.name);
+      if (std::string why = axisProblem(p); !why.empty()) return why;
+    }
+  }
+  for (size_t i = 0; i < m.bodies.size(); ++i) {
+    const Body& b = m.bodies[i];
+    const std::string at = "bodies[" + std::to_string(i) + "].plane";
+    if (b.plane.empty()) continue;
+    if (b.ground)
+      return at +
+             ": the ground has no plane (its points are in the drawing plane or, with "
+             "three numbers, in the world)";
+    if (!planeNamed(m, b.plane)) return at + ": no plane " + literal(b.plane);
+  }
+  return {};
+}
+
+const PlaneInClass& PlaneClasses::of(const std::string& plane) const {
+  const std::string& name = plane.empty() ? names.front() : plane;
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return placing[i];
+  return placing.front();
+}
+
+Vec2 PlaneClasses::project(int k, const Vec3& w, double* depth) const {
+  const Plane& f = frames[k];
+  const Vec3 d = w - f.origin;
+  if (depth) *depth = d.dot(f.normal());
+  return Vec2(d.dot(f.xAxis), d.dot(f.yAxis));
+}
+
+PlaneClasses planeClasses(const Mechanism& m) {
+  PlaneClasses c;
+  std::vector<const Plane*> all{&drawingPlane()};
+  if (m.planes)
+    for (const Plane& p : *m.planes) all.push_back(&p);
+  for (const Plane* p : all) {
+    PlaneInClass at;
+    at.cls = -1;
+    for (size_t k = 0; k < c.frames.size() && at.cls < 0; ++k)
+      if (parallel(*p, c.frames[k])) at.cls = static_cast<int>(k);
+    if (at.cls < 0) {
+      at.cls = static_cast<int>(c.frames.size());
+      c.frames.push_back(*p);
+    } else {
+      const Plane& f = c.frames[at.cls];
+      const double cs = p->xAxis.dot(f.xAxis), sn = p->xAxis.dot(f.yAxis), n = std::hypot(cs, sn);
+      at.rot = Rot{cs / n, sn / n};
+      double depth = 0;
+      at.shift = c.project(at.cls, p->origin, &depth);
+      at.depth = depth;
+      at.identity = false;
+    }
+    c.names.push_back(p->name);
+    c.placing.push_back(at);
+  }
+  return c;
+}
+
+}  // namespace linkage

@@ -1,0 +1,233 @@
+// Spatial machines (linkage/space.h): planes in the file, the ball rod, and the RSSR
+// crank-rocker (a crank in the drawing plane, a rocker about an axis perpendicular to the crank
+// shaft and inclined 23 degrees, joined by a ball rod) against its closed form.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "linkage/elements.h"
+#include "linkage/instant_centres.h"
+#include "linkage/io/model_file.h"
+#include "linkage/kinematics.h"
+#include "linkage/space.h"
+#include "linkage/tables/motion_table.h"
+
+namespace linkage {
+namespace {
+
+constexpr double kR = 7.5, kDepth = 5, kW = 28.5, kRho = 23 * M_PI / 180;
+constexpr double kPhi0 = 30 * M_PI / 180, kPsi0 = 160 * M_PI / 180;
+const Vec3 kH(0, 0, 80);
+const Vec3 kX(0, std::cos(kRho), std::sin(kRho)), kY(0, -std::sin(kRho), std::cos(kRho));
+
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+std::string vec(const Vec3& v) {
+  return "[" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "]";
+}
+
+std::string rssrText() {
+  return R"({"format": "linkage", "version": 1, "name": "RSSR",
+  "planes": {"rocker": {"origin": )" +
+         vec(kH) + R"(, "x_axis": )" + vec(kX) + R"(, "y_axis": )" + vec(kY) + R"(}},
+  "bodies": [
+    {"name": "ground", "ground": true, "points": {"O": [0, 0], "H": )" +
+         vec(kH) + R"(}},
+    {"name": "crank", "points": {"O": [0, 0], "A": [)" +
+         num(kR * std::cos(kPhi0)) + ", " + num(kR * std::sin(kPhi0)) + ", " + num(kDepth) +
+         R"(]}},
+    {"name": "rocker", "plane": "rocker", "points": {"H": [0, 0], "C": [)" +
+         num(kW * std::cos(kPsi0)) + ", " + num(kW * std::sin(kPsi0)) + R"(]}}
+  ],
+  "joints": [
+    {"type": "pin", "a": "ground.O", "b": "crank.O"},
+    {"type": "pin", "a": "ground.H", "b": "rocker.H"},
+    {"type": "ball-rod", "a": "crank.A", "b": "rocker.C"}
+  ],
+  "driver": {"joint": 0, "rpm": 90, "direction": "ccw"}
+})";
+}
+
+Mechanism rssr() {
+  LoadResult r = parseMechanism(rssrText());
+  EXPECT_TRUE(r.mechanism) << r.error;
+  return r.mechanism ? *r.mechanism : Mechanism();
+}
+
+// The rocker's angle psi(phi) from its closed form a cos(psi) + b sin(psi) = c (the branch
+// nearest `near`), and its first two derivatives by the crank angle, from F(phi, psi) = |A - C|^2
+// - l^2 = 0 differentiated twice (an independent derivation: no solver row is used).
+struct Rocker {
+  double psi, d1, d2;
+};
+Rocker closedForm(double phi, double near, double l) {
+  const double t = kPhi0 + phi;
+  const Vec3 A(kR * std::cos(t), kR * std::sin(t), kDepth);
+  const Vec3 A1(-kR * std::sin(t), kR * std::cos(t), 0),
+      A2(-kR * std::cos(t), -kR * std::sin(t), 0);
+  const Vec3 AH = A - kH;
+  const double a = 2 * kW * AH.dot(kX), b = 2 * kW * AH.dot(kY),
+               c = AH.squaredNorm() + kW * kW - l * l;
+  const double base = std::atan2(b, a), half = std::acos(c / std::hypot(a, b));
+  double psi = base + half, other = base - half;
+  auto gap = [&](double x) { return std::abs(std::remainder(x - near, 2 * M_PI)); };
+  if (gap(other) < gap(psi)) psi = other;
+  psi = near + std::remainder(psi - near, 2 * M_PI);
+  const Vec3 C = kH + kW * (std::cos(psi) * kX + std::sin(psi) * kY);
+  const Vec3 C1 = kW * (-std::sin(psi) * kX + std::cos(psi) * kY);
+  const Vec3 C2 = -kW * (std::cos(psi) * kX + std::sin(psi) * kY);
+  const Vec3 D = A - C;
+  const double Fphi = 2 * D.dot(A1), Fpsi = -2 * D.dot(C1);
+  const double d1 = -Fphi / Fpsi;
+  const double Fpp = 2 * (A1.dot(A1) + D.dot(A2)), Fps = -2 * A1.dot(C1),
+               Fss = 2 * (C1.dot(C1) - D.dot(C2));
+  const double d2 = -(Fpp + 2 * Fps * d1 + Fss * d1 * d1) / Fpsi;
+  return {psi, d1, d2};
+}
+
+TEST(Spatial, TheRssrRockerFollowsItsClosedFormWithExactRates) {
+  const Mechanism m = rssr();
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const BodyId rocker = m.bodyNamed("rocker")->id;
+  const Vec3 A0(kR * std::cos(kPhi0), kR * std::sin(kPhi0), kDepth);
+  const Vec3 C0 = kH + kW * (std::cos(kPsi0) * kX + std::sin(kPsi0) * kY);
+  const double l = (A0 - C0).norm();
+  double psi = kPsi0, peak1 = 0, peak2 = 0;
+  std::vector<Rocker> expected;
+  for (int deg = 0; deg <= 360; ++deg) {
+    expected.push_back(closedForm(deg * M_PI / 180, psi, l));
+    psi = expected.back().psi;
+    peak1 = std::max(peak1, std::abs(expected.back().d1));
+    peak2 = std::max(peak2, std::abs(expected.back().d2));
+  }
+  EXPECT_GT(peak1, 0.05);  // the rocker swings
+  const double w = k.omega();
+  for (int deg = 0; deg <= 360; ++deg) {
+    ASSERT_TRUE(k.moveTo(deg).ok()) << deg;
+    const Rocker& e = expected[deg];
+    EXPECT_NEAR(k.bodyAngle(rocker), e.psi - kPsi0, 1e-10) << deg;
+    EXPECT_NEAR(k.bodyOmega(rocker), e.d1 * w, 1e-9 * peak1 * w) << deg;
+    EXPECT_NEAR(k.bodyAlpha(rocker), e.d2 * w * w, 1e-9 * peak2 * w * w) << deg;
+  }
+}
+
+TEST(Spatial, TheMotionTableGivesTheWorldsNineColumnsAPoint) {
+  const Mechanism m = rssr();
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const PointId c = *m.findPoint("rocker.C");
+  EXPECT_EQ(motionTableHeader(m, {c}),
+            "t_s,crank_deg,rocker.C.x_mm,rocker.C.y_mm,rocker.C.z_mm,rocker.C.vx_mm_s,"
+            "rocker.C.vy_mm_s,rocker.C.vz_mm_s,rocker.C.ax_mm_s2,rocker.C.ay_mm_s2,"
+            "rocker.C.az_mm_s2");
+  const Vec3 A0(kR * std::cos(kPhi0), kR * std::sin(kPhi0), kDepth);
+  const double l = (A0 - (kH + kW * (std::cos(kPsi0) * kX + std::sin(kPsi0) * kY))).norm();
+  double psi = kPsi0;
+  const double w = k.omega();
+  for (int deg = 0; deg <= 90; ++deg) {
+    const Rocker e = closedForm(deg * M_PI / 180, psi, l);
+    psi = e.psi;
+    ASSERT_TRUE(k.moveTo(deg).ok());
+    const Vec3 u = std::cos(psi) * kX + std::sin(psi) * kY,
+               t = -std::sin(psi) * kX + std::cos(psi) * kY;
+    const Vec3 at = kH + kW * u, v = kW * e.d1 * w * t;
+    const Vec3 acc = kW * (e.d2 * w * w * t - e.d1 * e.d1 * w * w * u);
+    const Kinematics::PointMotion3 got = k.motionInSpace(c);
+    EXPECT_LT((got.position - at).norm(), 1e-10 * kH.norm()) << deg;
+    EXPECT_LT((got.velocity - v).norm(), 1e-9 * kW * w) << deg;
+    EXPECT_LT((got.acceleration - acc).norm(), 1e-9 * kW * w * w) << deg;
+    // The row as the table writes it: the same nine numbers.
+    const std::string row = motionTableRow(k, deg, {c});
+    EXPECT_EQ(std::count(row.begin(), row.end(), ','), 10) << row;
+  }
+}
+
+TEST(Spatial, PlanesAndThirdNumbersComeBackAsWritten) {
+  const Mechanism m = rssr();
+  ASSERT_TRUE(m.planes && m.planes->size() == 1);
+  EXPECT_TRUE(isSpatial(m));
+  const std::string text = serializeMechanism(m);
+  LoadResult again = parseMechanism(text);
+  ASSERT_TRUE(again.mechanism) << again.error;
+  EXPECT_EQ(mechanismDifference(m, *again.mechanism), "");
+  EXPECT_EQ(serializeMechanism(*again.mechanism), text);
+  EXPECT_NE(text.find("\"plane\": \"rocker\""), std::string::npos);
+  EXPECT_EQ((*again.mechanism->planes)[0].yAxis, kY);
+  const Mechanism& n = *again.mechanism;
+  EXPECT_EQ(worldOf(n, *n.point(*n.findPoint("crank.A"))),
+            Vec3(kR * std::cos(kPhi0), kR * std::sin(kPhi0), kDepth));
+}
+
+std::string refused(const std::string& from, const std::string& to) {
+  std::string text = rssrText();
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  LoadResult r = parseMechanism(text);
+  return r.mechanism ? std::string("(read)") : r.error;
+}
+
+TEST(Spatial, BadPlanesAndJointsAreRefusedNamingThePlace) {
+  // A pin between bodies of planes that are not parallel.
+  EXPECT_EQ(refused(R"({"type": "ball-rod", "a": "crank.A", "b": "rocker.C"})",
+                    R"({"type": "pin", "a": "crank.A", "b": "rocker.C"})")
+                .substr(0, 63),
+            "joints[2].b: a pin joins bodies of parallel planes only: \"crank");
+  // Axes that are not unit, not perpendicular; the drawing redefined; an unknown plane.
+  EXPECT_EQ(refused(R"("x_axis": )" + vec(kX), R"("x_axis": [0, 1, 0.5])"),
+            "planes.rocker.x_axis: not a unit vector (to 1e-9)");
+  EXPECT_EQ(refused(R"("x_axis": )" + vec(kX), R"("x_axis": [0, 0, 1])"),
+            "planes.rocker.y_axis: not perpendicular to x_axis (to 1e-9)");
+  EXPECT_EQ(refused(R"({"rocker": {)", R"({"drawing": {)").substr(0, 31),
+            "planes.drawing: the drawing pla");
+  EXPECT_EQ(refused(R"("plane": "rocker")", R"("plane": "rocket")"),
+            "bodies[2].plane: no plane \"rocket\"");
+  // A ball rod with both ends on one body, or of no length.
+  EXPECT_EQ(refused(R"("b": "rocker.C"})", R"("b": "crank.O"})"),
+            "joints[2]: both sides are on body \"crank\"");
+  const Vec3 A(kR * std::cos(kPhi0), kR * std::sin(kPhi0), kDepth), d = A - kH;
+  const std::string onA = "[" + num(d.dot(kX)) + ", " + num(d.dot(kY)) + ", " +
+                          num(d.dot(kX.cross(kY))) + "], \"D\": [";
+  EXPECT_EQ(refused(R"("C": [)", R"("C": )" + onA),
+            "joints[2].b: the ends are closer than 1e-9 mm: a rod of no length keeps nothing");
+}
+
+TEST(Spatial, WhatIsNotComputedInSpaceYetSaysSoInsteadOfNumbers) {
+  const Mechanism m = rssr();
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const InstantCentres ics = computeInstantCentres(k);
+  EXPECT_FALSE(ics.status.ok());
+  EXPECT_NE(ics.status.message.find("instant centres of a machine in space (body \"rocker\" "
+                                    "moves in plane \"rocker\") are not computed yet"),
+            std::string::npos)
+      << ics.status.message;
+  EXPECT_TRUE(ics.centres.empty());
+  // A file that names planes but puts nothing in them is planar for every analysis.
+  Mechanism flat = m;
+  flat.planes.emplace();
+  EXPECT_EQ(notInSpaceYet(flat, "x"),
+            "x of a machine in space (body \"rocker\" moves in plane "
+            "\"rocker\") are not computed yet: the motion table and "
+            "the kinematics are");
+  for (Body& b : flat.bodies) b.plane.clear();
+  for (Point& p : flat.points) p.third.reset();
+  EXPECT_EQ(notInSpaceYet(flat, "x"), "");
+}
+
+TEST(Spatial, ABallRodIsAKindOfTheTableAndNothingElse) {
+  const ElementKind* k = elementKindNamed("ball-rod");
+  ASSERT_NE(k, nullptr);
+  EXPECT_EQ(&elementKind(k->type), k);
+  EXPECT_TRUE(k->anyPlanes);
+  EXPECT_EQ(k->equations, 1);
+}
+
+}  // namespace
+}  // namespace linkage
