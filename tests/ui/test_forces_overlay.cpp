@@ -158,6 +158,26 @@ TEST(ForcesOverlay, AnAnimationsFramesDrawTheMassesAndLoads) {
   w.exports().endFrames();
 }
 
+// The window's reactions and an animation's frames draw one document: the frames' overlay (no
+// reactions) coming and going leaves the window's reactions computed.
+TEST(ForcesOverlay, AnAnimationsFramesLeaveTheWindowsReactionsComputed) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("wanzer-inversion-2-masses"));
+  Document* d = w.document();
+  w.forces().show->setChecked(true);
+  ASSERT_TRUE(d->kinematics().accelerations());
+  w.exports().renderFrame(30, QSize(400, 300));
+  EXPECT_TRUE(d->kinematics().accelerations());
+  w.exports().endFrames();
+  EXPECT_TRUE(d->kinematics().accelerations());
+  ASSERT_TRUE(d->setCrankDeg(47).ok());
+  EXPECT_TRUE(d->forces().status.ok()) << d->forces().status.message;
+  EXPECT_FALSE(w.forces().overlay()->item()->marks().reactions.empty());
+  // Hidden again: nobody asks, nothing is computed for them.
+  w.forces().show->setChecked(false);
+  EXPECT_FALSE(d->kinematics().accelerations());
+}
+
 TEST(ForcesOverlay, TheScaleIsAOneTwoFiveStepOfNewtonsPerTenMillimetres) {
   MainWindow w;
   ASSERT_TRUE(w.openExample("drop-feed"));

@@ -1,6 +1,7 @@
 #include "document/document.h"
 
 #include <QFileInfo>
+#include <algorithm>
 #include <cmath>
 
 #include "linkage/io/model_file.h"
@@ -162,13 +163,15 @@ void Document::setAccelerationsWanted(bool on) {
   applyWants();
 }
 
-void Document::setForcesWanted(bool on) {
-  wantForces_ = on;
+void Document::setForcesWanted(const void* who, bool on) {
+  auto at = std::find(forcesWanted_.begin(), forcesWanted_.end(), who);
+  if (on && at == forcesWanted_.end()) forcesWanted_.push_back(who);
+  if (!on && at != forcesWanted_.end()) forcesWanted_.erase(at);
   applyWants();
 }
 
 void Document::applyWants() {
-  const bool want = wantAccelerations_ || wantForces_;
+  const bool want = wantAccelerations_ || !forcesWanted_.empty();
   if (state_.kinematics.accelerations() != want) {
     state_.kinematics.setAccelerations(want);
     forcesFresh_ = false;

@@ -87,8 +87,10 @@ class Document : public QObject {
   const InstantCentres& instantCentres();
   // Forces at the current pose (linkage/dynamics.h), computed on first request after a change;
   // their status says why there are none (the motion not determined, no driver, a singular
-  // pose). A view that shows them says so first: they need the accelerations.
-  void setForcesWanted(bool on);
+  // pose). A view that shows them says so first: they need the accelerations. Each view asks
+  // for itself (`who`), and they are computed while any asks: the window's canvas and an
+  // animation's frames draw one document, and one's leaving must not turn off the other's.
+  void setForcesWanted(const void* who, bool on);
   const Forces& forces();
 
  Q_SIGNALS:
@@ -118,7 +120,7 @@ class Document : public QObject {
   std::uint64_t icRevision_ = 0;
   double icCrankDeg_ = NAN;
   bool icFresh_ = false;
-  bool wantForces_ = false;
+  std::vector<const void*> forcesWanted_;
   ForceSolver forceSolver_;
   Forces forcesRefused_;  // what forces() gives when the solver cannot prepare
   std::uint64_t forcesRevision_ = 0;

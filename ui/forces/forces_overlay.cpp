@@ -16,10 +16,14 @@ ForcesOverlay::ForcesOverlay(CanvasScene* scene, QObject* parent)
   follow();
 }
 
+ForcesOverlay::~ForcesOverlay() {
+  if (doc_) doc_->setForcesWanted(this, false);
+}
+
 void ForcesOverlay::setReactionsVisible(bool on) {
   if (on == reactions_) return;
   reactions_ = on;
-  if (doc_) doc_->setForcesWanted(on);
+  if (doc_) doc_->setForcesWanted(this, on);
   scaledFor_ = 0;
   follow();
 }
@@ -37,9 +41,9 @@ void ForcesOverlay::updateScale() {
 void ForcesOverlay::follow() {
   Document* doc = scene_->document();
   if (doc != doc_) {
-    if (doc_) doc_->setForcesWanted(false);
+    if (doc_) doc_->setForcesWanted(this, false);
     doc_ = doc;
-    if (doc_) doc_->setForcesWanted(reactions_);
+    if (doc_) doc_->setForcesWanted(this, reactions_);
     scaledFor_ = 0;
   }
   if (!doc_) return;

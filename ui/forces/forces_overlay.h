@@ -20,6 +20,7 @@ class ForcesOverlay : public QObject {
 
  public:
   explicit ForcesOverlay(CanvasScene* scene, QObject* parent = nullptr);
+  ~ForcesOverlay() override;
 
   // The joints' reactions drawn (the masses and loads are, always).
   void setReactionsVisible(bool on);

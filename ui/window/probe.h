@@ -2,7 +2,8 @@
 // in the environment, the open windows write the words a user reads (title, size, status and
 // message lines, the output points' table, the velocity chain, the Properties fields, the
 // history) to FILE a few times a second, atomically, so that a script can check what is shown
-// as well as what is drawn. Without the variable nothing runs.
+// as well as what is drawn; and the text caret stops blinking, so that two screenshots of a
+// still window agree. Without the variable nothing runs.
 #pragma once
 
 #include <QString>
