@@ -11,9 +11,9 @@
 
 #include "examples.h"
 #include "linkage/dynamics.h"
-#include "linkage/gear.h"
 #include "linkage/elements.h"
 #include "linkage/force_samples.h"
+#include "linkage/gear.h"
 #include "linkage/io/model_file.h"
 #include "mechanisms.h"
 

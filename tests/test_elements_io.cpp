@@ -5,8 +5,8 @@
 #include <string>
 
 #include "linkage/edits.h"
-#include "linkage/gear.h"
 #include "linkage/elements.h"
+#include "linkage/gear.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
 

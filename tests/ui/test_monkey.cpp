@@ -23,8 +23,8 @@
 #include "document/document.h"
 #include "drawing.h"
 #include "linkage/io/model_file.h"
-#include "slow_build.h"
 #include "properties/properties_panel.h"
+#include "slow_build.h"
 
 namespace linkage::ui {
 namespace {
