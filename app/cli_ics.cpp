@@ -11,6 +11,7 @@
 #include "linkage/elements.h"
 #include "linkage/instant_centres.h"
 #include "linkage/io/numbers.h"
+#include "linkage/space.h"
 #include "linkage/velocity_chain.h"
 
 namespace linkage::cli {
@@ -36,6 +37,9 @@ CSV, one row per pair i < j:
 x_mm, y_mm are empty for a centre at infinity, dir_x, dir_y (its unit direction, unoriented,
 written with dir_x > 0 or upwards) empty otherwise; all four are empty when the two bodies do
 not move relative to each other at this instant (no centre). status: primary, kennedy, velocity.
+A machine in space (docs/spatial.md): the centres of bodies of parallel planes (and the
+ground) are found among them, in the frame of the first of those planes, named in a last
+column, plane; bodies of planes that are not parallel have none: status across-planes.
 
   --angle DEG       crank angle (required)
   --json            JSON instead: the same, plus the lines each centre was found from
@@ -96,8 +100,20 @@ std::string pair2(const Vec2& v, double scale = 0) {
   return s.append(num(clean(v.x()), 6)).append(", ").append(num(clean(v.y()), 6)).append(")");
 }
 
+// A centre's status as the tables write it: "across-planes" where none exists.
+std::string statusText(const InstantCentre& c) {
+  return c.across ? "across-planes" : toString(c.status);
+}
+
+// The plane a centre's coordinates are in: its class's frame.
+std::string planeText(const InstantCentres& ics, const InstantCentre& c) {
+  return c.across ? std::string() : ics.classes.frames[c.planeClass].name;
+}
+
 std::string csv(const Mechanism& m, const InstantCentres& ics, double angle) {
-  std::string s = "crank_deg,i,j,body_i,body_j,x_mm,y_mm,at_infinity,dir_x,dir_y,status\n";
+  const bool space = isSpatial(m);
+  std::string s = "crank_deg,i,j,body_i,body_j,x_mm,y_mm,at_infinity,dir_x,dir_y,status";
+  s += space ? ",plane\n" : "\n";
   for (const InstantCentre& c : ics.centres) {
     s += num(angle) + "," + std::to_string(c.i) + "," + std::to_string(c.j) + "," +
          csvField(bodyName(m, c.bodyI)) + "," + csvField(bodyName(m, c.bodyJ)) + ",";
@@ -107,7 +123,8 @@ std::string csv(const Mechanism& m, const InstantCentres& ics, double angle) {
       s += ",,1," + num(c.h.x()) + "," + num(c.h.y());
     else
       s += num(c.h.x()) + "," + num(c.h.y()) + ",0,,";
-    s += std::string(",") + toString(c.status) + "\n";
+    s += "," + statusText(c);
+    s += space ? "," + csvField(planeText(ics, c)) + "\n" : "\n";
   }
   return s;
 }
@@ -142,8 +159,9 @@ std::string json(const Mechanism& m, const InstantCentres& ics, double angle) {
     const InstantCentre& c = ics.centres[p];
     s += "    {\"i\": " + std::to_string(c.i) + ", \"j\": " + std::to_string(c.j) +
          ", \"body_i\": " + jsonString(bodyName(m, c.bodyI)) +
-         ", \"body_j\": " + jsonString(bodyName(m, c.bodyJ)) + ", \"status\": \"" +
-         toString(c.status) + "\", " + jsonCentreValue(c.h, c.determined);
+         ", \"body_j\": " + jsonString(bodyName(m, c.bodyJ)) + ", \"status\": \"" + statusText(c) +
+         "\", " + jsonCentreValue(c.h, c.determined);
+    if (isSpatial(m) && !c.across) s += ", \"plane\": " + jsonString(planeText(ics, c));
     if (c.status == CentreStatus::Primary && c.joint && !c.lines[0].joint)
       s += ", \"joint\": " + jsonString(jointLabel(m, c.joint));
     if (c.status == CentreStatus::Kennedy || c.lines[0].joint) {
@@ -345,7 +363,7 @@ void report(const InstantCentres& ics) {
               << (d.euclidean ? " mm" : " (chordal)") << ", more than " << num(d.tolerance, 3)
               << "\n";
   for (const InstantCentre& c : ics.centres)
-    if (c.status == CentreStatus::Velocity)
+    if (c.status == CentreStatus::Velocity && !c.across)
       note(ic(c.i, c.j) + " is not determined by Kennedy's theorem here (" +
            toString(c.kennedyFailure) + "): " +
            (c.determined ? "taken from the solved velocities"

@@ -228,6 +228,27 @@ TEST_F(InstantCentresCli, BadInputExitsTwoUnreachableAngleThree) {
   EXPECT_NE(run("--help").out.find("ics MODEL"), std::string::npos);
 }
 
+// A machine in space: the centres of each plane class in its frame, named in the last column;
+// none between the crank (drawing plane) and the rocker (inclined plane); a chain of centres
+// that would cross them is refused naming the pair.
+TEST_F(InstantCentresCli, AMachineInSpaceHasCentresWithinPlanesAndNoneAcross) {
+  CliResult r = run("ics rssr-crank-rocker --angle 40");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const std::vector<std::string> lines = r.lines();
+  ASSERT_EQ(lines.size(), 4u) << r.out;  // header + 3 pairs
+  EXPECT_EQ(lines[0], "crank_deg,i,j,body_i,body_j,x_mm,y_mm,at_infinity,dir_x,dir_y,status,plane");
+  EXPECT_EQ(lines[1], "40,1,2,ground,crank,0,0,0,,,primary,drawing");
+  EXPECT_EQ(lines[2], "40,1,3,ground,rocker,0,0,0,,,primary,rocker");
+  EXPECT_EQ(lines[3], "40,2,3,crank,rocker,,,0,,,across-planes,");
+  EXPECT_EQ(r.err, "");  // no note of a centre Kennedy missed: there is none to find
+  CliResult chain = run("ics rssr-crank-rocker --angle 40 --point rocker.C");
+  EXPECT_EQ(chain.exit, 2);
+  EXPECT_NE(chain.err.find("IC(2,3) does not exist: bodies 2 and 3 move in planes that are not "
+                           "parallel"),
+            std::string::npos)
+      << chain.err;
+}
+
 }  // namespace
 }  // namespace linkage
 #endif

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "linkage/dynamics.h"
 #include "linkage/elements.h"
-#include "linkage/instant_centres.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
 #include "linkage/space.h"
@@ -202,13 +202,13 @@ TEST(Spatial, WhatIsNotComputedInSpaceYetSaysSoInsteadOfNumbers) {
   const Mechanism m = rssr();
   Kinematics k;
   ASSERT_TRUE(k.load(m).ok());
-  const InstantCentres ics = computeInstantCentres(k);
-  EXPECT_FALSE(ics.status.ok());
-  EXPECT_NE(ics.status.message.find("instant centres of a machine in space (body \"rocker\" "
-                                    "moves in plane \"rocker\") are not computed yet"),
+  ForceSolver forces;
+  const Status s = forces.prepare(k);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message.find("forces of a machine in space (body \"rocker\" "
+                           "moves in plane \"rocker\") are not computed yet"),
             std::string::npos)
-      << ics.status.message;
-  EXPECT_TRUE(ics.centres.empty());
+      << s.message;
   // A file that names planes but puts nothing in them is planar for every analysis.
   Mechanism flat = m;
   flat.planes.emplace();

@@ -1,6 +1,7 @@
 // The paint list: shapes from the mechanism's topology (which body is a bar, a plate, a block),
 // positions from the kinematics at its pose.
 #include "linkage/drawing.h"
+#include "linkage/space.h"
 
 #include <algorithm>
 #include <cmath>
@@ -113,6 +114,14 @@ Eigen::Vector3d homogeneous(const InstantCentres& ics, int i, int j) {
 
 void placeCentres(Drawing& d, const Kinematics& k, const InstantCentres& ics) {
   const Mechanism& m = k.mechanism();
+  // In space a joint's line is read from the mechanism as its class's frame sees it (made only
+  // when a centre comes from a joint's line: a pin in a slot).
+  std::vector<std::optional<Mechanism>> flat(ics.classes.frames.size());
+  auto seenBy = [&](int cls) -> const Mechanism& {
+    if (ics.classes.frames.size() < 2) return m;
+    if (!flat[cls]) flat[cls] = flattenedTo(m, ics.classes, cls);
+    return *flat[cls];
+  };
   d.centres.resize(ics.centres.size());
   for (size_t n = 0; n < ics.centres.size(); ++n) {
     const InstantCentre& c = ics.centres[n];
@@ -123,6 +132,8 @@ void placeCentres(Drawing& d, const Kinematics& k, const InstantCentres& ics) {
     out.atInfinity = c.atInfinity();
     out.at = c.determined ? Vec2(c.h.x(), c.h.y()) : Vec2::Zero();
     out.status = c.status;
+    out.across = c.across;
+    out.planeClass = c.planeClass;
     out.lines.clear();
     const bool fromLines = c.status == CentreStatus::Kennedy ||
                            (c.status == CentreStatus::Primary && c.lines[0].joint);
@@ -141,7 +152,7 @@ void placeCentres(Drawing& d, const Kinematics& k, const InstantCentres& ics) {
           Vec2 point(PointId p) const override { return k.position(p); }
           Transform body(BodyId b) const override { return k.bodyTransform(b); }
         } pose(k);
-        centreLineAt(kindOf(*j).centre(m, *j), pose, line.through);
+        centreLineAt(kindOf(*j).centre(seenBy(c.planeClass), *j), pose, line.through);
       }
       out.lines.push_back(line);
     }

@@ -120,6 +120,18 @@ Status textbookNumbers(const Mechanism& m, std::vector<BodyId>& bodies, std::vec
   return Status::success();
 }
 
+// Each body's plane class, and in space the mechanism as each class's frame sees it (prepared
+// once: a joint's centre data are read from it at every prepare, never per frame).
+void InstantCentreSolver::planeClassesOf(const Mechanism& m, const System& sys) {
+  classOf_.assign(n_, 0);
+  flat_.clear();
+  out_.classes = planeClasses(m);
+  if (!isSpatial(m)) return;
+  for (int t = 0; t < n_; ++t) classOf_[t] = sysIndex_[t] >= 0 ? sys.classOf[sysIndex_[t]] : -1;
+  for (size_t c = 0; c < out_.classes.frames.size(); ++c)
+    flat_.push_back(flattenedTo(m, out_.classes, static_cast<int>(c)));
+}
+
 int InstantCentreSolver::pair(int a, int b) const {
   if (a > b) std::swap(a, b);
   return a * n_ - a * (a + 1) / 2 + (b - a - 1);
@@ -134,9 +146,20 @@ std::vector<std::pair<int, InstantCentreSolver::Primary>> InstantCentreSolver::p
     index = sys.bodyIndex(b);
     return index >= 0 ? Vec2(sketch - sys.frameOrigin[index]) : sketch;
   };
+  auto classOfBody = [&](BodyId b) {
+    const int k = sys.bodyIndex(b);
+    return k >= 0 ? classOf_[textbookOf_[k + 1]] : -1;
+  };
   for (size_t ji = 0; ji < m.joints.size(); ++ji) {
     const Joint& j = m.joints[ji];
-    const CentreData c = kindOf(j).centre(m, j);
+    CentreData c = kindOf(j).centre(m, j);
+    if (!flat_.empty()) {
+      // In space: a joint's centre is in the frame of its bodies' class, from its points as that
+      // frame sees them; a joint across classes (a ball rod, a bevel pair) gives none.
+      const int ca = classOfBody(c.bodies[0]), cb = classOfBody(c.bodies[1]);
+      if (ca >= 0 && cb >= 0 && ca != cb) continue;
+      c = kindOf(j).centre(flat_[std::max({ca, cb, 0})], j);
+    }
     Primary p;
     p.rule = c.rule;
     p.joint = static_cast<int>(ji);
@@ -163,10 +186,6 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
     return out_.status;
   }
   const Mechanism& m = k.mechanism();
-  if (std::string why = notInSpaceYet(m, "instant centres"); !why.empty()) {
-    out_.status = Status::badModel(why);
-    return out_.status;
-  }
   const System& sys = internal::system(k);
   revision_ = k.revision();
   out_.revision = revision_;
@@ -184,6 +203,7 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
     sysIndex_[t] = sys.bodyIndex(out_.bodies[t]);
     textbookOf_[sysIndex_[t] + 1] = t;
   }
+  planeClassesOf(m, sys);
   // The middle of the drawing: homogeneous coordinates about it, in units of L, are O(1).
   Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
   for (const Point& p : m.points) lo = lo.cwiseMin(p.pos), hi = hi.cwiseMax(p.pos);
@@ -215,6 +235,9 @@ Status InstantCentreSolver::prepare(const Kinematics& k) {
       c.j = out_.numbers[b];
       c.bodyI = out_.bodies[a];
       c.bodyJ = out_.bodies[b];
+      c.planeClass = std::max({classOf_[a], classOf_[b], 0});
+      c.across = classOf_[a] >= 0 && classOf_[b] >= 0 && classOf_[a] != classOf_[b];
+      work_[pair(a, b)].across = c.across;
     }
   out_.size = L_;
   cand_.reserve(n_ + 1);
@@ -361,7 +384,7 @@ void InstantCentreSolver::kennedy() {
   for (int a = 0; a < n_; ++a)
     for (int b = a + 1; b < n_; ++b) {
       const int p = pairIndex_[n_ * a + b];
-      if (work_[p].found < 0 && !work_[p].rigid) open_.push_back({p, a, b});
+      if (work_[p].found < 0 && !work_[p].rigid && !work_[p].across) open_.push_back({p, a, b});
     }
   // Circle-diagram passes: a pass finds every pair with two lines through centres known before
   // it, so what a pass finds depends on earlier passes only, never on the order of the pairs.
@@ -464,6 +487,7 @@ void InstantCentreSolver::velocityCentres(const Kinematics& k) {
   for (int a = 0; a < n_; ++a)
     for (int b = a + 1; b < n_; ++b) {
       Work& w = work_[pairIndex_[n_ * a + b]];
+      if (w.across) continue;  // twists in two frames: no centre to find
       const Vec3 rel = twist_[b] - twist_[a];
       // v + omega perp(P - centre) = 0 at P = centre + perp(v) / omega: in homogeneous
       // coordinates (perp(v) / L, omega), at infinity (perpendicular to v) when omega = 0.

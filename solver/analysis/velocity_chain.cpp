@@ -33,6 +33,12 @@ Status step(const InstantCentres& ics, int from, int to, const BodyMotion& motio
                     (ics.velocitiesValid ? " (the two bodies do not move relative to each other)"
                                          : " (no velocities at a singular position)"));
   };
+  if (c->across)
+    return fail(StatusCode::BadModel,
+                ic(c->i, c->j) + " does not exist: bodies " + std::to_string(c->i) + " and " +
+                    std::to_string(c->j) +
+                    " move in planes that are not parallel (a chain of centres stays among "
+                    "bodies of parallel planes)");
   if (!c->determined) return undetermined(c);
   // Ground centre undetermined with velocities known: `to` does not move at this instant.
   const bool toAtRest = !g->determined && ics.velocitiesValid;

@@ -152,4 +152,37 @@ PlaneClasses planeClasses(const Mechanism& m) {
   return c;
 }
 
+Vec2 inClassFrame(const Mechanism& m, const PlaneClasses& pc, const Point& p, int cls) {
+  const Body* b = m.body(p.body);
+  if (b && !b->ground) return pc.of(b->plane).toClass(p.pos);
+  return pc.project(cls, Vec3(p.pos.x(), p.pos.y(), p.third.value_or(0.0)));
+}
+
+Slot inClassFrame(const Mechanism& m, const PlaneClasses& pc, const Slot& s, int cls) {
+  Slot c = s;
+  c.z.clear();
+  const Body* b = m.body(s.body);
+  const PlaneInClass* moving = b && !b->ground ? &pc.of(b->plane) : nullptr;
+  std::vector<Vec2*> ends{&c.p0, &c.p1};
+  if (c.mid) ends.insert(ends.begin() + 1, &*c.mid);
+  for (size_t e = 0; e < ends.size(); ++e) {
+    const double z = e < s.z.size() ? s.z[e] : 0.0;
+    *ends[e] =
+        moving ? moving->toClass(*ends[e]) : pc.project(cls, Vec3(ends[e]->x(), ends[e]->y(), z));
+  }
+  return c;
+}
+
+Mechanism flattenedTo(const Mechanism& m, const PlaneClasses& pc, int cls) {
+  Mechanism f = m;
+  for (Point& p : f.points) {
+    p.pos = inClassFrame(m, pc, p, cls);
+    p.third.reset();
+  }
+  for (Slot& s : f.slots) s = inClassFrame(m, pc, s, cls);
+  for (Body& b : f.bodies) b.plane.clear();
+  f.planes.reset();
+  return f;
+}
+
 }  // namespace linkage

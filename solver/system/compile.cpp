@@ -139,21 +139,8 @@ class Compiler : public Frames {
   // ground's projected onto the class's frame.
   const Slot* inClass(const Slot& s) const {
     auto [it, fresh] = slotAt_.try_emplace({cls_, s.id.value}, s);
-    if (!fresh) return &it->second;
-    Slot& c = it->second;
-    c.z.clear();
-    const int k = sys_.bodyIndex(s.body);
-    std::vector<Vec2*> ends{&c.p0, &c.p1};
-    if (c.mid) ends.insert(ends.begin() + 1, &*c.mid);
-    for (size_t e = 0; e < ends.size(); ++e) {
-      if (k >= 0) {
-        *ends[e] = placing_[k].toClass(*ends[e]);
-      } else {
-        const double z = e < s.z.size() ? s.z[e] : 0.0;
-        *ends[e] = classes_.project(cls_, Vec3(ends[e]->x(), ends[e]->y(), z));
-      }
-    }
-    return &c;
+    if (fresh) it->second = inClassFrame(m_, classes_, s, cls_);
+    return &it->second;
   }
 
   bool knownBody(BodyId id) const {

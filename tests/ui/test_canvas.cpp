@@ -7,6 +7,7 @@
 
 #include <QGraphicsPathItem>
 #include <QSignalSpy>
+#include <QTableWidget>
 #include <QTest>
 
 #include <QDockWidget>
@@ -224,6 +225,27 @@ TEST(Canvas, VelocityChainIsWrittenOutAndItsDistancesDrawn) {
   ASSERT_TRUE(panel->chain());
   const Vec2 v40 = w.document()->kinematics().velocity(panel->chain()->point);
   EXPECT_LT((panel->chain()->velocity - v40).norm(), 1e-9 * v40.norm());
+}
+
+// A machine in space: the centres panel gives each centre's plane, and says there is none
+// between the crank and the rocker (planes not parallel) instead of a number; the chain to the
+// rocker's point says why there is none.
+TEST(Canvas, CentresOfAMachineInSpaceNameTheirPlaneAndNoneAcross) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("rssr-crank-rocker"));
+  w.show();
+  w.centres().dock->raise();
+  ASSERT_TRUE(w.document()->setCrankDeg(40).ok());
+  QApplication::processEvents();
+  QTableWidget* t = w.centres().panel()->table();
+  ASSERT_EQ(t->rowCount(), 3);
+  EXPECT_EQ(t->item(0, 5)->text(), QStringLiteral("primary, in plane drawing"));
+  EXPECT_EQ(t->item(1, 5)->text(), QStringLiteral("primary, in plane rocker"));
+  EXPECT_EQ(t->item(2, 0)->text(), QStringLiteral("2,3"));
+  EXPECT_EQ(t->item(2, 2)->text(), QStringLiteral("\u2013"));
+  EXPECT_EQ(t->item(2, 5)->text(), QStringLiteral("none: their planes are not parallel"));
+  EXPECT_NE(w.centres().panel()->chainText().indexOf("IC(2,3) does not exist"), -1)
+      << w.centres().panel()->chainText().toStdString();
 }
 
 // No two labels of a paint overlap, nor the velocity chain's dimension (painted first): the

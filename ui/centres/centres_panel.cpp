@@ -224,7 +224,7 @@ void CentresPanel::fillRows(const InstantCentres& ics, int from, int to) {
         coordinate(c, c.h.x()),
         coordinate(c, c.h.y()),
         c.atInfinity() ? tr("yes (direction)") : QString(),
-        statusText(c, held)};
+        statusText(c, held) + planeText(ics, c)};
     for (int k = 0; k < 6; ++k)
       if (table_->item(r, k)->text() != cells[k]) {
         table_->item(r, k)->setText(cells[k]);
@@ -245,7 +245,14 @@ QString CentresPanel::coordinate(const InstantCentre& c, double v) {
   return c.atInfinity() ? num(v, 4) : num(v);
 }
 
+// A machine in space: which plane's coordinates the centre is in (its class's first plane).
+QString CentresPanel::planeText(const InstantCentres& ics, const InstantCentre& c) const {
+  if (c.across || !c.determined || ics.classes.frames.size() < 2) return {};
+  return tr(", in plane %1").arg(QString::fromStdString(ics.classes.frames[c.planeClass].name));
+}
+
 QString CentresPanel::statusText(const InstantCentre& c, bool held) const {
+  if (c.across) return tr("none: their planes are not parallel");
   if (held) return tr("not determined (a body free with the crank held)");
   if (!c.determined) return tr("none (no relative motion)");
   if (c.status == CentreStatus::Kennedy)

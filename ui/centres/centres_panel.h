@@ -55,6 +55,7 @@ class CentresPanel : public DockPanel {
   void fillRows(const InstantCentres& ics, int from, int to);
   void fillScrolledTo();
   static QString coordinate(const InstantCentre& c, double v);
+  QString planeText(const InstantCentres& ics, const InstantCentre& c) const;
   QString statusText(const InstantCentre& c, bool held) const;
   void fillChain(const InstantCentres& ics);
   // chainText()'s parts: the crank's turning, each step from body to body (how v_P is found,

@@ -76,6 +76,10 @@ struct Drawing {
     Vec2 at = Vec2::Zero();  // the point, or the unit direction at infinity
     CentreStatus status = CentreStatus::Velocity;
     std::vector<KennedyLine> lines;  // Kennedy: the two lines that found it
+    // A machine in space: none between bodies of planes that are not parallel; else `at` is
+    // in the frame of plane class `planeClass` (InstantCentre's).
+    bool across = false;
+    int planeClass = 0;
   };
 
   std::vector<Body> bodies;  // ground first, then file order

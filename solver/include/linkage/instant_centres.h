@@ -16,6 +16,7 @@
 
 #include "linkage/elements.h"
 #include "linkage/kinematics.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -87,6 +88,11 @@ struct InstantCentre {
   int round = 0;                    // Kennedy: pass of the circle-diagram iteration, from 1
   KennedyFailure kennedyFailure = KennedyFailure::None;  // Velocity: why Kennedy did not
   double errorBound = 0;  // Primary/Kennedy: first-order bound, in units of inputAccuracy
+  // A machine in space: the two bodies move in planes that are not parallel, where no instant
+  // centre exists (never determined). Else the centre is in the frame of plane class
+  // `planeClass` (InstantCentres::classes; 0, the drawing plane's, for a planar machine).
+  bool across = false;
+  int planeClass = 0;
 
   // The centre of the solved velocities (same convention as h), whatever the status.
   Eigen::Vector3d fromVelocity = Eigen::Vector3d::Zero();
@@ -118,6 +124,9 @@ struct InstantCentres {
   std::vector<int> numbers;            // textbook number of bodies[t], ascending, numbers[0] = 1
   std::vector<InstantCentre> centres;  // one per pair, (i, j) ascending
   std::vector<CentreDisagreement> disagreements;
+  // The plane classes (linkage/space.h) whose frames the centres are in: one, the drawing
+  // plane's, for a planar machine.
+  PlaneClasses classes;
   int kennedyRounds = 0;  // circle-diagram rounds that found something
 
   const InstantCentre* find(int i, int j) const;  // numbers in either order; nullptr if unknown
@@ -155,7 +164,7 @@ class InstantCentreSolver {
     Eigen::Vector3d h;
     double err = 0;
     int found = -1;  // round found in: 0 primary, >= 1 Kennedy, -1 not (yet)
-    bool rigid = false, hasLine = false, exact = false, velDetermined = false;
+    bool rigid = false, hasLine = false, exact = false, velDetermined = false, across = false;
     Eigen::Vector3d line, vel;
     Eigen::Vector3d mm;  // a joint's own point or slot normal, as given (public convention)
     double lineErr = 0;
@@ -171,6 +180,7 @@ class InstantCentreSolver {
 
   int pair(int a, int b) const;  // a != b, textbook indices
   std::vector<std::pair<int, Primary>> primaries(const Mechanism& m, const System& sys) const;
+  void planeClassesOf(const Mechanism& m, const System& sys);
   [[gnu::always_inline]] inline Eigen::Vector3d scaled(const Vec2& p) const;
   Eigen::Vector3d toPublic(const Eigen::Vector3d& h) const;
   [[gnu::always_inline]] inline Vec2 global(int body, const Vec2& s) const;  // system index
@@ -190,6 +200,8 @@ class InstantCentreSolver {
   std::vector<JointId> jointIds_;   // Mechanism::joints order
   std::vector<int> sysIndex_;       // textbook index -> system body index (-1 ground)
   std::vector<int> textbookOf_;     // system body index + 1 -> textbook index
+  std::vector<int> classOf_;        // textbook index -> plane class (-1 ground: every class)
+  std::vector<Mechanism> flat_;     // in space: the mechanism as each class's frame sees it
   std::vector<Primary> primaries_;  // grouped by pair
   std::vector<Work> work_;
   std::vector<Candidate> cand_;

@@ -53,6 +53,7 @@ struct PlaneInClass {
   double depth = 0;
   bool identity = true;  // the class frame itself: nothing to map
   Vec2 toClass(const Vec2& p) const { return identity ? p : Vec2(rot * p + shift); }
+  Vec2 fromClass(const Vec2& p) const { return identity ? p : Vec2(rot.inverse() * (p - shift)); }
 };
 struct PlaneClasses {
   std::vector<Plane> frames;          // one a class; frames[0] the drawing plane's class
@@ -63,5 +64,15 @@ struct PlaneClasses {
   Vec2 project(int k, const Vec3& w, double* depth = nullptr) const;
 };
 PlaneClasses planeClasses(const Mechanism& m);
+
+// Where class `cls`'s frame sees a point or a slot: a moving body's mapped from its plane (its
+// class is `cls` for this to mean anything), the ground's projected along the class's normal
+// (its z as written). Slot: its ends; the copy has no z.
+Vec2 inClassFrame(const Mechanism& m, const PlaneClasses& pc, const Point& p, int cls);
+Slot inClassFrame(const Mechanism& m, const PlaneClasses& pc, const Slot& s, int cls);
+// The mechanism as class `cls`'s frame sees it: every point and slot so mapped, the ids kept,
+// every body in the drawing plane. What works on planar positions (a joint's instant centre)
+// works on it for the joints of that class.
+Mechanism flattenedTo(const Mechanism& m, const PlaneClasses& pc, int cls);
 
 }  // namespace linkage
