@@ -183,7 +183,7 @@ TEST(Seed004, TheDrawingIsThePapersPositionAtPhi1Zero) {
 }
 
 TEST(Seed004, ExamplesReadAndSaveByteForByte) {
-  for (const char* name : {"overedge-machine"}) {
+  for (const char* name : {"overedge-machine", "lockstitch-bevel", "rssr-crank-rocker"}) {
     const std::string path = std::string(LINKAGE_EXAMPLES_DIR) + "/" + name + ".linkage.json";
     const Mechanism m = test::example(name);
     std::ifstream f(path);

@@ -229,5 +229,87 @@ TEST(Spatial, ABallRodIsAKindOfTheTableAndNothingElse) {
   EXPECT_EQ(k->equations, 1);
 }
 
+// A bevel pair about the ground: the RSSR's rocker geared to a wheel in the drawing plane (the
+// planes' normals x and z: at right angles). theta_wheel = ratio theta_rocker, each about its own
+// plane's normal, so the wheel's angle and rates are the rocker's closed form times the ratio:
+// its acceleration is not zero, as it would be behind a crank turning at constant speed.
+constexpr double kRatio = -1.5;
+const Vec2 kWheel(50, 0);
+
+std::string bevelText(const std::string& gearExtra = "") {
+  std::string text = rssrText();
+  text.replace(text.find(R"(  ],
+  "joints")"),
+               3, R"(,
+    {"name": "wheel", "points": {"W": [50, 0], "P": [60, 0]}}
+  ])");
+  text.replace(text.find(R"(  ],
+  "driver")"),
+               3,
+               R"(,
+    {"type": "pin", "a": "ground.W", "b": "wheel.W"},
+    {"type": "gear", "a": "rocker.H", "b": "wheel.W", "ratio": -1.5)" +
+                   gearExtra + R"(}
+  ])");
+  text.replace(text.find(R"("H": [0, 0, 80]})"), 16, R"("H": [0, 0, 80], "W": [50, 0]})");
+  return text;
+}
+
+TEST(Spatial, ABevelPairTurnsTheWheelRatioTimesTheRockerWithExactRates) {
+  LoadResult r = parseMechanism(bevelText());
+  ASSERT_TRUE(r.mechanism) << r.error;
+  const Mechanism& m = *r.mechanism;
+  EXPECT_FALSE(
+      parallel(planeOf(m, m.bodyNamed("rocker")->id), planeOf(m, m.bodyNamed("wheel")->id)));
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const BodyId wheel = m.bodyNamed("wheel")->id;
+  const PointId P = *m.findPoint("wheel.P");
+  const Vec3 A0(kR * std::cos(kPhi0), kR * std::sin(kPhi0), kDepth);
+  const double l = (A0 - (kH + kW * (std::cos(kPsi0) * kX + std::sin(kPsi0) * kY))).norm();
+  double psi = kPsi0, peak1 = 0, peak2 = 0;
+  std::vector<Rocker> e;
+  for (int deg = 0; deg <= 720; ++deg) {
+    e.push_back(closedForm(deg * M_PI / 180, psi, l));
+    psi = e.back().psi;
+    peak1 = std::max(peak1, std::abs(kRatio * e.back().d1));
+    peak2 = std::max(peak2, std::abs(kRatio * e.back().d2));
+  }
+  const double w = k.omega();
+  for (int deg = 0; deg <= 720; deg += 2) {
+    ASSERT_TRUE(k.moveTo(deg).ok()) << deg;
+    const double th = kRatio * (e[deg].psi - kPsi0);
+    EXPECT_NEAR(k.bodyAngle(wheel), th, 1e-10) << deg;
+    EXPECT_NEAR(k.bodyOmega(wheel), kRatio * e[deg].d1 * w, 1e-9 * peak1 * w) << deg;
+    EXPECT_NEAR(k.bodyAlpha(wheel), kRatio * e[deg].d2 * w * w, 1e-9 * peak2 * w * w) << deg;
+    // The wheel's point, 10 from its axis, in the world: position and rates from th alone.
+    const Vec3 u(std::cos(th), std::sin(th), 0), t(-std::sin(th), std::cos(th), 0);
+    const double th1 = kRatio * e[deg].d1 * w, th2 = kRatio * e[deg].d2 * w * w;
+    const Kinematics::PointMotion3 got = k.motionInSpace(P);
+    EXPECT_LT((got.position - (Vec3(kWheel.x(), kWheel.y(), 0) + 10 * u)).norm(), 1e-9) << deg;
+    EXPECT_LT((got.velocity - 10 * th1 * t).norm(), 1e-9 * 10 * peak1 * w) << deg;
+    EXPECT_LT((got.acceleration - 10 * (th2 * t - th1 * th1 * u)).norm(),
+              1e-9 * 10 * (peak2 + peak1 * peak1) * w * w)
+        << deg;
+  }
+}
+
+TEST(Spatial, ABevelPairOnAMovingCarrierOrOffItsPivotIsRefusedNamingTheJoint) {
+  LoadResult r = parseMechanism(bevelText(R"(, "carrier": "crank")"));
+  EXPECT_FALSE(r.mechanism);
+  EXPECT_EQ(r.error,
+            "joints[4].carrier: a bevel pair (bodies of planes that are not parallel) turns about "
+            "the ground only, and a carrier joins bodies of its own plane");
+  // Its centres are where its bodies are pinned to the ground.
+  std::string text = bevelText();
+  text.replace(text.find(R"("a": "rocker.H", "b": "wheel.W")"), 31,
+               R"("a": "rocker.C", "b": "wheel.W")");
+  r = parseMechanism(text);
+  EXPECT_FALSE(r.mechanism);
+  EXPECT_EQ(r.error,
+            "joints[4].a: \"rocker.C\" is not where body \"rocker\" is pinned to the carrier "
+            "\"ground\": a gear's centres are its bodies' pivots on the carrier");
+}
+
 }  // namespace
 }  // namespace linkage

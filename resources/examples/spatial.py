@@ -53,11 +53,12 @@ MAIN = {"origin": list(OV_A), "x_axis": [0, 0, 1], "y_axis": [0, 1, 0]}
 ROCKER = {"origin": list(OV_H), "x_axis": [1, 0, 0],
           "y_axis": [0, -math.cos(RHO), math.sin(RHO)]}
 # The grippers' plane: the upper gripper's rocker W3 and W4 turn about an axis along z through F
-# (eq. 3a), the lower gripper W4 - L4 - W5 is flat in it (eq. 4a), 10 mm deeper (z 69).
+# (eq. 3a), the lower gripper W4 - L4 - W5 is flat in it (eq. 4a), 10 mm deeper (z 69). Its
+# coordinates are the world's x and y (origin on the z axis): it is parallel to the drawing plane.
 OV_F = (40, 38, 79)
-GRIPPER = {"origin": list(OV_F), "x_axis": [1, 0, 0], "y_axis": [0, 1, 0]}
+GRIPPER = {"origin": [0, 0, OV_F[2]], "x_axis": [1, 0, 0], "y_axis": [0, 1, 0]}
 OV_R2, OV_L3, OV_W3, OV_W4, OV_L4, OV_W5, OV_P = 10, 40, 24, 20, 42, 22, 52
-OV_K = (78, 51)  # the lower gripper's pivot in the grippers' plane's world x, y (z 69)
+OV_K = (78, 51)  # the lower gripper's pivot, world x, y (z 69)
 OV_LOW = -10  # the lower gripper's depth in the grippers' plane
 OV_D = (6, -8)  # the crank R2 in the main shaft's plane (36.87 degrees ahead of R1), at x = 0
 OV_W4_TURN = math.atan2(-40, 9)  # W4 from W3 (77.32 degrees behind it)
@@ -130,7 +131,7 @@ def turned2(c, p, angle, scale=1):
 def overedge_machine_sketch(phi=0.0, near=None):
     """Every moving point at crank angle phi (radians; 0 is the drawing), in its body's plane's
     coordinates; `near`, the previous sketch, picks the branches (the drawing's by default)."""
-    near = near or {"a1": 0.0, "a3": math.pi, "M": (40, 20), "G6": (40, -32), "G8": (54, 10),
+    near = near or {"a1": 0.0, "a3": math.pi, "M": (80, 58), "G6": (40, -32), "G8": (54, 10),
                     "J": (3, 17)}
     s = {}
     c, si = math.cos(phi), math.sin(phi)
@@ -145,12 +146,13 @@ def overedge_machine_sketch(phi=0.0, near=None):
     s.update(A1=A1, B=B, C=C, G=G, N=(-x, U + OV_NEEDLE), a1=a1)
     # The upper gripper (eq. 3a): the crank R2 at x = 0, a ball rod L3 to W3 about F (axis z).
     D = turned2((0, 0), OV_D, phi)
-    a3 = rocker_angle(in_plane(MAIN, (D[0], D[1], OV_A[0])), GRIPPER, (0, 0), OV_W3, OV_L3,
+    F = OV_F[:2]
+    a3 = rocker_angle(in_plane(MAIN, (D[0], D[1], OV_A[0])), GRIPPER, F, OV_W3, OV_L3,
                       near["a3"])
-    E = (OV_W3 * math.cos(a3), OV_W3 * math.sin(a3))
-    Q = (OV_W4 * math.cos(a3 + OV_W4_TURN), OV_W4 * math.sin(a3 + OV_W4_TURN))
-    V = turned2((0, 0), OV_V, a3 - near_a3_drawn())
-    K = (OV_K[0] - OV_F[0], OV_K[1] - OV_F[1])
+    E = v_add(F, (OV_W3 * math.cos(a3), OV_W3 * math.sin(a3)))
+    Q = v_add(F, (OV_W4 * math.cos(a3 + OV_W4_TURN), OV_W4 * math.sin(a3 + OV_W4_TURN)))
+    V = turned2(F, v_add(F, OV_V[:2]), a3 - near_a3_drawn())
+    K = OV_K
     M = circles2(Q, OV_L4, K, OV_W5, near["M"])
     P = v_add(K, v_mul(OV_P / OV_W5, v_sub(M, K)))
     s.update(D=D, E=E, Q=Q, V=V, K=K, M=M, P=P, a3=a3)
@@ -174,7 +176,7 @@ def near_a3_drawn():
     """W3's angle in the drawing (V is placed at OV_V there)."""
     if not _A3_DRAWN:
         D = OV_D
-        _A3_DRAWN.append(rocker_angle(in_plane(MAIN, (D[0], D[1], OV_A[0])), GRIPPER, (0, 0),
+        _A3_DRAWN.append(rocker_angle(in_plane(MAIN, (D[0], D[1], OV_A[0])), GRIPPER, OV_F[:2],
                                       OV_W3, OV_L3, math.pi))
     return _A3_DRAWN[0]
 
@@ -210,7 +212,7 @@ def overedge_machine_file():
         body("needlerock", 3, "rocker", {"H": [0, 0], "B": xyd(s["B"], 0), "C": xyd(s["C"], 0)}),
         body("needlelink", 4, "rocker", {"C": xyd(s["C"], 0), "G": xyd(s["G"], 0)}),
         body("needlearm", 5, "rocker", {"G": xyd(s["G"], 0), "N": xyd(s["N"], 0)}),
-        body("upper", 6, "gripper", {"F": [0, 0], "E": xyd(s["E"], 0), "Q": xyd(s["Q"], low),
+        body("upper", 6, "gripper", {"F": xyd(OV_F, 0), "E": xyd(s["E"], 0), "Q": xyd(s["Q"], low),
                                      "V": xyd(s["V"], OV_V[2])}),
         body("lowerlink", 7, "gripper", {"Q": xyd(s["Q"], low), "M": xyd(s["M"], low)}),
         body("lower", 8, "gripper", {"K": xyd(s["K"], low), "M": xyd(s["M"], low),
@@ -278,12 +280,70 @@ def overedge_machine_numbers():
     low = max(rows, key=lambda r: r[1]["N"][1])
     print(f"  needle point lowest at crank {low[0]} deg, world {tuple(round(c, 3) for c in in_plane(ROCKER, low[1]['N']))}")
     print("  alpha3 (deg):", rng(lambda s: math.degrees(s["a3"])))
-    print("  lower P world x:", rng(lambda s: s["P"][0] + OV_F[0]), "y:", rng(lambda s: s["P"][1] + OV_F[1]))
+    print("  lower P world x:", rng(lambda s: s["P"][0]), "y:", rng(lambda s: s["P"][1]))
     print("  feed T world z:", rng(lambda s: s["T"][0] + OV_A[2]), "y:", rng(lambda s: s["T"][1] + OV_A[1]))
     H1 = (111, 149.5, 88.5)
     d, n = v_sub(H1, OV_H), (0, math.sin(RHO), math.cos(RHO))
     print(f"  H1 off the rho axis: {math.sqrt(v_dot(d, d) - v_dot(d, n) ** 2):.4f} mm; "
           f"its angle {math.degrees(math.atan2(15, 35)):.4f} deg")
+
+
+# ----------------------------------------------------------------------------------------------
+# A lockstitch machine whose hook shaft is driven through a vertical shaft and two bevel pairs
+# (dimensions ours): the arm shaft along x through the origin, the needle bar's central
+# slider-crank in the plane across it at its end (x = 0), as lockstitch-machine's (crank 16
+# drawn straight up, rod 45, the needle point 131 below the rod's pin: from y -160 to -192); the
+# vertical shaft along y at x = 20, z = 0 (it meets both other shafts), geared 1:1 to the arm
+# shaft; the hook shaft along z at (20, -200), geared 2:1 to the vertical shaft, so that the hook
+# turns twice a stitch in the plane z = 0, at right angles to the needle's (x = 0). The hook
+# point is 25 from its axis and crosses the needle's line at the top of the plate's level,
+# (0, -185, 0), at crank 206.57 degrees (26.57 after the needle's lowest), as in
+# lockstitch-machine.
+LB_R, LB_L, LB_NEEDLE, LB_BLADE = 16, 45, 131, 35
+LB_VX, LB_HOOK_Y, LB_HOOK_R = 20, -200, 25
+LB_MEET = math.pi + (math.pi / 2 - math.atan2(9, 12)) / 2  # lockstitch-machine's meeting angle
+# Each angle is about its own plane's normal (the file format's rule): the arm shaft's +x, the
+# vertical shaft's +y, the hook's +z (the hook is in the drawing plane, z = 0).
+LB_NEEDLE_PLANE = {"origin": [0, 0, 0], "x_axis": [0, 0, -1], "y_axis": [0, 1, 0]}
+LB_VERTICAL = {"origin": [LB_VX, 0, 0], "x_axis": [1, 0, 0], "y_axis": [0, 0, -1]}
+LB_RATIO1, LB_RATIO2 = 1, 2
+
+
+def lockstitch_bevel_file():
+    A, B = (0, LB_R), (0, LB_R - LB_L)
+    N, T = (0, B[1] - LB_NEEDLE), (0, B[1] - LB_NEEDLE + LB_BLADE)
+    # The hook point meets the needle's line at (-20, 15) from its axis (3, 4, 5 times 5) when
+    # the crank is at LB_MEET, 2 LB_MEET = 2 pi + pi / 2 - atan(3 / 4) of the hook's turn
+    # earlier: it is drawn straight up from its axis, at (0, 25).
+    k0 = math.atan2(15, -LB_VX) - LB_RATIO1 * LB_RATIO2 * LB_MEET
+    assert abs(math.remainder(k0 - math.pi / 2, 2 * math.pi)) < 1e-12
+    K = (0, LB_HOOK_R)
+    V0 = (12, 0)  # a mark on the vertical shaft, 12 from its axis
+    data = linkage_file(
+        "Lockstitch machine with bevel pairs: arm shaft, vertical shaft, hook shaft 2:1, the "
+        "hook at right angles to the needle",
+        [{"name": "ground", "ground": True, "number": 1,
+          "points": {"O": [0, 0], "V": [LB_VX, -100, 0], "L": [LB_VX, LB_HOOK_Y, -30]},
+          "slots": {"needle": [[0, -20, 0], [0, -170, 0]]}},
+         {"name": "armshaft", "plane": "needle", "number": 2, "points": {"O": [0, 0], "A": list(A)}},
+         {"name": "rod", "plane": "needle", "number": 3, "points": {"A": list(A), "B": list(B)}},
+         {"name": "needlebar", "plane": "needle", "number": 4,
+          "points": {"B": list(B), "N": list(N), "T": list(T)}},
+         {"name": "vshaft", "plane": "vertical", "number": 5,
+          "points": {"V": [0, 0], "M": [V0[0], V0[1], 100]}},
+         {"name": "hook", "number": 6,
+          "points": {"L": [LB_VX, LB_HOOK_Y], "K": [LB_VX + K[0], LB_HOOK_Y + K[1]]}}],
+        [{"type": "pin", "a": "ground.O", "b": "armshaft.O"},
+         {"type": "pin", "a": "armshaft.A", "b": "rod.A"},
+         {"type": "pin", "a": "rod.B", "b": "needlebar.B"},
+         {"type": "slider", "a": "needlebar.B", "slot": "ground.needle"},
+         {"type": "pin", "a": "ground.V", "b": "vshaft.V"},
+         {"type": "gear", "a": "armshaft.O", "b": "vshaft.V", "ratio": LB_RATIO1},
+         {"type": "pin", "a": "ground.L", "b": "hook.L"},
+         {"type": "gear", "a": "vshaft.V", "b": "hook.L", "ratio": LB_RATIO2}],
+        {"joint": 0, "rpm": 1200, "direction": "ccw"},
+        ["needlebar.N", "needlebar.T", "hook.K"])
+    return with_planes(data, {"needle": LB_NEEDLE_PLANE, "vertical": LB_VERTICAL})
 
 
 def main():
@@ -292,6 +352,9 @@ def main():
     write("overedge-machine.linkage.json", overedge_machine_file())
     print("overedge-machine:")
     overedge_machine_numbers()
+    write("lockstitch-bevel.linkage.json", lockstitch_bevel_file())
+    print(f"lockstitch-bevel: hook point meets the needle's line at crank "
+          f"{math.degrees(LB_MEET):.4f} deg")
 
 
 if __name__ == "__main__":
