@@ -311,5 +311,87 @@ TEST(Spatial, ABevelPairOnAMovingCarrierOrOffItsPivotIsRefusedNamingTheJoint) {
             "\"ground\": a gear's centres are its bodies' pivots on the carrier");
 }
 
+// What issue 27 lists and the test above does not: a slider or a pin in a slot across planes,
+// a pin between planes whose normals are opposite, axes off by more than 1e-9 (and by less: read),
+// a ball rod with both ends on the ground.
+TEST(Spatial, MoreBadPlanesAndJointsAreRefusedNamingThePlace) {
+  const std::string rod = R"({"type": "ball-rod", "a": "crank.A", "b": "rocker.C"})";
+  const std::string slot = R"("points": {"O": [0, 0], "A": [)";
+  auto withSlot = [&](const std::string& joint) {
+    std::string text = rssrText();
+    text.replace(text.find(slot), slot.size(), R"("slots": {"s": [[0, 0], [5, 0]]}, )" + slot);
+    text.replace(text.find(rod), rod.size(), joint);
+    const LoadResult r = parseMechanism(text);
+    return r.mechanism ? std::string("(read)") : r.error;
+  };
+  EXPECT_EQ(withSlot(R"({"type": "slider", "a": "rocker.C", "slot": "crank.s"})"),
+            "joints[2].slot: a slider joins bodies of parallel planes only: \"rocker\" moves in "
+            "plane \"rocker\", \"crank\" in \"drawing\" (a ball rod joins any planes)");
+  EXPECT_EQ(withSlot(R"({"type": "pin-in-slot", "a": "rocker.C", "slot": "crank.s"})"),
+            "joints[2].slot: a pin-in-slot joins bodies of parallel planes only: \"rocker\" "
+            "moves in plane \"rocker\", \"crank\" in \"drawing\" (a ball rod joins any planes)");
+  // The rocker's plane turned to face the other way from the drawing's: normal -z.
+  std::string text = rssrText();
+  text.replace(text.find(rod), rod.size(), R"({"type": "pin", "a": "crank.A", "b": "rocker.C"})");
+  for (const auto& [from, to] : {std::pair{R"("x_axis": )" + vec(kX), R"("x_axis": [1, 0, 0])"},
+                                 std::pair{R"("y_axis": )" + vec(kY), R"("y_axis": [0, -1, 0])"}})
+    text.replace(text.find(from), from.size(), to);
+  LoadResult r = parseMechanism(text);
+  EXPECT_FALSE(r.mechanism);
+  EXPECT_EQ(r.error,
+            "joints[2].b: a pin joins bodies of parallel planes only: \"crank\" moves in plane "
+            "\"drawing\", \"rocker\" in \"rocker\" (a ball rod joins any planes)");
+  // The axes to 1e-9: y not unit, y not perpendicular to x; off by 1e-11, read.
+  EXPECT_EQ(refused(R"("y_axis": )" + vec(kY), R"("y_axis": )" + vec(kY * (1 + 2e-9))),
+            "planes.rocker.y_axis: not a unit vector (to 1e-9)");
+  EXPECT_EQ(refused(R"("y_axis": )" + vec(kY), R"("y_axis": )" + vec(kY + 2e-9 * kX)),
+            "planes.rocker.y_axis: not perpendicular to x_axis (to 1e-9)");
+  EXPECT_EQ(refused(R"("y_axis": )" + vec(kY), R"("y_axis": )" + vec(kY * (1 + 1e-11))), "(read)");
+  EXPECT_EQ(refused(R"("y_axis": )" + vec(kY), R"("y_axis": )" + vec(kY + 1e-11 * kX)), "(read)");
+  EXPECT_EQ(refused(rod, R"({"type": "ball-rod", "a": "ground.O", "b": "ground.H"})"),
+            "joints[2]: both sides are on body \"ground\"");
+}
+
+// A block in a plane across the drawing's, in a slot of the ground: the slot must lie in a
+// direction of the block's plane. Ends written [x, y] are in the drawing plane (z = 0); they were
+// not checked, so a slot across the block's plane was read, and the block solved on the slot's
+// shadow. Here the block's plane is x = 0 (normal +x), the slot along y: read; turned a little
+// towards x, with two numbers or three, refused; an arc slot whose middle leaves the plane too.
+TEST(Spatial, AGroundSlotMustLieInItsBlocksPlaneWrittenInTwoNumbersOrThree) {
+  auto file = [](const std::string& slot) {
+    return R"({"format": "linkage", "version": 1, "name": "block across",
+  "planes": {"side": {"origin": [0, 0, 0], "x_axis": [0, 0, -1], "y_axis": [0, 1, 0]}},
+  "bodies": [
+    {"name": "ground", "ground": true, "points": {"O": [0, 0]}, "slots": {"g": )" +
+           slot + R"(}},
+    {"name": "crank", "plane": "side", "points": {"O": [0, 0], "A": [0, 10]}},
+    {"name": "rod", "plane": "side", "points": {"A": [0, 10], "B": [0, -30]}},
+    {"name": "block", "plane": "side", "points": {"B": [0, -30]}}
+  ],
+  "joints": [
+    {"type": "pin", "a": "ground.O", "b": "crank.O"},
+    {"type": "pin", "a": "crank.A", "b": "rod.A"},
+    {"type": "pin", "a": "rod.B", "b": "block.B"},
+    {"type": "slider", "a": "block.B", "slot": "ground.g"}
+  ],
+  "driver": {"joint": 0, "rpm": 60, "direction": "ccw"}
+})";
+  };
+  auto error = [&](const std::string& slot) {
+    const LoadResult r = parseMechanism(file(slot));
+    return r.mechanism ? std::string("(read)") : r.error;
+  };
+  const std::string why =
+      "joints[3].slot: the ground's slot ground.g is not parallel to plane \"side\" of its "
+      "block (to 1e-9)";
+  EXPECT_EQ(error("[[0, -20], [0, -50]]"), "(read)");
+  EXPECT_EQ(error("[[0, -20, 5], [0, -50, 5]]"), "(read)");
+  EXPECT_EQ(error("[[0, -20], [1, -50]]"), why);
+  EXPECT_EQ(error("[[0, -20, 0], [1, -50, 0]]"), why);
+  EXPECT_EQ(error("[[0, -20, 0], [0, -50, 1e-6]]"), "(read)");       // along z: in the plane
+  EXPECT_EQ(error("[[0, -20], [1, -35], [0, -50]]"), why);           // an arc leaving it midway
+  EXPECT_NE(error("[[0, -20, 0], [0, -35, 5], [0, -50, 0]]"), why);  // an arc in it
+}
+
 }  // namespace
 }  // namespace linkage
