@@ -196,5 +196,59 @@ TEST(Seed004, ExamplesReadAndSaveByteForByte) {
   }
 }
 
+// The paper's own way to the rates: Lagrange polynomials fitted to sampled positions, then
+// differentiated. As central 5- and 7-point Lagrange derivatives of U sampled from the solver N
+// times a turn, against the paper's exact U' and U'' (the equations above, no solver rate): their
+// errors are the fits', falling as h^4 and h^6 (16 and 64 times from 36 to 72 samples), and at
+// 36 samples about 1e-4 and 5e-6 of the peaks, where the solver's are 1e-9 at most (the test
+// above). docs/seed004.md gives the numbers (scripts/seed004-compare.py).
+struct FitErrors {
+  double v5 = 0, a5 = 0, v7 = 0, a7 = 0;
+};
+
+FitErrors lagrangeErrors(int n) {
+  const Mechanism m = test::example("overedge-machine");
+  Kinematics k;
+  EXPECT_TRUE(k.load(m).ok());
+  const PointId G = *m.findPoint("needlearm.G");
+  const Vec3 H(kXH, kYH, kZH), u(0, -std::cos(kRho), std::sin(kRho));
+  const std::vector<NeedleArm> e = paperTurn(n);
+  std::vector<double> y(n);
+  for (int i = 0; i < n; ++i) {
+    EXPECT_TRUE(k.moveTo(360.0 * i / n).ok());
+    y[i] = (k.motionInSpace(G).position - H).dot(u);
+  }
+  static const double d5[] = {1, -8, 0, 8, -1}, s5[] = {-1, 16, -30, 16, -1};
+  static const double d7[] = {-1, 9, -45, 0, 45, -9, 1}, s7[] = {2, -27, 270, -490, 270, -27, 2};
+  const double h = 2 * M_PI / n;  // radians of crank between samples: rates by phi1
+  double pv = 0, pa = 0;
+  for (int i = 0; i < n; ++i)
+    pv = std::max(pv, std::abs(e[i].u1)), pa = std::max(pa, std::abs(e[i].u2));
+  FitErrors f;
+  for (int i = 0; i < n; ++i) {
+    double s[4] = {0, 0, 0, 0};
+    for (int j = -3; j <= 3; ++j) {
+      const double yj = y[(i + j + n) % n];
+      if (std::abs(j) <= 2) s[0] += d5[j + 2] * yj, s[1] += s5[j + 2] * yj;
+      s[2] += d7[j + 3] * yj, s[3] += s7[j + 3] * yj;
+    }
+    f.v5 = std::max(f.v5, std::abs(s[0] / (12 * h) - e[i].u1) / pv);
+    f.a5 = std::max(f.a5, std::abs(s[1] / (12 * h * h) - e[i].u2) / pa);
+    f.v7 = std::max(f.v7, std::abs(s[2] / (60 * h) - e[i].u1) / pv);
+    f.a7 = std::max(f.a7, std::abs(s[3] / (180 * h * h) - e[i].u2) / pa);
+  }
+  return f;
+}
+
+TEST(Seed004, ThePapersLagrangeFitsErrAsTheirOrderWhereTheExactRatesDoNot) {
+  const FitErrors e36 = lagrangeErrors(36), e72 = lagrangeErrors(72);
+  EXPECT_NEAR(e36.v5 / e72.v5, 16, 4);
+  EXPECT_NEAR(e36.a5 / e72.a5, 16, 4);
+  EXPECT_NEAR(e36.v7 / e72.v7, 64, 16);
+  EXPECT_NEAR(e36.a7 / e72.a7, 64, 16);
+  EXPECT_NEAR(e36.v5, 8.1e-5, 0.1e-5);  // as docs/seed004.md has them
+  EXPECT_NEAR(e36.a7, 5.2e-6, 0.1e-6);
+}
+
 }  // namespace
 }  // namespace linkage
