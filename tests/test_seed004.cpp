@@ -25,8 +25,10 @@
 #include <string>
 
 #include "examples.h"
+#include "linkage/grashof.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
+#include "linkage/slot_travel.h"
 #include "linkage/space.h"
 
 namespace linkage {
@@ -248,6 +250,46 @@ TEST(Seed004, ThePapersLagrangeFitsErrAsTheirOrderWhereTheExactRatesDoNot) {
   EXPECT_NEAR(e36.a7 / e72.a7, 64, 16);
   EXPECT_NEAR(e36.v5, 8.1e-5, 0.1e-5);  // as docs/seed004.md has them
   EXPECT_NEAR(e36.a7, 5.2e-6, 0.1e-6);
+}
+
+// The analyses that measure along a slot or between pivots take a machine's ground points in the
+// plane of the joint, as the solver does: the needle arm's travel along its slot u (written in
+// the world) is the paper's U, from its smallest to its largest (the roots of eq. 2a's U'); the
+// transport's first loop has the frame |B| in the main shaft's plane, 53.23 mm (read in the
+// drawing plane, the slot was 107 to 129 mm along and the frame 64.26: the block "left its slot").
+TEST(Seed004, SlotTravelAndFourBarFramesAreTakenInTheJointsPlane) {
+  const Mechanism m = test::example("overedge-machine");
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const SlotTravels t = slotTravel(k);
+  ASSERT_TRUE(t.status.ok()) << t.status.message;
+  ASSERT_EQ(t.joints.size(), 1u);
+  double lo = 1e9, hi = -1e9;
+  const std::vector<NeedleArm> e = paperTurn(3600);
+  for (size_t i = 0; i + 1 < e.size(); ++i) {
+    if ((e[i].u1 > 0) == (e[i + 1].u1 > 0)) continue;
+    // U at the root of U' between the two samples: Newton on U' from the nearer one.
+    NeedleArm n = e[i];
+    double phi = 2 * M_PI * i / 3600;
+    for (int it = 0; it < 20; ++it) {
+      phi -= n.u1 / n.u2;
+      n = paper(phi, n.x);
+    }
+    lo = std::min(lo, n.u), hi = std::max(hi, n.u);
+  }
+  EXPECT_NEAR(t.joints[0].min, lo, 1e-9);
+  EXPECT_NEAR(t.joints[0].max, hi, 1e-9);
+  EXPECT_NEAR(t.joints[0].slotTo, 40, 1e-12);
+  EXPECT_TRUE(t.joints[0].inside);
+  EXPECT_TRUE(t.allInside());
+  const std::vector<FourBarLoop> loops = fourBarLoops(m);
+  const BodyId feedrod = m.bodyNamed("feedrod")->id;
+  const auto loop = std::find_if(loops.begin(), loops.end(), [&](const FourBarLoop& l) {
+    return std::count(l.bodies.begin(), l.bodies.end(), feedrod) > 0;
+  });
+  ASSERT_NE(loop, loops.end());
+  EXPECT_NEAR(loop->lengths[0], std::hypot(48.0, 23.0), 1e-12);
+  EXPECT_EQ(loop->kind, GrashofClass::CrankRocker);
 }
 
 }  // namespace

@@ -152,4 +152,27 @@ PlaneClasses planeClasses(const Mechanism& m) {
   return c;
 }
 
+Slot slotInClass(const Mechanism& m, const PlaneClasses& classes, const Slot& s, int k) {
+  Slot c = s;
+  c.z.clear();
+  const Body* owner = m.body(s.body);
+  std::vector<Vec2*> ends{&c.p0, &c.p1};
+  if (c.mid) ends.insert(ends.begin() + 1, &*c.mid);
+  for (size_t e = 0; e < ends.size(); ++e) {
+    if (owner && !owner->ground) {
+      *ends[e] = classes.of(owner->plane).toClass(*ends[e]);
+    } else {
+      const double z = e < s.z.size() ? s.z[e] : 0.0;
+      *ends[e] = classes.project(k, Vec3(ends[e]->x(), ends[e]->y(), z));
+    }
+  }
+  return c;
+}
+
+int jointClass(const Mechanism& m, const PlaneClasses& classes, const Point& a, const Slot& s) {
+  const Body* body = m.body(a.body);
+  if (!body || body->ground) body = m.body(s.body);
+  return body && !body->ground ? classes.of(body->plane).cls : 0;
+}
+
 }  // namespace linkage

@@ -64,4 +64,12 @@ struct PlaneClasses {
 };
 PlaneClasses planeClasses(const Mechanism& m);
 
+// A slot as class k's frame holds it, as the solver sees it: a moving body's ends mapped from
+// its plane, the ground's projected along the class's normal; no z. Analyses that measure along
+// a slot take it so.
+Slot slotInClass(const Mechanism& m, const PlaneClasses& classes, const Slot& s, int k);
+// The class of the plane a joint with this point and slot is written in: the point's body's,
+// or the slot's body's when the point is on the ground.
+int jointClass(const Mechanism& m, const PlaneClasses& classes, const Point& a, const Slot& s);
+
 }  // namespace linkage
