@@ -7,6 +7,7 @@
 
 #include "linkage/elements.h"
 #include "linkage/groups.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -52,14 +53,24 @@ struct Pin {
   BodyId other(BodyId body) const { return body == a ? b : a; }
 };
 
+// In space a pin joins bodies of parallel planes, and the ground's point of it is taken in the
+// other body's class frame (projected along its normal), as the solver takes it: a loop's frame
+// is then the distance of its pivots in the loop's plane, not in the drawing plane.
 std::vector<Pin> pins(const Mechanism& m) {
   std::vector<Pin> out;
+  const bool spatial = isSpatial(m);
+  const PlaneClasses classes = spatial ? planeClasses(m) : PlaneClasses{};
+  auto drawn = [&](const Point& p, const Point& other) {
+    const Body *on = m.body(p.body), *by = m.body(other.body);
+    if (!spatial || !on || !on->ground || !by || by->ground) return p.pos;
+    return classes.project(classes.of(by->plane).cls, worldOf(m, p));
+  };
   for (size_t i = 0; i < m.joints.size(); ++i) {
     const Joint& j = m.joints[i];
     if (kindOf(j).role != Role::Revolute) continue;
     const Point *a = m.point(j.a), *b = m.point(j.b);
     if (!a || !b || a->body == b->body) continue;
-    out.push_back({j.id, static_cast<int>(i), a->body, b->body, a->pos, b->pos});
+    out.push_back({j.id, static_cast<int>(i), a->body, b->body, drawn(*a, *b), drawn(*b, *a)});
   }
   return out;
 }

@@ -8,6 +8,7 @@
 
 #include "analysis/slot_frame.h"
 #include "linkage/elements.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -23,14 +24,21 @@ struct Candidate {
   BodyId slotBody;
 };
 
+// In space each slot is measured in the frame its block moves in (the solver's positions are
+// in it): a ground slot written in the world is projected there, not read in the drawing plane.
 std::vector<Candidate> slotJoints(const Mechanism& m) {
   std::vector<Candidate> out;
+  const bool spatial = isSpatial(m);
+  const PlaneClasses classes = spatial ? planeClasses(m) : PlaneClasses{};
   for (const Joint& j : m.joints) {
     const Role role = kindOf(j).role;
     if (role != Role::Prismatic && role != Role::PointOnCurve) continue;
     const Slot* s = m.slot(j.slot);
-    if (!s) continue;
-    if (std::optional<Guide> g = guideOf(*s)) out.push_back({&j, *g, s->body});
+    const Point* a = m.point(j.a);
+    if (!s || !a) continue;
+    const Slot inFrame =
+        spatial ? inClassFrame(m, classes, *s, jointClass(m, classes, *a, *s)) : *s;
+    if (std::optional<Guide> g = guideOf(inFrame)) out.push_back({&j, *g, s->body});
   }
   return out;
 }

@@ -154,6 +154,23 @@ std::string planeLabel(const Mechanism& m, BodyId b) {
   return body && !body->ground && !body->plane.empty() ? body->plane : "drawing";
 }
 
+// Whether a ground slot lies parallel to a plane of normal n: each of its written ends (an arc's
+// middle too) seen from its first along a direction within 1e-9 of the plane. Ends written
+// [x, y] are in the drawing plane, z = 0, which a block in a plane across it does not run along.
+bool groundSlotParallel(const Slot& s, const Vec3& n) {
+  std::vector<Vec2> at{s.p0};
+  if (s.mid) at.push_back(*s.mid);
+  at.push_back(s.p1);
+  auto end = [&](size_t i) {
+    return Vec3(at[i].x(), at[i].y(), s.z.size() == at.size() ? s.z[i] : 0.0);
+  };
+  for (size_t i = 1; i < at.size(); ++i) {
+    const Vec3 d = end(i) - end(0);
+    if (d.norm() > 0 && std::abs(d.normalized().dot(n)) > 1e-9) return false;
+  }
+  return true;
+}
+
 // A kind of parallel planes: the bodies it joins are of parallel planes, the ground's slot
 // parallel to them; "" when they are, else why, with the key of the field at fault.
 std::string planesOf(const Mechanism& m, const Joint& j, const char*& where) {
@@ -178,13 +195,10 @@ std::string planesOf(const Mechanism& m, const Joint& j, const char*& where) {
            m.body(b)->name + "\" in \"" + planeLabel(m, b) + "\" (a ball rod joins any planes)";
   }
   const Slot* s = k.reads(FieldType::Slot) ? m.slot(j.slot) : nullptr;
-  if (s && !s->z.empty()) {
-    const Vec3 d = Vec3(s->p1.x(), s->p1.y(), s->z.back()) - Vec3(s->p0.x(), s->p0.y(), s->z[0]);
-    if (std::abs(d.normalized().dot(plane.normal())) > 1e-9) {
-      where = "slot";
-      return "the ground's slot " + m.slotLabel(s->id) + " is not parallel to plane \"" +
-             planeLabel(m, first) + "\" of its block (to 1e-9)";
-    }
+  if (s && m.body(s->body)->ground && !groundSlotParallel(*s, plane.normal())) {
+    where = "slot";
+    return "the ground's slot " + m.slotLabel(s->id) + " is not parallel to plane \"" +
+           planeLabel(m, first) + "\" of its block (to 1e-9)";
   }
   return {};
 }

@@ -185,4 +185,10 @@ Mechanism flattenedTo(const Mechanism& m, const PlaneClasses& pc, int cls) {
   return f;
 }
 
+int jointClass(const Mechanism& m, const PlaneClasses& classes, const Point& a, const Slot& s) {
+  const Body* body = m.body(a.body);
+  if (!body || body->ground) body = m.body(s.body);
+  return body && !body->ground ? classes.of(body->plane).cls : 0;
+}
+
 }  // namespace linkage

@@ -74,5 +74,8 @@ Slot inClassFrame(const Mechanism& m, const PlaneClasses& pc, const Slot& s, int
 // every body in the drawing plane. What works on planar positions (a joint's instant centre)
 // works on it for the joints of that class.
 Mechanism flattenedTo(const Mechanism& m, const PlaneClasses& pc, int cls);
+// The class of the plane a joint with this point and slot is written in: the point's body's,
+// or the slot's body's when the point is on the ground.
+int jointClass(const Mechanism& m, const PlaneClasses& classes, const Point& a, const Slot& s);
 
 }  // namespace linkage

@@ -1,0 +1,121 @@
+// Spatial machines' bad input as a user or a script meets it (issue 27): linkage-cli refuses the
+// file with exit status 2 and one line naming the place (`joints[5].slot: ...`,
+// `planes.rocker.y_axis: ...`), and writes nothing on standard output: nothing half-loaded.
+// Each file is an example (overedge-machine, lockstitch-bevel) with one thing wrong.
+#ifdef LINKAGE_CLI
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli_harness.h"
+
+namespace linkage {
+namespace {
+
+using test::CliResult;
+
+class SpatialCli : public test::CliTest {
+ protected:
+  using Edits = std::vector<std::pair<std::string, std::string>>;
+  // The example's text with each `from` (which must be there, once) replaced by its `to`, saved.
+  std::string variant(const std::string& example, const Edits& edits) {
+    std::string text =
+        test::slurp(std::string(LINKAGE_EXAMPLES_DIR) + "/" + example + ".linkage.json");
+    for (const auto& [from, to] : edits) {
+      const size_t at = text.find(from);
+      EXPECT_NE(at, std::string::npos) << from;
+      EXPECT_EQ(text.find(from, at + 1), std::string::npos) << from;
+      if (at != std::string::npos) text.replace(at, from.size(), to);
+    }
+    return writeFile("bad.linkage.json", text);
+  }
+  // Each command refuses the file alike.
+  void expectRefused(const std::string& path, const std::string& why) {
+    for (const char* command : {"analyze", "info"}) {
+      const CliResult r = run(std::string(command) + " '" + path + "'");
+      EXPECT_EQ(r.exit, 2) << command << ": " << r.err;
+      EXPECT_EQ(r.err, "linkage-cli: " + path + ": " + why + "\n") << command;
+      EXPECT_EQ(r.out, "") << command;
+    }
+  }
+};
+
+TEST_F(SpatialCli, TheExamplesAreRead) {
+  for (const char* name : {"overedge-machine", "lockstitch-bevel"}) {
+    const CliResult r = run(std::string("analyze ") + name + " --steps 4");
+    EXPECT_EQ(r.exit, 0) << name << ": " << r.err;
+    EXPECT_EQ(r.lines().size(), 6u) << name;
+    EXPECT_EQ(r.err, "") << name;
+  }
+}
+
+TEST_F(SpatialCli, APinOrASliderAcrossPlanesIsRefusedNamingTheJoint) {
+  expectRefused(variant("overedge-machine", {{R"("type": "ball-rod",
+      "a": "main.A1")",
+                                              R"("type": "pin",
+      "a": "main.A1")"}}),
+                "joints[2].b: a pin joins bodies of parallel planes only: \"main\" moves in "
+                "plane \"main\", \"needlerock\" in \"rocker\" (a ball rod joins any planes)");
+  // The needle bar's block in a slot of the vertical shaft, whose plane is across the needle's.
+  expectRefused(
+      variant("lockstitch-bevel", {{R"("plane": "vertical",
+      "number": 5,)",
+                                    R"("plane": "vertical",
+      "number": 5,
+      "slots": {"s": [[0, 0], [10, 0]]},)"},
+                                   {R"("slot": "ground.needle")", R"("slot": "vshaft.s")"}}),
+      "joints[3].slot: a slider joins bodies of parallel planes only: \"needlebar\" "
+      "moves in plane \"needle\", \"vshaft\" in \"vertical\" (a ball rod joins any "
+      "planes)");
+}
+
+TEST_F(SpatialCli, AGroundSlotAcrossItsBlocksPlaneIsRefusedNamingIt) {
+  const std::string why =
+      "joints[3].slot: the ground's slot ground.needle is not parallel to "
+      "plane \"needle\" of its block (to 1e-9)";
+  expectRefused(
+      variant("lockstitch-bevel", {{"[[0, -20, 0], [0, -170, 0]]", "[[0, -20], [10, -170]]"}}),
+      why);
+  expectRefused(variant("lockstitch-bevel",
+                        {{"[[0, -20, 0], [0, -170, 0]]", "[[0, -20, 0], [1e-6, -170, 0]]"}}),
+                why);
+  expectRefused(variant("overedge-machine", {{"[70, 97.6798058619024, 69.12924513957095]",
+                                              "[70, 97.6798058619024, 69.1300]"}}),
+                "joints[5].slot: the ground's slot ground.u is not parallel to plane \"rocker\" of "
+                "its block (to 1e-9)");
+}
+
+TEST_F(SpatialCli, BadAxesAnUnknownPlaneAndBadRodsAreRefusedNamingThePlace) {
+  expectRefused(variant("overedge-machine", {{"0.39073112848927377]", "0.390731138]"}}),
+                "planes.rocker.y_axis: not a unit vector (to 1e-9)");
+  expectRefused(variant("overedge-machine", {{R"("x_axis": [1, 0, 0],
+      "y_axis": [0, -0.92)",
+                                              R"("x_axis": [1, 0, 5e-9],
+      "y_axis": [0, -0.92)"}}),
+                "planes.rocker.y_axis: not perpendicular to x_axis (to 1e-9)");
+  expectRefused(variant("overedge-machine", {{R"("name": "needlelink",
+      "plane": "rocker")",
+                                              R"("name": "needlelink",
+      "plane": "rocket")"}}),
+                "bodies[3].plane: no plane \"rocket\"");
+  expectRefused(variant("overedge-machine", {{R"("b": "upper.E")", R"("b": "main.A1")"}}),
+                "joints[7]: both sides are on body \"main\"");
+  // The upper gripper's rod from the crank pin D to a point drawn on it: no length.
+  expectRefused(variant("overedge-machine", {{R"("V": [70, 105, -14])", R"("V": [70, 105, -14],
+        "Z": [0, 65, 6])"},
+                                             {R"("b": "upper.E")", R"("b": "upper.Z")"}}),
+                "joints[7].b: the ends are closer than 1e-9 mm: a rod of no length keeps nothing");
+  expectRefused(variant("lockstitch-bevel", {{R"("b": "hook.L",
+      "ratio": 2)",
+                                              R"("b": "hook.L",
+      "ratio": 2,
+      "carrier": "rod")"}}),
+                "joints[7].carrier: a bevel pair (bodies of planes that are not parallel) turns "
+                "about the ground only, and a carrier joins bodies of its own plane");
+}
+
+}  // namespace
+}  // namespace linkage
+#endif
