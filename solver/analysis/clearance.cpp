@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "analysis/slot_frame.h"
+#include "analysis/space_distance.h"
 #include "linkage/guide.h"
 #include "linkage/timing_text.h"
 
@@ -66,11 +67,32 @@ std::optional<Guide> curveOf(const Mechanism& m, const ClearancePart& b, BodyId&
   return guideOf(line, why);
 }
 
+// In space the distance in the world alone: the point and the part need not share a plane, so
+// a part's line is nothing the point crosses. A slot is not measured there yet.
+Quantities spaceQuantities(const Mechanism& m, const ClearancePart& a, const ClearancePart& b,
+                           Status& why) {
+  const PointId p = a.point;
+  if (b.isSlot()) {
+    why = Status::badModel("the clearance to " + m.partDescription(b) +
+                           " of a machine in space is not measured yet: give a segment between "
+                           "two points of its body");
+    return {};
+  }
+  if (b.isPoint())
+    return {[p, q = b.point](const Kinematics& at) { return spaceDistance(at, p, q); }, {}, {}};
+  return {[p, s = b.point, e = b.end](const Kinematics& at) {
+            return spaceDistanceToSegment(at, p, s, e);
+          },
+          {},
+          {}};
+}
+
 // With the point first (a), the other part second (b).
 Quantities quantitiesOf(const Kinematics& k, const ClearancePart& a, const ClearancePart& b,
                         Status& why) {
   if (why = check(k, a, b); !why.ok()) return {};
   const Mechanism& m = k.mechanism();
+  if (isSpatial(m)) return spaceQuantities(m, a, b, why);
   const PointId p = a.point;
   if (b.isPoint()) {
     const PointId q = b.point;
@@ -101,11 +123,30 @@ Quantities quantitiesOf(const Kinematics& k, const ClearancePart& a, const Clear
           g->length()};
 }
 
+// In space: in the world, and in each part's plane class frame (what the canvas draws).
+void placeClosestInSpace(const Kinematics& at, const ClearancePart& a, const ClearancePart& b,
+                         Clearance& out) {
+  out.closestPoint3 = at.motionInSpace(a.point).position;
+  out.closestPoint = at.position(a.point);
+  if (b.isPoint()) {
+    out.closestOther3 = at.motionInSpace(b.point).position;
+    out.closestOther = at.position(b.point);
+    return;
+  }
+  spaceDistanceToSegment(at, a.point, b.point, b.end, &out.closestOther3);
+  const Vec3 A = at.motionInSpace(b.point).position, u = at.motionInSpace(b.end).position - A;
+  const double t = std::clamp((out.closestOther3 - A).dot(u) / u.squaredNorm(), 0.0, 1.0);
+  const Vec2 p0 = at.position(b.point), p1 = at.position(b.end);
+  out.closestOther = p0 + t * (p1 - p0);
+  out.closestPart = {p0, p1};
+}
+
 // Where the two things are at the crank angle `deg` (from 0, as the sweep went).
 void placeClosest(const Kinematics& k, const ClearancePart& a, const ClearancePart& b, double deg,
                   Clearance& out) {
   Kinematics at = k;
   if (!at.moveTo(0).ok() || !at.moveTo(deg).ok()) return;  // the sweep went there already
+  if (isSpatial(k.mechanism())) return placeClosestInSpace(at, a, b, out);
   out.closestPoint = at.position(a.point);
   if (b.isPoint()) {
     out.closestOther = at.position(b.point);
@@ -217,6 +258,11 @@ void runAlong(const CycleTrack& along, double length, Clearance& out) {
 double clearanceAt(const Kinematics& k, const ClearancePart& a0, const ClearancePart& b0) {
   ClearancePart a, b;
   if (!pointFirst(a0, b0, a, b) || !k.valid() || !check(k, a, b).ok()) return NAN;
+  if (isSpatial(k.mechanism())) {
+    if (b.isSlot()) return NAN;
+    return b.isPoint() ? spaceDistance(k, a.point, b.point).value
+                       : spaceDistanceToSegment(k, a.point, b.point, b.end).value;
+  }
   const Vec2 p = k.position(a.point);
   if (b.isPoint()) return (p - k.position(b.point)).norm();
   BodyId body;
@@ -248,10 +294,6 @@ Clearance findClearance(const Kinematics& k, const ClearancePart& a0, const Clea
   Clearance out;
   if (!k.valid()) {
     out.status = Status::badModel("no mechanism is loaded");
-    return out;
-  }
-  if (std::string why = notInSpaceYet(k.mechanism(), "clearances"); !why.empty()) {
-    out.status = Status::badModel(why);
     return out;
   }
   ClearancePart a, b;

@@ -25,11 +25,21 @@ CycleReading alongGuide(const Guide& g, const RelativeMotion& m) {
   return {g.along(m.r), k * w, k * dw};
 }
 
-CycleReading lengthOf(const Vec2& d, const Vec2& dd, const Vec2& ddd) {
+namespace {
+template <class V>
+CycleReading lengthOfAny(const V& d, const V& dd, const V& ddd) {
   const double n = d.norm();
   if (n == 0) return {0, 0, 0};  // the two meet: a minimum of 0, where |d| has no derivative
   const double d1 = d.dot(dd) / n;
   return {n, d1, (dd.squaredNorm() + d.dot(ddd) - d1 * d1) / n};
+}
+}  // namespace
+
+CycleReading lengthOf(const Vec2& d, const Vec2& dd, const Vec2& ddd) {
+  return lengthOfAny(d, dd, ddd);
+}
+CycleReading lengthInSpace(const Vec3& d, const Vec3& dd, const Vec3& ddd) {
+  return lengthOfAny(d, dd, ddd);
 }
 
 CycleReading offGuide(const Guide& g, const RelativeMotion& m) {

@@ -26,5 +26,6 @@ CycleReading offDrawnSlot(const Guide& g, const RelativeMotion& m);
 
 // The length |d| of a vector with its derivatives d', d'' (per degree), and |d|', |d|''.
 CycleReading lengthOf(const Vec2& d, const Vec2& dd, const Vec2& ddd);
+CycleReading lengthInSpace(const Vec3& d, const Vec3& dd, const Vec3& ddd);
 
 }  // namespace linkage

@@ -5,6 +5,10 @@
 // end. Every local minimum, the closest approach, and where the point crosses the segment's or
 // slot's line or circle (on the part itself: the two meet).
 //
+// A machine in space: the distance in the world, between points of any planes, or from a
+// point to a segment (a slot there is refused); no crossings (the point need not be in the
+// segment's plane).
+//
 // The distance and its first two derivatives with respect to the crank angle are exact at each
 // pose (from the solved velocities and accelerations; for a slot, the point's motion relative
 // to the slot's body). Every local minimum is a root of the distance's derivative, rising (where
@@ -61,6 +65,9 @@ struct Clearance {
   // two ends, or points along an arc; empty for a point. The pose shown is seldom that one: a
   // figure draws the part where the point comes closest to it.
   std::vector<Vec2> closestPart;
+  // A machine in space (linkage/space.h): the two at the closest approach in the world (mm);
+  // the 2D ones above are then each in its own plane class's frame.
+  Vec3 closestPoint3 = Vec3::Zero(), closestOther3 = Vec3::Zero();
 };
 
 struct ClearanceOptions {

@@ -1,0 +1,26 @@
+// Distances in space between moving parts of a machine whose bodies move in planes placed in
+// space (linkage/space.h), with their first two derivatives per degree of crank, exact: from
+// the points' motion in the world (Kinematics::motionInSpace), never from differences. What
+// clearances and timing windows follow on such a machine, whatever planes the parts are in.
+#pragma once
+
+#include "analysis/cycle_sweep.h"
+
+namespace linkage {
+
+// A point's world position and its derivatives per degree of crank.
+struct SpaceMotion {
+  Vec3 r, dr, ddr;
+};
+SpaceMotion spaceMotion(const Kinematics& k, PointId p);
+
+// |p - q|.
+CycleReading spaceDistance(const Kinematics& k, PointId p, PointId q);
+
+// From p to the segment a-b (two points of one body: a needle's blade): from its line beside
+// it, from the nearer end beyond its ends (never negative; |d|' jumps where the two meet).
+// `nearest`, when given: the segment's point nearest p (world).
+CycleReading spaceDistanceToSegment(const Kinematics& k, PointId p, PointId a, PointId b,
+                                    Vec3* nearest = nullptr);
+
+}  // namespace linkage
