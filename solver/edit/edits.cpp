@@ -5,6 +5,7 @@
 
 #include "linkage/elements.h"
 #include "linkage/guide.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -71,9 +72,14 @@ std::string newSlotName(const Mechanism& m, BodyId body) {
   }
 }
 
-BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::string* why) {
+BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::string* why,
+               const std::string& plane) {
   if (vertices.size() < 2) {
     fail(why, "a link needs two points at least");
+    return {};
+  }
+  if (!planeNamed(m, plane)) {
+    fail(why, "there is no plane \"" + plane + "\" to draw the link in");
     return {};
   }
   for (const LinkVertex& v : vertices)
@@ -82,6 +88,8 @@ BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::strin
       return {};
     }
   const BodyId b = m.addBody(newBodyName(m));
+  // The drawing plane is written as no plane at all: a planar file stays as it was.
+  if (!plane.empty() && plane != "drawing") m.body(b)->plane = plane;
   for (const LinkVertex& v : vertices) {
     if (v.pinTo) {
       const Point target = *m.point(v.pinTo);
@@ -96,13 +104,17 @@ BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::strin
   return b;
 }
 
-PointId addGroundPoint(Mechanism& m, const Vec2& at, PointId point) {
+PointId addGroundPoint(Mechanism& m, const Vec2& at, PointId point, const std::string& plane) {
   const Body* g = m.ground();
-  if (!g) return {};
+  const Plane* pl = planeNamed(m, plane);
+  if (!g || !pl) return {};
   const BodyId ground = g->id;
   std::string name = newPointName(m, ground);
   if (const Point* p = m.point(point); p && pointNameFree(m, ground, p->name)) name = p->name;
-  const PointId gp = m.addPoint(ground, name, at);
+  const bool drawing = plane.empty() || plane == "drawing";
+  const Vec3 w = pl->world(at);
+  const PointId gp = m.addPoint(ground, name, drawing ? at : Vec2(w.x(), w.y()));
+  if (!drawing) m.point(gp)->third = w.z();
   if (point) m.addPin(gp, point);
   return gp;
 }
@@ -197,6 +209,8 @@ BodyId addBlock(Mechanism& m, PointId point, SlotId slot, const Vec2& at, std::s
   if (!pointAndSlot(m, point, slot, why)) return {};
   const std::string name = m.point(point)->name;
   const BodyId block = m.addBody(newBodyName(m, "block"));
+  const Body* guide = m.body(m.slot(slot)->body);
+  m.body(block)->plane = guide->ground ? m.body(m.point(point)->body)->plane : guide->plane;
   const PointId bp = m.addPoint(block, name, at);
   m.addPin(point, bp);
   m.addSlider(bp, slot);

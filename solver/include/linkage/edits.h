@@ -28,16 +28,22 @@ struct LinkVertex {
   Vec2 at = Vec2::Zero();
   PointId pinTo;
 };
-BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::string* why = nullptr);
+// In a machine in space, `plane` names the plane it moves in ("": the drawing plane), and the
+// vertices are in that plane's coordinates; refused with `why` for a plane the machine has not.
+BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::string* why = nullptr,
+               const std::string& plane = {});
 
 // A ground point at `at`, pinned to `point` when one is given (a ground pivot; `at` is where
-// the point is now).
-PointId addGroundPoint(Mechanism& m, const Vec2& at, PointId point = {});
+// the point is now). `at` in the coordinates of `plane` ("": the drawing plane): off the drawing
+// plane the ground point is written in the world, [x, y, z]. None for an unknown plane.
+PointId addGroundPoint(Mechanism& m, const Vec2& at, PointId point = {},
+                       const std::string& plane = {});
 // A point added to a body (a bar becomes a plate).
 PointId addBodyPoint(Mechanism& m, BodyId body, const Vec2& at);
 SlotId addBodySlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& p1);
 // A slider block at `point` (drawn at `at`, where the point is now) sliding in `slot`: a body
-// of its own with its point pinned to `point` and a slider joint in the slot.
+// of its own with its point pinned to `point` and a slider joint in the slot, in the plane of
+// the slot's body (of the point's, for a ground slot): a slider joins bodies of one plane.
 BodyId addBlock(Mechanism& m, PointId point, SlotId slot, const Vec2& at,
                 std::string* why = nullptr);
 JointId addPinInSlot(Mechanism& m, PointId point, SlotId slot, std::string* why = nullptr);
