@@ -5,8 +5,10 @@
 
 #include <cmath>
 
+#include "examples.h"
 #include "linkage/edits.h"
 #include "linkage/elements.h"
+#include "linkage/space.h"
 #include "mechanisms.h"
 
 namespace linkage {
@@ -153,6 +155,37 @@ TEST(Edits, TypedDimensionsPlaceThePointsExactly) {
   EXPECT_NEAR(m.pointNamed(rod, "D")->pos.x(), 16 + 10 * std::sqrt(3.0) / 2, 1e-12);
   EXPECT_FALSE(setPolar(m, g, g, 1, 0, &why));
   EXPECT_FALSE(setPolar(m, m.pointNamed(rod, "D")->id, g, -1, 0, &why));
+}
+
+// A machine in space is drawn one plane at a time (issue 27): a link drawn in a plane is of that
+// plane, its points in its coordinates; a ground point drawn in it is where that plane puts it in
+// the world; a block runs in its slot's plane; the drawing plane is written as no plane.
+TEST(Edits, PartsDrawnInAPlaneAreOfThatPlane) {
+  Mechanism m = linkage::test::example("rssr-crank-rocker");
+  const Plane* rocker = planeNamed(m, "rocker");
+  ASSERT_TRUE(rocker);
+  std::string why;
+  const BodyId b = addLink(m, {{Vec2(-40, -20), {}}, {Vec2(-20, -30), {}}}, &why, "rocker");
+  ASSERT_TRUE(b) << why;
+  EXPECT_EQ(m.body(b)->plane, "rocker");
+  const BodyId d = addLink(m, {{Vec2(1, 2), {}}, {Vec2(3, 4), {}}}, &why, "drawing");
+  ASSERT_TRUE(d);
+  EXPECT_EQ(m.body(d)->plane, "");
+  EXPECT_FALSE(addLink(m, {{Vec2(1, 2), {}}, {Vec2(3, 4), {}}}, &why, "nowhere"));
+  EXPECT_NE(why.find("nowhere"), std::string::npos) << why;
+  // The ground point at (10, 20) of the rocker's plane: origin + 10 x + 20 y, in the world.
+  const PointId g = addGroundPoint(m, Vec2(10, 20), {}, "rocker");
+  ASSERT_TRUE(g);
+  const Vec3 expected = Vec3(0, 0, 80) + 10 * rocker->xAxis + 20 * rocker->yAxis;
+  EXPECT_LT((worldOf(m, *m.point(g)) - expected).norm(), 1e-12);
+  EXPECT_FALSE(addGroundPoint(m, Vec2(10, 20), {}, "nowhere"));
+  // A block in a slot of the new rocker-plane link is in that plane.
+  const SlotId s = addBodySlot(m, b, Vec2(-40, -20), Vec2(-20, -30));
+  ASSERT_TRUE(s);
+  const PointId onCrank = m.pointNamed(m.bodyNamed("crank")->id, "A")->id;
+  const BodyId block = addBlock(m, onCrank, s, Vec2(-30, -25), &why);
+  ASSERT_TRUE(block) << why;
+  EXPECT_EQ(m.body(block)->plane, "rocker");
 }
 
 }  // namespace
