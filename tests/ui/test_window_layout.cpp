@@ -75,6 +75,8 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
                                                    "showTransmission",
                                                    "darkPalette",
                                                    "detachablePanels",
+                                                   "hideOtherPlanes",
+                                                   "[3D View Direction]",
                                                    "-",
                                                    "Properties",
                                                    "Instant Centres",
@@ -82,7 +84,8 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
                                                    "showForcesPanel",
                                                    "showDesignChecks",
                                                    "showMechanisms",
-                                                   "showCyclePanel"}));
+                                                   "showCyclePanel",
+                                                   "show3dView"}));
   EXPECT_EQ(words(menu(bar, "Animation")),
             QStringList({"play", "stepBack", "stepForward", "toStart", "-", "slower", "faster"}));
   EXPECT_EQ(words(menu(bar, "Analysis")),
@@ -133,7 +136,9 @@ TEST(WindowLayout, EveryToolbarHoldsItsEntriesInOrder) {
   EXPECT_EQ(bars.size(), 4u);
   EXPECT_EQ(bars["fileToolBar"], QStringList({"new", "open", "save", "undo", "redo"}));
   EXPECT_EQ(bars["toolsToolBar"], tools(w) + QStringList({"-", "delete", "flip"}));
-  EXPECT_EQ(bars["viewToolBar"], QStringList({"fit", "showGrid", "showCentres", "showTraces"}));
+  // The plane chooser last (shown for a machine in space only).
+  EXPECT_EQ(bars["viewToolBar"],
+            QStringList({"fit", "showGrid", "showCentres", "showTraces", "widget"}));
   EXPECT_EQ(bars["animationToolBar"],
             QStringList({"play", "stepBack", "stepForward", "toStart", "widget"}));
   EXPECT_EQ(w.toolBarArea(w.findChild<QToolBar*>("toolsToolBar")), Qt::LeftToolBarArea);
