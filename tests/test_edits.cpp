@@ -188,5 +188,47 @@ TEST(Edits, PartsDrawnInAPlaneAreOfThatPlane) {
   EXPECT_EQ(m.body(block)->plane, "rocker");
 }
 
+// Planes added as the file takes them: checked the same way, with the place named, and made by
+// the two constructions a designer names (inclined by rho about x; square to a shaft at a
+// distance along it).
+TEST(Edits, PlanesAreAddedCheckedAndConstructed) {
+  Mechanism m = linkage::test::example("rssr-crank-rocker");
+  std::string why;
+  const Plane inclined = planeInclinedAboutX(newPlaneName(m), Vec3(111, 134.5, 53.5), 23);
+  EXPECT_EQ(inclined.name, "plane2");
+  // rho = 23 degrees: y (0, cos 23, sin 23), the spec's example's normal up to sign.
+  EXPECT_LT((inclined.yAxis - Vec3(0, 0.9205048534524404, 0.39073112848927377)).norm(), 1e-15);
+  ASSERT_TRUE(addPlane(m, inclined, &why)) << why;
+  ASSERT_TRUE(planeNamed(m, "plane2"));
+  EXPECT_EQ(newPlaneName(m), "plane3");
+  EXPECT_FALSE(addPlane(m, inclined, &why));
+  EXPECT_NE(why.find("already"), std::string::npos) << why;
+  Plane bad = inclined;
+  bad.name = "skew";
+  bad.yAxis = Vec3(0, 1, 0.1);
+  const Mechanism before = m;
+  EXPECT_FALSE(addPlane(m, bad, &why));
+  EXPECT_NE(why.find("planes.skew.y_axis"), std::string::npos) << why;
+  EXPECT_EQ(m.planes->size(), before.planes->size());
+  bad = inclined;
+  bad.name = "drawing";
+  EXPECT_FALSE(addPlane(m, bad, &why));
+  // The crank's shaft at O, along z: a plane 12 mm along it, the drawing's axes.
+  const PointId o = m.pointNamed(m.ground()->id, "O")->id;
+  const PointId h = m.pointNamed(m.ground()->id, "H")->id;
+  ASSERT_EQ(shafts(m), (std::vector<PointId>{o, h}));
+  const std::optional<Plane> onShaft = planeOnShaft(m, "cam", o, 12);
+  ASSERT_TRUE(onShaft);
+  EXPECT_LT((onShaft->origin - Vec3(0, 0, 12)).norm(), 1e-15);
+  EXPECT_EQ(onShaft->xAxis, Vec3::UnitX());
+  EXPECT_EQ(onShaft->yAxis, Vec3::UnitY());
+  // The rocker's shaft at H (0, 0, 80), along the rocker plane's normal, x.
+  const std::optional<Plane> onRocker = planeOnShaft(m, "arm", h, -5);
+  ASSERT_TRUE(onRocker);
+  EXPECT_LT((onRocker->origin - Vec3(-5, 0, 80)).norm(), 1e-12);
+  EXPECT_TRUE(parallel(*onRocker, *planeNamed(m, "rocker")));
+  EXPECT_FALSE(planeOnShaft(m, "x", m.pointNamed(m.bodyNamed("crank")->id, "A")->id, 0));
+}
+
 }  // namespace
 }  // namespace linkage

@@ -241,6 +241,73 @@ bool setDriver(Mechanism& m, JointId pin, std::string* why) {
   return true;
 }
 
+std::string newPlaneName(const Mechanism& m) {
+  for (int n = 2;; ++n) {
+    std::string name = "plane";
+    name += std::to_string(n);
+    if (!planeNamed(m, name)) return name;
+  }
+}
+
+bool addPlane(Mechanism& m, const Plane& p, std::string* why) {
+  if (planeNamed(m, p.name) && !p.name.empty()) {
+    fail(why, "a plane is named \"" + p.name + "\" already");
+    return false;
+  }
+  Mechanism next = m;
+  if (!next.planes) next.planes.emplace();
+  next.planes->push_back(p);
+  // The file's own check, so that nothing is added that a file could not hold.
+  if (const std::string problem = planesProblem(next); !problem.empty()) {
+    fail(why, problem);
+    return false;
+  }
+  m = std::move(next);
+  return true;
+}
+
+Plane planeInclinedAboutX(const std::string& name, const Vec3& origin, double rhoDeg) {
+  const double r = rhoDeg * M_PI / 180;
+  Plane p;
+  p.name = name;
+  p.origin = origin;
+  p.xAxis = Vec3::UnitX();
+  p.yAxis = Vec3(0, std::cos(r), std::sin(r));
+  return p;
+}
+
+namespace {
+// The moving body turning on ground point `pivot`, or nullptr.
+const Body* turningOn(const Mechanism& m, PointId pivot) {
+  const Point* g = m.point(pivot);
+  if (!g || !m.body(g->body) || !m.body(g->body)->ground) return nullptr;
+  for (const Joint& j : m.joints) {
+    if (kindOf(j).role != Role::Revolute || (j.a != pivot && j.b != pivot)) continue;
+    const Point* other = m.point(j.a == pivot ? j.b : j.a);
+    if (const Body* b = other ? m.body(other->body) : nullptr; b && !b->ground) return b;
+  }
+  return nullptr;
+}
+}  // namespace
+
+std::vector<PointId> shafts(const Mechanism& m) {
+  std::vector<PointId> out;
+  for (const Point& p : m.points)
+    if (turningOn(m, p.id)) out.push_back(p.id);
+  return out;
+}
+
+std::optional<Plane> planeOnShaft(const Mechanism& m, const std::string& name, PointId pivot,
+                                  double along) {
+  const Body* b = turningOn(m, pivot);
+  if (!b) return std::nullopt;
+  Plane p = planeOf(m, b->id);
+  p.name = name;
+  p.extras = {};
+  p.origin = worldOf(m, *m.point(pivot)) + along * p.normal();
+  return p;
+}
+
 void toggleOutput(Mechanism& m, PointId p) {
   auto it = std::find(m.outputs.begin(), m.outputs.end(), p);
   if (it != m.outputs.end())

@@ -11,6 +11,9 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QTest>
+#include <QLabel>
+#include <QLineEdit>
+#include <QTimer>
 #include <cmath>
 
 #include "canvas/canvas_scene.h"
@@ -19,6 +22,7 @@
 #include "linkage/space.h"
 #include "tools/picker.h"
 #include "tools/selection.h"
+#include "view3d/add_plane_dialog.h"
 #include "view3d/projection.h"
 #include "view3d/view3d_widget.h"
 #include "window/features.h"
@@ -303,6 +307,49 @@ TEST(PlaneChooser, APlanarMachineHasNoChooserAndIsDrawnIn3d) {
   EXPECT_NEAR(b.x() - a.x(), v->projection().scale() * d.x(), 1e-9);
   EXPECT_NEAR(b.y() - a.y(), -v->projection().scale() * d.y(), 1e-9);
   shot(v, "view3d-four-bar");
+}
+
+// Edit > Add Plane on a planar machine: a refusal is said in the dialog, which stays open; the
+// plane inclined 23 degrees about x is added as one undo step, listed by the chooser (now shown)
+// and shown on the canvas; undone, the machine is planar again.
+TEST(AddPlane, TheDialogAddsAPlaneAsOneUndoStepAndTheCanvasShowsIt) {
+  MainWindow w;
+  ASSERT_TRUE(showExample(w, "four-bar-crank-rocker"));
+  View3dFeature& f = w.view3d();
+  EXPECT_EQ(f.addPlane->shortcut(), QKeySequence("Shift+P"));
+  const int steps = w.document()->undoStack()->count();
+  QString refusal;
+  bool stayedOpen = false;
+  QTimer::singleShot(0, [&] {
+    auto* d = qobject_cast<AddPlaneDialog*>(QApplication::activeModalWidget());
+    ASSERT_TRUE(d);
+    d->how->setCurrentIndex(2);
+    d->name->setText("rocker");
+    d->inclinedOrigin->setText("0, 0, 80");
+    d->rho->setText("twenty");
+    d->accept();
+    refusal = d->problem->text();
+    stayedOpen = d->isVisible();
+    shot(d, "add-plane-dialog");
+    d->rho->setText("23");
+    d->accept();
+  });
+  f.addPlane->trigger();
+  EXPECT_TRUE(stayedOpen);
+  EXPECT_TRUE(refusal.contains("rho")) << refusal;
+  const Mechanism& m = w.document()->design();
+  const Plane* p = planeNamed(m, "rocker");
+  ASSERT_TRUE(p);
+  EXPECT_LT((p->yAxis - Vec3(0, std::cos(23 * M_PI / 180), std::sin(23 * M_PI / 180))).norm(),
+            1e-15);
+  EXPECT_EQ(w.document()->undoStack()->count(), steps + 1);
+  EXPECT_TRUE(f.planeChooserAction->isVisible());
+  EXPECT_EQ(f.planeChooser->currentText(), "rocker");
+  EXPECT_EQ(w.scene()->shownPlane(), "rocker");
+  w.document()->undoStack()->undo();
+  EXPECT_FALSE(planeNamed(w.document()->design(), "rocker"));
+  EXPECT_FALSE(f.planeChooserAction->isVisible());
+  EXPECT_EQ(w.scene()->shownPlane(), "");
 }
 
 }  // namespace

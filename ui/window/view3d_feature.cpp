@@ -9,9 +9,12 @@
 #include <QVBoxLayout>
 
 #include "canvas/canvas_scene.h"
+#include "document/commands.h"
 #include "document/document.h"
+#include "linkage/edits.h"
 #include "linkage/space.h"
 #include "tools/selection.h"
+#include "view3d/add_plane_dialog.h"
 #include "view3d/view3d_widget.h"
 #include "window/main_window.h"
 #include "window/properties_feature.h"
@@ -63,6 +66,11 @@ View3dFeature::View3dFeature(MainWindow& w, WindowLayout& layout) : WindowFeatur
     if (const Body* body = w.document()->design().body(b); body && !body->ground)
       choosePlane(body->plane);
   });
+  addPlane = makeAction(&w, "addPlane", tr("Add &Plane..."), QKeySequence(tr("Shift+P")),
+                        tr("Add a plane for a machine in space: typed, square to a shaft, or "
+                           "inclined about x"));
+  connect(addPlane, &QAction::triggered, this, [this, &w] { askForPlane(w); });
+  layout.add(Slot::EditAddPlane, addPlane);
   connect(w.document(), &Document::designChanged, this, [this, &w] { listPlanes(w); });
   listPlanes(w);
 }
@@ -114,6 +122,18 @@ void View3dFeature::listPlanes(MainWindow& w) {
   if (at < 0) choosePlane({});
   planeChooserAction->setVisible(isSpatial(m));
   hideOtherPlanes->setEnabled(isSpatial(m));
+}
+
+void View3dFeature::askForPlane(MainWindow& w) {
+  Document* doc = w.document();
+  AddPlaneDialog d(doc->design(), &w);
+  if (d.exec() != QDialog::Accepted) return;
+  std::string why;
+  const std::optional<Plane> p = d.plane(&why);
+  Mechanism m = doc->design();
+  if (!p || !linkage::addPlane(m, *p, &why)) return;  // the dialog checked it
+  commitEdit(doc, tr("Add plane %1").arg(QString::fromStdString(p->name)), std::move(m));
+  choosePlane(p->name);
 }
 
 void View3dFeature::choosePlane(const std::string& name) {

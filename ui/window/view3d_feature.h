@@ -3,7 +3,7 @@
 // View > 3D View Direction, and the plane chooser in the View toolbar: which plane the canvas
 // draws and edits (the others faint, or hidden by View > Hide Other Planes). The chooser is
 // shown only for a machine with planes. A body picked in the 3D view brings its plane to the
-// canvas.
+// canvas. Edit > Add Plane (Shift+P) adds a plane (view3d/add_plane_dialog.h).
 #pragma once
 
 #include <string>
@@ -39,11 +39,14 @@ class View3dFeature : public WindowFeature {
   QComboBox* planeChooser;
   QAction* planeChooserAction;  // its place in the toolbar (hidden for a planar machine)
   QAction* hideOtherPlanes;
+  QAction* addPlane;  // Edit > Add Plane: the dialog, then one undo step
 
  private:
   void makeViewActions(MainWindow& w);
   // The chooser lists the design's planes again (after a new file or an edit).
   void listPlanes(MainWindow& w);
+  // Edit > Add Plane: asks, adds it as one undo step and shows it on the canvas.
+  void askForPlane(MainWindow& w);
 
   View3dWidget* view_;
 };

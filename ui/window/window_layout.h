@@ -48,6 +48,7 @@ enum class Slot {
   EditSeparator2,
   EditDelete,
   EditFlip,
+  EditAddPlane,
   // Tools
   ToolsTools,
   ToolsSeparator,

@@ -61,6 +61,24 @@ SlotId addBodyArcSlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& mid
 bool setDriver(Mechanism& m, JointId pin, std::string* why = nullptr);
 // Toggles a point among the outputs.
 void toggleOutput(Mechanism& m, PointId p);
+// Planes of a machine in space (linkage/space.h). A plane added to the file's planes, checked
+// as a file's are (a name not empty, not "drawing", not taken; axes unit and perpendicular to
+// 1e-9): false with `why` naming the field otherwise, and `m` as it was.
+bool addPlane(Mechanism& m, const Plane& p, std::string* why = nullptr);
+// A fresh plane name: "plane2", "plane3"...
+std::string newPlaneName(const Mechanism& m);
+// The plane inclined by `rhoDeg` about the world's x through `origin`: x (1, 0, 0), y (0, cos
+// rho, sin rho) (seed 004's rocker plane, rho = 23 degrees).
+Plane planeInclinedAboutX(const std::string& name, const Vec3& origin, double rhoDeg);
+// The plane square to the shaft at ground point `pivot` (a pin of the ground to a moving body:
+// the shaft is along that body's plane's normal), `along` mm from the pivot along the shaft, its
+// axes the body's plane's: where another crank on the same shaft turns. None when `pivot` is not
+// a ground point pinned to a moving body.
+std::optional<Plane> planeOnShaft(const Mechanism& m, const std::string& name, PointId pivot,
+                                  double along);
+// The ground points that are shafts (pinned to a moving body), file order.
+std::vector<PointId> shafts(const Mechanism& m);
+
 // A slider becomes a pin-in-slot and back.
 bool changeJointType(Mechanism& m, JointId j, JointType type, std::string* why = nullptr);
 // An edit drawn on the mechanism as it is shown, at the current crank angle, where a user
