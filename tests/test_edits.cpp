@@ -230,5 +230,34 @@ TEST(Edits, PlanesAreAddedCheckedAndConstructed) {
   EXPECT_FALSE(planeOnShaft(m, "x", m.pointNamed(m.bodyNamed("crank")->id, "A")->id, 0));
 }
 
+// A ball rod between two planes' points, as the 3D view's picks make it; the refusals the file
+// format names (one body, both on the ground, no length).
+TEST(Edits, ABallRodJoinsPointsOfAnyPlanes) {
+  Mechanism m = linkage::test::example("rssr-crank-rocker");
+  const Body* crank = m.bodyNamed("crank");
+  const Body* rocker = m.bodyNamed("rocker");
+  const PointId o = m.pointNamed(crank->id, "O")->id, a = m.pointNamed(crank->id, "A")->id;
+  const PointId h = m.pointNamed(rocker->id, "H")->id, c = m.pointNamed(rocker->id, "C")->id;
+  const PointId g = m.pointNamed(m.ground()->id, "O")->id,
+                gh = m.pointNamed(m.ground()->id, "H")->id;
+  std::string why;
+  const size_t joints = m.joints.size();
+  const JointId rod = addBallRod(m, a, h, &why);
+  ASSERT_TRUE(rod) << why;
+  EXPECT_EQ(m.joints.size(), joints + 1);
+  EXPECT_EQ(toString(m.joint(rod)->type), std::string("ball-rod"));
+  EXPECT_EQ(m.joint(rod)->a, a);
+  EXPECT_EQ(m.joint(rod)->b, h);
+  EXPECT_EQ(checkJoints(m), "");
+  EXPECT_FALSE(addBallRod(m, o, a, &why));
+  EXPECT_NE(why.find("one body"), std::string::npos) << why;
+  EXPECT_FALSE(addBallRod(m, g, gh, &why));  // both on the ground: one body
+  EXPECT_NE(why.find("one body"), std::string::npos) << why;
+  EXPECT_FALSE(addBallRod(m, g, o, &why));  // crank.O is drawn on ground.O
+  EXPECT_NE(why.find("no length"), std::string::npos) << why;
+  EXPECT_FALSE(addBallRod(m, c, c, &why));
+  EXPECT_EQ(m.joints.size(), joints + 1);
+}
+
 }  // namespace
 }  // namespace linkage

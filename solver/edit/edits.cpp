@@ -308,6 +308,29 @@ std::optional<Plane> planeOnShaft(const Mechanism& m, const std::string& name, P
   return p;
 }
 
+JointId addBallRod(Mechanism& m, PointId a, PointId b, std::string* why) {
+  const Point* pa = m.point(a);
+  const Point* pb = m.point(b);
+  if (!pa || !pb || a == b) {
+    fail(why, "pick two points, one at each end of the rod");
+    return {};
+  }
+  // Both on the ground is this case too: the ground is one body.
+  if (pa->body == pb->body) {
+    fail(why, "both ends are on one body: a rod joins two bodies");
+    return {};
+  }
+  if ((worldOf(m, *pa) - worldOf(m, *pb)).norm() < 1e-9) {
+    fail(why, "the two points are drawn at one place: a rod of no length");
+    return {};
+  }
+  Joint j;
+  j.type = elementKindNamed("ball-rod")->type;
+  j.a = a;
+  j.b = b;
+  return m.addJoint(j);
+}
+
 void toggleOutput(Mechanism& m, PointId p) {
   auto it = std::find(m.outputs.begin(), m.outputs.end(), p);
   if (it != m.outputs.end())

@@ -10,15 +10,16 @@
 
 #include <QComboBox>
 #include <QDockWidget>
-#include <QTest>
 #include <QLabel>
 #include <QLineEdit>
+#include <QTest>
 #include <QTimer>
 #include <cmath>
 
 #include "canvas/canvas_scene.h"
 #include "document/document.h"
 #include "drawing.h"
+#include "linkage/elements.h"
 #include "linkage/space.h"
 #include "tools/picker.h"
 #include "tools/selection.h"
@@ -350,6 +351,36 @@ TEST(AddPlane, TheDialogAddsAPlaneAsOneUndoStepAndTheCanvasShowsIt) {
   EXPECT_FALSE(planeNamed(w.document()->design(), "rocker"));
   EXPECT_FALSE(f.planeChooserAction->isVisible());
   EXPECT_EQ(w.scene()->shownPlane(), "");
+}
+
+// A ball rod from the 3D view's picks: a click on a point of one plane, Ctrl+click on a point of
+// another, Edit > Join with a Ball Rod: one undo step joining those two points.
+TEST(AddBallRod, TwoPointsPickedIn3dAreJoinedAsOneUndoStep) {
+  Rssr r;
+  ASSERT_TRUE(r.v);
+  QAction* join = r.w.view3d().addBallRod;
+  EXPECT_EQ(join->shortcut(), QKeySequence("Shift+R"));
+  EXPECT_FALSE(join->isEnabled());
+  const PointId a = r.m().pointNamed(r.body("crank"), "A")->id;
+  const PointId c = r.m().pointNamed(r.body("rocker"), "C")->id;
+  QTest::mouseClick(r.v, Qt::LeftButton, {},
+                    r.v->projection().toScreen(r.world("crank", "A")).toPoint());
+  QTest::mouseClick(r.v, Qt::LeftButton, Qt::ControlModifier,
+                    r.v->projection().toScreen(r.world("rocker", "C")).toPoint());
+  Selection* sel = r.w.tools().selection();
+  ASSERT_EQ(sel->points, (std::vector<PointId>{a, c}));
+  EXPECT_TRUE(join->isEnabled());
+  const size_t joints = r.m().joints.size();
+  const int steps = r.w.document()->undoStack()->count();
+  join->trigger();
+  ASSERT_EQ(r.m().joints.size(), joints + 1);
+  const Joint& rod = r.m().joints.back();
+  EXPECT_EQ(toString(rod.type), std::string("ball-rod"));
+  EXPECT_EQ(rod.a, a);
+  EXPECT_EQ(rod.b, c);
+  EXPECT_EQ(r.w.document()->undoStack()->count(), steps + 1);
+  r.w.document()->undoStack()->undo();
+  EXPECT_EQ(r.m().joints.size(), joints);
 }
 
 }  // namespace

@@ -58,8 +58,8 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
   EXPECT_EQ(words(menu(file, "Export")),
             QStringList({"exportTable", "exportFigure", "exportAnimation", "exportForcesTable",
                          "exportForcesFigure", "exportCycleFigure", "exportTimingTable"}));
-  EXPECT_EQ(words(menu(bar, "Edit")),
-            QStringList({"undo", "redo", "-", "showHistory", "-", "delete", "flip", "addPlane"}));
+  EXPECT_EQ(words(menu(bar, "Edit")), QStringList({"undo", "redo", "-", "showHistory", "-",
+                                                   "delete", "flip", "addPlane", "addBallRod"}));
   ASSERT_EQ(tools(w).size(), 6 + 3);  // select link ground slot driver output, three kinds'
   EXPECT_EQ(words(menu(bar, "Tools")), tools(w) + QStringList({"-", "snapGrid"}));
   EXPECT_EQ(words(menu(bar, "View")), QStringList({"fit",

@@ -4,7 +4,8 @@
 # picture and the direction of view change, nothing is selected), the plane chooser switched to
 # the rocker's plane (the canvas draws the crank faint: the picture changes), a link drawn there
 # (it is of the rocker's plane), the file saved with Ctrl+S and opened again in a new editor:
-# the same design, byte for byte as the probe hashes it, its planes and ball rod kept.
+# a plane added with Edit > Add Plane (Shift+P); the same design, byte for byte as the probe
+# hashes it, its planes and ball rod kept.
 #   tests/x11/view3d_planes.sh path/to/linkage
 set -euo pipefail
 linkage=$1
@@ -53,13 +54,23 @@ click_mm -20 2
 click_mm -8 14
 xdotool key Return
 wait_probe "history: Add link" || fail "the link was not drawn"
+# Edit > Add Plane (Shift+P): the dialog's defaults (typed: the drawing plane's axes) with a
+# name of ours, one undo step, the canvas on it.
+xdotool key shift+p
+wait_window "Add Plane" || fail "Shift+P did not open the Add Plane dialog"
+xdotool key ctrl+a
+xdotool type "feed"
+xdotool key Return
+wait_probe "plane: feed" || fail "the plane added is not the canvas's"
+wait_probe "history: Add plane feed" || fail "adding a plane is not an undo step"
+xdotool mousemove 300 420 click 1
 xdotool key ctrl+s
 wait_probe "modified: 0" || fail "Ctrl+S did not save"
 design=$(probe design)
 python3 - "$machine" <<'PY' || fail "the saved file lost something"
 import json, sys
 m = json.load(open(sys.argv[1]))
-assert "rocker" in m["planes"], m.get("planes")
+assert "rocker" in m["planes"] and "feed" in m["planes"], m.get("planes")
 new = [b for b in m["bodies"] if b["name"] not in ("ground", "crank", "rocker")]
 assert len(new) == 1 and new[0].get("plane") == "rocker", new
 assert any(j["type"] == "ball-rod" for j in m["joints"]), m["joints"]
@@ -72,4 +83,4 @@ rm -f "$work/probe.txt"
 start_linkage "$linkage" "$machine"
 wait_probe "title: rssr.linkage.json" || fail "the saved file did not open"
 wait_probe "design: $design" || fail "the design read back is not the one saved ($(probe design) != $design)"
-echo "ok: the 3D view shown and orbited, the plane chooser switched, a link drawn in the rocker's plane, saved and reopened unchanged"
+echo "ok: the 3D view shown and orbited, the plane chooser switched, a link drawn in the rocker's plane, a plane added, saved and reopened unchanged"

@@ -12,11 +12,13 @@
 #include "document/commands.h"
 #include "document/document.h"
 #include "linkage/edits.h"
+#include "linkage/elements.h"
 #include "linkage/space.h"
 #include "tools/selection.h"
 #include "view3d/add_plane_dialog.h"
 #include "view3d/view3d_widget.h"
 #include "window/main_window.h"
+#include "window/message_strip.h"
 #include "window/properties_feature.h"
 #include "window/tools_feature.h"
 #include "window/window_layout.h"
@@ -71,6 +73,18 @@ View3dFeature::View3dFeature(MainWindow& w, WindowLayout& layout) : WindowFeatur
                            "inclined about x"));
   connect(addPlane, &QAction::triggered, this, [this, &w] { askForPlane(w); });
   layout.add(Slot::EditAddPlane, addPlane);
+  addBallRod =
+      makeAction(&w, "addBallRod", tr("Join with a &Ball Rod"), QKeySequence(tr("Shift+R")),
+                 tr("A rod with a ball at each end between the two points selected "
+                    "(Ctrl+click them in the 3D view: any planes)"));
+  connect(addBallRod, &QAction::triggered, this, [this, &w] { joinWithBallRod(w); });
+  layout.add(Slot::EditBallRod, addBallRod);
+  auto twoPoints = [this, &w] {
+    const Selection* s = w.tools().selection();
+    addBallRod->setEnabled(s->points.size() == 2 && s->size() == 2);
+  };
+  connect(w.tools().selection(), &Selection::changed, this, twoPoints);
+  twoPoints();
   connect(w.document(), &Document::designChanged, this, [this, &w] { listPlanes(w); });
   listPlanes(w);
 }
@@ -134,6 +148,21 @@ void View3dFeature::askForPlane(MainWindow& w) {
   if (!p || !linkage::addPlane(m, *p, &why)) return;  // the dialog checked it
   commitEdit(doc, tr("Add plane %1").arg(QString::fromStdString(p->name)), std::move(m));
   choosePlane(p->name);
+}
+
+void View3dFeature::joinWithBallRod(MainWindow& w) {
+  const Selection* s = w.tools().selection();
+  if (s->points.size() != 2) return;
+  Document* doc = w.document();
+  Mechanism m = doc->design();
+  std::string why;
+  const JointId rod = linkage::addBallRod(m, s->points[0], s->points[1], &why);
+  if (!rod) {
+    w.messageStrip()->setMessage(QString::fromStdString(why), true);
+    return;
+  }
+  const QString name = QString::fromStdString(jointName(m, rod));
+  commitEdit(doc, tr("Add %1").arg(name), std::move(m));
 }
 
 void View3dFeature::choosePlane(const std::string& name) {

@@ -3,7 +3,9 @@
 // View > 3D View Direction, and the plane chooser in the View toolbar: which plane the canvas
 // draws and edits (the others faint, or hidden by View > Hide Other Planes). The chooser is
 // shown only for a machine with planes. A body picked in the 3D view brings its plane to the
-// canvas. Edit > Add Plane (Shift+P) adds a plane (view3d/add_plane_dialog.h).
+// canvas. Edit > Add Plane (Shift+P) adds a plane (view3d/add_plane_dialog.h);
+// Edit > Join with a Ball Rod (Shift+R) joins the two points selected (picked in the 3D view with
+// Ctrl+click, any planes).
 #pragma once
 
 #include <string>
@@ -40,6 +42,9 @@ class View3dFeature : public WindowFeature {
   QAction* planeChooserAction;  // its place in the toolbar (hidden for a planar machine)
   QAction* hideOtherPlanes;
   QAction* addPlane;  // Edit > Add Plane: the dialog, then one undo step
+  // Edit > Join with a Ball Rod: the two points selected (in the 3D view, or on the canvas),
+  // of any planes.
+  QAction* addBallRod;
 
  private:
   void makeViewActions(MainWindow& w);
@@ -47,6 +52,7 @@ class View3dFeature : public WindowFeature {
   void listPlanes(MainWindow& w);
   // Edit > Add Plane: asks, adds it as one undo step and shows it on the canvas.
   void askForPlane(MainWindow& w);
+  void joinWithBallRod(MainWindow& w);
 
   View3dWidget* view_;
 };

@@ -67,7 +67,7 @@ WindowLayout::WindowLayout(QMainWindow* w) : QObject(w) {
 QWidget* WindowLayout::target(Slot s) const {
   if (within(s, Slot::FileNew, Slot::FileQuit)) return file_;
   if (within(s, Slot::ExportTable, Slot::ExportTimingTable)) return exports_;
-  if (within(s, Slot::EditUndo, Slot::EditAddPlane)) return edit_;
+  if (within(s, Slot::EditUndo, Slot::EditBallRod)) return edit_;
   if (within(s, Slot::ToolsTools, Slot::ToolsSnap)) return tools_;
   if (within(s, Slot::ViewFit, Slot::View3dDock)) return view_;
   if (within(s, Slot::AnimationPlay, Slot::AnimationFaster)) return animation_;

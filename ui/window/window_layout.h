@@ -49,6 +49,7 @@ enum class Slot {
   EditDelete,
   EditFlip,
   EditAddPlane,
+  EditBallRod,
   // Tools
   ToolsTools,
   ToolsSeparator,

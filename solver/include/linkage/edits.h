@@ -79,6 +79,11 @@ std::optional<Plane> planeOnShaft(const Mechanism& m, const std::string& name, P
 // The ground points that are shafts (pinned to a moving body), file order.
 std::vector<PointId> shafts(const Mechanism& m);
 
+// A ball rod from point a to point b (any planes): they keep their drawn distance in space.
+// Refused with `why` for one point twice, two points of one body (both on the ground
+// included), or ends closer than 1e-9 mm as drawn.
+JointId addBallRod(Mechanism& m, PointId a, PointId b, std::string* why = nullptr);
+
 // A slider becomes a pin-in-slot and back.
 bool changeJointType(Mechanism& m, JointId j, JointType type, std::string* why = nullptr);
 // An edit drawn on the mechanism as it is shown, at the current crank angle, where a user
