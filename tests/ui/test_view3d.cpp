@@ -20,6 +20,8 @@
 #include "document/document.h"
 #include "drawing.h"
 #include "linkage/elements.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/model_lookup.h"
 #include "linkage/space.h"
 #include "tools/picker.h"
 #include "tools/selection.h"
@@ -381,6 +383,58 @@ TEST(AddBallRod, TwoPointsPickedIn3dAreJoinedAsOneUndoStep) {
   EXPECT_EQ(r.w.document()->undoStack()->count(), steps + 1);
   r.w.document()->undoStack()->undo();
   EXPECT_EQ(r.m().joints.size(), joints);
+}
+
+// A body in a plane parallel to the drawing but shifted and turned in it moves in the drawing
+// plane's class frame: the 3D view lifts its points and slot ends through that frame. The
+// Wanzer (a slotted disk) redrawn in such a plane, 20 mm out, is the same machine 20 mm along z:
+// every plate corner (slot ends among them) where the planar one's is, plus (0, 0, 20).
+TEST(View3dScene, APlaneParallelToTheDrawingIsLiftedThroughItsClassFrame) {
+  const Mechanism planar = *loadMechanismFile(*resolveModel("wanzer-inversion-2")).mechanism;
+  Mechanism lifted = planar;
+  Plane p;
+  p.name = "lifted";
+  const double a = 30 * M_PI / 180;
+  p.origin = Vec3(5, 3, 20);
+  p.xAxis = Vec3(std::cos(a), std::sin(a), 0);
+  p.yAxis = Vec3(-std::sin(a), std::cos(a), 0);
+  lifted.planes = std::vector<Plane>{p};
+  // The drawing's (x, y) in the plane's coordinates.
+  auto inPlane = [&](const Vec2& v) {
+    const Vec2 d = v - Vec2(5, 3);
+    return Vec2(d.dot(Vec2(std::cos(a), std::sin(a))), d.dot(Vec2(-std::sin(a), std::cos(a))));
+  };
+  for (Body& b : lifted.bodies)
+    if (!b.ground) b.plane = "lifted";
+  for (Point& q : lifted.points)
+    if (!lifted.body(q.body)->ground) q.pos = inPlane(q.pos);
+  for (Slot& sl : lifted.slots) {
+    if (lifted.body(sl.body)->ground) continue;
+    sl.p0 = inPlane(sl.p0), sl.p1 = inPlane(sl.p1);
+    if (sl.mid) sl.mid = inPlane(*sl.mid);
+  }
+  auto sceneOf = [](const Mechanism& m, double deg) {
+    Document d;
+    d.setContents(m, "");
+    EXPECT_TRUE(d.solved()) << d.solveStatus().message;
+    EXPECT_TRUE(d.setCrankDeg(deg).ok());
+    View3dWidget v;
+    v.setDocument(&d);
+    return v.scene();
+  };
+  for (double deg : {0.0, 75.0}) {
+    const Scene3d flat = sceneOf(planar, deg), up = sceneOf(lifted, deg);
+    ASSERT_EQ(flat.plates.size(), up.plates.size());
+    for (size_t i = 0; i < flat.plates.size(); ++i) {
+      ASSERT_EQ(flat.plates[i].outline.size(), up.plates[i].outline.size()) << i;
+      for (const Vec3& v : flat.plates[i].outline) {
+        double nearest = INFINITY;
+        for (const Vec3& u : up.plates[i].outline)
+          nearest = std::min(nearest, (u - v - Vec3(0, 0, 20)).norm());
+        EXPECT_LT(nearest, 1e-9) << "plate " << i << " at " << deg;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -95,12 +95,15 @@ Scene3d View3dWidget::scene() const {
   // drawing, an edit it refused), as the canvas does.
   if (doc_->solved()) {
     const Mechanism& m = k.mechanism();
-    // A body's sketch point from its pose in its plane (the solver's frame of the body's plane
-    // class: the plane itself when it is its class's first).
-    return describeScene3d(m, {[&k](PointId p) { return k.motionInSpace(p).position; },
-                               [&k, &m](BodyId b, const Vec2& sketch) {
-                                 return planeOf(m, b).world(k.motionOf(b, sketch).position);
-                               }});
+    // The solver moves a body in its plane class's frame: a sketch point of it (a slot's end) is
+    // mapped into that frame, moved, and lifted to the world at the plane's depth in it.
+    const PlaneClasses pc = planeClasses(m);
+    auto bodyPoint = [&k, &m, &pc](BodyId b, const Vec2& sketch) {
+      const Body* body = m.body(b);
+      const PlaneInClass& in = pc.of(body ? body->plane : std::string());
+      return pc.frames[in.cls].world(k.motionOf(b, in.toClass(sketch)).position, in.depth);
+    };
+    return describeScene3d(m, {[&k](PointId p) { return k.motionInSpace(p).position; }, bodyPoint});
   }
   const Mechanism& m = doc_->design();
   auto drawn = [&m](PointId id) {
