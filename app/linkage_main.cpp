@@ -3,7 +3,8 @@
 //
 //   linkage [FILE | EXAMPLE-NAME]
 //   linkage --screenshot OUT.png [FILE|EXAMPLE] [--angle DEG] [--ics] [--plots] [--size WxH]
-//           [--dark] [--extremes] [--transmission] [--checks] [--forces] [--cycle]
+//           [--dark] [--extremes] [--transmission] [--checks] [--forces] [--cycle] [--3d]
+//           [--plane NAME]
 //   linkage --version | --help
 #include <QApplication>
 #include <QCommandLineParser>
@@ -48,6 +49,13 @@ struct Options {
                                   QStringLiteral("Show the joint reactions and the force plots.")};
   const QCommandLineOption checks{QStringLiteral("checks"),
                                   QStringLiteral("Show the design-checks dock.")};
+  const QCommandLineOption view3d{
+      QStringLiteral("3d"),
+      QStringLiteral("The picture is the 3D view alone (isometric; a planar machine from the "
+                     "front) at --size.")};
+  const QCommandLineOption plane{QStringLiteral("plane"),
+                                 QStringLiteral("The plane the canvas shows (a machine in space)."),
+                                 QStringLiteral("NAME")};
   const QCommandLineOption cycle{
       QStringLiteral("cycle"),
       QStringLiteral("Show the cycle dock (the file's timing) and its clearances on the canvas.")};
@@ -71,7 +79,7 @@ struct Options {
                                              "(e.g. wanzer-inversion-2)."),
                               QStringLiteral("[FILE | EXAMPLE-NAME]"));
     cli.addOptions({help, version, screenshot, angle, ics, plots, size, dark, extremes,
-                    transmission, checks, forces, cycle, benchmarks});
+                    transmission, checks, forces, cycle, view3d, plane, benchmarks});
   }
 };
 
@@ -137,6 +145,8 @@ int runOffscreen(const QCommandLineParser& cli, const Options& opt, const QStrin
   o.extremes = cli.isSet(opt.extremes);
   o.transmission = cli.isSet(opt.transmission);
   o.checks = cli.isSet(opt.checks);
+  o.view3d = cli.isSet(opt.view3d);
+  o.plane = cli.value(opt.plane);
   QString why;
   if (!linkage::ui::parseOffscreen(cli.value(opt.angle), cli.value(opt.size), o, &why)) {
     std::fprintf(stderr, "linkage: %s\n", qPrintable(why));

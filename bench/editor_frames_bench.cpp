@@ -4,6 +4,7 @@
 //
 //   build/bench/linkage_frames_bench --frames N [FILE|EXAMPLE] [--ics] [--plots] ...
 //   build/bench/linkage_frames_bench --drag N [FILE|EXAMPLE] [--ctrl] [--ics] [--plots] ...
+//   build/bench/linkage_frames_bench --frames N --3d [FILE|EXAMPLE] [--size WxH] (the 3D view)
 //   (both also [--size WxH] [--angle DEG] [--dark] [--extremes] [--transmission] [--checks]
 //   [--forces], as `linkage --screenshot` takes them)
 //
@@ -16,10 +17,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <vector>
 
 #include "canvas/canvas_view.h"
 #include "document/document.h"
+#include "view3d/view3d_widget.h"
 #include "window/features.h"
 #include "window/offscreen_window.h"
 
@@ -51,7 +54,8 @@ void printTimes(const char* what, const std::vector<double>& ms) {
 // a frame of the Wanzer at x1/10 of 240 rpm and 60 frames a second), the scene and the docks
 // updated, then the event loop paints every widget that changed and flushes the window. Paints
 // of the canvas are counted, to prove each frame was drawn.
-int benchmarkFrames(MainWindow& w, int frames) {
+// With `view3d`, the 3D view alone (at the window's size) is what is painted and counted.
+int benchmarkFrames(MainWindow& w, int frames, QWidget* view3d = nullptr) {
   Document* d = w.document();
   if (!d->solved()) {
     std::fprintf(stderr, "linkage_frames_bench: the mechanism is not solved: %s\n",
@@ -59,7 +63,7 @@ int benchmarkFrames(MainWindow& w, int frames) {
     return 2;
   }
   PaintCounter canvasPaints;
-  w.canvas()->viewport()->installEventFilter(&canvasPaints);
+  (view3d ? view3d : w.canvas()->viewport())->installEventFilter(&canvasPaints);
   std::vector<double> ms;
   ms.reserve(frames);
   QElapsedTimer t;
@@ -76,7 +80,8 @@ int benchmarkFrames(MainWindow& w, int frames) {
                  canvasPaints.paints, frames);
     return 2;
   }
-  printTimes(qPrintable(QStringLiteral("frames %1").arg(frames)), ms);
+  printTimes(qPrintable(QString::fromLatin1(view3d ? "3d frames %1" : "frames %1").arg(frames)),
+             ms);
   return 0;
 }
 
@@ -161,6 +166,7 @@ void addOptions(QCommandLineParser& cli) {
   flag("transmission", "Show the transmission angles.");
   flag("checks", "Show the design-checks dock.");
   flag("forces", "Show the joint reactions and the force plots.");
+  flag("3d", "With --frames: animate the 3D view alone at --size (the window not painted).");
   cli.addPositionalArgument("model", "A .linkage.json file or an example's name.",
                             "[FILE | EXAMPLE-NAME]");
 }
@@ -205,6 +211,12 @@ int main(int argc, char** argv) {
   }
   MainWindow w;
   if (const int status = setUpOffscreen(w, o)) return status;
+  if (frames > 0 && cli.isSet("3d")) {
+    // The window hidden: only the 3D view is painted, as `linkage --screenshot --3d` draws it.
+    w.hide();
+    std::unique_ptr<View3dWidget> v(makeOffscreen3dView(w, o));
+    return benchmarkFrames(w, frames, v.get());
+  }
   if (frames > 0)
     if (const int status = benchmarkFrames(w, frames)) return status;
   return moves > 0 ? benchmarkDrag(w, moves, cli.isSet("ctrl")) : 0;

@@ -39,7 +39,7 @@ run --help
 [ $status -eq 0 ] || fail "--help exits $status"
 [ ! -s "$work/err" ] || fail "--help wrote on standard error: $(cat "$work/err")"
 for o in --screenshot --angle --ics --plots --forces --size --dark --extremes --transmission \
-  --checks --version --help; do
+  --checks --3d --plane --version --help; do
   grep -q -- "$o" "$work/out" || fail "--help does not list $o"
 done
 grep -q -- "--benchmark" "$work/out" && fail "--help lists the moved benchmark options"
@@ -53,6 +53,13 @@ run --screenshot "$work/a.png" wanzer-inversion-2 --angle 30 --ics --plots --for
 run --size=1000x640 --angle=-30 four-bar-crank-rocker --screenshot="$work/b.png"
 [ $status -eq 0 ] || fail "--opt=value forms exit $status: $(cat "$work/err")"
 [ "$(png_size "$work/b.png")" = "1000x640" ] || fail "--size=1000x640 gave $(png_size "$work/b.png")"
+
+# --3d: the picture is the 3D view alone, of the asked size (not the window's picture).
+run --screenshot "$work/w.png" rssr-crank-rocker --size 640x480
+run --screenshot "$work/v.png" rssr-crank-rocker --3d --size 640x480 --plane rocker
+[ $status -eq 0 ] || fail "--3d exits $status: $(cat "$work/err")"
+[ "$(png_size "$work/v.png")" = "640x480" ] || fail "--3d --size 640x480 gave $(png_size "$work/v.png")"
+cmp -s "$work/w.png" "$work/v.png" && fail "--3d gave the window's picture"
 
 # Refusals: exit 2, the cause named on standard error.
 expect_refusal() {
@@ -68,6 +75,7 @@ expect_refusal "one model" --screenshot "$work/c.png" wanzer-inversion-2 four-ba
 expect_refusal "--size" --screenshot "$work/c.png" wanzer-inversion-2 --size big
 expect_refusal "--angle" --screenshot "$work/c.png" wanzer-inversion-2 --angle ten
 expect_refusal "no example" --screenshot "$work/c.png" no-such-example
+expect_refusal "no plane \"nowhere\"" --screenshot "$work/c.png" rssr-crank-rocker --plane nowhere
 expect_refusal linkage_frames_bench --benchmark-frames 5 wanzer-inversion-2
 expect_refusal linkage_frames_bench --benchmark-drag 5
 [ ! -e "$work/c.png" ] || fail "a refused screenshot was written"

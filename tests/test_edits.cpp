@@ -5,8 +5,10 @@
 
 #include <cmath>
 
+#include "examples.h"
 #include "linkage/edits.h"
 #include "linkage/elements.h"
+#include "linkage/space.h"
 #include "mechanisms.h"
 
 namespace linkage {
@@ -153,6 +155,108 @@ TEST(Edits, TypedDimensionsPlaceThePointsExactly) {
   EXPECT_NEAR(m.pointNamed(rod, "D")->pos.x(), 16 + 10 * std::sqrt(3.0) / 2, 1e-12);
   EXPECT_FALSE(setPolar(m, g, g, 1, 0, &why));
   EXPECT_FALSE(setPolar(m, m.pointNamed(rod, "D")->id, g, -1, 0, &why));
+}
+
+// A machine in space is drawn one plane at a time (issue 27): a link drawn in a plane is of that
+// plane, its points in its coordinates; a ground point drawn in it is where that plane puts it in
+// the world; a block runs in its slot's plane; the drawing plane is written as no plane.
+TEST(Edits, PartsDrawnInAPlaneAreOfThatPlane) {
+  Mechanism m = linkage::test::example("rssr-crank-rocker");
+  const Plane* rocker = planeNamed(m, "rocker");
+  ASSERT_TRUE(rocker);
+  std::string why;
+  const BodyId b = addLink(m, {{Vec2(-40, -20), {}}, {Vec2(-20, -30), {}}}, &why, "rocker");
+  ASSERT_TRUE(b) << why;
+  EXPECT_EQ(m.body(b)->plane, "rocker");
+  const BodyId d = addLink(m, {{Vec2(1, 2), {}}, {Vec2(3, 4), {}}}, &why, "drawing");
+  ASSERT_TRUE(d);
+  EXPECT_EQ(m.body(d)->plane, "");
+  EXPECT_FALSE(addLink(m, {{Vec2(1, 2), {}}, {Vec2(3, 4), {}}}, &why, "nowhere"));
+  EXPECT_NE(why.find("nowhere"), std::string::npos) << why;
+  // The ground point at (10, 20) of the rocker's plane: origin + 10 x + 20 y, in the world.
+  const PointId g = addGroundPoint(m, Vec2(10, 20), {}, "rocker");
+  ASSERT_TRUE(g);
+  const Vec3 expected = Vec3(0, 0, 80) + 10 * rocker->xAxis + 20 * rocker->yAxis;
+  EXPECT_LT((worldOf(m, *m.point(g)) - expected).norm(), 1e-12);
+  EXPECT_FALSE(addGroundPoint(m, Vec2(10, 20), {}, "nowhere"));
+  // A block in a slot of the new rocker-plane link is in that plane.
+  const SlotId s = addBodySlot(m, b, Vec2(-40, -20), Vec2(-20, -30));
+  ASSERT_TRUE(s);
+  const PointId onCrank = m.pointNamed(m.bodyNamed("crank")->id, "A")->id;
+  const BodyId block = addBlock(m, onCrank, s, Vec2(-30, -25), &why);
+  ASSERT_TRUE(block) << why;
+  EXPECT_EQ(m.body(block)->plane, "rocker");
+}
+
+// Planes added as the file takes them: checked the same way, with the place named, and made by
+// the two constructions a designer names (inclined by rho about x; square to a shaft at a
+// distance along it).
+TEST(Edits, PlanesAreAddedCheckedAndConstructed) {
+  Mechanism m = linkage::test::example("rssr-crank-rocker");
+  std::string why;
+  const Plane inclined = planeInclinedAboutX(newPlaneName(m), Vec3(111, 134.5, 53.5), 23);
+  EXPECT_EQ(inclined.name, "plane2");
+  // rho = 23 degrees: y (0, cos 23, sin 23), the spec's example's normal up to sign.
+  EXPECT_LT((inclined.yAxis - Vec3(0, 0.9205048534524404, 0.39073112848927377)).norm(), 1e-15);
+  ASSERT_TRUE(addPlane(m, inclined, &why)) << why;
+  ASSERT_TRUE(planeNamed(m, "plane2"));
+  EXPECT_EQ(newPlaneName(m), "plane3");
+  EXPECT_FALSE(addPlane(m, inclined, &why));
+  EXPECT_NE(why.find("already"), std::string::npos) << why;
+  Plane bad = inclined;
+  bad.name = "skew";
+  bad.yAxis = Vec3(0, 1, 0.1);
+  const Mechanism before = m;
+  EXPECT_FALSE(addPlane(m, bad, &why));
+  EXPECT_NE(why.find("planes.skew.y_axis"), std::string::npos) << why;
+  EXPECT_EQ(m.planes->size(), before.planes->size());
+  bad = inclined;
+  bad.name = "drawing";
+  EXPECT_FALSE(addPlane(m, bad, &why));
+  // The crank's shaft at O, along z: a plane 12 mm along it, the drawing's axes.
+  const PointId o = m.pointNamed(m.ground()->id, "O")->id;
+  const PointId h = m.pointNamed(m.ground()->id, "H")->id;
+  ASSERT_EQ(shafts(m), (std::vector<PointId>{o, h}));
+  const std::optional<Plane> onShaft = planeOnShaft(m, "cam", o, 12);
+  ASSERT_TRUE(onShaft);
+  EXPECT_LT((onShaft->origin - Vec3(0, 0, 12)).norm(), 1e-15);
+  EXPECT_EQ(onShaft->xAxis, Vec3::UnitX());
+  EXPECT_EQ(onShaft->yAxis, Vec3::UnitY());
+  // The rocker's shaft at H (0, 0, 80), along the rocker plane's normal, x.
+  const std::optional<Plane> onRocker = planeOnShaft(m, "arm", h, -5);
+  ASSERT_TRUE(onRocker);
+  EXPECT_LT((onRocker->origin - Vec3(-5, 0, 80)).norm(), 1e-12);
+  EXPECT_TRUE(parallel(*onRocker, *planeNamed(m, "rocker")));
+  EXPECT_FALSE(planeOnShaft(m, "x", m.pointNamed(m.bodyNamed("crank")->id, "A")->id, 0));
+}
+
+// A ball rod between two planes' points, as the 3D view's picks make it; the refusals the file
+// format names (one body, both on the ground, no length).
+TEST(Edits, ABallRodJoinsPointsOfAnyPlanes) {
+  Mechanism m = linkage::test::example("rssr-crank-rocker");
+  const Body* crank = m.bodyNamed("crank");
+  const Body* rocker = m.bodyNamed("rocker");
+  const PointId o = m.pointNamed(crank->id, "O")->id, a = m.pointNamed(crank->id, "A")->id;
+  const PointId h = m.pointNamed(rocker->id, "H")->id, c = m.pointNamed(rocker->id, "C")->id;
+  const PointId g = m.pointNamed(m.ground()->id, "O")->id,
+                gh = m.pointNamed(m.ground()->id, "H")->id;
+  std::string why;
+  const size_t joints = m.joints.size();
+  const JointId rod = addBallRod(m, a, h, &why);
+  ASSERT_TRUE(rod) << why;
+  EXPECT_EQ(m.joints.size(), joints + 1);
+  EXPECT_EQ(toString(m.joint(rod)->type), std::string("ball-rod"));
+  EXPECT_EQ(m.joint(rod)->a, a);
+  EXPECT_EQ(m.joint(rod)->b, h);
+  EXPECT_EQ(checkJoints(m), "");
+  EXPECT_FALSE(addBallRod(m, o, a, &why));
+  EXPECT_NE(why.find("one body"), std::string::npos) << why;
+  EXPECT_FALSE(addBallRod(m, g, gh, &why));  // both on the ground: one body
+  EXPECT_NE(why.find("one body"), std::string::npos) << why;
+  EXPECT_FALSE(addBallRod(m, g, o, &why));  // crank.O is drawn on ground.O
+  EXPECT_NE(why.find("no length"), std::string::npos) << why;
+  EXPECT_FALSE(addBallRod(m, c, c, &why));
+  EXPECT_EQ(m.joints.size(), joints + 1);
 }
 
 }  // namespace

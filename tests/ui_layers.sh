@@ -21,6 +21,7 @@ docks:       figures
 elements:    document draw forms
 canvas:      document draw elements
 tools:       document draw elements canvas
+view3d:      document draw tools
 properties:  document forms elements tools
 mechanisms:  document tools
 animation:   document

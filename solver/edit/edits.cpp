@@ -5,6 +5,7 @@
 
 #include "linkage/elements.h"
 #include "linkage/guide.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -71,9 +72,14 @@ std::string newSlotName(const Mechanism& m, BodyId body) {
   }
 }
 
-BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::string* why) {
+BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::string* why,
+               const std::string& plane) {
   if (vertices.size() < 2) {
     fail(why, "a link needs two points at least");
+    return {};
+  }
+  if (!planeNamed(m, plane)) {
+    fail(why, "there is no plane \"" + plane + "\" to draw the link in");
     return {};
   }
   for (const LinkVertex& v : vertices)
@@ -82,6 +88,8 @@ BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::strin
       return {};
     }
   const BodyId b = m.addBody(newBodyName(m));
+  // The drawing plane is written as no plane at all: a planar file stays as it was.
+  if (!plane.empty() && plane != "drawing") m.body(b)->plane = plane;
   for (const LinkVertex& v : vertices) {
     if (v.pinTo) {
       const Point target = *m.point(v.pinTo);
@@ -96,13 +104,17 @@ BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::strin
   return b;
 }
 
-PointId addGroundPoint(Mechanism& m, const Vec2& at, PointId point) {
+PointId addGroundPoint(Mechanism& m, const Vec2& at, PointId point, const std::string& plane) {
   const Body* g = m.ground();
-  if (!g) return {};
+  const Plane* pl = planeNamed(m, plane);
+  if (!g || !pl) return {};
   const BodyId ground = g->id;
   std::string name = newPointName(m, ground);
   if (const Point* p = m.point(point); p && pointNameFree(m, ground, p->name)) name = p->name;
-  const PointId gp = m.addPoint(ground, name, at);
+  const bool drawing = plane.empty() || plane == "drawing";
+  const Vec3 w = pl->world(at);
+  const PointId gp = m.addPoint(ground, name, drawing ? at : Vec2(w.x(), w.y()));
+  if (!drawing) m.point(gp)->third = w.z();
   if (point) m.addPin(gp, point);
   return gp;
 }
@@ -197,6 +209,8 @@ BodyId addBlock(Mechanism& m, PointId point, SlotId slot, const Vec2& at, std::s
   if (!pointAndSlot(m, point, slot, why)) return {};
   const std::string name = m.point(point)->name;
   const BodyId block = m.addBody(newBodyName(m, "block"));
+  const Body* guide = m.body(m.slot(slot)->body);
+  m.body(block)->plane = guide->ground ? m.body(m.point(point)->body)->plane : guide->plane;
   const PointId bp = m.addPoint(block, name, at);
   m.addPin(point, bp);
   m.addSlider(bp, slot);
@@ -225,6 +239,96 @@ bool setDriver(Mechanism& m, JointId pin, std::string* why) {
   d.joint = pin;
   m.driver = d;
   return true;
+}
+
+std::string newPlaneName(const Mechanism& m) {
+  for (int n = 2;; ++n) {
+    std::string name = "plane";
+    name += std::to_string(n);
+    if (!planeNamed(m, name)) return name;
+  }
+}
+
+bool addPlane(Mechanism& m, const Plane& p, std::string* why) {
+  if (planeNamed(m, p.name) && !p.name.empty()) {
+    fail(why, "a plane is named \"" + p.name + "\" already");
+    return false;
+  }
+  Mechanism next = m;
+  if (!next.planes) next.planes.emplace();
+  next.planes->push_back(p);
+  // The file's own check, so that nothing is added that a file could not hold.
+  if (const std::string problem = planesProblem(next); !problem.empty()) {
+    fail(why, problem);
+    return false;
+  }
+  m = std::move(next);
+  return true;
+}
+
+Plane planeInclinedAboutX(const std::string& name, const Vec3& origin, double rhoDeg) {
+  const double r = rhoDeg * M_PI / 180;
+  Plane p;
+  p.name = name;
+  p.origin = origin;
+  p.xAxis = Vec3::UnitX();
+  p.yAxis = Vec3(0, std::cos(r), std::sin(r));
+  return p;
+}
+
+namespace {
+// The moving body turning on ground point `pivot`, or nullptr.
+const Body* turningOn(const Mechanism& m, PointId pivot) {
+  const Point* g = m.point(pivot);
+  if (!g || !m.body(g->body) || !m.body(g->body)->ground) return nullptr;
+  for (const Joint& j : m.joints) {
+    if (kindOf(j).role != Role::Revolute || (j.a != pivot && j.b != pivot)) continue;
+    const Point* other = m.point(j.a == pivot ? j.b : j.a);
+    if (const Body* b = other ? m.body(other->body) : nullptr; b && !b->ground) return b;
+  }
+  return nullptr;
+}
+}  // namespace
+
+std::vector<PointId> shafts(const Mechanism& m) {
+  std::vector<PointId> out;
+  for (const Point& p : m.points)
+    if (turningOn(m, p.id)) out.push_back(p.id);
+  return out;
+}
+
+std::optional<Plane> planeOnShaft(const Mechanism& m, const std::string& name, PointId pivot,
+                                  double along) {
+  const Body* b = turningOn(m, pivot);
+  if (!b) return std::nullopt;
+  Plane p = planeOf(m, b->id);
+  p.name = name;
+  p.extras = {};
+  p.origin = worldOf(m, *m.point(pivot)) + along * p.normal();
+  return p;
+}
+
+JointId addBallRod(Mechanism& m, PointId a, PointId b, std::string* why) {
+  const Point* pa = m.point(a);
+  const Point* pb = m.point(b);
+  if (!pa || !pb || a == b) {
+    fail(why, "pick two points, one at each end of the rod");
+    return {};
+  }
+  // Both on the ground is this case too: the ground is one body.
+  if (pa->body == pb->body) {
+    fail(why, "both ends are on one body: a rod joins two bodies");
+    return {};
+  }
+  if ((worldOf(m, *pa) - worldOf(m, *pb)).norm() < 1e-9) {
+    fail(why, "the two points are drawn at one place: a rod of no length");
+    return {};
+  }
+  Joint j;
+  j.type = elementKindNamed("ball-rod")->type;
+  j.a = a;
+  j.b = b;
+  return m.addJoint(j);
 }
 
 void toggleOutput(Mechanism& m, PointId p) {

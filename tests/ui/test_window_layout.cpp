@@ -58,8 +58,8 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
   EXPECT_EQ(words(menu(file, "Export")),
             QStringList({"exportTable", "exportFigure", "exportAnimation", "exportForcesTable",
                          "exportForcesFigure", "exportCycleFigure", "exportTimingTable"}));
-  EXPECT_EQ(words(menu(bar, "Edit")),
-            QStringList({"undo", "redo", "-", "showHistory", "-", "delete", "flip"}));
+  EXPECT_EQ(words(menu(bar, "Edit")), QStringList({"undo", "redo", "-", "showHistory", "-",
+                                                   "delete", "flip", "addPlane", "addBallRod"}));
   ASSERT_EQ(tools(w).size(), 6 + 3);  // select link ground slot driver output, three kinds'
   EXPECT_EQ(words(menu(bar, "Tools")), tools(w) + QStringList({"-", "snapGrid"}));
   EXPECT_EQ(words(menu(bar, "View")), QStringList({"fit",
@@ -75,6 +75,8 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
                                                    "showTransmission",
                                                    "darkPalette",
                                                    "detachablePanels",
+                                                   "hideOtherPlanes",
+                                                   "[3D View Direction]",
                                                    "-",
                                                    "Properties",
                                                    "Instant Centres",
@@ -82,7 +84,8 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
                                                    "showForcesPanel",
                                                    "showDesignChecks",
                                                    "showMechanisms",
-                                                   "showCyclePanel"}));
+                                                   "showCyclePanel",
+                                                   "show3dView"}));
   EXPECT_EQ(words(menu(bar, "Animation")),
             QStringList({"play", "stepBack", "stepForward", "toStart", "-", "slower", "faster"}));
   EXPECT_EQ(words(menu(bar, "Analysis")),
@@ -133,7 +136,9 @@ TEST(WindowLayout, EveryToolbarHoldsItsEntriesInOrder) {
   EXPECT_EQ(bars.size(), 4u);
   EXPECT_EQ(bars["fileToolBar"], QStringList({"new", "open", "save", "undo", "redo"}));
   EXPECT_EQ(bars["toolsToolBar"], tools(w) + QStringList({"-", "delete", "flip"}));
-  EXPECT_EQ(bars["viewToolBar"], QStringList({"fit", "showGrid", "showCentres", "showTraces"}));
+  // The plane chooser last (shown for a machine in space only).
+  EXPECT_EQ(bars["viewToolBar"],
+            QStringList({"fit", "showGrid", "showCentres", "showTraces", "widget"}));
   EXPECT_EQ(bars["animationToolBar"],
             QStringList({"play", "stepBack", "stepForward", "toStart", "widget"}));
   EXPECT_EQ(w.toolBarArea(w.findChild<QToolBar*>("toolsToolBar")), Qt::LeftToolBarArea);

@@ -215,13 +215,68 @@ void CanvasScene::rebuild() {
 }
 
 bool CanvasScene::bodyHidden(BodyId b) const {
-  return std::find(hidden_.begin(), hidden_.end(), b) != hidden_.end();
+  return std::find(hidden_.begin(), hidden_.end(), b) != hidden_.end() ||
+         std::find(offPlane_.begin(), offPlane_.end(), b) != offPlane_.end();
+}
+
+void CanvasScene::setShownPlane(const std::string& name) {
+  const std::string plane = name == "drawing" ? std::string() : name;
+  if (plane == plane_) return;
+  plane_ = plane;
+  applyMechanisms();
+  updateTraces();
+  emit redrawn();
+}
+
+void CanvasScene::setOtherPlanesHidden(bool hide) {
+  if (hide == hideOtherPlanes_) return;
+  hideOtherPlanes_ = hide;
+  applyMechanisms();
+}
+
+bool CanvasScene::onShownPlane(BodyId id) const {
+  const Body* b = shownMechanism().body(id);
+  return !b || b->ground || b->plane == plane_ || (b->plane == "drawing" && plane_.empty());
+}
+
+void CanvasScene::applyPlanes() {
+  const Mechanism& m = shownMechanism();
+  offPlane_.clear();
+  for (const Body& b : m.bodies)
+    if (!onShownPlane(b.id)) offPlane_.push_back(b.id);
+  // A joint is of the plane when a body it joins is (a ball rod from it to another plane is).
+  auto jointOff = [&](JointId id) {
+    const Joint* j = m.joint(id);
+    if (!j || offPlane_.empty()) return false;
+    bool anyMoving = false;
+    for (PointId p : {j->a, j->b})
+      if (const Point* q = m.point(p)) {
+        if (onShownPlane(q->body) && !m.body(q->body)->ground) return false;
+        anyMoving = anyMoving || !m.body(q->body)->ground;
+      }
+    if (const Slot* sl = m.slot(j->slot); sl && onShownPlane(sl->body) && !m.body(sl->body)->ground)
+      return false;
+    return anyMoving;
+  };
+  auto fade = [this](QGraphicsItem* item, bool off) {
+    if (off && hideOtherPlanes_) item->setVisible(false);
+    item->setOpacity(off ? 0.18 : 1.0);
+    item->setEnabled(!off);
+  };
+  for (BodyItem* b : bodies_) fade(b, !onShownPlane(b->id()));
+  for (JointItem* j : joints_) fade(j, jointOff(j->joint()));
+  for (OutputItem* o : outputs_) {
+    const Point* p = m.point(o->point());
+    fade(o, p && !onShownPlane(p->body));
+  }
+  if (driver_ && m.driver) fade(driver_, jointOff(m.driver->joint));
 }
 
 void CanvasScene::applyMechanisms() {
   const Mechanism& m = shownMechanism();
   mechanisms_ = subMechanisms(m);
   hidden_.clear();
+  offPlane_.clear();  // the mechanisms' visibility first; applyPlanes() then fades the planes
   std::vector<JointId> hiddenJoints;
   for (const SubMechanism& s : mechanisms_)
     if (s.hidden) {
@@ -251,6 +306,7 @@ void CanvasScene::applyMechanisms() {
     o->setVisible(!p || !bodyHidden(p->body));
   }
   if (driver_ && m.driver) driver_->setVisible(!jointHidden(m.driver->joint));
+  applyPlanes();
 }
 
 void CanvasScene::updatePose() {

@@ -65,7 +65,20 @@ class CanvasScene : public QGraphicsScene {
   // The machine's mechanisms as drawn (names, colours, visibility): a hidden one's bodies,
   // joints, outputs, traces and centres are not drawn; a coloured one's bodies are in its colour.
   const std::vector<SubMechanism>& mechanisms() const { return mechanisms_; }
+  // Not drawn at full strength and not picked: a hidden mechanism's body, or one of a plane
+  // other than the one shown.
   bool bodyHidden(BodyId b) const;
+
+  // A machine in space (linkage/space.h) is edited one plane at a time: the canvas draws the
+  // bodies of plane `name` ("" or "drawing": the drawing plane) and the ground; the other
+  // planes' bodies, drawn in their own planes' coordinates over these, faint (or not at all,
+  // `hideOthers`), and nothing of them is picked. New bodies go into this plane.
+  void setShownPlane(const std::string& name);
+  const std::string& shownPlane() const { return plane_; }
+  void setOtherPlanesHidden(bool hide);
+  bool otherPlanesHidden() const { return hideOtherPlanes_; }
+  // Of the shown plane, or the ground (on every plane), or of a planar machine.
+  bool onShownPlane(BodyId b) const;
   // The blocks and pins that leave their slots over a turn (drawn in the warning colour).
   const std::vector<SlotWarning>& slotWarnings() { return doc_ ? warnings_.of(*doc_) : none_; }
   QString slotWarningText() { return doc_ ? warnings_.text(*doc_) : QString(); }
@@ -99,6 +112,8 @@ class CanvasScene : public QGraphicsScene {
   std::vector<Drawing::Centre> determinedCentres(const Kinematics& k) const;
   void clearItems();
   void applyMechanisms();
+  // The bodies, joints and outputs of the other planes faint or hidden (after applyMechanisms).
+  void applyPlanes();
 
   QPointer<Document> doc_;
   CanvasContext ctx_;
@@ -115,6 +130,9 @@ class CanvasScene : public QGraphicsScene {
 
   std::vector<SubMechanism> mechanisms_;
   std::vector<BodyId> hidden_;
+  std::vector<BodyId> offPlane_;
+  std::string plane_;
+  bool hideOtherPlanes_ = false;
   SlotWarnings warnings_;
   const std::vector<SlotWarning> none_;
   std::vector<BodyItem*> bodies_;

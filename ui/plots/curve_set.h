@@ -34,6 +34,10 @@ class CurveSet {
            const Status& solve = Status::success());
 
   const QString& title() const { return title_; }
+  // The frame a point's x and y are in, for the axis labels: "" in a planar machine; in a
+  // machine in space the plane whose axes they are (its plane class's first: the point's own
+  // plane, or one parallel to it), as "plane rocker".
+  const QString& frame() const { return frame_; }
   const CurveRequest& request() const { return request_; }
   // Ok; or why the curves stop early or are missing (the sweep's status, an unknown target).
   const Status& status() const { return status_; }
@@ -57,7 +61,7 @@ class CurveSet {
   Spectrum harmonics(Order o, int maxK, Status* why) const;
 
  private:
-  QString title_, crankLabel_;
+  QString title_, crankLabel_, frame_;
   CurveRequest request_;
   Quantity quantity_;
   Status status_;

@@ -294,7 +294,7 @@ void MotionFigure::addPlots(const std::vector<const CurveSet*>& sets, const Opti
   for (int r = 0; r < rows(); ++r) {
     ValueRange range;
     for (int c = 0; c < columns_; ++c) {
-      QCPAxisRect* rect = addAxisRect(req, opt.units, r, c, firstRow);
+      QCPAxisRect* rect = addAxisRect(req, opt.units, r, c, firstRow, sets[0]->frame());
       int notes = 0;
       for (int i : setsInColumn(sets.size(), side, c)) {
         const Curve& curve = sets[i]->curve(rowOrders_[r]);
@@ -311,7 +311,7 @@ void MotionFigure::addPlots(const std::vector<const CurveSet*>& sets, const Opti
 }
 
 QCPAxisRect* MotionFigure::addAxisRect(const CurveRequest& req, const PlotUnits& units, int row,
-                                       int column, int firstRow) {
+                                       int column, int firstRow, const QString& frame) {
   auto* rect = new QCPAxisRect(plot_);
   plot_->plotLayout()->addElement(firstRow + row, column, rect);
   rects_.push_back(rect);
@@ -328,6 +328,11 @@ QCPAxisRect* MotionFigure::addAxisRect(const CurveRequest& req, const PlotUnits&
   const Order o = rowOrders_[row];
   labels_.emplace_back(axisLabel(req.body, req.component, req.directionDeg, o, units),
                        shortAxisLabel(req.body, req.component, req.directionDeg, o, units));
+  // In a machine in space x and y are of a plane, not of the world: the label says which.
+  if (!frame.isEmpty() && !req.body && req.component != Quantity::Component::Magnitude) {
+    labels_.back().first += QStringLiteral(", %1").arg(frame);
+    labels_.back().second += QStringLiteral(" (%1)").arg(frame);
+  }
   rect->axis(QCPAxis::atLeft)->setLabel(labels_.back().first);
   corners_.push_back(addCornerLabel(plot_, rect, labels_.back().second));
   return rect;

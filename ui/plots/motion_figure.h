@@ -74,8 +74,9 @@ class MotionFigure : public CrankFigure {
   void addTitle(const std::vector<const CurveSet*>& sets, int column, bool side);
   bool addStatusNote(const std::vector<const CurveSet*>& sets, int column, bool side);
   void addPlots(const std::vector<const CurveSet*>& sets, const Options& opt, int firstRow);
+  // `frame`: the plane a point's x and y are of ("" in a planar machine), for the label.
   QCPAxisRect* addAxisRect(const CurveRequest& req, const PlotUnits& units, int row, int column,
-                           int firstRow);
+                           int firstRow, const QString& frame);
   void addCurve(const CurveSet& set, int index, Order o, QCPAxisRect* rect,
                 const CurveRequest& main, const Options& opt, ValueRange& range);
   void addLegendEntries();

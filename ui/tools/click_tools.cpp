@@ -42,13 +42,13 @@ void GroundTool::press(const CanvasMouse& e) {
       say(tr("%1 is on the ground already").arg(QString::fromStdString(m.pointLabel(p->id))), true);
       return;
     }
-    const PointId gp = addGroundPoint(m, e.snap.at, p->id);
+    const PointId gp = addGroundPoint(m, e.snap.at, p->id, ctx().scene->shownPlane());
     const QString what = QString::fromStdString(m.pointLabel(gp));
     commitEdit(doc, tr("Pin to ground at %1").arg(what), std::move(m));
     say(tr("Pinned to the ground at %1").arg(what));
     return;
   }
-  const PointId gp = addGroundPoint(m, e.snap.at);
+  const PointId gp = addGroundPoint(m, e.snap.at, {}, ctx().scene->shownPlane());
   const QString what = QString::fromStdString(m.pointLabel(gp));
   commitEdit(doc, tr("Add ground point %1").arg(what), std::move(m));
   say(tr("Added ground point %1").arg(what));

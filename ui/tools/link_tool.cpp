@@ -97,7 +97,8 @@ void LinkTool::finish() {
   Document* doc = ctx().doc;
   Mechanism m = doc->design();
   std::string why;
-  const BodyId b = addLink(m, vertices_, &why);
+  // Into the plane the canvas shows (a machine in space is drawn one plane at a time).
+  const BodyId b = addLink(m, vertices_, &why, ctx().scene->shownPlane());
   if (!b) {
     say(QString::fromStdString(why), true);
     cancel();

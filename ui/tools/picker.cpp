@@ -17,7 +17,7 @@ void pickCoupling(const CanvasScene& s, const Vec2& world, double px, Pick& pick
   double bestLine = kCouplingPixels * px, bestArea = INFINITY;  // mm
   JointId inside;
   for (const JointItem* j : s.jointItems()) {
-    if (!j->pickedByLines() || !j->isVisible()) continue;
+    if (!j->pickedByLines() || !j->isVisible() || !j->isEnabled()) continue;
     if (const double d = j->distanceToLines(world); d < bestLine) {
       bestLine = d;
       pick.coupling = j->joint();
@@ -84,7 +84,9 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
     auto* b = dynamic_cast<BodyItem*>(item);
     auto* j = b ? nullptr : dynamic_cast<JointItem*>(item);
     const BodyId drawn = j ? j->drawnBody() : BodyId{};
-    if ((!b && !drawn) || !item->isVisible() || !item->contains(item->mapFromScene(q))) continue;
+    if ((!b && !drawn) || !item->isVisible() || !item->isEnabled() ||
+        !item->contains(item->mapFromScene(q)))
+      continue;
     pick.body = b ? b->id() : drawn;
     pick.onBlock = !b;
     break;

@@ -25,8 +25,9 @@ void Toolbox::pointMenu(QMenu& menu, const Point& point, const Vec2& at) {
   });
   if (!m.body(point.body)->ground)
     menu.addAction(tr("Pin to the Ground Here"), this, [this, id, at, label] {
+      const std::string plane = ctx_.scene->shownPlane();
       editWith(tr("Pin to ground at %1").arg(label),
-               [&](Mechanism& n, std::string&) { return bool(addGroundPoint(n, at, id)); });
+               [&](Mechanism& n, std::string&) { return bool(addGroundPoint(n, at, id, plane)); });
     });
   for (const ElementUi* k : elementUis())
     if (k->pointMenu) k->pointMenu(*this, menu, id);
@@ -125,8 +126,9 @@ QMenu* Toolbox::contextMenu(const CanvasMouse& e, QWidget* parent) {
   if (body && !body->ground && !point) bodyMenu(*menu, *body, e.snap.at);
   if (!point && !joint && (!body || body->ground)) {
     menu->addAction(tr("Add a Ground Point Here"), this, [this, at = e.snap.at] {
+      const std::string plane = ctx_.scene->shownPlane();
       editWith(tr("Add ground point"),
-               [&](Mechanism& n, std::string&) { return bool(addGroundPoint(n, at)); });
+               [&](Mechanism& n, std::string&) { return bool(addGroundPoint(n, at, {}, plane)); });
     });
   }
   return menu;

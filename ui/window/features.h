@@ -15,4 +15,5 @@
 #include "window/plots_feature.h"
 #include "window/properties_feature.h"
 #include "window/tools_feature.h"
+#include "window/view3d_feature.h"
 #include "window/view_feature.h"

@@ -44,6 +44,7 @@ class PlotsFeature;
 class PropertiesFeature;
 struct Recovery;
 class ToolsFeature;
+class View3dFeature;
 class ViewFeature;
 class WindowFeature;
 class WindowLayout;
@@ -77,6 +78,7 @@ class MainWindow : public QMainWindow {
   ForcesFeature& forces() const { return *forces_; }
   MechanismsFeature& mechanisms() const { return *mechanisms_; }
   CycleFeature& cycle() const { return *cycle_; }
+  View3dFeature& view3d() const { return *view3d_; }
 
   // Every open main window.
   static QList<MainWindow*> windows();
@@ -156,6 +158,7 @@ class MainWindow : public QMainWindow {
   ForcesFeature* forces_ = nullptr;
   MechanismsFeature* mechanisms_ = nullptr;
   CycleFeature* cycle_ = nullptr;
+  View3dFeature* view3d_ = nullptr;
   QFileSystemWatcher* watcher_ = nullptr;
   QString watched_;
   QByteArray onDisk_;    // the file's contents as this window last read or wrote them

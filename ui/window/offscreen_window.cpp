@@ -9,15 +9,21 @@
 #include <QThread>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
+#include "canvas/canvas_scene.h"
 #include "canvas/canvas_view.h"
 #include "document/document.h"
+#include "linkage/space.h"
+#include "view3d/view3d_widget.h"
 #include "window/centres_feature.h"
 #include "window/cycle_feature.h"
 #include "window/design_feature.h"
 #include "window/forces_feature.h"
 #include "window/main_window.h"
 #include "window/plots_feature.h"
+#include "window/tools_feature.h"
+#include "window/view3d_feature.h"
 #include "window/view_feature.h"
 
 namespace linkage::ui {
@@ -79,6 +85,15 @@ int setUpOffscreen(MainWindow& w, const OffscreenOptions& o) {
     return 2;
   }
   showAsked(w, o);
+  if (!o.plane.isEmpty()) {
+    const Mechanism& m = w.document()->design();
+    if (o.plane != QStringLiteral("drawing") && !planeNamed(m, o.plane.toStdString())) {
+      std::fprintf(stderr, "linkage: --plane: the model has no plane \"%s\"\n",
+                   qPrintable(o.plane));
+      return 2;
+    }
+    w.view3d().choosePlane(o.plane.toStdString());
+  }
   w.show();
   settle();
   w.canvas()->fitToMechanism();
@@ -101,11 +116,31 @@ int setUpOffscreen(MainWindow& w, const OffscreenOptions& o) {
   return 0;
 }
 
+View3dWidget* makeOffscreen3dView(MainWindow& w, const OffscreenOptions& o) {
+  auto* v = new View3dWidget;
+  v->setAttribute(Qt::WA_DeleteOnClose);
+  v->setDocument(w.document());
+  v->setSelection(w.tools().selection());
+  v->setPlane(w.scene()->shownPlane());
+  v->resize(o.size);
+  v->showView(isSpatial(w.document()->design()) ? Projection::View::Isometric
+                                                : Projection::View::Front);
+  v->show();
+  settle();
+  return v;
+}
+
 int writeScreenshot(const OffscreenOptions& o, const QString& out) {
   MainWindow w;
   if (const int status = setUpOffscreen(w, o)) return status;
 
-  const QImage img = w.grab().toImage();
+  QImage img;
+  if (o.view3d) {
+    std::unique_ptr<View3dWidget> v(makeOffscreen3dView(w, o));
+    img = v->grab().toImage();
+  } else {
+    img = w.grab().toImage();
+  }
   if (!img.save(out, "PNG")) {
     std::fprintf(stderr, "linkage: cannot write %s\n", qPrintable(out));
     return 2;

@@ -16,6 +16,11 @@ struct OffscreenOptions {
   bool ics = false, plots = false, dark = false, forces = false, cycle = false;
   // The design checks: extreme positions, transmission arcs, the design-checks dock.
   bool extremes = false, transmission = false, checks = false;
+  // The picture is the 3D view alone, at `size`, isometric (from the front for a
+  // planar machine) (`--3d`).
+  bool view3d = false;
+  // The plane the canvas shows (`--plane`; "" the drawing plane).
+  QString plane;
   QSize size{1280, 800};
 };
 
@@ -28,8 +33,15 @@ bool parseOffscreen(const QString& angle, const QString& size, OffscreenOptions&
 // model that cannot be opened, a crank angle that cannot be reached).
 int setUpOffscreen(MainWindow& w, const OffscreenOptions& o);
 
-// The window as the options set it up, written to the PNG `out`. Exit status: 0, or 2 with a
-// message on standard error (setUpOffscreen's, or a file that cannot be written).
+// The 3D view alone at the options' size, of the document of `w` (set up), isometric (a
+// planar machine from the front) and fitted, as it is painted: what `--3d` writes and the 3D frame
+// benchmark animates.
+class View3dWidget;
+View3dWidget* makeOffscreen3dView(MainWindow& w, const OffscreenOptions& o);
+
+// The window as the options set it up (or its 3D view alone, `view3d`), written to the PNG `out`.
+// Exit status: 0, or 2 with a message on standard error (setUpOffscreen's, or a file that cannot be
+// written).
 int writeScreenshot(const OffscreenOptions& o, const QString& out);
 
 }  // namespace linkage::ui

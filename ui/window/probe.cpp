@@ -32,6 +32,7 @@
 #include "properties/inspector_panel.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
+#include "view3d/view3d_widget.h"
 #include "window/features.h"
 #include "window/mechanisms_feature.h"
 #include "window/tools_feature.h"
@@ -74,6 +75,40 @@ void spinBoxes(MainWindow& w, QStringList& out) {
     out << QStringLiteral("spin %1: %2").arg(s->objectName(), s->text());
     out << QStringLiteral("at spin %1: %2 %3").arg(s->objectName()).arg(c.x()).arg(c.y());
   }
+}
+
+// The machine in space: the plane the canvas shows, the bodies it draws faint, the chooser and
+// the 3D view where they are on the screen, and the 3D view's direction.
+void spaceText(MainWindow& w, QStringList& out) {
+  const std::string& plane = w.scene()->shownPlane();
+  out << QStringLiteral("plane: ") + QString::fromStdString(plane.empty() ? "drawing" : plane);
+  QStringList faint;
+  for (const Body& b : w.document()->design().bodies)
+    if (BodyItem* item = w.scene()->bodyItem(b.id); item && item->opacity() < 1)
+      faint << QString::fromStdString(b.name);
+  out << QStringLiteral("faint bodies: ") + faint.join(QLatin1Char(' '));
+  if (QComboBox* c = w.view3d().planeChooser; c->isVisible()) {
+    const QPoint at = c->mapToGlobal(c->rect().center());
+    out << QStringLiteral("at combo planeChooser: %1 %2").arg(at.x()).arg(at.y());
+  }
+  View3dWidget* v = w.view3d().view();
+  // A dock behind another's tab is moved off the window, "visible".
+  const QRect inWindow(v->mapTo(&w, QPoint(0, 0)), v->size());
+  if (v->visibleRegion().isEmpty() || !w.rect().contains(inWindow)) {
+    out << QStringLiteral("view3d: hidden");
+    return;
+  }
+  const QPoint o = v->mapToGlobal(QPoint(0, 0));
+  out << QStringLiteral("view3d: shown %1 %2 %3 %4")
+             .arg(o.x())
+             .arg(o.y())
+             .arg(v->width())
+             .arg(v->height());
+  const Eigen::Matrix3d& r = v->projection().rotation();
+  out << QStringLiteral("view3d eye: %1 %2 %3")
+             .arg(r(2, 0), 0, 'f', 3)
+             .arg(r(2, 1), 0, 'f', 3)
+             .arg(r(2, 2), 0, 'f', 3);
 }
 
 void windowText(MainWindow* w, QStringList& out) {
@@ -137,6 +172,7 @@ void windowText(MainWindow* w, QStringList& out) {
     out << QStringLiteral("at field %1: %2 %3").arg(label).arg(c.x()).arg(c.y());
   }
   spinBoxes(*w, out);
+  spaceText(*w, out);
   out << w->mechanisms().panel->probeLines();
   out << w->cycle().panel()->probeLines();
   out << QStringLiteral("clearance marks: %1").arg(w->cycle().marks()->marks().size());

@@ -67,15 +67,15 @@ WindowLayout::WindowLayout(QMainWindow* w) : QObject(w) {
 QWidget* WindowLayout::target(Slot s) const {
   if (within(s, Slot::FileNew, Slot::FileQuit)) return file_;
   if (within(s, Slot::ExportTable, Slot::ExportTimingTable)) return exports_;
-  if (within(s, Slot::EditUndo, Slot::EditFlip)) return edit_;
+  if (within(s, Slot::EditUndo, Slot::EditBallRod)) return edit_;
   if (within(s, Slot::ToolsTools, Slot::ToolsSnap)) return tools_;
-  if (within(s, Slot::ViewFit, Slot::ViewCycleDock)) return view_;
+  if (within(s, Slot::ViewFit, Slot::View3dDock)) return view_;
   if (within(s, Slot::AnimationPlay, Slot::AnimationFaster)) return animation_;
   if (within(s, Slot::AnalysisDesignChecks, Slot::AnalysisWatchClearance)) return analysis_;
   if (s == Slot::HelpAbout) return help_;
   if (within(s, Slot::FileBarNew, Slot::FileBarRedo)) return fileBar_;
   if (within(s, Slot::ToolsBarTools, Slot::ToolsBarFlip)) return toolsBar_;
-  if (within(s, Slot::ViewBarFit, Slot::ViewBarTraces)) return viewBar_;
+  if (within(s, Slot::ViewBarFit, Slot::ViewBarPlane)) return viewBar_;
   return animationBar_;
 }
 
@@ -94,10 +94,12 @@ void WindowLayout::add(Slot s, QAction* a) {
   entries_[static_cast<size_t>(s)].push_back(a);
 }
 
-void WindowLayout::addWidget(Slot s, QWidget* widget) {
+QAction* WindowLayout::addWidget(Slot s, QWidget* widget) {
   auto* bar = qobject_cast<QToolBar*>(target(s));
   Q_ASSERT(bar);
-  entries_[static_cast<size_t>(s)].push_back(bar->insertWidget(before(s), widget));
+  QAction* a = bar->insertWidget(before(s), widget);
+  entries_[static_cast<size_t>(s)].push_back(a);
+  return a;
 }
 
 QMenu* WindowLayout::addMenu(Slot s, const QString& title) {

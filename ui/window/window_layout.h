@@ -48,6 +48,8 @@ enum class Slot {
   EditSeparator2,
   EditDelete,
   EditFlip,
+  EditAddPlane,
+  EditBallRod,
   // Tools
   ToolsTools,
   ToolsSeparator,
@@ -66,6 +68,8 @@ enum class Slot {
   ViewTransmission,
   ViewDark,
   ViewDetachable,
+  ViewHideOtherPlanes,
+  View3dDirections,
   ViewSeparator2,
   ViewPropertiesDock,
   ViewCentresDock,
@@ -74,6 +78,7 @@ enum class Slot {
   ViewDesignChecksDock,
   ViewMechanismsDock,
   ViewCycleDock,
+  View3dDock,
   // Animation
   AnimationPlay,
   AnimationStepBack,
@@ -111,6 +116,7 @@ enum class Slot {
   ViewBarGrid,
   ViewBarCentres,
   ViewBarTraces,
+  ViewBarPlane,
   AnimationBarPlay,
   AnimationBarStepBack,
   AnimationBarStepForward,
@@ -126,8 +132,8 @@ class WindowLayout : public QObject {
 
   // Puts `a` in its slot (after what the slot holds already).
   void add(Slot s, QAction* a);
-  // A widget in a toolbar's slot (the crank scrubber).
-  void addWidget(Slot s, QWidget* widget);
+  // A widget in a toolbar's slot (the crank scrubber): the action that shows or hides it.
+  QAction* addWidget(Slot s, QWidget* widget);
   // A submenu in a menu's slot, made here.
   QMenu* addMenu(Slot s, const QString& title);
 

@@ -28,16 +28,22 @@ struct LinkVertex {
   Vec2 at = Vec2::Zero();
   PointId pinTo;
 };
-BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::string* why = nullptr);
+// In a machine in space, `plane` names the plane it moves in ("": the drawing plane), and the
+// vertices are in that plane's coordinates; refused with `why` for a plane the machine has not.
+BodyId addLink(Mechanism& m, const std::vector<LinkVertex>& vertices, std::string* why = nullptr,
+               const std::string& plane = {});
 
 // A ground point at `at`, pinned to `point` when one is given (a ground pivot; `at` is where
-// the point is now).
-PointId addGroundPoint(Mechanism& m, const Vec2& at, PointId point = {});
+// the point is now). `at` in the coordinates of `plane` ("": the drawing plane): off the drawing
+// plane the ground point is written in the world, [x, y, z]. None for an unknown plane.
+PointId addGroundPoint(Mechanism& m, const Vec2& at, PointId point = {},
+                       const std::string& plane = {});
 // A point added to a body (a bar becomes a plate).
 PointId addBodyPoint(Mechanism& m, BodyId body, const Vec2& at);
 SlotId addBodySlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& p1);
 // A slider block at `point` (drawn at `at`, where the point is now) sliding in `slot`: a body
-// of its own with its point pinned to `point` and a slider joint in the slot.
+// of its own with its point pinned to `point` and a slider joint in the slot, in the plane of
+// the slot's body (of the point's, for a ground slot): a slider joins bodies of one plane.
 BodyId addBlock(Mechanism& m, PointId point, SlotId slot, const Vec2& at,
                 std::string* why = nullptr);
 JointId addPinInSlot(Mechanism& m, PointId point, SlotId slot, std::string* why = nullptr);
@@ -55,6 +61,29 @@ SlotId addBodyArcSlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& mid
 bool setDriver(Mechanism& m, JointId pin, std::string* why = nullptr);
 // Toggles a point among the outputs.
 void toggleOutput(Mechanism& m, PointId p);
+// Planes of a machine in space (linkage/space.h). A plane added to the file's planes, checked
+// as a file's are (a name not empty, not "drawing", not taken; axes unit and perpendicular to
+// 1e-9): false with `why` naming the field otherwise, and `m` as it was.
+bool addPlane(Mechanism& m, const Plane& p, std::string* why = nullptr);
+// A fresh plane name: "plane2", "plane3"...
+std::string newPlaneName(const Mechanism& m);
+// The plane inclined by `rhoDeg` about the world's x through `origin`: x (1, 0, 0), y (0, cos
+// rho, sin rho) (seed 004's rocker plane, rho = 23 degrees).
+Plane planeInclinedAboutX(const std::string& name, const Vec3& origin, double rhoDeg);
+// The plane square to the shaft at ground point `pivot` (a pin of the ground to a moving body:
+// the shaft is along that body's plane's normal), `along` mm from the pivot along the shaft, its
+// axes the body's plane's: where another crank on the same shaft turns. None when `pivot` is not
+// a ground point pinned to a moving body.
+std::optional<Plane> planeOnShaft(const Mechanism& m, const std::string& name, PointId pivot,
+                                  double along);
+// The ground points that are shafts (pinned to a moving body), file order.
+std::vector<PointId> shafts(const Mechanism& m);
+
+// A ball rod from point a to point b (any planes): they keep their drawn distance in space.
+// Refused with `why` for one point twice, two points of one body (both on the ground
+// included), or ends closer than 1e-9 mm as drawn.
+JointId addBallRod(Mechanism& m, PointId a, PointId b, std::string* why = nullptr);
+
 // A slider becomes a pin-in-slot and back.
 bool changeJointType(Mechanism& m, JointId j, JointType type, std::string* why = nullptr);
 // An edit drawn on the mechanism as it is shown, at the current crank angle, where a user
