@@ -6,6 +6,8 @@
 #include "cli_parser.h"
 #include "linkage/io/numbers.h"
 #include "linkage/limits.h"
+#include "linkage/space.h"
+#include "linkage/timing_text.h"
 
 namespace linkage::cli {
 
@@ -14,6 +16,7 @@ namespace {
 const char* kHelp =
     R"(usage: linkage-cli limits MODEL --point body.point [--direction DX,DY] [--steps N]
        linkage-cli limits MODEL --body NAME [--steps N]
+       linkage-cli limits MODEL --output OUTPUT [--steps N]
 
 The limit positions of MODEL over one turn of the crank: every crank angle where the point's
 velocity along the direction (or the body's angular velocity) is zero, found to 1e-9 degree by
@@ -24,6 +27,11 @@ largest value minus the smallest. Every local extreme is listed (a dwell shows a
   --direction DX,DY the direction (any length; default: the ground slot the point runs in,
                     pointing up, or right when horizontal; else +y)
   --body NAME       instead of a point: the body's angle from the drawing, in degrees (ccw)
+  --output OUTPUT   instead: any output a timing window takes (docs/timing.md), such as
+                    body.point:y, body.point:distance:body.point, and on a machine in space
+                    body.point:z or body.point:DX,DY,DZ (world)
+On a machine in space a point's position is the world's: --direction DX,DY is (DX, DY, 0) in
+the world, +y by default.
   --steps N         sampling intervals that bracket the roots (default 360)
 
 Output, CSV: event,crank_deg,value; one row "min" or "max" per local extreme in crank order
@@ -34,7 +42,7 @@ Exit status: 0 success, 2 bad input (options, file, a point the driver does not 
 )";
 
 struct Options {
-  std::string model, point, body;
+  std::string model, point, body, output;
   std::optional<Vec2> direction;
   int steps = 360;
 };
@@ -45,14 +53,15 @@ CLI::App* addOptions(Parser& parser, Options& o) {
   addModel(c, o.model);
   addText(c, "--point", o.point);
   addText(c, "--body", o.body);
+  addText(c, "--output", o.output);
   addPair(c, "--direction", o.direction, PairRule::NonZero);
   addWhole(c, "--steps", o.steps, 4, 1'000'000);
   return &c;
 }
 
 std::optional<int> checkOptions(const Options& o) {
-  if (o.point.empty() == o.body.empty()) {
-    error("limits: give either --point body.point or --body NAME");
+  if (o.point.empty() + o.body.empty() + o.output.empty() != 2) {
+    error("limits: give one of --point body.point, --body NAME or --output OUTPUT");
     return kBadInput;
   }
   if (o.direction && o.point.empty()) {
@@ -64,11 +73,19 @@ std::optional<int> checkOptions(const Options& o) {
 
 // What is measured: the point along the direction, or the body's angle; nullopt after the error.
 std::optional<LimitMeasure> measure(const Mechanism& m, const Options& o) {
+  if (!o.output.empty()) {
+    std::string why;
+    std::optional<LimitMeasure> x = parseMeasure(m, o.output, &why);
+    if (!x) error("--output " + o.output + ": " + why);
+    return x;
+  }
   if (!o.point.empty()) {
     std::optional<std::vector<PointId>> ids = outputPoints(m, {o.point});
     if (!ids) return std::nullopt;
     const PointId p = ids->front();
-    return LimitMeasure::along(p, o.direction.value_or(defaultDirection(m, p)));
+    // In space a slot's direction is in its plane, not the world's: +y there by default.
+    const Vec2 fallback = isSpatial(m) ? Vec2(0, 1) : defaultDirection(m, p);
+    return LimitMeasure::along(p, o.direction.value_or(fallback));
   }
   const Body* b = m.bodyNamed(o.body);
   if (!b) {

@@ -66,6 +66,12 @@ BENCHMARK_CAPTURE(kinematicStep, four_bar, std::string("four-bar-crank-rocker"),
     ->Name("step/four_bar");
 BENCHMARK_CAPTURE(kinematicStep, wanzer, std::string("wanzer-inversion-2"), true)
     ->Name("step/wanzer");
+// Machines in space (issue 27): the RSSR crank-rocker (a ball rod between a crank and a rocker
+// on crossed shafts: the spatial part of seed 004's needle arm), and seed 004's whole machine.
+BENCHMARK_CAPTURE(kinematicStep, rssr, std::string("rssr-crank-rocker"), true)
+    ->Name("step/rssr_space");
+BENCHMARK_CAPTURE(kinematicStep, overedge, std::string("overedge-machine"), true)
+    ->Name("step/overedge_machine_space");
 // The gear, belt and arc examples, in closed form (geared bodies, a pin in an arc, a block in a
 // curved guide) and by the general Newton, for the comparison.
 BENCHMARK_CAPTURE(kinematicStep, lockstitch, std::string("lockstitch-arm-shaft"), true)

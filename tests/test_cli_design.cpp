@@ -97,8 +97,9 @@ TEST_F(DesignCli, LimitsCsvCarriesTheLibrarysExtremes) {
 TEST_F(DesignCli, LimitsBadInputAndALockedCrank) {
   expectBadInput({
       {"limits", "no MODEL given"},
-      {"limits four-bar-crank-rocker", "give either --point body.point or --body NAME"},
-      {"limits four-bar-crank-rocker --point coupler.P --body rocker", "give either"},
+      {"limits four-bar-crank-rocker",
+       "give one of --point body.point, --body NAME or --output OUTPUT"},
+      {"limits four-bar-crank-rocker --point coupler.P --body rocker", "give one of"},
       {"limits four-bar-crank-rocker --body rocker --direction 0,1", "goes with --point"},
       {"limits four-bar-crank-rocker --point coupler.Q", "no point \"Q\" on body"},
       {"limits four-bar-crank-rocker --body nobody", "--body nobody: no body"},

@@ -116,6 +116,22 @@ TEST_F(SpatialCli, BadAxesAnUnknownPlaneAndBadRodsAreRefusedNamingThePlace) {
                 "about the ground only, and a carrier joins bodies of its own plane");
 }
 
+// limits --output: a world coordinate of a machine in space (the vertical shaft's point M is at
+// z = -12 sin phi: test_spatial_timing.cpp), and an output that is not one, exit 2 naming it.
+TEST_F(SpatialCli, LimitsOfAWorldCoordinate) {
+  const CliResult r = run("limits lockstitch-bevel --output vshaft.M:z");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const std::vector<std::string> rows = r.lines();
+  ASSERT_EQ(rows.size(), 4u) << r.out;
+  EXPECT_EQ(rows[0], "event,crank_deg,value");
+  EXPECT_EQ(rows[1].substr(0, 7), "min,90,");
+  EXPECT_EQ(rows[2].substr(0, 8), "max,270,");
+  EXPECT_EQ(rows[3], "stroke,,24");
+  const CliResult bad = run("limits lockstitch-bevel --output vshaft.M:w");
+  EXPECT_EQ(bad.exit, 2);
+  EXPECT_EQ(bad.err.substr(0, 46), "linkage-cli: --output vshaft.M:w: \"w\" after \"v");
+}
+
 }  // namespace
 }  // namespace linkage
 #endif

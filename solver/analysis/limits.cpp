@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "analysis/measure_track.h"
+#include "analysis/slot_frame.h"
+#include "analysis/space_distance.h"
 #include "linkage/elements.h"
 
 namespace linkage {
@@ -26,6 +28,19 @@ CycleReading readMeasure(const Kinematics& k, const LimitMeasure& w) {
   if (w.body) {
     return {k.bodyAngle(w.body) / kDeg, k.bodyOmega(w.body) * rate / kDeg,
             k.bodyAlpha(w.body) * rate * rate / kDeg};
+  }
+  const bool space = isSpatial(k.mechanism());
+  if (w.other && space) return spaceDistance(k, w.point, w.other);
+  if (w.other) {
+    const Kinematics::PointMotion p = k.motion(w.point), q = k.motion(w.other);
+    return lengthOf(Vec2(p.position - q.position), Vec2((p.velocity - q.velocity) * rate),
+                    Vec2((p.acceleration - q.acceleration) * (rate * rate)));
+  }
+  if (space) {
+    // In the world: a point's plane class frame is not the world's.
+    const SpaceMotion p = spaceMotion(k, w.point);
+    const Vec3 d = w.direction3();
+    return {p.r.dot(d), p.dr.dot(d), p.ddr.dot(d)};
   }
   const Kinematics::PointMotion p = k.motion(w.point);
   return {p.position.dot(w.direction), p.velocity.dot(w.direction) * rate,
@@ -57,8 +72,6 @@ Vec2 defaultDirection(const Mechanism& m, PointId p) {
 
 Status checkMeasure(const Kinematics& k, const LimitMeasure& w) {
   if (!k.valid()) return Status::failure(StatusCode::BadModel, "no mechanism is loaded");
-  if (std::string why = notInSpaceYet(k.mechanism(), "limits and windows"); !why.empty())
-    return Status::failure(StatusCode::BadModel, why);
   if (!(k.omega() > 0) || !std::isfinite(k.omega()))
     return Status::failure(StatusCode::BadModel, "the driver's speed is not a positive number");
   if (w.body) {
@@ -68,14 +81,23 @@ Status checkMeasure(const Kinematics& k, const LimitMeasure& w) {
   }
   if (!k.contains(w.point))
     return Status::failure(StatusCode::BadModel, "the point is not in the mechanism");
-  if (!w.direction.allFinite() || w.direction.norm() == 0)
+  if (w.other) {
+    if (!k.contains(w.other) || w.other == w.point)
+      return Status::failure(StatusCode::BadModel,
+                             "the other point is not in the mechanism, or is the point itself");
+    return k.checkDetermined({w.point, w.other});
+  }
+  if (!w.direction3().allFinite() || w.direction3().norm() == 0)
     return Status::failure(StatusCode::BadModel, "the direction is not a finite non-zero vector");
+  if (w.dz != 0 && !isSpatial(k.mechanism()))
+    return Status::failure(StatusCode::BadModel,
+                           "a direction with a z component is of a machine in space");
   return k.checkDetermined({w.point});
 }
 
 MeasureTrack::MeasureTrack(const Kinematics& k, LimitMeasure what)
     : what_(std::move(what)), size_(k.size()), noise_(noiseOf(k, what_)) {
-  if (!what_.body) what_.direction.normalize();
+  what_ = what_.unit();
   const LimitMeasure w = what_;
   channel.f = [w](const Kinematics& at) {
     const CycleReading r = readMeasure(at, w);

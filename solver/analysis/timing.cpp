@@ -26,8 +26,7 @@ double onCycle(double deg, bool periodic) {
 CycleTrack trackOf(const Kinematics& k, const CycleOutput& o, const std::vector<double>& levels,
                    const CycleOptions& opt) {
   CycleTrack t;
-  LimitMeasure w = o.measure;
-  if (!w.body) w.direction.normalize();
+  const LimitMeasure w = o.measure.unit();
   t.quantity = [w](const Kinematics& at) { return readMeasure(at, w); };
   t.extremes = true;
   t.levels = levels;

@@ -1,4 +1,5 @@
 #include "linkage/timing_text.h"
+#include "linkage/space.h"
 
 #include <algorithm>
 #include <charconv>
@@ -20,9 +21,10 @@ std::optional<double> numberOf(const std::string& t) {
 // A unit vector that normalising leaves as it is, so that the text a file keeps of it (its
 // shortest digits, which read back to the same doubles) reads back to the same direction:
 // normalising once may leave a vector one rounding off length 1, which the next would change.
-Vec2 unitOf(Vec2 v) {
+template <class V>
+V unitOf(V v) {
   for (int i = 0; i < 8; ++i) {
-    const Vec2 n = v.normalized();
+    const V n = v.normalized();
     if (n == v) break;
     v = n;
   }
@@ -46,12 +48,49 @@ std::string quoted(const std::string& s) {
   return "\"" + s + "\"";
 }
 
+// DX,DY,DZ (a machine in space), unit; nullopt for anything else or 0,0,0.
+std::optional<Vec3> directionOf3(const std::string& t) {
+  const size_t a = t.find(','), b = a == std::string::npos ? a : t.find(',', a + 1);
+  if (b == std::string::npos) return std::nullopt;
+  const std::optional<double> x = numberOf(t.substr(0, a)),
+                              y = numberOf(t.substr(a + 1, b - a - 1)),
+                              z = numberOf(t.substr(b + 1));
+  if (!x || !y || !z || (*x == 0 && *y == 0 && *z == 0)) return std::nullopt;
+  return unitOf(Vec3(*x, *y, *z));
+}
+
+// body.point:distance:body.point, nullopt when `text` is not of that form.
+std::optional<LimitMeasure> distanceMeasure(const Mechanism& m, const std::string& text,
+                                            std::string* why, bool& asked) {
+  static const std::string key = ":distance:";
+  const size_t at = text.find(key);
+  asked = at != std::string::npos;
+  if (!asked) return std::nullopt;
+  const std::string a = text.substr(0, at), b = text.substr(at + key.size());
+  const std::optional<PointId> p = m.findPoint(a), q = m.findPoint(b);
+  if (!p || !q) {
+    fail(why, "no point " + quoted(p ? b : a) +
+                  " (a distance is between two points: " + "body.point:distance:body.point)");
+    return std::nullopt;
+  }
+  if (*p == *q) {
+    fail(why, quoted(text) + " is a point's distance to itself");
+    return std::nullopt;
+  }
+  return LimitMeasure::distance(*p, *q);
+}
+
 std::string measureProblem(const Mechanism& m, const LimitMeasure& x) {
   if (x.body) return m.contains(x.body) ? "" : "the body is not in the mechanism";
   if (!m.contains(x.point)) return "the point is not in the mechanism";
-  if (!std::isfinite(x.direction.x()) || !std::isfinite(x.direction.y()) ||
-      std::abs(x.direction.norm() - 1) > 1e-12)
+  if (x.other) {
+    if (!m.contains(x.other)) return "the other point is not in the mechanism";
+    return x.other == x.point ? "a point's distance to itself" : "";
+  }
+  if (!x.direction3().allFinite() || std::abs(x.direction3().norm() - 1) > 1e-12)
     return "the direction is not a unit vector";
+  if (x.dz != 0 && !isSpatial(m))
+    return "a direction with a z component is of a machine in space (this one is planar)";
   return "";
 }
 
@@ -112,9 +151,15 @@ bool validWindowName(const std::string& name) {
 
 std::optional<LimitMeasure> parseMeasure(const Mechanism& m, const std::string& text,
                                          std::string* why) {
+  bool distance = false;
+  std::optional<LimitMeasure> d = distanceMeasure(m, text, why, distance);
+  if (distance) return d;
   const size_t colon = text.rfind(':');
   if (colon == std::string::npos) {
-    fail(why, quoted(text) + " is not body.point:y, body.point:x, body.point:DX,DY or body:angle");
+    fail(why, quoted(text) +
+                  " is not body.point:y, body.point:x, body.point:DX,DY, body:angle or "
+                  "body.point:distance:body.point (in space also body.point:z, "
+                  "body.point:DX,DY,DZ)");
     return std::nullopt;
   }
   const std::string target = text.substr(0, colon), what = text.substr(colon + 1);
@@ -128,13 +173,19 @@ std::optional<LimitMeasure> parseMeasure(const Mechanism& m, const std::string& 
     fail(why, "no point " + quoted(target) + " (body.point)");
     return std::nullopt;
   }
-  std::optional<Vec2> d = what == "x" ? Vec2(1, 0) : what == "y" ? Vec2(0, 1) : directionOf(what);
-  if (!d) {
+  if (isSpatial(m)) {
+    std::optional<Vec3> d3 = what == "z" ? Vec3(0, 0, 1) : directionOf3(what);
+    if (d3) return LimitMeasure::alongInSpace(*p, *d3);
+  }
+  std::optional<Vec2> dir = what == "x" ? Vec2(1, 0) : what == "y" ? Vec2(0, 1) : directionOf(what);
+  if (!dir) {
     fail(why, quoted(what) + " after " + quoted(target + ":") +
-                  " is not x, y, angle or a direction DX,DY other than 0,0");
+                  (isSpatial(m) ? " is not x, y, z, angle or a direction DX,DY or DX,DY,DZ other "
+                                  "than 0"
+                                : " is not x, y, angle or a direction DX,DY other than 0,0"));
     return std::nullopt;
   }
-  return LimitMeasure::along(*p, *d);
+  return LimitMeasure::along(*p, *dir);
 }
 
 std::string measureText(const Mechanism& m, const LimitMeasure& x) {
@@ -143,6 +194,12 @@ std::string measureText(const Mechanism& m, const LimitMeasure& x) {
     return (b ? b->name : "?") + ":angle";
   }
   const std::string p = m.contains(x.point) ? m.pointLabel(x.point) : "?";
+  if (x.other) return p + ":distance:" + (m.contains(x.other) ? m.pointLabel(x.other) : "?");
+  if (x.dz != 0) {
+    if (x.direction3() == Vec3(0, 0, 1)) return p + ":z";
+    return p + ":" + shortestText(x.direction.x()) + "," + shortestText(x.direction.y()) + "," +
+           shortestText(x.dz);
+  }
   if (x.direction == Vec2(1, 0)) return p + ":x";
   if (x.direction == Vec2(0, 1)) return p + ":y";
   return p + ":" + shortestText(x.direction.x()) + "," + shortestText(x.direction.y());

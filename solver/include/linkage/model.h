@@ -179,12 +179,29 @@ struct MechanismEntry {
 // the position with the direction), or, with `body` set, a body's angle (degrees, relative to
 // the drawing, counter-clockwise, whole turns counted). What limits, windows and the rows of a
 // cycle diagram follow (linkage/limits.h, linkage/timing.h).
+//
+// On a machine in space (linkage/space.h) a point's position is the world's: along (dx, dy,
+// dz), dz its third component. With `other`, the distance between the two points (mm; in the
+// world, or in the plane of a planar machine).
 struct LimitMeasure {
   PointId point;
   Vec2 direction = Vec2(0, 1);
   BodyId body;
-  static LimitMeasure along(PointId p, Vec2 direction) { return {p, direction, {}}; }
-  static LimitMeasure angleOf(BodyId b) { return {{}, Vec2(0, 1), b}; }
+  double dz = 0;
+  PointId other;
+  static LimitMeasure along(PointId p, Vec2 direction) { return {p, direction, {}, 0, {}}; }
+  static LimitMeasure alongInSpace(PointId p, const Vec3& d) {
+    return {p, Vec2(d.x(), d.y()), {}, d.z(), {}};
+  }
+  static LimitMeasure angleOf(BodyId b) { return {{}, Vec2(0, 1), b, 0, {}}; }
+  static LimitMeasure distance(PointId p, PointId q) { return {p, Vec2(0, 1), {}, 0, q}; }
+  Vec3 direction3() const { return Vec3(direction.x(), direction.y(), dz); }
+  // The same with its direction (all three components) of length 1.
+  LimitMeasure unit() const {
+    if (body || other) return *this;
+    const Vec3 d = direction3().normalized();
+    return {point, Vec2(d.x(), d.y()), body, d.z(), other};
+  }
   bool operator==(const LimitMeasure&) const = default;
 };
 
