@@ -7,7 +7,7 @@
 // independent truth is the planar machine's own drawing. On the overedge machine the ground's
 // needle slot, projected along the rocker plane's normal, holds the needle arm's block; only
 // the rocker plane's centres are drawn. The Properties give a machine in space's output points
-// in world x, y, z, as `linkage-cli analyze` does.
+// in world x, y, z, as `linkage-cli analyze` does, and so do the plots.
 #include <gtest/gtest.h>
 
 #include "ui_test.h"
@@ -24,10 +24,12 @@
 #include "document/document.h"
 #include "drawing.h"
 #include "export/motion_table_export.h"
+#include "figures/units.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/plane_view.h"
 #include "linkage/space.h"
+#include "plots/curve_set.h"
 #include "properties/inspector_panel.h"
 #include "window/features.h"
 
@@ -270,6 +272,44 @@ TEST(PlaneView, OutputPointsOfAMachineInSpaceAreInTheWorld) {
   const QString text = QString::fromUtf8(f.readAll());
   EXPECT_TRUE(text.contains("z_mm")) << text.left(400);
   EXPECT_TRUE(text.contains("az_mm_s2")) << text.left(400);
+}
+
+// The plots of a point of a machine in space: x, y and z in the world, position and velocity,
+// each sample the solver's world motion there (motionInSpace at that crank angle, on another
+// copy of the solver), and between samples too; the frame says "world".
+TEST(PlaneView, PlotsOfAMachineInSpaceAreTheWorldsXYZ) {
+  MainWindow w;
+  ASSERT_TRUE(showExample(w, "overedge-machine"));
+  const Kinematics& k = w.document()->kinematics();
+  const Mechanism& m = k.mechanism();
+  ASSERT_FALSE(m.outputs.empty());
+  for (PointId out : m.outputs) {
+    for (auto [c, axis] :
+         {std::pair{Quantity::Component::X, 0}, std::pair{Quantity::Component::Y, 1},
+          std::pair{Quantity::Component::Z, 2}}) {
+      CurveRequest r;
+      r.target = QString::fromStdString(m.pointLabel(out));
+      r.component = c;
+      r.steps = 36;
+      CurveSet set(k, r, "t");
+      ASSERT_TRUE(set.status().ok()) << set.status().message;
+      EXPECT_EQ(set.frame(), "world");
+      const Curve &pos = set.curve(Order::Position), &vel = set.curve(Order::Velocity);
+      ASSERT_EQ(pos.values.size(), 37u);
+      Kinematics at = k;
+      for (size_t i = 0; i < pos.values.size(); i += 5) {
+        ASSERT_TRUE(at.moveTo(pos.crankDeg[i]).ok());
+        const Kinematics::PointMotion3 want = at.motionInSpace(out);
+        EXPECT_NEAR(pos.values[i], want.position[axis], 1e-9 * at.size()) << r.target << " " << i;
+        EXPECT_NEAR(vel.values[i], want.velocity[axis], 1e-9 * at.size() * at.omega())
+            << r.target << " " << i;
+      }
+      ASSERT_TRUE(at.moveTo(47.5).ok());
+      EXPECT_NEAR(set.valuesAt(47.5)[0], at.motionInSpace(out).position[axis], 1e-9 * at.size());
+    }
+  }
+  // The labels say which component and that it is the world's.
+  EXPECT_EQ(componentLabel(Quantity::Component::Z, 0, Order::Velocity), "vz");
 }
 
 }  // namespace
