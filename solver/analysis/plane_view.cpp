@@ -134,4 +134,19 @@ void PlaneView::placeGround(Point& p, const Vec2& at) const {
   if (p.third || w.z() != 0) p.third = w.z();
 }
 
+void PlaneView::placeGround(Slot& s) const {
+  if (identity_) return;
+  s.z.clear();
+  std::vector<Vec2*> ends{&s.p0, &s.p1};
+  if (s.mid) ends.insert(ends.begin() + 1, &*s.mid);
+  bool flat = true;
+  for (Vec2* e : ends) {
+    const Vec3 w = plane_.world(*e);
+    *e = Vec2(w.x(), w.y());
+    s.z.push_back(w.z());
+    flat = flat && w.z() == 0;
+  }
+  if (flat) s.z.clear();  // in the drawing plane: [x, y] as before
+}
+
 }  // namespace linkage

@@ -274,6 +274,42 @@ TEST(PlaneView, OutputPointsOfAMachineInSpaceAreInTheWorld) {
   EXPECT_TRUE(text.contains("az_mm_s2")) << text.left(400);
 }
 
+// A ground slot drawn with the Slot tool on the rocker plane: written in the world where the
+// clicks are on that plane (every end on it), drawn where it was clicked; one undo step.
+TEST(PlaneView, AGroundSlotDrawnOnAPlaneIsWrittenWhereThePlaneIs) {
+  MainWindow w;
+  ASSERT_TRUE(showExample(w, "rssr-crank-rocker"));
+  w.view3d().choosePlane("rocker");
+  w.canvas()->setZoom(3);
+  w.canvas()->centerOn(-40, 40);
+  QApplication::processEvents();
+  const size_t slots = w.document()->design().slots.size();
+  const int steps = w.document()->undoStack()->count();
+  test::Draw d{w};
+  d.key("T");
+  d.click(-60, 50);
+  d.click(-20, 50);
+  const Mechanism& m = w.document()->design();
+  ASSERT_EQ(m.slots.size(), slots + 1);
+  const Slot& s = m.slots.back();
+  ASSERT_TRUE(m.body(s.body)->ground);
+  ASSERT_EQ(s.z.size(), 2u);
+  const Plane& rocker = *planeNamed(m, "rocker");
+  const Vec2 clicked[2] = {w.scene()->drawing().channels.back().p0,
+                           w.scene()->drawing().channels.back().p1};
+  const Vec3 ends[2] = {Vec3(s.p0.x(), s.p0.y(), s.z[0]), Vec3(s.p1.x(), s.p1.y(), s.z[1])};
+  for (int e = 0; e < 2; ++e) {
+    const Vec3 r = ends[e] - rocker.origin;
+    EXPECT_NEAR(r.dot(rocker.normal()), 0, kTol) << "end " << e << " off the plane";
+    expectNear(Vec2(r.dot(rocker.xAxis), r.dot(rocker.yAxis)), clicked[e], "end in the plane");
+  }
+  EXPECT_NEAR(clicked[0].y(), clicked[1].y(), kTol);
+  EXPECT_NEAR(clicked[1].x() - clicked[0].x(), 40, 1);  // where it was clicked (snapping aside)
+  EXPECT_EQ(w.document()->undoStack()->count(), steps + 1);
+  w.document()->undoStack()->undo();
+  EXPECT_EQ(w.document()->design().slots.size(), slots);
+}
+
 // The plots of a point of a machine in space: x, y and z in the world, position and velocity,
 // each sample the solver's world motion there (motionInSpace at that crank angle, on another
 // copy of the solver), and between samples too; the frame says "world".

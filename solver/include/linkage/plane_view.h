@@ -66,6 +66,9 @@ class PlaneView {
   // A ground point moved to `at` of the view, its distance from the plane kept: its numbers as
   // the file writes them ([x, y] in the drawing plane, [x, y, z] in the world).
   void placeGround(Point& p, const Vec2& at) const;
+  // A ground slot whose ends are written in the view's coordinates (the Slot tool's), written
+  // in the world: [x, y] and z of every end on the chosen plane. Nothing when mapsNothing().
+  void placeGround(Slot& s) const;
 
  private:
   // Class frame -> view for a body of this plane placing: fromClass of the chosen plane for its
