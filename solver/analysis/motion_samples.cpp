@@ -90,6 +90,19 @@ std::vector<double> tiled(const std::vector<double>& period, long long rows) {
   return v;
 }
 
+// The point's motion where k is, in its plane class's frame and (spec.world) in the world.
+void addSample(const Kinematics& k, const SampleSpec& spec, PointSamples& p) {
+  const Kinematics::PointMotion m = k.motion(p.id);
+  p.p.push_back(m.position);
+  p.v.push_back(m.velocity);
+  if (spec.accelerations) p.a.push_back(m.acceleration);
+  if (!spec.world) return;
+  const Kinematics::PointMotion3 w = k.motionInSpace(p.id);
+  p.p3.push_back(w.position);
+  p.v3.push_back(w.velocity);
+  if (spec.accelerations) p.a3.push_back(w.acceleration);
+}
+
 }  // namespace
 
 MotionSamples sampleMotion(const Kinematics& k, const SampleSpec& spec) {
@@ -151,17 +164,7 @@ MotionSamples sampleMotion(const Kinematics& k, const SampleSpec& spec) {
       break;
     }
     s.crankDeg.push_back(deg);
-    for (PointSamples& p : s.points) {
-      const Kinematics::PointMotion m = kk.motion(p.id);
-      p.p.push_back(m.position);
-      p.v.push_back(m.velocity);
-      if (spec.accelerations) p.a.push_back(m.acceleration);
-      if (!spec.world) continue;
-      const Kinematics::PointMotion3 w = kk.motionInSpace(p.id);
-      p.p3.push_back(w.position);
-      p.v3.push_back(w.velocity);
-      if (spec.accelerations) p.a3.push_back(w.acceleration);
-    }
+    for (PointSamples& p : s.points) addSample(kk, spec, p);
     for (BodySamples& b : s.bodies) {
       b.angle.push_back(kk.bodyAngle(b.id));
       b.omega.push_back(kk.bodyOmega(b.id));
