@@ -88,7 +88,8 @@ void showAt(MainWindow& w, const Mechanism& m, double deg, const std::string& pl
   w.document()->setContents(m, QString());
   w.show();
   ASSERT_TRUE(w.document()->solved()) << w.document()->solveStatus().message;
-  w.scene()->setShownPlane(plane);
+  w.view3d().choosePlane(plane);  // the plane chooser's own path
+  ASSERT_EQ(w.scene()->shownPlane(), plane);
   w.scene()->setCentresVisible(true);
   w.scene()->setTracesVisible(true);
   ASSERT_TRUE(w.document()->setCrankDeg(deg).ok());
@@ -178,7 +179,7 @@ TEST(PlaneView, APlaneShiftedAndTurnedIsDrawnAsThePlanarMachineInItsCoordinates)
 TEST(PlaneView, TheGroundsNeedleSlotSeenFromTheRockerPlaneHoldsTheNeedleArmsBlock) {
   MainWindow w;
   ASSERT_TRUE(showExample(w, "overedge-machine"));
-  w.scene()->setShownPlane("rocker");
+  w.view3d().choosePlane("rocker");
   w.scene()->setCentresVisible(true);
   ASSERT_TRUE(w.document()->setCrankDeg(30).ok());
   QApplication::processEvents();
