@@ -34,7 +34,7 @@ std::vector<ui::CycleClearanceRow> clearanceRows(const Kinematics& k, int steps)
   for (const ClearanceWatch& w : m.timing.clearances) {
     Clearance c = findClearance(k, ClearancePart::of(w.point), w.other, opt);
     if (!c.status.ok()) continue;  // linkage-cli timing does not judge clearances
-    out.push_back({ui::clearanceLabel(m, w), std::move(c), w.minMm});
+    out.push_back({ui::clearanceLabel(m, w), std::move(c), w.minMm, w});
   }
   return out;
 }

@@ -1,6 +1,8 @@
 // The paint list: shapes from the mechanism's topology (which body is a bar, a plate, a block),
 // positions from the kinematics at its pose.
 #include "linkage/drawing.h"
+
+#include "linkage/plane_view.h"
 #include "linkage/space.h"
 
 #include <algorithm>
@@ -110,6 +112,30 @@ void extend(Drawing& d, const Vec2& p, bool& first) {
 Eigen::Vector3d homogeneous(const InstantCentres& ics, int i, int j) {
   const InstantCentre* c = ics.find(i, j);
   return c && c->determined ? c->h : Eigen::Vector3d::Zero();
+}
+
+// A centre or a Kennedy line's point (homogeneous: z 0 at infinity) from its class's frame
+// into the view.
+Eigen::Vector3d intoView(const PlaneView& view, const Eigen::Vector3d& h) {
+  if (h.z() == 0) {
+    const Vec2 d = view.directionFromClass(Vec2(h.x(), h.y()));
+    return Eigen::Vector3d(d.x(), d.y(), 0);
+  }
+  const Vec2 p = view.fromClass(Vec2(h.x() / h.z(), h.y() / h.z()));
+  return Eigen::Vector3d(p.x(), p.y(), 1);
+}
+
+// Seen on a plane, only the centres of its class, in its coordinates (those of other classes
+// are in frames the view does not show; bodies of planes that are not parallel have none).
+void keepViewed(Drawing& d, const PlaneView& view) {
+  std::erase_if(d.centres, [&](const Drawing::Centre& c) {
+    return c.across || c.planeClass != view.planeClass();
+  });
+  for (Drawing::Centre& c : d.centres) {
+    if (c.determined) c.at = c.atInfinity ? view.directionFromClass(c.at) : view.fromClass(c.at);
+    for (Drawing::KennedyLine& l : c.lines)
+      for (Eigen::Vector3d& h : l.through) h = intoView(view, h);
+  }
 }
 
 void placeCentres(Drawing& d, const Kinematics& k, const InstantCentres& ics) {
@@ -256,43 +282,50 @@ Drawing describeShapes(const Mechanism& m) {
 
 }  // namespace
 
-bool updateDrawing(Drawing& d, const Kinematics& k, const InstantCentres* ics) {
+bool updateDrawing(Drawing& d, const Kinematics& k, const InstantCentres* ics,
+                   const PlaneView* view) {
   if (!k.valid() || k.revision() != d.revision) return false;
+  static const PlaneView none;
+  const PlaneView& v = view ? *view : none;
   place(
-      d, k.mechanism(), [&](PointId p) { return k.position(p); },
+      d, v.seen(k.mechanism()), [&](PointId p) { return v.point(k, p); },
       [&](SlotId s) {
-        const Kinematics::Segment e = k.slotEnds(s);
+        const Kinematics::Segment e = v.slotEnds(k, s);
         return std::make_pair(e.p0, e.p1);
       },
-      [&](BodyId b) { return k.bodyTransform(b); }, k.crankDeg());
-  if (ics && ics->status.ok())
+      [&](BodyId b) { return v.pose(k, b); }, k.crankDeg());
+  if (ics && ics->status.ok()) {
     placeCentres(d, k, *ics);
-  else
+    if (!v.mapsNothing()) keepViewed(d, v);
+  } else {
     d.centres.clear();
+  }
   return true;
 }
 
-Drawing describeSketch(const Mechanism& m) {
+Drawing describeSketch(const Mechanism& design, const PlaneView* view) {
+  static const PlaneView none;
+  const PlaneView& v = view ? *view : none;
+  const Mechanism& m = v.seen(design);
   Drawing d = describeShapes(m);
   place(
-      d, m,
-      [&](PointId p) {
-        const Point* q = m.point(p);
-        return q ? q->pos : Vec2(NAN, NAN);
-      },
+      d, m, [&](PointId p) { return v.sketchPoint(design, p); },
       [&](SlotId s) {
         const Slot* q = m.slot(s);
-        return q ? std::make_pair(q->p0, q->p1) : std::make_pair(Vec2(NAN, NAN), Vec2(NAN, NAN));
+        if (!q) return std::make_pair(Vec2(NAN, NAN), Vec2(NAN, NAN));
+        const Transform T = v.sketchPose(q->body);
+        return std::make_pair(T * q->p0, T * q->p1);
       },
-      [](BodyId) { return Transform{}; }, 0.0);
+      [&](BodyId b) { return v.sketchPose(b); }, 0.0);
   return d;
 }
 
-Drawing describeDrawing(const Kinematics& k, const InstantCentres* ics) {
+Drawing describeDrawing(const Kinematics& k, const InstantCentres* ics, const PlaneView* view) {
   if (!k.valid()) return Drawing{};
-  Drawing d = describeShapes(k.mechanism());
+  static const PlaneView none;
+  Drawing d = describeShapes((view ? *view : none).seen(k.mechanism()));
   d.revision = k.revision();
-  updateDrawing(d, k, ics);
+  updateDrawing(d, k, ics, view);
   return d;
 }
 

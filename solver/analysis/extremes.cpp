@@ -27,6 +27,10 @@ class Probe {
     if (!moveTo(deg)) return NAN;
     const Order next = static_cast<Order>(static_cast<int>(o_) + 1);
     if (q_.isBody() || q_.component != Quantity::Component::Magnitude) return valueAt(k_, q_, next);
+    if (q_.inWorld()) {
+      const Kinematics::PointMotion3 m = k_.motionInSpace(q_.point);
+      return o_ == Order::Position ? m.position.dot(m.velocity) : m.velocity.dot(m.acceleration);
+    }
     const Kinematics::PointMotion m = k_.motion(q_.point);
     return o_ == Order::Position ? m.position.dot(m.velocity) : m.velocity.dot(m.acceleration);
   }

@@ -43,18 +43,24 @@ bool samePoses(const std::vector<Transform>& a, const std::vector<Transform>& b,
   return true;
 }
 
-double component(const Vec2& v, const Quantity& q, const Vec2& u) {
+double component(const Vec3& v, const Quantity& q, const Vec2& u) {
   switch (q.component) {
     case Quantity::Component::X:
       return v.x();
     case Quantity::Component::Y:
       return v.y();
+    case Quantity::Component::Z:
+      return v.z();
     case Quantity::Component::Magnitude:
       return v.norm();
     case Quantity::Component::Along:
-      return v.dot(u);
+      return v.x() * u.x() + v.y() * u.y();
   }
   return NAN;
+}
+
+double component(const Vec2& v, const Quantity& q, const Vec2& u) {
+  return component(Vec3(v.x(), v.y(), 0), q, u);
 }
 
 // The unit direction of an Along quantity (or +x for the others); false when it has none.
@@ -82,6 +88,19 @@ std::vector<double> tiled(const std::vector<double>& period, long long rows) {
   const long long n = static_cast<long long>(period.size());
   for (long long i = 0; i < rows; ++i) v[i] = period[i % n];
   return v;
+}
+
+// The point's motion where k is, in its plane class's frame and (spec.world) in the world.
+void addSample(const Kinematics& k, const SampleSpec& spec, PointSamples& p) {
+  const Kinematics::PointMotion m = k.motion(p.id);
+  p.p.push_back(m.position);
+  p.v.push_back(m.velocity);
+  if (spec.accelerations) p.a.push_back(m.acceleration);
+  if (!spec.world) return;
+  const Kinematics::PointMotion3 w = k.motionInSpace(p.id);
+  p.p3.push_back(w.position);
+  p.v3.push_back(w.velocity);
+  if (spec.accelerations) p.a3.push_back(w.acceleration);
 }
 
 }  // namespace
@@ -122,8 +141,9 @@ MotionSamples sampleMotion(const Kinematics& k, const SampleSpec& spec) {
   s.rpm = kk.rpm();
   s.omega = kk.omega();
   s.accelerations = spec.accelerations;
+  s.world = spec.world;
   const long long rows = static_cast<long long>(std::round(total)) + 1;
-  for (PointId p : spec.points) s.points.push_back({p, {}, {}, {}});
+  for (PointId p : spec.points) s.points.push_back({p, {}, {}, {}, {}, {}, {}});
   for (BodyId b : spec.bodies) s.bodies.push_back({b, {}, {}, {}});
   auto reserve = [rows](auto& v) { v.reserve(rows); };
   reserve(s.crankDeg);
@@ -144,12 +164,7 @@ MotionSamples sampleMotion(const Kinematics& k, const SampleSpec& spec) {
       break;
     }
     s.crankDeg.push_back(deg);
-    for (PointSamples& p : s.points) {
-      const Kinematics::PointMotion m = kk.motion(p.id);
-      p.p.push_back(m.position);
-      p.v.push_back(m.velocity);
-      if (spec.accelerations) p.a.push_back(m.acceleration);
-    }
+    for (PointSamples& p : s.points) addSample(kk, spec, p);
     for (BodySamples& b : s.bodies) {
       b.angle.push_back(kk.bodyAngle(b.id));
       b.omega.push_back(kk.bodyOmega(b.id));
@@ -202,26 +217,37 @@ Curve curveOf(const MotionSamples& s, const Quantity& q, Order order) {
     c.status = bad("the point was not sampled");
     return c;
   }
-  std::vector<Vec2> vectors;
-  if (order != Order::Jerk) {
-    const std::vector<Vec2>* v[] = {&p->p, &p->v, &p->a};
+  if (q.inWorld() && !s.world) {
+    c.status = bad("the point's motion in the world was not sampled");
+    return c;
+  }
+  std::vector<Vec3> vectors;
+  if (order != Order::Jerk && q.inWorld()) {
+    const std::vector<Vec3>* v[] = {&p->p3, &p->v3, &p->a3};
     vectors = *v[o];
+  } else if (order != Order::Jerk) {
+    const std::vector<Vec2>* v[] = {&p->p, &p->v, &p->a};
+    for (const Vec2& x : *v[o]) vectors.emplace_back(x.x(), x.y(), 0);
   } else {
     // The jerk vector: the spectral derivative of each component of the acceleration.
-    std::vector<double> ax(n), ay(n);
-    for (long long i = 0; i < n; ++i) {
-      ax[i] = p->a[i].x();
-      ay[i] = p->a[i].y();
-    }
-    const Derivative jx = periodicDerivative(ax), jy = periodicDerivative(ay);
+    std::vector<double> a[3] = {std::vector<double>(n), std::vector<double>(n),
+                                std::vector<double>(n, 0.0)};
+    for (long long i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k)
+        if (q.inWorld())
+          a[k][i] = p->a3[i][k];
+        else if (k < 2)
+          a[k][i] = p->a[i][k];
+    const Derivative j[3] = {periodicDerivative(a[0]), periodicDerivative(a[1]),
+                             periodicDerivative(a[2])};
     vectors.resize(s.size());
     for (long long i = 0; i < s.size(); ++i)
-      vectors[i] = s.omega * Vec2(jx.values[i % n], jy.values[i % n]);
-    // Every component is a combination of the two with weights of at most 1 in size.
-    c.errorEstimate = s.omega * (jx.errorEstimate + jy.errorEstimate);
+      vectors[i] = s.omega * Vec3(j[0].values[i % n], j[1].values[i % n], j[2].values[i % n]);
+    // Every component is a combination of the three with weights of at most 1 in size.
+    c.errorEstimate = s.omega * (j[0].errorEstimate + j[1].errorEstimate + j[2].errorEstimate);
   }
   c.values.reserve(vectors.size());
-  for (const Vec2& v : vectors) c.values.push_back(component(v, q, u));
+  for (const Vec3& v : vectors) c.values.push_back(component(v, q, u));
   return c;
 }
 
@@ -237,6 +263,11 @@ double valueAt(const Kinematics& k, const Quantity& q, Order order) {
       default:
         return k.bodyAlpha(q.body);
     }
+  }
+  if (q.inWorld()) {
+    const Kinematics::PointMotion3 m = k.motionInSpace(q.point);
+    const Vec3* v[] = {&m.position, &m.velocity, &m.acceleration};
+    return component(*v[static_cast<int>(order)], q, u);
   }
   const Kinematics::PointMotion m = k.motion(q.point);
   const Vec2* v[] = {&m.position, &m.velocity, &m.acceleration};

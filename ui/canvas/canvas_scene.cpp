@@ -45,6 +45,7 @@ CanvasScene::CanvasScene(QObject* parent) : QGraphicsScene(parent) {
   // Room to pan anywhere a mechanism could be drawn (mm).
   setSceneRect(-1e6, -1e6, 2e6, 2e6);
   ctx_.style = CanvasStyle::fromPalette(QPalette());
+  ctx_.view = &view_;
   addOverlay(new LabelStart([this](const QTransform& t) { startLabels(t); }));
   centres_ = new CentresItem(&ctx_);
   centres_->setVisible(false);
@@ -117,14 +118,13 @@ const Mechanism& CanvasScene::shownMechanism() const {
 }
 
 Vec2 CanvasScene::worldOf(PointId p) const {
-  if (solverShown_ && doc_->kinematics().contains(p)) return doc_->kinematics().position(p);
-  const Point* q = doc_ ? doc_->design().point(p) : nullptr;
-  return q ? q->pos : Vec2(NAN, NAN);
+  if (solverShown_ && doc_->kinematics().contains(p)) return view_.point(doc_->kinematics(), p);
+  return doc_ ? view_.sketchPoint(doc_->design(), p) : Vec2(NAN, NAN);
 }
 
 Transform CanvasScene::poseOf(BodyId b) const {
-  if (solverShown_ && doc_->kinematics().contains(b)) return doc_->kinematics().bodyTransform(b);
-  return Transform{};
+  if (solverShown_ && doc_->kinematics().contains(b)) return view_.pose(doc_->kinematics(), b);
+  return view_.sketchPose(b);
 }
 
 BodyItem* CanvasScene::bodyItem(BodyId id) const {
@@ -163,6 +163,7 @@ void CanvasScene::clearItems() {
 void CanvasScene::rebuild() {
   clearItems();
   drawing_ = Drawing{};
+  view_ = PlaneView();
   if (!doc_) return;
   const Kinematics& k = doc_->kinematics();
   // The solver's pose when it holds this design (or the last good state of an edit of its
@@ -170,12 +171,14 @@ void CanvasScene::rebuild() {
   std::vector<BodyId> reshaped;
   solverShown_ =
       k.valid() && (doc_->solved() || sameTopology(doc_->design(), k.mechanism(), reshaped));
-  drawing_ = solverShown_ ? describeDrawing(k) : describeSketch(doc_->design());
+  view_ = PlaneView(shownMechanism(), plane_);
+  drawing_ =
+      solverShown_ ? describeDrawing(k, nullptr, &view_) : describeSketch(doc_->design(), &view_);
   const Mechanism& m = shownMechanism();
   std::map<BodyId, int> number;
   for (const Drawing::Body& b : drawing_.bodies) {
     number[b.id] = b.number;
-    auto* item = new BodyItem(&ctx_, geometryOf(m, b));
+    auto* item = new BodyItem(&ctx_, geometryOf(view_.seen(m), b));
     item->setZValue(b.shape == Drawing::Shape::Ground ? kGroundZ : kBodyZ + bodies_.size() * 0.01);
     addItem(item);
     bodies_.push_back(item);
@@ -207,7 +210,7 @@ void CanvasScene::rebuild() {
   applyMechanisms();
   extent_ = QRectF();
   if (solverShown_) {
-    const auto [lo, hi] = motionExtent(k);
+    const auto [lo, hi] = motionExtent(k, view_);
     extent_ = QRectF(toQt(lo), toQt(hi)).normalized();
   }
   updateTraces();
@@ -223,9 +226,9 @@ void CanvasScene::setShownPlane(const std::string& name) {
   const std::string plane = name == "drawing" ? std::string() : name;
   if (plane == plane_) return;
   plane_ = plane;
-  applyMechanisms();
-  updateTraces();
-  emit redrawn();
+  // Every position is another plane's: the items made again (the overlays mapped anew).
+  rebuild();
+  restyleItems();
 }
 
 void CanvasScene::setOtherPlanesHidden(bool hide) {
@@ -322,7 +325,7 @@ void CanvasScene::updatePose() {
   // The solver's pose is drawn also while it keeps the last good state of a refused edit of
   // the same shape; its centres are of that other design, not of this one: none.
   const InstantCentres* ics = centresVisible_ && doc_->solved() ? &doc_->instantCentres() : nullptr;
-  if (!updateDrawing(drawing_, k, ics)) {
+  if (!updateDrawing(drawing_, k, ics, &view_)) {
     rebuild();  // the solver holds another revision: the items are out of date
     return;
   }
@@ -401,7 +404,7 @@ void CanvasScene::updateTraces() {
   if (!tracesVisible_ || !doc_ || !doc_->solved()) return;
   const Kinematics& k = doc_->kinematics();
   const std::vector<PointId>& outputs = k.mechanism().outputs;
-  std::vector<std::vector<Vec2>> paths = tracePaths(k);
+  std::vector<std::vector<Vec2>> paths = tracePaths(k, view_);
   for (size_t i = 0; i < paths.size(); ++i) {
     // A point the driver does not move has no path: it would be the solver's hold, made up.
     std::vector<Vec2>& path = paths[i];

@@ -21,6 +21,7 @@
 #include "elements/pin_item.h"
 #include "linkage/drawing.h"
 #include "linkage/mechanisms.h"
+#include "linkage/plane_view.h"
 
 namespace linkage::ui {
 
@@ -70,11 +71,15 @@ class CanvasScene : public QGraphicsScene {
   bool bodyHidden(BodyId b) const;
 
   // A machine in space (linkage/space.h) is edited one plane at a time: the canvas draws the
-  // bodies of plane `name` ("" or "drawing": the drawing plane) and the ground; the other
-  // planes' bodies, drawn in their own planes' coordinates over these, faint (or not at all,
-  // `hideOthers`), and nothing of them is picked. New bodies go into this plane.
+  // bodies of plane `name` ("" or "drawing": the drawing plane) and the ground in that plane's
+  // coordinates (linkage/plane_view.h: the ground projected along its normal, bodies of planes
+  // parallel to it seen along it); the bodies of planes that are not parallel, in their own
+  // planes' coordinates over these, faint (or not at all, `hideOthers`), and nothing of them
+  // is picked. New bodies go into this plane.
   void setShownPlane(const std::string& name);
   const std::string& shownPlane() const { return plane_; }
+  // How the solver's positions are mapped into the shown plane (maps nothing when planar).
+  const PlaneView& planeView() const { return view_; }
   void setOtherPlanesHidden(bool hide);
   bool otherPlanesHidden() const { return hideOtherPlanes_; }
   // Of the shown plane, or the ground (on every plane), or of a planar machine.
@@ -87,6 +92,7 @@ class CanvasScene : public QGraphicsScene {
   // cannot take it. Tools place what they make with these.
   bool solverShown() const { return solverShown_; }
   const Mechanism& shownMechanism() const;
+  // Canvas coordinates are the shown plane's (x, y).
   Vec2 worldOf(PointId p) const;
   Transform poseOf(BodyId b) const;  // sketch -> world as drawn
   // One item per symbol of the drawing's joints, in their order.
@@ -132,6 +138,7 @@ class CanvasScene : public QGraphicsScene {
   std::vector<BodyId> hidden_;
   std::vector<BodyId> offPlane_;
   std::string plane_;
+  PlaneView view_;
   bool hideOtherPlanes_ = false;
   SlotWarnings warnings_;
   const std::vector<SlotWarning> none_;

@@ -3,6 +3,8 @@
 #include <QFontMetricsF>
 #include <QPainter>
 
+#include "linkage/plane_view.h"
+
 namespace linkage::ui {
 
 namespace {
@@ -46,7 +48,14 @@ void ClearanceMarksItem::setMarks(std::vector<ClearanceMark> marks) {
 void ClearanceMarksItem::rebuild() {
   for (LabelItem* l : labels_) delete l;
   labels_.clear();
-  for (const ClearanceMark& m : marks_) {
+  shown_ = marks_;
+  if (const PlaneView* view = ctx().view)
+    for (ClearanceMark& m : shown_) {
+      m.a = view->fromSolver(m.bodyA, m.a);
+      m.b = view->fromSolver(m.bodyB, m.b);
+      for (Vec2& v : m.part) v = view->fromSolver(m.bodyB, v);
+    }
+  for (const ClearanceMark& m : shown_) {
     auto* l = new LabelItem(m.text, this);
     // Beside the right ring, off the rings, the line between them and a part across them (a
     // needle through the ring, its point below it).
@@ -65,7 +74,7 @@ void ClearanceMarksItem::rebuild() {
 QRectF ClearanceMarksItem::boundingRect() const {
   QRectF r;
   const double pad = 2 * kRingPx * px();
-  for (const ClearanceMark& m : marks_) {
+  for (const ClearanceMark& m : shown_) {
     r |= QRectF(QPointF(std::min(m.a.x(), m.b.x()), std::min(m.a.y(), m.b.y())),
                 QPointF(std::max(m.a.x(), m.b.x()), std::max(m.a.y(), m.b.y())))
              .adjusted(-pad, -pad, pad, pad);
@@ -79,7 +88,7 @@ void ClearanceMarksItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWi
   p->setRenderHint(QPainter::Antialiasing);
   p->setBrush(Qt::NoBrush);
   const double r = kRingPx * px();
-  for (const ClearanceMark& m : marks_) {
+  for (const ClearanceMark& m : shown_) {
     const QColor c = m.tooClose ? style().warning : style().ink;
     if (m.part.size() >= 2) paintPart(p, m.part, c, px());
     p->setPen(cosmetic(c, 1.2, Qt::DashLine));

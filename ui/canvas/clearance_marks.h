@@ -11,16 +11,21 @@
 
 #include "draw/canvas_item.h"
 #include "linkage/geometry.h"
+#include "linkage/model.h"
 
 namespace linkage::ui {
 
 class LabelItem;
 
+// As the solver gives them (world, mm; a machine in space: a in its body's plane class frame,
+// b and part in the other body's); the item draws them in the canvas's plane
+// (CanvasContext::view).
 struct ClearanceMark {
   Vec2 a = Vec2::Zero(), b = Vec2::Zero();  // world, mm
   QString text;                             // "hook.K – needlebar.N: closest 0.42 mm at 201.3°"
   bool tooClose = false;
   std::vector<Vec2> part;  // the segment or slot at that pose (world, mm); empty for a point
+  BodyId bodyA, bodyB;     // whose frames a, and b and part, are in
 };
 
 class ClearanceMarksItem : public CanvasItem {
@@ -28,6 +33,8 @@ class ClearanceMarksItem : public CanvasItem {
   explicit ClearanceMarksItem(const CanvasContext* ctx);
   void setMarks(std::vector<ClearanceMark> marks);
   const std::vector<ClearanceMark>& marks() const { return marks_; }
+  // As drawn: in the canvas's plane.
+  const std::vector<ClearanceMark>& shownMarks() const { return shown_; }
   QRectF boundingRect() const override;
   void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) override;
 
@@ -35,7 +42,7 @@ class ClearanceMarksItem : public CanvasItem {
   void rebuild() override;
 
  private:
-  std::vector<ClearanceMark> marks_;
+  std::vector<ClearanceMark> marks_, shown_;
   std::vector<LabelItem*> labels_;
 };
 

@@ -33,7 +33,7 @@ void sweep(const Kinematics& k, double stepDeg, Visit visit) {
 
 }  // namespace
 
-std::pair<Vec2, Vec2> motionExtent(const Kinematics& k, double stepDeg) {
+std::pair<Vec2, Vec2> motionExtent(const Kinematics& k, const PlaneView& view, double stepDeg) {
   Vec2 lo = Vec2::Constant(INFINITY), hi = Vec2::Constant(-INFINITY);
   if (!k.valid()) return {Vec2::Zero(), Vec2::Zero()};
   const Mechanism& m = k.mechanism();
@@ -48,10 +48,10 @@ std::pair<Vec2, Vec2> motionExtent(const Kinematics& k, double stepDeg) {
   auto isFree = [&](BodyId b) { return std::find(free.begin(), free.end(), b) != free.end(); };
   auto visit = [&](const Kinematics& c, bool moving) {
     for (const Point& p : m.points)
-      if (moving != isFree(p.body)) add(c.position(p.id));
+      if (moving != isFree(p.body)) add(view.point(c, p.id));
     for (const Slot& s : m.slots) {
       if (moving == isFree(s.body)) continue;
-      const Kinematics::Segment e = c.slotEnds(s.id);
+      const Kinematics::Segment e = view.slotEnds(c, s.id);
       add(e.p0);
       add(e.p1);
     }
@@ -62,7 +62,8 @@ std::pair<Vec2, Vec2> motionExtent(const Kinematics& k, double stepDeg) {
   return {lo, hi};
 }
 
-std::vector<std::vector<Vec2>> tracePaths(const Kinematics& k, double stepDeg) {
+std::vector<std::vector<Vec2>> tracePaths(const Kinematics& k, const PlaneView& view,
+                                          double stepDeg) {
   const Mechanism& m = k.mechanism();
   std::vector<std::vector<Vec2>> paths(m.outputs.size());
   if (!k.valid() || m.outputs.empty()) return paths;
@@ -71,7 +72,7 @@ std::vector<std::vector<Vec2>> tracePaths(const Kinematics& k, double stepDeg) {
   std::vector<std::vector<Vec2>> before(m.outputs.size());
   sweep(k, stepDeg, [&](const Kinematics& c, bool back) {
     for (size_t i = 0; i < m.outputs.size(); ++i)
-      (back ? before : paths)[i].push_back(c.position(m.outputs[i]));
+      (back ? before : paths)[i].push_back(view.point(c, m.outputs[i]));
   });
   for (size_t i = 0; i < paths.size(); ++i) {
     std::reverse(before[i].begin(), before[i].end());

@@ -26,6 +26,7 @@ struct CycleClearanceRow {
   QString label;  // "hook.K – segment needlebar.N-B" (cycle/clearance_text.h)
   Clearance clearance;
   std::optional<double> minMm;
+  ClearanceWatch watch;  // what it measures (whose frames the solver's places are in)
 };
 
 class CycleFigure : public CrankFigure {

@@ -414,7 +414,7 @@ void CyclePanel::computeClearances(const Kinematics& k) {
       continue;
     }
     clearanceWhy_.push_back({});
-    clearances_.push_back({clearanceLabel(m, w), std::move(c), w.minMm});
+    clearances_.push_back({clearanceLabel(m, w), std::move(c), w.minMm, w});
   }
 }
 
@@ -536,8 +536,17 @@ void CyclePanel::emitMarks() {
       const Clearance& k = c.clearance;
       const bool close = c.minMm && k.closest.distance < *c.minMm;
       // Brief on the canvas: the part drawn there shows where along it they meet.
+      const Mechanism& m = doc_->kinematics().mechanism();
+      const ClearancePart& other = c.watch.other;
+      const Point* a = m.point(c.watch.point);
+      const Point* b = m.point(other.point);
+      const Slot* slot = m.slot(other.slot);
       marks.push_back({k.closestPoint, k.closestOther,
-                       c.label + QStringLiteral(": ") + clearanceNote(k, 2), close, k.closestPart});
+                       c.label + QStringLiteral(": ") + clearanceNote(k, 2), close, k.closestPart,
+                       a ? a->body : BodyId{},
+                       b      ? b->body
+                       : slot ? slot->body
+                              : BodyId{}});
     }
   Q_EMIT marksChanged(marks);
 }

@@ -14,6 +14,10 @@
 #include "draw/style.h"
 #include "linkage/geometry.h"
 
+namespace linkage {
+class PlaneView;
+}
+
 namespace linkage::ui {
 
 // A pen whose width is in screen pixels: the raster engine strokes it on its fast path, and it
@@ -39,6 +43,9 @@ struct CanvasContext {
   CanvasStyle style;
   // The labels of this paint (cleared as the view starts one): items that label step aside.
   mutable LabelBoard labels;
+  // A machine in space: the plane the canvas shows (linkage/plane_view.h); the solver's
+  // positions, in each body's plane class frame, are mapped into it. Null: nothing to map.
+  const PlaneView* view = nullptr;
 };
 
 class CanvasItem : public QGraphicsItem {

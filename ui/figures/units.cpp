@@ -73,6 +73,8 @@ QString componentLabel(Quantity::Component c, double directionDeg, Order o) {
       return QString(letters[i]) + "x";
     case Quantity::Component::Y:
       return QString(letters[i]) + "y";
+    case Quantity::Component::Z:
+      return QString(letters[i]) + "z";
     case Quantity::Component::Magnitude:
       return QString("|%1|").arg(vectors[i]);
     case Quantity::Component::Along:

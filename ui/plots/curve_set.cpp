@@ -72,14 +72,11 @@ CurveSet::CurveSet(const Kinematics& k, const CurveRequest& r, const QString& ti
     }
     const double a = r.directionDeg * M_PI / 180;
     quantity_ = Quantity::ofPoint(*p, r.component, Vec2(std::cos(a), std::sin(a)));
-    const Mechanism& m = k.mechanism();
-    if (isSpatial(m)) {
-      // The solver's planar motion of a point is in its plane class's frame.
-      const PlaneClasses pc = planeClasses(m);
-      const std::string& plane = m.body(m.point(*p)->body)->plane;
-      frame_ =
-          QStringLiteral("plane %1").arg(QString::fromStdString(pc.frames[pc.of(plane).cls].name));
-    }
+    // A machine in space: the world's x, y, z (the solver's planar motion of a point is in its
+    // plane class's frame); the labels say so.
+    quantity_.world = isSpatial(k.mechanism());
+    if (quantity_.world) frame_ = QStringLiteral("world");
+    spec.world = quantity_.inWorld();
     spec.points = {*p};
   }
   spec.steps = r.steps;

@@ -34,9 +34,8 @@ class CurveSet {
            const Status& solve = Status::success());
 
   const QString& title() const { return title_; }
-  // The frame a point's x and y are in, for the axis labels: "" in a planar machine; in a
-  // machine in space the plane whose axes they are (its plane class's first: the point's own
-  // plane, or one parallel to it), as "plane rocker".
+  // The frame a point's x and y are in, for the axis labels: "" in a planar machine; "world"
+  // in a machine in space (x, y, z in the world, Kinematics::motionInSpace).
   const QString& frame() const { return frame_; }
   const CurveRequest& request() const { return request_; }
   // Ok; or why the curves stop early or are missing (the sweep's status, an unknown target).

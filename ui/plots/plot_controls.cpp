@@ -33,9 +33,11 @@ void PlotControls::addPlotRow() {
   target_->setMinimumContentsLength(14);
   component_ = new QComboBox;
   component_->setObjectName("plotComponent");  // for scripts (the probe)
-  component_->addItems({"x", "y", "magnitude", "along"});
+  // In Quantity::Component's order; z for a machine in space (0 in a planar one).
+  component_->addItems({"x", "y", "magnitude", "along", "z"});
   component_->setToolTip(
-      "Component of the point's motion: x, y, the vectors' lengths, or along a direction");
+      "Component of the point's motion: x, y, the vectors' lengths, along a direction, or z "
+      "(a machine in space: all in the world)");
   direction_ = new QDoubleSpinBox;
   direction_->setRange(-360, 360);
   direction_->setDecimals(1);

@@ -7,6 +7,7 @@
 
 #include "document/document.h"
 #include "document/shown_numbers.h"
+#include "linkage/space.h"
 
 namespace linkage::ui {
 
@@ -20,8 +21,7 @@ InspectorPanel::InspectorPanel(QWidget* parent) : QWidget(parent) {
   summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   summary_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
   motion_ = new QTableWidget(0, 4);
-  motion_->setHorizontalHeaderLabels(
-      {tr("point"), tr("position [mm]"), tr("velocity [mm/s]"), tr("acceleration [mm/s\u00b2]")});
+  setHeaders(false);
   motion_->verticalHeader()->hide();
   motion_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   // Columns sized once per design, not per frame: sizing to contents measures every cell's
@@ -38,6 +38,18 @@ InspectorPanel::InspectorPanel(QWidget* parent) : QWidget(parent) {
   note_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   note_->hide();
   l->addWidget(note_);
+}
+
+void InspectorPanel::setHeaders(bool inSpace) {
+  if (int(inSpace) == inSpace_) return;
+  inSpace_ = inSpace;
+  if (inSpace)
+    motion_->setHorizontalHeaderLabels({tr("point"), tr("world x, y, z [mm]"),
+                                        tr("world vx, vy, vz [mm/s]"),
+                                        tr("world ax, ay, az [mm/s\u00b2]")});
+  else
+    motion_->setHorizontalHeaderLabels(
+        {tr("point"), tr("position [mm]"), tr("velocity [mm/s]"), tr("acceleration [mm/s\u00b2]")});
 }
 
 QString InspectorPanel::noteText() const {
@@ -109,6 +121,9 @@ void InspectorPanel::refreshMotion() {
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < 4; ++c) motion_->setItem(r, c, new QTableWidgetItem);
   }
+  // In space the world's x, y, z (the solver's planar ones are in each plane class's frame).
+  const bool inSpace = isSpatial(m);
+  setHeaders(inSpace);
   QStringList why;
   if (!solved && !doc_->design().outputs.empty()) why << tr("Not solved: no motion to show.");
   for (int r = 0; r < n; ++r) {
@@ -116,16 +131,22 @@ void InspectorPanel::refreshMotion() {
     motion_->item(r, 0)->setText(QString::fromStdString(m.pointLabel(p)));
     const Status determined = k.checkDetermined({p});
     if (!determined.ok()) why << QString::fromStdString(determined.message);
-    const Kinematics::PointMotion pm =
-        determined.ok() ? k.motion(p) : Kinematics::PointMotion{kUnknown, kUnknown, kUnknown};
-    const Vec2* v[3] = {&pm.position, &pm.velocity, &pm.acceleration};
+    const Vec3 nan = Vec3::Constant(NAN);
+    Kinematics::PointMotion3 pm{nan, nan, nan};
+    if (determined.ok() && inSpace) pm = k.motionInSpace(p);
+    if (determined.ok() && !inSpace) {
+      const Kinematics::PointMotion flat = k.motion(p);
+      auto lift = [](const Vec2& v) { return Vec3(v.x(), v.y(), 0); };
+      pm = {lift(flat.position), lift(flat.velocity), lift(flat.acceleration)};
+    }
+    const Vec3* v[3] = {&pm.position, &pm.velocity, &pm.acceleration};
     for (int c = 0; c < 3; ++c) {
       const double scale = motionScale(k, c);
-      motion_->item(r, c + 1)->setText(
-          v[c]->allFinite() ? QStringLiteral("%1, %2").arg(fixedText(cleaned(v[c]->x(), scale), 3),
-                                                           fixedText(cleaned(v[c]->y(), scale), 3))
-          : determined.ok() ? QStringLiteral("\u2013")
-                            : tr("not determined"));
+      QStringList xyz;
+      for (int i = 0; i < (inSpace ? 3 : 2); ++i) xyz << fixedText(cleaned((*v[c])[i], scale), 3);
+      motion_->item(r, c + 1)->setText(v[c]->allFinite() ? xyz.join(QStringLiteral(", "))
+                                       : determined.ok() ? QStringLiteral("\u2013")
+                                                         : tr("not determined"));
     }
   }
   note_->setText(why.join(QLatin1Char('\n')));

@@ -57,7 +57,8 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   // Slots within their channel (half its width and a little).
   const double reach = (CanvasStyle::channelWidth / 2 + 3) * px;
   double bestSlot = reach;
-  for (const Slot& sl : m.slots) {
+  // The ground's slots where the shown plane sees them (linkage/plane_view.h).
+  for (const Slot& sl : s.planeView().seen(m).slots) {
     const std::optional<Guide> g = guideOf(sl);
     if (!g || s.bodyHidden(sl.body)) continue;
     const double d = g->distance(s.poseOf(sl.body).inverse(world));
@@ -112,7 +113,7 @@ Snap snapAt(const CanvasScene& s, const Pick& pick, const Vec2& world, double px
     return snap;
   }
   if (pick.slot) {
-    const Slot* sl = m.slot(pick.slot);
+    const Slot* sl = s.planeView().seen(m).slot(pick.slot);
     const Transform T = s.poseOf(sl->body);
     snap.kind = Snap::Kind::Slot;
     snap.at = T * guideOf(*sl)->project(T.inverse(world));

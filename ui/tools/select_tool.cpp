@@ -221,14 +221,23 @@ void SelectTool::solvePending() {
   pending_ = false;
   Document* doc = ctx().doc;
   if (mode_ == Mode::Turn) {
-    const Kinematics::DragResult r = doc->dragTo(dragPoint_, target_);
+    // The solver takes the target in the plane class's frame (linkage/plane_view.h).
+    const Kinematics::DragResult r =
+        doc->dragTo(dragPoint_, ctx().scene->planeView().toClass(target_));
     if (!r.status.ok()) say(QString::fromStdString(r.status.message), !r.atLimit);
     return;
   }
   // Reshape: the points move in their bodies' frames as those were when the drag began.
   Mechanism m = before_->design;
+  const PlaneView& view = ctx().scene->planeView();
   for (const auto& [q, T] : moving_)
-    if (Point* pt = m.point(q)) pt->pos = T.inverse(target_);
+    if (Point* pt = m.point(q)) {
+      const Body* b = m.body(pt->body);
+      if (b && b->ground)
+        view.placeGround(*pt, target_);  // where the shown plane sees it, its depth kept
+      else
+        pt->pos = T.inverse(target_);
+    }
   doc->setDesign(m);
   if (!doc->solveStatus().ok()) say(QString::fromStdString(doc->solveStatus().message), true);
 }

@@ -133,11 +133,14 @@ void SlotTool::finish(const Vec2& end, const std::optional<Vec2>& mid) {
   const SlotId s =
       mid ? addBodyArcSlot(m, body_, T.inverse(*start_), T.inverse(*mid), T.inverse(end))
           : addBodySlot(m, body_, T.inverse(*start_), T.inverse(end));
+  const bool ground = m.body(body_)->ground;
   cancel();
   if (!s) {
     if (mid) say(tr("No arc: the three points are on one line"), true);
     return;
   }
+  // The ground's slot drawn on a plane of a machine in space: its ends in the world.
+  if (ground) ctx().scene->planeView().placeGround(*m.slot(s));
   const QString what = QString::fromStdString(m.slotLabel(s));
   commitEdit(doc, tr("Add slot %1").arg(what), std::move(m));
   say(tr("Added slot %1").arg(what));

@@ -107,7 +107,7 @@ void ToolOverlay::paintSelection(QPainter* p) const {
         p->drawRect(QRectF(toQt(at) - QPointF(10 * u, 10 * u), QSizeF(20 * u, 20 * u)));
     }
   for (SlotId s : selection_->slots_)
-    if (const Slot* sl = m.slot(s))
+    if (const Slot* sl = scene_->planeView().seen(m).slot(s))  // a ground slot in the plane
       p->drawPolygon(cutToDevice(slotOutline(*sl, scene_->poseOf(sl->body), u), p));
 }
 

@@ -95,17 +95,24 @@ struct Drawing {
   std::uint64_t revision = 0;  // Kinematics::revision() it was made from
 };
 
+class PlaneView;
+
 // The mechanism k holds at its current pose; with centres, also every instant centre of `ics`
-// (computed for k at this pose). An invalid k gives an empty drawing.
-Drawing describeDrawing(const Kinematics& k, const InstantCentres* ics = nullptr);
+// (computed for k at this pose). An invalid k gives an empty drawing. With a view (a machine in
+// space seen on one of its planes, linkage/plane_view.h) every position is in that plane's
+// coordinates, the ground's projected along its normal, and the centres are only those of its
+// plane class (none across planes that are not parallel), mapped into it.
+Drawing describeDrawing(const Kinematics& k, const InstantCentres* ics = nullptr,
+                        const PlaneView* view = nullptr);
 
 // A design as drawn (every body at its sketch pose, revision 0), for one the solver cannot
 // take (yet): what a user is drawing, or an edit that does not assemble.
-Drawing describeSketch(const Mechanism& m);
+Drawing describeSketch(const Mechanism& m, const PlaneView* view = nullptr);
 
 // Only the parts that move, for a drawing of the same revision made before: every pose,
 // position and centre updated in place, nothing allocated. False when `d` was not made from
 // k's mechanism (it must then be described afresh).
-bool updateDrawing(Drawing& d, const Kinematics& k, const InstantCentres* ics = nullptr);
+bool updateDrawing(Drawing& d, const Kinematics& k, const InstantCentres* ics = nullptr,
+                   const PlaneView* view = nullptr);
 
 }  // namespace linkage

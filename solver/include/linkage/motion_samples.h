@@ -28,13 +28,18 @@ constexpr int kOrders = 4;
 // What one curve shows: a component of a point's motion, or a body's rotation (angle, angular
 // velocity, angular acceleration, angular jerk).
 struct Quantity {
-  // X, Y and Along are components of the position vector and its derivatives; Magnitude is the
-  // length of each vector (|r|, the speed |v|, |a|, |j|), as Working Model reports them.
-  enum class Component { X, Y, Magnitude, Along };
+  // X, Y, Z and Along are components of the position vector and its derivatives; Magnitude is
+  // the length of each vector (|r|, the speed |v|, |a|, |j|), as Working Model reports them.
+  enum class Component { X, Y, Magnitude, Along, Z };
   PointId point;  // set for a point ...
   BodyId body;    // ... or this for a body's rotation
   Component component = Component::Y;
   Vec2 direction{1, 0};  // Along: the direction (normalised; must not be zero)
+  // A point's motion in the world (Kinematics::motionInSpace: a machine in space's x, y, z;
+  // z is 0 in a planar one), not in its plane class's frame; Along is then a direction in the
+  // world's x-y plane. Z is always of the world.
+  bool world = false;
+  bool inWorld() const { return world || component == Component::Z; }
 
   static Quantity ofPoint(PointId p, Component c, Vec2 along = Vec2(1, 0)) {
     Quantity q;
@@ -58,11 +63,14 @@ struct SampleSpec {
   double revs = 1;            // steps * revs must be a whole number
   bool accelerations = true;  // needed for accelerations and jerk
   double rpm = 0;             // 0: the mechanism's own
+  bool world = false;         // the points' motion in the world too (Quantity::world)
 };
 
 struct PointSamples {
   PointId id;
   std::vector<Vec2> p, v, a;  // mm, mm/s, mm/s^2; a is empty without accelerations
+  // In the world (SampleSpec::world; empty otherwise): exact, from motionInSpace.
+  std::vector<Vec3> p3, v3, a3;
 };
 
 struct BodySamples {
@@ -78,6 +86,7 @@ struct MotionSamples {
   double revs = 0;
   double rpm = 0, omega = 0;  // omega in rad/s, > 0
   bool accelerations = false;
+  bool world = false;            // the points' world motion was sampled
   std::vector<double> crankDeg;  // i * 360 / steps for i = 0, 1, ... as far as the crank went
   std::vector<PointSamples> points;
   std::vector<BodySamples> bodies;
