@@ -9,6 +9,7 @@
 #include "linkage/dynamics.h"
 #include "linkage/elements.h"
 #include "linkage/io/numbers.h"
+#include "linkage/space.h"
 #include "linkage/tables/force_table.h"
 
 namespace linkage::cli {
@@ -82,6 +83,25 @@ void noteGroundLoads(const Mechanism& m) {
           " acts on the frame itself, not through the mechanism: it is left out of the forces");
   }
 }
+// What the forces of a machine in space leave out, said rather than hidden in the numbers.
+void noteSpace(const Mechanism& m, const Forces& f) {
+  if (!isSpatial(m)) return;
+  for (const Joint& j : m.joints) {
+    const Point *a = m.point(j.a), *b = j.b ? m.point(j.b) : nullptr;
+    if (kindOf(j).role != Role::Coupling || !a || !b ||
+        parallel(planeOf(m, a->body), planeOf(m, b->body)))
+      continue;
+    error("note: the bevel pair " + jointLabel(m, j.id) +
+          " transmits the couple about each axis (its m_Nm column); its tooth forces' other "
+          "components (radial, axial) are left out, and so are their loads on the shafts' "
+          "bearings");
+  }
+  for (BodyId b : f.outOfPlaneUnsupported)
+    error("note: body \"" + m.body(b)->name +
+          "\" has loads out of its plane (a rod's end, gravity, a point at a depth) and no "
+          "single joint with the ground to bear them: they are in no reaction");
+}
+
 int dynamics(const Options& o) {
   if (std::optional<int> e = checkOptions(o)) return *e;
   std::optional<Mechanism> m = openDrivenModel(o.model);
@@ -111,6 +131,7 @@ int dynamics(const Options& o) {
           " are not determined (redundant joints share them in more than one way): their "
           "columns are left empty");
   }
+  noteSpace(*m, solver.result());
   std::string out = forceTableHeader(*m) + "\n";
   const long long rows = std::llround(o.steps * o.revs);
   Status s;
