@@ -33,6 +33,15 @@ the couple about a); pin-in-slot:<a>.fx_N,pin-in-slot:<a>.fy_N; gear:<a>.fx_N,ge
 point a as "body.point". 17 significant digits. Reactions that the joints do not determine
 (redundant joints) are left empty, and the joints are named on standard error.
 
+A machine in space (planes, docs/spatial.md; docs/dynamics.md, "Machines in space"): the
+shaking force and moment in the world, shaking_fx_N,shaking_fy_N,shaking_fz_N,shaking_mx_Nm,
+shaking_my_Nm,shaking_mz_Nm (about the world's origin), in place of the three above; each
+joint's force in its plane class's frame; a joint in a plane adds what it bears out of the plane,
+<kind>:<a>.fn_N,<kind>:<a>.mx_Nm,<kind>:<a>.my_Nm (a body's out-of-plane load is borne by its one
+joint with the ground); ball-rod:<a>.axial_N, the rod's tension (+ pulling its ends together);
+a gear adds gear:<a>.m_Nm, the couple on a's body about its axis (a bevel pair: that alone, its
+fx_N and fy_N empty and its other tooth-force components left out, said on standard error).
+
   --steps N         steps per revolution (default 360)
   --revs R          revolutions (default 1); N * R must be a whole number
   --rpm RPM         driver speed instead of the file's

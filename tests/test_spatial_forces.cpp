@@ -10,6 +10,7 @@
 
 #include "examples.h"
 #include "linkage/dynamics.h"
+#include "linkage/force_samples.h"
 #include "linkage/kinematics.h"
 #include "linkage/space.h"
 #include "linkage/tables/force_table.h"
@@ -280,6 +281,20 @@ TEST(SpatialForces, TheShakingForceAndMomentInSpaceAreWhatTheBearingsPutOnTheGro
     EXPECT_LT(worstF, 1e-9 * peakF) << turned;
     EXPECT_LT(worstM, 1e-9 * peakM) << turned;
   }
+}
+
+// The editor's force plots draw a force's x and y in its plane: on a machine in space they say
+// so rather than show part of the forces.
+TEST(SpatialForces, TheForcePlotsOfAMachineInSpaceSayWhereTheForcesAre) {
+  Kinematics k;
+  ASSERT_TRUE(k.load(withMasses(test::example("rssr-crank-rocker"), 1)).ok());
+  const ForceSamples s = sampleForces(k, 8);
+  EXPECT_EQ(s.size(), 0u);
+  EXPECT_NE(s.status.message.find("force plots of a machine in space (body \"rocker\" moves in "
+                                  "plane \"rocker\") are not computed yet"),
+            std::string::npos)
+      << s.status.message;
+  EXPECT_NE(s.status.message.find("linkage-cli dynamics writes the forces"), std::string::npos);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include "analysis/space_forces.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "elements/distance3.h"
@@ -58,8 +59,28 @@ void SpaceForces::prepare(const Mechanism& m, const System& sys,
     if (r.body[0] < 0 && r.body[1] >= 0) grounded[r.body[1]].insert(r.joint);
     if (r.body[1] < 0 && r.body[0] >= 0) grounded[r.body[0]].insert(r.joint);
   }
+  // A body's depth: the mean of its points' (where its mass is taken to be); its joints at
+  // different depths put moments out of its plane on it.
+  std::vector<double> sum(n, 0.0), lo(n, INFINITY), hi(n, -INFINITY);
+  std::vector<int> count(n, 0);
   for (const Point& p : m.points)
-    if (const int k = sys.bodyIndex(p.body); k >= 0 && p.third && *p.third != 0) loaded[k] = 1;
+    if (const int k = sys.bodyIndex(p.body); k >= 0) {
+      sum[k] += sys.pointDepth[p.id.value];
+      ++count[k];
+    }
+  for (const Joint& j : m.joints)
+    for (PointId id : {j.a, j.b}) {
+      const Point* p = id ? m.point(id) : nullptr;
+      const int k = p ? sys.bodyIndex(p->body) : -1;
+      if (k < 0) continue;
+      lo[k] = std::min(lo[k], sys.pointDepth[id.value]);
+      hi[k] = std::max(hi[k], sys.pointDepth[id.value]);
+    }
+  depth_.assign(n, 0.0);
+  for (int k = 0; k < n; ++k) {
+    depth_[k] = count[k] ? sum[k] / count[k] : placing_[k].depth;
+    if (hi[k] - lo[k] > 1e-9 * sys.size) loaded[k] = 1;
+  }
   bearing_.assign(n, -1);
   for (int k = 0; k < n; ++k) {
     if (mass[k] && mass[k]->kg > 0 && gravityOut_[k] != 0) loaded[k] = 1;
@@ -80,7 +101,7 @@ void SpaceForces::shaking(const System& sys, const std::vector<BodyView>& views,
     const Plane& f = sys.frames[sys.classOf[k]];
     const Vec3 n = f.normal();
     const BodyView& v = views[k + 1];
-    const Vec3 O = f.origin + lift(f, v.r) + placing_[k].depth * n;
+    const Vec3 O = f.origin + lift(f, v.r) + depth_[k] * n;
     Vec3 F = lift(f, Q.segment<2>(3 * k));
     moment += O.cross(F) + Q[3 * k + 2] * n;
     if (mass[k]) {  // the weight's normal part at the centre of mass
@@ -121,9 +142,9 @@ void SpaceForces::reactions(const Mechanism& m, const System& sys,
   };
   for (int k = 0; k < n; ++k) {
     const BodyView& v = views[k + 1];
-    add(k, Vec3(Q[3 * k], Q[3 * k + 1], 0), B[k], placing_[k].depth);
+    add(k, Vec3(Q[3 * k], Q[3 * k + 1], 0), B[k], depth_[k]);
     if (mass[k])
-      add(k, Vec3(0, 0, mass[k]->kg * gravityOut_[k]), v.r + v.R * mass[k]->c, placing_[k].depth);
+      add(k, Vec3(0, 0, mass[k]->kg * gravityOut_[k]), v.r + v.R * mass[k]->c, depth_[k]);
   }
   RowForce f;
   for (const Row& r : sys.cons) {

@@ -14,12 +14,12 @@
 //
 // Out of its plane a body takes the normal components of the forces on it (gravity's at its
 // centre of mass, the rods' at their ends) and the moments about the plane's axes of every force
-// on it that acts at a depth (the rods' ends, studs at a depth, the centre of mass in its
-// plane): the body's mass lies in its plane (its centre of mass at the plane's depth, no
-// product of inertia). That out-of-plane load is taken wholly by the body's bearing: its one
-// joint with the ground (pin, slider, pin in a slot), reported there as the force along the
-// class normal and the moments about the class's x and y axes through the joint's point at
-// its depth. A body with such a load and no joint, or several, with the ground is named
+// on it that acts at a depth (the rods' ends, joints at several depths): its mass and loads act
+// at the body's depth, the mean of its points' depths (no product of inertia). That out-of-plane
+// load is taken wholly by the body's bearing: its one joint with the ground (pin, slider, pin in a
+// slot), reported there as the force along the class normal and the moments about the class's x and
+// y axes through the joint's point at its depth. A body with such a load and no joint, or several,
+// with the ground is named
 // (`unsupported`): its load is in no reaction.
 #pragma once
 
@@ -67,6 +67,7 @@ class SpaceForces {
   std::vector<PlaneInClass> placing_;  // by body
   std::vector<Vec2> gravityIn_;        // by body, m/s^2, class frame
   std::vector<double> gravityOut_;     // by body, along the class normal
+  std::vector<double> depth_;          // by body: where its mass and loads act, along the normal
   std::vector<int> bearing_;           // by body: its one joint with the ground, or -1
   std::vector<BodyId> unsupported_;
 };
