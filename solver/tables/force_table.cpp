@@ -69,8 +69,11 @@ std::string forceTableRow(const Mechanism& m, const Forces& f, double tS, double
                        !parallel(planeOf(m, m.point(m.joints[i].a)->body),
                                  planeOf(m, m.point(m.joints[i].b)->body));
     auto cell = [&](const char* c) {
-      const bool empty = undetermined[i] || (bevel && std::strcmp(c, "m_Nm") != 0);
-      return "," + (empty ? std::string() : formatNumber(value(x, c, coupling)));
+      // (A bearing's load out of its plane is not known where a joint of its body's is not.)
+      const double v = value(x, c, coupling);
+      const bool empty =
+          undetermined[i] || (bevel && std::strcmp(c, "m_Nm") != 0) || !std::isfinite(v);
+      return "," + (empty ? std::string() : formatNumber(v));
     };
     for (const char* c : kind.reactionColumns) r += cell(c);
     if (space)
