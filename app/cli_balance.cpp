@@ -40,6 +40,8 @@ peak before. Writes CSV, with a header row:
   peak_after,,N,CRANK_DEG                   with the counterweights as --out writes them
 
 and on standard error the optimality gap (the peak after less the programme's bound).
+A machine in space (planes, docs/spatial.md) is refused (exit 2) naming why: its shaking force
+has a part along its planes' normals (linkage-cli dynamics gives it in 3D).
 
   --counterweight BODY  a body to put a counterweight on (repeatable)
   --minimize WHAT       fx, fy or force

@@ -9,6 +9,7 @@
 #include "linkage/dynamics.h"
 #include "linkage/elements.h"
 #include "linkage/io/numbers.h"
+#include "linkage/space.h"
 #include "linkage/tables/force_table.h"
 
 namespace linkage::cli {
@@ -31,6 +32,15 @@ the couple about a); pin-in-slot:<a>.fx_N,pin-in-slot:<a>.fy_N; gear:<a>.fx_N,ge
 (a gear pair's tooth force at the pitch point; a belt's pull along its run): <a> is the joint's
 point a as "body.point". 17 significant digits. Reactions that the joints do not determine
 (redundant joints) are left empty, and the joints are named on standard error.
+
+A machine in space (planes, docs/spatial.md; docs/dynamics.md, "Machines in space"): the
+shaking force and moment in the world, shaking_fx_N,shaking_fy_N,shaking_fz_N,shaking_mx_Nm,
+shaking_my_Nm,shaking_mz_Nm (about the world's origin), in place of the three above; each
+joint's force in its plane class's frame; a joint in a plane adds what it bears out of the plane,
+<kind>:<a>.fn_N,<kind>:<a>.mx_Nm,<kind>:<a>.my_Nm (a body's out-of-plane load is borne by its one
+joint with the ground); ball-rod:<a>.axial_N, the rod's tension (+ pulling its ends together);
+a gear adds gear:<a>.m_Nm, the couple on a's body about its axis (a bevel pair: that alone, its
+fx_N and fy_N empty and its other tooth-force components left out, said on standard error).
 
   --steps N         steps per revolution (default 360)
   --revs R          revolutions (default 1); N * R must be a whole number
@@ -82,6 +92,25 @@ void noteGroundLoads(const Mechanism& m) {
           " acts on the frame itself, not through the mechanism: it is left out of the forces");
   }
 }
+// What the forces of a machine in space leave out, said rather than hidden in the numbers.
+void noteSpace(const Mechanism& m, const Forces& f) {
+  if (!isSpatial(m)) return;
+  for (const Joint& j : m.joints) {
+    const Point *a = m.point(j.a), *b = j.b ? m.point(j.b) : nullptr;
+    if (kindOf(j).role != Role::Coupling || !a || !b ||
+        parallel(planeOf(m, a->body), planeOf(m, b->body)))
+      continue;
+    error("note: the bevel pair " + jointLabel(m, j.id) +
+          " transmits the couple about each axis (its m_Nm column); its tooth forces' other "
+          "components (radial, axial) are left out, and so are their loads on the shafts' "
+          "bearings");
+  }
+  for (BodyId b : f.outOfPlaneUnsupported)
+    error("note: body \"" + m.body(b)->name +
+          "\" has loads out of its plane (a rod's end, gravity, a point at a depth) and no "
+          "single joint with the ground to bear them: they are in no reaction");
+}
+
 int dynamics(const Options& o) {
   if (std::optional<int> e = checkOptions(o)) return *e;
   std::optional<Mechanism> m = openDrivenModel(o.model);
@@ -111,6 +140,7 @@ int dynamics(const Options& o) {
           " are not determined (redundant joints share them in more than one way): their "
           "columns are left empty");
   }
+  noteSpace(*m, solver.result());
   std::string out = forceTableHeader(*m) + "\n";
   const long long rows = std::llround(o.steps * o.revs);
   Status s;

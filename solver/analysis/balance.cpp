@@ -1,5 +1,6 @@
 // Counterweights balancing the shaking force: see linkage/balance.h.
 #include "linkage/balance.h"
+#include "linkage/space.h"
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -287,6 +288,12 @@ BalanceResult Balancer::run() {
     r.status = Status::badModel(opt_.bodies.empty() ? "no counterweight to place"
                                 : opt_.steps < 8    ? "at least 8 steps a turn"
                                                     : "the bound must be a number >= 0");
+    return r;
+  }
+  // A machine in space: its shaking force has a part along the planes' normals and its
+  // counterweights would turn in several planes; the balance is of planar machines.
+  if (std::string why = notInSpaceYet(work_.mechanism(), "counterweights"); !why.empty()) {
+    r.status = Status::badModel(why);
     return r;
   }
   if (!pivots(r)) return r;

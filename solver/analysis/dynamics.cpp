@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "analysis/group_forces.h"
+#include "analysis/space_forces.h"
 #include "kinematics/kinematics_state.h"
 
 namespace linkage {
@@ -15,6 +16,12 @@ namespace linkage {
 namespace {
 
 constexpr double kNaN = NAN;
+
+// A reaction that is not known: every part NaN but where it acts.
+void unknown(JointReaction& r) {
+  const Vec2 at = r.at;
+  r = {Vec2::Constant(kNaN), at, kNaN, kNaN, Vec2::Constant(kNaN), kNaN, kNaN};
+}
 
 // Positions at k's pose, for the kinds' react().
 struct KinematicsPose : Pose {
@@ -27,15 +34,13 @@ struct KinematicsPose : Pose {
 }  // namespace
 
 struct ForceSolver::Impl {
-  struct BodyMass {
-    double kg = 0, j = 0;   // kg, kg mm^2
-    Vec2 c = Vec2::Zero();  // the centre of mass in the body's frame
-  };
+  using BodyMass = SpaceForces::BodyMass;
   struct LoadAt {
     Load load;  // a copy: the solver may outlive the kinematics it was prepared on (a copy of
                 // them of the same revision is computed with)
     int body = -1;
-    Vec2 s = Vec2::Zero();  // the point in the body's frame (a force)
+    Vec2 s = Vec2::Zero();      // the point in the body's frame (a force)
+    Vec2 force = Vec2::Zero();  // in the body's class frame (in space; else the load's)
   };
   std::uint64_t revision = 0;
   std::vector<std::optional<BodyMass>> mass;  // by system body index
@@ -57,6 +62,7 @@ struct ForceSolver::Impl {
   std::vector<char> rowDetermined;  // by scalar row
   std::vector<BodyView> views;
   GroupForces groups;  // on the closed-form path
+  SpaceForces space;   // a machine in space's planes, bearings and rods
   Eigen::VectorXd Q, lambda, x;
 
   void bodies(const KinematicsState& s);
@@ -66,7 +72,7 @@ struct ForceSolver::Impl {
   bool solveWithKinematics(const KinematicsState& s);
   bool solveWhole(const KinematicsState& s);
   void reactions(const KinematicsState& s, const Kinematics& k, Forces& out);
-  void shakingOf(const System& sys, Vec2& force, double& moment) const;
+  void shakingOf(const System& sys, Forces& out) const;
 };
 
 void ForceSolver::ImplDeleter::operator()(Impl* p) const {
@@ -75,22 +81,30 @@ void ForceSolver::ImplDeleter::operator()(Impl* p) const {
 
 void ForceSolver::Impl::bodies(const KinematicsState& s) {
   const System& sys = s.sys;
+  // In space a body's centre of mass and loads are in its plane: into its class's frame.
+  const bool spatial = isSpatial(s.mech);
+  const PlaneClasses pc = spatial ? planeClasses(s.mech) : PlaneClasses{};
+  auto placing = [&](BodyId b) { return pc.of(s.mech.body(b)->plane); };
   mass.assign(sys.nBodies, std::nullopt);
   for (const Body& b : s.mech.bodies) {
     const int k = sys.bodyIndex(b.id);
     if (k < 0 || !b.mass) continue;
-    mass[k] = BodyMass{b.mass->kg, b.mass->jKgMm2, Vec2(b.mass->com - sys.frameOrigin[k])};
+    const Vec2 com = spatial ? placing(b.id).toClass(b.mass->com) : b.mass->com;
+    mass[k] = BodyMass{b.mass->kg, b.mass->jKgMm2, Vec2(com - sys.frameOrigin[k])};
   }
   loads.clear();
   for (const Load& l : s.mech.loads) {
     if (l.point) {
       const PointLocation* p = sys.point(l.point);
-      if (p && p->body >= 0) loads.push_back({l, p->body, p->s});
+      if (!p || p->body < 0) continue;
+      const PlaneInClass in = spatial ? placing(s.mech.point(l.point)->body) : PlaneInClass{};
+      loads.push_back({l, p->body, p->s, in.identity ? l.forceN : Vec2(in.rot * l.forceN)});
     } else if (const int k = sys.bodyIndex(l.body); k >= 0) {
-      loads.push_back({l, k, Vec2::Zero()});
+      loads.push_back({l, k, Vec2::Zero(), Vec2::Zero()});
     }
   }
   gravity = s.mech.gravity.value_or(Vec2::Zero());
+  space.prepare(s.mech, sys, mass, gravity);
 }
 
 // What the reactions read, listed once (shaking() needs none of it).
@@ -130,8 +144,8 @@ void ForceSolver::Impl::appliedAndInertia(const KinematicsState& s, double omega
     const BodyMass& bm = *mass[k];
     const BodyState& b = m.body[k];
     const Vec2 g = b.R * bm.c;
-    const Vec2 acc = w2 * (b.a + b.al * perp(g) - b.w * b.w * g);  // mm/s^2
-    const Vec2 F = bm.kg * (gravity - acc / 1000);                 // N
+    const Vec2 acc = w2 * (b.a + b.al * perp(g) - b.w * b.w * g);                       // mm/s^2
+    const Vec2 F = bm.kg * ((space.on() ? space.gravityIn(k) : gravity) - acc / 1000);  // N
     Q.segment<2>(3 * k) += F;
     Q[3 * k + 2] += cross(g, F) - bm.j * w2 * b.al / 1000;  // N mm (kg mm^2/s^2 = 1e-3 N mm)
   }
@@ -139,23 +153,32 @@ void ForceSolver::Impl::appliedAndInertia(const KinematicsState& s, double omega
     if (!l.load.activeAt(crankDeg)) continue;
     if (l.load.point) {
       const Vec2 g = m.body[l.body].R * l.s;
-      Q.segment<2>(3 * l.body) += l.load.forceN;
-      Q[3 * l.body + 2] += cross(g, l.load.forceN);
+      Q.segment<2>(3 * l.body) += l.force;
+      Q[3 * l.body + 2] += cross(g, l.force);
     } else {
       Q[3 * l.body + 2] += 1000 * l.load.torqueNm;
     }
   }
 }
 
-void ForceSolver::Impl::shakingOf(const System& sys, Vec2& force, double& moment) const {
-  force.setZero();
-  moment = 0;
+void ForceSolver::Impl::shakingOf(const System& sys, Forces& out) const {
+  if (space.on()) {
+    space.shaking(sys, views, Q, mass, out.shakingForce3N, out.shakingMoment3Nm);
+    out.shakingForceN = out.shakingForce3N.head<2>();
+    out.shakingMomentNm = out.shakingMoment3Nm.z();
+    return;
+  }
+  Vec2 force = Vec2::Zero();
+  double moment = 0;
   for (int k = 0; k < sys.nBodies; ++k) {
     const Vec2 F = Q.segment<2>(3 * k);
     force += F;
     moment += Q[3 * k + 2] + cross(views[k + 1].r, F);  // about the sketch origin, N mm
   }
-  moment /= 1000;
+  out.shakingForceN = force;
+  out.shakingMomentNm = moment / 1000;
+  out.shakingForce3N = Vec3(force.x(), force.y(), 0);
+  out.shakingMoment3Nm = Vec3(0, 0, out.shakingMomentNm);
 }
 
 // On the general path the kinematics factored J at this very pose for its velocities: J^T lambda
@@ -263,8 +286,6 @@ Status ForceSolver::prepare(const Kinematics& k) {
   out_ = Forces{};
   d_.reset();
   if (!k.valid()) return out_.status = Status::badModel("no mechanism is loaded");
-  if (std::string why = notInSpaceYet(k.mechanism(), "forces"); !why.empty())
-    return out_.status = Status::badModel(why);
   const KinematicsState& s = internal::state(k);
   if (!s.sys.hasDriver)
     return out_.status = Status::badModel(
@@ -280,6 +301,7 @@ Status ForceSolver::prepare(const Kinematics& k) {
   d_->joints(s);
   d_->grouped = s.plan.has_value() && s.decomposition.closedForm();
   if (d_->grouped) d_->groups.prepare(s.sys, s.decomposition);
+  out_.outOfPlaneUnsupported = d_->space.unsupported();
   d_->undetermined(s, out_);
   return out_.status;
 }
@@ -314,14 +336,14 @@ void ForceSolver::Impl::reactions(const KinematicsState& s, const Kinematics& k,
   }
   for (const Coupling& c : coupling) joints[c.joint].coupleNm += c.perUnit * lambda[c.row];
   for (size_t j = 0; j < n; ++j) joints[j].coupleNm /= 1000;
+  for (size_t j = 0; j < n; ++j) joints[j].transmittedNm = joints[j].coupleNm;
+  if (space.on()) space.reactions(m, s.sys, views, lambda, Q, mass, out);
   if (!restated.empty()) {
     const KinematicsPose pose(k);
     for (int j : restated) kindOf(m.joints[j]).react(m, j, pose, out.joints);
   }
   for (JointId id : out.undetermined) {
-    JointReaction& r = out.joints[m.jointIndex(id)];
-    r.force = Vec2::Constant(kNaN);
-    r.coupleNm = kNaN;
+    unknown(out.joints[m.jointIndex(id)]);
   }
 }
 
@@ -344,7 +366,8 @@ const Forces& ForceSolver::compute(const Kinematics& k) {
     out.driverTorqueNm = kNaN;
     out.shakingForceN = Vec2::Constant(kNaN);
     out.shakingMomentNm = kNaN;
-    for (JointReaction& r : out.joints) r = {Vec2::Constant(kNaN), Vec2::Constant(kNaN), kNaN};
+    out.shakingForce3N = out.shakingMoment3Nm = Vec3::Constant(kNaN);
+    for (JointReaction& r : out.joints) unknown(r), r.at = Vec2::Constant(kNaN);
     return out;
   }
   viewsOf(s, d_->views);
@@ -352,7 +375,7 @@ const Forces& ForceSolver::compute(const Kinematics& k) {
   // Forces past double's range (a speed of 1e200 rpm, loads of 1e308 N) are no figures: said so,
   // not taken for a singular position, and never written as inf or NaN.
   if (!d_->Q.allFinite()) return overflowed(out);
-  d_->shakingOf(s.sys, out.shakingForceN, out.shakingMomentNm);
+  d_->shakingOf(s.sys, out);
   auto solve = [&] {
     return d_->grouped ? d_->groups.solve(s.sys, d_->views, d_->Q, d_->lambda) || d_->solveWhole(s)
                        : d_->solveWithKinematics(s) || d_->solveWhole(s);
@@ -388,7 +411,8 @@ const Forces& ForceSolver::overflowed(Forces& out) {
   out.driverTorqueNm = kNaN;
   out.shakingForceN = Vec2::Constant(kNaN);
   out.shakingMomentNm = kNaN;
-  for (JointReaction& r : out.joints) r = {Vec2::Constant(kNaN), Vec2::Constant(kNaN), kNaN};
+  out.shakingForce3N = out.shakingMoment3Nm = Vec3::Constant(kNaN);
+  for (JointReaction& r : out.joints) unknown(r), r.at = Vec2::Constant(kNaN);
   return out;
 }
 
@@ -420,7 +444,10 @@ void shaking(const Kinematics& k, Vec2& forceN, double& momentNm) {
   d.bodies(s);
   viewsOf(s, d.views);
   d.appliedAndInertia(s, k.omega(), k.crankDeg());
-  d.shakingOf(s.sys, forceN, momentNm);
+  Forces out;
+  d.shakingOf(s.sys, out);
+  forceN = out.shakingForceN;
+  momentNm = out.shakingMomentNm;
 }
 
 }  // namespace linkage

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "linkage/space.h"
+
 namespace linkage {
 
 ForceSamples sampleForces(const Kinematics& k, long long steps, double revs, double rpm) {
@@ -11,6 +13,12 @@ ForceSamples sampleForces(const Kinematics& k, long long steps, double revs, dou
   if (rpm > 0) probe.setRpm(rpm);
   out.rpm = probe.valid() ? probe.rpm() : 0;
   out.steps = steps;
+  // The editor's plots show a force in its plane's x and y: a machine in space has more (the
+  // shaking force's z, the bearings' loads out of their planes, the rods' tension), which they
+  // do not draw yet; linkage-cli dynamics writes them (docs/dynamics.md).
+  if (probe.valid())
+    if (std::string why = notInSpaceYet(probe.mechanism(), "force plots"); !why.empty())
+      return out.status = Status::badModel(why + " (linkage-cli dynamics writes the forces)"), out;
   ForceSolver solver;
   if (!(out.status = solver.prepare(probe)).ok()) return out;
   out.undetermined = solver.result().undetermined;

@@ -186,6 +186,9 @@ void react(const Mechanism& m, int index, const Pose& pose, std::vector<JointRea
   const Joint& j = m.joints[index];
   JointReaction& r = all[index];
   const Point *a = m.point(j.a), *b = m.point(j.b);
+  // A bevel pair transmits the couple about each axis and no more is computed: its tooth
+  // force's other components (radial, axial) are not in the model (docs/dynamics.md).
+  if (!parallel(planeOf(m, a->body), planeOf(m, b->body))) return;
   const Vec2 A = pose.point(j.a), B = pose.point(j.b);
   const double M = r.coupleNm * 1000;  // N mm, on a's body about A
   const double d = (B - A).norm();

@@ -1,29 +1,83 @@
 #include "linkage/tables/force_table.h"
 
+#include <cmath>
+#include <cstring>
+
 #include "linkage/io/numbers.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
+namespace {
+
+// What a machine in space adds to a kind's columns (docs/dynamics.md): a joint in the plane,
+// what its bearing takes out of the plane; a gear, the couple it transmits.
+constexpr const char* kOutOfPlane[] = {"fn_N", "mx_Nm", "my_Nm"};
+constexpr const char* kTransmitted[] = {"m_Nm"};
+
+std::span<const char* const> spaceColumns(const ElementKind& kind) {
+  if (kind.role == Role::Coupling) return kTransmitted;
+  if (kind.role == Role::Distance) return {};
+  return kOutOfPlane;
+}
+
+// A column's value by its name: planar columns are the force, its couple and a rod's pull.
+double value(const JointReaction& x, const char* column, bool coupling) {
+  if (!std::strcmp(column, "fx_N")) return x.force.x();
+  if (!std::strcmp(column, "fy_N")) return x.force.y();
+  if (!std::strcmp(column, "axial_N")) return x.axialN;
+  if (!std::strcmp(column, "fn_N")) return x.normalN;
+  if (!std::strcmp(column, "mx_Nm")) return x.tiltNm.x();
+  if (!std::strcmp(column, "my_Nm")) return x.tiltNm.y();
+  return coupling ? x.transmittedNm : x.coupleNm;  // m_Nm
+}
+
+}  // namespace
+
 std::string forceTableHeader(const Mechanism& m) {
-  std::string h = "t_s,crank_deg,driver_torque_Nm,shaking_fx_N,shaking_fy_N,shaking_moment_Nm";
+  const bool space = isSpatial(m);
+  std::string h = "t_s,crank_deg,driver_torque_Nm,shaking_fx_N,shaking_fy_N,";
+  h += space ? "shaking_fz_N,shaking_mx_Nm,shaking_my_Nm,shaking_mz_Nm" : "shaking_moment_Nm";
   for (const Joint& j : m.joints) {
     const ElementKind& kind = kindOf(j);
-    for (const char* c : kind.reactionColumns)
-      h += std::string(",") + kind.name + ":" + m.pointLabel(j.a) + "." + c;
+    const std::string at = std::string(",") + kind.name + ":" + m.pointLabel(j.a) + ".";
+    for (const char* c : kind.reactionColumns) h += at + c;
+    if (space)
+      for (const char* c : spaceColumns(kind)) h += at + c;
   }
   return h;
 }
 
 std::string forceTableRow(const Mechanism& m, const Forces& f, double tS, double crankDeg,
                           const std::vector<char>& undetermined) {
+  const bool space = isSpatial(m);
   std::string r = formatNumber(tS) + "," + formatNumber(crankDeg) + "," +
                   formatNumber(f.driverTorqueNm) + "," + formatNumber(f.shakingForceN.x()) + "," +
-                  formatNumber(f.shakingForceN.y()) + "," + formatNumber(f.shakingMomentNm);
+                  formatNumber(f.shakingForceN.y());
+  if (space)
+    for (double v : {f.shakingForce3N.z(), f.shakingMoment3Nm.x(), f.shakingMoment3Nm.y(),
+                     f.shakingMoment3Nm.z()})
+      r += "," + formatNumber(v);
+  else
+    r += "," + formatNumber(f.shakingMomentNm);
   for (size_t i = 0; i < m.joints.size(); ++i) {
     const JointReaction& x = f.joints[i];
-    const double values[3] = {x.force.x(), x.force.y(), x.coupleNm};
-    const size_t n = kindOf(m.joints[i]).reactionColumns.size();
-    for (size_t c = 0; c < n; ++c) r += "," + (undetermined[i] ? "" : formatNumber(values[c]));
+    const ElementKind& kind = kindOf(m.joints[i]);
+    const bool coupling = kind.role == Role::Coupling;
+    // A bevel pair's tooth force is not computed, only the couple it transmits.
+    const bool bevel = space && coupling && !undetermined[i] &&
+                       !parallel(planeOf(m, m.point(m.joints[i].a)->body),
+                                 planeOf(m, m.point(m.joints[i].b)->body));
+    auto cell = [&](const char* c) {
+      // (A bearing's load out of its plane is not known where a joint of its body's is not.)
+      const double v = value(x, c, coupling);
+      const bool empty =
+          undetermined[i] || (bevel && std::strcmp(c, "m_Nm") != 0) || !std::isfinite(v);
+      return "," + (empty ? std::string() : formatNumber(v));
+    };
+    for (const char* c : kind.reactionColumns) r += cell(c);
+    if (space)
+      for (const char* c : spaceColumns(kind)) r += cell(c);
   }
   return r;
 }

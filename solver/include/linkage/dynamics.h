@@ -34,10 +34,18 @@ struct Forces {
   //   sum(r_load x F_load) + sum(torque loads) + sum(r_com x m (g - a_com)) - sum(J alpha).
   Vec2 shakingForceN = Vec2::Zero();
   double shakingMomentNm = 0;
+  // The same in the world, in 3D (a machine in space: the bodies' planes lifted; the moment
+  // about the world's origin): shakingForceN is its x and y, shakingMomentNm its z. A planar
+  // machine's has z force 0 and x, y moments 0.
+  Vec3 shakingForce3N = Vec3::Zero();
+  Vec3 shakingMoment3Nm = Vec3::Zero();
   // Mechanism::joints order: the force on the body of the joint's point a from the other side
   // (its kind says how: linkage/elements.h); NaN for the undetermined.
   std::vector<JointReaction> joints;
   std::vector<JointId> undetermined;  // file order
+  // A machine in space: the bodies with a load out of their planes and no single joint with the
+  // ground (a bearing) to take it (docs/dynamics.md): that load is in no reaction.
+  std::vector<BodyId> outOfPlaneUnsupported;
 };
 
 void shaking(const Kinematics& k, Vec2& forceN, double& momentNm);

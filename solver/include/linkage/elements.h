@@ -93,10 +93,21 @@ struct JointSymbol {
 // the other side (N), where it acts (world mm) and the couple with it (N m, about `at`). Made
 // from the joint's rows (a force at its point, a couple); a kind may state it otherwise
 // (react(): a gear's couple as the tooth force at the pitch point).
+//
+// On a machine in space (linkage/space.h) `force` and `at` are in the frame of the joint's plane
+// class, and a joint also carries what acts out of that plane (docs/dynamics.md, "Machines in
+// space"): `normalN` along the class's normal and `tiltNm` about its x and y axes through `at`,
+// from the out-of-plane load of the moving body it holds to the ground (a bearing); a ball rod
+// its axial force `axialN` (tension positive); a gear the couple `transmittedNm` its rows put on
+// a's body about its axis (a bevel pair: all it is computed with).
 struct JointReaction {
   Vec2 force = Vec2::Zero();
   Vec2 at = Vec2::Zero();
   double coupleNm = 0;
+  double normalN = 0;
+  Vec2 tiltNm = Vec2::Zero();
+  double axialN = 0;
+  double transmittedNm = 0;
 };
 
 struct ElementKind {

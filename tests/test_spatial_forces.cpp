@@ -1,0 +1,334 @@
+// Forces on machines in space (linkage/dynamics.h, analysis/space_forces.h) against truths found
+// without the solver's rows: the RSSR's rod force from its rocker's equation of motion and the
+// closed form of its motion, its bearings' loads from that rod force; the power balance of the
+// spatial examples with masses, gravity and loads; the frame's balance in 3D (the shaking force
+// and moment are what the bearings put on the ground).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "examples.h"
+#include "linkage/dynamics.h"
+#include "linkage/force_samples.h"
+#include "linkage/kinematics.h"
+#include "linkage/space.h"
+#include "linkage/tables/force_table.h"
+
+namespace linkage {
+namespace {
+
+// The RSSR example (resources/examples/spatial.py): the crank R on the z axis, its ball at depth
+// 5; the rocker W about the axis through H along the normal of the plane (X, Y) inclined 23
+// degrees.
+constexpr double kR = 7.5, kDepth = 5, kW = 28.5, kRho = 23 * M_PI / 180;
+constexpr double kPhi0 = 30 * M_PI / 180, kPsi0 = 160 * M_PI / 180;
+const Vec3 kH(0, 0, 80);
+const Vec3 kX(0, std::cos(kRho), std::sin(kRho)), kY(0, -std::sin(kRho), std::cos(kRho));
+
+Vec3 crankA(double phi) {
+  return Vec3(kR * std::cos(kPhi0 + phi), kR * std::sin(kPhi0 + phi), kDepth);
+}
+Vec3 rockerC(double psi) {
+  return kH + kW * (std::cos(psi) * kX + std::sin(psi) * kY);
+}
+
+// The rocker's angle psi(phi) from a cos(psi) + b sin(psi) = c (the branch nearest `near`) and
+// its first two derivatives by the crank angle from F = |A - C|^2 - l^2 = 0 differentiated twice.
+struct Rocker {
+  double psi, d1, d2;
+};
+Rocker closedForm(double phi, double near, double l) {
+  const double t = kPhi0 + phi;
+  const Vec3 A = crankA(phi);
+  const Vec3 A1(-kR * std::sin(t), kR * std::cos(t), 0),
+      A2(-kR * std::cos(t), -kR * std::sin(t), 0);
+  const Vec3 AH = A - kH;
+  const double a = 2 * kW * AH.dot(kX), b = 2 * kW * AH.dot(kY),
+               c = AH.squaredNorm() + kW * kW - l * l;
+  const double base = std::atan2(b, a), half = std::acos(c / std::hypot(a, b));
+  double psi = base + half;
+  auto gap = [&](double x) { return std::abs(std::remainder(x - near, 2 * M_PI)); };
+  if (gap(base - half) < gap(psi)) psi = base - half;
+  psi = near + std::remainder(psi - near, 2 * M_PI);
+  const Vec3 C = rockerC(psi);
+  const Vec3 C1 = kW * (-std::sin(psi) * kX + std::cos(psi) * kY);
+  const Vec3 C2 = -kW * (std::cos(psi) * kX + std::sin(psi) * kY);
+  const Vec3 D = A - C;
+  const double Fphi = 2 * D.dot(A1), Fpsi = -2 * D.dot(C1);
+  const double d1 = -Fphi / Fpsi;
+  const double Fpp = 2 * (A1.dot(A1) + D.dot(A2)), Fps = -2 * A1.dot(C1),
+               Fss = 2 * (C1.dot(C1) - D.dot(C2));
+  return {psi, d1, -(Fpp + 2 * Fps * d1 + Fss * d1 * d1) / Fpsi};
+}
+
+const Plane& planeOfPoint(const Mechanism& m, const std::string& label) {
+  return planeOf(m, m.point(*m.findPoint(label))->body);
+}
+
+// Lifts a joint's reaction (in its plane, which is its class's frame in these machines) to the
+// world: the force and the moment about the plane's axes through where it acts.
+Vec3 worldForce(const Plane& p, const JointReaction& r) {
+  return r.force.x() * p.xAxis + r.force.y() * p.yAxis + r.normalN * p.normal();
+}
+
+// A massless crank and a rocker of inertia J about its own axis (its centre of mass on it): the
+// rod's tension is the rocker's J psi'' over the moment arm of the rod about the rocker's axis,
+// psi'' = psi_phiphi omega^2 from the closed form. The bearings then carry the rod's pull.
+TEST(SpatialForces, TheRssrRodForceIsTheRockersEquationOfMotion) {
+  Mechanism m = test::example("rssr-crank-rocker");
+  constexpr double kJ = 2500;  // kg mm^2
+  m.body(m.bodyNamed("rocker")->id)->mass = Mass{0.3, Vec2::Zero(), kJ, ""};
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  ForceSolver solver;
+  ASSERT_TRUE(solver.prepare(k).ok()) << solver.result().status.message;
+  const double w = k.omega(), l = (crankA(0) - rockerC(kPsi0)).norm();
+  const Vec3 n = kX.cross(kY);
+  double psi = kPsi0, peak = 0, worst = 0, worstBearing = 0;
+  std::vector<double> tension, got;
+  for (int deg = 0; deg < 360; deg += 2) {
+    const Rocker r = closedForm(deg * M_PI / 180, psi, l);
+    psi = r.psi;
+    const Vec3 A = crankA(deg * M_PI / 180), C = rockerC(psi), u = (A - C) / l;
+    const double arm = n.dot((C - kH).cross(u));      // mm
+    const double T = 1e-3 * kJ * r.d2 * w * w / arm;  // N (kg mm^2/s^2 = 1e-3 N mm)
+    ASSERT_TRUE(k.moveTo(deg).ok()) << deg;
+    const Forces& f = solver.compute(k);
+    ASSERT_TRUE(f.status.ok()) << f.status.message;
+    tension.push_back(T);
+    got.push_back(f.joints[2].axialN);
+    peak = std::max(peak, std::abs(T));
+    // The rod pulls C towards A by T u and A towards C by -T u; the rocker's bearing at H takes
+    // the first (its centre of mass does not move), the crank's at O the second, each with its
+    // moment about its plane's axes: what the bodies put on the ground (point a of each pin).
+    const Vec3 onC = T * u, onA = -T * u;
+    const Vec3 MC = (C - kH).cross(onC) / 1000, MA = A.cross(onA) / 1000;  // N m
+    const Plane &pc = planeOfPoint(m, "rocker.H"), &pa = planeOfPoint(m, "crank.O");
+    const JointReaction &h = f.joints[1], &o = f.joints[0];
+    worst = std::max(worst, (worldForce(pc, h) - onC).norm());
+    worst = std::max(worst, (worldForce(pa, o) - onA).norm());
+    worstBearing = std::max(worstBearing, std::abs(h.tiltNm.x() - MC.dot(pc.xAxis)) +
+                                              std::abs(h.tiltNm.y() - MC.dot(pc.yAxis)) +
+                                              std::abs(o.tiltNm.x() - MA.dot(pa.xAxis)) +
+                                              std::abs(o.tiltNm.y() - MA.dot(pa.yAxis)));
+  }
+  ASSERT_GT(peak, 1);  // the rocker's inertia loads the rod
+  double rel = 0;
+  for (size_t i = 0; i < got.size(); ++i) rel = std::max(rel, std::abs(got[i] - tension[i]) / peak);
+  EXPECT_LT(rel, 1e-9);
+  EXPECT_LT(worst, 1e-9 * peak);
+  EXPECT_LT(worstBearing, 1e-9 * peak * kW / 1000);
+  std::printf("[ rssr rod ] peak tension %.6g N, largest difference %.3g of it; bearings %.3g N\n",
+              peak, rel, worst);
+}
+
+// Masses on every moving body (a point at each centre of mass, for its motion in the world), the
+// file's gravity, a force in one body's plane and a torque on another.
+Mechanism withMasses(Mechanism m, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.2, 1.0), off(-5, 5);
+  std::vector<BodyId> moving;
+  for (const Body& b : m.bodies)
+    if (!b.ground) moving.push_back(b.id);
+  for (BodyId id : moving) {
+    Vec2 c = Vec2::Zero();
+    int n = 0;
+    for (const Point& p : m.points)
+      if (p.body == id) c += p.pos, ++n;
+    c = c / std::max(n, 1) + Vec2(off(rng), off(rng));
+    m.body(id)->mass = Mass{u(rng), c, 100 * u(rng), ""};
+    m.addPoint(id, "G_com", c);
+  }
+  m.gravity = Vec2(3, -9.81);
+  const Body& last = *m.body(moving.back());
+  const Point* p = nullptr;
+  for (const Point& q : m.points)
+    if (q.body == last.id && q.name != "G_com") p = &q;
+  m.addLoad(Load{p->id, {}, Vec2(3, -7), 0, 40.0, 200.0, ""});
+  m.addLoad(Load{{}, moving.front(), Vec2::Zero(), 0.05, std::nullopt, std::nullopt, ""});
+  return m;
+}
+
+// d(kinetic energy)/dt less the power of gravity and of the loads (W), from the bodies' motion
+// in the world: what the driver must put in.
+double powerNeeded(const Kinematics& k) {
+  const Mechanism& m = k.mechanism();
+  const Vec3 g(m.gravity->x(), m.gravity->y(), 0);
+  double p = 0;
+  for (const Body& b : m.bodies) {
+    if (b.ground || !b.mass) continue;
+    PointId com;
+    for (const Point& q : m.points)
+      if (q.body == b.id && q.name == "G_com") com = q.id;
+    const Kinematics::PointMotion3 c = k.motionInSpace(com);
+    const double w = k.bodyOmega(b.id), al = k.bodyAlpha(b.id);
+    p += 1e-6 * (b.mass->kg * c.velocity.dot(c.acceleration) + b.mass->jKgMm2 * w * al);
+    p -= 1e-3 * b.mass->kg * g.dot(c.velocity);
+  }
+  for (const Load& l : m.loads) {
+    if (!l.activeAt(k.crankDeg())) continue;
+    if (l.point) {
+      const Plane& pl = planeOf(m, m.point(l.point)->body);
+      const Vec3 F = l.forceN.x() * pl.xAxis + l.forceN.y() * pl.yAxis;  // in its body's plane
+      p -= 1e-3 * F.dot(k.motionInSpace(l.point).velocity);
+    } else {
+      p -= l.torqueNm * k.bodyOmega(l.body);
+    }
+  }
+  return p;
+}
+
+TEST(SpatialForces, PowerBalanceHoldsOnTheSpatialExamples) {
+  for (const char* name : {"rssr-crank-rocker", "overedge-machine", "lockstitch-bevel"}) {
+    for (bool closedForm : {true, false}) {
+      const Mechanism m = withMasses(test::example(name), 11);
+      KinematicsOptions opt;
+      opt.closedForm = closedForm;
+      Kinematics k(opt);
+      ASSERT_TRUE(k.load(m).ok()) << name;
+      ForceSolver f;
+      ASSERT_TRUE(f.prepare(k).ok()) << name << ": " << f.result().status.message;
+      const Joint& d = *m.joint(m.driver->joint);
+      std::vector<double> input, needed;
+      for (double deg = 0; deg < 360; deg += 3) {
+        ASSERT_TRUE(k.moveTo(deg).ok()) << name << " " << deg;
+        const Forces& r = f.compute(k);
+        ASSERT_TRUE(r.status.ok()) << r.status.message;
+        const double speed =
+            k.bodyOmega(m.point(d.b)->body) - k.bodyOmega(m.point(d.a)->body);  // rad/s
+        input.push_back(r.driverTorqueNm * speed);
+        needed.push_back(powerNeeded(k));
+      }
+      double peak = 0, worst = 0;
+      for (double x : input) peak = std::max(peak, std::abs(x));
+      ASSERT_GT(peak, 0) << name;
+      for (size_t i = 0; i < input.size(); ++i)
+        worst = std::max(worst, std::abs(input[i] - needed[i]));
+      EXPECT_LT(worst, 1e-12 * peak) << name << (closedForm ? " (closed form)" : "");
+      std::printf("[ power ] %s%s: peak %.6g W, largest residual %.3g of it\n", name,
+                  closedForm ? " (closed form)" : "", peak, worst / peak);
+    }
+  }
+}
+
+// The RSSR with its crank drawn in a plane parallel to the drawing but turned 30 degrees about z
+// (the crank's class is the drawing's: its centre of mass and loads are turned into it).
+Mechanism turnedCrank(Mechanism m) {
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  m.planes->push_back(Plane{"turned", Vec3::Zero(), Vec3(c, s, 0), Vec3(-s, c, 0), {}});
+  Body& crank = *m.body(m.bodyNamed("crank")->id);
+  crank.plane = "turned";
+  for (Point& p : m.points)
+    if (p.body == crank.id)
+      p.pos = Vec2(c * p.pos.x() + s * p.pos.y(), -s * p.pos.x() + c * p.pos.y());
+  return m;
+}
+
+TEST(SpatialForces, PowerBalanceHoldsWithABodyInATurnedParallelPlane) {
+  Mechanism m = withMasses(turnedCrank(test::example("rssr-crank-rocker")), 5);
+  m.addLoad(Load{*m.findPoint("crank.A"), {}, Vec2(5, 2), 0, std::nullopt, std::nullopt, ""});
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  ForceSolver f;
+  ASSERT_TRUE(f.prepare(k).ok()) << f.result().status.message;
+  double peak = 0, worst = 0;
+  for (double deg = 0; deg < 360; deg += 3) {
+    ASSERT_TRUE(k.moveTo(deg).ok()) << deg;
+    const Forces& r = f.compute(k);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    const double input = r.driverTorqueNm * k.bodyOmega(m.bodyNamed("crank")->id);
+    peak = std::max(peak, std::abs(input));
+    worst = std::max(worst, std::abs(input - powerNeeded(k)));
+  }
+  ASSERT_GT(peak, 0);
+  EXPECT_LT(worst, 1e-12 * peak);
+}
+
+// What the bodies put on the ground through its bearings (each reaction on the ground, lifted
+// to the world, with its moment about the plane's axes) and the driver (its torque's reaction)
+// is the shaking force and moment found from the bodies' masses and motion alone.
+TEST(SpatialForces, TheShakingForceAndMomentInSpaceAreWhatTheBearingsPutOnTheGround) {
+  for (bool turned : {false, true}) {
+    Mechanism m = withMasses(test::example("rssr-crank-rocker"), 3);
+    if (turned) m = turnedCrank(m);
+    Kinematics k;
+    ASSERT_TRUE(k.load(m).ok());
+    ForceSolver f;
+    ASSERT_TRUE(f.prepare(k).ok()) << f.result().status.message;
+    EXPECT_TRUE(f.result().outOfPlaneUnsupported.empty());
+    double peakF = 0, peakM = 0, worstF = 0, worstM = 0;
+    for (double deg = 0; deg < 360; deg += 5) {
+      ASSERT_TRUE(k.moveTo(deg).ok()) << deg;
+      const Forces& r = f.compute(k);
+      ASSERT_TRUE(r.status.ok()) << r.status.message;
+      Vec3 F = Vec3::Zero(), M = -r.driverTorqueNm * Vec3::UnitZ();
+      for (int j : {0, 1}) {  // ground.O - crank.O, ground.H - rocker.H: point a on the ground
+        // Each reaction in its joint's class frame: the drawing's for the crank, the rocker's.
+        const Plane& p = j == 0 ? drawingPlane() : planeOfPoint(m, "rocker.H");
+        const JointReaction& x = r.joints[j];
+        const Vec3 Fw = worldForce(p, x);
+        F += Fw;
+        M += p.world(x.at).cross(Fw) / 1000 + x.tiltNm.x() * p.xAxis + x.tiltNm.y() * p.yAxis;
+      }
+      peakF = std::max(peakF, r.shakingForce3N.norm());
+      peakM = std::max(peakM, r.shakingMoment3Nm.norm());
+      worstF = std::max(worstF, (F - r.shakingForce3N).norm());
+      worstM = std::max(worstM, (M - r.shakingMoment3Nm).norm());
+      EXPECT_EQ(r.shakingForceN, r.shakingForce3N.head<2>());
+    }
+    ASSERT_GT(peakF, 1);
+    EXPECT_LT(worstF, 1e-9 * peakF) << turned;
+    EXPECT_LT(worstM, 1e-9 * peakM) << turned;
+  }
+}
+
+// The overedge machine with masses and gravity (3, -9.81, 0): the links with no joint with the
+// ground in the inclined rocker plane (the needle link) and in the main plane, whose normal is
+// -x (the feed's rods, link and bar), have weights out of their planes that no bearing takes
+// under the stated assumption: named, not silently dropped. The gripper's link is not: its plane's
+// normal is z, gravity lies in it, and its joints are at one depth. Bodies held to the ground by
+// one joint are not named.
+TEST(SpatialForces, BodiesWithALoadOutOfTheirPlaneAndNoBearingAreNamed) {
+  const Mechanism m = withMasses(test::example("overedge-machine"), 2);
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  ForceSolver f;
+  ASSERT_TRUE(f.prepare(k).ok()) << f.result().status.message;
+  std::vector<std::string> named;
+  for (BodyId b : f.result().outOfPlaneUnsupported) named.push_back(m.body(b)->name);
+  std::printf("[ unsupported ]");
+  for (const std::string& n : named) std::printf(" %s", n.c_str());
+  std::printf("\n");
+  for (const char* held :
+       {"main", "needlerock", "needlearm", "upper", "lower", "feedrock1", "feedrock2"})
+    EXPECT_EQ(std::count(named.begin(), named.end(), held), 0) << held;
+  EXPECT_EQ(std::count(named.begin(), named.end(), "needlelink"), 1);
+  for (const char* link : {"feedrod", "feedlink", "liftrod", "feedbar"})
+    EXPECT_EQ(std::count(named.begin(), named.end(), link), 1) << link;
+  EXPECT_EQ(std::count(named.begin(), named.end(), "lowerlink"), 0);
+  ASSERT_TRUE(k.moveTo(30).ok());
+  const Forces& r = f.compute(k);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  // Every bearing's load out of its plane is a number (the machine has no redundant joint).
+  for (const JointReaction& x : r.joints)
+    EXPECT_TRUE(std::isfinite(x.normalN) && x.tiltNm.allFinite());
+}
+
+// The editor's force plots draw a force's x and y in its plane: on a machine in space they say
+// so rather than show part of the forces.
+TEST(SpatialForces, TheForcePlotsOfAMachineInSpaceSayWhereTheForcesAre) {
+  Kinematics k;
+  ASSERT_TRUE(k.load(withMasses(test::example("rssr-crank-rocker"), 1)).ok());
+  const ForceSamples s = sampleForces(k, 8);
+  EXPECT_EQ(s.size(), 0u);
+  EXPECT_NE(s.status.message.find("force plots of a machine in space (body \"rocker\" moves in "
+                                  "plane \"rocker\") are not computed yet"),
+            std::string::npos)
+      << s.status.message;
+  EXPECT_NE(s.status.message.find("linkage-cli dynamics writes the forces"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace linkage
