@@ -134,6 +134,26 @@ TEST(ForcesOverlay, NoArrowWhereNothingIsDeterminedButASentence) {
   EXPECT_TRUE(w.forces().overlay()->item()->marks().legend.startsWith(QStringLiteral("No masses")));
 }
 
+// A machine in space with masses: no reaction arrows in one plane (their parts out of it would
+// be lost, their points are in other planes' frames), and the sentence says where they are.
+TEST(ForcesOverlay, AMachineInSpaceSaysWhereItsReactionsAreInsteadOfArrows) {
+  MainWindow w;
+  ASSERT_TRUE(w.openExample("rssr-crank-rocker"));
+  Document* d = w.document();
+  Mechanism m = d->design();
+  for (Body& b : m.bodies)
+    if (!b.ground) b.mass = Mass{0.05, Vec2::Zero(), 2500, {}, {}};
+  commitEdit(d, QStringLiteral("Masses"), m);
+  w.forces().show->setChecked(true);
+  ASSERT_TRUE(d->setCrankDeg(40).ok());
+  QApplication::processEvents();
+  const DynamicsMarks& marks = w.forces().overlay()->item()->marks();
+  EXPECT_TRUE(marks.reactions.empty());
+  EXPECT_TRUE(marks.legend.startsWith(
+      QStringLiteral("Reactions not drawn on a machine in space (linkage-cli dynamics")))
+      << marks.legend.toStdString();
+}
+
 // An animation's frames show what the window shows: the masses and the loads too (the frames'
 // scene of their own has the forces' overlay as the window's has).
 TEST(ForcesOverlay, AnAnimationsFramesDrawTheMassesAndLoads) {

@@ -1,4 +1,5 @@
 #include "forces/dynamics_marks.h"
+#include "linkage/space.h"
 
 #include <cmath>
 
@@ -71,6 +72,15 @@ void addReactions(Document& doc, double mmPerN, DynamicsMarks& out) {
   if (!f.status.ok()) {
     out.legend =
         QStringLiteral("Forces not shown: %1").arg(QString::fromStdString(f.status.message));
+    return;
+  }
+  if (isSpatial(doc.kinematics().mechanism())) {
+    // The reactions there have parts out of the canvas's plane, and their points are in each
+    // body's plane class: arrows in one plane would show a part of them in the wrong place.
+    out.legend = QStringLiteral(
+                     "Reactions not drawn on a machine in space (linkage-cli dynamics writes them "
+                     "in 3D); driver torque %1 N\u00b7m at %2 rpm")
+                     .arg(number(f.driverTorqueNm), QString::number(doc.kinematics().rpm()));
     return;
   }
   out.mmPerN = mmPerN;
