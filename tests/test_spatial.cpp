@@ -13,24 +13,14 @@
 #include "linkage/kinematics.h"
 #include "linkage/space.h"
 #include "linkage/tables/motion_table.h"
+#include "spatial_fixtures.h"
 
 namespace linkage {
 namespace {
 
-constexpr double kR = 7.5, kDepth = 5, kW = 28.5, kRho = 23 * M_PI / 180;
-constexpr double kPhi0 = 30 * M_PI / 180, kPsi0 = 160 * M_PI / 180;
-const Vec3 kH(0, 0, 80);
-const Vec3 kX(0, std::cos(kRho), std::sin(kRho)), kY(0, -std::sin(kRho), std::cos(kRho));
-
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-std::string vec(const Vec3& v) {
-  return "[" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "]";
-}
+using namespace test::rssr;
+using test::num;
+using test::vec;
 
 std::string rssrText() {
   return R"({"format": "linkage", "version": 1, "name": "RSSR",

@@ -14,28 +14,21 @@
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
 #include "linkage/space.h"
+#include "spatial_fixtures.h"
 
 namespace linkage {
 namespace {
 
-constexpr double kRho = 23 * M_PI / 180, kTurn = 30 * M_PI / 180;
-const Vec3 kH(0, 0, 80);
-const Vec3 kX(0, std::cos(kRho), std::sin(kRho)), kY(0, -std::sin(kRho), std::cos(kRho));
+using test::num;
+using test::vec;
+using test::vec2;
+using test::rssr::kH;
+using test::rssr::kX;
+using test::rssr::kY;
+constexpr double kTurn = 30 * M_PI / 180;
 const Vec3 kN = kX.cross(kY);
 const Vec2 kD(0, 15), kF(35, 0);
 constexpr double kCoupler = 30, kLever = 20;
-
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-std::string vec(const Vec3& v) {
-  return "[" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "]";
-}
-std::string vec2(const Vec2& v) {
-  return "[" + num(v.x()) + ", " + num(v.y()) + "]";
-}
 
 // E, where the coupler from D and the lever from F meet (the upper branch), in the rocker plane.
 Vec2 jointE() {

@@ -1,9 +1,7 @@
 // Clearance in space (linkage/clearance.h on a machine with planes): the lockstitch machine
 // whose hook turns in the plane z = 0, at right angles to the needle's (x = 0), through two
 // bevel pairs. Its hook point K and the needle's blade N-T are checked against the machine's
-// closed form, derived here from the drawing alone: the hook turns at twice the arm shaft's
-// angle phi about z, K = (20 - 25 sin 2phi, -200 + 25 cos 2phi, 0); the needle bar is a
-// slider-crank (crank 16, rod 45) along y in x = 0, its points N 131 mm and T 96 mm below B.
+// closed form, derived from the drawing alone (spatial_fixtures.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,24 +9,15 @@
 #include "examples.h"
 #include "linkage/clearance.h"
 #include "linkage/kinematics.h"
+#include "spatial_fixtures.h"
 
 namespace linkage {
 namespace {
 
 constexpr double kDeg = M_PI / 180;
 
-Vec3 hookK(double phi) {
-  return Vec3(20 - 25 * std::sin(2 * phi), -200 + 25 * std::cos(2 * phi), 0);
-}
-// The needle bar's block B, below the crank pin A = 16 (-sin phi, cos phi) in the needle's
-// plane (its y is the world's).
-double blockY(double phi) {
-  const double ax = -16 * std::sin(phi), ay = 16 * std::cos(phi);
-  return ay - std::sqrt(45 * 45 - ax * ax);
-}
-Vec3 needle(double phi, double below) {
-  return Vec3(0, blockY(phi) - below, 0);
-}
+using test::lockstitch_bevel::hookK;
+constexpr auto needle = test::lockstitch_bevel::needleAt;
 double toSegment(const Vec3& x, const Vec3& a, const Vec3& b) {
   const Vec3 u = b - a;
   const double t = std::clamp((x - a).dot(u) / u.squaredNorm(), 0.0, 1.0);

@@ -15,6 +15,7 @@
 #include "linkage/kinematics.h"
 #include "linkage/space.h"
 #include "linkage/tables/force_table.h"
+#include "spatial_fixtures.h"
 
 namespace linkage {
 namespace {
@@ -22,10 +23,7 @@ namespace {
 // The RSSR example (resources/examples/spatial.py): the crank R on the z axis, its ball at depth
 // 5; the rocker W about the axis through H along the normal of the plane (X, Y) inclined 23
 // degrees.
-constexpr double kR = 7.5, kDepth = 5, kW = 28.5, kRho = 23 * M_PI / 180;
-constexpr double kPhi0 = 30 * M_PI / 180, kPsi0 = 160 * M_PI / 180;
-const Vec3 kH(0, 0, 80);
-const Vec3 kX(0, std::cos(kRho), std::sin(kRho)), kY(0, -std::sin(kRho), std::cos(kRho));
+using namespace test::rssr;
 
 Vec3 crankA(double phi) {
   return Vec3(kR * std::cos(kPhi0 + phi), kR * std::sin(kPhi0 + phi), kDepth);

@@ -1,6 +1,6 @@
 // Limits and timing windows on a machine in space: a point's world x, y, z or its position along
 // a direction in space, and the distance between two points, against the lockstitch machine's
-// closed form (derived from its drawing alone: see test_spatial_clearance.cpp). The vertical
+// closed form (derived from its drawing alone: spatial_fixtures.h). The vertical
 // shaft turns with the arm shaft (a bevel pair of ratio 1) about the world's y; its point M,
 // drawn 12 mm out at depth 100 in the plane x (1, 0, 0), y (0, 0, -1) through (20, 0, 0), is at
 // (20 + 12 cos phi, 100, -12 sin phi).
@@ -15,18 +15,16 @@
 #include "linkage/limits.h"
 #include "linkage/timing.h"
 #include "linkage/timing_text.h"
+#include "spatial_fixtures.h"
 
 namespace linkage {
 namespace {
 
 constexpr double kDeg = M_PI / 180;
 
-Vec3 hookK(double phi) {
-  return Vec3(20 - 25 * std::sin(2 * phi), -200 + 25 * std::cos(2 * phi), 0);
-}
+using test::lockstitch_bevel::hookK;
 Vec3 needleN(double phi) {
-  const double ax = -16 * std::sin(phi), ay = 16 * std::cos(phi);
-  return Vec3(0, ay - std::sqrt(45 * 45 - ax * ax) - 131, 0);
+  return test::lockstitch_bevel::needleAt(phi, 131);
 }
 
 // Where f crosses 0 over a turn, by bisection in brackets of 0.1-degree samples.

@@ -1,0 +1,49 @@
+// What the tests of machines in space share: numbers written into model text to the last bit,
+// the RSSR crank-rocker's dimensions (resources/examples/spatial.py: the crank R on the z axis,
+// its ball at depth 5; the rocker W about the axis through H along the normal of the plane
+// (X, Y) inclined 23 degrees), and the lockstitch-bevel machine's closed form, derived from its
+// drawing alone: the hook turns at twice the arm shaft's angle phi about z, so its point is
+// K = (20 - 25 sin 2phi, -200 + 25 cos 2phi, 0); the needle bar is a slider-crank (crank 16,
+// rod 45) along y in the plane x = 0, its points N 131 mm and T 96 mm below the block B.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "linkage/model.h"
+
+namespace linkage::test {
+
+inline std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+inline std::string vec(const Vec3& v) {
+  return "[" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "]";
+}
+inline std::string vec2(const Vec2& v) {
+  return "[" + num(v.x()) + ", " + num(v.y()) + "]";
+}
+
+namespace rssr {
+constexpr double kR = 7.5, kDepth = 5, kW = 28.5, kRho = 23 * M_PI / 180;
+constexpr double kPhi0 = 30 * M_PI / 180, kPsi0 = 160 * M_PI / 180;
+inline const Vec3 kH(0, 0, 80);
+inline const Vec3 kX(0, std::cos(kRho), std::sin(kRho)), kY(0, -std::sin(kRho), std::cos(kRho));
+}  // namespace rssr
+
+namespace lockstitch_bevel {
+inline Vec3 hookK(double phi) {
+  return Vec3(20 - 25 * std::sin(2 * phi), -200 + 25 * std::cos(2 * phi), 0);
+}
+// The needle bar's point `below` mm under its block B, which is below the crank pin
+// A = 16 (-sin phi, cos phi) in the needle's plane (its y is the world's).
+inline Vec3 needleAt(double phi, double below) {
+  const double ax = -16 * std::sin(phi), ay = 16 * std::cos(phi);
+  return Vec3(0, ay - std::sqrt(45 * 45 - ax * ax) - below, 0);
+}
+}  // namespace lockstitch_bevel
+
+}  // namespace linkage::test
