@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "bench_common.h"
 #include "kinematics/kinematics_state.h"
@@ -20,8 +21,11 @@ using namespace linkage;
 using bench::example;
 
 void kinematicStep(benchmark::State& state, const std::string& name, bool accelerations,
-                   bool closedForm = true) {
-  const Mechanism m = example(name);
+                   bool closedForm = true, const std::vector<std::string>& without = {}) {
+  Mechanism m = example(name);
+  std::vector<BodyId> gone;
+  for (const std::string& b : without) gone.push_back(m.bodyNamed(b)->id);
+  if (!gone.empty()) m.remove(gone);
   KinematicsOptions opt;
   opt.accelerations = accelerations;
   opt.closedForm = closedForm;
@@ -72,6 +76,12 @@ BENCHMARK_CAPTURE(kinematicStep, rssr, std::string("rssr-crank-rocker"), true)
     ->Name("step/rssr_space");
 BENCHMARK_CAPTURE(kinematicStep, overedge, std::string("overedge-machine"), true)
     ->Name("step/overedge_machine_space");
+// Its needle arm alone (the crank R1, the ball rod L1, the rocker W1-W2 on its inclined axis,
+// L2 and the needle arm in its guide): the measure, against the planar four-bar.
+BENCHMARK_CAPTURE(kinematicStep, needle_arm, std::string("overedge-machine"), true, true,
+                  std::vector<std::string>{"upper", "lowerlink", "lower", "feedrod", "feedrock1",
+                                           "feedlink", "feedrock2", "liftrod", "feedbar"})
+    ->Name("step/needle_arm_space");
 // The gear, belt and arc examples, in closed form (geared bodies, a pin in an arc, a block in a
 // curved guide) and by the general Newton, for the comparison.
 BENCHMARK_CAPTURE(kinematicStep, lockstitch, std::string("lockstitch-arm-shaft"), true)

@@ -34,6 +34,93 @@ inline const Vec3 kH(0, 0, 80);
 inline const Vec3 kX(0, std::cos(kRho), std::sin(kRho)), kY(0, -std::sin(kRho), std::cos(kRho));
 }  // namespace rssr
 
+// An RSSR's crank radius and rocker axis point: the example's, or others (where the rod cannot
+// reach at every crank angle).
+struct RssrDims {
+  double r = rssr::kR;
+  Vec3 H = rssr::kH;
+};
+
+// The RSSR as a file (the crank's ball drawn at kPhi0, the rocker's at kPsi0).
+inline std::string rssrText(const RssrDims& dims = {}) {
+  using namespace rssr;
+  const double r = dims.r;
+  const Vec3& H = dims.H;
+  return R"({"format": "linkage", "version": 1, "name": "RSSR",
+  "planes": {"rocker": {"origin": )" +
+         vec(H) + R"(, "x_axis": )" + vec(kX) + R"(, "y_axis": )" + vec(kY) + R"(}},
+  "bodies": [
+    {"name": "ground", "ground": true, "points": {"O": [0, 0], "H": )" +
+         vec(H) + R"(}},
+    {"name": "crank", "points": {"O": [0, 0], "A": [)" +
+         num(r * std::cos(kPhi0)) + ", " + num(r * std::sin(kPhi0)) + ", " + num(kDepth) +
+         R"(]}},
+    {"name": "rocker", "plane": "rocker", "points": {"H": [0, 0], "C": [)" +
+         num(kW * std::cos(kPsi0)) + ", " + num(kW * std::sin(kPsi0)) + R"(]}}
+  ],
+  "joints": [
+    {"type": "pin", "a": "ground.O", "b": "crank.O"},
+    {"type": "pin", "a": "ground.H", "b": "rocker.H"},
+    {"type": "ball-rod", "a": "crank.A", "b": "rocker.C"}
+  ],
+  "driver": {"joint": 0, "rpm": 90, "direction": "ccw"}
+})";
+}
+
+// The rod's length as the RSSR is drawn.
+inline double rssrRod(const RssrDims& d = {}) {
+  using namespace rssr;
+  const Vec3 A0(d.r * std::cos(kPhi0), d.r * std::sin(kPhi0), kDepth);
+  return (A0 - (d.H + kW * (std::cos(kPsi0) * kX + std::sin(kPsi0) * kY))).norm();
+}
+
+// The rocker's closed form a cos(psi) + b sin(psi) = c at crank angle phi (from the drawing),
+// rod l: psi = atan2(b, a) +- acos(c / hypot(a, b)); and psi's first two derivatives
+// by phi at a root, from F(phi, psi) = |A - C|^2 - l^2 = 0 differentiated twice (an independent
+// derivation: no solver row is used).
+struct RssrEquation {
+  double a, b, c;
+  bool reaches() const { return std::abs(c) <= std::hypot(a, b); }
+  double root(int sign) const { return std::atan2(b, a) + sign * std::acos(c / std::hypot(a, b)); }
+};
+inline Vec3 rssrBall(double phi, double r) {
+  const double t = rssr::kPhi0 + phi;
+  return Vec3(r * std::cos(t), r * std::sin(t), rssr::kDepth);
+}
+inline RssrEquation rssrEquation(double phi, double l, const RssrDims& d = {}) {
+  using namespace rssr;
+  const Vec3 AH = rssrBall(phi, d.r) - d.H;
+  return {2 * kW * AH.dot(kX), 2 * kW * AH.dot(kY), AH.squaredNorm() + kW * kW - l * l};
+}
+struct Rocker {
+  double psi, d1, d2;
+};
+inline Rocker rockerAt(double phi, double psi, const RssrDims& d = {}) {
+  using namespace rssr;
+  const double t = kPhi0 + phi, r = d.r;
+  const Vec3 A = rssrBall(phi, r);
+  const Vec3 A1(-r * std::sin(t), r * std::cos(t), 0), A2(-r * std::cos(t), -r * std::sin(t), 0);
+  const Vec3 C = d.H + kW * (std::cos(psi) * kX + std::sin(psi) * kY);
+  const Vec3 C1 = kW * (-std::sin(psi) * kX + std::cos(psi) * kY);
+  const Vec3 C2 = -kW * (std::cos(psi) * kX + std::sin(psi) * kY);
+  const Vec3 D = A - C;
+  const double Fphi = 2 * D.dot(A1), Fpsi = -2 * D.dot(C1);
+  const double d1 = -Fphi / Fpsi;
+  const double Fpp = 2 * (A1.dot(A1) + D.dot(A2)), Fps = -2 * A1.dot(C1),
+               Fss = 2 * (C1.dot(C1) - D.dot(C2));
+  const double d2 = -(Fpp + 2 * Fps * d1 + Fss * d1 * d1) / Fpsi;
+  return {psi, d1, d2};
+}
+// The root nearest `near` (as an angle near it, whole turns counted).
+inline Rocker rockerNear(double phi, double near, double l, const RssrDims& d = {}) {
+  const RssrEquation e = rssrEquation(phi, l, d);
+  double psi = e.root(1);
+  const double other = e.root(-1);
+  auto gap = [&](double x) { return std::abs(std::remainder(x - near, 2 * M_PI)); };
+  if (gap(other) < gap(psi)) psi = other;
+  return rockerAt(phi, near + std::remainder(psi - near, 2 * M_PI), d);
+}
+
 namespace lockstitch_bevel {
 inline Vec3 hookK(double phi) {
   return Vec3(20 - 25 * std::sin(2 * phi), -200 + 25 * std::cos(2 * phi), 0);

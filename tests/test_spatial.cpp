@@ -20,65 +20,18 @@ namespace {
 
 using namespace test::rssr;
 using test::num;
+using test::Rocker;
+using test::rssrText;
 using test::vec;
 
-std::string rssrText() {
-  return R"({"format": "linkage", "version": 1, "name": "RSSR",
-  "planes": {"rocker": {"origin": )" +
-         vec(kH) + R"(, "x_axis": )" + vec(kX) + R"(, "y_axis": )" + vec(kY) + R"(}},
-  "bodies": [
-    {"name": "ground", "ground": true, "points": {"O": [0, 0], "H": )" +
-         vec(kH) + R"(}},
-    {"name": "crank", "points": {"O": [0, 0], "A": [)" +
-         num(kR * std::cos(kPhi0)) + ", " + num(kR * std::sin(kPhi0)) + ", " + num(kDepth) +
-         R"(]}},
-    {"name": "rocker", "plane": "rocker", "points": {"H": [0, 0], "C": [)" +
-         num(kW * std::cos(kPsi0)) + ", " + num(kW * std::sin(kPsi0)) + R"(]}}
-  ],
-  "joints": [
-    {"type": "pin", "a": "ground.O", "b": "crank.O"},
-    {"type": "pin", "a": "ground.H", "b": "rocker.H"},
-    {"type": "ball-rod", "a": "crank.A", "b": "rocker.C"}
-  ],
-  "driver": {"joint": 0, "rpm": 90, "direction": "ccw"}
-})";
-}
-
 Mechanism rssr() {
-  LoadResult r = parseMechanism(rssrText());
+  LoadResult r = parseMechanism(test::rssrText());
   EXPECT_TRUE(r.mechanism) << r.error;
   return r.mechanism ? *r.mechanism : Mechanism();
 }
 
-// The rocker's angle psi(phi) from its closed form a cos(psi) + b sin(psi) = c (the branch
-// nearest `near`), and its first two derivatives by the crank angle, from F(phi, psi) = |A - C|^2
-// - l^2 = 0 differentiated twice (an independent derivation: no solver row is used).
-struct Rocker {
-  double psi, d1, d2;
-};
 Rocker closedForm(double phi, double near, double l) {
-  const double t = kPhi0 + phi;
-  const Vec3 A(kR * std::cos(t), kR * std::sin(t), kDepth);
-  const Vec3 A1(-kR * std::sin(t), kR * std::cos(t), 0),
-      A2(-kR * std::cos(t), -kR * std::sin(t), 0);
-  const Vec3 AH = A - kH;
-  const double a = 2 * kW * AH.dot(kX), b = 2 * kW * AH.dot(kY),
-               c = AH.squaredNorm() + kW * kW - l * l;
-  const double base = std::atan2(b, a), half = std::acos(c / std::hypot(a, b));
-  double psi = base + half, other = base - half;
-  auto gap = [&](double x) { return std::abs(std::remainder(x - near, 2 * M_PI)); };
-  if (gap(other) < gap(psi)) psi = other;
-  psi = near + std::remainder(psi - near, 2 * M_PI);
-  const Vec3 C = kH + kW * (std::cos(psi) * kX + std::sin(psi) * kY);
-  const Vec3 C1 = kW * (-std::sin(psi) * kX + std::cos(psi) * kY);
-  const Vec3 C2 = -kW * (std::cos(psi) * kX + std::sin(psi) * kY);
-  const Vec3 D = A - C;
-  const double Fphi = 2 * D.dot(A1), Fpsi = -2 * D.dot(C1);
-  const double d1 = -Fphi / Fpsi;
-  const double Fpp = 2 * (A1.dot(A1) + D.dot(A2)), Fps = -2 * A1.dot(C1),
-               Fss = 2 * (C1.dot(C1) - D.dot(C2));
-  const double d2 = -(Fpp + 2 * Fps * d1 + Fss * d1 * d1) / Fpsi;
-  return {psi, d1, d2};
+  return test::rockerNear(phi, near, l);
 }
 
 TEST(Spatial, TheRssrRockerFollowsItsClosedFormWithExactRates) {

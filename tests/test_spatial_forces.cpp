@@ -32,33 +32,11 @@ Vec3 rockerC(double psi) {
   return kH + kW * (std::cos(psi) * kX + std::sin(psi) * kY);
 }
 
-// The rocker's angle psi(phi) from a cos(psi) + b sin(psi) = c (the branch nearest `near`) and
-// its first two derivatives by the crank angle from F = |A - C|^2 - l^2 = 0 differentiated twice.
-struct Rocker {
-  double psi, d1, d2;
-};
+// The rocker's angle psi(phi) from its closed form (the root nearest `near`) and its rates by
+// the crank angle, derived in spatial_fixtures.h.
+using test::Rocker;
 Rocker closedForm(double phi, double near, double l) {
-  const double t = kPhi0 + phi;
-  const Vec3 A = crankA(phi);
-  const Vec3 A1(-kR * std::sin(t), kR * std::cos(t), 0),
-      A2(-kR * std::cos(t), -kR * std::sin(t), 0);
-  const Vec3 AH = A - kH;
-  const double a = 2 * kW * AH.dot(kX), b = 2 * kW * AH.dot(kY),
-               c = AH.squaredNorm() + kW * kW - l * l;
-  const double base = std::atan2(b, a), half = std::acos(c / std::hypot(a, b));
-  double psi = base + half;
-  auto gap = [&](double x) { return std::abs(std::remainder(x - near, 2 * M_PI)); };
-  if (gap(base - half) < gap(psi)) psi = base - half;
-  psi = near + std::remainder(psi - near, 2 * M_PI);
-  const Vec3 C = rockerC(psi);
-  const Vec3 C1 = kW * (-std::sin(psi) * kX + std::cos(psi) * kY);
-  const Vec3 C2 = -kW * (std::cos(psi) * kX + std::sin(psi) * kY);
-  const Vec3 D = A - C;
-  const double Fphi = 2 * D.dot(A1), Fpsi = -2 * D.dot(C1);
-  const double d1 = -Fphi / Fpsi;
-  const double Fpp = 2 * (A1.dot(A1) + D.dot(A2)), Fps = -2 * A1.dot(C1),
-               Fss = 2 * (C1.dot(C1) - D.dot(C2));
-  return {psi, d1, -(Fpp + 2 * Fps * d1 + Fss * d1 * d1) / Fpsi};
+  return test::rockerNear(phi, near, l);
 }
 
 const Plane& planeOfPoint(const Mechanism& m, const std::string& label) {

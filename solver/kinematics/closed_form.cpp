@@ -37,6 +37,33 @@ struct Solve2 {
   }
 };
 
+// The RS group's equation a cos t + b sin t = c (closed_form.h) at the known bodies' motion:
+// the pin P1 in b1's class F1, the rod's far end p2 in its class F2.
+struct RockerTerms {
+  Vec3 Q, V2, A2;  // world: Q, and the far end's velocity and acceleration
+  Vec3 E1, E2;
+  double a, b, c;
+};
+
+RockerTerms rockerTerms(const Plane& F1, const Plane& F2, const Vec2& u, double z1, double z2,
+                        double l, const Vec2& P1, const PointState& p2) {
+  RockerTerms t;
+  const Vec3 X = F1.xAxis, Y = F1.yAxis;
+  t.Q = F1.world(P1, z1) - F2.world(p2.p, z2);
+  t.V2 = p2.v.x() * F2.xAxis + p2.v.y() * F2.yAxis;
+  t.A2 = p2.a.x() * F2.xAxis + p2.a.y() * F2.yAxis;
+  t.E1 = u.x() * X + u.y() * Y;
+  t.E2 = -u.y() * X + u.x() * Y;
+  t.a = 2 * t.Q.dot(t.E1);
+  t.b = 2 * t.Q.dot(t.E2);
+  t.c = l * l - t.Q.squaredNorm() - u.squaredNorm();
+  return t;
+}
+
+Vec3 lift(const Plane& F, const Vec2& v) {
+  return v.x() * F.xAxis + v.y() * F.yAxis;
+}
+
 }  // namespace
 
 bool ClosedFormPlan::solve(const System& sys, const Motion& prev, double phi, Motion& next,
@@ -83,7 +110,9 @@ bool ClosedFormPlan::sameGeometry(const Group& a, const Group& b, const ClosedFo
   }
   return a.p1k == b.p1k && a.p1 == b.p1 && a.c1 == b.c1 && a.c2 == b.c2 && a.p2 == b.p2 &&
          a.p2k == b.p2k && a.u == b.u && a.n == b.n && a.q2 == b.q2 &&
-         (a.kind != Kind::RC || a.d2 == b.d2);
+         (a.kind != Kind::RC || a.d2 == b.d2) &&
+         (a.kind != Kind::RS ||
+          (a.d2 == b.d2 && a.f1 == b.f1 && a.f2 == b.f2 && a.z1 == b.z1 && a.z2 == b.z2));
 }
 
 std::vector<int> ClosedFormPlan::bodiesOf(int g) const {
@@ -276,6 +305,7 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
     return true;
   }
   if (g.kind == Kind::PR) return slotted(g, prev, h, p1, next, jump);
+  if (g.kind == Kind::RS) return rocker(g, sys, prev, h, p1, next, jump);
   if (g.kind == Kind::Geared) {
     double theta, w, al;
     coupledAngle(g, sys, next, theta, w, al);
@@ -320,6 +350,52 @@ bool ClosedFormPlan::slotted(const Group& g, const Motion& prev, double h, const
   const double al =
       next.accelerations ? (w * w * k - 2 * w * perp(N).dot(Dv) - N.dot(Da)) / den : NAN;
   setBody(next, prev, jump, g.b1, turning(g.rot1, N), w, al, g.p1, p1.p, p1.v, p1.a);
+  return true;
+}
+
+double ClosedFormPlan::rockerSide(const Group& g, const System& sys, const Motion& m,
+                                  const Rot& R) const {
+  const PointState p1 = pointOf(g.k1, m.of(g.k1), g.p1k);
+  const PointState p2 = pointOf(g.k2, m.of(g.k2), g.p2k);
+  const RockerTerms t =
+      rockerTerms(sys.frames[g.f1], sys.frames[g.f2], g.c1 - g.p1, g.z1, g.z2, g.d2, p1.p, p2);
+  // sin(t - atan2(b, a)), scaled: which root of a cos t + b sin t = c the rotation is.
+  const double side = t.a * R.s - t.b * R.c;
+  return side > 0 ? 1 : side < 0 ? -1 : 0;
+}
+
+bool ClosedFormPlan::rocker(const Group& g, const System& sys, const Motion& prev, double h,
+                            const PointState& p1, Motion& next, bool jump) const {
+  const Plane &F1 = sys.frames[g.f1], &F2 = sys.frames[g.f2];
+  const Vec2 u = g.c1 - g.p1;
+  const PointState p2 = pointOf(g.k2, next.of(g.k2), g.p2k);
+  const RockerTerms t = rockerTerms(F1, F2, u, g.z1, g.z2, g.d2, p1.p, p2);
+  const double rho2 = t.a * t.a + t.b * t.b;
+  if (!(rho2 > 0)) return false;
+  const double rho = std::sqrt(rho2), ch = t.c / rho;
+  if (!(std::abs(ch) <= 1)) return false;  // the rod cannot reach: a dead point passed
+  const double sh = g.sign * std::sqrt(1 - ch * ch);
+  const double c0 = t.a / rho, s0 = t.b / rho;
+  const Rot R{c0 * ch - s0 * sh, s0 * ch + c0 * sh};
+  if (!jump) {
+    // Where the motion carries C: on the other side of the branch line, a dead point lies
+    // between (the general solve takes over and explains it).
+    const Vec2 v = prev.body[g.b1].predicted(g.c1, h, prev.accelerations) - p1.p;
+    const Rot Rp{v.dot(u), cross(u, v)};  // rotation by the predicted angle, scaled
+    if (g.sign * (t.a * Rp.s - t.b * Rp.c) < 0) return false;
+  }
+  const Vec2 Ru = R * u, pRu = perp(Ru);
+  const Vec3 D = t.Q + lift(F1, Ru);
+  const Vec2 gD(D.dot(F1.xAxis), D.dot(F1.yAxis));
+  const double den = gD.dot(pRu);
+  if (!(den * den > 1e-20 * gD.squaredNorm() * u.squaredNorm())) return false;
+  const double w = D.dot(t.V2 - lift(F1, p1.v)) / den;
+  double al = NAN;
+  if (next.accelerations) {
+    const Vec3 dD = lift(F1, p1.v + w * pRu) - t.V2;
+    al = (D.dot(t.A2 - lift(F1, p1.a) + w * w * lift(F1, Ru)) - dD.squaredNorm()) / den;
+  }
+  setBody(next, prev, jump, g.b1, R, w, al, g.p1, p1.p, p1.v, p1.a);
   return true;
 }
 

@@ -23,6 +23,14 @@
 //          frame) holds a point C of known K2: with D = C - P1 and k = n . (u - p1), the slot's
 //          normal N = R n keeps N . D = k, so N = (k D + sigma sqrt(|D|^2 - k^2) perp D) / |D|^2;
 //          omega = -N . D' / (perp N . D), and alpha from the second derivative.
+//   RS     body B1 pinned to known K1 at P1 whose point C (u = C - P1 on B1, depth z1 along
+//          its class's normal) a ball rod of length l keeps from a known body's point W2, in
+//          space (an RSSR's rocker). With B1's class axes X, Y, O and normal N,
+//          E1 = ux X + uy Y, E2 = -uy X + ux Y and Q = O + P1x X + P1y Y + z1 N - W2:
+//          |Q + cos t E1 + sin t E2|^2 = l^2, i.e. a cos t + b sin t = c with a = 2 Q . E1,
+//          b = 2 Q . E2, c = l^2 - |Q|^2 - |u|^2: t = atan2(b, a) +- acos(c / sqrt(a^2 + b^2)),
+//          the drawn sign kept. With D = W1 - W2 and g = (D . X, D . Y):
+//          omega g . perp(R u) = D . (V2 - E vP1), and alpha from D' . D' + D . D'' = 0.
 //   core   one body held by three scalar conditions to known bodies, its slider blocks
 //          eliminated (core_group.h): a 3 x 3 Newton, the one group here that iterates.
 // Every group's unknowns follow from known bodies, so no factorisation of the whole system is
@@ -93,7 +101,7 @@ class ClosedFormPlan {
 
  private:
   class Builder;
-  enum class Kind { Crank, Geared, RRR, RRP, RP, RC, PR, Core };
+  enum class Kind { Crank, Geared, RRR, RRP, RP, RC, PR, RS, Core };
   struct Group {
     Kind kind = Kind::Crank;
     int b1 = -1, b2 = -1;  // unknown bodies (b2 only for RRR and RRP)
@@ -107,8 +115,10 @@ class ClosedFormPlan {
          d = Vec2::Zero();   // RRP, RP: slot point, unit normal and direction on k2 (PR: on b1)
     Vec2 q2 = Vec2::Zero();  // RRP: the block's point on the slot line
     Rot rot1, rot2;          // directions of (c1 - p1) and (c2 - p2) on their bodies
-    double d1 = 0, d2 = 0;   // and their lengths
-    double sign = 1;         // Crank: +-sigma; RRR, RRP, RP, RC: the drawn branch
+    double d1 = 0, d2 = 0;   // and their lengths (RS: d2 the rod's)
+    double sign = 1;         // Crank: +-sigma; RRR, RRP, RP, RC, RS: the drawn branch
+    int f1 = 0, f2 = 0;      // RS: the plane classes (System::frames) of C and of W2's body
+    double z1 = 0, z2 = 0;   // RS: their depths along those classes' normals
     int core = -1;           // Core: index into cores_
   };
   // Solves one group into next from prev (h radians of crank later, crank rotation `crank`).
@@ -130,6 +140,11 @@ class ClosedFormPlan {
                                              Dyad& out) const;
   [[gnu::always_inline]] inline bool line(const Group& g, const Vec2& Cpred, const PointState& p1,
                                           Motion& next, bool jump, Dyad& out) const;
+  // RS: b1 from its pin and the ball rod to a known body.
+  bool rocker(const Group& g, const System& sys, const Motion& prev, double h, const PointState& p1,
+              Motion& next, bool jump) const;
+  // RS: the side (+-1) of the branch line that b1's rotation R is on, 0 on it.
+  double rockerSide(const Group& g, const System& sys, const Motion& m, const Rot& R) const;
   // PR: b1 from its pin and the known point in its slot.
   bool slotted(const Group& g, const Motion& prev, double h, const PointState& p1, Motion& next,
                bool jump) const;

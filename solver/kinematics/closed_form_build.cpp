@@ -88,23 +88,9 @@ class ClosedFormPlan::Builder {
         }
         break;
       }
-      case K::RP: {
-        outerPin(g, row(d.rows[0]));
-        const Row& s = row(d.rows[1]);
-        g.c1 = s.s[0];
-        g.k2 = s.body[1];
-        if (s.kind == Primitive::OnCircle) {
-          // The point runs on a circle of k2: an RRR whose second link is the radius.
-          g.kind = Kind::RC;
-          g.p2k = s.s[1];
-          g.d2 = s.c[0];
-        } else {
-          g.kind = Kind::RP;
-          g.u = s.s[1];
-          g.n = s.n;
-        }
+      case K::RP:
+        inSlot(g, row(d.rows[0]), row(d.rows[1]));
         break;
-      }
       case K::PR: {
         g.kind = Kind::PR;
         outerPin(g, row(d.rows[0]));
@@ -115,6 +101,9 @@ class ClosedFormPlan::Builder {
         g.n = s.n;
         break;
       }
+      case K::RS:
+        if (!rocker(g, row(d.rows[0]), row(d.rows[1]))) return false;
+        break;
       case K::Triad:
         return core(d, at);
       case K::Other:
@@ -122,6 +111,40 @@ class ClosedFormPlan::Builder {
     }
     plan_.groups_.push_back(g);
     return true;
+  }
+
+  // RP: b1's pin, then its point C in a known body's straight or arc slot (row s).
+  static void inSlot(Group& g, const Row& pin, const Row& s) {
+    outerPin(g, pin);
+    g.c1 = s.s[0];
+    g.k2 = s.body[1];
+    if (s.kind == Primitive::OnCircle) {
+      // The point runs on a circle of k2: an RRR whose second link is the radius.
+      g.kind = Kind::RC;
+      g.p2k = s.s[1];
+      g.d2 = s.c[0];
+    } else {
+      g.kind = Kind::RP;
+      g.u = s.s[1];
+      g.n = s.n;
+    }
+  }
+
+  // RS: b1's pin, then its ball rod to a known body. False where the rod's end is on the pin's
+  // axis: it turns nothing, there is no angle to solve for.
+  static bool rocker(Group& g, const Row& pin, const Row& rod) {
+    g.kind = Kind::RS;
+    outerPin(g, pin);
+    const int e = rod.body[0] == g.b1 ? 0 : 1;
+    g.c1 = rod.s[e];
+    g.f1 = rod.frame[e];
+    g.z1 = rod.depth[e];
+    g.k2 = rod.body[1 - e];
+    g.p2k = rod.s[1 - e];
+    g.f2 = rod.frame[1 - e];
+    g.z2 = rod.depth[1 - e];
+    g.d2 = rod.c[0];
+    return (g.c1 - g.p1).squaredNorm() > 1e-18 * g.d2 * g.d2;
   }
 
   // A core body held by three conditions, its blocks eliminated (core_group.h). False where it
@@ -179,6 +202,10 @@ class ClosedFormPlan::Builder {
   void branches(const Motion& at) {
     for (Group& g : plan_.groups_) {
       if (g.kind == Kind::Crank || g.kind == Kind::Core || g.kind == Kind::Geared) continue;
+      if (g.kind == Kind::RS) {
+        g.sign = plan_.rockerSide(g, sys_, at, at.of(g.b1).R) >= 0 ? 1 : -1;
+        continue;
+      }
       if (g.kind == Kind::PR) {
         // The side of D = C - P1 the slot's normal is on, as drawn.
         const Vec2 D = at.of(g.k2).pos(g.p2k) - at.of(g.k1).pos(g.p1k);

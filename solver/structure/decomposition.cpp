@@ -204,6 +204,10 @@ bool Search::single(Group& g, int b, const std::vector<int>& rows) const {
       g.kind = Group::Kind::PR;
       return true;
     }
+    if (other.kind == Primitive::Distance3 && knownOther(other, b) >= -1) {
+      g.kind = Group::Kind::RS;
+      return true;
+    }
   }
   return false;
 }

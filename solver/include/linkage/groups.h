@@ -16,11 +16,13 @@ namespace linkage {
 // RRR: two links and three pins (a block in an arc slot counts as pinned at the arc's centre).
 // RRP: a rod and a block in a straight slot. RP: a body pinned to a known one with a point in a
 // known body's slot (straight or arc). PR: a body pinned to a known one whose straight slot
-// holds a known body's point (a swinging slotted link: the feed bar on its eccentric). Triad:
+// holds a known body's point (a swinging slotted link: the feed bar on its eccentric). RS: a
+// body pinned to a known one with a point kept by a ball rod at its length from a known body's
+// point in space (the rocker of an RSSR: seed 004's W1 on its inclined axis). Triad:
 // one body held by three conditions, with its slider blocks (the Wanzer triangle). Other:
 // anything else (solved by the general Newton).
-enum class GroupKind { Crank, Geared, RRR, RRP, RP, PR, Triad, Other };
-// "crank", "geared", "RRR", "RRP", "RP", "PR", "triad", "other"
+enum class GroupKind { Crank, Geared, RRR, RRP, RP, PR, RS, Triad, Other };
+// "crank", "geared", "RRR", "RRP", "RP", "PR", "RS", "triad", "other"
 const char* toString(GroupKind k);
 
 struct AssurGroup {
