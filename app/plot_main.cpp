@@ -30,7 +30,8 @@ namespace {
 const char* kHelp =
     R"(usage: linkage-cli plot MODEL [MODEL2 ...] [--point body.point] --out FIG.png|pdf|svg
                         [--revs R] [--steps N] [--units mm|m|g] [--size WxH]
-                        [--component x|y|magnitude] [--along DEG] [--jerk] [--overlay]
+                        [--component x|y|z|magnitude|distance] [--to body.point]
+                        [--along DEG [--elevation DEG]] [--jerk] [--overlay]
 
 Draws position, velocity and acceleration of a point against the crank angle, stacked on a
 shared axis: one model gives one column, two or more models one column each side by side (the
@@ -46,8 +47,12 @@ Velocities and accelerations are the solver's exact values at every step; extrem
   --units U          mm: mm/s and mm/s^2 (default); m: m/s and m/s^2; g: mm/s and g
                      (standard gravity, 9806.65 mm/s^2), as the homework plots them
   --size WxH         pixels (default 900x900 for one model, 700 per model x 900)
-  --component C      x, y (default) or magnitude (|r|, speed |v|, |a|)
+  --component C      x, y (default), z, magnitude (|r|, speed |v|, |a|) or distance (to the
+                     point --to names, and its rates: exact)
+  --to B.P           the second point of a distance
   --along DEG        the component along a direction, degrees counter-clockwise from +x
+  --elevation DEG    with --along: the direction's angle above the x-y plane
+On a machine in space (a model with planes) x, y, z, directions and distances are the world's.
   --jerk             a fourth row: the jerk (spectral derivative of the exact accelerations)
   --overlay          models overlaid in one column instead of side by side
 
@@ -66,7 +71,8 @@ Draws the figures of linkage-cli, which itself does not load Qt.
 struct PlotOptions {
   std::vector<std::string> models;
   std::string point, out, component = "y";
-  std::optional<double> along;
+  std::optional<double> along, elevation;
+  std::string to;
   long long revs = 1, steps = 360;
   std::string units = "mm";
   std::optional<std::pair<int, int>> size;  // else one that fits the columns
@@ -83,8 +89,10 @@ CLI::App* addOptions(Parser& parser, PlotOptions& o) {
   addWhole(c, "--steps", o.steps, 12, 36000);
   addWord(c, "--units", o.units, {"mm", "m", "g"});
   addPixelSize(c, "--size", o.size);
-  addWord(c, "--component", o.component, {"x", "y", "magnitude"});
+  addWord(c, "--component", o.component, {"x", "y", "z", "magnitude", "distance"});
+  addText(c, "--to", o.to);
   addNumber(c, "--along", o.along);
+  addNumber(c, "--elevation", o.elevation);
   addFlag(c, "--jerk", o.jerk);
   addFlag(c, "--overlay", o.overlay);
   return &c;
@@ -111,6 +119,10 @@ int loadModels(PlotOptions& o, std::vector<Kinematics>& solved, std::vector<std:
       error(model + ": no point \"" + o.point + "\" (--point body.point)");
       return kBadInput;
     }
+    if (!o.to.empty() && !m->findPoint(o.to)) {
+      error(model + ": no point \"" + o.to + "\" (--to body.point)");
+      return kBadInput;
+    }
     Kinematics k;
     if (int e = prepare(k, *m); e != kOk) return e;
     if (Status s = k.checkDetermined({*m->findPoint(o.point)}); !s.ok()) {
@@ -128,9 +140,13 @@ ui::CurveRequest curveRequest(const PlotOptions& o) {
   req.target = QString::fromStdString(o.point);
   req.component = o.along                      ? Quantity::Component::Along
                   : o.component == "x"         ? Quantity::Component::X
+                  : o.component == "z"         ? Quantity::Component::Z
                   : o.component == "magnitude" ? Quantity::Component::Magnitude
+                  : o.component == "distance"  ? Quantity::Component::Distance
                                                : Quantity::Component::Y;
   req.directionDeg = o.along.value_or(0);
+  req.elevationDeg = o.elevation.value_or(0);
+  req.other = QString::fromStdString(o.to);
   req.orders = {true, true, true, o.jerk};
   req.revs = static_cast<int>(o.revs);
   req.steps = static_cast<int>(o.steps);
@@ -192,6 +208,16 @@ int writeFigure(const PlotOptions& o, const std::vector<const ui::CurveSet*>& sh
 int plot(PlotOptions& o) {
   if (o.out.empty()) {  // (required, in words that say what it takes)
     error("plot: no --out FILE given (.png, .pdf or .svg)");
+    return kBadInput;
+  }
+  if ((o.component == "distance") != !o.to.empty()) {
+    error(o.to.empty() ? "plot: --component distance needs --to body.point"
+                       : "plot: --to is the second point of --component distance");
+    return kBadInput;
+  }
+  if (o.elevation && (!o.along || !(std::abs(*o.elevation) <= 90))) {
+    error(o.along ? "plot: --elevation must lie in [-90, 90] degrees"
+                  : "plot: --elevation tilts the direction of --along: give --along DEG");
     return kBadInput;
   }
   // Every model loaded and solved before any window system is touched.

@@ -1,6 +1,7 @@
 #include "linkage/motion_samples.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -43,7 +44,7 @@ bool samePoses(const std::vector<Transform>& a, const std::vector<Transform>& b,
   return true;
 }
 
-double component(const Vec3& v, const Quantity& q, const Vec2& u) {
+double component(const Vec3& v, const Quantity& q, const Vec3& u) {
   switch (q.component) {
     case Quantity::Component::X:
       return v.x();
@@ -54,23 +55,37 @@ double component(const Vec3& v, const Quantity& q, const Vec2& u) {
     case Quantity::Component::Magnitude:
       return v.norm();
     case Quantity::Component::Along:
-      return v.x() * u.x() + v.y() * u.y();
+      return v.dot(u);
+    case Quantity::Component::Distance:
+      break;  // of two points: distanceRates
   }
   return NAN;
 }
 
-double component(const Vec2& v, const Quantity& q, const Vec2& u) {
-  return component(Vec3(v.x(), v.y(), 0), q, u);
-}
-
 // The unit direction of an Along quantity (or +x for the others); false when it has none.
-bool unitDirection(const Quantity& q, Vec2& u) {
-  u = Vec2(1, 0);
+bool unitDirection(const Quantity& q, Vec3& u) {
+  u = Vec3(1, 0, 0);
   if (q.component != Quantity::Component::Along) return true;
   const double n = q.direction.norm();
   if (!(n > 0) || !std::isfinite(n)) return false;
   u = q.direction / n;
   return true;
+}
+
+// The distance d = |D| between two points and its first two rates, from their relative
+// position D, velocity D' and acceleration D'' (Quantity::Component::Distance). Where the
+// points meet (d = 0) the rates have no value: false.
+bool distanceRates(const Vec3& D, const Vec3& V, const Vec3& A, double out[3]) {
+  const double d = D.norm();
+  out[0] = d;
+  if (!(d > 0)) return false;
+  out[1] = D.dot(V) / d;
+  out[2] = (V.squaredNorm() + D.dot(A) - out[1] * out[1]) / d;
+  return true;
+}
+
+Vec3 lift(const Vec2& v) {
+  return Vec3(v.x(), v.y(), 0);
 }
 
 // Why jerk (or harmonics) cannot be had from these samples, or "" when they can.
@@ -176,10 +191,70 @@ MotionSamples sampleMotion(const Kinematics& k, const SampleSpec& spec) {
   return s;
 }
 
+namespace {
+
+// Sample i of a point's position (order 0), velocity (1) or acceleration (2), in the world or
+// in its plane class's frame.
+Vec3 sampled(const PointSamples& p, bool world, int order, long long i) {
+  if (world) {
+    const std::vector<Vec3>* v[] = {&p.p3, &p.v3, &p.a3};
+    return (*v[order])[i];
+  }
+  const std::vector<Vec2>* v[] = {&p.p, &p.v, &p.a};
+  return lift((*v[order])[i]);
+}
+
+// The distance between q's two points, order by order (the jerk: the spectral derivative of
+// its exact acceleration over one revolution).
+void distanceCurve(const MotionSamples& s, const Quantity& q, Order order, Curve& c) {
+  const PointSamples *a = s.point(q.point), *b = s.point(q.other);
+  if (!a || !b) {
+    c.status = bad("the second point of the distance was not sampled");
+    return;
+  }
+  const bool world = q.inWorld();
+  const int o = std::min(static_cast<int>(order), 2);
+  std::vector<double> values;
+  values.reserve(s.size());
+  for (long long i = 0; i < s.size(); ++i) {
+    Vec3 rel[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    for (int k = 0; k <= o; ++k) rel[k] = sampled(*a, world, k, i) - sampled(*b, world, k, i);
+    double d[3];
+    if (!distanceRates(rel[0], rel[1], rel[2], d) && o > 0) {
+      c.status = bad("the points meet at " + std::to_string(s.crankDeg[i]) +
+                     " degrees: the distance has no rate there");
+      return;
+    }
+    values.push_back(d[o]);
+  }
+  if (order != Order::Jerk) {
+    c.values = std::move(values);
+    return;
+  }
+  const long long n = s.steps;
+  Derivative j = periodicDerivative({values.begin(), values.begin() + n});
+  for (double& x : j.values) x *= s.omega;
+  c.values = tiled(j.values, s.size());
+  c.errorEstimate = j.errorEstimate * s.omega;
+}
+
+// A point's position, velocity and acceleration where k is, in the world or in its plane
+// class's frame.
+std::array<Vec3, 3> motionOf(const Kinematics& k, PointId p, bool world) {
+  if (world) {
+    const Kinematics::PointMotion3 m = k.motionInSpace(p);
+    return {m.position, m.velocity, m.acceleration};
+  }
+  const Kinematics::PointMotion m = k.motion(p);
+  return {lift(m.position), lift(m.velocity), lift(m.acceleration)};
+}
+
+}  // namespace
+
 Curve curveOf(const MotionSamples& s, const Quantity& q, Order order) {
   Curve c;
   c.crankDeg = s.crankDeg;
-  Vec2 u;
+  Vec3 u;
   if (!unitDirection(q, u)) {
     c.status = bad("the direction of the component has no length");
     return c;
@@ -221,6 +296,10 @@ Curve curveOf(const MotionSamples& s, const Quantity& q, Order order) {
     c.status = bad("the point's motion in the world was not sampled");
     return c;
   }
+  if (q.component == Quantity::Component::Distance) {
+    distanceCurve(s, q, order, c);
+    return c;
+  }
   std::vector<Vec3> vectors;
   if (order != Order::Jerk && q.inWorld()) {
     const std::vector<Vec3>* v[] = {&p->p3, &p->v3, &p->a3};
@@ -252,7 +331,7 @@ Curve curveOf(const MotionSamples& s, const Quantity& q, Order order) {
 }
 
 double valueAt(const Kinematics& k, const Quantity& q, Order order) {
-  Vec2 u;
+  Vec3 u;
   if (!unitDirection(q, u) || order == Order::Jerk) return NAN;
   if (q.isBody()) {
     switch (order) {
@@ -264,14 +343,14 @@ double valueAt(const Kinematics& k, const Quantity& q, Order order) {
         return k.bodyAlpha(q.body);
     }
   }
-  if (q.inWorld()) {
-    const Kinematics::PointMotion3 m = k.motionInSpace(q.point);
-    const Vec3* v[] = {&m.position, &m.velocity, &m.acceleration};
-    return component(*v[static_cast<int>(order)], q, u);
-  }
-  const Kinematics::PointMotion m = k.motion(q.point);
-  const Vec2* v[] = {&m.position, &m.velocity, &m.acceleration};
-  return component(*v[static_cast<int>(order)], q, u);
+  const std::array<Vec3, 3> v = motionOf(k, q.point, q.inWorld());
+  if (q.component != Quantity::Component::Distance)
+    return component(v[static_cast<int>(order)], q, u);
+  if (!k.contains(q.other)) return NAN;
+  const std::array<Vec3, 3> w = motionOf(k, q.other, q.inWorld());
+  double d[3];
+  const bool rates = distanceRates(v[0] - w[0], v[1] - w[1], v[2] - w[2], d);
+  return order == Order::Position || rates ? d[static_cast<int>(order)] : NAN;
 }
 
 Spectrum harmonicsOf(const MotionSamples& s, const Quantity& q, Order order, int maxK,

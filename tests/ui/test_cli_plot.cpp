@@ -95,6 +95,26 @@ TEST(CliPlot, OneModelGivesThreeStackedPlots) {
   EXPECT_EQ(QImage(png).size(), QSize(900, 1100));  // the default size with a jerk row
 }
 
+// The distance between two points of a machine in space, and a tilted direction: figures with
+// the quantity in their labels (the values are checked in tests/test_spatial_curves.cpp).
+TEST(CliPlot, ADistanceInSpaceAndATiltedDirection) {
+  QTemporaryDir dir;
+  const QString svg = dir.filePath("d.svg");
+  CliRun r = cli({"plot", "lockstitch-bevel", "--point", "needlebar.N", "--component", "distance",
+                  "--to", "hook.K", "--out", svg});
+  ASSERT_EQ(r.exit, 0) << r.err.toStdString();
+  QFile f(svg);
+  ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+  EXPECT_TRUE(f.readAll().contains("d to hook.K"));
+  const QString tilted = dir.filePath("t.svg");
+  r = cli({"plot", "rssr-crank-rocker", "--point", "rocker.C", "--along", "30", "--elevation", "45",
+           "--out", tilted});
+  ASSERT_EQ(r.exit, 0) << r.err.toStdString();
+  QFile t(tilted);
+  ASSERT_TRUE(t.open(QIODevice::ReadOnly));
+  EXPECT_TRUE(QString::fromUtf8(t.readAll()).contains(QString::fromUtf8("at 45° up")));
+}
+
 TEST(CliPlot, BadInputExitsTwoWithAMessage) {
   QTemporaryDir dir;
   const QString out = dir.filePath("x.png");
@@ -110,6 +130,13 @@ TEST(CliPlot, BadInputExitsTwoWithAMessage) {
       {{"plot", "wanzer-inversion-1", "slider-crank-22a-lambda-0.3", "--point", "needlebar.G",
         "--out", out},
        "no point \"needlebar.G\""},
+      {{"plot", "lockstitch-bevel", "--out", out, "--component", "distance"}, "needs --to"},
+      {{"plot", "lockstitch-bevel", "--out", out, "--to", "hook.K"}, "--to is the second point"},
+      {{"plot", "lockstitch-bevel", "--out", out, "--component", "distance", "--to", "hook.Q"},
+       "no point \"hook.Q\" (--to body.point)"},
+      {{"plot", "lockstitch-bevel", "--out", out, "--elevation", "10"}, "give --along DEG"},
+      {{"plot", "lockstitch-bevel", "--out", out, "--along", "0", "--elevation", "91"},
+       "[-90, 90]"},
   };
   for (const auto& [args, message] : cases) {
     const CliRun r = cli(args);

@@ -124,9 +124,7 @@ TEST(Draw, ANewDrawingPlotsAMovingPointUntilTheUserChooses) {
   EXPECT_EQ(plots->request().target,
             QString::fromStdString(doc->design().pointLabel(doc->design().outputs[0])));
   // The user's choice (the list, by the keyboard) stays through the next edits.
-  QComboBox* target = nullptr;
-  for (QComboBox* c : plots->findChildren<QComboBox*>())
-    if (c->findText(plots->request().target) >= 0) target = c;
+  auto* target = plots->findChild<QComboBox*>("plotTarget");
   ASSERT_TRUE(target);
   target->setFocus();
   QTest::keyClick(target, Qt::Key_Down);

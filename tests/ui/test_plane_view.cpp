@@ -346,7 +346,7 @@ TEST(PlaneView, PlotsOfAMachineInSpaceAreTheWorldsXYZ) {
     }
   }
   // The labels say which component and that it is the world's.
-  EXPECT_EQ(componentLabel(Quantity::Component::Z, 0, Order::Velocity), "vz");
+  EXPECT_EQ(componentLabel({Quantity::Component::Z}, Order::Velocity), "vz");
 }
 
 }  // namespace

@@ -292,9 +292,7 @@ TEST_F(PlotsPanelTest, APointTheEditRemovesGivesWayToTheFirstOutput) {
 TEST_F(PlotsPanelTest, AnotherDesignOpenedPlotsItsOwnPoint) {
   panel.setDocument(&doc);
   showAndSettle();
-  QComboBox* target = nullptr;
-  for (QComboBox* c : panel.findChildren<QComboBox*>())
-    if (c->findText("triangle.E") >= 0) target = c;
+  auto* target = panel.findChild<QComboBox*>("plotTarget");
   ASSERT_TRUE(target);
   const int e = target->findText("triangle.E");
   target->setCurrentIndex(e);  // as the user picks it
@@ -356,11 +354,9 @@ TEST_F(PlotsPanelTest, ControlsTakeTwoRowsWhenWideAndThreeWhenNarrow) {
   panel.setDocument(&doc);
   panel.resize(1000, 500);
   showAndSettle();
-  QComboBox *target = nullptr, *units = nullptr;
-  for (QComboBox* c : panel.findChildren<QComboBox*>()) {
+  QComboBox *target = panel.findChild<QComboBox*>("plotTarget"), *units = nullptr;
+  for (QComboBox* c : panel.findChildren<QComboBox*>())
     if (c->findText("m/s") >= 0) units = c;
-    if (c->findText("needlebar.G") >= 0) target = c;
-  }
   ASSERT_TRUE(target && units);
   auto row = [](QWidget* w) { return w->mapTo(w->window(), QPoint(0, w->height() / 2)).y(); };
   EXPECT_EQ(row(units), row(target));

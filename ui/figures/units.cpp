@@ -64,11 +64,12 @@ void PlotUnits::toSettings() const {
   s.setValue("plots/accelerationUnit", static_cast<int>(acceleration));
 }
 
-QString componentLabel(Quantity::Component c, double directionDeg, Order o) {
+QString componentLabel(const ComponentName& n, Order o) {
   static const char* letters[] = {"", "v", "a", "j"};
   static const char* vectors[] = {"r", "v", "a", "j"};
+  static const char* distances[] = {"d", "d'", "d''", "d'''"};
   const int i = static_cast<int>(o);
-  switch (c) {
+  switch (n.c) {
     case Quantity::Component::X:
       return QString(letters[i]) + "x";
     case Quantity::Component::Y:
@@ -77,14 +78,18 @@ QString componentLabel(Quantity::Component c, double directionDeg, Order o) {
       return QString(letters[i]) + "z";
     case Quantity::Component::Magnitude:
       return QString("|%1|").arg(vectors[i]);
-    case Quantity::Component::Along:
-      return QString::fromUtf8("%1 along %2°").arg(vectors[i]).arg(directionDeg, 0, 'g', 6);
+    case Quantity::Component::Along: {
+      QString s = QString::fromUtf8("%1 along %2°").arg(vectors[i]).arg(n.azimuthDeg, 0, 'g', 6);
+      if (n.elevationDeg != 0) s += QString::fromUtf8(" at %1° up").arg(n.elevationDeg, 0, 'g', 6);
+      return s;
+    }
+    case Quantity::Component::Distance:
+      return QString("%1 to %2").arg(distances[i], n.other);
   }
   return {};
 }
 
-QString axisLabel(bool body, Quantity::Component c, double directionDeg, Order o,
-                  const PlotUnits& u) {
+QString axisLabel(bool body, const ComponentName& c, Order o, const PlotUnits& u) {
   const int i = static_cast<int>(o);
   if (body) {
     static const char* names[] = {"Angle", "Angular velocity", "Angular acceleration",
@@ -92,20 +97,20 @@ QString axisLabel(bool body, Quantity::Component c, double directionDeg, Order o
     return QString("%1 [%2]").arg(names[i], u.name(o, true));
   }
   static const char* names[] = {"Position", "Velocity", "Acceleration", "Jerk"};
-  const QString what = (c == Quantity::Component::Magnitude && o == Order::Velocity)
-                           ? QString("Speed")
-                           : QString(names[i]);
-  return QString("%1 %2 [%3]").arg(what, componentLabel(c, directionDeg, o), u.name(o, false));
+  const QString what =
+      (c.c == Quantity::Component::Magnitude && o == Order::Velocity) ? QString("Speed")
+      : c.c == Quantity::Component::Distance && o == Order::Position  ? QString("Distance")
+                                                                      : QString(names[i]);
+  return QString("%1 %2 [%3]").arg(what, componentLabel(c, o), u.name(o, false));
 }
 
-QString shortAxisLabel(bool body, Quantity::Component c, double directionDeg, Order o,
-                       const PlotUnits& u) {
+QString shortAxisLabel(bool body, const ComponentName& c, Order o, const PlotUnits& u) {
   const int i = static_cast<int>(o);
   if (body) {
     static const char* names[] = {"θ", "ω", "α", "α'"};
     return QString("%1 [%2]").arg(QString::fromUtf8(names[i]), u.name(o, true));
   }
-  return QString("%1 [%2]").arg(componentLabel(c, directionDeg, o), u.name(o, false));
+  return QString("%1 [%2]").arg(componentLabel(c, o), u.name(o, false));
 }
 
 namespace {

@@ -41,15 +41,22 @@ QString briefCrankAxisLabel(const Mechanism& m);
 // Words broken into lines of at most `width` characters (plot titles and notes).
 QString wrapped(const QString& text, int width);
 
-// The component of a point's motion as the labels write it: "y", "|r|", "along 30°" with the
-// order's letter ("vy", "|v|", ...).
-QString componentLabel(Quantity::Component c, double directionDeg, Order o);
+// A component of a point's motion as the labels name it: its kind, an Along's direction (its
+// azimuth counter-clockwise from +x, its elevation above the x-y plane: a machine in space's)
+// and a Distance's second point.
+struct ComponentName {
+  Quantity::Component c = Quantity::Component::Y;
+  double azimuthDeg = 0, elevationDeg = 0;
+  QString other;
+};
+
+// The component of a point's motion as the labels write it: "y", "|r|", "along 30°",
+// "along 30° at 45° up", "d to hook.K", with the order's letter ("vy", "|v|", "d' to ...").
+QString componentLabel(const ComponentName& c, Order o);
 
 // An axis label with its unit: "Position y [mm]", "Speed |v| [m/s]", "Angular velocity [rad/s]".
-QString axisLabel(bool body, Quantity::Component c, double directionDeg, Order o,
-                  const PlotUnits& u);
+QString axisLabel(bool body, const ComponentName& c, Order o, const PlotUnits& u);
 // The same, short, for a plot too low for the long label ("vy [mm/s]", "ω [rad/s]").
-QString shortAxisLabel(bool body, Quantity::Component c, double directionDeg, Order o,
-                       const PlotUnits& u);
+QString shortAxisLabel(bool body, const ComponentName& c, Order o, const PlotUnits& u);
 
 }  // namespace linkage::ui

@@ -13,7 +13,7 @@ namespace {
 // "Position y", "Speed |v|", "Angular velocity": the axis label without its unit.
 QString curveName(const CurveSet& set, Order o, const PlotUnits& u, bool several) {
   const CurveRequest& r = set.request();
-  QString name = axisLabel(r.body, r.component, r.directionDeg, o, u);
+  QString name = axisLabel(r.body, r.name(), o, u);
   name = name.left(name.indexOf(" ["));
   return several ? set.title() + ": " + name : name;
 }
@@ -42,7 +42,7 @@ QString cursorValues(const std::vector<CurveSet*>& sets, double deg, const PlotU
       if (!r.orders[o]) continue;
       const Order order = static_cast<Order>(o);
       const QString what = r.body ? QString::fromUtf8("angle,ω,α,dα/dt").split(',')[o]
-                                  : componentLabel(r.component, r.directionDeg, order);
+                                  : componentLabel(r.name(), order);
       parts << what + " " + withUnit(v[o], order, r.body, u);
     }
     const QString who = sets.size() > 1 ? set->title() + ": " : QString();

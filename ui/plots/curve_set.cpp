@@ -70,14 +70,26 @@ CurveSet::CurveSet(const Kinematics& k, const CurveRequest& r, const QString& ti
       status_ = Status::failure(StatusCode::BadModel, "no point \"" + target + "\"");
       return;
     }
-    const double a = r.directionDeg * M_PI / 180;
-    quantity_ = Quantity::ofPoint(*p, r.component, Vec2(std::cos(a), std::sin(a)));
+    const double a = r.directionDeg * M_PI / 180, e = r.elevationDeg * M_PI / 180;
+    quantity_ = Quantity::ofPoint(
+        *p, r.component,
+        Vec3(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), e == 0 ? 0 : std::sin(e)));
+    spec.points = {*p};
+    if (r.component == Quantity::Component::Distance) {
+      const std::string to = r.other.toStdString();
+      const std::optional<PointId> o = k.mechanism().findPoint(to);
+      if (!o) {
+        status_ = Status::failure(StatusCode::BadModel, "no point \"" + to + "\" to measure to");
+        return;
+      }
+      quantity_.other = *o;
+      spec.points.push_back(*o);
+    }
     // A machine in space: the world's x, y, z (the solver's planar motion of a point is in its
     // plane class's frame); the labels say so.
     quantity_.world = isSpatial(k.mechanism());
     if (quantity_.world) frame_ = QStringLiteral("world");
     spec.world = quantity_.inWorld();
-    spec.points = {*p};
   }
   spec.steps = r.steps;
   spec.revs = r.revs;

@@ -7,6 +7,7 @@
 #include <array>
 #include <memory>
 
+#include "figures/units.h"
 #include "linkage/extremes.h"
 #include "linkage/motion_samples.h"
 #include "linkage/spectrum.h"
@@ -18,10 +19,15 @@ struct CurveRequest {
   bool body = false;
   Quantity::Component component = Quantity::Component::Y;
   double directionDeg = 0;  // Along: counter-clockwise from +x
+  double elevationDeg = 0;  // Along: above the x-y plane (a machine in space)
+  QString other;            // Distance: the second point, "body.point"
+
   std::array<bool, kOrders> orders{true, true, true, false};
   int revs = 1;
   int steps = 360;  // per revolution
   bool operator==(const CurveRequest&) const = default;
+  // How the labels name the component.
+  ComponentName name() const { return {component, directionDeg, elevationDeg, other}; }
 };
 
 class CurveSet {

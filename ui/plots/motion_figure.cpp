@@ -131,7 +131,8 @@ QString layoutKey(const std::vector<const CurveSet*>& sets, const MotionFigure::
     const CurveRequest& r = s->request();
     k << s->title() << s->crankLabel() << r.target << QString::number(r.revs)
       << QString::number(int(r.component)) << QString::number(r.directionDeg)
-      << QString::number(r.body) << QString::number(s->periodic()) << QString::number(s->empty());
+      << QString::number(r.elevationDeg) << r.other << QString::number(r.body)
+      << QString::number(s->periodic()) << QString::number(s->empty());
     for (int o = 0; o < kOrders; ++o) {
       k << QString::number(r.orders[o]);
       if (!r.orders[o]) continue;
@@ -326,8 +327,8 @@ QCPAxisRect* MotionFigure::addAxisRect(const CurveRequest& req, const PlotUnits&
   // only the bottom row writes them.
   x->setTickLabels(row + 1 == rows());
   const Order o = rowOrders_[row];
-  labels_.emplace_back(axisLabel(req.body, req.component, req.directionDeg, o, units),
-                       shortAxisLabel(req.body, req.component, req.directionDeg, o, units));
+  labels_.emplace_back(axisLabel(req.body, req.name(), o, units),
+                       shortAxisLabel(req.body, req.name(), o, units));
   // In a machine in space x and y are of a plane, not of the world: the label says which.
   if (!frame.isEmpty() && !req.body && req.component != Quantity::Component::Magnitude) {
     labels_.back().first += QStringLiteral(", %1").arg(frame);

@@ -1,5 +1,7 @@
 #include "plots/plot_controls.h"
 
+#include "linkage/space.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -28,25 +30,39 @@ void PlotControls::addPlotRow() {
   auto* row1 = new QHBoxLayout(plotRow_);
   row1->setContentsMargins(0, 0, 0, 0);
   target_ = new QComboBox;
+  target_->setObjectName("plotTarget");  // for scripts (the probe) and tests
   target_->setToolTip("The point (or body) whose motion is plotted");
   target_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   target_->setMinimumContentsLength(14);
   component_ = new QComboBox;
   component_->setObjectName("plotComponent");  // for scripts (the probe)
   // In Quantity::Component's order; z for a machine in space (0 in a planar one).
-  component_->addItems({"x", "y", "magnitude", "along", "z"});
+  component_->addItems({"x", "y", "magnitude", "along", "z", "distance"});
   component_->setToolTip(
-      "Component of the point's motion: x, y, the vectors' lengths, along a direction, or z "
-      "(a machine in space: all in the world)");
+      "Component of the point's motion: x, y, the vectors' lengths, along a direction, z, or "
+      "its distance to another point (a machine in space: all in the world)");
+  to_ = new QComboBox;
+  to_->setObjectName("plotDistanceTo");  // for scripts (the probe)
+  to_->setToolTip("The point the distance is measured to (in space on a machine in space)");
+  to_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  to_->setMinimumContentsLength(10);
   direction_ = new QDoubleSpinBox;
   direction_->setRange(-360, 360);
   direction_->setDecimals(1);
   direction_->setSuffix(QString::fromUtf8("°"));
   direction_->setToolTip("The direction, counter-clockwise from +x");
+  elevation_ = new QDoubleSpinBox;
+  elevation_->setObjectName("plotElevation");
+  elevation_->setRange(-90, 90);
+  elevation_->setDecimals(1);
+  elevation_->setSuffix(QString::fromUtf8("° up"));
+  elevation_->setToolTip("The direction's angle above the world's x-y plane");
   row1->addWidget(new QLabel("Plot"));
   row1->addWidget(target_, 1);
   row1->addWidget(component_);
+  row1->addWidget(to_);
   row1->addWidget(direction_);
+  row1->addWidget(elevation_);
   row1_ = new QHBoxLayout;
   row1_->setSpacing(12);
   row1_->addWidget(plotRow_, 1);
@@ -122,6 +138,8 @@ void PlotControls::connectInputs() {
   connect(target_, &QComboBox::activated, this, [this] { autoTarget_ = false; });
   connect(component_, &QComboBox::currentIndexChanged, this, request);
   connect(direction_, &QDoubleSpinBox::editingFinished, this, request);
+  connect(elevation_, &QDoubleSpinBox::editingFinished, this, request);
+  connect(to_, &QComboBox::currentIndexChanged, this, request);
   for (QCheckBox* c : orders_) connect(c, &QCheckBox::toggled, this, request);
   connect(revs_, &QSpinBox::valueChanged, this, request);
   connect(steps_, &QSpinBox::editingFinished, this, request);
@@ -173,7 +191,13 @@ void PlotControls::display(const CurveRequest& r, const PlotUnits& u, int compar
   component_->setCurrentIndex(static_cast<int>(r.component));
   component_->setEnabled(!r.body);
   direction_->setValue(r.directionDeg);
-  direction_->setEnabled(!r.body && r.component == Quantity::Component::Along);
+  const bool along = !r.body && r.component == Quantity::Component::Along;
+  direction_->setEnabled(along);
+  elevation_->setValue(r.elevationDeg);
+  elevation_->setEnabled(along);
+  elevation_->setVisible(spatial_);
+  to_->setVisible(!r.body && r.component == Quantity::Component::Distance);
+  to_->setCurrentIndex(to_->findData(r.other));
   for (int o = 0; o < kOrders; ++o) orders_[o]->setChecked(r.orders[o]);
   revs_->setValue(r.revs);
   steps_->setValue(r.steps);
@@ -228,11 +252,15 @@ std::optional<PointId> defaultPlotPoint(const Mechanism& m, const Kinematics* k)
 bool PlotControls::offerTargets(const Mechanism* m, const Kinematics* k, CurveRequest& r) {
   quiet_ = true;
   target_->clear();
+  to_->clear();
+  spatial_ = m && isSpatial(*m);
+  elevation_->setVisible(spatial_);
   if (m) {
     auto add = [&](PointId p) {
       const QString l = QString::fromStdString(m->pointLabel(p));
-      if (target_->findData(QStringList{l, "point"}) < 0)
-        target_->addItem(l, QStringList{l, "point"});
+      if (target_->findData(QStringList{l, "point"}) >= 0) return;
+      target_->addItem(l, QStringList{l, "point"});
+      to_->addItem(l, l);
     };
     for (PointId p : m->outputs) add(p);
     for (const Point& p : m->points) add(p.id);
@@ -258,6 +286,13 @@ bool PlotControls::offerTargets(const Mechanism* m, const Kinematics* k, CurveRe
     }
   }
   target_->setCurrentIndex(i);
+  // The distance's other point: as asked while the design has it, else the first other one.
+  if (to_->findData(r.other) < 0 && to_->count() > 0) {
+    const int first = to_->itemData(0).toString() == r.target && to_->count() > 1 ? 1 : 0;
+    r.other = to_->itemData(first).toString();
+    changed = changed || r.component == Quantity::Component::Distance;
+  }
+  to_->setCurrentIndex(to_->findData(r.other));
   quiet_ = false;
   return changed;
 }
@@ -277,6 +312,8 @@ CurveRequest PlotControls::read() const {
   r.body = d.value(1) == "body";
   r.component = static_cast<Quantity::Component>(std::max(0, component_->currentIndex()));
   r.directionDeg = direction_->value();
+  r.elevationDeg = spatial_ ? elevation_->value() : 0;
+  r.other = to_->currentData().toString();
   for (int o = 0; o < kOrders; ++o) r.orders[o] = orders_[o]->isChecked();
   r.revs = revs_->value();
   r.steps = steps_->value();

@@ -73,7 +73,9 @@ class PlotControls : public QWidget {
   // each edit: a moving point as one is drawn, the first output once there is one).
   bool autoTarget_ = true;
   QComboBox *target_, *component_, *velocityUnit_, *accelerationUnit_, *compare_, *against_;
-  QDoubleSpinBox* direction_;
+  QComboBox* to_;  // Distance: the second point
+  QDoubleSpinBox *direction_, *elevation_;
+  bool spatial_ = false;  // the design is a machine in space: the elevation is offered
   QCheckBox* orders_[kOrders];
   QSpinBox *revs_, *steps_;
   QToolButton* harmonics_;

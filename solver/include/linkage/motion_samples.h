@@ -30,22 +30,41 @@ constexpr int kOrders = 4;
 struct Quantity {
   // X, Y, Z and Along are components of the position vector and its derivatives; Magnitude is
   // the length of each vector (|r|, the speed |v|, |a|, |j|), as Working Model reports them.
-  enum class Component { X, Y, Magnitude, Along, Z };
+  // Distance: the distance from the point to `other` and its rates (d' = D . D' / d,
+  // d'' = (D' . D' + D . D'' - d'^2) / d with D the vector between them: exact), the gap a
+  // clearance watches, in space on a machine in space.
+  enum class Component { X, Y, Magnitude, Along, Z, Distance };
   PointId point;  // set for a point ...
   BodyId body;    // ... or this for a body's rotation
   Component component = Component::Y;
-  Vec2 direction{1, 0};  // Along: the direction (normalised; must not be zero)
+  // Along: the direction (normalised; must not be zero); one out of the x-y plane is the
+  // world's.
+  Vec3 direction{1, 0, 0};
+  PointId other;  // Distance: the second point
   // A point's motion in the world (Kinematics::motionInSpace: a machine in space's x, y, z;
-  // z is 0 in a planar one), not in its plane class's frame; Along is then a direction in the
-  // world's x-y plane. Z is always of the world.
+  // z is 0 in a planar one), not in its plane class's frame. Z is always of the world, and so
+  // is an Along whose direction leaves the x-y plane.
   bool world = false;
-  bool inWorld() const { return world || component == Component::Z; }
+  bool inWorld() const {
+    return world || component == Component::Z ||
+           (component == Component::Along && direction.z() != 0);
+  }
 
   static Quantity ofPoint(PointId p, Component c, Vec2 along = Vec2(1, 0)) {
+    return ofPoint(p, c, Vec3(along.x(), along.y(), 0));
+  }
+  static Quantity ofPoint(PointId p, Component c, Vec3 along) {
     Quantity q;
     q.point = p;
     q.component = c;
     q.direction = along;
+    return q;
+  }
+  static Quantity distance(PointId p, PointId other) {
+    Quantity q;
+    q.point = p;
+    q.other = other;
+    q.component = Component::Distance;
     return q;
   }
   static Quantity ofBody(BodyId b) {
