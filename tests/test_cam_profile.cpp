@@ -1,0 +1,180 @@
+// A cam's profile and checks (linkage/cam_profile.h) against closed forms written here: the
+// pressure angle of an offset translating roller follower, atan((s' - e) / (d0 + s)) (the
+// spec's), a flat face's radius base + s + s'', a dwell's pitch circle; the extremes against a
+// search of those closed forms (a grid of 36,000 then golden sections), never the program's
+// own functions; and an oscillating follower's pitch curve against its tangent and curvature by
+// central differences of its points.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "linkage/cam_profile.h"
+
+namespace linkage::cam {
+namespace {
+
+constexpr double kDeg = M_PI / 180;
+
+Program program(double rise) {
+  return Program({{90, rise, Law::Cycloidal},
+                  {150, 0, std::nullopt},
+                  {270, -rise, Law::Polynomial345},
+                  {360, 0, std::nullopt}});
+}
+
+Geometry offsetRoller(double base = 30, double roller = 8, double e = 6) {
+  Geometry g;
+  g.motion = Motion::Translating;
+  g.face = roller > 0 ? Face::Roller : Face::Knife;
+  g.baseMm = base;
+  g.rollerMm = roller;
+  g.program = program(10);
+  g.u = Vec2(0, 1);
+  g.offsetMm = e;
+  return g;
+}
+
+// The largest of f over a turn, by a grid of 36,000 and a golden-section search about its best.
+struct Max {
+  double value, deg;
+};
+Max searchMax(const std::function<double(double)>& f) {
+  Max best{-INFINITY, 0};
+  for (int i = 0; i < 36000; ++i) {
+    const double v = f(i * 0.01 * kDeg);
+    if (v > best.value) best = {v, i * 0.01};
+  }
+  double a = (best.deg - 0.01) * kDeg, b = (best.deg + 0.01) * kDeg;
+  const double r = (std::sqrt(5.0) - 1) / 2;
+  for (int i = 0; i < 100; ++i) {
+    const double c = b - r * (b - a), d = a + r * (b - a);
+    (f(c) > f(d) ? b : a) = f(c) > f(d) ? d : c;
+  }
+  const double x = (a + b) / 2;
+  return {std::max(best.value, f(x)), f(x) >= best.value ? x / kDeg : best.deg};
+}
+
+TEST(CamProfile, AnOffsetRollersPressureAngleIsTheSpecsClosedForm) {
+  const Geometry g = offsetRoller();
+  const double d0 = std::sqrt(38.0 * 38.0 - 36.0);
+  auto closed = [&](double t) {
+    const Displacement d = g.program.at(t);
+    return std::atan((d.v - 6) / (d0 + d.s)) / kDeg;
+  };
+  for (int i = 0; i < 720; ++i) {
+    const double t = i * 0.5 * kDeg;
+    EXPECT_NEAR(profileAt(g, t).pressureDeg, closed(t), 1e-11) << i * 0.5;
+  }
+  const Checks c = checks(g);
+  const Max want = searchMax([&](double t) { return std::abs(closed(t)); });
+  ASSERT_TRUE(c.pressureMax.found);
+  EXPECT_NEAR(c.pressureMax.value, want.value, 1e-9);
+  EXPECT_NEAR(c.pressureMax.atDeg, want.deg, 1e-4);
+  EXPECT_GT(c.pressureMax.value, 10);  // a real rise, not a flat answer
+}
+
+TEST(CamProfile, TheRollerRunsOnTheSurfaceAndADwellIsACircle) {
+  const Geometry g = offsetRoller();
+  for (double deg : {10.0, 45.0, 100.0, 200.0, 300.0}) {
+    const ProfilePoint p = profileAt(g, deg * kDeg);
+    EXPECT_NEAR((p.pitch - p.surface).norm(), 8, 1e-12) << deg;
+  }
+  // In the dwell at the top the follower's point stands still in the guide: on the cam it runs
+  // on a circle through it about the centre, of radius sqrt(e^2 + (d0 + 10)^2); the surface's
+  // radius is that less the roller's.
+  const double R = std::hypot(6.0, std::sqrt(38.0 * 38.0 - 36.0) + 10);
+  const ProfilePoint p = profileAt(g, 120 * kDeg);
+  EXPECT_NEAR(p.pitch.norm(), R, 1e-12);
+  EXPECT_NEAR(p.radiusMm, R - 8, 1e-9);
+  // The drawing: b at d0 along u, e along w = u turned clockwise (here +x).
+  const ProfilePoint z = profileAt(g, 0);
+  EXPECT_NEAR((z.pitch - Vec2(6, std::sqrt(38.0 * 38.0 - 36.0))).norm(), 0, 1e-12);
+}
+
+TEST(CamProfile, AFlatFacesRadiusIsBasePlusSPlusSDoublePrime) {
+  Geometry g = offsetRoller(30, 0, 0);
+  g.face = Face::Flat;
+  auto closed = [&](double t) {
+    const Displacement d = g.program.at(t);
+    return 30 + d.s + d.a;
+  };
+  for (int i = 0; i < 360; ++i)
+    EXPECT_NEAR(profileAt(g, i * kDeg).radiusMm, closed(i * kDeg), 1e-10) << i;
+  // Its contact is s' from the face's centre line (towards w at a rise).
+  const double t = 45 * kDeg;
+  const Displacement d = g.program.at(t);
+  const Vec2 guide = (30 + d.s) * Vec2(0, 1) + d.v * Vec2(1, 0);
+  EXPECT_NEAR((profileAt(g, t).surface - Rot::of(-t) * guide).norm(), 0, 1e-12);
+  Checks c = checks(g);
+  const Max least = searchMax([&](double t) { return -closed(t); });
+  ASSERT_TRUE(c.surfaceRadiusMin.found);
+  EXPECT_NEAR(c.surfaceRadiusMin.value, -least.value, 1e-9);
+  EXPECT_FALSE(c.undercut);
+  // A small base with the same rise: the surface turns concave, which a flat face cannot touch.
+  g.baseMm = 5;
+  g.program = program(10);
+  c = checks(g);
+  EXPECT_LT(c.surfaceRadiusMin.value, 0);
+  EXPECT_TRUE(c.undercut);
+  EXPECT_NE(c.undercutWhy.find("not convex"), std::string::npos) << c.undercutWhy;
+}
+
+TEST(CamProfile, ARollerLargerThanThePitchCurvesRadiusUndercuts) {
+  const Geometry small = offsetRoller(30, 8, 6);
+  const Checks ok = checks(small);
+  ASSERT_TRUE(ok.pitchRadiusMin.found);
+  EXPECT_FALSE(ok.undercut);
+  // The same pitch curve (base + roller kept at 38) with a roller past its smallest radius.
+  const Geometry big =
+      offsetRoller(38 - (ok.pitchRadiusMin.value + 1), ok.pitchRadiusMin.value + 1, 6);
+  const Checks c = checks(big);
+  EXPECT_NEAR(c.pitchRadiusMin.value, ok.pitchRadiusMin.value, 1e-9);
+  EXPECT_TRUE(c.undercut);
+  EXPECT_NE(c.undercutWhy.find("larger than the pitch curve"), std::string::npos);
+}
+
+TEST(CamProfile, AnOscillatingFollowersPitchCurveAgreesWithItsPointsDifferences) {
+  Geometry g;
+  g.motion = Motion::Oscillating;
+  g.face = Face::Roller;
+  g.baseMm = 25;
+  g.rollerMm = 6;
+  g.program = Program({{120, 15, Law::ModifiedSine},
+                       {180, 0, std::nullopt},
+                       {300, -15, Law::ModifiedTrapezoid},
+                       {360, 0, std::nullopt}},
+                      kDeg);
+  g.pivot = Vec2(50, 10);
+  g.b0 = Vec2(0, 31);  // |b0| = base + roller
+  g.sigma = g.b0.dot(perp(g.b0 - g.pivot)) > 0 ? 1 : -1;
+  ASSERT_EQ(checkGeometry(g), "");
+  const double h = 1e-4;
+  for (double deg = 7; deg < 360; deg += 23) {
+    const double t = deg * kDeg;
+    const ProfilePoint p = profileAt(g, t);
+    const Vec2 a = profileAt(g, t - h).pitch, b = profileAt(g, t + h).pitch;
+    const Vec2 d1 = (b - a) / (2 * h), d2 = (b - 2 * p.pitch + a) / (h * h);
+    // The pressure angle from the tangent: b's motion m against the normal (outward: the
+    // curve runs clockwise), in the guide's frame.
+    const double psi =
+        std::atan2(g.b0.y() - g.pivot.y(), g.b0.x() - g.pivot.x()) + g.sigma * g.program.at(t).s;
+    const Vec2 m = g.sigma * perp(Vec2(std::cos(psi), std::sin(psi)));
+    const Vec2 n = perp(Rot::of(t) * d1);
+    EXPECT_NEAR(p.pressureDeg, std::atan(cross(m, n) / m.dot(n)) / kDeg, 1e-5) << deg;
+    const double rho = -std::pow(d1.norm(), 3) / cross(d1, d2);
+    EXPECT_NEAR(p.radiusMm + g.rollerMm, rho, 1e-4 * std::abs(rho)) << deg;
+  }
+  // As the follower rises its point leaves the cam's centre.
+  EXPECT_GT(profileAt(g, 120 * kDeg).pitch.norm(), profileAt(g, 0).pitch.norm() + 1);
+}
+
+TEST(CamProfile, BadGeometryIsNamed) {
+  Geometry g = offsetRoller(30, 8, 40);
+  EXPECT_NE(checkGeometry(g).find("offset"), std::string::npos);
+  g = offsetRoller(0, 8, 0);
+  EXPECT_NE(checkGeometry(g).find("base"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace linkage::cam
