@@ -1,4 +1,4 @@
-// A cam's profile and its checks (linkage/cam_profile.h): 3,600 profile points with the checks
+// A cam's profile and its checks (linkage/cam_checks.h): 3,600 profile points with the checks
 // (issue 28: under 5 ms), the checks alone, and the profile alone, for an offset translating
 // roller follower and an oscillating one.
 //   build/bench/linkage_bench --benchmark_filter=cam/
@@ -6,15 +6,15 @@
 
 #include <cmath>
 
-#include "linkage/cam_profile.h"
+#include "linkage/cam_checks.h"
 
 namespace {
 
 using namespace linkage;
 using namespace linkage::cam;
 
-Geometry geometry(bool oscillating) {
-  Geometry g;
+CamGeometry geometry(bool oscillating) {
+  CamGeometry g;
   g.baseMm = 30;
   g.rollerMm = 8;
   const double scale = oscillating ? M_PI / 180 : 1;
@@ -24,7 +24,7 @@ Geometry geometry(bool oscillating) {
                        {360, 0, std::nullopt}},
                       scale);
   if (oscillating) {
-    g.motion = Motion::Oscillating;
+    g.motion = FollowerMotion::Oscillating;
     g.pivot = Vec2(60, 10);
     g.b0 = Vec2(0, 38);
     g.sigma = g.b0.dot(perp(g.b0 - g.pivot)) > 0 ? 1 : -1;
@@ -35,10 +35,10 @@ Geometry geometry(bool oscillating) {
 }
 
 void profileAndChecks(benchmark::State& state, bool oscillating, bool points, bool check) {
-  const Geometry g = geometry(oscillating);
+  const CamGeometry g = geometry(oscillating);
   for (auto _ : state) {
-    if (points) benchmark::DoNotOptimize(profile(g, 3600).back().radiusMm);
-    if (check) benchmark::DoNotOptimize(checks(g).pressureMax.value);
+    if (points) benchmark::DoNotOptimize(camPoints(g, 3600).back().radiusMm);
+    if (check) benchmark::DoNotOptimize(camChecks(g).pressureMax.value);
   }
 }
 

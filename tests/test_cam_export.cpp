@@ -17,8 +17,8 @@
 namespace linkage {
 namespace {
 
-std::vector<cam::ProfilePoint> profilePoints(int steps) {
-  cam::Geometry g;
+std::vector<cam::CamPoint> profilePoints(int steps) {
+  cam::CamGeometry g;
   g.baseMm = 30;
   g.rollerMm = 8;
   g.offsetMm = 6;
@@ -26,7 +26,7 @@ std::vector<cam::ProfilePoint> profilePoints(int steps) {
                             {150, 0, std::nullopt},
                             {270, -10, cam::Law::Polynomial345},
                             {360, 0, std::nullopt}});
-  return cam::profile(g, steps);
+  return cam::camPoints(g, steps);
 }
 
 // What dxflib's reader hands over: each polyline's flags, layer and vertices.
@@ -46,7 +46,7 @@ struct Reader : DL_CreationAdapter {
 };
 
 TEST(CamExport, TheDxfReadsBackAsTwoClosedPolylinesThroughEveryPoint) {
-  const std::vector<cam::ProfilePoint> points = profilePoints(360);
+  const std::vector<cam::CamPoint> points = profilePoints(360);
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "linkage-cam-dxf";
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "cam.dxf").string();
@@ -70,13 +70,13 @@ TEST(CamExport, TheDxfReadsBackAsTwoClosedPolylinesThroughEveryPoint) {
 }
 
 TEST(CamExport, TheCsvHasAPointARowInItsColumns) {
-  const std::vector<cam::ProfilePoint> points = profilePoints(8);
+  const std::vector<cam::CamPoint> points = profilePoints(8);
   std::istringstream in(camProfileCsv(points));
   std::string line;
   std::getline(in, line);
   EXPECT_EQ(line,
             "cam_deg,surface_x_mm,surface_y_mm,pitch_x_mm,pitch_y_mm,pressure_angle_deg,radius_mm");
-  for (const cam::ProfilePoint& p : points) {
+  for (const cam::CamPoint& p : points) {
     ASSERT_TRUE(std::getline(in, line));
     std::vector<double> v;
     std::istringstream cells(line);

@@ -1,4 +1,4 @@
-// A cam's profile and checks (linkage/cam_profile.h) against closed forms written here: the
+// A cam's profile and checks (linkage/cam_checks.h) against closed forms written here: the
 // pressure angle of an offset translating roller follower, atan((s' - e) / (d0 + s)) (the
 // spec's), a flat face's radius base + s + s'', a dwell's pitch circle; the extremes against a
 // search of those closed forms (a grid of 36,000 then golden sections), never the program's
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <functional>
 
-#include "linkage/cam_profile.h"
+#include "linkage/cam_checks.h"
 
 namespace linkage::cam {
 namespace {
@@ -23,10 +23,10 @@ Program program(double rise) {
                   {360, 0, std::nullopt}});
 }
 
-Geometry offsetRoller(double base = 30, double roller = 8, double e = 6) {
-  Geometry g;
-  g.motion = Motion::Translating;
-  g.face = roller > 0 ? Face::Roller : Face::Knife;
+CamGeometry offsetRoller(double base = 30, double roller = 8, double e = 6) {
+  CamGeometry g;
+  g.motion = FollowerMotion::Translating;
+  g.face = roller > 0 ? FollowerFace::Roller : FollowerFace::Knife;
   g.baseMm = base;
   g.rollerMm = roller;
   g.program = program(10);
@@ -56,7 +56,7 @@ Max searchMax(const std::function<double(double)>& f) {
 }
 
 TEST(CamProfile, AnOffsetRollersPressureAngleIsTheSpecsClosedForm) {
-  const Geometry g = offsetRoller();
+  const CamGeometry g = offsetRoller();
   const double d0 = std::sqrt(38.0 * 38.0 - 36.0);
   auto closed = [&](double t) {
     const Displacement d = g.program.at(t);
@@ -64,9 +64,9 @@ TEST(CamProfile, AnOffsetRollersPressureAngleIsTheSpecsClosedForm) {
   };
   for (int i = 0; i < 720; ++i) {
     const double t = i * 0.5 * kDeg;
-    EXPECT_NEAR(profileAt(g, t).pressureDeg, closed(t), 1e-11) << i * 0.5;
+    EXPECT_NEAR(camPointAt(g, t).pressureDeg, closed(t), 1e-11) << i * 0.5;
   }
-  const Checks c = checks(g);
+  const CamChecks c = camChecks(g);
   const Max want = searchMax([&](double t) { return std::abs(closed(t)); });
   ASSERT_TRUE(c.pressureMax.found);
   EXPECT_NEAR(c.pressureMax.value, want.value, 1e-9);
@@ -75,38 +75,38 @@ TEST(CamProfile, AnOffsetRollersPressureAngleIsTheSpecsClosedForm) {
 }
 
 TEST(CamProfile, TheRollerRunsOnTheSurfaceAndADwellIsACircle) {
-  const Geometry g = offsetRoller();
+  const CamGeometry g = offsetRoller();
   for (double deg : {10.0, 45.0, 100.0, 200.0, 300.0}) {
-    const ProfilePoint p = profileAt(g, deg * kDeg);
+    const CamPoint p = camPointAt(g, deg * kDeg);
     EXPECT_NEAR((p.pitch - p.surface).norm(), 8, 1e-12) << deg;
   }
   // In the dwell at the top the follower's point stands still in the guide: on the cam it runs
   // on a circle through it about the centre, of radius sqrt(e^2 + (d0 + 10)^2); the surface's
   // radius is that less the roller's.
   const double R = std::hypot(6.0, std::sqrt(38.0 * 38.0 - 36.0) + 10);
-  const ProfilePoint p = profileAt(g, 120 * kDeg);
+  const CamPoint p = camPointAt(g, 120 * kDeg);
   EXPECT_NEAR(p.pitch.norm(), R, 1e-12);
   EXPECT_NEAR(p.radiusMm, R - 8, 1e-9);
   // The drawing: b at d0 along u, e along w = u turned clockwise (here +x).
-  const ProfilePoint z = profileAt(g, 0);
+  const CamPoint z = camPointAt(g, 0);
   EXPECT_NEAR((z.pitch - Vec2(6, std::sqrt(38.0 * 38.0 - 36.0))).norm(), 0, 1e-12);
 }
 
 TEST(CamProfile, AFlatFacesRadiusIsBasePlusSPlusSDoublePrime) {
-  Geometry g = offsetRoller(30, 0, 0);
-  g.face = Face::Flat;
+  CamGeometry g = offsetRoller(30, 0, 0);
+  g.face = FollowerFace::Flat;
   auto closed = [&](double t) {
     const Displacement d = g.program.at(t);
     return 30 + d.s + d.a;
   };
   for (int i = 0; i < 360; ++i)
-    EXPECT_NEAR(profileAt(g, i * kDeg).radiusMm, closed(i * kDeg), 1e-10) << i;
+    EXPECT_NEAR(camPointAt(g, i * kDeg).radiusMm, closed(i * kDeg), 1e-10) << i;
   // Its contact is s' from the face's centre line (towards w at a rise).
   const double t = 45 * kDeg;
   const Displacement d = g.program.at(t);
   const Vec2 guide = (30 + d.s) * Vec2(0, 1) + d.v * Vec2(1, 0);
-  EXPECT_NEAR((profileAt(g, t).surface - Rot::of(-t) * guide).norm(), 0, 1e-12);
-  Checks c = checks(g);
+  EXPECT_NEAR((camPointAt(g, t).surface - Rot::of(-t) * guide).norm(), 0, 1e-12);
+  CamChecks c = camChecks(g);
   const Max least = searchMax([&](double t) { return -closed(t); });
   ASSERT_TRUE(c.surfaceRadiusMin.found);
   EXPECT_NEAR(c.surfaceRadiusMin.value, -least.value, 1e-9);
@@ -114,30 +114,30 @@ TEST(CamProfile, AFlatFacesRadiusIsBasePlusSPlusSDoublePrime) {
   // A small base with the same rise: the surface turns concave, which a flat face cannot touch.
   g.baseMm = 5;
   g.program = program(10);
-  c = checks(g);
+  c = camChecks(g);
   EXPECT_LT(c.surfaceRadiusMin.value, 0);
   EXPECT_TRUE(c.undercut);
   EXPECT_NE(c.undercutWhy.find("not convex"), std::string::npos) << c.undercutWhy;
 }
 
 TEST(CamProfile, ARollerLargerThanThePitchCurvesRadiusUndercuts) {
-  const Geometry small = offsetRoller(30, 8, 6);
-  const Checks ok = checks(small);
+  const CamGeometry small = offsetRoller(30, 8, 6);
+  const CamChecks ok = camChecks(small);
   ASSERT_TRUE(ok.pitchRadiusMin.found);
   EXPECT_FALSE(ok.undercut);
   // The same pitch curve (base + roller kept at 38) with a roller past its smallest radius.
-  const Geometry big =
+  const CamGeometry big =
       offsetRoller(38 - (ok.pitchRadiusMin.value + 1), ok.pitchRadiusMin.value + 1, 6);
-  const Checks c = checks(big);
+  const CamChecks c = camChecks(big);
   EXPECT_NEAR(c.pitchRadiusMin.value, ok.pitchRadiusMin.value, 1e-9);
   EXPECT_TRUE(c.undercut);
   EXPECT_NE(c.undercutWhy.find("larger than the pitch curve"), std::string::npos);
 }
 
 TEST(CamProfile, AnOscillatingFollowersPitchCurveAgreesWithItsPointsDifferences) {
-  Geometry g;
-  g.motion = Motion::Oscillating;
-  g.face = Face::Roller;
+  CamGeometry g;
+  g.motion = FollowerMotion::Oscillating;
+  g.face = FollowerFace::Roller;
   g.baseMm = 25;
   g.rollerMm = 6;
   g.program = Program({{120, 15, Law::ModifiedSine},
@@ -148,12 +148,12 @@ TEST(CamProfile, AnOscillatingFollowersPitchCurveAgreesWithItsPointsDifferences)
   g.pivot = Vec2(50, 10);
   g.b0 = Vec2(0, 31);  // |b0| = base + roller
   g.sigma = g.b0.dot(perp(g.b0 - g.pivot)) > 0 ? 1 : -1;
-  ASSERT_EQ(checkGeometry(g), "");
+  ASSERT_EQ(checkCamGeometry(g), "");
   const double h = 1e-4;
   for (double deg = 7; deg < 360; deg += 23) {
     const double t = deg * kDeg;
-    const ProfilePoint p = profileAt(g, t);
-    const Vec2 a = profileAt(g, t - h).pitch, b = profileAt(g, t + h).pitch;
+    const CamPoint p = camPointAt(g, t);
+    const Vec2 a = camPointAt(g, t - h).pitch, b = camPointAt(g, t + h).pitch;
     const Vec2 d1 = (b - a) / (2 * h), d2 = (b - 2 * p.pitch + a) / (h * h);
     // The pressure angle from the tangent: b's motion m against the normal (outward: the
     // curve runs clockwise), in the guide's frame.
@@ -166,14 +166,14 @@ TEST(CamProfile, AnOscillatingFollowersPitchCurveAgreesWithItsPointsDifferences)
     EXPECT_NEAR(p.radiusMm + g.rollerMm, rho, 1e-4 * std::abs(rho)) << deg;
   }
   // As the follower rises its point leaves the cam's centre.
-  EXPECT_GT(profileAt(g, 120 * kDeg).pitch.norm(), profileAt(g, 0).pitch.norm() + 1);
+  EXPECT_GT(camPointAt(g, 120 * kDeg).pitch.norm(), camPointAt(g, 0).pitch.norm() + 1);
 }
 
 TEST(CamProfile, BadGeometryIsNamed) {
-  Geometry g = offsetRoller(30, 8, 40);
-  EXPECT_NE(checkGeometry(g).find("offset"), std::string::npos);
+  CamGeometry g = offsetRoller(30, 8, 40);
+  EXPECT_NE(checkCamGeometry(g).find("offset"), std::string::npos);
   g = offsetRoller(0, 8, 0);
-  EXPECT_NE(checkGeometry(g).find("base"), std::string::npos);
+  EXPECT_NE(checkCamGeometry(g).find("base"), std::string::npos);
 }
 
 }  // namespace

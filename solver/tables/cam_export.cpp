@@ -14,10 +14,10 @@
 
 namespace linkage {
 
-std::string camProfileCsv(const std::vector<cam::ProfilePoint>& points) {
+std::string camProfileCsv(const std::vector<cam::CamPoint>& points) {
   std::string s =
       "cam_deg,surface_x_mm,surface_y_mm,pitch_x_mm,pitch_y_mm,pressure_angle_deg,radius_mm\n";
-  for (const cam::ProfilePoint& p : points) {
+  for (const cam::CamPoint& p : points) {
     for (double v : {p.camDeg, p.surface.x(), p.surface.y(), p.pitch.x(), p.pitch.y(),
                      p.pressureDeg, p.radiusMm})
       s.append(formatNumber(v)).append(",");
@@ -28,9 +28,9 @@ std::string camProfileCsv(const std::vector<cam::ProfilePoint>& points) {
 
 namespace {
 
-std::string svgPath(const std::vector<cam::ProfilePoint>& points, bool pitch) {
+std::string svgPath(const std::vector<cam::CamPoint>& points, bool pitch) {
   std::string d;
-  for (const cam::ProfilePoint& p : points) {
+  for (const cam::CamPoint& p : points) {
     const Vec2& v = pitch ? p.pitch : p.surface;
     d += (d.empty() ? "M" : " L") + formatNumber(v.x(), 9) + " " + formatNumber(-v.y(), 9);
   }
@@ -39,9 +39,9 @@ std::string svgPath(const std::vector<cam::ProfilePoint>& points, bool pitch) {
 
 }  // namespace
 
-std::string camProfileSvg(const std::vector<cam::ProfilePoint>& points, bool pitch) {
+std::string camProfileSvg(const std::vector<cam::CamPoint>& points, bool pitch) {
   double r = 1;
-  for (const cam::ProfilePoint& p : points)
+  for (const cam::CamPoint& p : points)
     r = std::max(
         {r, std::abs(p.surface.x()), std::abs(p.surface.y()), pitch ? p.pitch.norm() : 0.0});
   r *= 1.05;
@@ -71,12 +71,11 @@ std::string camProfileSvg(const std::vector<cam::ProfilePoint>& points, bool pit
 
 namespace {
 
-void polyline(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<cam::ProfilePoint>& points,
-              bool pitch) {
+void polyline(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<cam::CamPoint>& points, bool pitch) {
   const std::string layer = pitch ? "CAM_PITCH" : "CAM_SURFACE";
   dxf.writePolyline(dw, DL_PolylineData(static_cast<int>(points.size()), 0, 0, 1),
                     DL_Attributes(layer, 256, 0, "BYLAYER", 1.0));
-  for (const cam::ProfilePoint& p : points) {
+  for (const cam::CamPoint& p : points) {
     const Vec2& v = pitch ? p.pitch : p.surface;
     dxf.writeVertex(dw, DL_VertexData(v.x(), v.y(), 0, 0));
   }
@@ -84,7 +83,7 @@ void polyline(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<cam::ProfilePoint>&
 }
 
 // The sections dxflib's guide lists, in its order, for a drawing of two layers.
-void writeDrawing(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<cam::ProfilePoint>& points,
+void writeDrawing(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<cam::CamPoint>& points,
                   bool pitch) {
   dxf.writeHeader(dw);
   dw.sectionEnd();
@@ -129,7 +128,7 @@ void writeDrawing(DL_Dxf& dxf, DL_WriterA& dw, const std::vector<cam::ProfilePoi
 
 }  // namespace
 
-WriteResult writeCamProfileDxf(const std::vector<cam::ProfilePoint>& points, bool pitch,
+WriteResult writeCamProfileDxf(const std::vector<cam::CamPoint>& points, bool pitch,
                                const std::string& path) {
   // dxflib writes to a file of its own: a scratch one, read back and written atomically.
   char scratch[] = "/tmp/linkage-cam-XXXXXX";

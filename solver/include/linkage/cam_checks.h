@@ -1,5 +1,5 @@
-// A cam's profile and its checks, from its follower's motion programme (linkage/cam.h) and the
-// geometry as drawn (../shared/specs/model-format.md, "Cams"). Everything is in the guiding
+// A cam's profile points and its checks, from its follower's motion programme (linkage/cam.h) and
+// the geometry as drawn (../shared/specs/model-format.md, "Cams"). Everything is in the guiding
 // body's frame with the cam's centre at the origin, theta the cam's turn counter-clockwise; the
 // cam's own frame is the guide's turned by theta, so a point P of the guide's frame is
 // p = R(-theta) P on the cam, and, writing J for a quarter turn counter-clockwise,
@@ -34,12 +34,12 @@
 
 namespace linkage::cam {
 
-enum class Motion : unsigned char { Translating, Oscillating };
-enum class Face : unsigned char { Roller, Knife, Flat };
+enum class FollowerMotion : unsigned char { Translating, Oscillating };
+enum class FollowerFace : unsigned char { Roller, Knife, Flat };
 
-struct Geometry {
-  Motion motion = Motion::Translating;
-  Face face = Face::Roller;
+struct CamGeometry {
+  FollowerMotion motion = FollowerMotion::Translating;
+  FollowerFace face = FollowerFace::Roller;
   double baseMm = 0, rollerMm = 0;  // rollerMm 0 for a knife edge and a flat face
   Program program;                  // s in mm, or in radians for an oscillating follower
   // Translating: the unit rise direction and the offset e (b - a) . w.
@@ -53,31 +53,31 @@ struct Geometry {
 
 // What is wrong with the geometry, "" when nothing (an offset beyond base + roller, a rise
 // direction of no length, an arm of no length).
-std::string checkGeometry(const Geometry& g);
+std::string checkCamGeometry(const CamGeometry& g);
 
 // The profile at one cam angle, in the cam's frame (mm; the origin at its centre, axes as drawn).
-struct ProfilePoint {
+struct CamPoint {
   double camDeg = 0;
   Vec2 surface = Vec2::Zero(), pitch = Vec2::Zero();  // pitch: the follower's point b
   double pressureDeg = 0;                             // signed; 0 for a flat face
   double radiusMm = 0;  // the surface's radius of curvature, convex positive
 };
-ProfilePoint profileAt(const Geometry& g, double theta);
+CamPoint camPointAt(const CamGeometry& g, double theta);
 // `steps` points a turn, from 0 to 360 - 360 / steps degrees.
-std::vector<ProfilePoint> profile(const Geometry& g, int steps);
+std::vector<CamPoint> camPoints(const CamGeometry& g, int steps);
 
-struct Extreme {
+struct CamExtreme {
   bool found = false;
   double value = 0, atDeg = 0;  // at the smallest cam angle that reaches it
 };
 
-struct Checks {
-  Extreme pressureMax;       // degrees, magnitude (roller, knife)
-  Extreme pitchRadiusMin;    // the pitch curve's smallest convex radius (roller, knife)
-  Extreme surfaceRadiusMin;  // flat face: the surface's smallest radius (negative: not convex)
+struct CamChecks {
+  CamExtreme pressureMax;       // degrees, magnitude (roller, knife)
+  CamExtreme pitchRadiusMin;    // the pitch curve's smallest convex radius (roller, knife)
+  CamExtreme surfaceRadiusMin;  // flat face: the surface's smallest radius (negative: not convex)
   bool undercut = false;
   std::string undercutWhy;  // where and why, "" without
 };
-Checks checks(const Geometry& g);
+CamChecks camChecks(const CamGeometry& g);
 
 }  // namespace linkage::cam

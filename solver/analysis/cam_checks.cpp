@@ -1,4 +1,4 @@
-#include "linkage/cam_profile.h"
+#include "linkage/cam_checks.h"
 
 #include <cmath>
 #include <functional>
@@ -18,7 +18,7 @@ struct Path {
   Vec2 m;  // b's direction of motion as s grows (unit)
 };
 
-double d0Of(const Geometry& g) {
+double d0Of(const CamGeometry& g) {
   const double r = g.baseMm + g.rollerMm;
   return std::sqrt(std::max(0.0, r * r - g.offsetMm * g.offsetMm));
 }
@@ -27,8 +27,8 @@ Vec2 wOf(const Vec2& u) {
   return Vec2(u.y(), -u.x());  // u turned clockwise
 }
 
-Path pathAt(const Geometry& g, const Displacement& d) {
-  if (g.motion == Motion::Translating) {
+Path pathAt(const CamGeometry& g, const Displacement& d) {
+  if (g.motion == FollowerMotion::Translating) {
     const Vec2 u = g.u.normalized();
     return {g.offsetMm * wOf(u) + (d0Of(g) + d.s) * u, d.v * u, d.a * u, u};
   }
@@ -51,8 +51,8 @@ struct FaceLine {
   double h, h1, h2, gamma, g1, g2;
 };
 
-FaceLine faceAt(const Geometry& g, const Displacement& d, double theta) {
-  if (g.motion == Motion::Translating) {
+FaceLine faceAt(const CamGeometry& g, const Displacement& d, double theta) {
+  if (g.motion == FollowerMotion::Translating) {
     const Vec2 u = g.u.normalized();
     return {g.baseMm + d.s, d.v, d.a, std::atan2(u.y(), u.x()) - theta, -1, 0};
   }
@@ -72,12 +72,12 @@ Vec2 toCam(const Vec2& v, double theta) {
   return Rot::of(-theta) * v;
 }
 
-ProfilePoint flatAt(const Geometry& g, const Displacement& d, double theta) {
+CamPoint flatAt(const CamGeometry& g, const Displacement& d, double theta) {
   const FaceLine f = faceAt(g, d, theta);
   const double hg = f.h1 / f.g1;
   const double hgg = (f.h2 * f.g1 - f.h1 * f.g2) / (f.g1 * f.g1 * f.g1);
   const Vec2 N(std::cos(f.gamma), std::sin(f.gamma));
-  ProfilePoint p;
+  CamPoint p;
   p.surface = f.h * N + hg * perp(N);
   p.pitch = toCam(pathAt(g, d).P, theta);
   p.radiusMm = f.h + hgg;
@@ -91,7 +91,7 @@ double curvature(const Vec2& q1, const Vec2& q2) {
 
 // The largest of f over the turn, at the smallest angle that reaches it: every local maximum
 // of the grid refined by Brent's method between its neighbours, the best kept.
-Extreme largest(const Geometry& g, const std::function<double(double)>& f) {
+CamExtreme largest(const CamGeometry& g, const std::function<double(double)>& f) {
   std::vector<double> grid;
   const auto& segs = g.program.segments();
   const size_t n = std::max<size_t>(1, segs.size());
@@ -103,7 +103,7 @@ Extreme largest(const Geometry& g, const std::function<double(double)>& f) {
   const size_t N = grid.size();
   std::vector<double> v(N);
   for (size_t i = 0; i < N; ++i) v[i] = f(grid[i]);
-  Extreme best;
+  CamExtreme best;
   auto take = [&](double value, double theta) {
     if (std::isfinite(value) && (!best.found || value > best.value)) best = {true, value, theta};
   };
@@ -132,12 +132,12 @@ std::string at(double deg) {
 
 }  // namespace
 
-std::string checkGeometry(const Geometry& g) {
+std::string checkCamGeometry(const CamGeometry& g) {
   if (!(g.baseMm > 0)) return "the base radius must be a length above 0";
   if (!(g.rollerMm >= 0)) return "the roller's radius must be 0 (a knife edge) or more";
-  if (g.motion == Motion::Translating) {
+  if (g.motion == FollowerMotion::Translating) {
     if (!(g.u.norm() > 0)) return "the slot has no direction";
-    if (g.face != Face::Flat && !(std::abs(g.offsetMm) < g.baseMm + g.rollerMm))
+    if (g.face != FollowerFace::Flat && !(std::abs(g.offsetMm) < g.baseMm + g.rollerMm))
       return "the offset reaches past the base circle and the roller";
     return "";
   }
@@ -146,10 +146,10 @@ std::string checkGeometry(const Geometry& g) {
   return "";
 }
 
-ProfilePoint profileAt(const Geometry& g, double theta) {
+CamPoint camPointAt(const CamGeometry& g, double theta) {
   const Displacement d = g.program.at(theta);
-  ProfilePoint p;
-  if (g.face == Face::Flat) {
+  CamPoint p;
+  if (g.face == FollowerFace::Flat) {
     p = flatAt(g, d, theta);
   } else {
     const Path path = pathAt(g, d);
@@ -165,15 +165,15 @@ ProfilePoint profileAt(const Geometry& g, double theta) {
   return p;
 }
 
-std::vector<ProfilePoint> profile(const Geometry& g, int steps) {
-  std::vector<ProfilePoint> out;
-  for (int i = 0; i < steps; ++i) out.push_back(profileAt(g, 2 * M_PI * i / steps));
+std::vector<CamPoint> camPoints(const CamGeometry& g, int steps) {
+  std::vector<CamPoint> out;
+  for (int i = 0; i < steps; ++i) out.push_back(camPointAt(g, 2 * M_PI * i / steps));
   return out;
 }
 
-Checks checks(const Geometry& g) {
-  Checks c;
-  if (g.face == Face::Flat) {
+CamChecks camChecks(const CamGeometry& g) {
+  CamChecks c;
+  if (g.face == FollowerFace::Flat) {
     c.surfaceRadiusMin =
         largest(g, [&](double t) { return -flatAt(g, g.program.at(t), t).radiusMm; });
     c.surfaceRadiusMin.value = -c.surfaceRadiusMin.value;
@@ -185,14 +185,15 @@ Checks checks(const Geometry& g) {
     }
     return c;
   }
-  c.pressureMax = largest(g, [&](double t) { return std::abs(profileAt(g, t).pressureDeg); });
-  const Extreme k = largest(g, [&](double t) {
+  c.pressureMax = largest(g, [&](double t) { return std::abs(camPointAt(g, t).pressureDeg); });
+  const CamExtreme k = largest(g, [&](double t) {
     Vec2 q1, q2;
     pitchRates(pathAt(g, g.program.at(t)), q1, q2);
     return curvature(q1, q2);
   });
   if (k.found && k.value > 0) c.pitchRadiusMin = {true, 1 / k.value, k.atDeg};
-  if (g.face == Face::Roller && c.pitchRadiusMin.found && c.pitchRadiusMin.value <= g.rollerMm) {
+  if (g.face == FollowerFace::Roller && c.pitchRadiusMin.found &&
+      c.pitchRadiusMin.value <= g.rollerMm) {
     c.undercut = true;
     c.undercutWhy = "the roller (" + at(g.rollerMm) + " mm) is larger than the pitch curve's " +
                     "convex radius " + at(c.pitchRadiusMin.value) + " mm at " +
