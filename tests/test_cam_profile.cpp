@@ -176,5 +176,49 @@ TEST(CamProfile, BadGeometryIsNamed) {
   EXPECT_NE(checkCamGeometry(g).find("base"), std::string::npos);
 }
 
+// The smallest base for a pressure-angle limit: the closed form's largest angle at that base is
+// the limit (to rounding), and a hair less base exceeds it.
+TEST(CamProfile, TheSmallestBaseForAPressureAngleLimitMeetsItExactly) {
+  const CamGeometry g = offsetRoller(30, 8, 6);
+  const std::optional<double> base = smallestBaseFor(g, 30);
+  ASSERT_TRUE(base);
+  EXPECT_LT(*base, 30);  // the drawn 30 mm is more than the limit needs
+  auto largest = [&](double b) {
+    const double d0 = std::sqrt((b + 8) * (b + 8) - 36);
+    return searchMax([&](double t) {
+             const Displacement d = g.program.at(t);
+             return std::abs(std::atan((d.v - 6) / (d0 + d.s))) / kDeg;
+           })
+        .value;
+  };
+  EXPECT_NEAR(largest(*base), 30, 1e-6);
+  EXPECT_GT(largest(*base - 1e-3), 30);
+  EXPECT_FALSE(smallestBaseFor(g, 0));  // no limit to meet
+  // An oscillating follower: the limit met at the base found (its own checks).
+  CamGeometry o = offsetRoller();
+  o.motion = FollowerMotion::Oscillating;
+  o.program = Program({{120, 15, Law::Cycloidal}, {360, -15, Law::Cycloidal}}, kDeg);
+  o.pivot = Vec2(55, 38);  // the arm square to the radius as drawn
+  o.b0 = Vec2(0, 38);
+  o.sigma = o.b0.dot(perp(o.b0 - o.pivot)) > 0 ? 1 : -1;
+  const std::optional<double> ob = smallestBaseFor(o, 35);
+  ASSERT_TRUE(ob);
+  EXPECT_NEAR(camChecks(withBase(o, *ob)).pressureMax.value, 35, 1e-6);
+  EXPECT_GT(camChecks(withBase(o, *ob - 1e-3)).pressureMax.value, 35);
+  EXPECT_NEAR((withBase(o, *ob).b0 - o.pivot).norm(), (o.b0 - o.pivot).norm(), 1e-12);
+}
+
+// The largest roller without undercut, the pitch curve kept: at it the check says no undercut
+// a hair below and undercut a hair above.
+TEST(CamProfile, TheLargestRollerIsThePitchCurvesSmallestConvexRadius) {
+  const CamGeometry g = offsetRoller(30, 8, 6);
+  const std::optional<double> r = largestRoller(g);
+  ASSERT_TRUE(r);
+  for (double d : {-1e-6, 1e-6}) {
+    CamGeometry h = offsetRoller(38 - (*r + d), *r + d, 6);
+    EXPECT_EQ(camChecks(h).undercut, d > 0) << d;
+  }
+}
+
 }  // namespace
 }  // namespace linkage::cam

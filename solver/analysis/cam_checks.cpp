@@ -202,4 +202,65 @@ CamChecks camChecks(const CamGeometry& g) {
   return c;
 }
 
+CamGeometry withBase(const CamGeometry& g, double baseMm) {
+  CamGeometry h = g;
+  h.baseMm = baseMm;
+  if (g.motion != FollowerMotion::Oscillating) return h;
+  // The pivot and the arm stay: b on the arm's circle at base + roller from the centre, on
+  // the side of the line centre-pivot it is drawn on.
+  const Vec2 c = g.pivot;
+  const double d = c.norm(), L = (g.b0 - c).norm(), R = baseMm + g.rollerMm;
+  if (!(d > 0)) return h;
+  const double x = (R * R - L * L + d * d) / (2 * d), y2 = R * R - x * x;
+  const Vec2 e = c / d;
+  const double side = cross(c, g.b0) >= 0 ? 1 : -1;
+  h.b0 = x * e + side * std::sqrt(std::max(0.0, y2)) * perp(e);
+  if (!(y2 >= 0)) h.b0 = Vec2::Zero();  // no such arm: refused by checkCamGeometry
+  return h;
+}
+
+std::optional<double> smallestBaseFor(const CamGeometry& g, double limitDeg) {
+  if (g.face == FollowerFace::Flat || !(limitDeg > 0 && limitDeg < 90)) return std::nullopt;
+  auto meets = [&](double base) {
+    const CamGeometry h = withBase(g, base);
+    if (!checkCamGeometry(h).empty()) return false;
+    const CamChecks c = camChecks(h);
+    return c.pressureMax.found && c.pressureMax.value <= limitDeg;
+  };
+  // The bases the geometry allows: a translating follower's offset inside the prime circle,
+  // where its angle falls as the base grows; an oscillating one's arm reaching the circle
+  // (|d - L| to d + L), where it need not: the first of a scan that meets the limit.
+  double lo, hi;
+  if (g.motion == FollowerMotion::Translating) {
+    lo = std::max(0.0, std::abs(g.offsetMm) - g.rollerMm) + 1e-9;
+    hi = std::max(g.baseMm, 2 * lo);
+    while (!meets(hi))
+      if ((hi *= 2) > 1e6) return std::nullopt;
+  } else {
+    const double d = g.pivot.norm(), L = (g.b0 - g.pivot).norm();
+    lo = std::max(std::abs(d - L) - g.rollerMm, 0.0) + 1e-9;
+    hi = d + L - g.rollerMm - 1e-9;
+    if (!(hi > lo)) return std::nullopt;
+  }
+  double below = lo, first = NAN;
+  for (int i = 0; i <= 256 && std::isnan(first); ++i) {
+    const double b = lo + (hi - lo) * i / 256;
+    (meets(b) ? first : below) = b;
+  }
+  if (std::isnan(first)) return std::nullopt;
+  if (first == lo) return lo;
+  while (first - below > 1e-9 * std::max(1.0, first)) {
+    const double mid = (below + first) / 2;
+    (meets(mid) ? first : below) = mid;
+  }
+  return first;
+}
+
+std::optional<double> largestRoller(const CamGeometry& g) {
+  if (g.face == FollowerFace::Flat) return std::nullopt;
+  const CamChecks c = camChecks(g);
+  if (!c.pitchRadiusMin.found) return std::nullopt;
+  return c.pitchRadiusMin.value;
+}
+
 }  // namespace linkage::cam
