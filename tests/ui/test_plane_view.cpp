@@ -23,6 +23,7 @@
 #include "canvas/canvas_scene.h"
 #include "document/document.h"
 #include "drawing.h"
+#include "examples.h"
 #include "export/motion_table_export.h"
 #include "figures/units.h"
 #include "linkage/io/model_file.h"
@@ -309,6 +310,25 @@ TEST(PlaneView, AGroundSlotDrawnOnAPlaneIsWrittenWhereThePlaneIs) {
   EXPECT_EQ(w.document()->undoStack()->count(), steps + 1);
   w.document()->undoStack()->undo();
   EXPECT_EQ(w.document()->design().slots.size(), slots);
+}
+
+// The ground's slots that only another plane's bodies run in are faint, as those bodies are:
+// the needle arm's guide in the overedge machine, seen from the main shaft's plane or from the
+// rocker plane that holds the arm.
+TEST(PlaneView, TheGroundsSlotsOfOtherPlanesAreFaint) {
+  MainWindow w;
+  const Mechanism m = linkage::test::example("overedge-machine");
+  const BodyId ground = m.ground()->id;
+  SlotId guide;
+  for (const Joint& j : m.joints)
+    if (j.slot && m.slot(j.slot)->body == ground &&
+        m.point(j.a)->body == m.bodyNamed("needlearm")->id)
+      guide = j.slot;
+  ASSERT_TRUE(guide);
+  showAt(w, m, 30, "main");
+  EXPECT_TRUE(w.scene()->bodyItem(ground)->slotFaint(guide));
+  showAt(w, m, 30, "rocker");
+  EXPECT_FALSE(w.scene()->bodyItem(ground)->slotFaint(guide));
 }
 
 // The plots of a point of a machine in space: x, y and z in the world, position and velocity,

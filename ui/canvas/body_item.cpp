@@ -122,6 +122,16 @@ bool BodyItem::slotFlagged(SlotId s) const {
   return std::find(flaggedSlots_.begin(), flaggedSlots_.end(), s) != flaggedSlots_.end();
 }
 
+void BodyItem::setFaintSlots(std::vector<SlotId> slots) {
+  if (slots == faintSlots_) return;
+  faintSlots_ = std::move(slots);
+  update();
+}
+
+bool BodyItem::slotFaint(SlotId s) const {
+  return std::find(faintSlots_.begin(), faintSlots_.end(), s) != faintSlots_.end();
+}
+
 void BodyItem::setColour(const QColor& c) {
   if (c == colour_) return;
   colour_ = c;
@@ -178,6 +188,7 @@ void BodyItem::rebuild() {
   const double w = CanvasStyle::channelWidth / 2 * px();
   for (const Guide& g : g_.slots) {
     channels_.push_back(channel(g, w, px()));
+    hatch_.emplace_back();
     if (g_.body.shape != Drawing::Shape::Ground) continue;
     // The frame's slots: short strokes along both walls, as a fixed guide is drawn.
     // A stroke every 6 pixels, and no more than 2000 along a wall (a slot typed a kilometre
@@ -187,7 +198,7 @@ void BodyItem::rebuild() {
       const Vec2 at = g.at(s), d = g.tangentAt(at), n = perp(d);
       for (int side : {-1, 1}) {
         const Vec2 base = at + side * (w + 0.5 * px()) * n;
-        hatch_ << QLineF(toQt(base), toQt(base + side * 4 * px() * n - 4 * px() * d));
+        hatch_.back() << QLineF(toQt(base), toQt(base + side * 4 * px() * n - 4 * px() * d));
       }
     }
   }
@@ -198,7 +209,8 @@ QRectF BodyItem::boundingRect() const {
   const double m = 6 * px();
   QRectF r = body_.boundingRect();
   for (const QPolygonF& c : channels_) r = r.united(c.boundingRect());
-  for (const QLineF& l : hatch_) r = r.united(QRectF(l.p1(), l.p2()).normalized());
+  for (const QVector<QLineF>& h : hatch_)
+    for (const QLineF& l : h) r = r.united(QRectF(l.p1(), l.p2()).normalized());
   return r.adjusted(-m, -m, m, m);
 }
 
@@ -229,13 +241,16 @@ void BodyItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
   const QPen wall =
       cosmetic(g_.body.shape == Drawing::Shape::Ground ? st.ink : line, CanvasStyle::outline);
   const QPen warned = cosmetic(st.warning, 2.5);
-  for (size_t i = 0; i < channels_.size(); ++i)
-    shape(channels_[i], st.paper,
-          i < g_.slotIds.size() && slotFlagged(g_.slotIds[i]) ? warned : wall);
-  if (!hatch_.isEmpty()) {
-    p->setPen(cosmetic(st.faint, 1));
-    p->drawLines(hatch_);
+  for (size_t i = 0; i < channels_.size(); ++i) {
+    const bool known = i < g_.slotIds.size();
+    p->setOpacity(known && slotFaint(g_.slotIds[i]) ? 0.18 : 1.0);
+    shape(channels_[i], st.paper, known && slotFlagged(g_.slotIds[i]) ? warned : wall);
+    if (i < hatch_.size() && !hatch_[i].isEmpty()) {
+      p->setPen(cosmetic(st.faint, 1));
+      p->drawLines(hatch_[i]);
+    }
   }
+  p->setOpacity(1.0);
   if (g_.body.shape != Drawing::Shape::Ground && g_.body.shape != Drawing::Shape::Block) {
     p->setPen(Qt::NoPen);
     p->setBrush(line);

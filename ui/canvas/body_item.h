@@ -33,6 +33,10 @@ class BodyItem : public CanvasItem {
   // Slots drawn in the warning colour (a block or pin runs out of them).
   void setFlaggedSlots(std::vector<SlotId> slots);
   bool slotFlagged(SlotId s) const;
+  // The ground's slots of other planes than the canvas shows (only bodies of those planes
+  // run in them): drawn faint, as those bodies are.
+  void setFaintSlots(std::vector<SlotId> slots);
+  bool slotFaint(SlotId s) const;
   // Its mechanism's colour (linkage/mechanisms.h); invalid: the body's own, by its number.
   void setColour(const QColor& c);
   QColor colour() const;
@@ -53,10 +57,10 @@ class BodyItem : public CanvasItem {
   QPolygonF body_;
   QPainterPath shape_;
   std::vector<QPolygonF> channels_;
-  QVector<QLineF> hatch_;
+  std::vector<QVector<QLineF>> hatch_;  // a ground slot's strokes, by channel
   LabelItem* label_ = nullptr;
   bool hovered_ = false, flagged_ = false;
-  std::vector<SlotId> flaggedSlots_;
+  std::vector<SlotId> flaggedSlots_, faintSlots_;
   QColor colour_;
 };
 

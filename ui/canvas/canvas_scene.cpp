@@ -268,6 +268,17 @@ void CanvasScene::applyPlanes() {
   };
   for (BodyItem* b : bodies_) fade(b, !onShownPlane(b->id()));
   for (JointItem* j : joints_) fade(j, jointOff(j->joint()));
+  // The ground's slots that only other planes' bodies run in, faint as those bodies are.
+  std::vector<SlotId> faint;
+  for (const Slot& sl : m.slots) {
+    if (!m.body(sl.body) || !m.body(sl.body)->ground) continue;
+    bool used = false, off = true;
+    for (const Joint& j : m.joints)
+      if (j.slot == sl.id) used = true, off = off && jointOff(j.id);
+    if (used && off) faint.push_back(sl.id);
+  }
+  for (BodyItem* b : bodies_)
+    if (m.body(b->id()) && m.body(b->id())->ground) b->setFaintSlots(faint);
   for (OutputItem* o : outputs_) {
     const Point* p = m.point(o->point());
     fade(o, p && !onShownPlane(p->body));
