@@ -46,4 +46,34 @@ inline Vec3 needleAt(double phi, double below) {
 }
 }  // namespace lockstitch_bevel
 
+// A lone crank turning in a plane through the world's origin inclined rho about the world's x
+// axis (x (1, 0, 0), y (0, cos rho, sin rho), normal (0, -sin rho, cos rho)), pinned to the
+// ground at the origin: its centre of mass at kCom in its plane, kKg, kJ about it, at kRpm.
+namespace inclined_crank {
+constexpr double kRho = 35 * M_PI / 180, kKg = 0.4, kJ = 300, kRpm = 300;
+inline const Vec2 kCom(12, 5);
+inline const Vec3 kX(1, 0, 0), kY(0, std::cos(kRho), std::sin(kRho)), kN = kX.cross(kY);
+// The model's text with `gravity` (the file's array text, "" for none) and `more` bodies' text
+// (each a JSON object, after the crank's) and joints (after the crank's pin), for machines built
+// on it.
+inline std::string text(const std::string& gravity, const std::string& moreBodies = "",
+                        const std::string& moreJoints = "", const std::string& morePlanes = "") {
+  return R"({"format": "linkage", "version": 1, "name": "a crank in an inclined plane",
+    "units": {"length": "mm"},
+    "planes": {"tilted": {"origin": [0, 0, 0], "x_axis": )" +
+         vec(kX) + R"(, "y_axis": )" + vec(kY) + "}" + morePlanes + R"(},
+    "bodies": [
+      {"name": "ground", "ground": true, "points": {"O": [0, 0, 0]}},
+      {"name": "crank", "plane": "tilted", "points": {"O": [0, 0], "A": [30, 0]},
+       "mass": {"kg": )" +
+         num(kKg) + R"(, "com": )" + vec2(kCom) + R"(, "j_kg_mm2": )" + num(kJ) + "}}" +
+         moreBodies + R"(],
+    "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"})" +
+         moreJoints + R"(],
+    "driver": {"joint": 0, "rpm": )" +
+         num(kRpm) + R"(, "direction": "ccw"})" +
+         (gravity.empty() ? "" : ", \"gravity\": " + gravity) + "}";
+}
+}  // namespace inclined_crank
+
 }  // namespace linkage::test

@@ -180,6 +180,28 @@ TEST_F(CliForces, DynamicsSaysALoadOnTheGroundIsLeftOut) {
   EXPECT_EQ(without.err.find("acts on the frame"), std::string::npos) << without.err;
 }
 
+// The 22-A lying flat, gravity [0, 0, -9.81] along the drawing's normal: no column changes (the
+// table is the one without gravity), and a note says the frame bears the weight along the normal,
+// (0.15 + 0.04 + 0.1) kg x -9.81 m/s^2 = -2.8449 N.
+TEST_F(CliForces, DynamicsSaysGravityAlongTheDrawingsNormalChangesNoColumn) {
+  std::string text =
+      test::slurp(std::string(LINKAGE_EXAMPLES_DIR) + "/slider-crank-22a-masses.linkage.json");
+  ASSERT_EQ(text.find("\"gravity\""), std::string::npos);
+  text.insert(text.find('{') + 1, "\"gravity\": [0, 0, -9.81],");
+  const std::string flat = "'" + writeFile("flat.linkage.json", text) + "'";
+  const CliResult with = run("dynamics " + flat + " --steps 8");
+  const CliResult without = run("dynamics slider-crank-22a-masses --steps 8");
+  ASSERT_EQ(with.exit, 0) << with.err;
+  ASSERT_EQ(without.exit, 0) << without.err;
+  EXPECT_EQ(with.out, without.out);
+  EXPECT_NE(with.err.find("note: gravity's z (-9.81 m/s^2) is along the drawing's normal: it "
+                          "changes no force in the drawing's plane; the frame bears the moving "
+                          "bodies' weight along the normal, -2.8449 N, constant"),
+            std::string::npos)
+      << with.err;
+  EXPECT_EQ(without.err.find("gravity"), std::string::npos) << without.err;
+}
+
 TEST_F(CliForces, BadInputExitsTwoNamingThePlace) {
   std::string text = test::slurp(std::string(LINKAGE_EXAMPLES_DIR) + "/drop-feed.linkage.json");
   const size_t at = text.find("\"kg\": 0.7");
