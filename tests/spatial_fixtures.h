@@ -76,4 +76,30 @@ inline std::string text(const std::string& gravity, const std::string& moreBodie
 }
 }  // namespace inclined_crank
 
+// Two cranks on crossed shafts joined by a bevel pair of ratio 1: "one" in the drawing plane
+// about the z axis (driven), "two" in the plane x = 50 about the x axis (x (0, 1, 0), y (0, 0,
+// 1)); each a mass off its axis: one's at kCom1, two's kR2 along its x.
+namespace crossed_cranks {
+constexpr double kKg1 = 0.3, kKg2 = 0.2, kR2 = 15, kRpm = 600;
+inline const Vec2 kCom1(10, 4);
+inline std::string text() {
+  return R"({"format": "linkage", "version": 1, "name": "cranks on crossed shafts",
+    "units": {"length": "mm"},
+    "planes": {"side": {"origin": [50, 0, 0], "x_axis": [0, 1, 0], "y_axis": [0, 0, 1]}},
+    "bodies": [
+      {"name": "ground", "ground": true, "points": {"O": [0, 0], "S": [50, 0, 0]}},
+      {"name": "one", "points": {"O": [0, 0], "A": [20, 0]},
+       "mass": {"kg": )" +
+         num(kKg1) + R"(, "com": )" + vec2(kCom1) + R"(, "j_kg_mm2": 50}},
+      {"name": "two", "plane": "side", "points": {"S": [0, 0], "B": [25, 0]},
+       "mass": {"kg": )" +
+         num(kKg2) + R"(, "com": [)" + num(kR2) + R"(, 0], "j_kg_mm2": 80}}],
+    "joints": [{"type": "pin", "a": "ground.O", "b": "one.O"},
+               {"type": "pin", "a": "ground.S", "b": "two.S"},
+               {"type": "gear", "a": "one.O", "b": "two.S", "ratio": 1}],
+    "driver": {"joint": 0, "rpm": )" +
+         num(kRpm) + R"(, "direction": "ccw"}})";
+}
+}  // namespace crossed_cranks
+
 }  // namespace linkage::test
