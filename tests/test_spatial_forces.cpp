@@ -412,18 +412,55 @@ TEST(SpatialForces, PowerAndFrameBalanceHoldWithGravityInThreeComponents) {
   }
 }
 
-// The editor's force plots draw a force's x and y in its plane: on a machine in space they say
-// so rather than show part of the forces.
-TEST(SpatialForces, TheForcePlotsOfAMachineInSpaceSayWhereTheForcesAre) {
+// The editor's force plots on a machine in space draw what `linkage-cli dynamics` writes, in the
+// world: the samples' shaking force and moment are the solver's; each joint's force lifted from
+// its plane class's frame (with what it bears along the normal) is, summed over the joints on the
+// ground, the frame's load: the shaking force (the bodies' masses and motion alone); the rod's is
+// its tension along the rod; a bevel pair has its couple and no force.
+TEST(SpatialForces, TheForceSamplesOfAMachineInSpaceAreInTheWorld) {
   Kinematics k;
-  ASSERT_TRUE(k.load(withMasses(test::example("rssr-crank-rocker"), 1)).ok());
-  const ForceSamples s = sampleForces(k, 8);
-  EXPECT_EQ(s.size(), 0u);
-  EXPECT_NE(s.status.message.find("force plots of a machine in space (body \"rocker\" moves in "
-                                  "plane \"rocker\") are not computed yet"),
-            std::string::npos)
-      << s.status.message;
-  EXPECT_NE(s.status.message.find("linkage-cli dynamics writes the forces"), std::string::npos);
+  ASSERT_TRUE(k.load(withMasses(turnedCrank(test::example("rssr-crank-rocker")), 1)).ok());
+  const ForceSamples s = sampleForces(k, 36);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  ASSERT_TRUE(s.complete && s.inSpace);
+  ASSERT_EQ(s.shaking3N.size(), 37u);
+  ASSERT_EQ(s.reaction3N.size(), 3u);
+  double peak = 0, frame = 0, rod = 0;
+  Kinematics at = k;
+  for (size_t i = 0; i < s.size(); ++i) {
+    ASSERT_TRUE(at.moveTo(s.crankDeg[i]).ok());
+    Vec3 F, M;
+    shaking(at, F, M);
+    EXPECT_EQ(s.shaking3N[i], F);
+    EXPECT_EQ(s.shakingMoment3Nm[i], M);
+    EXPECT_EQ(s.shakingN[i], F.head<2>());
+    // joints 0 and 1: pins with point a on the ground (the force on the ground); 2: the rod.
+    frame = std::max(frame, (s.reaction3N[0][i] + s.reaction3N[1][i] - F).norm());
+    peak = std::max(peak, F.norm());
+    const Vec3 A = at.motionInSpace(*at.mechanism().findPoint("crank.A")).position,
+               C = at.motionInSpace(*at.mechanism().findPoint("rocker.C")).position;
+    const Vec3 pull = s.reaction3N[2][i];
+    rod = std::max(rod, pull.cross(C - A).norm() / (C - A).norm() +
+                            std::abs(pull.dot(C - A) / (C - A).norm() - s.axialOrCouple[2][i]));
+    EXPECT_TRUE(std::isnan(s.axialOrCouple[0][i]));
+  }
+  ASSERT_GT(peak, 1);
+  EXPECT_LT(frame, 1e-9 * peak);
+  EXPECT_LT(rod, 1e-9 * peak);
+  // The lockstitch machine's bevel pairs (joints 5 and 7): the couple, no tooth force.
+  ASSERT_TRUE(k.load(withMasses(test::example("lockstitch-bevel"), 2)).ok());
+  const ForceSamples b = sampleForces(k, 8);
+  ASSERT_TRUE(b.complete) << b.status.message;
+  for (int j : {5, 7})
+    for (size_t i = 0; i < b.size(); ++i) {
+      EXPECT_TRUE(std::isnan(b.reaction3N[j][i].x())) << j;
+      EXPECT_TRUE(std::isfinite(b.axialOrCouple[j][i])) << j;
+    }
+  // A planar machine's samples have nothing in space.
+  ASSERT_TRUE(k.load(test::example("slider-crank-22a-masses")).ok());
+  const ForceSamples p = sampleForces(k, 8);
+  EXPECT_FALSE(p.inSpace);
+  EXPECT_TRUE(p.shaking3N.empty() && p.reaction3N.empty());
 }
 
 }  // namespace
