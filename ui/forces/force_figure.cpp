@@ -97,9 +97,7 @@ void ForceFigure::layOut(const QString& crankLabel, const JointChoice& joint,
                    : reaction + ", world axes";
   const QString titles[kPlots] = {"Driver torque",
                                   space ? "Shaking force, world axes" : "Shaking force",
-                                  space ? "Polar diagram of the shaking force, world x and y"
-                                        : "Polar diagram of the shaking force",
-                                  reaction};
+                                  "Polar diagram of the shaking force", reaction};
   auto* rowGroup = new QCPMarginGroup(plot_);
   for (int p = 0; p < kPlots; ++p) {
     const int row = 2 * (p / columns_), column = p % columns_;
@@ -111,6 +109,10 @@ void ForceFigure::layOut(const QString& crankLabel, const JointChoice& joint,
     rects_[p]->setMarginGroup(QCP::msTop | QCP::msBottom, rowGroup);
     addZeroLines(rects_[p], p == Polar);
   }
+  if (space)  // the world's x and y (a view along its z)
+    for (auto [axis, label] : {std::pair{QCPAxis::atBottom, "Shaking fx (world) [N]"},
+                               std::pair{QCPAxis::atLeft, "Shaking fy (world) [N]"}})
+      rects_[Polar]->axis(axis)->setLabel(label);
   // Titles take their height, the plots the rest.
   for (int r = 0; r < grid->rowCount(); ++r) grid->setRowStretchFactor(r, r % 2 ? 1 : 0.01);
 }
