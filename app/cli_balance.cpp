@@ -9,6 +9,7 @@
 #include "linkage/balance.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
+#include "linkage/space.h"
 
 namespace linkage::cli {
 
@@ -16,7 +17,7 @@ namespace {
 
 const char* kHelp =
     R"(usage: linkage-cli balance MODEL --counterweight BODY [--counterweight BODY ...]
-                           --minimize fx|fy|force [--max-kgmm M] [--steps N]
+                           --minimize fx|fy|fz|force [--max-kgmm M] [--steps N]
                            [--out BALANCED.linkage.json]
 
 Finds the counterweights on the given bodies (each pinned to the ground) that minimise the peak
@@ -40,11 +41,16 @@ peak before. Writes CSV, with a header row:
   peak_after,,N,CRANK_DEG                   with the counterweights as --out writes them
 
 and on standard error the optimality gap (the peak after less the programme's bound).
-A machine in space (planes, docs/spatial.md) is refused (exit 2) naming why: its shaking force
-has a part along its planes' normals (linkage-cli dynamics gives it in 3D).
+
+A machine in space (planes, docs/spatial.md): the shaking force is the world's, in 3D (fx, fy,
+fz its components, force its magnitude); each counterweight turns in its body's plane, so it
+reaches only the force's components in that plane. Where every counterweight's plane is
+parallel, the force along their normal is beyond their reach: a note on standard error gives
+that normal and the part's peak with the counterweights and before. A planar machine has no fz
+(refused); the note gives the weight along the drawing's normal when gravity has a z.
 
   --counterweight BODY  a body to put a counterweight on (repeatable)
-  --minimize WHAT       fx, fy or force
+  --minimize WHAT       fx, fy, fz (in space) or force
   --max-kgmm M          each counterweight's static moment at most M kg mm (0: none; the peak
                         as it is)
   --steps N             samples per turn of the first programme (default 360, at least 8)
@@ -66,7 +72,7 @@ CLI::App* addOptions(Parser& parser, Options& o) {
   CLI::App& c = parser.command("balance", kHelp);
   addModel(c, o.model);
   required(addTexts(c, "--counterweight", o.bodies));
-  required(addWord(c, "--minimize", o.measure, {"fx", "fy", "force"}));
+  required(addWord(c, "--minimize", o.measure, {"fx", "fy", "fz", "force"}));
   addNumber(c, "--max-kgmm", o.balance.maxKgMm, NumberRule::NotNegative);
   addWhole(c, "--steps", o.balance.steps, 8, 1'000'000);
   addText(c, "--out", o.out);
@@ -76,6 +82,7 @@ CLI::App* addOptions(Parser& parser, Options& o) {
 BalanceMeasure measureNamed(const std::string& name) {
   if (name == "fx") return BalanceMeasure::Fx;
   if (name == "fy") return BalanceMeasure::Fy;
+  if (name == "fz") return BalanceMeasure::Fz;
   return BalanceMeasure::Force;
 }
 
@@ -91,6 +98,60 @@ std::string table(const Mechanism& m, const BalanceResult& r) {
   out += "peak_before,," + formatNumber(r.peakBefore) + "," + formatNumber(r.peakBeforeDeg) +
          "\npeak_after,," + formatNumber(r.peakAfter) + "," + formatNumber(r.peakAfterDeg) + "\n";
   return out;
+}
+
+std::string vector(const Vec3& v) {
+  return "(" + formatShown(v.x(), 1) + ", " + formatShown(v.y(), 1) + ", " + formatShown(v.z(), 1) +
+         ")";
+}
+
+// The peak after, the certified gap and the exchange's rounds; or that nothing shakes.
+void notePeak(const BalanceResult& r) {
+  if (!(r.peakBefore > 0)) {
+    error(
+        "note: the shaking force is nil over the whole cycle: nothing to balance, no "
+        "counterweight placed");
+    return;
+  }
+  // A peak after that is rounding next to the peak before is an exact cancellation: 0, at no
+  // angle in particular.
+  const bool cancelled = r.peakAfter <= 1e-9 * r.peakBefore;
+  error("note: peak " +
+        (cancelled
+             ? std::string("0 N (cancelled over the whole cycle)")
+             : formatShown(r.peakAfter) + " N at crank " + formatShown(r.peakAfterDeg) + " deg") +
+        "; optimality gap " + formatNumber(r.gap(), 3) +
+        " N (no counterweights within the bounds do better than " +
+        formatShown(r.lowerBound, r.peakBefore) + " N), after " + std::to_string(r.exchanges) +
+        " exchange(s)");
+}
+
+// What the counterweights leave out, said rather than hidden in the peak.
+void noteUnreached(const Mechanism& m, const BalanceResult& r) {
+  const std::string peaks =
+      formatShown(r.unreachedPeak, r.peakBefore) + " N" +
+      (r.unreachedPeak > 0 && isSpatial(m) ? " at crank " + formatShown(r.unreachedPeakDeg) + " deg"
+                                           : std::string()) +
+      " (before: " + formatShown(r.unreachedPeakBefore, r.peakBefore) + " N)";
+  if (!isSpatial(m)) {
+    if (r.unreachedPeak > 0 || r.unreachedPeakBefore > 0)
+      error(
+          "note: the balance is of the shaking force in the drawing's plane; along its normal "
+          "the frame bears the weight (gravity's z), which no counterweight turning in the "
+          "plane lowers: " +
+          peaks);
+    return;
+  }
+  if (!r.unreached) {
+    error(
+        "note: the counterweights' planes are not all parallel: every direction of the "
+        "shaking force is within their reach");
+    return;
+  }
+  error("note: every counterweight turns in a plane of normal " + vector(*r.unreached) +
+        " (world): the shaking force along it is beyond their reach (only their weight adds to "
+        "it): its peak " +
+        peaks);
 }
 
 int balance(Options& o) {
@@ -113,17 +174,8 @@ int balance(Options& o) {
     return r.status.code == StatusCode::BadModel ? kBadInput : exitFor(r.status);
   }
   std::fputs(table(*m, r).c_str(), stdout);
-  // A peak after that is rounding next to the peak before is an exact cancellation: 0, at no
-  // angle in particular.
-  const bool cancelled = r.peakAfter <= 1e-9 * r.peakBefore;
-  error("note: peak " +
-        (cancelled
-             ? std::string("0 N (cancelled over the whole cycle)")
-             : formatShown(r.peakAfter) + " N at crank " + formatShown(r.peakAfterDeg) + " deg") +
-        "; optimality gap " + formatNumber(r.gap(), 3) +
-        " N (no counterweights within the bounds do better than " +
-        formatShown(r.lowerBound, r.peakBefore) + " N), after " + std::to_string(r.exchanges) +
-        " exchange(s)");
+  notePeak(r);
+  noteUnreached(*m, r);
   if (!o.out.empty()) {
     addCounterweights(*m, r.counterweights);
     const WriteResult w = saveMechanismFile(*m, o.out);

@@ -21,8 +21,9 @@ const char* kHelp =
 
 Writes the forces of MODEL at its driver's constant speed (kinetostatics: from the exact
 accelerations, one linear solve with the transpose of the constraint Jacobian per crank angle),
-from the bodies' masses, the gravity and the loads of the file: a header row, then one row per
-crank angle 0, 360/N, ..., 360*R with
+from the bodies' masses, the gravity ([gx, gy] or [gx, gy, gz], m/s^2: on a planar machine gz
+is along the drawing's normal and changes no column) and the loads of the file: a header row,
+then one row per crank angle 0, 360/N, ..., 360*R with
 
   t_s,crank_deg,driver_torque_Nm,shaking_fx_N,shaking_fy_N,shaking_moment_Nm
 
@@ -111,6 +112,20 @@ void noteSpace(const Mechanism& m, const Forces& f) {
           "single joint with the ground to bear them: they are in no reaction");
 }
 
+// A planar machine's gravity along the drawing's normal changes none of its columns: said, with
+// the weight the frame bears along the normal.
+void noteGravityZ(const Mechanism& m) {
+  if (isSpatial(m) || m.gravityZ.value_or(0) == 0) return;
+  double kg = 0;
+  for (const Body& b : m.bodies)
+    if (!b.ground && b.mass) kg += b.mass->kg;
+  error("note: gravity's z (" + formatShown(*m.gravityZ) +
+        " m/s^2) is along the drawing's normal: it changes no force in the drawing's plane; the "
+        "frame bears the moving bodies' weight along the normal, " +
+        formatShown(kg * *m.gravityZ) +
+        " N, constant, which the table of a planar machine has no column for");
+}
+
 int dynamics(const Options& o) {
   if (std::optional<int> e = checkOptions(o)) return *e;
   std::optional<Mechanism> m = openDrivenModel(o.model);
@@ -141,6 +156,7 @@ int dynamics(const Options& o) {
           "columns are left empty");
   }
   noteSpace(*m, solver.result());
+  noteGravityZ(*m);
   std::string out = forceTableHeader(*m) + "\n";
   const long long rows = std::llround(o.steps * o.revs);
   Status s;

@@ -133,4 +133,60 @@ inline Vec3 needleAt(double phi, double below) {
 }
 }  // namespace lockstitch_bevel
 
+// A lone crank turning in a plane through the world's origin inclined rho about the world's x
+// axis (x (1, 0, 0), y (0, cos rho, sin rho), normal (0, -sin rho, cos rho)), pinned to the
+// ground at the origin: its centre of mass at kCom in its plane, kKg, kJ about it, at kRpm.
+namespace inclined_crank {
+constexpr double kRho = 35 * M_PI / 180, kKg = 0.4, kJ = 300, kRpm = 300;
+inline const Vec2 kCom(12, 5);
+inline const Vec3 kX(1, 0, 0), kY(0, std::cos(kRho), std::sin(kRho)), kN = kX.cross(kY);
+// The model's text with `gravity` (the file's array text, "" for none) and `more` bodies' text
+// (each a JSON object, after the crank's) and joints (after the crank's pin), for machines built
+// on it.
+inline std::string text(const std::string& gravity, const std::string& moreBodies = "",
+                        const std::string& moreJoints = "", const std::string& morePlanes = "") {
+  return R"({"format": "linkage", "version": 1, "name": "a crank in an inclined plane",
+    "units": {"length": "mm"},
+    "planes": {"tilted": {"origin": [0, 0, 0], "x_axis": )" +
+         vec(kX) + R"(, "y_axis": )" + vec(kY) + "}" + morePlanes + R"(},
+    "bodies": [
+      {"name": "ground", "ground": true, "points": {"O": [0, 0, 0]}},
+      {"name": "crank", "plane": "tilted", "points": {"O": [0, 0], "A": [30, 0]},
+       "mass": {"kg": )" +
+         num(kKg) + R"(, "com": )" + vec2(kCom) + R"(, "j_kg_mm2": )" + num(kJ) + "}}" +
+         moreBodies + R"(],
+    "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"})" +
+         moreJoints + R"(],
+    "driver": {"joint": 0, "rpm": )" +
+         num(kRpm) + R"(, "direction": "ccw"})" +
+         (gravity.empty() ? "" : ", \"gravity\": " + gravity) + "}";
+}
+}  // namespace inclined_crank
+
+// Two cranks on crossed shafts joined by a bevel pair of ratio 1: "one" in the drawing plane
+// about the z axis (driven), "two" in the plane x = 50 about the x axis (x (0, 1, 0), y (0, 0,
+// 1)); each a mass off its axis: one's at kCom1, two's kR2 along its x.
+namespace crossed_cranks {
+constexpr double kKg1 = 0.3, kKg2 = 0.2, kR2 = 15, kRpm = 600;
+inline const Vec2 kCom1(10, 4);
+inline std::string text() {
+  return R"({"format": "linkage", "version": 1, "name": "cranks on crossed shafts",
+    "units": {"length": "mm"},
+    "planes": {"side": {"origin": [50, 0, 0], "x_axis": [0, 1, 0], "y_axis": [0, 0, 1]}},
+    "bodies": [
+      {"name": "ground", "ground": true, "points": {"O": [0, 0], "S": [50, 0, 0]}},
+      {"name": "one", "points": {"O": [0, 0], "A": [20, 0]},
+       "mass": {"kg": )" +
+         num(kKg1) + R"(, "com": )" + vec2(kCom1) + R"(, "j_kg_mm2": 50}},
+      {"name": "two", "plane": "side", "points": {"S": [0, 0], "B": [25, 0]},
+       "mass": {"kg": )" +
+         num(kKg2) + R"(, "com": [)" + num(kR2) + R"(, 0], "j_kg_mm2": 80}}],
+    "joints": [{"type": "pin", "a": "ground.O", "b": "one.O"},
+               {"type": "pin", "a": "ground.S", "b": "two.S"},
+               {"type": "gear", "a": "one.O", "b": "two.S", "ratio": 1}],
+    "driver": {"joint": 0, "rpm": )" +
+         num(kRpm) + R"(, "direction": "ccw"}})";
+}
+}  // namespace crossed_cranks
+
 }  // namespace linkage::test

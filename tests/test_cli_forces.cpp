@@ -180,6 +180,43 @@ TEST_F(CliForces, DynamicsSaysALoadOnTheGroundIsLeftOut) {
   EXPECT_EQ(without.err.find("acts on the frame"), std::string::npos) << without.err;
 }
 
+// The 22-A lying flat, gravity [0, 0, -9.81] along the drawing's normal: no column changes (the
+// table is the one without gravity), and a note says the frame bears the weight along the normal,
+// (0.15 + 0.04 + 0.1) kg x -9.81 m/s^2 = -2.8449 N.
+TEST_F(CliForces, GravityAlongTheDrawingsNormalChangesNoPlanarForceAndIsSaid) {
+  std::string text =
+      test::slurp(std::string(LINKAGE_EXAMPLES_DIR) + "/slider-crank-22a-masses.linkage.json");
+  ASSERT_EQ(text.find("\"gravity\""), std::string::npos);
+  text.insert(text.find('{') + 1, "\"gravity\": [0, 0, -9.81],");
+  const std::string flat = "'" + writeFile("flat.linkage.json", text) + "'";
+  const CliResult with = run("dynamics " + flat + " --steps 8");
+  const CliResult without = run("dynamics slider-crank-22a-masses --steps 8");
+  ASSERT_EQ(with.exit, 0) << with.err;
+  ASSERT_EQ(without.exit, 0) << without.err;
+  EXPECT_EQ(with.out, without.out);
+  EXPECT_NE(with.err.find("note: gravity's z (-9.81 m/s^2) is along the drawing's normal: it "
+                          "changes no force in the drawing's plane; the frame bears the moving "
+                          "bodies' weight along the normal, -2.8449 N, constant"),
+            std::string::npos)
+      << with.err;
+  EXPECT_EQ(without.err.find("gravity"), std::string::npos) << without.err;
+  // The balance is of the force in the plane; the note gives the weight along the normal with
+  // the counterweight's: (0.29 kg + its mass) x 9.81 m/s^2, before 2.8449 N.
+  const CliResult b = run("balance " + flat + " --counterweight crank --minimize force");
+  ASSERT_EQ(b.exit, 0) << b.err;
+  const std::string kg = "counterweight_kg,crank,";
+  const size_t at = b.out.find(kg);
+  ASSERT_NE(at, std::string::npos) << b.out;
+  const double mc = number(split(b.out.substr(at, b.out.find('\n', at) - at))[2]);
+  EXPECT_GT(mc, 0);
+  EXPECT_NE(b.err.find("note: the balance is of the shaking force in the drawing's plane; along "
+                       "its normal the frame bears the weight (gravity's z), which no "
+                       "counterweight turning in the plane lowers: " +
+                       formatShown((0.29 + mc) * 9.81) + " N (before: 2.8449 N)"),
+            std::string::npos)
+      << b.err;
+}
+
 TEST_F(CliForces, BadInputExitsTwoNamingThePlace) {
   std::string text = test::slurp(std::string(LINKAGE_EXAMPLES_DIR) + "/drop-feed.linkage.json");
   const size_t at = text.find("\"kg\": 0.7");

@@ -123,7 +123,7 @@ TEST_F(CliOptions, BadNumberExitsTwoNamingTheOptionAndTheCause) {
   expectBadInput("ics wanzer-inversion-2 --angle 0 --point needlebar.G --via 3,,2",
                  "--via: \"\" is not a whole number");
   expectBadInput("balance drop-feed --counterweight lowershaft --minimize torque",
-                 "--minimize: \"torque\" is not fx, fy or force");
+                 "--minimize: \"torque\" is not fx, fy, fz or force");
   if (plotAvailable())
     expectBadInput("plot wanzer-inversion-1 --out x.png --units furlongs",
                    "--units: \"furlongs\" is not mm, m or g");

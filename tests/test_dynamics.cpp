@@ -378,7 +378,7 @@ TEST(Dynamics, MassesGravityAndLoadsRoundTripAndBadOnesAreRefused) {
   EXPECT_EQ(refused("\"kg\": ", "\"kg\": -").substr(0, 49),
             "bodies[1].mass.kg: expected a number >= 0, got -0");
   EXPECT_EQ(refused("\"gravity\": [0, -9.81]", "\"gravity\": [0]"),
-            "gravity: expected [x, y] with two finite numbers, got [0]");
+            "gravity: expected [gx, gy] or [gx, gy, gz] with finite numbers (m/s^2), got [0]");
   EXPECT_EQ(refused("\"from_deg\": 40,", ""),
             "loads[0]: a window needs both \"from_deg\" and \"to_deg\"; only \"to_deg\" is given");
   EXPECT_EQ(refused("\"torque_Nm\"", "\"force_N\""),
@@ -389,6 +389,65 @@ TEST(Dynamics, MassesGravityAndLoadsRoundTripAndBadOnesAreRefused) {
             "bodies[1].mass.counterweights[0].kg: expected a number >= 0, got -0.125");
   EXPECT_EQ(refused("\"counterweights\": [", "\"counterweights\": 3, \"x\": ["),
             "bodies[1].mass.counterweights: expected an array of {\"kg\", \"at\"}, got 3");
+}
+
+// Gravity is [gx, gy] or [gx, gy, gz] (the world's, docs/dynamics.md): written back as it was
+// read, two numbers or three; any other shape refused naming it. On a planar machine gz is along
+// the drawing's normal: no force in the plane changes (every column of the table is the same);
+// the frame bears the weights along the normal, the shaking force's z, with their moments about
+// the sketch origin's x and y axes, from the centres of mass where they are.
+TEST(Dynamics, GravityHasTwoOrThreeComponentsAndGzChangesNoPlanarForce) {
+  const Mechanism flat = withMasses(test::example("wanzer-inversion-2"), 5);
+  std::string text = serializeMechanism(flat);
+  const std::string two = "\"gravity\": [0, -9.81]";
+  const size_t at = text.find(two);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, two.size(), "\"gravity\": [0, -9.81, -4.5]");
+  const LoadResult read = parseMechanism(text);
+  ASSERT_TRUE(read.mechanism) << read.error;
+  const Mechanism& m = *read.mechanism;
+  EXPECT_EQ(m.gravityWorld(), Vec3(0, -9.81, -4.5));
+  EXPECT_EQ(serializeMechanism(m), text);
+  EXPECT_EQ(mechanismDifference(m, flat), "gravity differs");
+  auto refusal = [&](const std::string& gravity) {
+    std::string t = text;
+    t.replace(at, std::string("\"gravity\": [0, -9.81, -4.5]").size(), "\"gravity\": " + gravity);
+    const LoadResult r = parseMechanism(t);
+    EXPECT_FALSE(r.mechanism) << gravity;
+    return r.error;
+  };
+  const std::string expected =
+      "gravity: expected [gx, gy] or [gx, gy, gz] with finite numbers (m/s^2), got ";
+  for (const char* bad : {"[0, \"down\", 1]", "[]", "[0, -9.81, null]", "{\"z\": 1}"})
+    EXPECT_EQ(refusal(bad).rfind(expected, 0), 0u) << refusal(bad);
+  EXPECT_EQ(refusal("[0, -9.81, 1, 2]"), expected + "[0, -9.81, 1, 2]");
+  EXPECT_EQ(refusal("[0, -9.81, 1e999]").rfind("gravity[2]: ", 0), 0u);
+  Kinematics a = loaded(flat, true), b = loaded(m, true);
+  ForceSolver fa, fb;
+  ASSERT_TRUE(fa.prepare(a).ok() && fb.prepare(b).ok());
+  double kg = 0;
+  for (const Body& body : m.bodies)
+    if (!body.ground && body.mass) kg += body.mass->kg;
+  for (double deg : {0.0, 77.0, 200.0}) {
+    ASSERT_TRUE(a.moveTo(deg).ok() && b.moveTo(deg).ok());
+    const Forces &x = fa.compute(a), &y = fb.compute(b);
+    ASSERT_TRUE(x.status.ok() && y.status.ok());
+    EXPECT_EQ(x.driverTorqueNm, y.driverTorqueNm);
+    EXPECT_EQ(x.shakingForceN, y.shakingForceN);
+    EXPECT_EQ(x.shakingMomentNm, y.shakingMomentNm);
+    for (size_t j = 0; j < m.joints.size(); ++j) EXPECT_EQ(x.joints[j].force, y.joints[j].force);
+    EXPECT_NEAR(y.shakingForce3N.z(), -4.5 * kg, 1e-12 * kg);
+    EXPECT_EQ(x.shakingForce3N.z(), 0);
+    Vec2 tilt = Vec2::Zero();  // N m: r x (0, 0, m gz) = (y m gz, -x m gz)
+    for (const Body& body : m.bodies) {
+      if (body.ground || !body.mass) continue;
+      const Vec2 c = b.toWorld(body.id, body.mass->com);
+      tilt += body.mass->kg * -4.5 * Vec2(c.y(), -c.x()) / 1000;
+    }
+    EXPECT_NEAR(y.shakingMoment3Nm.x(), tilt.x(), 1e-12 * tilt.norm()) << deg;
+    EXPECT_NEAR(y.shakingMoment3Nm.y(), tilt.y(), 1e-12 * tilt.norm()) << deg;
+    EXPECT_EQ(y.shakingMoment3Nm.z(), x.shakingMomentNm);
+  }
 }
 
 // Issue 26: a mass of 1e300 kg gave forces of 1e303 N with noise of 1e287 N where 0 is meant (the

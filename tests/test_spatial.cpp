@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "linkage/balance.h"
 #include "linkage/dynamics.h"
 #include "linkage/elements.h"
 #include "linkage/io/model_file.h"
@@ -144,17 +143,6 @@ TEST(Spatial, BadPlanesAndJointsAreRefusedNamingThePlace) {
 
 TEST(Spatial, WhatIsNotComputedInSpaceYetSaysSoInsteadOfNumbers) {
   const Mechanism m = rssr();
-  Kinematics k;
-  ASSERT_TRUE(k.load(m).ok());
-  // Forces are computed in space (test_spatial_forces.cpp); counterweights are not.
-  BalanceOptions opt;
-  opt.bodies = {m.bodyNamed("crank")->id};
-  const Status s = balanceShaking(k, opt).status;
-  EXPECT_FALSE(s.ok());
-  EXPECT_NE(s.message.find("counterweights of a machine in space (body \"rocker\" "
-                           "moves in plane \"rocker\") are not computed yet"),
-            std::string::npos)
-      << s.message;
   // A file that names planes but puts nothing in them is planar for every analysis.
   Mechanism flat = m;
   flat.planes.emplace();

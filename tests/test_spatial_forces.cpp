@@ -12,6 +12,7 @@
 #include "examples.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_samples.h"
+#include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
 #include "linkage/space.h"
 #include "linkage/tables/force_table.h"
@@ -131,7 +132,7 @@ Mechanism withMasses(Mechanism m, unsigned seed) {
 // in the world: what the driver must put in.
 double powerNeeded(const Kinematics& k) {
   const Mechanism& m = k.mechanism();
-  const Vec3 g(m.gravity->x(), m.gravity->y(), 0);
+  const Vec3 g = m.gravityWorld();
   double p = 0;
   for (const Body& b : m.bodies) {
     if (b.ground || !b.mass) continue;
@@ -226,9 +227,13 @@ TEST(SpatialForces, PowerBalanceHoldsWithABodyInATurnedParallelPlane) {
 // to the world, with its moment about the plane's axes) and the driver (its torque's reaction)
 // is the shaking force and moment found from the bodies' masses and motion alone.
 TEST(SpatialForces, TheShakingForceAndMomentInSpaceAreWhatTheBearingsPutOnTheGround) {
-  for (bool turned : {false, true}) {
+  // The crank turned or not; gravity (3, -9.81) or with a z, which the crank's bearing and the
+  // rocker's take out of their planes.
+  for (const auto& [turned, gz] :
+       {std::pair{false, 0.0}, {true, 0.0}, {false, -6.5}, {true, -6.5}}) {
     Mechanism m = withMasses(test::example("rssr-crank-rocker"), 3);
     if (turned) m = turnedCrank(m);
+    if (gz != 0) m.gravityZ = gz;
     Kinematics k;
     ASSERT_TRUE(k.load(m).ok());
     ForceSolver f;
@@ -255,8 +260,8 @@ TEST(SpatialForces, TheShakingForceAndMomentInSpaceAreWhatTheBearingsPutOnTheGro
       EXPECT_EQ(r.shakingForceN, r.shakingForce3N.head<2>());
     }
     ASSERT_GT(peakF, 1);
-    EXPECT_LT(worstF, 1e-9 * peakF) << turned;
-    EXPECT_LT(worstM, 1e-9 * peakM) << turned;
+    EXPECT_LT(worstF, 1e-9 * peakF) << turned << " " << gz;
+    EXPECT_LT(worstM, 1e-9 * peakM) << turned << " " << gz;
   }
 }
 
@@ -292,18 +297,148 @@ TEST(SpatialForces, BodiesWithALoadOutOfTheirPlaneAndNoBearingAreNamed) {
     EXPECT_TRUE(std::isfinite(x.normalN) && x.tiltNm.allFinite());
 }
 
-// The editor's force plots draw a force's x and y in its plane: on a machine in space they say
-// so rather than show part of the forces.
-TEST(SpatialForces, TheForcePlotsOfAMachineInSpaceSayWhereTheForcesAre) {
+// Gravity straight down the world's z, [0, 0, -9.81], on a crank turning in a plane inclined
+// rho about x: its part in the plane, g sin(rho) down the plane's y, loads the crank's planar
+// equations (the driver holds the weight's moment m g sin(rho) c_x about the pin); its part along
+// the normal, -g cos(rho), is the bearing's (fn) with its moments about the plane's axes through
+// the pin; the frame takes the weight and the centrifugal force in 3D. By hand from the crank's
+// angle alone, at the driver's constant speed.
+TEST(SpatialForces, GravityInThreeComponentsOnACrankInAnInclinedPlane) {
+  namespace ic = test::inclined_crank;
+  const LoadResult read = parseMechanism(ic::text("[0, 0, -9.81]"));
+  ASSERT_TRUE(read.mechanism) << read.error;
+  const Mechanism& m = *read.mechanism;
+  EXPECT_EQ(m.gravityWorld(), Vec3(0, 0, -9.81));
   Kinematics k;
-  ASSERT_TRUE(k.load(withMasses(test::example("rssr-crank-rocker"), 1)).ok());
-  const ForceSamples s = sampleForces(k, 8);
-  EXPECT_EQ(s.size(), 0u);
-  EXPECT_NE(s.status.message.find("force plots of a machine in space (body \"rocker\" moves in "
-                                  "plane \"rocker\") are not computed yet"),
-            std::string::npos)
-      << s.status.message;
-  EXPECT_NE(s.status.message.find("linkage-cli dynamics writes the forces"), std::string::npos);
+  ASSERT_TRUE(k.load(m).ok());
+  ForceSolver solver;
+  ASSERT_TRUE(solver.prepare(k).ok()) << solver.result().status.message;
+  const Vec3 g(0, 0, -9.81);
+  const double w = ic::kRpm * M_PI / 30, gin = g.dot(ic::kY),
+               gn = g.dot(ic::kN);  // gx in the plane is 0
+  ASSERT_NEAR(gin, -9.81 * std::sin(ic::kRho), 1e-15);
+  struct Worst {
+    double got = 0, peak = 0;
+    void add(double a, double b) {
+      got = std::max(got, std::abs(a - b)), peak = std::max(peak, std::abs(b));
+    }
+    double rel() const { return got / peak; }
+  } torque, force, normal, tilt, shake, moment;
+  for (int deg = 0; deg < 360; deg += 10) {
+    ASSERT_TRUE(k.moveTo(deg).ok()) << deg;
+    const Forces& f = solver.compute(k);
+    ASSERT_TRUE(f.status.ok()) << f.status.message;
+    const double t = deg * M_PI / 180;
+    const Vec2 c(std::cos(t) * ic::kCom.x() - std::sin(t) * ic::kCom.y(),
+                 std::sin(t) * ic::kCom.x() + std::cos(t) * ic::kCom.y());  // mm, in the plane
+    // The crank's balance: the pin's force on it, P, with m (g_in + w^2 c) = -P; the driver's
+    // torque and the weight's moment about the pin sum to J alpha = 0.
+    torque.add(f.driverTorqueNm, -ic::kKg * (c.x() * gin - c.y() * 0) / 1000);
+    const Vec2 onGround = ic::kKg * (Vec2(0, gin) + w * w * c / 1000);  // N, the crank's on the pin
+    force.add(f.joints[0].force.x(), onGround.x());
+    force.add(f.joints[0].force.y(), onGround.y());
+    // Out of the plane: the weight's normal part at the centre of mass, on the ground through
+    // the bearing, with its moment about the plane's x and y axes through the pin.
+    const double Fn = ic::kKg * gn;
+    normal.add(f.joints[0].normalN, Fn);
+    tilt.add(f.joints[0].tiltNm.x(), c.y() * Fn / 1000);
+    tilt.add(f.joints[0].tiltNm.y(), -c.x() * Fn / 1000);
+    // The frame: the weight and the centrifugal force, in the world, and its moment about the
+    // origin (the pin).
+    const Vec3 cw = c.x() * ic::kX + c.y() * ic::kY;
+    const Vec3 F = ic::kKg * g + ic::kKg * w * w * cw / 1000;
+    for (int i = 0; i < 3; ++i) shake.add(f.shakingForce3N[i], F[i]);
+    const Vec3 M = cw.cross(F) / 1000;
+    for (int i = 0; i < 3; ++i) moment.add(f.shakingMoment3Nm[i], M[i]);
+  }
+  EXPECT_LT(torque.rel(), 1e-9);
+  EXPECT_LT(force.rel(), 1e-9);
+  EXPECT_LT(normal.rel(), 1e-9);
+  EXPECT_LT(tilt.rel(), 1e-9);
+  EXPECT_LT(shake.rel(), 1e-9);
+  EXPECT_LT(moment.rel(), 1e-9);
+  EXPECT_NEAR(normal.peak, 0.4 * 9.81 * std::cos(ic::kRho), 1e-12);
+  std::printf("[ inclined crank ] torque %.3g, pin %.3g, fn %.3g, tilt %.3g, shaking %.3g, %.3g\n",
+              torque.rel(), force.rel(), normal.rel(), tilt.rel(), shake.rel(), moment.rel());
+}
+
+// The spatial examples' power balance and the frame's balance with gravity in three components
+// (the in-plane part of each body's plane loads its equations; the rest its bearing).
+TEST(SpatialForces, PowerAndFrameBalanceHoldWithGravityInThreeComponents) {
+  for (const char* name : {"rssr-crank-rocker", "overedge-machine", "lockstitch-bevel"}) {
+    Mechanism m = withMasses(test::example(name), 17);
+    m.gravityZ = -6.5;
+    Kinematics k;
+    ASSERT_TRUE(k.load(m).ok()) << name;
+    ForceSolver f;
+    ASSERT_TRUE(f.prepare(k).ok()) << name << ": " << f.result().status.message;
+    const Joint& d = *m.joint(m.driver->joint);
+    double peak = 0, worst = 0;
+    for (double deg = 0; deg < 360; deg += 3) {
+      ASSERT_TRUE(k.moveTo(deg).ok()) << name << " " << deg;
+      const Forces& r = f.compute(k);
+      ASSERT_TRUE(r.status.ok()) << r.status.message;
+      const double speed = k.bodyOmega(m.point(d.b)->body) - k.bodyOmega(m.point(d.a)->body);
+      const double input = r.driverTorqueNm * speed;
+      peak = std::max(peak, std::abs(input));
+      worst = std::max(worst, std::abs(input - powerNeeded(k)));
+    }
+    ASSERT_GT(peak, 0) << name;
+    EXPECT_LT(worst, 1e-12 * peak) << name;
+    std::printf("[ power, gz ] %s: peak %.6g W, largest residual %.3g of it\n", name, peak,
+                worst / peak);
+  }
+}
+
+// The editor's force plots on a machine in space draw what `linkage-cli dynamics` writes, in the
+// world: the samples' shaking force and moment are the solver's; each joint's force lifted from
+// its plane class's frame (with what it bears along the normal) is, summed over the joints on the
+// ground, the frame's load: the shaking force (the bodies' masses and motion alone); the rod's is
+// its tension along the rod; a bevel pair has its couple and no force.
+TEST(SpatialForces, TheForceSamplesOfAMachineInSpaceAreInTheWorld) {
+  Kinematics k;
+  ASSERT_TRUE(k.load(withMasses(turnedCrank(test::example("rssr-crank-rocker")), 1)).ok());
+  const ForceSamples s = sampleForces(k, 36);
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  ASSERT_TRUE(s.complete && s.inSpace);
+  ASSERT_EQ(s.shaking3N.size(), 37u);
+  ASSERT_EQ(s.reaction3N.size(), 3u);
+  double peak = 0, frame = 0, rod = 0;
+  Kinematics at = k;
+  for (size_t i = 0; i < s.size(); ++i) {
+    ASSERT_TRUE(at.moveTo(s.crankDeg[i]).ok());
+    Vec3 F, M;
+    shaking(at, F, M);
+    EXPECT_EQ(s.shaking3N[i], F);
+    EXPECT_EQ(s.shakingMoment3Nm[i], M);
+    EXPECT_EQ(s.shakingN[i], F.head<2>());
+    // joints 0 and 1: pins with point a on the ground (the force on the ground); 2: the rod.
+    frame = std::max(frame, (s.reaction3N[0][i] + s.reaction3N[1][i] - F).norm());
+    peak = std::max(peak, F.norm());
+    const Vec3 A = at.motionInSpace(*at.mechanism().findPoint("crank.A")).position,
+               C = at.motionInSpace(*at.mechanism().findPoint("rocker.C")).position;
+    const Vec3 pull = s.reaction3N[2][i];
+    rod = std::max(rod, pull.cross(C - A).norm() / (C - A).norm() +
+                            std::abs(pull.dot(C - A) / (C - A).norm() - s.axialOrCouple[2][i]));
+    EXPECT_TRUE(std::isnan(s.axialOrCouple[0][i]));
+  }
+  ASSERT_GT(peak, 1);
+  EXPECT_LT(frame, 1e-9 * peak);
+  EXPECT_LT(rod, 1e-9 * peak);
+  // The lockstitch machine's bevel pairs (joints 5 and 7): the couple, no tooth force.
+  ASSERT_TRUE(k.load(withMasses(test::example("lockstitch-bevel"), 2)).ok());
+  const ForceSamples b = sampleForces(k, 8);
+  ASSERT_TRUE(b.complete) << b.status.message;
+  for (int j : {5, 7})
+    for (size_t i = 0; i < b.size(); ++i) {
+      EXPECT_TRUE(std::isnan(b.reaction3N[j][i].x())) << j;
+      EXPECT_TRUE(std::isfinite(b.axialOrCouple[j][i])) << j;
+    }
+  // A planar machine's samples have nothing in space.
+  ASSERT_TRUE(k.load(test::example("slider-crank-22a-masses")).ok());
+  const ForceSamples p = sampleForces(k, 8);
+  EXPECT_FALSE(p.inSpace);
+  EXPECT_TRUE(p.shaking3N.empty() && p.reaction3N.empty());
 }
 
 }  // namespace

@@ -17,20 +17,32 @@ namespace {
 
 constexpr double kDeg = M_PI / 180;
 
-// The shaking force at one crank angle, and what each counterweight adds to it:
-// F = F0 + sum (A_k s_k + m_k g), A_k = 1e-3 (omega^2 I - alpha perp) R(theta) (N per kg mm) for
-// a point mass turning about a fixed pivot with its body, g its weight per kg (the shaking force
-// is sum m (g - a): a mass at rest on the frame adds m g).
+// The shaking force at one crank angle in the world, and what each counterweight adds to it:
+// F = F0 + sum (A_k s_k + m_k g), A_k = 1e-3 E_k (omega^2 I - alpha perp) R(theta) P_k (N per
+// kg mm) for a point mass turning about a fixed pivot with its body, g its weight per kg (the
+// shaking force is sum m (g - a): a mass at rest on the frame adds m g). The body turns in its
+// plane class's frame: P_k turns its plane's coordinates (where s_k is) into that frame, E_k
+// lifts that frame's x and y into the world (3 x 2: its axes); a planar machine's are I and
+// the drawing's (x, y, 0), so its A_k is the planar one with a row of zeros.
+using Lift = Eigen::Matrix<double, 3, 2>;
 struct Sample {
   double deg = 0;
-  Vec2 F0 = Vec2::Zero();
-  std::vector<Eigen::Matrix2d> A;
+  Vec3 F0 = Vec3::Zero();
+  std::vector<Lift> A;
 };
 
 // Where a peak is, and the force there.
 struct Peak {
   double value = 0, deg = 0;
-  Vec2 F = Vec2::Zero();
+  Vec3 F = Vec3::Zero();
+};
+
+// Each counterweight's body in the world: its class frame's axes and its plane's turn into them.
+struct Placing {
+  Lift E = Lift::Zero();
+  Eigen::Matrix2d P = Eigen::Matrix2d::Identity();
+  bool turned = false;  // P is not the identity
+  Vec3 normal = Vec3::UnitZ();
 };
 
 class Balancer {
@@ -43,23 +55,32 @@ class Balancer {
 
  private:
   bool pivots(BalanceResult& r);
+  bool refused(BalanceResult& r) const;
+  double forceScale() const;
+  void place();
   bool sampleAt(double deg, Sample& s, Status& status);
-  Vec2 force(const Sample& s, const std::vector<double>& x) const;
-  double measure(const Vec2& F) const;
-  // Every local maximum of the measure over the cycle for static moments x, refined; the
-  // highest first.
-  std::vector<Peak> peaks(const std::vector<double>& x, Status& status);
-  void addRows(ChebyshevLP& lp, const Sample& s, const Vec2& F);
+  Vec3 force(const Sample& s, const std::vector<double>& x) const;
+  // The measure of F; with `along`, |F . along| instead.
+  double measure(const Vec3& F, const Vec3* along = nullptr) const;
+  // Every local maximum of the measure (or of |F . along|) over the cycle for static moments
+  // x, refined; the highest first.
+  std::vector<Peak> peaks(const std::vector<double>& x, Status& status,
+                          const Vec3* along = nullptr);
+  void addRows(ChebyshevLP& lp, const Sample& s, const Vec3& F);
   void addTangent(ChebyshevLP& lp, int k, const Vec2& d);
   bool cutsAdded(ChebyshevLP& lp, const std::vector<double>& x);
   bool solve(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r);
   bool exchange(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r);
   void finish(std::vector<double>& x, BalanceResult& r);
+  void unreached(const std::vector<double>& x, BalanceResult& r);
 
   Kinematics work_;
   const BalanceOptions& opt_;
-  Vec2 g_ = Vec2::Zero();          // N per kg of counterweight: its weight on the frame
+  bool space_ = false;             // a machine in space: the force in 3D
+  Vec3 g_ = Vec3::Zero();          // N per kg of counterweight: its weight on the frame
+  bool weighs_ = false;            // the weight enters the measure (its part that counts)
   std::vector<double> maxRadius_;  // mm, each counterweight's R
+  std::vector<Placing> placing_;   // each counterweight's body in the world
   std::vector<Sample> samples_;
 };
 
@@ -120,49 +141,73 @@ bool Balancer::pivots(BalanceResult& r) {
   return true;
 }
 
+// Each counterweight's body's plane class in the world (a planar machine: the drawing's).
+void Balancer::place() {
+  const Mechanism& m = work_.mechanism();
+  const PlaneClasses pc = planeClasses(m);
+  for (BodyId b : opt_.bodies) {
+    const PlaneInClass& in = pc.of(m.body(b)->plane);
+    const Plane& f = pc.frames[in.cls];
+    Placing p;
+    p.E.col(0) = f.xAxis;
+    p.E.col(1) = f.yAxis;
+    p.normal = f.normal();
+    p.turned = !in.identity;
+    if (p.turned) p.P << in.rot.c, -in.rot.s, in.rot.s, in.rot.c;
+    placing_.push_back(p);
+  }
+}
+
 bool Balancer::sampleAt(double deg, Sample& s, Status& status) {
   if (status = work_.moveTo(deg); !status.ok()) return false;
-  double moment;
+  Vec3 moment;
   shaking(work_, s.F0, moment);
   s.deg = deg;
   s.A.clear();
-  for (BodyId b : opt_.bodies) {
+  for (size_t k = 0; k < opt_.bodies.size(); ++k) {
+    const BodyId b = opt_.bodies[k];
     const double w = work_.bodyOmega(b), al = work_.bodyAlpha(b);
     const Rot R = Rot::of(work_.bodyAngle(b));
     Eigen::Matrix2d M;
     M << w * w, al, -al, w * w;  // omega^2 I - alpha perp
     Eigen::Matrix2d Rm;
     Rm << R.c, -R.s, R.s, R.c;
-    s.A.push_back(1e-3 * M * Rm);
+    const Placing& p = placing_[k];
+    const Eigen::Matrix2d A = p.turned ? Eigen::Matrix2d(1e-3 * M * Rm * p.P) : 1e-3 * M * Rm;
+    s.A.push_back(p.E * A);
   }
   return s.F0.allFinite();
 }
 
-Vec2 Balancer::force(const Sample& s, const std::vector<double>& x) const {
-  Vec2 F = s.F0;
+Vec3 Balancer::force(const Sample& s, const std::vector<double>& x) const {
+  Vec3 F = s.F0;
   for (size_t k = 0; k < s.A.size(); ++k)
     F += s.A[k] * momentOf(x, static_cast<int>(k)) + x[kgOf(static_cast<int>(k))] * g_;
   return F;
 }
 
-double Balancer::measure(const Vec2& F) const {
+double Balancer::measure(const Vec3& F, const Vec3* along) const {
+  if (along) return std::abs(F.dot(*along));
   switch (opt_.measure) {
     case BalanceMeasure::Fx:
       return std::abs(F.x());
     case BalanceMeasure::Fy:
       return std::abs(F.y());
+    case BalanceMeasure::Fz:
+      return std::abs(F.z());
     case BalanceMeasure::Force:
       break;
   }
-  return F.norm();
+  // A planar machine's force in its plane (a gz's weight is along the normal, constant).
+  return space_ ? F.norm() : F.head<2>().norm();
 }
 
 // The samples' local maxima, each refined by Brent's method between its neighbours on the exact
 // motion.
-std::vector<Peak> Balancer::peaks(const std::vector<double>& x, Status& status) {
+std::vector<Peak> Balancer::peaks(const std::vector<double>& x, Status& status, const Vec3* along) {
   const int n = static_cast<int>(samples_.size());
   std::vector<double> v(n);
-  for (int i = 0; i < n; ++i) v[i] = measure(force(samples_[i], x));
+  for (int i = 0; i < n; ++i) v[i] = measure(force(samples_[i], x), along);
   std::vector<Peak> out;
   const double step = 360.0 / n;
   Sample s;
@@ -170,34 +215,48 @@ std::vector<Peak> Balancer::peaks(const std::vector<double>& x, Status& status) 
     const double prev = v[(i + n - 1) % n], next = v[(i + 1) % n];
     if (v[i] < prev || v[i] < next) continue;
     auto negative = [&](double deg) {
-      return sampleAt(deg, s, status) ? -measure(force(s, x)) : 0.0;
+      return sampleAt(deg, s, status) ? -measure(force(s, x), along) : 0.0;
     };
     double fmin = -v[i];
     const double deg =
         brent::minimum(negative, samples_[i].deg - step, samples_[i].deg + step, 1e-9, &fmin);
     if (!status.ok() || !sampleAt(deg, s, status)) return out;
-    out.push_back({measure(force(s, x)), deg, force(s, x)});
+    out.push_back({measure(force(s, x), along), deg, force(s, x)});
   }
   std::sort(out.begin(), out.end(), [](const Peak& a, const Peak& b) { return a.value > b.value; });
   return out;
 }
 
-// The rows a sample gives: its component either way, or |F| <= t along directions (8 evenly,
-// and F's own when given).
-void Balancer::addRows(ChebyshevLP& lp, const Sample& s, const Vec2& F) {
-  std::vector<Vec2> dirs;
-  if (opt_.measure == BalanceMeasure::Fx) dirs = {Vec2(1, 0), Vec2(-1, 0)};
-  if (opt_.measure == BalanceMeasure::Fy) dirs = {Vec2(0, 1), Vec2(0, -1)};
+// Unit directions e with e . F <= |F|: for |F| <= t, rows e . F <= t that contain the ball (the
+// programme stays a relaxation). In the plane 8 evenly; in space the 6 axes' and the 8 cube
+// corners' (the exchange adds F's own direction at each peak: a tangent of the ball there).
+std::vector<Vec3> startDirections(bool space) {
+  std::vector<Vec3> dirs;
+  if (!space) {
+    for (int j = 0; j < 8; ++j)
+      dirs.push_back(Vec3(std::cos(j * M_PI / 4), std::sin(j * M_PI / 4), 0));
+    return dirs;
+  }
+  for (int a = 0; a < 3; ++a)
+    for (double sign : {1.0, -1.0}) dirs.push_back(sign * Vec3::Unit(a));
+  for (int c = 0; c < 8; ++c)
+    dirs.push_back(Vec3(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1) / std::sqrt(3.0));
+  return dirs;
+}
+
+// The rows a sample gives: its component either way, or |F| <= t along directions (the start's,
+// or F's own when given: in the plane, its part in the plane).
+void Balancer::addRows(ChebyshevLP& lp, const Sample& s, const Vec3& F) {
+  std::vector<Vec3> dirs;
+  if (opt_.measure == BalanceMeasure::Fx) dirs = {Vec3(1, 0, 0), Vec3(-1, 0, 0)};
+  if (opt_.measure == BalanceMeasure::Fy) dirs = {Vec3(0, 1, 0), Vec3(0, -1, 0)};
+  if (opt_.measure == BalanceMeasure::Fz) dirs = {Vec3(0, 0, 1), Vec3(0, 0, -1)};
   if (opt_.measure == BalanceMeasure::Force) {
-    if (F.norm() > 0) {
-      dirs = {F.normalized()};
-    } else {
-      for (int j = 0; j < 8; ++j)
-        dirs.push_back(Vec2(std::cos(j * M_PI / 4), std::sin(j * M_PI / 4)));
-    }
+    const Vec3 own = space_ ? F : Vec3(F.x(), F.y(), 0);
+    dirs = own.norm() > 0 ? std::vector<Vec3>{own.normalized()} : startDirections(space_);
   }
   std::vector<double> c(kUnknowns * s.A.size());
-  for (const Vec2& e : dirs) {
+  for (const Vec3& e : dirs) {
     for (size_t k = 0; k < s.A.size(); ++k) {
       const Vec2 a = s.A[k].transpose() * e;
       const int i = static_cast<int>(k);
@@ -228,7 +287,7 @@ bool Balancer::cutsAdded(ChebyshevLP& lp, const std::vector<double>& x) {
       added = true;
     }
     // Without gravity the mass is set from the moment at the end: only the moment counts.
-    if (g_.norm() > 0 && s.norm() - maxRadius_[k] * x[kgOf(k)] > slack) {
+    if (weighs_ && s.norm() - maxRadius_[k] * x[kgOf(k)] > slack) {
       addTangent(lp, k, s.normalized());
       added = true;
     }
@@ -237,7 +296,9 @@ bool Balancer::cutsAdded(ChebyshevLP& lp, const std::vector<double>& x) {
 }
 
 // The programme's optimum, and of its solutions the lightest where the mass is free (the weight
-// across the measured component): a vertex's mass would be arbitrary.
+// across the measured component): a vertex's mass would be arbitrary. So in space, where a
+// counterweight may not reach the measured part at all (fx, and a counterweight turning in a
+// plane of normal x): its static moment would be arbitrary, and the lightest is none.
 bool Balancer::solve(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r) {
   double t = 0;
   if (!lp.solve(x, t)) {
@@ -245,7 +306,7 @@ bool Balancer::solve(ChebyshevLP& lp, std::vector<double>& x, BalanceResult& r) 
     return false;
   }
   r.lowerBound = t;
-  if (g_.norm() > 0) {
+  if (weighs_ || space_) {
     std::vector<double> w(x.size(), 0.0);
     for (int k = 0; k < static_cast<int>(opt_.bodies.size()); ++k) w[kgOf(k)] = 1;
     lp.solveLeast(w, t, x);
@@ -290,15 +351,13 @@ BalanceResult Balancer::run() {
                                                     : "the bound must be a number >= 0");
     return r;
   }
-  // A machine in space: its shaking force has a part along the planes' normals and its
-  // counterweights would turn in several planes; the balance is of planar machines.
-  if (std::string why = notInSpaceYet(work_.mechanism(), "counterweights"); !why.empty()) {
-    r.status = Status::badModel(why);
-    return r;
-  }
-  if (!pivots(r)) return r;
+  space_ = isSpatial(work_.mechanism());
+  if (refused(r) || !pivots(r)) return r;
   for (const Counterweight& c : r.counterweights) maxRadius_.push_back(c.maxRadiusMm);
-  g_ = work_.mechanism().gravity.value_or(Vec2::Zero());
+  place();
+  g_ = work_.mechanism().gravityWorld();
+  // A planar machine's measures are in its plane: the weight along its normal (a gz) is not.
+  weighs_ = (space_ ? g_ : Vec3(g_.x(), g_.y(), 0)).norm() > 0;
   samples_.resize(opt_.steps);
   for (int i = 0; i < opt_.steps; ++i)
     if (!sampleAt(360.0 * i / opt_.steps, samples_[i], r.status)) return r;
@@ -308,6 +367,13 @@ BalanceResult Balancer::run() {
   if (!r.status.ok() || before.empty()) return r;
   r.peakBefore = before[0].value;
   r.peakBeforeDeg = before[0].deg;
+  if (!(r.peakBefore > 1e-12 * forceScale())) {
+    // Nothing shakes (no mass, or none whose centre moves: rounding next to what the masses
+    // could do): no counterweight is the answer, and no gap relative to nothing would close.
+    r.peakBefore = r.peakAfter = 0;
+    unreached(x, r);
+    return r;
+  }
   ChebyshevLP lp(kUnknowns * n);
   // The first programme on at most 360 of the samples: the exchange adds every peak above its
   // optimum (the samples' local maxima, refined on the exact motion) until none is left, so the
@@ -315,7 +381,7 @@ BalanceResult Balancer::run() {
   // thousands (3,600 samples: 7,200 rows for fx, most of the time).
   const int stride = std::max(1, opt_.steps / 360);
   for (int i = 0; i < opt_.steps; i += stride)
-    addRows(lp, samples_[i], opt_.measure == BalanceMeasure::Force ? Vec2::Zero() : samples_[i].F0);
+    addRows(lp, samples_[i], opt_.measure == BalanceMeasure::Force ? Vec3::Zero() : samples_[i].F0);
   for (int k = 0; k < n; ++k) {
     lp.setLowerBound(kgOf(k), 0);
     for (int j = 0; j < 16; ++j) {
@@ -339,7 +405,7 @@ void Balancer::finish(std::vector<double>& x, BalanceResult& r) {
     if (opt_.maxKgMm && s.norm() > *opt_.maxKgMm) s *= *opt_.maxKgMm / s.norm();
     // Without gravity the mass does not enter: the lightest, at the farthest radius.
     const double least = s.norm() / maxRadius_[k];
-    double kg = g_.norm() > 0 ? std::max(x[kgOf(k)], least) : least;
+    double kg = weighs_ ? std::max(x[kgOf(k)], least) : least;
     x[sx(k)] = s.x();
     x[sx(k) + 1] = s.y();
     x[kgOf(k)] = kg;
@@ -350,6 +416,60 @@ void Balancer::finish(std::vector<double>& x, BalanceResult& r) {
   if (!r.status.ok() || found.empty()) return;
   r.peakAfter = found[0].value;
   r.peakAfterDeg = found[0].deg;
+  unreached(x, r);
+}
+
+// What the masses and loads could shake the frame with (N): each moving mass's weight and its
+// inertia turning at the driver's speed at the mechanism's size, and the loads' forces.
+double Balancer::forceScale() const {
+  const Mechanism& m = work_.mechanism();
+  const double w = work_.omega(), reach = g_.norm() + w * w * work_.size() / 1000;
+  double scale = 0;
+  for (const Body& b : m.bodies)
+    if (!b.ground && b.mass) scale += b.mass->kg * reach;
+  for (const Load& l : m.loads) scale += l.forceN.norm();
+  return scale;
+}
+
+// A planar machine's fz: the weight along the drawing's normal, constant, which no counterweight
+// turning in the plane changes but by its own weight: nothing to balance.
+bool Balancer::refused(BalanceResult& r) const {
+  if (space_ || opt_.measure != BalanceMeasure::Fz) return false;
+  r.status = Status::badModel(
+      "fz is the shaking force along the drawing's normal: a planar machine has none but the "
+      "weight along it (gravity's z), constant, which no counterweight turning in the plane "
+      "lowers");
+  return true;
+}
+
+// Every counterweight turns in its body's plane: where those planes are all parallel, the
+// shaking force along their normal is beyond the counterweights' turning (only their weight
+// reaches it, one way). Its peak before and as the counterweights leave it.
+void Balancer::unreached(const std::vector<double>& x, BalanceResult& r) {
+  const Vec3 n = placing_[0].normal;
+  for (const Placing& p : placing_)
+    if (p.normal.cross(n).norm() > 1e-9) return;  // planes that span space: all within reach
+  r.unreached = n;
+  // A constant |F . n| (a planar machine's weight along its normal, or none) is read off the
+  // samples: every one of them would be a local maximum to refine.
+  auto peakAlong = [&](const std::vector<double>& at, Peak& out) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const Sample& s : samples_) {
+      const double v = measure(force(s, at), &n);
+      lo = std::min(lo, v);
+      if (v > hi) hi = v, out = {v, s.deg, force(s, at)};
+    }
+    if (hi - lo <= 1e-12 * std::max(hi, r.peakBefore)) return true;
+    const std::vector<Peak> found = peaks(at, r.status, &n);
+    if (!r.status.ok() || found.empty()) return false;
+    out = found[0];
+    return true;
+  };
+  Peak after, before;
+  if (!peakAlong(x, after) || !peakAlong(std::vector<double>(x.size(), 0.0), before)) return;
+  r.unreachedPeak = after.value;
+  r.unreachedPeakDeg = after.deg;
+  r.unreachedPeakBefore = before.value;
 }
 
 BalanceResult balanceShaking(const Kinematics& k, const BalanceOptions& opt) {

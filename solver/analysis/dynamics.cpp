@@ -57,7 +57,8 @@ struct ForceSolver::Impl {
   };
   std::vector<Coupling> coupling;  // the joints' Angles rows on the body of their point a
   std::vector<int> restated;       // the joints whose kinds restate their reactions
-  Vec2 gravity = Vec2::Zero();     // m/s^2
+  Vec2 gravity = Vec2::Zero();     // m/s^2, in the plane (a planar machine)
+  double gravityZ = 0;             // m/s^2, along the drawing's normal (a planar machine)
   bool grouped = false;
   std::vector<char> rowDetermined;  // by scalar row
   std::vector<BodyView> views;
@@ -104,7 +105,8 @@ void ForceSolver::Impl::bodies(const KinematicsState& s) {
     }
   }
   gravity = s.mech.gravity.value_or(Vec2::Zero());
-  space.prepare(s.mech, sys, mass, gravity);
+  gravityZ = s.mech.gravityZ.value_or(0);
+  space.prepare(s.mech, sys, mass, s.mech.gravityWorld());
 }
 
 // What the reactions read, listed once (shaking() needs none of it).
@@ -177,8 +179,19 @@ void ForceSolver::Impl::shakingOf(const System& sys, Forces& out) const {
   }
   out.shakingForceN = force;
   out.shakingMomentNm = moment / 1000;
-  out.shakingForce3N = Vec3(force.x(), force.y(), 0);
-  out.shakingMoment3Nm = Vec3(0, 0, out.shakingMomentNm);
+  // Gravity's z is along the drawing's normal: the weights along it change no force in the
+  // plane, and the frame bears them (at the centres of mass, z 0) out of it.
+  Vec3 tilt = Vec3::Zero();
+  double fz = 0;
+  for (int k = 0; k < sys.nBodies && gravityZ != 0; ++k) {
+    if (!mass[k]) continue;
+    const Vec2 c = views[k + 1].r + views[k + 1].R * mass[k]->c;
+    const double w = mass[k]->kg * gravityZ;
+    fz += w;
+    tilt += Vec3(c.x(), c.y(), 0).cross(Vec3(0, 0, w));
+  }
+  out.shakingForce3N = Vec3(force.x(), force.y(), fz);
+  out.shakingMoment3Nm = tilt / 1000 + Vec3(0, 0, out.shakingMomentNm);
 }
 
 // On the general path the kinematics factored J at this very pose for its velocities: J^T lambda
@@ -436,8 +449,14 @@ Forces computeForces(const Kinematics& k) {
 }
 
 void shaking(const Kinematics& k, Vec2& forceN, double& momentNm) {
-  forceN = Vec2::Constant(kNaN);
-  momentNm = kNaN;
+  Vec3 force, moment;
+  shaking(k, force, moment);
+  forceN = force.head<2>();
+  momentNm = moment.z();
+}
+
+void shaking(const Kinematics& k, Vec3& forceN, Vec3& momentNm) {
+  forceN = momentNm = Vec3::Constant(kNaN);
   if (!k.valid() || !k.derivativesValid()) return;
   const KinematicsState& s = internal::state(k);
   ForceSolver::Impl d;
@@ -446,8 +465,8 @@ void shaking(const Kinematics& k, Vec2& forceN, double& momentNm) {
   d.appliedAndInertia(s, k.omega(), k.crankDeg());
   Forces out;
   d.shakingOf(s.sys, out);
-  forceN = out.shakingForceN;
-  momentNm = out.shakingMomentNm;
+  forceN = out.shakingForce3N;
+  momentNm = out.shakingMoment3Nm;
 }
 
 }  // namespace linkage

@@ -29,7 +29,7 @@ double depthOn(const Mechanism& m, const System& sys, const Joint& j, int k, dou
 }  // namespace
 
 void SpaceForces::prepare(const Mechanism& m, const System& sys,
-                          const std::vector<std::optional<BodyMass>>& mass, Vec2 gravity) {
+                          const std::vector<std::optional<BodyMass>>& mass, const Vec3& g) {
   on_ = isSpatial(m);
   unsupported_.clear();
   if (!on_) return;
@@ -38,7 +38,6 @@ void SpaceForces::prepare(const Mechanism& m, const System& sys,
   placing_.assign(n, PlaneInClass{});
   gravityIn_.assign(n, Vec2::Zero());
   gravityOut_.assign(n, 0.0);
-  const Vec3 g(gravity.x(), gravity.y(), 0);  // the file's gravity: the world's x and y
   for (int k = 0; k < n; ++k) {
     placing_[k] = pc.of(m.body(sys.bodyIds[k])->plane);
     const Plane& f = sys.frames[sys.classOf[k]];

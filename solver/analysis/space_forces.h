@@ -4,7 +4,8 @@
 // Every body moves in its plane, so its in-plane dynamics are the planar ones in its plane
 // class's frame: its mass, centre of mass (mapped from its plane into the class frame) and
 // moment of inertia about the normal as in the plane; gravity's component in the class frame
-// acts on it, and a load in its plane turned into that frame. The ball rod's row (distance3.h)
+// (the world's gravity, up to three components) acts on it, and a load in its plane turned into
+// that frame. The ball rod's row (distance3.h)
 // enters J^T lambda = Q as any row does; its multiplier is the rod's tension:
 //
 //   Phi = (D . D - l^2) / (2 l),  grad_i Phi = D / l (end i),  -grad_j Phi (end j)
@@ -43,8 +44,9 @@ class SpaceForces {
   };
 
   // Whether the machine is in space; then the mapping of every body, its gravity and bearing.
+  // gravity: the world's (m/s^2), three components.
   void prepare(const Mechanism& m, const System& sys,
-               const std::vector<std::optional<BodyMass>>& mass, Vec2 gravity);
+               const std::vector<std::optional<BodyMass>>& mass, const Vec3& gravity);
   bool on() const { return on_; }
   const PlaneInClass& placing(int body) const { return placing_[body]; }
   Vec2 gravityIn(int body) const { return gravityIn_[body]; }

@@ -57,8 +57,12 @@ Mass readMass(const Json& v, const std::string& path) {
   return m;
 }
 
-Vec2 readGravity(const Json& v, const std::string& path) {
-  return finitePair(v, path);
+Vec2 readGravity(const Json& v, const std::string& path, std::optional<double>& z) {
+  const std::optional<Vec2> g = asPoint(v, z);
+  if (!g)
+    refuse(path,
+           "expected [gx, gy] or [gx, gy, gz] with finite numbers (m/s^2), got " + describe(v));
+  return *g;
 }
 
 void readLoads(const Json& v, const std::string& path, Mechanism& m, const PointRef& point,

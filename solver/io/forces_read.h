@@ -10,7 +10,8 @@
 namespace linkage::json_read {
 
 Mass readMass(const Json& v, const std::string& path);
-Vec2 readGravity(const Json& v, const std::string& path);
+// [gx, gy] or [gx, gy, gz] (the world's, m/s^2): its x and y, and its z to `z` when written.
+Vec2 readGravity(const Json& v, const std::string& path, std::optional<double>& z);
 // "body.point" and body names resolved by the reader that knows them.
 using PointRef = std::function<PointId(const Json&, const std::string&)>;
 using BodyRef = std::function<BodyId(const Json&, const std::string&)>;

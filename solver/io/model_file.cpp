@@ -46,7 +46,7 @@ class Reader {
     if (std::string why = checkJoints(m_); !why.empty()) throw Refusal{why};
     if (const Json* d = find(root, "driver")) readDriver(*d);
     if (const Json* o = find(root, "outputs")) readOutputs(*o);
-    if (const Json* g = find(root, "gravity")) m_.gravity = readGravity(*g, "gravity");
+    if (const Json* g = find(root, "gravity")) m_.gravity = readGravity(*g, "gravity", m_.gravityZ);
     if (const Json* l = find(root, "loads"))
       readLoads(
           *l, "loads", m_,

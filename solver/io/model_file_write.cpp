@@ -337,7 +337,7 @@ std::string serializeMechanism(const Mechanism& m) {
   outputs["points"] = std::move(points);
   appendExtras(outputs, m.outputsExtras, {"points"});
   if (!m.outputs.empty() || outputs.size() > 1) doc["outputs"] = std::move(outputs);
-  if (m.gravity) doc["gravity"] = pair(*m.gravity);
+  if (m.gravity) doc["gravity"] = coordinates(*m.gravity, m.gravityZ);
   if (!m.loads.empty()) {
     Json loads = Json::array();
     for (const Load& l : m.loads) loads.push_back(loadJson(labels, l));
@@ -441,7 +441,7 @@ std::string compareForces(const Mechanism& a, const Mechanism& b) {
   for (size_t i = 0; i < a.bodies.size(); ++i)
     if (a.bodies[i].mass != b.bodies[i].mass)
       return "bodies[" + std::to_string(i) + "].mass differs";
-  if (a.gravity != b.gravity) return "gravity differs";
+  if (a.gravity != b.gravity || a.gravityZ != b.gravityZ) return "gravity differs";
   if (a.loads.size() != b.loads.size()) return "loads: different lengths";
   for (size_t i = 0; i < a.loads.size(); ++i) {
     const Load &x = a.loads[i], &y = b.loads[i];

@@ -17,6 +17,7 @@
 #include "linkage/io/model_lookup.h"
 #include "linkage/io/numbers.h"
 #include "mechanisms.h"
+#include "spatial_fixtures.h"
 #include "ui_test.h"
 
 namespace linkage::ui {
@@ -143,6 +144,48 @@ TEST_F(BalanceDialogTest, ACrankThatCannotTurnIsASentence) {
   EXPECT_TRUE(d.message().startsWith("No balance: ")) << d.message();
   EXPECT_FALSE(d.applyButton()->isEnabled());
   EXPECT_EQ(d.table()->rowCount(), 0);
+}
+
+// Issue 27: a machine in space. Two cranks on crossed shafts (tests/spatial_fixtures.h), the
+// counterweight on the first: the optimum leaves the second's force along z, K = m2 r2 w^2 (the
+// hand derivation in tests/test_spatial_balance.cpp); the dialog says what no counterweight
+// reaches, along the world's z, with its peak, and its curves are |F| in 3D: the balanced
+// design's largest is K.
+TEST(BalanceDialogSpace, SaysWhatTheCounterweightsCannotReachAndDrawsTheForceIn3D) {
+  Document doc;
+  const LoadResult read = parseMechanism(test::crossed_cranks::text());
+  ASSERT_TRUE(read.mechanism) << read.error;
+  doc.setContents(*read.mechanism, "", "crossed");
+  BalanceDialog d(&doc);
+  const Mechanism& m = doc.design();
+  ASSERT_EQ(d.offeredBodies(),
+            (std::vector<BodyId>{m.bodyNamed("one")->id, m.bodyNamed("two")->id}));
+  ASSERT_TRUE(d.compute()) << d.message();  // |F| on the driven crank, the defaults
+  const double w = 20 * M_PI, K = 0.2 * 15 * w * w / 1000;
+  const BalanceResult& r = *d.result();
+  EXPECT_NEAR(r.peakAfter, K, 1e-9 * r.peakBefore);
+  EXPECT_TRUE(d.summary().contains(
+      "Beyond their reach, along (0, 0, 1), the normal of their "
+      "planes: peak " +
+      QString::number(K, 'g', 5) + " N (before " + QString::number(K, 'g', 5) + " N)"))
+      << d.summary().toStdString();
+  QCPGraph* after = nullptr;
+  for (int i = 0; i < d.plotWidget()->graphCount(); ++i)
+    if (d.plotWidget()->graph(i)->name() == "after") after = d.plotWidget()->graph(i);
+  ASSERT_TRUE(after);
+  double drawn = 0;
+  for (auto it = after->data()->constBegin(); it != after->data()->constEnd(); ++it)
+    drawn = std::max(drawn, it->value);
+  EXPECT_NEAR(drawn, K, 1e-6 * K);
+  d.resize(1150, 640);
+  d.show();
+  QTest::qWait(20);
+  shot(&d, "balance-dialog-space");
+  // Both cranks: their planes span space, and the summary says so.
+  d.setBodyChecked(m.bodyNamed("two")->id, true);
+  ASSERT_TRUE(d.compute()) << d.message();
+  EXPECT_LT(d.result()->peakAfter, 1e-9 * d.result()->peakBefore);
+  EXPECT_TRUE(d.summary().contains("not all parallel")) << d.summary().toStdString();
 }
 
 // Issue 26: under gravity the headline said "after 8.2986 N (5.0 % lower)" for the Wanzer with

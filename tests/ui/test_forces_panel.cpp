@@ -19,7 +19,9 @@
 #include "forces/force_figure.h"
 #include "forces/forces_panel.h"
 #include "linkage/force_samples.h"
+#include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
+#include "linkage/space.h"
 #include "linkage/tables/force_table.h"
 #include "mechanisms.h"
 #include "ui_test.h"
@@ -289,6 +291,100 @@ TEST_F(ForcesPanelTest, HugeForcesReadAsTheyAreNeverAsZero) {
   for (const char* word : {"inf", "nan"})
     EXPECT_FALSE(panel.message().contains(word, Qt::CaseInsensitive)) << panel.message();
   shot(&panel, "forces-panel-overflow");
+}
+
+// Masses on every moving body of an example in space, each centre of mass off its points (so
+// that everything shakes).
+Mechanism withMassesInSpace(const char* name) {
+  Mechanism m = *loadMechanismFile(*resolveModel(name)).mechanism;
+  double kg = 0.05;
+  for (Body& b : m.bodies) {
+    if (b.ground) continue;
+    Vec2 c = Vec2::Zero();
+    int n = 0;
+    for (const Point& p : m.points)
+      if (p.body == b.id) c += p.pos, ++n;
+    b.mass = Mass{kg += 0.02, c / std::max(n, 1) + Vec2(1.5, -0.7), 20, {}, {}};
+  }
+  m.gravity = Vec2(0, 0);
+  m.gravityZ = -9.81;
+  return m;
+}
+
+// Issue 27: on a machine in space the plots draw what `linkage-cli dynamics` writes, in the
+// world's axes: the shaking force's x, y and z; a bearing's force, its class frame's fx and fy
+// and what it bears along the normal (fn) lifted by the plane's axes here, from the solver's
+// reaction at each sample; a ball rod's tension; a bevel pair's couple (its tooth force is not
+// computed). The titles and the values at the pose say "world axes".
+TEST_F(ForcesPanelTest, AMachineInSpacePlotsTheWorldsForces) {
+  doc.setContents(withMassesInSpace("rssr-crank-rocker"), "", "rssr");
+  showAndSettle();
+  const ForceSamples* s = panel.samples();
+  ASSERT_TRUE(s) << panel.message();
+  ASSERT_TRUE(s->inSpace);
+  const ForceFigure& f = panel.figure();
+  ASSERT_TRUE(f.curve(ForceFigure::ShakingZ));
+  // The rocker's bearing, pin:ground.H: in the rocker's plane (its x and y axes, normal x x y).
+  const Plane& p = *planeNamed(doc.design(), "rocker");
+  panel.setJoint(1);
+  ASSERT_TRUE(f.curve(ForceFigure::ReactionZ));
+  Kinematics k = doc.kinematics();
+  k.setAccelerations(true);
+  ForceSolver solver;
+  ASSERT_TRUE(solver.prepare(k).ok());
+  double peak = 0, worst = 0;
+  for (int i : {0, 37, 90, 181, 300, 360}) {
+    SCOPED_TRACE(i);
+    ASSERT_TRUE(k.moveTo(s->crankDeg[i]).ok());
+    const Forces& r = solver.compute(k);
+    // (The sweep reaches each angle from the one before, this solver straight: rounding apart.)
+    const Vec3 shaking(at(f.curve(ForceFigure::ShakingX), i), at(f.curve(ForceFigure::ShakingY), i),
+                       at(f.curve(ForceFigure::ShakingZ), i));
+    EXPECT_LT((shaking - r.shakingForce3N).norm(), 1e-12 * r.shakingForce3N.norm());
+    const JointReaction& h = r.joints[1];
+    const Vec3 w = h.force.x() * p.xAxis + h.force.y() * p.yAxis + h.normalN * p.normal();
+    const Vec3 drawn(at(f.curve(ForceFigure::ReactionX), i), at(f.curve(ForceFigure::ReactionY), i),
+                     at(f.curve(ForceFigure::ReactionZ), i));
+    worst = std::max(worst, (drawn - w).norm());
+    peak = std::max(peak, w.norm());
+    EXPECT_NEAR(at(f.curve(ForceFigure::ReactionNorm), i), w.norm(), 1e-11 * w.norm());
+  }
+  ASSERT_GT(peak, 0.01);
+  EXPECT_LT(worst, 1e-11 * peak);
+  auto titled = [&](const QString& text) {
+    for (QCPLayoutElement* e : panel.plotWidget()->plotLayout()->elements(true))
+      if (auto* t = qobject_cast<QCPTextElement*>(e); t && t->text() == text) return true;
+    return false;
+  };
+  EXPECT_TRUE(titled("Shaking force, world axes"));
+  EXPECT_TRUE(titled("Reaction pin:ground.H (on ground), world axes"));
+  ASSERT_TRUE(doc.setCrankDeg(40).ok());
+  EXPECT_TRUE(panel.cursorText().startsWith("At 40.0°, world axes: torque")) << panel.cursorText();
+  EXPECT_TRUE(panel.cursorText().contains("about its plane's x and y")) << panel.cursorText();
+  shot(&panel, "forces-panel-space-bearing");
+  // The rod: its tension, the solver's multiplier.
+  panel.setJoint(2);
+  EXPECT_TRUE(titled("Tension of ball-rod:crank.A"));
+  ASSERT_TRUE(f.curve(ForceFigure::ReactionScalar));
+  EXPECT_FALSE(f.curve(ForceFigure::ReactionX));
+  for (int i : {0, 90, 270}) {
+    ASSERT_TRUE(k.moveTo(s->crankDeg[i]).ok());
+    const double T = solver.compute(k).joints[2].axialN;
+    EXPECT_NEAR(at(f.curve(ForceFigure::ReactionScalar), i), T, 1e-11 * std::abs(T));
+  }
+  EXPECT_TRUE(panel.cursorText().contains("; ball-rod:crank.A tension ")) << panel.cursorText();
+  shot(&panel, "forces-panel-space-rod");
+  // A bevel pair: the couple on a's shaft about its axis.
+  doc.setContents(withMassesInSpace("lockstitch-bevel"), "", "bevel");
+  settle();
+  ASSERT_TRUE(panel.samples()) << panel.message();
+  panel.setJoint(5);
+  EXPECT_TRUE(titled("Couple gear:armshaft.O (on armshaft)"));
+  ASSERT_TRUE(f.curve(ForceFigure::ReactionScalar));
+  EXPECT_EQ(f.rect(ForceFigure::Reaction)->axis(QCPAxis::atLeft)->label(), "Couple [N m]");
+  EXPECT_EQ(at(f.curve(ForceFigure::ReactionScalar), 10), panel.samples()->axialOrCouple[5][10]);
+  EXPECT_TRUE(std::isfinite(at(f.curve(ForceFigure::ReactionScalar), 10)));
+  shot(&panel, "forces-panel-space-bevel");
 }
 
 // Issue 26: at the window's first layout (1280 x 800) the Forces dock drew its four plots two

@@ -25,6 +25,7 @@
 #include "forces/force_plots.h"
 #include "linkage/elements.h"
 #include "linkage/force_samples.h"
+#include "linkage/space.h"
 
 namespace linkage::ui {
 
@@ -90,6 +91,7 @@ QWidget* BalanceDialog::buildChoices() {
   measure_->addItem(tr("|shaking force|"), int(BalanceMeasure::Force));
   measure_->addItem(tr("shaking fx"), int(BalanceMeasure::Fx));
   measure_->addItem(tr("shaking fy"), int(BalanceMeasure::Fy));
+  measure_->addItem(tr("shaking fz (in space)"), int(BalanceMeasure::Fz));
   measure_->setToolTip(tr("The peak over the whole cycle of this is made as small as it can be"));
   form->addRow(tr("&Minimise the peak of"), measure_);
   auto* boundRow = new QHBoxLayout;
@@ -260,10 +262,16 @@ BalanceCurves curvesOf(const Kinematics& k, const BalanceResult& r) {
   if (!balanced.edit(m).ok()) return c;
   const ForceSamples after = sampleForces(balanced);
   const size_t n = std::min(before.size(), after.size());
+  // In space the world's force in 3D; a planar machine's in its plane (a gz's weight is not in
+  // the balance's measures).
+  c.space = before.inSpace;
+  auto world = [&](const ForceSamples& s, size_t i) {
+    return c.space ? s.shaking3N[i] : Vec3(s.shakingN[i].x(), s.shakingN[i].y(), 0);
+  };
   for (size_t i = 0; i < n; ++i) {
     c.crankDeg.push_back(before.crankDeg[i]);
-    c.before.push_back(before.shakingN[i]);
-    c.after.push_back(after.shakingN[i]);
+    c.before.push_back(world(before, i));
+    c.after.push_back(world(after, i));
   }
   return c;
 }
@@ -346,11 +354,30 @@ QString BalanceDialog::headline(const BalanceResult& r) const {
   const bool weighs = doc_->design().gravity.has_value();
   return tr("Peak of %1 before: <b>%2 N</b> at %3°<br>after, applied%4: %5<br>Certified gap %6 "
             "N: no counterweights%7 do better than %8 N.")
-      .arg(what, number(r.peakBefore), QString::number(r.peakBeforeDeg, 'f', 2),
-           weighs ? tr(" (their weight included)") : QString(), after,
-           number(std::max(0.0, r.gap()), 2),
-           bounded_->isChecked() ? tr(" within the bounds") : QString(),
-           number(cleaned(r.lowerBound, r.peakBefore)));
+             .arg(what, number(r.peakBefore), QString::number(r.peakBeforeDeg, 'f', 2),
+                  weighs ? tr(" (their weight included)") : QString(), after,
+                  number(std::max(0.0, r.gap()), 2),
+                  bounded_->isChecked() ? tr(" within the bounds") : QString(),
+                  number(cleaned(r.lowerBound, r.peakBefore))) +
+         leftOut(r);
+}
+
+// What the counterweights cannot reach (docs/balancing.md, "Machines in space"): on a machine in
+// space the force along the normal of their planes when these are parallel; on a planar one the
+// weight along the drawing's normal, when gravity has a z.
+QString BalanceDialog::leftOut(const BalanceResult& r) const {
+  const bool space = isSpatial(doc_->design());
+  if (space && !r.unreached)
+    return tr(
+        "<br>Their planes are not all parallel: every direction of the shaking force is "
+        "within their reach.");
+  if (!r.unreached || (!space && r.unreachedPeak == 0 && r.unreachedPeakBefore == 0)) return {};
+  const Vec3& n = *r.unreached;
+  return tr("<br>Beyond their reach, along (%1, %2, %3), the normal of their planes: peak %4 N "
+            "(before %5 N).")
+      .arg(number(cleaned(n.x(), 1), 4), number(cleaned(n.y(), 1), 4), number(cleaned(n.z(), 1), 4),
+           number(cleaned(r.unreachedPeak, r.peakBefore)),
+           number(cleaned(r.unreachedPeakBefore, r.peakBefore)));
 }
 
 bool BalanceDialog::apply() {

@@ -1,12 +1,15 @@
 // Forces > Balance: counterweights that minimise the peak of the shaking force over the cycle
 // (linkage/balance.h: exact, with a certified gap). The user picks the bodies pinned to the
-// ground that take one, the measure (fx, fy or |F|), an optional bound on each |s| (kg mm) and
-// the samples of the first programme; Compute runs balanceShaking (tens of milliseconds) and
+// ground that take one, the measure (fx, fy, fz in space, or |F|), an optional bound on each
+// |s| (kg mm) and the samples of the first programme; Compute runs balanceShaking (tens of
+// milliseconds) and
 // shows the counterweights (static moment, mass, radius, angle), the peak before and after with
 // their crank angles, the gap, and the shaking force before and after (curves and polar
 // diagrams), after as Apply leaves it: under gravity with the counterweights' weight, which the
 // balance minimises with the rest. Apply adds the counterweights to the bodies' masses
-// (addCounterweights) as one undoable edit; it is offered only when the peak goes down.
+// (addCounterweights) as one undoable edit; it is offered only when the peak goes down. A
+// machine in space: the world's force, and what the counterweights cannot reach said with its
+// peak.
 #pragma once
 
 #include <QDialog>
@@ -64,6 +67,7 @@ class BalanceDialog : public QDialog {
   void offerBodies();
   void showResult();
   QString headline(const BalanceResult& r) const;
+  QString leftOut(const BalanceResult& r) const;
   void forget(const QString& why);
   void say(const QString& text, bool error);
 

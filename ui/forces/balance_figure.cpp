@@ -9,17 +9,28 @@ namespace linkage::ui {
 
 namespace {
 
-std::vector<double> measured(const std::vector<Vec2>& f, BalanceMeasure m) {
+std::vector<double> measured(const std::vector<Vec3>& f, BalanceMeasure m) {
   std::vector<double> v;
   v.reserve(f.size());
-  for (const Vec2& x : f)
-    v.push_back(m == BalanceMeasure::Fx ? x.x() : m == BalanceMeasure::Fy ? x.y() : x.norm());
+  for (const Vec3& x : f)
+    v.push_back(m == BalanceMeasure::Fx   ? x.x()
+                : m == BalanceMeasure::Fy ? x.y()
+                : m == BalanceMeasure::Fz ? x.z()
+                                          : x.norm());
+  return v;
+}
+
+std::vector<Vec2> inPlane(const std::vector<Vec3>& f) {
+  std::vector<Vec2> v;
+  v.reserve(f.size());
+  for (const Vec3& x : f) v.push_back(x.head<2>());
   return v;
 }
 
 QString measureLabel(BalanceMeasure m) {
   return m == BalanceMeasure::Fx   ? "Shaking fx [N]"
          : m == BalanceMeasure::Fy ? "Shaking fy [N]"
+         : m == BalanceMeasure::Fz ? "Shaking fz [N]"
                                    : "Shaking |F| [N]";
 }
 
@@ -29,15 +40,17 @@ struct Plots {
 };
 
 // Two plots side by side under their titles: the measure, the polar diagram.
-Plots layOut(QCustomPlot* plot, const QString& crankLabel, BalanceMeasure m) {
+Plots layOut(QCustomPlot* plot, const QString& crankLabel, BalanceMeasure m, bool space) {
   plot->clearItems();
   plot->clearPlottables();
   plot->plotLayout()->clear();
   plot->setAutoAddPlottableToLegend(false);
   plot->plotLayout()->setRowSpacing(0);
   plot->plotLayout()->setColumnSpacing(10);
-  addTitle(plot->plotLayout(), 0, 0, "Shaking force, before and after");
-  addTitle(plot->plotLayout(), 0, 1, "Polar diagrams");
+  addTitle(
+      plot->plotLayout(), 0, 0,
+      space ? "Shaking force (world axes), before and after" : "Shaking force, before and after");
+  addTitle(plot->plotLayout(), 0, 1, space ? "Polar diagrams, world x and y" : "Polar diagrams");
   QCPAxisRect* curve = addCrankRect(plot, crankLabel, measureLabel(m));
   QCPAxisRect* polar = addPolarRect(plot);
   QCPLayoutGrid* cell = addPlotCell(plot->plotLayout(), 1, 0, curve);
@@ -64,14 +77,14 @@ void replotEqual(QCustomPlot* plot, QCPAxisRect* polar) {
 }  // namespace
 
 void drawNoBalance(QCustomPlot* plot, const QString& crankLabel, const QString& note) {
-  auto [curve, polar, cell] = layOut(plot, crankLabel, BalanceMeasure::Force);
+  auto [curve, polar, cell] = layOut(plot, crankLabel, BalanceMeasure::Force, false);
   addRectNote(curve, note);
   replotEqual(plot, polar);
 }
 
 void drawBalance(QCustomPlot* plot, const BalanceCurves& c, BalanceMeasure m,
                  const BalanceResult& r, const QString& crankLabel) {
-  auto [curve, polar, cell] = layOut(plot, crankLabel, m);
+  auto [curve, polar, cell] = layOut(plot, crankLabel, m, c.space);
   QCPGraph* before = addCurve(curve, c.crankDeg, measured(c.before, m), forceColours::kBefore,
                               "before", Qt::SolidLine);
   QCPGraph* after =
@@ -89,8 +102,8 @@ void drawBalance(QCustomPlot* plot, const BalanceCurves& c, BalanceMeasure m,
   }
   fitValues(curve, 1e-3 * r.peakBefore);
   addLegend(curve, legend, cell);
-  QCPCurve* pb = addPolarCurve(polar, c.before, forceColours::kBefore, "before");
-  QCPCurve* pa = addPolarCurve(polar, c.after, forceColours::kAfter, "after", 2);
+  QCPCurve* pb = addPolarCurve(polar, inPlane(c.before), forceColours::kBefore, "before");
+  QCPCurve* pa = addPolarCurve(polar, inPlane(c.after), forceColours::kAfter, "after", 2);
   // The legend where the diagrams leave room (fitEqualScales centres them when drawn).
   QCPRange x, y;
   polarBox(polar, x, y);

@@ -17,7 +17,7 @@ QString number(double v) {
 }
 
 bool hasForces(const Mechanism& m) {
-  if (!m.loads.empty() || (m.gravity && m.gravity->squaredNorm() > 0)) return true;
+  if (!m.loads.empty() || m.gravityWorld().squaredNorm() > 0) return true;
   for (const Body& b : m.bodies)
     if (!b.ground && b.mass && b.mass->kg > 0) return true;
   return false;
@@ -79,7 +79,8 @@ void addReactions(Document& doc, double mmPerN, DynamicsMarks& out) {
     // body's plane class: arrows in one plane would show a part of them in the wrong place.
     out.legend = QStringLiteral(
                      "Reactions not drawn on a machine in space (linkage-cli dynamics writes them "
-                     "in 3D); driver torque %1 N\u00b7m at %2 rpm")
+                     "in 3D, the Forces dock plots them in the world's axes); driver torque %1 "
+                     "N\u00b7m at %2 rpm")
                      .arg(number(f.driverTorqueNm), QString::number(doc.kinematics().rpm()));
     return;
   }
@@ -102,6 +103,7 @@ void addReactions(Document& doc, double mmPerN, DynamicsMarks& out) {
 }  // namespace
 
 double reactionScale(const Kinematics& k, double extentMm) {
+  if (!k.valid() || isSpatial(k.mechanism())) return 0;  // no arrows there (addReactions)
   const ForceSamples s = sampleForces(k, 72);
   double most = 0;
   for (const std::vector<Vec2>& joint : s.reactionN)

@@ -20,6 +20,14 @@ std::vector<double> component(const std::vector<Vec2>& v, int c) {
   return out;
 }
 
+// x, y, z, or (c 3) the magnitude.
+std::vector<double> component(const std::vector<Vec3>& v, int c) {
+  std::vector<double> out;
+  out.reserve(v.size());
+  for (const Vec3& f : v) out.push_back(c < 3 ? f[c] : std::hypot(f.x(), f.y(), f.z()));
+  return out;
+}
+
 }  // namespace
 
 ForceFigure::ForceFigure(QCustomPlot* plot) : CrankFigure(plot) {
@@ -64,7 +72,7 @@ void ForceFigure::clear() {
 }
 
 void ForceFigure::layOut(const QString& crankLabel, const JointChoice& joint,
-                         const QString& stopNote) {
+                         const QString& stopNote, bool space) {
   QCPLayoutGrid* grid = plot_->plotLayout();
   if (!stopNote.isEmpty()) {
     // Why the curves end early, across the figure above the plots.
@@ -78,10 +86,18 @@ void ForceFigure::layOut(const QString& crankLabel, const JointChoice& joint,
   }
   grid->setRowSpacing(0);
   grid->setColumnSpacing(8);
-  const QString titles[kPlots] = {
-      "Driver torque", "Shaking force", "Polar diagram of the shaking force",
-      joint.index < 0 ? QString("Joint reaction")
-                      : QString("Reaction %1 (on %2)").arg(joint.label, joint.bodyName)};
+  // In space the forces are the world's (the table's columns), said in the titles.
+  QString reaction = joint.index < 0
+                         ? QString("Joint reaction")
+                         : QString("Reaction %1 (on %2)").arg(joint.label, joint.bodyName);
+  if (space && joint.index >= 0)
+    reaction = joint.shape == SpaceReaction::Tension ? QString("Tension of %1").arg(joint.label)
+               : joint.shape == SpaceReaction::Couple
+                   ? QString("Couple %1 (on %2)").arg(joint.label, joint.bodyName)
+                   : reaction + ", world axes";
+  const QString titles[kPlots] = {"Driver torque",
+                                  space ? "Shaking force, world axes" : "Shaking force",
+                                  "Polar diagram of the shaking force", reaction};
   auto* rowGroup = new QCPMarginGroup(plot_);
   for (int p = 0; p < kPlots; ++p) {
     const int row = 2 * (p / columns_), column = p % columns_;
@@ -93,6 +109,10 @@ void ForceFigure::layOut(const QString& crankLabel, const JointChoice& joint,
     rects_[p]->setMarginGroup(QCP::msTop | QCP::msBottom, rowGroup);
     addZeroLines(rects_[p], p == Polar);
   }
+  if (space)  // the world's x and y (a view along its z)
+    for (auto [axis, label] : {std::pair{QCPAxis::atBottom, "Shaking fx (world) [N]"},
+                               std::pair{QCPAxis::atLeft, "Shaking fy (world) [N]"}})
+      rects_[Polar]->axis(axis)->setLabel(label);
   // Titles take their height, the plots the rest.
   for (int r = 0; r < grid->rowCount(); ++r) grid->setRowStretchFactor(r, r % 2 ? 1 : 0.01);
 }
@@ -111,6 +131,7 @@ void ForceFigure::addReaction(const ForceSamples& s, const JointChoice& joint) {
                         30));
     return;
   }
+  if (s.inSpace) return addReactionInSpace(s, joint);
   const std::vector<Vec2>& r = s.reactionN[joint.index];
   curves_[ReactionX] =
       addCurve(rects_[Reaction], s.crankDeg, component(r, 0), forceColours::kX, "fx");
@@ -120,16 +141,55 @@ void ForceFigure::addReaction(const ForceSamples& s, const JointChoice& joint) {
                                    forceColours::kNorm, "|F|", Qt::DashLine);
 }
 
+// A machine in space: the joint's force in the world (x, y, z and its magnitude), or a ball
+// rod's tension, or a bevel pair's couple (its tooth force is not computed).
+void ForceFigure::addReactionInSpace(const ForceSamples& s, const JointChoice& joint) {
+  QCPAxisRect* rect = rects_[Reaction];
+  if (joint.shape != SpaceReaction::Force) {
+    const bool couple = joint.shape == SpaceReaction::Couple;
+    curves_[ReactionScalar] = addCurve(rect, s.crankDeg, s.axialOrCouple[joint.index],
+                                       forceColours::kX, couple ? "couple" : "tension");
+    if (couple) rect->axis(QCPAxis::atLeft)->setLabel("Couple [N m]");
+    return;
+  }
+  const std::vector<Vec3>& r = s.reaction3N[joint.index];
+  curves_[ReactionX] = addCurve(rect, s.crankDeg, component(r, 0), forceColours::kX, "fx");
+  curves_[ReactionY] = addCurve(rect, s.crankDeg, component(r, 1), forceColours::kY, "fy");
+  curves_[ReactionZ] = addCurve(rect, s.crankDeg, component(r, 2), forceColours::kZ, "fz");
+  curves_[ReactionNorm] =
+      addCurve(rect, s.crankDeg, component(r, 3), forceColours::kNorm, "|F|", Qt::DashLine);
+}
+
 void ForceFigure::fitRanges(const ForceSamples& s, double sizeMm) {
   // What is rounding of zero next to the figure's largest force (and its moment) is drawn flat:
   // the value axes span at least a thousandth of it.
-  double force = peakOf(s.shakingN);
-  for (size_t j = 0; j < s.reactionN.size(); ++j) force = std::max(force, peakOf(s.reactionN[j]));
+  double force = s.inSpace ? peakOf(s.shaking3N) : peakOf(s.shakingN);
+  for (size_t j = 0; j < s.reactionN.size(); ++j)
+    force = std::max(force, s.inSpace ? peakOf(s.reaction3N[j]) : peakOf(s.reactionN[j]));
   const double torque = std::max(peakOf(s.driverTorqueNm), force * sizeMm * 1e-3);
   constexpr double kFlat = 1e-3;
   fitValues(rects_[Torque], kFlat * torque);
   fitValues(rects_[Shaking], kFlat * force);
   if (curves_[ReactionX]) fitValues(rects_[Reaction], kFlat * force);
+  if (QCPGraph* scalar = curves_[ReactionScalar]) {
+    // A couple is next to the couples and the driver's torque (a product of the forces and the
+    // machine's size would flatten a real one); a tension next to the forces.
+    bool found = false;
+    const QCPRange own = scalar->getValueRange(found);
+    const double peak = found ? std::max(std::abs(own.lower), std::abs(own.upper)) : 0;
+    const bool couple = scalar->name() == "couple";
+    fitValues(rects_[Reaction], kFlat * std::max(peak, couple ? peakOf(s.driverTorqueNm) : force));
+  }
+}
+
+// The shaking force's components against the crank angle: the world's in space, with fz.
+void ForceFigure::addShaking(const ForceSamples& s) {
+  QCPAxisRect* rect = rects_[Shaking];
+  curves_[ShakingX] = addCurve(rect, s.crankDeg, component(s.shakingN, 0), forceColours::kX, "fx");
+  curves_[ShakingY] = addCurve(rect, s.crankDeg, component(s.shakingN, 1), forceColours::kY, "fy");
+  if (s.inSpace)
+    curves_[ShakingZ] =
+        addCurve(rect, s.crankDeg, component(s.shaking3N, 2), forceColours::kZ, "fz");
 }
 
 void ForceFigure::build(const ForceSamples& s, const QString& crankLabel, const QString& crankBrief,
@@ -143,21 +203,22 @@ void ForceFigure::build(const ForceSamples& s, const QString& crankLabel, const 
   // A legend beside its plot where the cell has the room; in its emptiest corner where the
   // column beside would leave the curves too narrow to read their crank angles.
   const bool beside = size.width() / columns_ >= 320;
-  layOut(crankLabel, joint, stopNote);
+  layOut(crankLabel, joint, stopNote, s.inSpace);
   curves_[TorqueCurve] =
       addCurve(rects_[Torque], s.crankDeg, s.driverTorqueNm, forceColours::kX, "torque");
-  curves_[ShakingX] =
-      addCurve(rects_[Shaking], s.crankDeg, component(s.shakingN, 0), forceColours::kX, "fx");
-  curves_[ShakingY] =
-      addCurve(rects_[Shaking], s.crankDeg, component(s.shakingN, 1), forceColours::kY, "fy");
+  addShaking(s);
   addReaction(s, joint);
   polar_ = addPolarCurve(rects_[Polar], s.shakingN, forceColours::kPolar, "shaking force");
   fitRanges(s, sizeMm);
-  addLegend(rects_[Shaking], {curves_[ShakingX], curves_[ShakingY]},
-            beside ? cells_[Shaking] : nullptr);
-  if (curves_[ReactionX])
-    addLegend(rects_[Reaction], {curves_[ReactionX], curves_[ReactionY], curves_[ReactionNorm]},
-              beside ? cells_[Reaction] : nullptr);
+  // A legend of the curves there are, in the order of the enum's (x, y, then z and |F|).
+  auto legend = [&](Plot p, std::initializer_list<Curve> which) {
+    std::vector<QCPAbstractPlottable*> items;
+    for (Curve c : which)
+      if (curves_[c]) items.push_back(curves_[c]);
+    if (!items.empty()) addLegend(rects_[p], items, beside ? cells_[p] : nullptr);
+  };
+  legend(Shaking, {ShakingX, ShakingY, ShakingZ});
+  legend(Reaction, {ReactionX, ReactionY, ReactionZ, ReactionNorm, ReactionScalar});
   addCursor();
   setCursor(cursor());
   replot();

@@ -2,6 +2,9 @@
 // fy and a joint's reaction against the crank angle over one turn, and the polar diagram of the
 // shaking force (fy against fx, equal scales); the cursor at the pose (figures/crank_figure.h:
 // a line on each crank-angle plot, and the pose's point and force vector on the polar diagram).
+// A machine in space: the columns of `linkage-cli dynamics` in the world's axes (the shaking
+// force's fz too, a joint's force with what it bears along its plane's normal), a ball rod's
+// tension, a bevel pair's couple; the polar diagram is of the world's x and y.
 // Laid out as one row of four plots in a wide low dock, two by two in a squarer one, one column
 // in a tall narrow one (columnsFor).
 #pragma once
@@ -27,11 +30,23 @@ namespace linkage::ui {
 class ForceFigure : public CrankFigure {
  public:
   enum Plot { Torque, Shaking, Polar, Reaction, kPlots };
-  enum Curve { TorqueCurve, ShakingX, ShakingY, ReactionX, ReactionY, ReactionNorm, kCurves };
+  enum Curve {
+    TorqueCurve,
+    ShakingX,
+    ShakingY,
+    ReactionX,
+    ReactionY,
+    ReactionNorm,
+    ShakingZ,        // in space
+    ReactionZ,       // in space
+    ReactionScalar,  // in space: a ball rod's tension or a bevel pair's couple
+    kCurves
+  };
   struct JointChoice {
     int index = -1;           // into the mechanism's joints; -1: none
     QString label, bodyName;  // "pin:rod.B" (the force table's name), the body it acts on
     bool undetermined = false;
+    SpaceReaction shape = SpaceReaction::Force;  // what it is in space
   };
 
   explicit ForceFigure(QCustomPlot* plot);
@@ -68,7 +83,10 @@ class ForceFigure : public CrankFigure {
   void replot();
 
  private:
-  void layOut(const QString& crankLabel, const JointChoice& joint, const QString& stopNote);
+  void layOut(const QString& crankLabel, const JointChoice& joint, const QString& stopNote,
+              bool space);
+  void addShaking(const ForceSamples& s);
+  void addReactionInSpace(const ForceSamples& s, const JointChoice& joint);
   void addReaction(const ForceSamples& s, const JointChoice& joint);
   void fitRanges(const ForceSamples& s, double sizeMm);
   void fitCrankLabels();

@@ -45,6 +45,13 @@ double peakOf(const std::vector<Vec2>& v) {
   return p;
 }
 
+double peakOf(const std::vector<Vec3>& v) {
+  double p = 0;
+  for (const Vec3& x : v)
+    if (x.allFinite()) p = std::max(p, std::hypot(x.x(), x.y(), x.z()));
+  return p;
+}
+
 void fitValues(QCPAxisRect* rect, double minHalfRange) {
   double lo = INFINITY, hi = -INFINITY;
   for (QCPGraph* g : rect->graphs()) {

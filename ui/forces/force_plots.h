@@ -21,8 +21,8 @@ class QCPRange;
 namespace linkage::ui {
 
 namespace forceColours {
-inline const QColor kX{31, 119, 180}, kY{214, 39, 40}, kNorm{90, 90, 90}, kPolar{31, 119, 180},
-    kBefore{150, 150, 150}, kAfter{31, 119, 180}, kNote{150, 20, 20};
+inline const QColor kX{31, 119, 180}, kY{214, 39, 40}, kZ{44, 150, 44}, kNorm{90, 90, 90},
+    kPolar{31, 119, 180}, kBefore{150, 150, 150}, kAfter{31, 119, 180}, kNote{150, 20, 20};
 }
 
 // A rect of the plot's layout with the crank angle from 0 to 360 on x (setCrankAxis,
@@ -39,6 +39,7 @@ void fitValues(QCPAxisRect* rect, double minHalfRange);
 // The largest finite |value| (0 for none).
 double peakOf(const std::vector<double>& v);
 double peakOf(const std::vector<Vec2>& v);
+double peakOf(const std::vector<Vec3>& v);
 // A line across the rect at y = 0 and (polar) at x = 0: where the force changes sign.
 void addZeroLines(QCPAxisRect* rect, bool vertical);
 // A legend of the graphs and curves given: beside the rect, in column 1 of `cell` (the grid

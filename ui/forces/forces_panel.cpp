@@ -181,8 +181,10 @@ void ForcesPanel::compute() {
     ++computations_;
     if (samples_.size() == 0)
       why_ = tr("No forces: %1.").arg(QString::fromStdString(samples_.status.message));
-    forceScale_ = peakOf(samples_.shakingN);
+    forceScale_ = samples_.inSpace ? peakOf(samples_.shaking3N) : peakOf(samples_.shakingN);
     for (const std::vector<Vec2>& r : samples_.reactionN)
+      forceScale_ = std::max(forceScale_, peakOf(r));
+    for (const std::vector<Vec3>& r : samples_.reaction3N)
       forceScale_ = std::max(forceScale_, peakOf(r));
     torqueScale_ = std::max(peakOf(samples_.driverTorqueNm), forceScale_ * k.size() * 1e-3);
     if (why_.isEmpty()) why_ = beyondThePlots();
@@ -229,6 +231,7 @@ void ForcesPanel::rebuildFigure() {
       if (const Body* b = m.body(a->body)) choice.bodyName = QString::fromStdString(b->name);
     choice.undetermined = std::find(samples_.undetermined.begin(), samples_.undetermined.end(),
                                     j.id) != samples_.undetermined.end();
+    if (samples_.inSpace) choice.shape = spaceReactionOf(m, j);
   } else {
     choice.index = -1;
   }
@@ -260,6 +263,7 @@ void ForcesPanel::updateCursor() {
                          .arg(QString::fromStdString(f.status.message)));
     return;
   }
+  if (samples_.inSpace) return values_->setText(valuesInSpace(c, k, f));
   auto force = [this](double v) { return number(cleaned(v, forceScale_)); };
   QString text = tr("At %1°: torque %2 N m; shaking force (%3, %4) N, |F| %5 N")
                      .arg(c, 0, 'f', 1)
@@ -274,6 +278,43 @@ void ForcesPanel::updateCursor() {
         tr("; %1 (%2, %3) N")
             .arg(joints_->itemText(j), force(f.joints[j].force.x()), force(f.joints[j].force.y()));
   values_->setText(text);
+}
+
+// The values at the pose on a machine in space: in the world's axes, as the plots draw them; a
+// joint in a plane with what its bearing takes about the plane's axes, a rod's tension, a bevel
+// pair's couple.
+QString ForcesPanel::valuesInSpace(double deg, const Kinematics& k, const Forces& f) const {
+  auto force = [this](double v) { return number(cleaned(v, forceScale_)); };
+  const Vec3& F = f.shakingForce3N;
+  QString text = tr("At %1°, world axes: torque %2 N m; shaking force (%3, %4, %5) N, |F| %6 N")
+                     .arg(deg, 0, 'f', 1)
+                     .arg(number(cleaned(f.driverTorqueNm, torqueScale_)), force(F.x()),
+                          force(F.y()), force(F.z()), force(std::hypot(F.x(), F.y(), F.z())));
+  const int j = joint();
+  if (j < 0 || j >= static_cast<int>(f.joints.size())) return text;
+  const JointReaction& r = f.joints[j];
+  Vec3 w;
+  double scalar;
+  reactionInSpace(k, j, r, w, scalar);
+  const QString name = joints_->itemText(j);
+  switch (spaceReactionOf(k.mechanism(), k.mechanism().joints[j])) {
+    case SpaceReaction::Tension:
+      if (std::isfinite(scalar)) text += tr("; %1 tension %2 N").arg(name, force(scalar));
+      break;
+    case SpaceReaction::Couple:
+      if (std::isfinite(scalar))
+        text += tr("; %1 couple %2 N m").arg(name, number(cleaned(scalar, torqueScale_)));
+      break;
+    case SpaceReaction::Force:
+      if (!w.allFinite()) break;
+      text += tr("; %1 (%2, %3, %4) N").arg(name, force(w.x()), force(w.y()), force(w.z()));
+      if (r.tiltNm.allFinite() && r.tiltNm != Vec2::Zero())
+        text += tr(", about its plane's x and y %1, %2 N m")
+                    .arg(number(cleaned(r.tiltNm.x(), torqueScale_)),
+                         number(cleaned(r.tiltNm.y(), torqueScale_)));
+      break;
+  }
+  return text;
 }
 
 QString ForcesPanel::cursorText() const {

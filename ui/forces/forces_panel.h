@@ -2,7 +2,8 @@
 // driver's torque, the shaking force's fx and fy, its polar diagram (fy against fx on equal
 // scales, the pose marked) and a chosen joint's reaction; a cursor at the document's crank
 // angle, and clicking or dragging on a crank-angle plot asks for that angle, as the motion
-// plots do (the same signal).
+// plots do (the same signal). A machine in space: what `linkage-cli dynamics` writes, in the
+// world's axes (forces/force_figure.h).
 //
 // Only determined numbers are shown: a design not solved, a motion the driver does not
 // determine, or a design with no masses and no loads gets a sentence in place of the curves;
@@ -89,6 +90,7 @@ class ForcesPanel : public DockPanel {
   // The room the figure has: the scroll area's viewport without scroll bars.
   QSize room() const;
   void updateCursor();
+  QString valuesInSpace(double deg, const Kinematics& k, const Forces& f) const;
   void mouseOnPlot(QMouseEvent* e, bool press);
 
   QPointer<Document> doc_;

@@ -12,6 +12,12 @@
 // solution leaves it, until the peak and the programme's optimum (a lower bound: no counterweights
 // within the bounds do better on the angles used) agree. Their difference is the certified gap.
 // No counterweight at all is one of the choices: the peak after is never above the peak before.
+//
+// A machine in space (linkage/space.h): the shaking force is the world's, in 3D; a counterweight
+// turns in its body's plane, so it adds only to the components in that plane (its static moment
+// a 2D vector in the plane), and |F| <= t is held by tangent rows on the sphere. What lies along
+// the normal of every counterweight's plane, when they are all parallel, is beyond them: said
+// with its peak (BalanceResult::unreached; docs/balancing.md, "Machines in space").
 #pragma once
 
 #include <optional>
@@ -21,7 +27,9 @@
 
 namespace linkage {
 
-enum class BalanceMeasure { Fx, Fy, Force };  // |shaking fx|, |shaking fy|, |shaking force|
+// |shaking fx|, |shaking fy|, |shaking force|; |shaking fz| (a machine in space). In the world's
+// axes; a planar machine's |force| is in its plane.
+enum class BalanceMeasure { Fx, Fy, Force, Fz };
 
 struct BalanceOptions {
   std::vector<BodyId> bodies;  // a counterweight on each (pinned to the ground)
@@ -53,6 +61,12 @@ struct BalanceResult {
   double peakAfter = 0, peakAfterDeg = 0;    // with the counterweights as they are applied
   double lowerBound = 0;                     // the programme's optimum: the peak cannot go lower
   double gap() const { return peakAfter - lowerBound; }
+  // What no counterweight reaches: where every counterweight's plane is parallel (a planar
+  // machine's: the drawing's), the shaking force along their normal `unreached` (world, unit),
+  // which their turning cannot change (their weight adds to it, one way); its peak |F . n| with
+  // the counterweights applied and before (N, crank degrees). None where the planes span space.
+  std::optional<Vec3> unreached;
+  double unreachedPeak = 0, unreachedPeakDeg = 0, unreachedPeakBefore = 0;
   int exchanges = 0;  // rounds of the exchange
   int angles = 0;     // angles the last programme used
 };

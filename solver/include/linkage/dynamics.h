@@ -36,7 +36,8 @@ struct Forces {
   double shakingMomentNm = 0;
   // The same in the world, in 3D (a machine in space: the bodies' planes lifted; the moment
   // about the world's origin): shakingForceN is its x and y, shakingMomentNm its z. A planar
-  // machine's has z force 0 and x, y moments 0.
+  // machine's z force is the weights along the drawing's normal (gravity's z, Mechanism::
+  // gravityZ; 0 without it), its x and y moments theirs.
   Vec3 shakingForce3N = Vec3::Zero();
   Vec3 shakingMoment3Nm = Vec3::Zero();
   // Mechanism::joints order: the force on the body of the joint's point a from the other side
@@ -48,7 +49,7 @@ struct Forces {
   std::vector<BodyId> outOfPlaneUnsupported;
 };
 
-void shaking(const Kinematics& k, Vec2& forceN, double& momentNm);
+void shaking(const Kinematics& k, Vec3& forceN, Vec3& momentNm);
 
 class ForceSolver {
  public:
@@ -62,7 +63,7 @@ class ForceSolver {
   const Forces& result() const { return out_; }
 
  private:
-  friend void shaking(const Kinematics& k, Vec2& forceN, double& momentNm);
+  friend void shaking(const Kinematics& k, Vec3& forceN, Vec3& momentNm);
   const Forces& overflowed(Forces& out);
   struct Impl;
   struct ImplDeleter {
@@ -80,7 +81,9 @@ bool finiteForces(const Forces& f);
 Forces computeForces(const Kinematics& k);
 
 // The shaking force and moment alone, from the bodies' motion (no joint reaction needed): what
-// balancing sweeps.
+// balancing sweeps. In the plane (a planar machine's: Forces::shakingForceN, shakingMomentNm), or
+// in the world (Forces::shakingForce3N, shakingMoment3Nm).
 void shaking(const Kinematics& k, Vec2& forceN, double& momentNm);
+void shaking(const Kinematics& k, Vec3& forceN, Vec3& momentNm);
 
 }  // namespace linkage

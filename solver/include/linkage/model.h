@@ -304,7 +304,11 @@ struct Mechanism {
   std::vector<Joint> joints;  // file order: the driver's "joint" index counts in it
   std::optional<Driver> driver;
   std::vector<PointId> outputs;
-  std::optional<Vec2> gravity;  // m/s^2 in sketch axes; none: no gravity
+  // m/s^2: the world's x and y (a planar model's: the sketch's axes); none: no gravity.
+  std::optional<Vec2> gravity;
+  // Its third number as written ([gx, gy, gz], with gravity only): the world's z, along the
+  // drawing's normal. None: [gx, gy].
+  std::optional<double> gravityZ;
   std::vector<Load> loads;
   // The file's "mechanisms", in file order.
   std::vector<MechanismEntry> mechanismEntries;
@@ -315,6 +319,11 @@ struct Mechanism {
   Extras outputsExtras;  // unknown fields of "outputs"
 
   Mechanism();
+
+  // The gravity in the world (m/s^2): (gx, gy, gz), gz 0 when not written; zero without one.
+  Vec3 gravityWorld() const {
+    return gravity ? Vec3(gravity->x(), gravity->y(), gravityZ.value_or(0)) : Vec3::Zero();
+  }
 
   BodyId addBody(std::string name, bool ground = false);
   PointId addPoint(BodyId body, std::string name, Vec2 pos);
