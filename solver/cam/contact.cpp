@@ -1,4 +1,6 @@
 // The contact of a cam and its follower at a pose: linkage/cam.h has the derivation.
+#include <cmath>
+
 #include "linkage/cam.h"
 
 namespace linkage::cam {
@@ -26,6 +28,9 @@ Contact contact(const Follower& f, const Place& at, double sPrime) {
   if (f.flat) {
     const V& n = at.face;
     const double k = f.sign * sPrime;
+    // k = 1: the follower turns with the cam, about the same centre: no contact point is
+    // singled out (a cam no one cuts); b stands for it rather than a point at infinity.
+    if (!(std::abs(1 - k) > 1e-12)) return {at.b, n};
     const double lambda = (cross(r, n) - k * cross(at.b - at.pivot, n)) / (1 - k);
     return {at.b + lambda * perp(n), n};
   }

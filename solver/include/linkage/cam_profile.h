@@ -13,6 +13,9 @@
 // The pressure angle is the signed angle from the follower's direction of motion db/ds (u, or
 // sign perp(b - P)) to n: atan2(cross(db/ds, n), db/ds . n). For a translating roller follower
 // with offset e that is atan((s' - e) / (sqrt((base + roller)^2 - e^2) + s)), the spec's.
+// It is the cam joint's own (its drawing; elements/ cannot call analysis/): the checks of a
+// profile (extremes found exactly, radii of curvature, undercut) and its export are
+// linkage/cam_checks.h's and linkage/tables/cam_export.h's, from the same formulas.
 #pragma once
 
 #include <vector>

@@ -28,7 +28,7 @@ Vec2 turned(double a, const Vec2& v) {
   return Rot::of(a) * v;
 }
 
-TEST(CamProfile, TranslatingRollerFollowersPressureAngleIsTheSpecsFormula) {
+TEST(CamJointProfile, TranslatingRollerFollowersPressureAngleIsTheSpecsFormula) {
   for (double e : {10.0, -6.0, 0.0}) {
     test::TranslatingCam spec;
     spec.e = e;
@@ -52,7 +52,7 @@ TEST(CamProfile, TranslatingRollerFollowersPressureAngleIsTheSpecsFormula) {
   EXPECT_NEAR(dwell.surface.norm(), 30, 1e-12);
 }
 
-TEST(CamProfile, AKnifeEdgesSurfaceIsItsPitchCurve) {
+TEST(CamJointProfile, AKnifeEdgesSurfaceIsItsPitchCurve) {
   test::TranslatingCam spec;
   spec.roller = 0;
   const CamJoint c = camOf(spec.text());
@@ -62,7 +62,7 @@ TEST(CamProfile, AKnifeEdgesSurfaceIsItsPitchCurve) {
 
 // The face is at base + s from a along u; the contact is s' to the right of a's line along u
 // (a + s' w is the instant centre; the normal along u passes through it).
-TEST(CamProfile, AFlatFacesContactIsSPrimeAside) {
+TEST(CamJointProfile, AFlatFacesContactIsSPrimeAside) {
   test::TranslatingCam spec;
   spec.flat = true;
   spec.e = 5;
