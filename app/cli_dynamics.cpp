@@ -30,9 +30,11 @@ then one row per crank angle 0, 360/N, ..., 360*R with
 then for each joint in file order its reaction, the force on the body of its point a from the
 other side: pin:<a>.fx_N,pin:<a>.fy_N; slider:<a>.fx_N,slider:<a>.fy_N,slider:<a>.m_Nm (with
 the couple about a); pin-in-slot:<a>.fx_N,pin-in-slot:<a>.fy_N; gear:<a>.fx_N,gear:<a>.fy_N
-(a gear pair's tooth force at the pitch point; a belt's pull along its run): <a> is the joint's
-point a as "body.point". 17 significant digits. Reactions that the joints do not determine
-(redundant joints) are left empty, and the joints are named on standard error.
+(a gear pair's tooth force at the pitch point; a belt's pull along its run);
+cam:<a>.fx_N,cam:<a>.fy_N,cam:<a>.m_Nm,cam:<a>.contact_N (the follower's force on the cam along
+the common normal, its moment about the cam's centre, the contact force, + compression): <a>
+is the joint's point a as "body.point". 17 significant digits. Reactions that the joints do not
+determine (redundant joints) are left empty, and the joints are named on standard error.
 
 A machine in space (planes, docs/spatial.md; docs/dynamics.md, "Machines in space"): the
 shaking force and moment in the world, shaking_fx_N,shaking_fy_N,shaking_fz_N,shaking_mx_Nm,

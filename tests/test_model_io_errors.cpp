@@ -174,8 +174,8 @@ TEST(ModelFileErrors, ExactlyOneGround) {
 
 TEST(ModelFileErrors, JointReferences) {
   EXPECT_EQ(refusedEdit(R"("type": "slider")", R"("type": "hinge")"),
-            "joints[1].type: expected \"pin\", \"slider\", \"pin-in-slot\", \"gear\" or "
-            "\"ball-rod\", got \"hinge\"");
+            "joints[1].type: expected \"pin\", \"slider\", \"pin-in-slot\", \"gear\", "
+            "\"ball-rod\" or \"cam\", got \"hinge\"");
   EXPECT_EQ(refusedEdit(R"("a": "ground.A")", R"("a": "X.A")"), "joints[0].a: no body \"X\"");
   EXPECT_EQ(refusedEdit(R"("b": "disk.A")", R"("b": "disk.Q")"),
             "joints[0].b: no point \"Q\" on body \"disk\"");

@@ -178,7 +178,7 @@ void placeCentres(Drawing& d, const Kinematics& k, const InstantCentres& ics) {
           Vec2 point(PointId p) const override { return k.position(p); }
           Transform body(BodyId b) const override { return k.bodyTransform(b); }
         } pose(k);
-        centreLineAt(kindOf(*j).centre(seenBy(c.planeClass), *j), pose, line.through);
+        jointCentreLine(seenBy(c.planeClass), *j, pose, line.through);
       }
       out.lines.push_back(line);
     }
@@ -212,6 +212,8 @@ void place(Drawing& d, const Mechanism& m, At_ at, Ends ends, Pose_ pose, double
     const Joint& j = m.joints[d.jointIndex[i]];
     kindOf(j).place(m, j, poseView, d.joints[i]);
     extend(d, d.joints[i].at, first);
+    const Rot turn = Rot::of(d.joints[i].angle[0]);  // a cam's surface turns with the cam
+    for (const Vec2& c : d.joints[i].curve) extend(d, d.joints[i].at + turn * c, first);
   }
   for (Drawing::Channel& c : d.channels) {
     std::tie(c.p0, c.p1) = ends(c.slot);

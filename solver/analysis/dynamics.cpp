@@ -20,7 +20,7 @@ constexpr double kNaN = NAN;
 // A reaction that is not known: every part NaN but where it acts.
 void unknown(JointReaction& r) {
   const Vec2 at = r.at;
-  r = {Vec2::Constant(kNaN), at, kNaN, kNaN, Vec2::Constant(kNaN), kNaN, kNaN};
+  r = {Vec2::Constant(kNaN), at, kNaN, kNaN, Vec2::Constant(kNaN), kNaN, kNaN, kNaN};
 }
 
 // Positions at k's pose, for the kinds' react().
@@ -344,6 +344,9 @@ void ForceSolver::Impl::reactions(const KinematicsState& s, const Kinematics& k,
     Vec2 F = lam[0] * f->u[0];
     if (row.rows() == 2) F += lam[1] * f->u[1];
     F *= -x.sign;  // the row's force is +u on body[0]; the joint's is on the body of a
+    // A cam's row is its contact's, u[0] the normal from the cam to the follower: the force on
+    // the follower is -lambda u[0], so the compression is -lambda.
+    if (row.kind == Primitive::Cam) r.contactN = -lam[0];
     r.force += F;
     r.coupleNm += cross(f->P - r.at, F);
   }
@@ -391,7 +394,7 @@ const Forces& ForceSolver::compute(const Kinematics& k) {
   d_->shakingOf(s.sys, out);
   auto solve = [&] {
     return d_->grouped ? d_->groups.solve(s.sys, d_->views, d_->Q, d_->lambda) || d_->solveWhole(s)
-                       : d_->solveWithKinematics(s) || d_->solveWhole(s);
+                       : (!s.sys.contactRows && d_->solveWithKinematics(s)) || d_->solveWhole(s);
   };
   if (!solve()) {
     // The multipliers are linear in Q: where Q scaled down solves, the solve overflowed (a load

@@ -277,6 +277,8 @@ Vec3 InstantCentreSolver::toPublic(const Vec3& h) const {
 }
 
 inline Vec3 InstantCentreSolver::primaryLine(const Primary& pr) const {
+  if (pr.rule == CentreRule::PoseLine)
+    return scaled(pr.at).cross(Vec3(pr.along.x(), pr.along.y(), 0.0));
   const Vec3 p = scaled(global(pr.pBody[0], pr.p[0]));
   if (pr.rule == CentreRule::LineThrough) return p.cross(scaled(global(pr.pBody[1], pr.p[1])));
   const Vec2 n = turn(pr.nBody, pr.n);
@@ -309,6 +311,24 @@ inline void InstantCentreSolver::primaryPoint(const Primary& pr, Vec3& h, Vec3& 
   }
 }
 
+// The lines the joints' kinds compute at this pose (a cam's common normal). A machine in space
+// has none: its kinds' lines are of its planes' frames, which no cam joins yet.
+void InstantCentreSolver::poseLines(const Kinematics& k) {
+  struct At : Pose {
+    const Kinematics& k;
+    explicit At(const Kinematics& kin) : k(kin) {}
+    Vec2 point(PointId p) const override { return k.position(p); }
+    Transform body(BodyId b) const override { return k.bodyTransform(b); }
+  } pose(k);
+  const Mechanism& m = k.mechanism();
+  for (Primary& pr : primaries_) {
+    if (pr.rule != CentreRule::PoseLine) continue;
+    const Joint& j = m.joints[pr.joint];
+    const auto line = kindOf(j).centreLine;
+    pr.valid = flat_.empty() && line && line(m, j, pose, pr.at, pr.along);
+  }
+}
+
 void InstantCentreSolver::primaryCentres() {
   for (int p = 0; p < static_cast<int>(work_.size()); ++p) {
     Work& w = work_[p];
@@ -326,7 +346,9 @@ void InstantCentreSolver::primaryCentres() {
     bool fromLines = false;
     for (int e = w.firstPrimary; e < w.firstPrimary + w.primaryCount; ++e) {
       const Primary& pr = primaries_[e];
-      if (pr.rule == CentreRule::LineAlong || pr.rule == CentreRule::LineThrough) {
+      if (!pr.valid) continue;
+      if (pr.rule == CentreRule::LineAlong || pr.rule == CentreRule::LineThrough ||
+          pr.rule == CentreRule::PoseLine) {
         // Only a line: the centre is on the normal to the slot through the pin.
         const Vec3 l = primaryLine(pr);
         const double s = l.norm();
@@ -563,6 +585,7 @@ const InstantCentres& InstantCentreSolver::compute(const Kinematics& k) {
     cos_[s + 1] = std::cos(q[3 * s + 2]);
     sin_[s + 1] = std::sin(q[3 * s + 2]);
   }
+  poseLines(k);
   primaryCentres();
   kennedy();
   velocityCentres(k);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "elements/ball_rod.h"
+#include "elements/cam.h"
 #include "elements/gear.h"
 #include "elements/pin.h"
 #include "elements/pin_in_slot.h"
@@ -16,8 +17,8 @@ namespace {
 
 // The table: one line a kind. A kind's place here is its JointType.
 using Make = ElementKind (*)(JointType);
-constexpr Make kMakers[] = {pinElement, sliderElement, pinInSlotElement, gearElement,
-                            ballRodElement};
+constexpr Make kMakers[] = {pinElement,  sliderElement,  pinInSlotElement,
+                            gearElement, ballRodElement, camElement};
 
 std::vector<ElementKind> makeTable() {
   std::vector<ElementKind> kinds;
@@ -112,6 +113,18 @@ bool centreLineAt(const CentreData& c, const Pose& pose, Eigen::Vector3d through
   return true;
 }
 
+bool jointCentreLine(const Mechanism& m, const Joint& j, const Pose& pose,
+                     Eigen::Vector3d through[2]) {
+  const ElementKind& k = kindOf(j);
+  const CentreData c = k.centre(m, j);
+  if (c.rule != CentreRule::PoseLine) return centreLineAt(c, pose, through);
+  Vec2 p, n;
+  if (!k.centreLine || !k.centreLine(m, j, pose, p, n)) return false;
+  through[0] = Eigen::Vector3d(p.x(), p.y(), 1);
+  through[1] = Eigen::Vector3d(n.x(), n.y(), 0);
+  return true;
+}
+
 std::string jointName(const Mechanism& m, JointId id) {
   const Joint* j = m.joint(id);
   if (!j) return "unknown joint";
@@ -143,6 +156,8 @@ std::string unresolved(const Mechanism& m, const Joint& j, const char*& where) {
         if (j.carrier && !m.contains(j.carrier)) return "unknown body";
         break;
       case FieldType::Number:
+      case FieldType::Flag:
+      case FieldType::Records:
         break;
     }
   }

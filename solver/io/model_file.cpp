@@ -271,6 +271,8 @@ class Reader {
     for (const FieldSpec& f : kind->fields) {
       const Json* v = f.required ? &require(j, f.key, path) : find(j, f.key);
       if (v) readField(joint, f, *v, path + "." + f.key, sides);
+      if (!v && (f.type == FieldType::Number || f.type == FieldType::Flag))
+        numberAt(joint, f.index) = f.type == FieldType::Number ? NAN : 0.0;  // not given
     }
     if (sides[0] && sides[0] == sides[1])
       refuse(path, "both sides are on body " + literal(sides[0]->name));
@@ -304,10 +306,44 @@ class Reader {
         joint.carrier = bodyRef(v, path);
         break;
       case FieldType::Number:
-        if (joint.numbers.size() <= f.index) joint.numbers.resize(f.index + 1, 0.0);
-        joint.numbers[f.index] = getNumber(v, path);
+        numberAt(joint, f.index) = getNumber(v, path);
+        break;
+      case FieldType::Flag:
+        if (!v.is_boolean()) refuse(path, "expected true or false, got " + describe(v));
+        numberAt(joint, f.index) = v.get<bool>() ? 1.0 : 0.0;
+        break;
+      case FieldType::Records:
+        if (joint.records.size() <= f.index) joint.records.resize(f.index + 1);
+        joint.records[f.index] = readRecords(v, path);
         break;
     }
+  }
+
+  static double& numberAt(Joint& joint, size_t k) {
+    if (joint.numbers.size() <= k) joint.numbers.resize(k + 1, 0.0);
+    return joint.numbers[k];
+  }
+
+  // An array of objects whose members are numbers or strings, kept as written.
+  static std::vector<Record> readRecords(const Json& v, const std::string& path) {
+    if (!v.is_array()) refuse(path, "expected an array of objects, got " + describe(v));
+    std::vector<Record> out;
+    for (size_t i = 0; i < v.size(); ++i) {
+      const std::string at = element(path, i);
+      requireObject(v[i], at);
+      Record r;
+      for (auto it = v[i].begin(); it != v[i].end(); ++it) {
+        if (it.value().is_number())
+          r.push_back({it.key(), getNumber(it.value(), member(at, it.key()))});
+        else if (it.value().is_string())
+          r.push_back({it.key(), it.value().get<std::string>()});
+        else
+          refuse(member(at, it.key()),
+                 "expected a number or a string, got " + describe(it.value()));
+      }
+      out.push_back(std::move(r));
+    }
+    return out;
   }
 
   void readDriver(const Json& d) {

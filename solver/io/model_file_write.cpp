@@ -195,7 +195,23 @@ struct Labels {
   }
 };
 
-// The fields the joint's kind reads, in its order (an optional body left out when unset).
+// A structured field's records, their members as read (numbers written as every number is).
+Json recordsJson(const std::vector<Record>& records) {
+  Json out = Json::array();
+  for (const Record& r : records) {
+    Json o = Json::object();
+    for (const RecordMember& x : r) {
+      Json v = std::holds_alternative<double>(x.value) ? number(std::get<double>(x.value))
+                                                       : Json(std::get<std::string>(x.value));
+      json_tree::appendMember(o, x.key, std::move(v));
+    }
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
+// The fields the joint's kind reads, in its order (an optional body, an optional number not
+// given and a flag not set left out).
 Json jointJson(const Labels& labels, const Joint& jt) {
   Json j = Json::object();
   j["type"] = toString(jt.type);
@@ -211,7 +227,13 @@ Json jointJson(const Labels& labels, const Joint& jt) {
         if (jt.carrier) j[f.key] = Labels::of(labels.bodies, jt.carrier.value);
         break;
       case FieldType::Number:
-        j[f.key] = number(jt.number(f.index));
+        if (f.required || jt.given(f.index)) j[f.key] = number(jt.number(f.index));
+        break;
+      case FieldType::Flag:
+        if (jt.number(f.index) != 0) j[f.key] = true;
+        break;
+      case FieldType::Records:
+        j[f.key] = recordsJson(jt.recordsAt(f.index));
         break;
     }
   }
@@ -483,10 +505,18 @@ std::string mechanismDifference(const Mechanism& a, const Mechanism& b) {
     const Body *ca = a.body(ja.carrier), *cb = b.body(jb.carrier);
     if (kind.reads(FieldType::Body) && (ca ? ca->name : "") != (cb ? cb->name : ""))
       return w + ".carrier differs";
-    for (const FieldSpec& f : kind.fields)
-      if (f.type == FieldType::Number && ja.number(f.index) != jb.number(f.index))
+    for (const FieldSpec& f : kind.fields) {
+      const bool number = f.type == FieldType::Number;
+      if (number && ja.given(f.index) != jb.given(f.index))
+        return w + "." + f.key + ": given in only one";
+      if ((f.type == FieldType::Flag || (number && ja.given(f.index))) &&
+          ja.number(f.index) != jb.number(f.index))
         return w + "." + f.key + ": " + shortest(ja.number(f.index)) + " vs " +
                shortest(jb.number(f.index));
+      if (f.type == FieldType::Records && ja.recordsAt(f.index) != jb.recordsAt(f.index))
+        return w + "." + f.key + ": " + recordsJson(ja.recordsAt(f.index)).dump() + " vs " +
+               recordsJson(jb.recordsAt(f.index)).dump();
+    }
     if (auto d = compareExtras(ja.extras, jb.extras, w); !d.empty()) return d;
   }
   if (a.driver.has_value() != b.driver.has_value()) return "driver: present in only one";

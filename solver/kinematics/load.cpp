@@ -41,8 +41,7 @@ std::optional<std::vector<char>> changedRows(const System& old, const System& ne
     if (a.kind != b.kind || a.row != b.row || a.joint != b.joint || a.body[0] != b.body[0] ||
         a.body[1] != b.body[1] || a.body[2] != b.body[2])
       return std::nullopt;
-    changed[r] = a.s[0] != b.s[0] || a.s[1] != b.s[1] || a.n != b.n || a.c[0] != b.c[0] ||
-                 a.c[1] != b.c[1] || a.c[2] != b.c[2] || a.value != b.value || a.driven != b.driven;
+    changed[r] = !a.sameNumbers(b);
   }
   return changed;
 }

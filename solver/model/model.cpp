@@ -118,6 +118,20 @@ SlotId Mechanism::addArcSlot(BodyId bodyId, std::string name, Vec2 p0, Vec2 mid,
   return slots.back().id;
 }
 
+const RecordMember* recordMember(const Record& r, std::string_view key) {
+  for (const RecordMember& m : r)
+    if (m.key == key) return &m;
+  return nullptr;
+}
+
+bool Joint::sameFields(const Joint& o) const {
+  if (numbers.size() != o.numbers.size() || records != o.records) return false;
+  for (size_t k = 0; k < numbers.size(); ++k)
+    if (numbers[k] != o.numbers[k] && !(std::isnan(numbers[k]) && std::isnan(o.numbers[k])))
+      return false;
+  return true;
+}
+
 JointId Mechanism::addJoint(Joint j) {
   j.id = make<JointId>();
   joints.push_back(std::move(j));
@@ -131,19 +145,19 @@ LoadId Mechanism::addLoad(Load l) {
 }
 
 JointId Mechanism::addPin(PointId a, PointId b) {
-  return addJoint(Joint{{}, JointType::Pin, a, b, {}, {}, {}, {}});
+  return addJoint(Joint{{}, JointType::Pin, a, b, {}, {}, {}, {}, {}});
 }
 
 JointId Mechanism::addSlider(PointId a, SlotId s) {
-  return addJoint(Joint{{}, JointType::Slider, a, {}, s, {}, {}, {}});
+  return addJoint(Joint{{}, JointType::Slider, a, {}, s, {}, {}, {}, {}});
 }
 
 JointId Mechanism::addPinInSlot(PointId a, SlotId s) {
-  return addJoint(Joint{{}, JointType::PinInSlot, a, {}, s, {}, {}, {}});
+  return addJoint(Joint{{}, JointType::PinInSlot, a, {}, s, {}, {}, {}, {}});
 }
 
 JointId Mechanism::addGear(PointId a, PointId b, double ratio, BodyId carrier) {
-  return addJoint(Joint{{}, JointType::Gear, a, b, {}, carrier, {ratio}, {}});
+  return addJoint(Joint{{}, JointType::Gear, a, b, {}, carrier, {ratio}, {}, {}});
 }
 
 Removal Mechanism::remove(const std::vector<BodyId>& bodyIds, const std::vector<PointId>& pointIds,
@@ -369,7 +383,7 @@ bool sameTopology(const Mechanism& a, const Mechanism& b, std::vector<BodyId>& r
   for (size_t i = 0; i < a.joints.size(); ++i) {
     const Joint &p = a.joints[i], &q = b.joints[i];
     if (p.id != q.id || p.type != q.type || p.a != q.a || p.b != q.b || p.slot != q.slot ||
-        p.carrier != q.carrier || p.numbers != q.numbers)
+        p.carrier != q.carrier || !p.sameFields(q))
       return false;
   }
   if (a.driver &&

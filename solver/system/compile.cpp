@@ -296,6 +296,7 @@ class Compiler : public Frames {
   }
 
   void push(Row c) {
+    if (c.kind == Primitive::Cam) sys_.contactRows = true;
     c.row = row_;
     row_ += c.rows();
     sys_.cons.push_back(c);

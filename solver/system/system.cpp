@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "elements/cam_row.h"
 #include "elements/coincident.h"
 #include "elements/distance3.h"
 #include "elements/on_circle.h"
@@ -116,6 +117,9 @@ void evalResidual(const System& sys, const std::vector<BodyView>& views, double 
       case Primitive::Hold:
         out[r] = holdScale(sys, c.col) * (coordinate(views, c.col) - c.value);
         break;
+      case Primitive::Cam:
+        out[r] = cam_row::residual(c, i, j, views[c.body[2] + 1], L);
+        break;
     }
   }
 }
@@ -164,6 +168,9 @@ void addJacobian(const System& sys, const std::vector<BodyView>& views,
         break;
       case Primitive::Hold:
         rows(0, c.col) += holdScale(sys, c.col);
+        break;
+      case Primitive::Cam:
+        cam_row::jacobian(rows, 0, c, i, j, views[c.body[2] + 1], L);
         break;
     }
   }
@@ -257,6 +264,9 @@ Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<Bod
     case Primitive::Hold:
       J(0, r.col % 3) = holdScale(sys, r.col);
       break;
+    case Primitive::Cam:  // its reaction's row: the contact's (cam_row.h)
+      cam_row::contactJacobian(J, r, v[0], v[1], v[2]);
+      break;
   }
   return J;
 }
@@ -269,6 +279,12 @@ void rowForce(const System& sys, const std::vector<BodyView>& views, const Row& 
   }
   const BodyView& i = views[r.body[0] + 1];
   const BodyView& j = views[r.body[1] + 1];
+  if (r.kind == Primitive::Cam) {  // the contact's force, along its normal (cam_row.h)
+    const cam::Contact k = cam_row::contact(r, i, j, views[r.body[2] + 1]);
+    f.P = k.point;
+    f.u[0] = k.normal;
+    return;
+  }
   f.twoEnds = r.kind == Primitive::Distance3;
   if (f.twoEnds) {
     Vec2 at[2];
@@ -313,6 +329,9 @@ void evalGamma(const System& sys, const std::vector<BodyView>& views,
       case Primitive::Angles:
       case Primitive::Hold:
         if (r >= 0) out[r] = 0;
+        break;
+      case Primitive::Cam:
+        if (r >= 0) out[r] = cam_row::gamma(c, i, j, views[c.body[2] + 1], sys.size);
         break;
     }
   }

@@ -34,6 +34,9 @@ struct System {
   int nRows = 0;
   int nJointRows = 0;  // rows from joints only (no driver, no holds)
   int driverRow = -1;
+  // Some rows react otherwise than their equations say (a cam's: by its contact; rowJacobian(),
+  // rowForce()): the forces cannot reuse the kinematics' factors of J.
+  bool contactRows = false;
   double size = 1;  // L: diagonal of the drawing's bounding box, the length scale of everything
   // The frames of the plane classes (linkage/space.h): a body's q is planar in its class's;
   // frames[0] is the drawing plane's class. classOf[k]: body k's class.
@@ -88,7 +91,8 @@ SparseJacobian sparseJacobian(const System& sys, const std::vector<int>& rowMap,
 void evalJacobian(const System& sys, const std::vector<BodyView>& views,
                   const std::vector<int>& rowMap, SparseJacobian& J);
 // One row block's Jacobian at the views: its rows() rows, three columns (x, y, theta) for each of
-// body[0..2] in order, zero for the ground and unused bodies (forces: the general path).
+// body[0..2] in order, zero for the ground and unused bodies (forces: the general path). A Cam
+// row's is its contact's (elements/cam_row.h): what its reaction is made of.
 Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<BodyView>& views,
                                         const Row& r);
 
@@ -96,7 +100,8 @@ Eigen::Matrix<double, 2, 9> rowJacobian(const System& sys, const std::vector<Bod
 // group by group: a force at a point is cheaper to form and to apply than a 2 x 9 block). A
 // Coincident, OnLine or OnCircle row's scalar row e is the force u[e] at P on body[0] and -u[e]
 // at P on body[1] (its virtual work is the row's gradient); an Angles row is the couple
-// couple[k] (N mm) on body[k].
+// couple[k] (N mm) on body[k]; a Cam row its contact's force u[0] at the contact P on the
+// follower body[0], -u[0] there on the cam body[1], nothing on its guide body[2].
 struct RowForce {
   Vec2 P = Vec2::Zero();
   Vec2 u[2] = {Vec2::Zero(), Vec2::Zero()};
@@ -110,6 +115,7 @@ struct RowForce {
   // about r.
   Eigen::Matrix<double, 1, 3> on(int k, int e, const Vec2& r) const {
     if (isCouple) return Eigen::Matrix<double, 1, 3>(0, 0, couple[k]);
+    if (k > 1) return Eigen::Matrix<double, 1, 3>::Zero();  // a cam's guide
     if (twoEnds) {
       const Vec2 f = k == 0 ? u[0] : Vec2(-u[1]);
       return Eigen::Matrix<double, 1, 3>(f.x(), f.y(), cross((k == 0 ? P : P1) - r, f));

@@ -26,6 +26,7 @@ double value(const JointReaction& x, const char* column, bool coupling) {
   if (!std::strcmp(column, "fx_N")) return x.force.x();
   if (!std::strcmp(column, "fy_N")) return x.force.y();
   if (!std::strcmp(column, "axial_N")) return x.axialN;
+  if (!std::strcmp(column, "contact_N")) return x.contactN;
   if (!std::strcmp(column, "fn_N")) return x.normalN;
   if (!std::strcmp(column, "mx_Nm")) return x.tiltNm.x();
   if (!std::strcmp(column, "my_Nm")) return x.tiltNm.y();

@@ -15,10 +15,11 @@ const ElementUi& sliderUi();
 const ElementUi& pinInSlotUi();
 const ElementUi& gearUi();
 const ElementUi& ballRodUi();
+const ElementUi& camUi();
 
 std::span<const ElementUi* const> elementUis() {
-  static const ElementUi* const table[] = {&pinUi(), &sliderUi(), &pinInSlotUi(), &gearUi(),
-                                           &ballRodUi()};
+  static const ElementUi* const table[] = {&pinUi(),  &sliderUi(),  &pinInSlotUi(),
+                                           &gearUi(), &ballRodUi(), &camUi()};
   return table;
 }
 

@@ -42,6 +42,7 @@
 // (derivatives in theta in radians), s_{k-1} the sum of the rises before it. A dwell holds s.
 #pragma once
 
+#include <Eigen/Core>
 #include <optional>
 #include <span>
 #include <string>
@@ -119,5 +120,52 @@ class Program {
   std::vector<double> start_, span_, base_;  // radians, radians, scaled rise
   double scale_ = 1;
 };
+
+// What a follower is, whatever joins it (the cam joint reads it from the file: linkage/
+// cam_joint.h): translating (a block in a straight slot of the body the cam turns on, the guide)
+// or oscillating (pinned to the guide), with a roller, a knife edge (roller 0) or a flat face.
+struct Follower {
+  bool oscillating = false;
+  bool flat = false;
+  double base = 0;    // the base circle's radius (the surface's), mm
+  double roller = 0;  // 0: a knife edge, or a flat face
+  // Oscillating: +1 when a rise turns the follower counter-clockwise relative to the guide
+  // (b then moves away from the cam's centre), -1 when clockwise.
+  double sign = 1;
+  bool operator==(const Follower&) const = default;
+};
+
+// Where the parts are, in one frame (the world's at a pose, or the guide's): the cam's centre a,
+// the follower's point b, and, as the follower is: the unit rise direction u along its slot
+// (translating), its pivot (oscillating), the unit normal of its flat face pointing away from
+// the cam (a flat face).
+struct Place {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();
+  Eigen::Vector2d along = Eigen::Vector2d::UnitY();
+  Eigen::Vector2d pivot = Eigen::Vector2d::Zero();
+  Eigen::Vector2d face = Eigen::Vector2d::UnitY();
+};
+
+// The contact at a pose where s' = ds/dtheta (per radian of the cam's turn relative to the
+// guide, counter-clockwise): the point where the force acts and the common normal there, unit,
+// from the cam to the follower (the direction the cam pushes it). With db/ds the follower
+// point's motion per unit s relative to the guide (u translating, sign perp(b - pivot)
+// oscillating) and perp the turn by +90 degrees, the relative velocity of b to the cam per
+// radian is t = s' db/ds - perp(b - a), and the normal is perp(t) (outward on the pitch curve,
+// which b runs round clockwise):
+//   roller, knife:        n = unit(b - a + s' perp(db/ds)), through b
+//   flat, translating:    n = u, at c = b + (s' - cross(b - a, u)) w, w = u turned clockwise
+//                         (where the face point's velocity relative to the cam is along it)
+//   flat, oscillating:    n = the face's normal, at c = b + lambda perp(n) with
+//                         lambda = (cross(b - a, n) - k cross(b - pivot, n)) / (1 - k),
+//                         k = sign s' (the follower's turn per radian of the cam's)
+// The normal meets the line of the cam's and the follower's pivots (for a translating follower
+// the line through a normal to u) at their instant centre: a + s' w, or (a - k pivot) / (1 - k).
+struct Contact {
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();
+  Eigen::Vector2d normal = Eigen::Vector2d::UnitY();
+};
+Contact contact(const Follower& f, const Place& at, double sPrime);
 
 }  // namespace linkage::cam

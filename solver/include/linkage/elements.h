@@ -28,9 +28,12 @@ struct Pose {
 };
 
 // A field of a joint object in a file, as its kind declares it: the key, what it holds and where
-// it goes in a Joint (points: a for index 0, b for 1; slot; carrier; numbers[index]). The reader,
-// the writer and the checks go by these alone, so a new kind needs no code of theirs.
-enum class FieldType : unsigned char { Point, Slot, Body, Number };
+// it goes in a Joint (points: a for index 0, b for 1; slot; carrier; numbers[index]; a flag,
+// true or false, as numbers[index] 1 or 0; records: records[index], an array of objects whose
+// members are numbers or strings, kept as written). The reader, the writer and the checks go by
+// these alone, so a new kind needs no code of theirs. An optional number not given is NaN in
+// numbers and not written; a flag is written only when true.
+enum class FieldType : unsigned char { Point, Slot, Body, Number, Flag, Records };
 struct FieldSpec {
   const char* key;
   FieldType type;
@@ -46,7 +49,8 @@ PointId& pointField(Joint& j, const FieldSpec& f);
 // PointOnCurve: a point runs in a slot, rotation free. Coupling: the bodies' rotations are tied
 // (gears, belts).
 // Distance: two points keep their distance (a rod with a ball at each end).
-enum class Role : unsigned char { Revolute, Prismatic, PointOnCurve, Coupling, Distance };
+// Contact: a higher pair, two bodies touching along a curve (a cam and its follower).
+enum class Role : unsigned char { Revolute, Prismatic, PointOnCurve, Coupling, Distance, Contact };
 
 // What a joint says by itself about the instant centre of two bodies, from sketch data: points
 // p[k] fixed in body pBody[k], a direction n fixed in body nBody. At a pose (world coordinates):
@@ -56,7 +60,16 @@ enum class Role : unsigned char { Revolute, Prismatic, PointOnCurve, Coupling, D
 //   LineThrough: the centre is on the line through p[0] and p[1].
 //   Weighted:    the centre is (p[0] - ratio p[1]) / (1 - ratio) (homogeneous: at infinity when
 //                ratio = 1): where the two bodies' velocities are equal for a coupling.
-enum class CentreRule : unsigned char { AtPoint, AtInfinity, LineAlong, LineThrough, Weighted };
+//   PoseLine:    the centre is on a line that moves in both bodies (a cam's common normal): the
+//                kind's centreLine() gives it at each pose.
+enum class CentreRule : unsigned char {
+  AtPoint,
+  AtInfinity,
+  LineAlong,
+  LineThrough,
+  Weighted,
+  PoseLine
+};
 struct CentreData {
   CentreRule rule = CentreRule::AtPoint;
   BodyId bodies[2];  // the pair it is a centre of
@@ -68,7 +81,8 @@ struct CentreData {
 };
 
 // A Line rule at a pose: a point of the line and its direction (z = 0), or two points
-// (homogeneous, z = 1); false for the rules that give a point.
+// (homogeneous, z = 1); false for the rules that give a point (and for PoseLine: see
+// jointCentreLine()).
 bool centreLineAt(const CentreData& c, const Pose& pose, Eigen::Vector3d through[2]);
 
 // How a joint is drawn, in world millimetres at a pose: the kind's symbol() fills what does not
@@ -87,6 +101,12 @@ struct JointSymbol {
   double radius[2] = {0, 0};  // a coupling: pitch radii at a and b (pulleys for a belt)
   double angle[2] = {0, 0};   // a coupling: each body's rotation from the drawing (rad)
   bool belt = false;          // a coupling drawn as two pulleys and a belt
+  // A cam: radius[0] its base circle's about `at` (its centre), radius[1] the roller's about
+  // at2 (b); a flat face through at2 normal to `direction` as drawn (turned with angle[1]);
+  // angle[0], angle[1] the cam's and the follower's rotations; `curve` its working surface in
+  // its own frame about `at` (linkage/cam_profile.h), to be turned by angle[0].
+  bool face = false;
+  std::vector<Vec2> curve;
 };
 
 // A joint's reaction at a pose (linkage/dynamics.h): the force on the body of its point a from
@@ -99,7 +119,9 @@ struct JointSymbol {
 // space"): `normalN` along the class's normal and `tiltNm` about its x and y axes through `at`,
 // from the out-of-plane load of the moving body it holds to the ground (a bearing); a ball rod
 // its axial force `axialN` (tension positive); a gear the couple `transmittedNm` its rows put on
-// a's body about its axis (a bevel pair: all it is computed with).
+// a's body about its axis (a bevel pair: all it is computed with). A cam: the force on the cam
+// from the follower along the common normal, at the cam's centre with its moment about it, and
+// the contact force `contactN` (compression positive; elements/cam_row.h).
 struct JointReaction {
   Vec2 force = Vec2::Zero();
   Vec2 at = Vec2::Zero();
@@ -108,6 +130,7 @@ struct JointReaction {
   Vec2 tiltNm = Vec2::Zero();
   double axialN = 0;
   double transmittedNm = 0;
+  double contactN = 0;
 };
 
 struct ElementKind {
@@ -136,6 +159,10 @@ struct ElementKind {
   // Whether it may join bodies of planes that are not parallel (linkage/space.h: a ball rod, a
   // bevel pair); the others join bodies of parallel planes only, which checkJoints() holds.
   bool anyPlanes;
+  // A PoseLine centre (a cam's common normal) at a pose: a point of the line and its direction
+  // (world mm); false where there is none. nullptr for the kinds whose rule is another.
+  bool (*centreLine)(const Mechanism& m, const Joint& j, const Pose& pose, Vec2& through,
+                     Vec2& along) = nullptr;
 
   // Whether it has a field of this type (a slot, a second point, ...).
   bool reads(FieldType t, unsigned char index = 0) const;
@@ -145,6 +172,10 @@ struct ElementKind {
 const ElementKind& elementKind(JointType t);
 // nullptr for a name no kind has.
 const ElementKind* elementKindNamed(std::string_view name);
+// A joint's centre line at a pose, whatever its rule (a line through a point, through two, or
+// one its kind computes at the pose), as centreLineAt() gives it; false for a point.
+bool jointCentreLine(const Mechanism& m, const Joint& j, const Pose& pose,
+                     Eigen::Vector3d through[2]);
 // Every kind, in JointType order (the registry's table: elements/registry.cpp).
 std::span<const ElementKind> elementKinds();
 // Every key any kind reads, once each, in table order.

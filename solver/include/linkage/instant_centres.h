@@ -159,6 +159,10 @@ class InstantCentreSolver {
     int nBody = -1;
     Vec2 n = Vec2::Zero();
     double ratio = 0;
+    // PoseLine (a cam's common normal): the line at this pose, world mm, from its kind; `valid`
+    // false where it has none.
+    Vec2 at = Vec2::Zero(), along = Vec2::UnitX();
+    bool valid = true;
   };
   struct Work {  // per pair, scaled homogeneous (unit 3-vectors); what Kennedy reads first
     Eigen::Vector3d h;
@@ -189,6 +193,7 @@ class InstantCentreSolver {
   [[gnu::always_inline]] inline Eigen::Vector3d primaryLine(const Primary& pr) const;
   [[gnu::always_inline]] inline void primaryPoint(const Primary& pr, Eigen::Vector3d& h,
                                                   Eigen::Vector3d& mm, double& err) const;
+  void poseLines(const Kinematics& k);
   void primaryCentres();
   void kennedy();
   bool kennedyPass(int round, double limit);

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 #include "linkage/geometry.h"
@@ -134,18 +136,42 @@ inline constexpr JointType JointType::Slider{1};
 inline constexpr JointType JointType::PinInSlot{2};
 inline constexpr JointType JointType::Gear{3};
 
+// One member of an object of a structured field (FieldType::Records, a cam's motion programme)
+// as written: its key and its value, a number or a string.
+struct RecordMember {
+  std::string key;
+  std::variant<double, std::string> value;
+  bool operator==(const RecordMember&) const = default;
+};
+// An object of a structured field: its members in the order written.
+using Record = std::vector<RecordMember>;
+// The member of a record with this key; nullptr when it has none.
+const RecordMember* recordMember(const Record& r, std::string_view key);
+
 // A joint of any kind. Its kind's fields (linkage/elements.h: FieldSpec) say which of these it
-// reads and under what names: up to two points, a slot, a body and numbers.
+// reads and under what names: up to two points, a slot, a body, numbers (a flag too, as 1 or 0)
+// and structured fields (arrays of records). What the records mean is the kind's; the file
+// reader and writer carry them as data, so a kind with a table of its own (a cam's motion) needs
+// no member here.
 struct Joint {
   JointId id;
   JointType type = JointType::Pin;
-  PointId a;       // every kind: its first point
-  PointId b;       // a second point
-  SlotId slot;     // a slot it runs in
-  BodyId carrier;  // a body it is carried by (none: the ground)
-  std::vector<double> numbers;
+  PointId a;                    // every kind: its first point
+  PointId b;                    // a second point
+  SlotId slot;                  // a slot it runs in
+  BodyId carrier;               // a body it is carried by (none: the ground)
+  std::vector<double> numbers;  // an optional number not given: NaN (no file holds NaN)
   Extras extras;
+  std::vector<std::vector<Record>> records;  // structured fields, by their index
   double number(size_t k) const { return k < numbers.size() ? numbers[k] : 0.0; }
+  // Whether number k was given (an optional one may not be).
+  bool given(size_t k) const { return k < numbers.size() && !std::isnan(numbers[k]); }
+  const std::vector<Record>& recordsAt(size_t k) const {
+    static const std::vector<Record> none;
+    return k < records.size() ? records[k] : none;
+  }
+  // The kind's fields equal, an optional number not given equal to another not given.
+  bool sameFields(const Joint& o) const;
 };
 
 // An external load: a force on a point's body at the point (N, in sketch axes), or a torque on
