@@ -18,7 +18,9 @@ struct Path {
   Vec2 m;  // b's direction of motion as s grows (unit)
 };
 
+// How far along u from the foot of the perpendicular b is drawn: a flat face's at the base.
 double d0Of(const CamGeometry& g) {
+  if (g.face == FollowerFace::Flat) return g.baseMm;
   const double r = g.baseMm + g.rollerMm;
   return std::sqrt(std::max(0.0, r * r - g.offsetMm * g.offsetMm));
 }
@@ -131,6 +133,23 @@ std::string at(double deg) {
 }
 
 }  // namespace
+
+CamGeometry geometryOf(const CamJoint& c) {
+  CamGeometry g;
+  g.motion = c.kind.oscillating ? FollowerMotion::Oscillating : FollowerMotion::Translating;
+  g.face = c.kind.flat         ? FollowerFace::Flat
+           : c.kind.roller > 0 ? FollowerFace::Roller
+                               : FollowerFace::Knife;
+  g.baseMm = c.kind.base;
+  g.rollerMm = c.kind.flat ? 0 : c.kind.roller;
+  g.program = c.program;
+  g.u = c.drawn.along;
+  g.offsetMm = c.offset;
+  g.pivot = c.drawn.pivot - c.drawn.centre;
+  g.b0 = c.drawn.b - c.drawn.centre;
+  g.sigma = c.kind.sign;
+  return g;
+}
 
 std::string checkCamGeometry(const CamGeometry& g) {
   if (!(g.baseMm > 0)) return "the base radius must be a length above 0";

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "linkage/cam.h"
+#include "linkage/cam_joint.h"
 #include "linkage/geometry.h"
 
 namespace linkage::cam {
@@ -51,6 +52,9 @@ struct CamGeometry {
   Vec2 pivot = Vec2::Zero(), b0 = Vec2::Zero();
   double sigma = 1;
 };
+
+// A cam joint's geometry as drawn (linkage/cam_joint.h), its centre the origin.
+CamGeometry geometryOf(const CamJoint& c);
 
 // What is wrong with the geometry, "" when nothing (an offset beyond base + roller, a rise
 // direction of no length, an arm of no length).

@@ -1,0 +1,125 @@
+// `linkage-cli cam` (issue 28): the checks of every follower the spec names (translating roller
+// with and without offset, knife edge, flat face; oscillating roller and flat face) the same
+// with --steps 8 as with --steps 3600 (the steps set only the profile's points); the pressure
+// angle of the offset roller against a search of the spec's closed form; the profile the
+// joint's own (cam_profile.h) point for point; the written profile read back; bad input.
+#ifdef LINKAGE_CLI
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "cam_fixtures.h"
+#include "cli_harness.h"
+#include "linkage/cam_checks.h"
+#include "linkage/cam_joint.h"
+#include "linkage/cam_profile.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/numbers.h"
+
+namespace linkage {
+namespace {
+
+constexpr double kDeg = M_PI / 180;
+
+class CliCamChecks : public test::CliTest {};
+
+std::vector<std::string> models() {
+  test::TranslatingCam offset, central, knife, flat;
+  central.e = 0;
+  knife.roller = 0;
+  flat.flat = true;
+  test::OscillatingCam rocker, face;
+  face.flat = true;
+  return {offset.text(), central.text(), knife.text(), flat.text(), rocker.text(), face.text()};
+}
+
+TEST_F(CliCamChecks, EveryFollowersChecksAreTheSameFromEightStepsAsFromThousands) {
+  int i = 0;
+  for (const std::string& text : models()) {
+    const std::string path = writeFile("cam" + std::to_string(i++) + ".json", text);
+    const test::CliResult few = run("cam '" + path + "' --steps 8");
+    const test::CliResult many = run("cam '" + path + "' --steps 3600");
+    ASSERT_EQ(few.exit, 0) << few.err;
+    EXPECT_EQ(few.out, many.out);
+    EXPECT_EQ(few.lines().front(), "quantity,value,at_cam_deg");
+    EXPECT_EQ(few.lines().size(), text.find("\"flat\": true") == std::string::npos ? 4u : 3u)
+        << few.out;
+  }
+}
+
+TEST_F(CliCamChecks, TheOffsetRollersPressureAngleIsTheSpecsClosedFormsLargest) {
+  const test::TranslatingCam c;  // base 30, roller 8, offset 10
+  const test::CliResult r = run("cam '" + writeFile("c.json", c.text()) + "'");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const LoadResult l = parseMechanism(c.text());
+  ASSERT_TRUE(l.mechanism) << l.error;
+  const std::optional<CamJoint> joint = camJoint(*l.mechanism, l.mechanism->joints[2]);
+  ASSERT_TRUE(joint);
+  const double d0 = std::sqrt(38.0 * 38.0 - 100.0);
+  auto angle = [&](double t) {
+    const cam::Displacement d = joint->program.at(t);
+    return std::abs(std::atan((d.v - 10) / (d0 + d.s))) / kDeg;
+  };
+  double best = 0, at = 0;
+  for (int i = 0; i < 36000; ++i)
+    if (angle(i * 0.01 * kDeg) > best) best = angle(i * 0.01 * kDeg), at = i * 0.01;
+  for (double h = 0.01; h > 1e-12; h /= 2)  // climb to the peak from the grid's best
+    for (double step : {-h, h})
+      while (angle((at + step) * kDeg) > best) at += step, best = angle(at * kDeg);
+  const std::string row = r.lines()[1];
+  ASSERT_EQ(row.rfind("pressure_angle_max_deg,", 0), 0u) << row;
+  std::istringstream cells(row.substr(row.find(',') + 1));
+  std::string v, deg;
+  std::getline(cells, v, ',');
+  std::getline(cells, deg, ',');
+  EXPECT_NEAR(*parseNumber(v), best, 1e-9);
+  EXPECT_NEAR(*parseNumber(deg), at, 1e-4);
+}
+
+TEST_F(CliCamChecks, TheProfileIsTheJointsOwnAndReadsBack) {
+  for (const std::string& text : models()) {
+    const LoadResult l = parseMechanism(text);
+    ASSERT_TRUE(l.mechanism) << l.error;
+    const std::optional<CamJoint> c = camJoint(*l.mechanism, l.mechanism->joints[2]);
+    ASSERT_TRUE(c);
+    const cam::CamGeometry g = cam::geometryOf(*c);
+    for (double deg = 0; deg < 360; deg += 17) {
+      const cam::CamPoint mine = cam::camPointAt(g, deg * kDeg);
+      const cam::ProfilePoint theirs = cam::profileAt(c->kind, c->drawn, c->program, deg * kDeg);
+      EXPECT_LT((mine.pitch - theirs.pitch).norm(), 1e-9) << deg;
+      EXPECT_LT((mine.surface - theirs.surface).norm(), 1e-9) << deg;
+      if (!c->kind.flat) EXPECT_NEAR(mine.pressureDeg, theirs.pressureAngle / kDeg, 1e-9) << deg;
+    }
+  }
+  const std::string path = writeFile("c.json", test::TranslatingCam().text());
+  const std::string csv = (dir_ / "p.csv").string();
+  ASSERT_EQ(run("cam '" + path + "' --steps 12 --out '" + csv + "'").exit, 0);
+  std::istringstream in(test::slurp(csv));
+  std::string line;
+  int rows = -1;
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 12);
+  EXPECT_EQ(run("cam '" + path + "' --out '" + (dir_ / "p.dxf").string() + "'").exit, 0);
+  EXPECT_NE(test::slurp(dir_ / "p.dxf").find("CAM_SURFACE"), std::string::npos);
+}
+
+TEST_F(CliCamChecks, BadInputExitsTwoNamingIt) {
+  const std::string path = writeFile("c.json", test::TranslatingCam().text());
+  struct Case {
+    std::string args, message;
+  } cases[] = {{"cam four-bar-crank-rocker", "no cam joint"},
+               {"cam '" + path + "' --joint 0", "joints[0] is a pin, not a cam"},
+               {"cam '" + path + "' --joint 9", "no joints[9]"},
+               {"cam '" + path + "' --out x.png", ".csv, .dxf or .svg"},
+               {"cam '" + path + "' --steps 2", "--steps"}};
+  for (const Case& c : cases) {
+    const test::CliResult r = run(c.args);
+    EXPECT_EQ(r.exit, 2) << c.args;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace linkage
+#endif
