@@ -1,0 +1,175 @@
+// Sensitivities (linkage/sensitivity.h) against closed forms differentiated by complex step: the
+// closed form of the point's position written over std::complex, each dimension stepped by i h
+// (h = 1e-30), the derivative Im / h, exact to rounding and independent of the solver's rows.
+#include <gtest/gtest.h>
+
+#include <complex>
+#include <cstdio>
+#include <map>
+
+#include "linkage/kinematics.h"
+#include "linkage/sensitivity.h"
+#include "mechanisms.h"
+
+namespace linkage {
+namespace {
+
+using C = std::complex<double>;
+struct CVec {
+  C x, y;
+};
+CVec operator+(CVec a, CVec b) {
+  return {a.x + b.x, a.y + b.y};
+}
+CVec operator-(CVec a, CVec b) {
+  return {a.x - b.x, a.y - b.y};
+}
+CVec operator*(C s, CVec a) {
+  return {s * a.x, s * a.y};
+}
+C dot(CVec a, CVec b) {
+  return a.x * b.x + a.y * b.y;
+}
+C cross(CVec a, CVec b) {
+  return a.x * b.y - a.y * b.x;
+}
+CVec perp(CVec a) {
+  return {-a.y, a.x};
+}
+
+constexpr double kH = 1e-30;
+
+// The four-bar's coupler point in the dimensions' own terms: the ground pivots, the crank, the
+// coupler's A-B, B-P and A-P, the rocker's B-O4; the crank at its drawn angle plus phi.
+struct FourBarDims {
+  std::map<std::string, C> v;
+  double crankRad = 0;
+  bool open = true;
+  CVec P(double phi) const {
+    const CVec O2{v.at("ground.O2.x"), v.at("ground.O2.y")};
+    const CVec O4{v.at("ground.O4.x"), v.at("ground.O4.y")};
+    const C r2 = v.at("crank.O2-A"), r3 = v.at("coupler.A-B"), r4 = v.at("rocker.B-O4");
+    const C ap = v.at("coupler.A-P"), bp = v.at("coupler.B-P");
+    const double t = crankRad + phi;
+    const CVec A = O2 + CVec{r2 * std::cos(t), r2 * std::sin(t)};
+    const CVec D = O4 - A;
+    const C d2 = dot(D, D), d = std::sqrt(d2);
+    const C m = (r3 * r3 - r4 * r4 + d2) / (2.0 * d);
+    const C h = (open ? 1.0 : -1.0) * std::sqrt(r3 * r3 - m * m);
+    const CVec B = A + (m / d) * D + (h / d) * perp(D);
+    const CVec u = (1.0 / r3) * (B - A);
+    const C px = (r3 * r3 + ap * ap - bp * bp) / (2.0 * r3);
+    const C py = std::sqrt(ap * ap - px * px);  // P drawn to the left of A->B
+    return A + px * u + py * perp(u);
+  }
+};
+
+// Largest error of every dimension's d(point)/d(dimension) over a turn, each relative to that
+// dimension's peak over the turn; `exact(name, phi)` is the independent derivative.
+template <class Exact>
+double worstRelative(Kinematics& k, PointId p, const std::vector<Dimension>& dims, Exact exact,
+                     std::vector<std::string>& compared) {
+  Sensitivity s;
+  EXPECT_TRUE(s.prepare(k, dims).ok());
+  std::vector<double> peak(dims.size(), 0), err(dims.size(), 0);
+  for (int deg = 0; deg < 360; deg += 5) {
+    EXPECT_TRUE(k.moveTo(deg).ok()) << deg;
+    EXPECT_TRUE(s.at(k).ok()) << deg;
+    for (size_t d = 0; d < dims.size(); ++d) {
+      const Vec2 got = s.point(k, p, static_cast<int>(d));
+      const Vec2 want = exact(dims[d].name, deg * M_PI / 180);
+      peak[d] = std::max(peak[d], want.norm());
+      err[d] = std::max(err[d], (got - want).norm());
+    }
+  }
+  double worst = 0;
+  for (size_t d = 0; d < dims.size(); ++d) {
+    compared.push_back(dims[d].name);
+    EXPECT_GT(peak[d], 1e-3) << dims[d].name << ": a dimension that moves nothing tests nothing";
+    worst = std::max(worst, err[d] / peak[d]);
+    std::printf("  %-16s peak %.6g  error/peak %.2e\n", dims[d].name.c_str(), peak[d],
+                err[d] / peak[d]);
+  }
+  return worst;
+}
+
+TEST(Sensitivity, FourBarDimensionsNamedAsTheEditorNamesThem) {
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  std::vector<std::string> names;
+  for (const Dimension& d : dimensions(f.m)) names.push_back(d.name);
+  const std::vector<std::string> want = {"ground.O2.x", "ground.O2.y", "ground.O4.x",
+                                         "ground.O4.y", "crank.O2-A",  "coupler.A-B",
+                                         "coupler.B-P", "coupler.A-P", "rocker.B-O4"};
+  EXPECT_EQ(names, want);
+}
+
+// Issue 29's test: a four-bar's coupler point against the closed form's derivatives with
+// respect to each link length and the ground pivots, to 1e-10 of peak, open and crossed.
+TEST(Sensitivity, FourBarCouplerPointMatchesClosedFormToTenDigits) {
+  for (bool open : {true, false}) {
+    const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, open, 35, 25);
+    Kinematics k;
+    ASSERT_TRUE(k.load(f.m).ok());
+    const std::vector<Dimension> dims = dimensions(f.m);
+    FourBarDims base;
+    for (const Dimension& d : dims) base.v[d.name] = d.value;
+    base.crankRad = 60 * M_PI / 180;
+    base.open = open;
+    auto exact = [&](const std::string& name, double phi) {
+      FourBarDims stepped = base;
+      stepped.v[name] += C(0, kH);
+      const CVec P = stepped.P(phi);
+      return Vec2(P.x.imag() / kH, P.y.imag() / kH);
+    };
+    ASSERT_NEAR(base.P(0).x.real(), k.position(f.P).x(), 1e-9);  // the same point
+    std::vector<std::string> compared;
+    std::printf("four-bar, %s:\n", open ? "open" : "crossed");
+    const double worst = worstRelative(k, f.P, dims, exact, compared);
+    EXPECT_EQ(compared.size(), 9u);
+    EXPECT_LT(worst, 1e-10) << (open ? "open" : "crossed");
+  }
+}
+
+// A slider-crank, block in a ground slot and pin in the slot: the slot's offset and angle too.
+TEST(Sensitivity, SliderCrankMatchesClosedFormWithTheSlotsOffsetAndAngle) {
+  const double r = 20, l = 70, e = 8, crankDeg = 30;
+  for (bool pinInSlot : {false, true}) {
+    const test::SliderCrank sc =
+        test::sliderCrank(r, l, e, crankDeg, Direction::Ccw, 60, pinInSlot);
+    Kinematics k;
+    ASSERT_TRUE(k.load(sc.m).ok());
+    const std::vector<Dimension> dims = dimensions(sc.m);
+    std::map<std::string, C> base;
+    for (const Dimension& d : dims) base[d.name] = 0;
+    auto B = [&](const std::map<std::string, C>& v, double phi) {
+      const CVec O{v.at("ground.O.x"), v.at("ground.O.y")};
+      const C cr = r + v.at("crank.O-A"), rl = l + v.at("rod.A-B");
+      const C alpha = M_PI / 2 + v.at("ground.guide.angle") * (M_PI / 180);
+      // The slot's normal is perp of its direction (0, 1): (-1, 0) per mm of offset.
+      const CVec p0{e - v.at("ground.guide.offset"), C(0)};
+      const CVec dir{std::cos(alpha), std::sin(alpha)};
+      const double t = crankDeg * M_PI / 180 + phi;
+      const CVec A = O + CVec{cr * std::cos(t), cr * std::sin(t)};
+      const CVec w = A - p0;
+      const C c = cross(dir, w);
+      return p0 + (dot(dir, w) + std::sqrt(rl * rl - c * c)) * dir;
+    };
+    for (const Dimension& d : dims)  // the closed form above counts from the drawn values
+      if (d.name == "ground.O.x" || d.name == "ground.O.y") base[d.name] = d.value;
+    auto exact = [&](const std::string& name, double phi) {
+      std::map<std::string, C> v = base;
+      v.at(name) += C(0, kH);
+      const CVec P = B(v, phi);
+      return Vec2(P.x.imag() / kH, P.y.imag() / kH);
+    };
+    ASSERT_NEAR(B(base, 0).y.real(), k.position(sc.B).y(), 1e-9);
+    std::vector<std::string> compared;
+    std::printf("slider-crank, %s:\n", pinInSlot ? "pin in slot" : "block");
+    const double worst = worstRelative(k, sc.B, dims, exact, compared);
+    EXPECT_EQ(compared.size(), 6u);
+    EXPECT_LT(worst, 1e-10) << (pinInSlot ? "pin in slot" : "block");
+  }
+}
+
+}  // namespace
+}  // namespace linkage
