@@ -20,6 +20,7 @@ Command balanceCommand(Parser& parser);
 Command slotsCommand(Parser& parser);
 Command clearanceCommand(Parser& parser);
 Command timingCommand(Parser& parser);
+Command sensitivityCommand(Parser& parser);
 }  // namespace linkage::cli
 
 namespace {
@@ -39,6 +40,8 @@ Commands:
   slots MODEL         travel of every block and pin along its slot against the slot's ends
   clearance MODEL ... distance between two moving points (or a point and a slot): minima
   timing MODEL ...    windows of the machine cycle (timing diagram) and their conflicts
+  sensitivity MODEL --point body.point
+                      how far a point moves per mm of each dimension, exactly, over a turn
   examples            list the example mechanisms that MODEL can name
 
 MODEL is a .linkage.json file or the name of an example (e.g. wanzer-inversion-2).
@@ -59,7 +62,7 @@ int main(int argc, char** argv) {
   std::vector<Command> commands;
   for (auto* add : {analyzeCommand, infoCommand, icsCommand, plotCommand, limitsCommand,
                     transmissionCommand, studyCommand, dynamicsCommand, balanceCommand,
-                    slotsCommand, clearanceCommand, timingCommand})
+                    slotsCommand, clearanceCommand, timingCommand, sensitivityCommand})
     commands.push_back(add(parser));
   commands.push_back({&parser.command("examples", kExamplesHelp), [] {
                         for (const std::string& n : linkage::listExamples(executablePath))
