@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 
+#include "examples.h"
 #include "linkage/kinematics.h"
 #include "linkage/sensitivity.h"
 #include "mechanisms.h"
@@ -168,6 +169,112 @@ TEST(Sensitivity, SliderCrankMatchesClosedFormWithTheSlotsOffsetAndAngle) {
     const double worst = worstRelative(k, sc.B, dims, exact, compared);
     EXPECT_EQ(compared.size(), 6u);
     EXPECT_LT(worst, 1e-10) << (pinInSlot ? "pin in slot" : "block");
+  }
+}
+
+// A gear's ratio: the planet on a fixed sun (resources/examples/planet-epicycloid), arm 30 from
+// the sun's centre, P 10 from the planet's; the gear row gives the planet's angle (1 - ratio) phi.
+TEST(Sensitivity, PlanetGearsRatioAndLengthsMatchTheEpicycloid) {
+  const Mechanism m = test::example("planet-epicycloid");
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const std::vector<Dimension> dims = dimensions(m);
+  std::map<std::string, C> base;
+  for (const Dimension& d : dims) base[d.name] = d.value;
+  ASSERT_EQ(base.count("ground-planet.ratio"), 1u);
+  ASSERT_EQ(base.at("ground-planet.ratio").real(), -2);
+  auto P = [](const std::map<std::string, C>& v, double phi) {
+    const C a = v.at("arm.S-B"), b = v.at("planet.B-P"),
+            t = (1.0 - v.at("ground-planet.ratio")) * phi;
+    return CVec{v.at("ground.S.x") + a * std::cos(phi) + b * std::cos(t),
+                v.at("ground.S.y") + a * std::sin(phi) + b * std::sin(t)};
+  };
+  auto exact = [&](const std::string& name, double phi) {
+    std::map<std::string, C> v = base;
+    v.at(name) += C(0, kH);
+    const CVec p = P(v, phi);
+    return Vec2(p.x.imag() / kH, p.y.imag() / kH);
+  };
+  const PointId out = *m.findPoint("planet.P");
+  std::vector<std::string> compared;
+  std::printf("planet gear:\n");
+  const double worst = worstRelative(k, out, dims, exact, compared);
+  EXPECT_EQ(compared.size(), 5u);
+  EXPECT_LT(worst, 1e-10);
+}
+
+// Machines no closed form covers: moving the whole ground (its points and its straight slots)
+// by a vector moves every point of the mechanism by that vector, so at every pose the ground's
+// x derivatives (a slot's offset counted by its normal's x) add up to (1, 0) and the y ones to
+// (0, 1), for every point of every body: every row kind and every slot, exactly.
+TEST(Sensitivity, MovingTheGroundMovesEveryPointOfTheMachines) {
+  for (const char* name : {"wanzer-inversion-2", "drop-feed", "lockstitch-machine",
+                           "overedge-needle-arm", "needle-876-alpha-35", "gear-four-bar",
+                           "lockstitch-arm-shaft", "slider-crank-22a-lambda-0.3"}) {
+    const Mechanism m = test::example(name);
+    Kinematics k;
+    ASSERT_TRUE(k.load(m).ok()) << name;
+    const BodyId ground = m.ground()->id;
+    for (const Slot& s : m.slots) ASSERT_FALSE(s.body == ground && s.arc()) << name;
+    const std::vector<Dimension> dims = dimensions(m);
+    std::vector<Vec2> weight(dims.size(), Vec2::Zero());  // (x, y) share of each dimension
+    for (size_t d = 0; d < dims.size(); ++d) {
+      const Dimension& dim = dims[d];
+      for (const auto& [p, move] : dim.points)
+        if (m.point(p)->body == ground) weight[d] = move;
+      for (const Dimension::SlotMove& sm : dim.slots)
+        if (m.slot(sm.slot)->body == ground && sm.p0 == sm.p1) weight[d] = sm.p0;  // offset
+    }
+    Sensitivity s;
+    ASSERT_TRUE(s.prepare(k, dims).ok()) << name;
+    double worst = 0;
+    for (int deg = 0; deg < 360; deg += 15) {
+      ASSERT_TRUE(k.moveTo(deg).ok()) << name << " " << deg;
+      ASSERT_TRUE(s.at(k).ok()) << name << " " << deg;
+      for (const Point& p : m.points) {
+        Vec2 x = Vec2::Zero(), y = Vec2::Zero();
+        for (size_t d = 0; d < dims.size(); ++d) {
+          x += weight[d].x() * s.point(k, p.id, static_cast<int>(d));
+          y += weight[d].y() * s.point(k, p.id, static_cast<int>(d));
+        }
+        worst = std::max({worst, (x - Vec2(1, 0)).norm(), (y - Vec2(0, 1)).norm()});
+      }
+    }
+    std::printf("  %-28s moving the ground: worst error %.2e\n", name, worst);
+    EXPECT_LT(worst, 1e-10) << name;
+  }
+}
+
+// The drawing scaled about the origin scales the motion: each point's position at a crank angle
+// is homogeneous of degree one in the lengths (angles and ratios kept), so by Euler's theorem
+// sum over the lengths of length * d(position)/d(length) is the position itself. Every body's
+// dimensions of the machines, exactly (arc slots, which have no dimension, left out).
+TEST(Sensitivity, ScalingTheDrawingScalesEveryPointOfTheMachines) {
+  for (const char* name : {"wanzer-inversion-2", "drop-feed", "lockstitch-machine",
+                           "overedge-needle-arm", "needle-876-alpha-35", "gear-four-bar",
+                           "lockstitch-arm-shaft", "slider-crank-22a-lambda-0.3"}) {
+    const Mechanism m = test::example(name);
+    Kinematics k;
+    ASSERT_TRUE(k.load(m).ok()) << name;
+    for (const Slot& s : m.slots) ASSERT_FALSE(s.arc()) << name;
+    const std::vector<Dimension> dims = dimensions(m);
+    Sensitivity s;
+    ASSERT_TRUE(s.prepare(k, dims).ok()) << name;
+    double worst = 0, size = 0;
+    for (int deg = 0; deg < 360; deg += 15) {
+      ASSERT_TRUE(k.moveTo(deg).ok()) << name << " " << deg;
+      ASSERT_TRUE(s.at(k).ok()) << name << " " << deg;
+      for (const Point& p : m.points) {
+        Vec2 sum = Vec2::Zero();
+        for (size_t d = 0; d < dims.size(); ++d)
+          if (dims[d].unit == Dimension::Unit::Mm)
+            sum += dims[d].value * s.point(k, p.id, static_cast<int>(d));
+        worst = std::max(worst, (sum - k.position(p.id)).norm());
+        size = std::max(size, k.position(p.id).norm());
+      }
+    }
+    std::printf("  %-28s scaling: worst error %.2e of %.4g mm\n", name, worst, size);
+    EXPECT_LT(worst, 1e-10 * size) << name;
   }
 }
 

@@ -90,7 +90,16 @@ void slotDimensions(const Mechanism& m, const Slot& s, std::vector<Dimension>& o
   const std::optional<Guide> g = guideOf(s);
   if (!g) return;
   const std::string pre = m.slotLabel(s.id) + ".";
-  Dimension offset = distance(pre + "offset", g->normal.dot(s.p0));
+  // Measured from the body's first point (the ground's: the drawing's origin), so that the
+  // body's lengths and its slot's offset scale together.
+  Vec2 from = Vec2::Zero();
+  if (!m.body(s.body)->ground)
+    for (const Point& q : m.points)
+      if (q.body == s.body) {
+        from = q.pos;
+        break;
+      }
+  Dimension offset = distance(pre + "offset", g->normal.dot(s.p0 - from));
   offset.slots.push_back({s.id, g->normal, g->normal});
   Dimension angle =
       distance(pre + "angle", std::atan2(g->direction.y(), g->direction.x()) * 180 / M_PI);

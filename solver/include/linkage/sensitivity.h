@@ -33,8 +33,9 @@ namespace linkage {
 //   `body.Pk.along`, `body.Pk.across`. A body whose P0 and P1 coincide: each later point's
 //   `body.Pk.x`, `body.Pk.y`.
 // - each ground point: `ground.O.x`, `ground.O.y` (the ground's own name).
-// - each straight slot: `body.slot.offset` (moved along its normal, mm) and `body.slot.angle`
-//   (turned about its first end, degrees). Arc slots have none yet.
+// - each straight slot: `body.slot.offset` (moved along its normal, mm; its value the line's
+//   signed distance from the body's first point, the ground's from the drawing's origin) and
+//   `body.slot.angle` (turned about its first end, degrees). Arc slots have none yet.
 // - each gear: `A-B.ratio` (the bodies of its points a and b).
 struct Dimension {
   enum class Unit { Mm, Deg, Ratio };
