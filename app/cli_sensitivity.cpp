@@ -11,7 +11,8 @@ namespace linkage::cli {
 
 namespace {
 
-const char* kHelp = R"(usage: linkage-cli sensitivity MODEL --point body.point [--steps N]
+const char* kHelp =
+    R"(usage: linkage-cli sensitivity MODEL --point body.point [--steps N] [--velocity]
 
 The derivative of a point's position with respect to every dimension of MODEL, at each crank
 angle of one turn: exact, from the constraint Jacobian (dq/dp = -J_q^-1 J_p), not by finite
@@ -26,12 +27,14 @@ degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
 
   --point body.point   the point (required)
   --steps N            steps per revolution (default 360)
+  --velocity           also the point's velocity's derivatives, mm/s per mm at the driver's
+                       speed: columns dvx_mm_s_per_mm,dvy_mm_s_per_mm
 
 Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
 significant digits. A singular position (a dead point of the output, where the derivatives are
 unbounded) writes no rows and says so on standard error.
 
-Not yet: spatial models (planes), ball rods, cams; velocity and acceleration sensitivities.
+Not yet: spatial models (planes), ball rods, cams; acceleration sensitivities.
 
 Exit status: 0 done, 2 bad input (an unknown point, a model it cannot differentiate yet), 3 the
 crank cannot turn fully (the rows up to there are written).
@@ -40,14 +43,21 @@ crank cannot turn fully (the rows up to there are written).
 struct Options {
   std::string model, point;
   int steps = 360;
+  bool velocity = false;
 };
 
-std::string rows(const Kinematics& k, const Sensitivity& s, PointId p, double deg) {
+std::string rows(const Kinematics& k, const Sensitivity& s, PointId p, double deg, bool velocity) {
   std::string out;
   const std::string at = formatNumber(deg) + ",";
   for (size_t d = 0; d < s.dims().size(); ++d) {
-    const Vec2 v = s.point(k, p, static_cast<int>(d));
-    out += at + s.dims()[d].name + "," + formatNumber(v.x()) + "," + formatNumber(v.y()) + "\n";
+    const int i = static_cast<int>(d);
+    const Vec2 x = s.point(k, p, i);
+    out += at + s.dims()[d].name + "," + formatNumber(x.x()) + "," + formatNumber(x.y());
+    if (velocity) {
+      const Vec2 v = s.velocity(k, p, i);
+      out += "," + formatNumber(v.x()) + "," + formatNumber(v.y());
+    }
+    out += "\n";
   }
   return out;
 }
@@ -69,7 +79,8 @@ int sensitivity(const Options& o) {
     error("sensitivity: " + s.message);
     return exitFor(s);
   }
-  std::string out = "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm\n";
+  std::string out = "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm";
+  out += o.velocity ? ",dvx_mm_s_per_mm,dvy_mm_s_per_mm\n" : "\n";
   Status failed;
   for (int i = 0; i < o.steps && failed.ok(); ++i) {
     const double deg = 360.0 * i / o.steps;
@@ -80,7 +91,7 @@ int sensitivity(const Options& o) {
     else if (!s.ok())
       failed = s;
     else
-      out += rows(k, sens, p, deg);
+      out += rows(k, sens, p, deg, o.velocity);
   }
   std::cout << out << std::flush;
   if (!failed.ok()) {
@@ -98,6 +109,7 @@ Command sensitivityCommand(Parser& parser) {
   addModel(c, o->model);
   required(addText(c, "--point", o->point));
   addWhole(c, "--steps", o->steps, 1, 1'000'000);
+  addFlag(c, "--velocity", o->velocity);
   return {&c, [o] { return sensitivity(*o); }};
 }
 

@@ -3,6 +3,7 @@
 // (h = 1e-30), the derivative Im / h, exact to rounding and independent of the solver's rows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <complex>
 #include <cstdio>
 #include <map>
@@ -16,6 +17,7 @@ namespace linkage {
 namespace {
 
 using C = std::complex<double>;
+constexpr double kH = 1e-30;
 struct CVec {
   C x, y;
 };
@@ -37,8 +39,14 @@ C cross(CVec a, CVec b) {
 CVec perp(CVec a) {
   return {-a.y, a.x};
 }
-
-constexpr double kH = 1e-30;
+// A point and its velocity per radian of crank.
+struct PV {
+  CVec p, v;
+};
+// d(point), d(velocity per radian) of a closed form stepped by i kH.
+std::pair<Vec2, Vec2> imaginary(const PV& x) {
+  return {Vec2(x.p.x.imag(), x.p.y.imag()) / kH, Vec2(x.v.x.imag(), x.v.y.imag()) / kH};
+}
 
 // The four-bar's coupler point in the dimensions' own terms: the ground pivots, the crank, the
 // coupler's A-B, B-P and A-P, the rocker's B-O4; the crank at its drawn angle plus phi.
@@ -46,7 +54,7 @@ struct FourBarDims {
   std::map<std::string, C> v;
   double crankRad = 0;
   bool open = true;
-  CVec P(double phi) const {
+  PV P(double phi) const {
     const CVec O2{v.at("ground.O2.x"), v.at("ground.O2.y")};
     const CVec O4{v.at("ground.O4.x"), v.at("ground.O4.y")};
     const C r2 = v.at("crank.O2-A"), r3 = v.at("coupler.A-B"), r4 = v.at("rocker.B-O4");
@@ -61,35 +69,49 @@ struct FourBarDims {
     const CVec u = (1.0 / r3) * (B - A);
     const C px = (r3 * r3 + ap * ap - bp * bp) / (2.0 * r3);
     const C py = std::sqrt(ap * ap - px * px);  // P drawn to the left of A->B
-    return A + px * u + py * perp(u);
+    const CVec q = px * u + py * perp(u);       // A -> P
+    // The loop's velocities (reference/four_bar.h): the coupler's rate by Cramer's rule.
+    const CVec a = A - O2, b = B - A, c = B - O4;
+    const C w3 = (a.y * (-c.x) - c.y * (-a.x)) / (b.y * c.x - c.y * b.x);
+    return {A + q, perp(a) + w3 * perp(q)};
   }
 };
 
-// Largest error of every dimension's d(point)/d(dimension) over a turn, each relative to that
-// dimension's peak over the turn; `exact(name, phi)` is the independent derivative.
+// Largest error of every dimension's d(point)/d(dimension) and d(velocity)/d(dimension) over a
+// turn, each relative to its peak over the turn; `exact(name, phi)` gives the independent two
+// (the velocity's per radian of crank).
 template <class Exact>
 double worstRelative(Kinematics& k, PointId p, const std::vector<Dimension>& dims, Exact exact,
                      std::vector<std::string>& compared) {
   Sensitivity s;
   EXPECT_TRUE(s.prepare(k, dims).ok());
-  std::vector<double> peak(dims.size(), 0), err(dims.size(), 0);
+  const size_t n = dims.size();
+  std::vector<double> peak(n, 0), err(n, 0), peakV(n, 0), errV(n, 0);
   for (int deg = 0; deg < 360; deg += 5) {
     EXPECT_TRUE(k.moveTo(deg).ok()) << deg;
     EXPECT_TRUE(s.at(k).ok()) << deg;
-    for (size_t d = 0; d < dims.size(); ++d) {
+    for (size_t d = 0; d < n; ++d) {
+      const auto [want, wantV] = exact(dims[d].name, deg * M_PI / 180);
       const Vec2 got = s.point(k, p, static_cast<int>(d));
-      const Vec2 want = exact(dims[d].name, deg * M_PI / 180);
+      const Vec2 gotV = s.velocity(k, p, static_cast<int>(d)) / k.omega();
       peak[d] = std::max(peak[d], want.norm());
       err[d] = std::max(err[d], (got - want).norm());
+      peakV[d] = std::max(peakV[d], wantV.norm());
+      errV[d] = std::max(errV[d], (gotV - wantV).norm());
     }
   }
+  // A velocity a dimension does not change (moving a slider-crank's pivot along its slot) is
+  // measured against the largest velocity peak.
+  const double anyV = *std::max_element(peakV.begin(), peakV.end());
   double worst = 0;
-  for (size_t d = 0; d < dims.size(); ++d) {
+  for (size_t d = 0; d < n; ++d) {
     compared.push_back(dims[d].name);
     EXPECT_GT(peak[d], 1e-3) << dims[d].name << ": a dimension that moves nothing tests nothing";
-    worst = std::max(worst, err[d] / peak[d]);
-    std::printf("  %-16s peak %.6g  error/peak %.2e\n", dims[d].name.c_str(), peak[d],
-                err[d] / peak[d]);
+    const double relV = errV[d] / (peakV[d] > 1e-12 ? peakV[d] : anyV);
+    worst = std::max({worst, err[d] / peak[d], relV});
+    std::printf(
+        "  %-20s position: peak %-9.6g error/peak %.2e  velocity: peak %-9.6g error/peak %.2e\n",
+        dims[d].name.c_str(), peak[d], err[d] / peak[d], peakV[d], relV);
   }
   return worst;
 }
@@ -119,10 +141,10 @@ TEST(Sensitivity, FourBarCouplerPointMatchesClosedFormToTenDigits) {
     auto exact = [&](const std::string& name, double phi) {
       FourBarDims stepped = base;
       stepped.v[name] += C(0, kH);
-      const CVec P = stepped.P(phi);
-      return Vec2(P.x.imag() / kH, P.y.imag() / kH);
+      return imaginary(stepped.P(phi));
     };
-    ASSERT_NEAR(base.P(0).x.real(), k.position(f.P).x(), 1e-9);  // the same point
+    ASSERT_NEAR(base.P(0).p.x.real(), k.position(f.P).x(), 1e-9);
+    ASSERT_NEAR(base.P(0).v.y.real() * k.omega(), k.velocity(f.P).y(), 1e-9);  // the same point
     std::vector<std::string> compared;
     std::printf("four-bar, %s:\n", open ? "open" : "crossed");
     const double worst = worstRelative(k, f.P, dims, exact, compared);
@@ -151,19 +173,19 @@ TEST(Sensitivity, SliderCrankMatchesClosedFormWithTheSlotsOffsetAndAngle) {
       const CVec dir{std::cos(alpha), std::sin(alpha)};
       const double t = crankDeg * M_PI / 180 + phi;
       const CVec A = O + CVec{cr * std::cos(t), cr * std::sin(t)};
-      const CVec w = A - p0;
-      const C c = cross(dir, w);
-      return p0 + (dot(dir, w) + std::sqrt(rl * rl - c * c)) * dir;
+      const CVec w = A - p0, vA = perp(A - O);
+      const C c = cross(dir, w), root = std::sqrt(rl * rl - c * c);
+      return PV{p0 + (dot(dir, w) + root) * dir, (dot(dir, vA) - c * cross(dir, vA) / root) * dir};
     };
     for (const Dimension& d : dims)  // the closed form above counts from the drawn values
       if (d.name == "ground.O.x" || d.name == "ground.O.y") base[d.name] = d.value;
     auto exact = [&](const std::string& name, double phi) {
       std::map<std::string, C> v = base;
       v.at(name) += C(0, kH);
-      const CVec P = B(v, phi);
-      return Vec2(P.x.imag() / kH, P.y.imag() / kH);
+      return imaginary(B(v, phi));
     };
-    ASSERT_NEAR(B(base, 0).y.real(), k.position(sc.B).y(), 1e-9);
+    ASSERT_NEAR(B(base, 0).p.y.real(), k.position(sc.B).y(), 1e-9);
+    ASSERT_NEAR(B(base, 0).v.y.real() * k.omega(), k.velocity(sc.B).y(), 1e-9);
     std::vector<std::string> compared;
     std::printf("slider-crank, %s:\n", pinInSlot ? "pin in slot" : "block");
     const double worst = worstRelative(k, sc.B, dims, exact, compared);
@@ -186,14 +208,16 @@ TEST(Sensitivity, PlanetGearsRatioAndLengthsMatchTheEpicycloid) {
   auto P = [](const std::map<std::string, C>& v, double phi) {
     const C a = v.at("arm.S-B"), b = v.at("planet.B-P"),
             t = (1.0 - v.at("ground-planet.ratio")) * phi;
-    return CVec{v.at("ground.S.x") + a * std::cos(phi) + b * std::cos(t),
-                v.at("ground.S.y") + a * std::sin(phi) + b * std::sin(t)};
+    const C wt = 1.0 - v.at("ground-planet.ratio");
+    return PV{
+        {v.at("ground.S.x") + a * std::cos(phi) + b * std::cos(t),
+         v.at("ground.S.y") + a * std::sin(phi) + b * std::sin(t)},
+        {-a * std::sin(phi) - b * wt * std::sin(t), a * std::cos(phi) + b * wt * std::cos(t)}};
   };
   auto exact = [&](const std::string& name, double phi) {
     std::map<std::string, C> v = base;
     v.at(name) += C(0, kH);
-    const CVec p = P(v, phi);
-    return Vec2(p.x.imag() / kH, p.y.imag() / kH);
+    return imaginary(P(v, phi));
   };
   const PointId out = *m.findPoint("planet.P");
   std::vector<std::string> compared;
@@ -204,9 +228,10 @@ TEST(Sensitivity, PlanetGearsRatioAndLengthsMatchTheEpicycloid) {
 }
 
 // Machines no closed form covers: moving the whole ground (its points and its straight slots)
-// by a vector moves every point of the mechanism by that vector, so at every pose the ground's
-// x derivatives (a slot's offset counted by its normal's x) add up to (1, 0) and the y ones to
-// (0, 1), for every point of every body: every row kind and every slot, exactly.
+// by a vector moves every point of the mechanism by that vector and changes no velocity, so at
+// every pose the ground's x derivatives (a slot's offset counted by its normal's x) add up to (1,
+// 0) and the y ones to (0, 1), for every point of every body: every row kind and every slot,
+// exactly.
 TEST(Sensitivity, MovingTheGroundMovesEveryPointOfTheMachines) {
   for (const char* name : {"wanzer-inversion-2", "drop-feed", "lockstitch-machine",
                            "overedge-needle-arm", "needle-876-alpha-35", "gear-four-bar",
@@ -232,12 +257,16 @@ TEST(Sensitivity, MovingTheGroundMovesEveryPointOfTheMachines) {
       ASSERT_TRUE(k.moveTo(deg).ok()) << name << " " << deg;
       ASSERT_TRUE(s.at(k).ok()) << name << " " << deg;
       for (const Point& p : m.points) {
-        Vec2 x = Vec2::Zero(), y = Vec2::Zero();
+        Vec2 x = Vec2::Zero(), y = Vec2::Zero(), vx = Vec2::Zero(), vy = Vec2::Zero();
         for (size_t d = 0; d < dims.size(); ++d) {
-          x += weight[d].x() * s.point(k, p.id, static_cast<int>(d));
-          y += weight[d].y() * s.point(k, p.id, static_cast<int>(d));
+          const int i = static_cast<int>(d);
+          x += weight[d].x() * s.point(k, p.id, i);
+          y += weight[d].y() * s.point(k, p.id, i);
+          vx += weight[d].x() * s.velocity(k, p.id, i) / k.omega();  // velocities do not change
+          vy += weight[d].y() * s.velocity(k, p.id, i) / k.omega();
         }
-        worst = std::max({worst, (x - Vec2(1, 0)).norm(), (y - Vec2(0, 1)).norm()});
+        worst = std::max(
+            {worst, (x - Vec2(1, 0)).norm(), (y - Vec2(0, 1)).norm(), vx.norm(), vy.norm()});
       }
     }
     std::printf("  %-28s moving the ground: worst error %.2e\n", name, worst);
@@ -246,9 +275,9 @@ TEST(Sensitivity, MovingTheGroundMovesEveryPointOfTheMachines) {
 }
 
 // The drawing scaled about the origin scales the motion: each point's position at a crank angle
-// is homogeneous of degree one in the lengths (angles and ratios kept), so by Euler's theorem
-// sum over the lengths of length * d(position)/d(length) is the position itself. Every body's
-// dimensions of the machines, exactly (arc slots, which have no dimension, left out).
+// (and its velocity) is homogeneous of degree one in the lengths (angles and ratios kept), so by
+// Euler's theorem sum over the lengths of length * d(position)/d(length) is the position itself.
+// Every body's dimensions of the machines, exactly (arc slots, which have no dimension, left out).
 TEST(Sensitivity, ScalingTheDrawingScalesEveryPointOfTheMachines) {
   for (const char* name : {"wanzer-inversion-2", "drop-feed", "lockstitch-machine",
                            "overedge-needle-arm", "needle-876-alpha-35", "gear-four-bar",
@@ -265,12 +294,16 @@ TEST(Sensitivity, ScalingTheDrawingScalesEveryPointOfTheMachines) {
       ASSERT_TRUE(k.moveTo(deg).ok()) << name << " " << deg;
       ASSERT_TRUE(s.at(k).ok()) << name << " " << deg;
       for (const Point& p : m.points) {
-        Vec2 sum = Vec2::Zero();
+        Vec2 sum = Vec2::Zero(), sumV = Vec2::Zero();
         for (size_t d = 0; d < dims.size(); ++d)
-          if (dims[d].unit == Dimension::Unit::Mm)
+          if (dims[d].unit == Dimension::Unit::Mm) {
             sum += dims[d].value * s.point(k, p.id, static_cast<int>(d));
-        worst = std::max(worst, (sum - k.position(p.id)).norm());
-        size = std::max(size, k.position(p.id).norm());
+            sumV += dims[d].value * s.velocity(k, p.id, static_cast<int>(d));
+          }
+        // Velocities per radian of crank (mm), homogeneous of degree one too.
+        const Vec2 v = k.velocity(p.id) / k.omega();
+        worst = std::max({worst, (sum - k.position(p.id)).norm(), (sumV / k.omega() - v).norm()});
+        size = std::max({size, k.position(p.id).norm(), v.norm()});
       }
     }
     std::printf("  %-28s scaling: worst error %.2e of %.4g mm\n", name, worst, size);

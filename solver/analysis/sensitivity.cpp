@@ -1,15 +1,18 @@
 // dq/dp = -J_q^-1 J_p at a pose (linkage/sensitivity.h). J_p, row by row: a row's residual
 // depends on a dimension only through its constants (the local vectors s of its points, a slot's
-// point u and normal n, a gear's coefficients), whose derivatives come from how the element kind
-// compiled them (elements/*.cpp) and the dimension's move of the drawing; with the frames held a
-// sketch move is the same move of the local vector (frames are at angle 0 as drawn).
+// point u and normal n, a gear's coefficients), whose changes come from how the element kind
+// compiled them (elements/*.cpp; rowMove) and the dimension's move of the drawing; with the
+// frames held a sketch move is the same move of the local vector (frames are at angle 0 as
+// drawn). Then the velocities': J q' + Phi_phi = 0 at every p, so J dq'/dp = -dV, dV the change
+// of each row's rate V = J q' (q' held) along dq/dp and the constants' change (rowChange):
 //
-//   Coincident  Phi = r_i + R_i s_i - r_j - R_j s_j     dPhi = R_i ds_i - R_j ds_j
-//   OnLine      Phi = (R_j n) . (p - q)                 dPhi = (R_j dn) . (p - q)
-//                                                             + (R_j n) . (R_i ds_i - R_j du)
-//   OnCircle    Phi = (d . d - rho^2) / (2 rho)         dPhi = d . (R_i ds_i) / rho  (centre and
-//                                                             radius: arc slots have no dimension)
-//   Angles      Phi = L (sum c_k theta_k - ...)         dPhi = L sum dc_k theta_k (a gear's ratio)
+//   Coincident  Phi = p - q                  V = p' - q'           (p = r_i + R_i s_i, ...)
+//   OnLine      Phi = n . (p - q)            V = n' . (p - q) + n . (p' - q')
+//   OnCircle    Phi = (d . d - rho^2)/(2 rho) V = d . d' / rho      (centre and radius: arc slots
+//                                                                   have no dimension)
+//   Angles      Phi = L (sum c_k theta_k ...) V = L (sum c_k w_k ...) (a gear's ratio: dc)
+//
+// each changed to first order by the bodies' changes (dr, dtheta) and the constants' (ds, dn, dc).
 #include <Eigen/LU>
 #include <cmath>
 
@@ -52,57 +55,125 @@ void slotMove(const Mechanism& m, const Joint& j, const Dimension& dim, Vec2& du
   }
 }
 
-Vec2 coincident(const Mechanism& m, const Joint& j, const BodyView& bi, const BodyView& bj,
-                const Moves& mv) {
-  if (kindOf(j).role == Role::Prismatic) return bi.R * arcBlockMove(m, j, mv.at(j.a));
-  return bi.R * mv.at(j.a) - bj.R * mv.at(j.b);
+// A row's constants as they move with a dimension: its local vectors s, a straight slot's
+// normal n, its coefficients c.
+struct RowMove {
+  Vec2 s[2] = {Vec2::Zero(), Vec2::Zero()};
+  Vec2 n = Vec2::Zero();
+  double c[3] = {0, 0, 0};
+};
+
+RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& mv) {
+  RowMove out;
+  const Role role = kindOf(j).role;
+  switch (r.kind) {
+    case Primitive::Coincident:
+      if (role == Role::Prismatic) {
+        out.s[0] = arcBlockMove(m, j, mv.at(j.a));
+      } else {
+        out.s[0] = mv.at(j.a);
+        out.s[1] = mv.at(j.b);
+      }
+      break;
+    case Primitive::OnLine:
+      out.s[0] = mv.at(j.a);
+      slotMove(m, j, mv.dim, out.s[1], out.n);
+      break;
+    case Primitive::OnCircle:  // arc slots have no dimension: centre and radius stay
+      out.s[0] = mv.at(j.a);
+      break;
+    case Primitive::Angles:
+      // theta_b - ratio theta_a + (ratio - 1) theta_c: dc = (0, -1, 1) per unit ratio.
+      if (!r.isDriver() && role == Role::Coupling && mv.dim.ratioOf == j.id) {
+        out.c[1] = -1;
+        out.c[2] = 1;
+      }
+      break;
+    default:
+      break;
+  }
+  return out;
 }
 
-double onLine(const Mechanism& m, const Joint& j, const Row& r, const BodyView& bi,
-              const BodyView& bj, const Moves& mv) {
-  Vec2 du, dn;
-  slotMove(m, j, mv.dim, du, dn);
-  const Vec2 d = bi.r + bi.R * r.s[0] - bj.r - bj.R * r.s[1];
-  return (bj.R * dn).dot(d) + (bj.R * r.n).dot(bi.R * mv.at(j.a) - bj.R * du);
+// A body's pose and rates (BodyView) with the first-order change dr, dtheta of its pose (zero
+// for the ground): a point s of it, its rate (d/dphi) and their changes for a change ds of s,
+// the body's rates held.
+struct Moving {
+  const BodyView& b;
+  Vec2 dr = Vec2::Zero();
+  double dtheta = 0;
+  struct At {
+    Vec2 p, dp, v, dv;
+  };
+  At at(const Vec2& s, const Vec2& ds) const {
+    const Vec2 a = b.R * s, da = perp(a) * dtheta + b.R * ds;
+    return {b.r + a, dr + da, b.v + b.w * perp(a), b.w * perp(da)};
+  }
+};
+
+// A row's residual and its rate, Phi and V = J q' + Phi_phi, changed to first order by the
+// bodies' changes and the constants' (dPhi, dV; q' held in dV): J_p with no body change, and the
+// velocity sensitivity's right-hand side with dq/dp.
+void rowChange(const System& sys, const Row& r, const Moving& i, const Moving& j, const Moving& k,
+               const RowMove& mv, double dPhi[2], double dV[2]) {
+  const Moving::At p = i.at(r.s[0], mv.s[0]), q = j.at(r.s[1], mv.s[1]);
+  const Vec2 d = p.p - q.p, dd = p.dp - q.dp, v = p.v - q.v, dv = p.dv - q.dv;
+  switch (r.kind) {
+    case Primitive::Coincident:
+      dPhi[0] = dd.x(), dPhi[1] = dd.y(), dV[0] = dv.x(), dV[1] = dv.y();
+      return;
+    case Primitive::OnLine: {
+      const Vec2 n = j.b.R * r.n, dn = perp(n) * j.dtheta + j.b.R * mv.n;
+      const Vec2 nv = j.b.w * perp(n), dnv = j.b.w * perp(dn);
+      dPhi[0] = dn.dot(d) + n.dot(dd);
+      dV[0] = dnv.dot(d) + nv.dot(dd) + dn.dot(v) + n.dot(dv);
+      return;
+    }
+    case Primitive::OnCircle:
+      dPhi[0] = d.dot(dd) / r.c[0];
+      dV[0] = (dd.dot(v) + d.dot(dv)) / r.c[0];
+      return;
+    case Primitive::Angles: {
+      const Moving* m[3] = {&i, &j, &k};  // the ground's angle and rate are 0
+      dPhi[0] = dV[0] = 0;
+      for (int c = 0; c < 3; ++c) {
+        dPhi[0] += sys.size * (r.c[c] * m[c]->dtheta + mv.c[c] * m[c]->b.theta);
+        dV[0] += sys.size * mv.c[c] * m[c]->b.w;
+      }
+      return;
+    }
+    default:
+      dPhi[0] = dPhi[1] = dV[0] = dV[1] = 0;
+  }
 }
 
-double onCircle(const Joint& j, const Row& r, const BodyView& bi, const BodyView& bj,
-                const Moves& mv) {
-  const Vec2 d = bi.r + bi.R * r.s[0] - bj.r - bj.R * r.s[1];
-  return d.dot(bi.R * mv.at(j.a)) / r.c[0];
-}
-
-double angles(const System& sys, const Joint& j, const Row& r, const std::vector<BodyView>& views,
-              const Moves& mv) {
-  if (r.isDriver() || kindOf(j).role != Role::Coupling || mv.dim.ratioOf != j.id) return 0;
-  // theta_b - ratio theta_a + (ratio - 1) theta_c: dc = (0, -1, 1) per unit ratio.
-  return sys.size * (-views[r.body[1] + 1].theta + views[r.body[2] + 1].theta);
-}
-
-// The derivative of every row's residual (at the views) with respect to one dimension.
-void rowDerivatives(const Mechanism& m, const System& sys, const std::vector<BodyView>& views,
-                    const Moves& mv, Eigen::VectorXd& out) {
-  out.setZero(sys.nRows);
+// Every row's dPhi and dV (rowChange) for one dimension, into the independent rows' places
+// (`map`); the bodies' pose changes from dq (none: J_p).
+void rowChanges(const Mechanism& m, const System& sys, const std::vector<BodyView>& views,
+                const Moves& mv, const Eigen::VectorXd* dq, const std::vector<int>& map,
+                Eigen::Ref<Eigen::VectorXd> phi, Eigen::Ref<Eigen::VectorXd> vel) {
+  std::vector<Moving> moving;
+  moving.reserve(views.size());
+  for (size_t b = 0; b < views.size(); ++b) {
+    Moving x{views[b]};
+    if (dq && b > 0) {
+      x.dr = dq->segment<2>(3 * (b - 1));
+      x.dtheta = (*dq)[3 * (b - 1) + 2];
+    }
+    moving.push_back(x);
+  }
+  phi.setZero();
+  vel.setZero();
   for (const Row& r : sys.cons) {
     if (r.kind == Primitive::Hold) continue;
-    const Joint& j = m.joints[r.joint];
-    const BodyView &bi = views[r.body[0] + 1], &bj = views[r.body[1] + 1];
-    switch (r.kind) {
-      case Primitive::Coincident:
-        out.segment<2>(r.row) = coincident(m, j, bi, bj, mv);
-        break;
-      case Primitive::OnLine:
-        out[r.row] = onLine(m, j, r, bi, bj, mv);
-        break;
-      case Primitive::OnCircle:
-        out[r.row] = onCircle(j, r, bi, bj, mv);
-        break;
-      case Primitive::Angles:
-        out[r.row] = angles(sys, j, r, views, mv);
-        break;
-      default:
-        break;
-    }
+    double dPhi[2] = {0, 0}, dV[2] = {0, 0};
+    rowChange(sys, r, moving[r.body[0] + 1], moving[r.body[1] + 1], moving[r.body[2] + 1],
+              rowMove(m, m.joints[r.joint], r, mv), dPhi, dV);
+    for (int e = 0; e < r.rows(); ++e)
+      if (map[r.row + e] >= 0) {
+        phi[map[r.row + e]] = dPhi[e];
+        vel[map[r.row + e]] = dV[e];
+      }
   }
 }
 
@@ -143,29 +214,29 @@ Status Sensitivity::prepare(const Kinematics& k, std::vector<Dimension> dims) {
 }
 
 Status Sensitivity::at(const Kinematics& k) {
+  const Status singular = Status::failure(
+      StatusCode::Singular, "at a singular position the motion's derivatives are unbounded");
+  if (!k.valid() || !k.derivativesValid() || pointMove_.size() != dims_.size()) return singular;
   const KinematicsState& s = internal::state(k);
-  if (!k.valid() || !k.derivativesValid() || pointMove_.size() != dims_.size())
-    return Status::failure(StatusCode::Singular,
-                           "at a singular position the motion's derivatives are unbounded");
   const System& sys = s.sys;
-  const Eigen::VectorXd& q = k.q();
   std::vector<BodyView> views;
-  makeViews(sys, q, nullptr, views);
+  makeViews(sys, k.q(), &k.dq(), views);
   const std::vector<int>& map = s.newton.rowMap();
-  const int n = sys.nCoords();
-  Eigen::MatrixXd J(n, n), Jp(n, static_cast<int>(dims_.size()));
+  const int n = sys.nCoords(), dims = static_cast<int>(dims_.size());
+  Eigen::MatrixXd J(n, n), Jp(n, dims), rhs(n, dims), unused(n, dims);
   evalJacobian(sys, views, map, J);
-  Eigen::VectorXd rows;
-  for (size_t d = 0; d < dims_.size(); ++d) {
-    rowDerivatives(s.mech, sys, views, Moves{pointMove_[d], dims_[d]}, rows);
-    Jp.col(static_cast<int>(d)).setZero();
-    for (int r = 0; r < sys.nRows; ++r)
-      if (map[r] >= 0) Jp(map[r], static_cast<int>(d)) = rows[r];
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(J);
+  for (int d = 0; d < dims; ++d)
+    rowChanges(s.mech, sys, views, {pointMove_[d], dims_[d]}, nullptr, map, Jp.col(d),
+               unused.col(d));
+  dq_ = -lu.solve(Jp);
+  // J q' + Phi_phi = 0 at every p: J dq'/dp = -(its change along dq/dp and p, q' held).
+  for (int d = 0; d < dims; ++d) {
+    const Eigen::VectorXd dq = dq_.col(d);
+    rowChanges(s.mech, sys, views, {pointMove_[d], dims_[d]}, &dq, map, unused.col(d), rhs.col(d));
   }
-  dq_ = -Eigen::PartialPivLU<Eigen::MatrixXd>(J).solve(Jp);
-  if (!dq_.allFinite())
-    return Status::failure(StatusCode::Singular,
-                           "at a singular position the motion's derivatives are unbounded");
+  dqd_ = -lu.solve(rhs);
+  if (!dq_.allFinite() || !dqd_.allFinite()) return singular;
   return Status::success();
 }
 
@@ -178,6 +249,19 @@ Vec2 Sensitivity::point(const Kinematics& k, PointId p, int dim) const {
   const Rot R = Rot::of(k.q()[c + 2]);
   const Vec2 a = R * loc->s;
   return Vec2(dq_(c, dim), dq_(c + 1, dim)) + dq_(c + 2, dim) * perp(a) + R * own;
+}
+
+Vec2 Sensitivity::velocity(const Kinematics& k, PointId p, int dim) const {
+  const System& sys = internal::system(k);
+  const PointLocation* loc = sys.point(p);
+  if (!loc || loc->body < 0) return Vec2::Zero();
+  const int c = 3 * loc->body;
+  const Rot R = Rot::of(k.q()[c + 2]);
+  const Vec2 a = R * loc->s, own = pointMove_[dim][p.value];
+  const Vec2 da = dq_(c + 2, dim) * perp(a) + R * own;  // d(R s)
+  const double w = k.dq()[c + 2];
+  return k.omega() *
+         (Vec2(dqd_(c, dim), dqd_(c + 1, dim)) + dqd_(c + 2, dim) * perp(a) + w * perp(da));
 }
 
 }  // namespace linkage

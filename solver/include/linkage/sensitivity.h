@@ -2,7 +2,8 @@
 // at a crank angle per mm of a link, per mm of a ground pivot, per degree of a slot, per unit of a
 // gear ratio. From the constraints, never by finite differences: at a pose where Phi(q, p) = 0,
 // dq/dp = -J_q^-1 J_p, with J_p the rows' partial derivatives with respect to their local
-// vectors and constants (derived per primitive in analysis/sensitivity.cpp).
+// vectors and constants (derived per primitive in analysis/sensitivity.cpp), and the
+// velocities' from J q' + Phi_phi = 0 differentiated the same way.
 //
 // A dimension is a change of the drawing with every body's frame held: the points of one body
 // (or one slot) move in that body's frame, nothing pinned to them moves with them (unlike a typed
@@ -66,11 +67,14 @@ class Sensitivity {
   const std::vector<Dimension>& dims() const { return dims_; }
   // d(position of p)/d(dimension k), mm per unit, at the pose of the last at().
   Vec2 point(const Kinematics& k, PointId p, int dim) const;
+  // d(velocity of p)/d(dimension k), mm/s per unit at the driver's speed (from dq'/dp: J q' +
+  // Phi_phi = 0 differentiated along dq/dp). Accelerations' are not computed yet.
+  Vec2 velocity(const Kinematics& k, PointId p, int dim) const;
 
  private:
   std::vector<Dimension> dims_;
   std::vector<std::vector<Vec2>> pointMove_;  // by dimension, by PointId value
-  Eigen::MatrixXd dq_;
+  Eigen::MatrixXd dq_, dqd_;                  // dq/dp, dq'/dp (q' = dq/dphi)
 };
 
 }  // namespace linkage
