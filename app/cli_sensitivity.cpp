@@ -13,6 +13,7 @@ namespace {
 
 const char* kHelp =
     R"(usage: linkage-cli sensitivity MODEL --point body.point [--steps N] [--velocity]
+                                   [--acceleration]
 
 The derivative of a point's position with respect to every dimension of MODEL, at each crank
 angle of one turn: exact, from the constraint Jacobian (dq/dp = -J_q^-1 J_p), not by finite
@@ -29,12 +30,13 @@ degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
   --steps N            steps per revolution (default 360)
   --velocity           also the point's velocity's derivatives, mm/s per mm at the driver's
                        speed: columns dvx_mm_s_per_mm,dvy_mm_s_per_mm
+  --acceleration       also its acceleration's, mm/s^2 per mm: dax_mm_s2_per_mm,day_mm_s2_per_mm
 
 Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
 significant digits. A singular position (a dead point of the output, where the derivatives are
 unbounded) writes no rows and says so on standard error.
 
-Not yet: spatial models (planes), ball rods, cams; acceleration sensitivities.
+Not yet: spatial models (planes), ball rods, cams.
 
 Exit status: 0 done, 2 bad input (an unknown point, a model it cannot differentiate yet), 3 the
 crank cannot turn fully (the rows up to there are written).
@@ -43,19 +45,24 @@ crank cannot turn fully (the rows up to there are written).
 struct Options {
   std::string model, point;
   int steps = 360;
-  bool velocity = false;
+  bool velocity = false, acceleration = false;
 };
 
-std::string rows(const Kinematics& k, const Sensitivity& s, PointId p, double deg, bool velocity) {
+std::string rows(const Kinematics& k, const Sensitivity& s, PointId p, double deg,
+                 const Options& o) {
   std::string out;
   const std::string at = formatNumber(deg) + ",";
   for (size_t d = 0; d < s.dims().size(); ++d) {
     const int i = static_cast<int>(d);
     const Vec2 x = s.point(k, p, i);
     out += at + s.dims()[d].name + "," + formatNumber(x.x()) + "," + formatNumber(x.y());
-    if (velocity) {
+    if (o.velocity) {
       const Vec2 v = s.velocity(k, p, i);
       out += "," + formatNumber(v.x()) + "," + formatNumber(v.y());
+    }
+    if (o.acceleration) {
+      const Vec2 a = s.acceleration(k, p, i);
+      out += "," + formatNumber(a.x()) + "," + formatNumber(a.y());
     }
     out += "\n";
   }
@@ -80,7 +87,9 @@ int sensitivity(const Options& o) {
     return exitFor(s);
   }
   std::string out = "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm";
-  out += o.velocity ? ",dvx_mm_s_per_mm,dvy_mm_s_per_mm\n" : "\n";
+  if (o.velocity) out += ",dvx_mm_s_per_mm,dvy_mm_s_per_mm";
+  if (o.acceleration) out += ",dax_mm_s2_per_mm,day_mm_s2_per_mm";
+  out += "\n";
   Status failed;
   for (int i = 0; i < o.steps && failed.ok(); ++i) {
     const double deg = 360.0 * i / o.steps;
@@ -91,7 +100,7 @@ int sensitivity(const Options& o) {
     else if (!s.ok())
       failed = s;
     else
-      out += rows(k, sens, p, deg, o.velocity);
+      out += rows(k, sens, p, deg, o);
   }
   std::cout << out << std::flush;
   if (!failed.ok()) {
@@ -110,6 +119,7 @@ Command sensitivityCommand(Parser& parser) {
   required(addText(c, "--point", o->point));
   addWhole(c, "--steps", o->steps, 1, 1'000'000);
   addFlag(c, "--velocity", o->velocity);
+  addFlag(c, "--acceleration", o->acceleration);
   return {&c, [o] { return sensitivity(*o); }};
 }
 

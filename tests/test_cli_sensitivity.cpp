@@ -58,15 +58,16 @@ TEST_F(SensitivityCli, ARowADimensionAStepAsTheLibraryComputesThem) {
   }
 }
 
-TEST_F(SensitivityCli, VelocityColumnsWhenAsked) {
+TEST_F(SensitivityCli, VelocityAndAccelerationColumnsWhenAsked) {
   const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
   const test::CliResult res =
-      run("sensitivity " + save(f.m) + " --point coupler.P --steps 2 --velocity");
+      run("sensitivity " + save(f.m) + " --point coupler.P --steps 2 --acceleration --velocity");
   ASSERT_EQ(res.exit, 0) << res.err;
   const std::vector<std::string> lines = res.lines();
   ASSERT_EQ(lines.size(), 1 + 2 * 9u) << res.out;
   EXPECT_EQ(lines[0],
-            "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm,dvx_mm_s_per_mm,dvy_mm_s_per_mm");
+            "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm,dvx_mm_s_per_mm,dvy_mm_s_per_mm,"
+            "dax_mm_s2_per_mm,day_mm_s2_per_mm");
   Kinematics k;
   ASSERT_TRUE(k.load(f.m).ok());
   Sensitivity s;
@@ -74,10 +75,12 @@ TEST_F(SensitivityCli, VelocityColumnsWhenAsked) {
   ASSERT_TRUE(k.moveTo(180).ok());
   ASSERT_TRUE(s.at(k).ok());
   const std::vector<std::string> row = split(lines[1 + 9 + 4], ',');  // 180 deg, crank.O2-A
-  ASSERT_EQ(row.size(), 6u);
+  ASSERT_EQ(row.size(), 8u);
   EXPECT_EQ(row[1], "crank.O2-A");
   EXPECT_EQ(parseNumber(row[4]), s.velocity(k, f.P, 4).x());
   EXPECT_EQ(parseNumber(row[5]), s.velocity(k, f.P, 4).y());
+  EXPECT_EQ(parseNumber(row[6]), s.acceleration(k, f.P, 4).x());
+  EXPECT_EQ(parseNumber(row[7]), s.acceleration(k, f.P, 4).y());
 }
 
 TEST_F(SensitivityCli, BadInputIsNamed) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <complex>
 #include <cstdio>
 #include <map>
@@ -39,13 +40,14 @@ C cross(CVec a, CVec b) {
 CVec perp(CVec a) {
   return {-a.y, a.x};
 }
-// A point and its velocity per radian of crank.
+// A point, its velocity and its acceleration per radian (and radian squared) of crank.
 struct PV {
-  CVec p, v;
+  CVec p, v, a;
 };
-// d(point), d(velocity per radian) of a closed form stepped by i kH.
-std::pair<Vec2, Vec2> imaginary(const PV& x) {
-  return {Vec2(x.p.x.imag(), x.p.y.imag()) / kH, Vec2(x.v.x.imag(), x.v.y.imag()) / kH};
+// d(point), d(velocity), d(acceleration) of a closed form stepped by i kH.
+std::array<Vec2, 3> imaginary(const PV& x) {
+  auto im = [](const CVec& c) -> Vec2 { return Vec2(c.x.imag(), c.y.imag()) / kH; };
+  return {im(x.p), im(x.v), im(x.a)};
 }
 
 // The four-bar's coupler point in the dimensions' own terms: the ground pivots, the crank, the
@@ -70,48 +72,60 @@ struct FourBarDims {
     const C px = (r3 * r3 + ap * ap - bp * bp) / (2.0 * r3);
     const C py = std::sqrt(ap * ap - px * px);  // P drawn to the left of A->B
     const CVec q = px * u + py * perp(u);       // A -> P
-    // The loop's velocities (reference/four_bar.h): the coupler's rate by Cramer's rule.
+    // The loop's rates (reference/four_bar.h): the coupler's and rocker's by Cramer's rule.
     const CVec a = A - O2, b = B - A, c = B - O4;
-    const C w3 = (a.y * (-c.x) - c.y * (-a.x)) / (b.y * c.x - c.y * b.x);
-    return {A + q, perp(a) + w3 * perp(q)};
+    const C det = b.y * c.x - c.y * b.x;
+    auto solve = [&](C r0, C r1, C& u3, C& u4) {
+      u3 = (r0 * (-c.x) - c.y * r1) / det;
+      u4 = ((-b.y) * r1 - b.x * r0) / det;
+    };
+    C w3, w4, al3, al4;
+    solve(a.y, -a.x, w3, w4);
+    solve(a.x + b.x * w3 * w3 - c.x * w4 * w4, a.y + b.y * w3 * w3 - c.y * w4 * w4, al3, al4);
+    return {A + q, perp(a) + w3 * perp(q), (-1.0) * a + al3 * perp(q) - (w3 * w3) * q};
   }
 };
 
-// Largest error of every dimension's d(point)/d(dimension) and d(velocity)/d(dimension) over a
-// turn, each relative to its peak over the turn; `exact(name, phi)` gives the independent two
-// (the velocity's per radian of crank).
+// Largest error of every dimension's derivatives of the point's position, velocity and
+// acceleration over a turn, each relative to its peak over the turn; `exact(name, phi)` gives the
+// independent three (per radian and radian squared of crank).
 template <class Exact>
 double worstRelative(Kinematics& k, PointId p, const std::vector<Dimension>& dims, Exact exact,
                      std::vector<std::string>& compared) {
   Sensitivity s;
   EXPECT_TRUE(s.prepare(k, dims).ok());
   const size_t n = dims.size();
-  std::vector<double> peak(n, 0), err(n, 0), peakV(n, 0), errV(n, 0);
+  std::vector<std::array<double, 3>> peak(n, {0, 0, 0}), err(n, {0, 0, 0});
   for (int deg = 0; deg < 360; deg += 5) {
     EXPECT_TRUE(k.moveTo(deg).ok()) << deg;
     EXPECT_TRUE(s.at(k).ok()) << deg;
+    const double w = k.omega();
     for (size_t d = 0; d < n; ++d) {
-      const auto [want, wantV] = exact(dims[d].name, deg * M_PI / 180);
-      const Vec2 got = s.point(k, p, static_cast<int>(d));
-      const Vec2 gotV = s.velocity(k, p, static_cast<int>(d)) / k.omega();
-      peak[d] = std::max(peak[d], want.norm());
-      err[d] = std::max(err[d], (got - want).norm());
-      peakV[d] = std::max(peakV[d], wantV.norm());
-      errV[d] = std::max(errV[d], (gotV - wantV).norm());
+      const int i = static_cast<int>(d);
+      const std::array<Vec2, 3> want = exact(dims[d].name, deg * M_PI / 180);
+      const Vec2 got[3] = {s.point(k, p, i), s.velocity(k, p, i) / w,
+                           s.acceleration(k, p, i) / (w * w)};
+      for (int o = 0; o < 3; ++o) {
+        peak[d][o] = std::max(peak[d][o], want[o].norm());
+        err[d][o] = std::max(err[d][o], (got[o] - want[o]).norm());
+      }
     }
   }
-  // A velocity a dimension does not change (moving a slider-crank's pivot along its slot) is
-  // measured against the largest velocity peak.
-  const double anyV = *std::max_element(peakV.begin(), peakV.end());
-  double worst = 0;
+  // A rate a dimension does not change (moving a slider-crank's pivot along its slot) is
+  // measured against the largest peak of that rate.
+  double any[3] = {0, 0, 0}, worst = 0;
+  for (size_t d = 0; d < n; ++d)
+    for (int o = 0; o < 3; ++o) any[o] = std::max(any[o], peak[d][o]);
   for (size_t d = 0; d < n; ++d) {
     compared.push_back(dims[d].name);
-    EXPECT_GT(peak[d], 1e-3) << dims[d].name << ": a dimension that moves nothing tests nothing";
-    const double relV = errV[d] / (peakV[d] > 1e-12 ? peakV[d] : anyV);
-    worst = std::max({worst, err[d] / peak[d], relV});
-    std::printf(
-        "  %-20s position: peak %-9.6g error/peak %.2e  velocity: peak %-9.6g error/peak %.2e\n",
-        dims[d].name.c_str(), peak[d], err[d] / peak[d], peakV[d], relV);
+    EXPECT_GT(peak[d][0], 1e-3) << dims[d].name << ": a dimension that moves nothing tests nothing";
+    double rel[3];
+    for (int o = 0; o < 3; ++o) {
+      rel[o] = err[d][o] / (peak[d][o] > 1e-12 ? peak[d][o] : any[o]);
+      worst = std::max(worst, rel[o]);
+    }
+    std::printf("  %-20s error/peak: position %.2e  velocity %.2e  acceleration %.2e\n",
+                dims[d].name.c_str(), rel[0], rel[1], rel[2]);
   }
   return worst;
 }
@@ -144,7 +158,9 @@ TEST(Sensitivity, FourBarCouplerPointMatchesClosedFormToTenDigits) {
       return imaginary(stepped.P(phi));
     };
     ASSERT_NEAR(base.P(0).p.x.real(), k.position(f.P).x(), 1e-9);
-    ASSERT_NEAR(base.P(0).v.y.real() * k.omega(), k.velocity(f.P).y(), 1e-9);  // the same point
+    ASSERT_NEAR(base.P(0).v.y.real() * k.omega(), k.velocity(f.P).y(), 1e-9);
+    ASSERT_NEAR(base.P(0).a.y.real() * k.omega() * k.omega(), k.acceleration(f.P).y(),
+                1e-8);  // the same point
     std::vector<std::string> compared;
     std::printf("four-bar, %s:\n", open ? "open" : "crossed");
     const double worst = worstRelative(k, f.P, dims, exact, compared);
@@ -173,9 +189,14 @@ TEST(Sensitivity, SliderCrankMatchesClosedFormWithTheSlotsOffsetAndAngle) {
       const CVec dir{std::cos(alpha), std::sin(alpha)};
       const double t = crankDeg * M_PI / 180 + phi;
       const CVec A = O + CVec{cr * std::cos(t), cr * std::sin(t)};
-      const CVec w = A - p0, vA = perp(A - O);
-      const C c = cross(dir, w), root = std::sqrt(rl * rl - c * c);
-      return PV{p0 + (dot(dir, w) + root) * dir, (dot(dir, vA) - c * cross(dir, vA) / root) * dir};
+      const CVec w = A - p0, vA = perp(A - O), aA = O - A;
+      // B = p0 + t dir, t = dir . w + root, root = sqrt(l^2 - c^2), c = dir x w.
+      const C c = cross(dir, w), c1 = cross(dir, vA), c2 = cross(dir, aA);
+      const C root = std::sqrt(rl * rl - c * c);
+      const C t1 = dot(dir, vA) - c * c1 / root;
+      const C t2 =
+          dot(dir, aA) - (c1 * c1 + c * c2) / root - c * c * c1 * c1 / (root * root * root);
+      return PV{p0 + (dot(dir, w) + root) * dir, t1 * dir, t2 * dir};
     };
     for (const Dimension& d : dims)  // the closed form above counts from the drawn values
       if (d.name == "ground.O.x" || d.name == "ground.O.y") base[d.name] = d.value;
@@ -186,6 +207,7 @@ TEST(Sensitivity, SliderCrankMatchesClosedFormWithTheSlotsOffsetAndAngle) {
     };
     ASSERT_NEAR(B(base, 0).p.y.real(), k.position(sc.B).y(), 1e-9);
     ASSERT_NEAR(B(base, 0).v.y.real() * k.omega(), k.velocity(sc.B).y(), 1e-9);
+    ASSERT_NEAR(B(base, 0).a.y.real() * k.omega() * k.omega(), k.acceleration(sc.B).y(), 1e-8);
     std::vector<std::string> compared;
     std::printf("slider-crank, %s:\n", pinInSlot ? "pin in slot" : "block");
     const double worst = worstRelative(k, sc.B, dims, exact, compared);
@@ -209,10 +231,11 @@ TEST(Sensitivity, PlanetGearsRatioAndLengthsMatchTheEpicycloid) {
     const C a = v.at("arm.S-B"), b = v.at("planet.B-P"),
             t = (1.0 - v.at("ground-planet.ratio")) * phi;
     const C wt = 1.0 - v.at("ground-planet.ratio");
-    return PV{
-        {v.at("ground.S.x") + a * std::cos(phi) + b * std::cos(t),
-         v.at("ground.S.y") + a * std::sin(phi) + b * std::sin(t)},
-        {-a * std::sin(phi) - b * wt * std::sin(t), a * std::cos(phi) + b * wt * std::cos(t)}};
+    return PV{{v.at("ground.S.x") + a * std::cos(phi) + b * std::cos(t),
+               v.at("ground.S.y") + a * std::sin(phi) + b * std::sin(t)},
+              {-a * std::sin(phi) - b * wt * std::sin(t), a * std::cos(phi) + b * wt * std::cos(t)},
+              {-a * std::cos(phi) - b * wt * wt * std::cos(t),
+               -a * std::sin(phi) - b * wt * wt * std::sin(t)}};
   };
   auto exact = [&](const std::string& name, double phi) {
     std::map<std::string, C> v = base;
@@ -228,7 +251,8 @@ TEST(Sensitivity, PlanetGearsRatioAndLengthsMatchTheEpicycloid) {
 }
 
 // Machines no closed form covers: moving the whole ground (its points and its straight slots)
-// by a vector moves every point of the mechanism by that vector and changes no velocity, so at
+// by a vector moves every point of the mechanism by that vector and changes no velocity or
+// acceleration, so at
 // every pose the ground's x derivatives (a slot's offset counted by its normal's x) add up to (1,
 // 0) and the y ones to (0, 1), for every point of every body: every row kind and every slot,
 // exactly.
@@ -257,16 +281,19 @@ TEST(Sensitivity, MovingTheGroundMovesEveryPointOfTheMachines) {
       ASSERT_TRUE(k.moveTo(deg).ok()) << name << " " << deg;
       ASSERT_TRUE(s.at(k).ok()) << name << " " << deg;
       for (const Point& p : m.points) {
-        Vec2 x = Vec2::Zero(), y = Vec2::Zero(), vx = Vec2::Zero(), vy = Vec2::Zero();
+        Vec2 x = Vec2::Zero(), y = Vec2::Zero(), vx = Vec2::Zero(), vy = Vec2::Zero(),
+             ax = Vec2::Zero(), ay = Vec2::Zero();
         for (size_t d = 0; d < dims.size(); ++d) {
           const int i = static_cast<int>(d);
           x += weight[d].x() * s.point(k, p.id, i);
           y += weight[d].y() * s.point(k, p.id, i);
           vx += weight[d].x() * s.velocity(k, p.id, i) / k.omega();  // velocities do not change
           vy += weight[d].y() * s.velocity(k, p.id, i) / k.omega();
+          ax += weight[d].x() * s.acceleration(k, p.id, i) / (k.omega() * k.omega());
+          ay += weight[d].y() * s.acceleration(k, p.id, i) / (k.omega() * k.omega());
         }
-        worst = std::max(
-            {worst, (x - Vec2(1, 0)).norm(), (y - Vec2(0, 1)).norm(), vx.norm(), vy.norm()});
+        worst = std::max({worst, (x - Vec2(1, 0)).norm(), (y - Vec2(0, 1)).norm(), vx.norm(),
+                          vy.norm(), ax.norm(), ay.norm()});
       }
     }
     std::printf("  %-28s moving the ground: worst error %.2e\n", name, worst);
@@ -275,9 +302,10 @@ TEST(Sensitivity, MovingTheGroundMovesEveryPointOfTheMachines) {
 }
 
 // The drawing scaled about the origin scales the motion: each point's position at a crank angle
-// (and its velocity) is homogeneous of degree one in the lengths (angles and ratios kept), so by
-// Euler's theorem sum over the lengths of length * d(position)/d(length) is the position itself.
-// Every body's dimensions of the machines, exactly (arc slots, which have no dimension, left out).
+// (and its velocity and acceleration) is homogeneous of degree one in the lengths (angles and
+// ratios kept), so by Euler's theorem sum over the lengths of length * d(position)/d(length) is the
+// position itself. Every body's dimensions of the machines, exactly (arc slots, which have no
+// dimension, left out).
 TEST(Sensitivity, ScalingTheDrawingScalesEveryPointOfTheMachines) {
   for (const char* name : {"wanzer-inversion-2", "drop-feed", "lockstitch-machine",
                            "overedge-needle-arm", "needle-876-alpha-35", "gear-four-bar",
@@ -294,16 +322,20 @@ TEST(Sensitivity, ScalingTheDrawingScalesEveryPointOfTheMachines) {
       ASSERT_TRUE(k.moveTo(deg).ok()) << name << " " << deg;
       ASSERT_TRUE(s.at(k).ok()) << name << " " << deg;
       for (const Point& p : m.points) {
-        Vec2 sum = Vec2::Zero(), sumV = Vec2::Zero();
+        Vec2 sum = Vec2::Zero(), sumV = Vec2::Zero(), sumA = Vec2::Zero();
         for (size_t d = 0; d < dims.size(); ++d)
           if (dims[d].unit == Dimension::Unit::Mm) {
-            sum += dims[d].value * s.point(k, p.id, static_cast<int>(d));
-            sumV += dims[d].value * s.velocity(k, p.id, static_cast<int>(d));
+            const int i = static_cast<int>(d);
+            sum += dims[d].value * s.point(k, p.id, i);
+            sumV += dims[d].value * s.velocity(k, p.id, i) / k.omega();
+            sumA += dims[d].value * s.acceleration(k, p.id, i) / (k.omega() * k.omega());
           }
-        // Velocities per radian of crank (mm), homogeneous of degree one too.
+        // Velocities and accelerations per radian of crank (mm), homogeneous of degree one too.
         const Vec2 v = k.velocity(p.id) / k.omega();
-        worst = std::max({worst, (sum - k.position(p.id)).norm(), (sumV / k.omega() - v).norm()});
-        size = std::max({size, k.position(p.id).norm(), v.norm()});
+        const Vec2 a = k.acceleration(p.id) / (k.omega() * k.omega());
+        worst = std::max(
+            {worst, (sum - k.position(p.id)).norm(), (sumV - v).norm(), (sumA - a).norm()});
+        size = std::max({size, k.position(p.id).norm(), v.norm(), a.norm()});
       }
     }
     std::printf("  %-28s scaling: worst error %.2e of %.4g mm\n", name, worst, size);

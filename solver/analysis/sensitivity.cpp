@@ -95,85 +95,110 @@ RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& m
   return out;
 }
 
-// A body's pose and rates (BodyView) with the first-order change dr, dtheta of its pose (zero
-// for the ground): a point s of it, its rate (d/dphi) and their changes for a change ds of s,
-// the body's rates held.
+// A body's pose, rates (d/dphi) and second rates, with first-order changes of the pose and the
+// rates (zero for the ground; the second rates held): a point s of it (its position, rate and
+// second rate) and their changes for a change ds of s.
 struct Moving {
   const BodyView& b;
-  Vec2 dr = Vec2::Zero();
-  double dtheta = 0;
+  Vec2 acc = Vec2::Zero();  // its frame origin's second rate, and its angle's
+  double alpha = 0;
+  Vec2 dr = Vec2::Zero(), dv = Vec2::Zero();
+  double dtheta = 0, dw = 0;
   struct At {
-    Vec2 p, dp, v, dv;
+    Vec2 p, dp, v, dv, a, da;
   };
   At at(const Vec2& s, const Vec2& ds) const {
     const Vec2 a = b.R * s, da = perp(a) * dtheta + b.R * ds;
-    return {b.r + a, dr + da, b.v + b.w * perp(a), b.w * perp(da)};
+    const double w = b.w;
+    return {b.r + a,
+            dr + da,
+            b.v + w * perp(a),
+            dv + dw * perp(a) + w * perp(da),
+            acc + alpha * perp(a) - w * w * a,
+            alpha * perp(da) - 2 * w * dw * a - w * w * da};
   }
 };
 
-// A row's residual and its rate, Phi and V = J q' + Phi_phi, changed to first order by the
-// bodies' changes and the constants' (dPhi, dV; q' held in dV): J_p with no body change, and the
-// velocity sensitivity's right-hand side with dq/dp.
-void rowChange(const System& sys, const Row& r, const Moving& i, const Moving& j, const Moving& k,
-               const RowMove& mv, double dPhi[2], double dV[2]) {
-  const Moving::At p = i.at(r.s[0], mv.s[0]), q = j.at(r.s[1], mv.s[1]);
+// A row's residual and its first and second rates along the motion (Phi, V = J q' + Phi_phi,
+// A = J q'' - gamma), changed to first order by the bodies' changes and the constants' (the
+// second rates held): dPhi with no body change is J_p; dV with dq/dp (the rates held) the
+// velocities' right-hand side; dA with dq/dp and dq'/dp the accelerations'.
+struct RowChange {
+  double phi[2] = {0, 0}, v[2] = {0, 0}, a[2] = {0, 0};
+};
+
+double lineChange(const Row& r, const Moving::At& p, const Moving::At& q, const Moving& j,
+                  const RowMove& mv, int order) {
   const Vec2 d = p.p - q.p, dd = p.dp - q.dp, v = p.v - q.v, dv = p.dv - q.dv;
-  switch (r.kind) {
-    case Primitive::Coincident:
-      dPhi[0] = dd.x(), dPhi[1] = dd.y(), dV[0] = dv.x(), dV[1] = dv.y();
-      return;
-    case Primitive::OnLine: {
-      const Vec2 n = j.b.R * r.n, dn = perp(n) * j.dtheta + j.b.R * mv.n;
-      const Vec2 nv = j.b.w * perp(n), dnv = j.b.w * perp(dn);
-      dPhi[0] = dn.dot(d) + n.dot(dd);
-      dV[0] = dnv.dot(d) + nv.dot(dd) + dn.dot(v) + n.dot(dv);
-      return;
-    }
-    case Primitive::OnCircle:
-      dPhi[0] = d.dot(dd) / r.c[0];
-      dV[0] = (dd.dot(v) + d.dot(dv)) / r.c[0];
-      return;
-    case Primitive::Angles: {
-      const Moving* m[3] = {&i, &j, &k};  // the ground's angle and rate are 0
-      dPhi[0] = dV[0] = 0;
-      for (int c = 0; c < 3; ++c) {
-        dPhi[0] += sys.size * (r.c[c] * m[c]->dtheta + mv.c[c] * m[c]->b.theta);
-        dV[0] += sys.size * mv.c[c] * m[c]->b.w;
-      }
-      return;
-    }
-    default:
-      dPhi[0] = dPhi[1] = dV[0] = dV[1] = 0;
-  }
+  const double w = j.b.w;
+  const Vec2 n = j.b.R * r.n, dn = perp(n) * j.dtheta + j.b.R * mv.n;
+  if (order == 0) return dn.dot(d) + n.dot(dd);
+  const Vec2 n1 = w * perp(n), dn1 = j.dw * perp(n) + w * perp(dn);
+  if (order == 1) return dn1.dot(d) + n1.dot(dd) + dn.dot(v) + n.dot(dv);
+  const Vec2 a = p.a - q.a, da = p.da - q.da;
+  const Vec2 n2 = j.alpha * perp(n) - w * w * n;
+  const Vec2 dn2 = j.alpha * perp(dn) - 2 * w * j.dw * n - w * w * dn;
+  return dn2.dot(d) + n2.dot(dd) + 2 * (dn1.dot(v) + n1.dot(dv)) + dn.dot(a) + n.dot(da);
 }
 
-// Every row's dPhi and dV (rowChange) for one dimension, into the independent rows' places
-// (`map`); the bodies' pose changes from dq (none: J_p).
+RowChange rowChange(const System& sys, const Row& r, const Moving& i, const Moving& j,
+                    const Moving& k, const RowMove& mv) {
+  RowChange out;
+  const Moving::At p = i.at(r.s[0], mv.s[0]), q = j.at(r.s[1], mv.s[1]);
+  const Vec2 d = p.p - q.p, dd = p.dp - q.dp, v = p.v - q.v, dv = p.dv - q.dv;
+  const Vec2 a = p.a - q.a, da = p.da - q.da;
+  switch (r.kind) {
+    case Primitive::Coincident:
+      for (int e = 0; e < 2; ++e) out.phi[e] = dd[e], out.v[e] = dv[e], out.a[e] = da[e];
+      break;
+    case Primitive::OnLine:
+      for (int o = 0; o < 3; ++o)
+        (o == 0 ? out.phi : o == 1 ? out.v : out.a)[0] = lineChange(r, p, q, j, mv, o);
+      break;
+    case Primitive::OnCircle:  // Phi'' = (d' . d' + d . d'') / rho
+      out.phi[0] = d.dot(dd) / r.c[0];
+      out.v[0] = (dd.dot(v) + d.dot(dv)) / r.c[0];
+      out.a[0] = (2 * v.dot(dv) + dd.dot(a) + d.dot(da)) / r.c[0];
+      break;
+    case Primitive::Angles: {
+      const Moving* m[3] = {&i, &j, &k};  // the ground's angle and rates are 0
+      for (int c = 0; c < 3; ++c) {
+        out.phi[0] += sys.size * (r.c[c] * m[c]->dtheta + mv.c[c] * m[c]->b.theta);
+        out.v[0] += sys.size * (r.c[c] * m[c]->dw + mv.c[c] * m[c]->b.w);
+        out.a[0] += sys.size * mv.c[c] * m[c]->alpha;
+      }
+      break;
+    }
+    default:
+      break;
+  }
+  return out;
+}
+
+// The rows' changes (rowChange) for one dimension, into the independent rows' places (`map`):
+// `order` 0 (dPhi, no body change: J_p), 1 (dV, the pose's change dq) or 2 (dA, dq and dq').
 void rowChanges(const Mechanism& m, const System& sys, const std::vector<BodyView>& views,
-                const Moves& mv, const Eigen::VectorXd* dq, const std::vector<int>& map,
-                Eigen::Ref<Eigen::VectorXd> phi, Eigen::Ref<Eigen::VectorXd> vel) {
+                const Eigen::VectorXd& ddq, const Moves& mv, int order, const Eigen::VectorXd& dq,
+                const Eigen::VectorXd& dqd, const std::vector<int>& map,
+                Eigen::Ref<Eigen::VectorXd> out) {
   std::vector<Moving> moving;
   moving.reserve(views.size());
   for (size_t b = 0; b < views.size(); ++b) {
     Moving x{views[b]};
-    if (dq && b > 0) {
-      x.dr = dq->segment<2>(3 * (b - 1));
-      x.dtheta = (*dq)[3 * (b - 1) + 2];
-    }
+    const int c = 3 * (static_cast<int>(b) - 1);
+    if (b > 0 && ddq.size()) x.acc = ddq.segment<2>(c), x.alpha = ddq[c + 2];
+    if (b > 0 && order >= 1) x.dr = dq.segment<2>(c), x.dtheta = dq[c + 2];
+    if (b > 0 && order >= 2) x.dv = dqd.segment<2>(c), x.dw = dqd[c + 2];
     moving.push_back(x);
   }
-  phi.setZero();
-  vel.setZero();
+  out.setZero();
   for (const Row& r : sys.cons) {
     if (r.kind == Primitive::Hold) continue;
-    double dPhi[2] = {0, 0}, dV[2] = {0, 0};
-    rowChange(sys, r, moving[r.body[0] + 1], moving[r.body[1] + 1], moving[r.body[2] + 1],
-              rowMove(m, m.joints[r.joint], r, mv), dPhi, dV);
+    const RowChange ch = rowChange(sys, r, moving[r.body[0] + 1], moving[r.body[1] + 1],
+                                   moving[r.body[2] + 1], rowMove(m, m.joints[r.joint], r, mv));
+    const double* x = order == 0 ? ch.phi : order == 1 ? ch.v : ch.a;
     for (int e = 0; e < r.rows(); ++e)
-      if (map[r.row + e] >= 0) {
-        phi[map[r.row + e]] = dPhi[e];
-        vel[map[r.row + e]] = dV[e];
-      }
+      if (map[r.row + e] >= 0) out[map[r.row + e]] = x[e];
   }
 }
 
@@ -221,22 +246,28 @@ Status Sensitivity::at(const Kinematics& k) {
   const System& sys = s.sys;
   std::vector<BodyView> views;
   makeViews(sys, k.q(), &k.dq(), views);
+  // Accelerations switched off (KinematicsOptions): no acceleration sensitivities either.
+  const bool acc = k.ddq().size() == sys.nCoords() && k.ddq().allFinite();
+  const Eigen::VectorXd ddq = acc ? k.ddq() : Eigen::VectorXd();
   const std::vector<int>& map = s.newton.rowMap();
   const int n = sys.nCoords(), dims = static_cast<int>(dims_.size());
-  Eigen::MatrixXd J(n, n), Jp(n, dims), rhs(n, dims), unused(n, dims);
+  Eigen::MatrixXd J(n, n), rhs(n, dims);
   evalJacobian(sys, views, map, J);
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(J);
-  for (int d = 0; d < dims; ++d)
-    rowChanges(s.mech, sys, views, {pointMove_[d], dims_[d]}, nullptr, map, Jp.col(d),
-               unused.col(d));
-  dq_ = -lu.solve(Jp);
-  // J q' + Phi_phi = 0 at every p: J dq'/dp = -(its change along dq/dp and p, q' held).
-  for (int d = 0; d < dims; ++d) {
-    const Eigen::VectorXd dq = dq_.col(d);
-    rowChanges(s.mech, sys, views, {pointMove_[d], dims_[d]}, &dq, map, unused.col(d), rhs.col(d));
+  // Phi = 0, J q' + Phi_phi = 0 and J q'' - gamma = 0 at every p: each rate's derivative from
+  // the change of its equation with the lower rates' derivatives known.
+  Eigen::MatrixXd* out[3] = {&dq_, &dqd_, &dqdd_};
+  for (int order = 0; order < (acc ? 3 : 2); ++order) {
+    for (int d = 0; d < dims; ++d) {
+      const Eigen::VectorXd dq = order ? Eigen::VectorXd(dq_.col(d)) : Eigen::VectorXd();
+      const Eigen::VectorXd dqd = order > 1 ? Eigen::VectorXd(dqd_.col(d)) : Eigen::VectorXd();
+      rowChanges(s.mech, sys, views, ddq, {pointMove_[d], dims_[d]}, order, dq, dqd, map,
+                 rhs.col(d));
+    }
+    *out[order] = -lu.solve(rhs);
+    if (!out[order]->allFinite()) return singular;
   }
-  dqd_ = -lu.solve(rhs);
-  if (!dq_.allFinite() || !dqd_.allFinite()) return singular;
+  if (!acc) dqdd_.setConstant(n, dims, std::nan(""));
   return Status::success();
 }
 
@@ -262,6 +293,21 @@ Vec2 Sensitivity::velocity(const Kinematics& k, PointId p, int dim) const {
   const double w = k.dq()[c + 2];
   return k.omega() *
          (Vec2(dqd_(c, dim), dqd_(c + 1, dim)) + dqd_(c + 2, dim) * perp(a) + w * perp(da));
+}
+
+Vec2 Sensitivity::acceleration(const Kinematics& k, PointId p, int dim) const {
+  const System& sys = internal::system(k);
+  const PointLocation* loc = sys.point(p);
+  if (!loc || loc->body < 0) return Vec2::Zero();
+  const int c = 3 * loc->body;
+  const Rot R = Rot::of(k.q()[c + 2]);
+  const Vec2 a = R * loc->s, own = pointMove_[dim][p.value];
+  const Vec2 da = dq_(c + 2, dim) * perp(a) + R * own;  // d(R s)
+  const double w = k.dq()[c + 2], dw = dqd_(c + 2, dim), alpha = k.ddq()[c + 2];
+  const double omega = k.omega();
+  return omega * omega *
+         (Vec2(dqdd_(c, dim), dqdd_(c + 1, dim)) + dqdd_(c + 2, dim) * perp(a) + alpha * perp(da) -
+          2 * w * dw * a - w * w * da);
 }
 
 }  // namespace linkage

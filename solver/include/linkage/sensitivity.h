@@ -3,7 +3,8 @@
 // gear ratio. From the constraints, never by finite differences: at a pose where Phi(q, p) = 0,
 // dq/dp = -J_q^-1 J_p, with J_p the rows' partial derivatives with respect to their local
 // vectors and constants (derived per primitive in analysis/sensitivity.cpp), and the
-// velocities' from J q' + Phi_phi = 0 differentiated the same way.
+// velocities' and accelerations' from J q' + Phi_phi = 0 and J q'' = gamma differentiated the
+// same way.
 //
 // A dimension is a change of the drawing with every body's frame held: the points of one body
 // (or one slot) move in that body's frame, nothing pinned to them moves with them (unlike a typed
@@ -68,13 +69,16 @@ class Sensitivity {
   // d(position of p)/d(dimension k), mm per unit, at the pose of the last at().
   Vec2 point(const Kinematics& k, PointId p, int dim) const;
   // d(velocity of p)/d(dimension k), mm/s per unit at the driver's speed (from dq'/dp: J q' +
-  // Phi_phi = 0 differentiated along dq/dp). Accelerations' are not computed yet.
+  // Phi_phi = 0 differentiated along dq/dp), and d(acceleration)/d(dimension k), mm/s^2 per unit
+  // (from dq''/dp: J q'' = gamma differentiated along dq/dp and dq'/dp; NaN when the Kinematics
+  // computes no accelerations).
   Vec2 velocity(const Kinematics& k, PointId p, int dim) const;
+  Vec2 acceleration(const Kinematics& k, PointId p, int dim) const;
 
  private:
   std::vector<Dimension> dims_;
   std::vector<std::vector<Vec2>> pointMove_;  // by dimension, by PointId value
-  Eigen::MatrixXd dq_, dqd_;                  // dq/dp, dq'/dp (q' = dq/dphi)
+  Eigen::MatrixXd dq_, dqd_, dqdd_;           // dq/dp, dq'/dp, dq''/dp (q' = dq/dphi)
 };
 
 }  // namespace linkage
