@@ -48,23 +48,27 @@ struct Options {
   bool velocity = false, acceleration = false;
 };
 
+// Appends ",x,y" (one string appended at a time: no temporaries to concatenate).
+void pair(std::string& out, const Vec2& v) {
+  for (double c : {v.x(), v.y()}) {
+    out += ',';
+    out += formatNumber(c);
+  }
+}
+
 std::string rows(const Kinematics& k, const Sensitivity& s, PointId p, double deg,
                  const Options& o) {
   std::string out;
-  const std::string at = formatNumber(deg) + ",";
+  const std::string at = formatNumber(deg);
   for (size_t d = 0; d < s.dims().size(); ++d) {
     const int i = static_cast<int>(d);
-    const Vec2 x = s.point(k, p, i);
-    out += at + s.dims()[d].name + "," + formatNumber(x.x()) + "," + formatNumber(x.y());
-    if (o.velocity) {
-      const Vec2 v = s.velocity(k, p, i);
-      out += "," + formatNumber(v.x()) + "," + formatNumber(v.y());
-    }
-    if (o.acceleration) {
-      const Vec2 a = s.acceleration(k, p, i);
-      out += "," + formatNumber(a.x()) + "," + formatNumber(a.y());
-    }
-    out += "\n";
+    out += at;
+    out += ',';
+    out += s.dims()[d].name;
+    pair(out, s.point(k, p, i));
+    if (o.velocity) pair(out, s.velocity(k, p, i));
+    if (o.acceleration) pair(out, s.acceleration(k, p, i));
+    out += '\n';
   }
   return out;
 }
