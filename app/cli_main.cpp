@@ -21,6 +21,7 @@ Command slotsCommand(Parser& parser);
 Command clearanceCommand(Parser& parser);
 Command timingCommand(Parser& parser);
 Command camCommand(Parser& parser);
+Command sensitivityCommand(Parser& parser);
 }  // namespace linkage::cli
 
 namespace {
@@ -41,6 +42,8 @@ Commands:
   clearance MODEL ... distance between two moving points (or a point and a slot): minima
   timing MODEL ...    windows of the machine cycle (timing diagram) and their conflicts
   cam MODEL ...       a cam's checks (pressure angle, curvature, undercut) and its profile
+  sensitivity MODEL --point body.point
+                      how far a point moves per mm of each dimension, exactly, over a turn
   examples            list the example mechanisms that MODEL can name
 
 MODEL is a .linkage.json file or the name of an example (e.g. wanzer-inversion-2).
@@ -61,7 +64,7 @@ int main(int argc, char** argv) {
   std::vector<Command> commands;
   for (auto* add : {analyzeCommand, infoCommand, icsCommand, plotCommand, limitsCommand,
                     transmissionCommand, studyCommand, dynamicsCommand, balanceCommand,
-                    slotsCommand, clearanceCommand, timingCommand, camCommand})
+                    slotsCommand, clearanceCommand, timingCommand, camCommand, sensitivityCommand})
     commands.push_back(add(parser));
   commands.push_back({&parser.command("examples", kExamplesHelp), [] {
                         for (const std::string& n : linkage::listExamples(executablePath))

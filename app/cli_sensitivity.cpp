@@ -1,0 +1,130 @@
+// linkage-cli sensitivity: how far a point moves per unit of each dimension of the mechanism,
+// exactly (linkage/sensitivity.h), at each crank angle of a turn.
+#include <iostream>
+
+#include "cli_common.h"
+#include "cli_parser.h"
+#include "linkage/io/numbers.h"
+#include "linkage/sensitivity.h"
+
+namespace linkage::cli {
+
+namespace {
+
+const char* kHelp =
+    R"(usage: linkage-cli sensitivity MODEL --point body.point [--steps N] [--velocity]
+                                   [--acceleration]
+
+The derivative of a point's position with respect to every dimension of MODEL, at each crank
+angle of one turn: exact, from the constraint Jacobian (dq/dp = -J_q^-1 J_p), not by finite
+differences. A dimension changes the drawing with every body's frame held: one body's points move
+in that body, nothing pinned to them moves with them, and the joints close again.
+
+Dimensions, in this order: for each body, its P0-P1 (its first two points in file order), then
+for each later point Pk its P1-Pk and P0-Pk (a three-point body: its three sides, as the editor
+types them), or Pk.along and Pk.across P0->P1 where Pk is on the line P0P1; each ground point's
+x and y; each straight slot's offset (along its normal) and angle (about its first end, in
+degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
+
+  --point body.point   the point (required)
+  --steps N            steps per revolution (default 360)
+  --velocity           also the point's velocity's derivatives, mm/s per mm at the driver's
+                       speed: columns dvx_mm_s_per_mm,dvy_mm_s_per_mm
+  --acceleration       also its acceleration's, mm/s^2 per mm: dax_mm_s2_per_mm,day_mm_s2_per_mm
+
+Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
+significant digits. A singular position (a dead point of the output, where the derivatives are
+unbounded) writes no rows and says so on standard error.
+
+Not yet: spatial models (planes), ball rods, cams.
+
+Exit status: 0 done, 2 bad input (an unknown point, a model it cannot differentiate yet), 3 the
+crank cannot turn fully (the rows up to there are written).
+)";
+
+struct Options {
+  std::string model, point;
+  int steps = 360;
+  bool velocity = false, acceleration = false;
+};
+
+// Appends ",x,y" (one string appended at a time: no temporaries to concatenate).
+void pair(std::string& out, const Vec2& v) {
+  for (double c : {v.x(), v.y()}) {
+    out += ',';
+    out += formatNumber(c);
+  }
+}
+
+std::string rows(const Kinematics& k, const Sensitivity& s, PointId p, double deg,
+                 const Options& o) {
+  std::string out;
+  const std::string at = formatNumber(deg);
+  for (size_t d = 0; d < s.dims().size(); ++d) {
+    const int i = static_cast<int>(d);
+    out += at;
+    out += ',';
+    out += s.dims()[d].name;
+    pair(out, s.point(k, p, i));
+    if (o.velocity) pair(out, s.velocity(k, p, i));
+    if (o.acceleration) pair(out, s.acceleration(k, p, i));
+    out += '\n';
+  }
+  return out;
+}
+
+int sensitivity(const Options& o) {
+  std::optional<Mechanism> m = openDrivenModel(o.model);
+  if (!m) return kBadInput;
+  std::optional<std::vector<PointId>> ids = outputPoints(*m, {o.point});
+  if (!ids) return kBadInput;
+  const PointId p = ids->front();
+  Kinematics k;
+  if (int e = prepare(k, *m); e != kOk) return e;
+  if (Status s = k.checkDetermined({p}); !s.ok()) {
+    error(s.message);
+    return exitFor(s);
+  }
+  Sensitivity sens;
+  if (Status s = sens.prepare(k, dimensions(k.mechanism())); !s.ok()) {
+    error("sensitivity: " + s.message);
+    return exitFor(s);
+  }
+  std::string out = "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm";
+  if (o.velocity) out += ",dvx_mm_s_per_mm,dvy_mm_s_per_mm";
+  if (o.acceleration) out += ",dax_mm_s2_per_mm,day_mm_s2_per_mm";
+  out += "\n";
+  Status failed;
+  for (int i = 0; i < o.steps && failed.ok(); ++i) {
+    const double deg = 360.0 * i / o.steps;
+    Status s = k.moveTo(deg);
+    if (s.ok()) s = sens.at(k);
+    if (s.code == StatusCode::Singular)
+      note("at " + formatNumber(deg) + " deg: " + s.message + "; no rows");
+    else if (!s.ok())
+      failed = s;
+    else
+      out += rows(k, sens, p, deg, o);
+  }
+  std::cout << out << std::flush;
+  if (!failed.ok()) {
+    error(failed.message);
+    return exitFor(failed);
+  }
+  return kOk;
+}
+
+}  // namespace
+
+Command sensitivityCommand(Parser& parser) {
+  auto o = std::make_shared<Options>();
+  CLI::App& c = parser.command("sensitivity", kHelp);
+  addModel(c, o->model);
+  required(addText(c, "--point", o->point));
+  addWhole(c, "--steps", o->steps, 1, 1'000'000);
+  addFlag(c, "--velocity", o->velocity);
+  addFlag(c, "--acceleration", o->acceleration);
+  return {&c, [o] { return sensitivity(*o); }};
+}
+
+}  // namespace linkage::cli

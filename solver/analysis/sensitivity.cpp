@@ -1,0 +1,313 @@
+// dq/dp = -J_q^-1 J_p at a pose (linkage/sensitivity.h). J_p, row by row: a row's residual
+// depends on a dimension only through its constants (the local vectors s of its points, a slot's
+// point u and normal n, a gear's coefficients), whose changes come from how the element kind
+// compiled them (elements/*.cpp; rowMove) and the dimension's move of the drawing; with the
+// frames held a sketch move is the same move of the local vector (frames are at angle 0 as
+// drawn). Then the velocities': J q' + Phi_phi = 0 at every p, so J dq'/dp = -dV, dV the change
+// of each row's rate V = J q' (q' held) along dq/dp and the constants' change (rowChange):
+//
+//   Coincident  Phi = p - q                  V = p' - q'           (p = r_i + R_i s_i, ...)
+//   OnLine      Phi = n . (p - q)            V = n' . (p - q) + n . (p' - q')
+//   OnCircle    Phi = (d . d - rho^2)/(2 rho) V = d . d' / rho      (centre and radius: arc slots
+//                                                                   have no dimension)
+//   Angles      Phi = L (sum c_k theta_k ...) V = L (sum c_k w_k ...) (a gear's ratio: dc)
+//
+// each changed to first order by the bodies' changes (dr, dtheta) and the constants' (ds, dn, dc).
+#include <Eigen/LU>
+#include <cmath>
+
+#include "kinematics/kinematics_state.h"
+#include "linkage/elements.h"
+#include "linkage/guide.h"
+#include "linkage/sensitivity.h"
+#include "system/system.h"
+
+namespace linkage {
+
+namespace {
+
+struct Moves {  // one dimension's move of the drawing, by id value
+  const std::vector<Vec2>& point;
+  const Dimension& dim;
+  Vec2 at(PointId p) const { return p.value < point.size() ? point[p.value] : Vec2::Zero(); }
+};
+
+// The block's point of a slider in an arc slot is compiled as the point at the arc's centre,
+// p - radius (p - c) / |p - c|: its move for a move dp of p (the arc held).
+Vec2 arcBlockMove(const Mechanism& m, const Joint& j, const Vec2& dp) {
+  const std::optional<Guide> g = guideOf(*m.slot(j.slot));
+  const Vec2 d = m.point(j.a)->pos - g->centre;
+  const Vec2 u = d.normalized();
+  return dp - g->radius / d.norm() * (dp - u * u.dot(dp));
+}
+
+// A straight slot's point u (its first end) and unit normal n as they move.
+void slotMove(const Mechanism& m, const Joint& j, const Dimension& dim, Vec2& du, Vec2& dn) {
+  du = dn = Vec2::Zero();
+  for (const Dimension::SlotMove& s : dim.slots) {
+    if (s.slot != j.slot) continue;
+    const Slot& slot = *m.slot(j.slot);
+    const Vec2 t = slot.p1 - slot.p0;
+    const double len = t.norm();
+    const Vec2 e = t / len, dt = s.p1 - s.p0;
+    du = s.p0;
+    dn = perp((dt - e * e.dot(dt)) / len);
+  }
+}
+
+// A row's constants as they move with a dimension: its local vectors s, a straight slot's
+// normal n, its coefficients c.
+struct RowMove {
+  Vec2 s[2] = {Vec2::Zero(), Vec2::Zero()};
+  Vec2 n = Vec2::Zero();
+  double c[3] = {0, 0, 0};
+};
+
+RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& mv) {
+  RowMove out;
+  const Role role = kindOf(j).role;
+  switch (r.kind) {
+    case Primitive::Coincident:
+      if (role == Role::Prismatic) {
+        out.s[0] = arcBlockMove(m, j, mv.at(j.a));
+      } else {
+        out.s[0] = mv.at(j.a);
+        out.s[1] = mv.at(j.b);
+      }
+      break;
+    case Primitive::OnLine:
+      out.s[0] = mv.at(j.a);
+      slotMove(m, j, mv.dim, out.s[1], out.n);
+      break;
+    case Primitive::OnCircle:  // arc slots have no dimension: centre and radius stay
+      out.s[0] = mv.at(j.a);
+      break;
+    case Primitive::Angles:
+      // theta_b - ratio theta_a + (ratio - 1) theta_c: dc = (0, -1, 1) per unit ratio.
+      if (!r.isDriver() && role == Role::Coupling && mv.dim.ratioOf == j.id) {
+        out.c[1] = -1;
+        out.c[2] = 1;
+      }
+      break;
+    default:
+      break;
+  }
+  return out;
+}
+
+// A body's pose, rates (d/dphi) and second rates, with first-order changes of the pose and the
+// rates (zero for the ground; the second rates held): a point s of it (its position, rate and
+// second rate) and their changes for a change ds of s.
+struct Moving {
+  const BodyView& b;
+  Vec2 acc = Vec2::Zero();  // its frame origin's second rate, and its angle's
+  double alpha = 0;
+  Vec2 dr = Vec2::Zero(), dv = Vec2::Zero();
+  double dtheta = 0, dw = 0;
+  struct At {
+    Vec2 p, dp, v, dv, a, da;
+  };
+  At at(const Vec2& s, const Vec2& ds) const {
+    const Vec2 a = b.R * s, da = perp(a) * dtheta + b.R * ds;
+    const double w = b.w;
+    return {b.r + a,
+            dr + da,
+            b.v + w * perp(a),
+            dv + dw * perp(a) + w * perp(da),
+            acc + alpha * perp(a) - w * w * a,
+            alpha * perp(da) - 2 * w * dw * a - w * w * da};
+  }
+};
+
+// A row's residual and its first and second rates along the motion (Phi, V = J q' + Phi_phi,
+// A = J q'' - gamma), changed to first order by the bodies' changes and the constants' (the
+// second rates held): dPhi with no body change is J_p; dV with dq/dp (the rates held) the
+// velocities' right-hand side; dA with dq/dp and dq'/dp the accelerations'.
+struct RowChange {
+  double phi[2] = {0, 0}, v[2] = {0, 0}, a[2] = {0, 0};
+};
+
+double lineChange(const Row& r, const Moving::At& p, const Moving::At& q, const Moving& j,
+                  const RowMove& mv, int order) {
+  const Vec2 d = p.p - q.p, dd = p.dp - q.dp, v = p.v - q.v, dv = p.dv - q.dv;
+  const double w = j.b.w;
+  const Vec2 n = j.b.R * r.n, dn = perp(n) * j.dtheta + j.b.R * mv.n;
+  if (order == 0) return dn.dot(d) + n.dot(dd);
+  const Vec2 n1 = w * perp(n), dn1 = j.dw * perp(n) + w * perp(dn);
+  if (order == 1) return dn1.dot(d) + n1.dot(dd) + dn.dot(v) + n.dot(dv);
+  const Vec2 a = p.a - q.a, da = p.da - q.da;
+  const Vec2 n2 = j.alpha * perp(n) - w * w * n;
+  const Vec2 dn2 = j.alpha * perp(dn) - 2 * w * j.dw * n - w * w * dn;
+  return dn2.dot(d) + n2.dot(dd) + 2 * (dn1.dot(v) + n1.dot(dv)) + dn.dot(a) + n.dot(da);
+}
+
+RowChange rowChange(const System& sys, const Row& r, const Moving& i, const Moving& j,
+                    const Moving& k, const RowMove& mv) {
+  RowChange out;
+  const Moving::At p = i.at(r.s[0], mv.s[0]), q = j.at(r.s[1], mv.s[1]);
+  const Vec2 d = p.p - q.p, dd = p.dp - q.dp, v = p.v - q.v, dv = p.dv - q.dv;
+  const Vec2 a = p.a - q.a, da = p.da - q.da;
+  switch (r.kind) {
+    case Primitive::Coincident:
+      for (int e = 0; e < 2; ++e) out.phi[e] = dd[e], out.v[e] = dv[e], out.a[e] = da[e];
+      break;
+    case Primitive::OnLine:
+      for (int o = 0; o < 3; ++o)
+        (o == 0 ? out.phi : o == 1 ? out.v : out.a)[0] = lineChange(r, p, q, j, mv, o);
+      break;
+    case Primitive::OnCircle:  // Phi'' = (d' . d' + d . d'') / rho
+      out.phi[0] = d.dot(dd) / r.c[0];
+      out.v[0] = (dd.dot(v) + d.dot(dv)) / r.c[0];
+      out.a[0] = (2 * v.dot(dv) + dd.dot(a) + d.dot(da)) / r.c[0];
+      break;
+    case Primitive::Angles: {
+      const Moving* m[3] = {&i, &j, &k};  // the ground's angle and rates are 0
+      for (int c = 0; c < 3; ++c) {
+        out.phi[0] += sys.size * (r.c[c] * m[c]->dtheta + mv.c[c] * m[c]->b.theta);
+        out.v[0] += sys.size * (r.c[c] * m[c]->dw + mv.c[c] * m[c]->b.w);
+        out.a[0] += sys.size * mv.c[c] * m[c]->alpha;
+      }
+      break;
+    }
+    default:
+      break;
+  }
+  return out;
+}
+
+// The rows' changes (rowChange) for one dimension, into the independent rows' places (`map`):
+// `order` 0 (dPhi, no body change: J_p), 1 (dV, the pose's change dq) or 2 (dA, dq and dq').
+void rowChanges(const Mechanism& m, const System& sys, const std::vector<BodyView>& views,
+                const Eigen::VectorXd& ddq, const Moves& mv, int order, const Eigen::VectorXd& dq,
+                const Eigen::VectorXd& dqd, const std::vector<int>& map,
+                Eigen::Ref<Eigen::VectorXd> out) {
+  std::vector<Moving> moving;
+  moving.reserve(views.size());
+  for (size_t b = 0; b < views.size(); ++b) {
+    Moving x{views[b]};
+    const int c = 3 * (static_cast<int>(b) - 1);
+    if (b > 0 && ddq.size()) x.acc = ddq.segment<2>(c), x.alpha = ddq[c + 2];
+    if (b > 0 && order >= 1) x.dr = dq.segment<2>(c), x.dtheta = dq[c + 2];
+    if (b > 0 && order >= 2) x.dv = dqd.segment<2>(c), x.dw = dqd[c + 2];
+    moving.push_back(x);
+  }
+  out.setZero();
+  for (const Row& r : sys.cons) {
+    if (r.kind == Primitive::Hold) continue;
+    const RowChange ch = rowChange(sys, r, moving[r.body[0] + 1], moving[r.body[1] + 1],
+                                   moving[r.body[2] + 1], rowMove(m, m.joints[r.joint], r, mv));
+    const double* x = order == 0 ? ch.phi : order == 1 ? ch.v : ch.a;
+    for (int e = 0; e < r.rows(); ++e)
+      if (map[r.row + e] >= 0) out[map[r.row + e]] = x[e];
+  }
+}
+
+// What prepare() cannot differentiate, named; "" when it can.
+std::string unsupported(const Mechanism& m, const System& sys) {
+  if (sys.frames.size() > 1)
+    return "sensitivities of a spatial model (planes) are not computed yet";
+  for (const Row& r : sys.cons)
+    if (r.kind == Primitive::Distance3)
+      return "sensitivities through a ball rod (" + jointLabel(m, m.joints[r.joint].id) +
+             ") are not computed yet";
+  for (const Joint& j : m.joints) {
+    const Role role = kindOf(j).role;
+    if (role != Role::Revolute && role != Role::Prismatic && role != Role::PointOnCurve &&
+        role != Role::Coupling)
+      return std::string("sensitivities through a ") + kindOf(j).name + " (" + jointLabel(m, j.id) +
+             ") are not computed yet";
+  }
+  return "";
+}
+
+}  // namespace
+
+Status Sensitivity::prepare(const Kinematics& k, std::vector<Dimension> dims) {
+  dims_ = std::move(dims);
+  pointMove_.clear();
+  dq_.resize(0, 0);
+  if (!k.valid()) return Status::badModel("no mechanism is loaded");
+  const KinematicsState& s = internal::state(k);
+  if (std::string why = unsupported(s.mech, s.sys); !why.empty()) return Status::badModel(why);
+  size_t ids = 0;
+  for (const Point& p : s.mech.points) ids = std::max<size_t>(ids, p.id.value + 1);
+  pointMove_.assign(dims_.size(), std::vector<Vec2>(ids, Vec2::Zero()));
+  for (size_t d = 0; d < dims_.size(); ++d)
+    for (const auto& [p, move] : dims_[d].points)
+      if (p.value < ids) pointMove_[d][p.value] += move;
+  return Status::success();
+}
+
+Status Sensitivity::at(const Kinematics& k) {
+  const Status singular = Status::failure(
+      StatusCode::Singular, "at a singular position the motion's derivatives are unbounded");
+  if (!k.valid() || !k.derivativesValid() || pointMove_.size() != dims_.size()) return singular;
+  const KinematicsState& s = internal::state(k);
+  const System& sys = s.sys;
+  std::vector<BodyView> views;
+  makeViews(sys, k.q(), &k.dq(), views);
+  // Accelerations switched off (KinematicsOptions): no acceleration sensitivities either.
+  const bool acc = k.ddq().size() == sys.nCoords() && k.ddq().allFinite();
+  const Eigen::VectorXd ddq = acc ? k.ddq() : Eigen::VectorXd();
+  const std::vector<int>& map = s.newton.rowMap();
+  const int n = sys.nCoords(), dims = static_cast<int>(dims_.size());
+  Eigen::MatrixXd J(n, n), rhs(n, dims);
+  evalJacobian(sys, views, map, J);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(J);
+  // Phi = 0, J q' + Phi_phi = 0 and J q'' - gamma = 0 at every p: each rate's derivative from
+  // the change of its equation with the lower rates' derivatives known.
+  Eigen::MatrixXd* out[3] = {&dq_, &dqd_, &dqdd_};
+  for (int order = 0; order < (acc ? 3 : 2); ++order) {
+    for (int d = 0; d < dims; ++d) {
+      const Eigen::VectorXd dq = order ? Eigen::VectorXd(dq_.col(d)) : Eigen::VectorXd();
+      const Eigen::VectorXd dqd = order > 1 ? Eigen::VectorXd(dqd_.col(d)) : Eigen::VectorXd();
+      rowChanges(s.mech, sys, views, ddq, {pointMove_[d], dims_[d]}, order, dq, dqd, map,
+                 rhs.col(d));
+    }
+    *out[order] = -lu.solve(rhs);
+    if (!out[order]->allFinite()) return singular;
+  }
+  if (!acc) dqdd_.setConstant(n, dims, std::nan(""));
+  return Status::success();
+}
+
+Vec2 Sensitivity::point(const Kinematics& k, PointId p, int dim) const {
+  const System& sys = internal::system(k);
+  const PointLocation* loc = sys.point(p);
+  const Vec2 own = p.value < pointMove_[dim].size() ? pointMove_[dim][p.value] : Vec2::Zero();
+  if (!loc || loc->body < 0) return own;
+  const int c = 3 * loc->body;
+  const Rot R = Rot::of(k.q()[c + 2]);
+  const Vec2 a = R * loc->s;
+  return Vec2(dq_(c, dim), dq_(c + 1, dim)) + dq_(c + 2, dim) * perp(a) + R * own;
+}
+
+Vec2 Sensitivity::velocity(const Kinematics& k, PointId p, int dim) const {
+  const System& sys = internal::system(k);
+  const PointLocation* loc = sys.point(p);
+  if (!loc || loc->body < 0) return Vec2::Zero();
+  const int c = 3 * loc->body;
+  const Rot R = Rot::of(k.q()[c + 2]);
+  const Vec2 a = R * loc->s, own = pointMove_[dim][p.value];
+  const Vec2 da = dq_(c + 2, dim) * perp(a) + R * own;  // d(R s)
+  const double w = k.dq()[c + 2];
+  return k.omega() *
+         (Vec2(dqd_(c, dim), dqd_(c + 1, dim)) + dqd_(c + 2, dim) * perp(a) + w * perp(da));
+}
+
+Vec2 Sensitivity::acceleration(const Kinematics& k, PointId p, int dim) const {
+  const System& sys = internal::system(k);
+  const PointLocation* loc = sys.point(p);
+  if (!loc || loc->body < 0) return Vec2::Zero();
+  const int c = 3 * loc->body;
+  const Rot R = Rot::of(k.q()[c + 2]);
+  const Vec2 a = R * loc->s, own = pointMove_[dim][p.value];
+  const Vec2 da = dq_(c + 2, dim) * perp(a) + R * own;  // d(R s)
+  const double w = k.dq()[c + 2], dw = dqd_(c + 2, dim), alpha = k.ddq()[c + 2];
+  const double omega = k.omega();
+  return omega * omega *
+         (Vec2(dqdd_(c, dim), dqdd_(c + 1, dim)) + dqdd_(c + 2, dim) * perp(a) + alpha * perp(da) -
+          2 * w * dw * a - w * w * da);
+}
+
+}  // namespace linkage

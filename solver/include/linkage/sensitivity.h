@@ -1,0 +1,84 @@
+// Exact sensitivities of a mechanism's motion to its dimensions (issue 29): how far a point moves
+// at a crank angle per mm of a link, per mm of a ground pivot, per degree of a slot, per unit of a
+// gear ratio. From the constraints, never by finite differences: at a pose where Phi(q, p) = 0,
+// dq/dp = -J_q^-1 J_p, with J_p the rows' partial derivatives with respect to their local
+// vectors and constants (derived per primitive in analysis/sensitivity.cpp), and the
+// velocities' and accelerations' from J q' + Phi_phi = 0 and J q'' = gamma differentiated the
+// same way.
+//
+// A dimension is a change of the drawing with every body's frame held: the points of one body
+// (or one slot) move in that body's frame, nothing pinned to them moves with them (unlike a typed
+// dimension in the editor, which moves the pinned points of other bodies too: here each body's
+// dimensions are its own), and the solve closes the joints again. Crank angles are counted from
+// the drawing, as everywhere, so a dimension that keeps the crank's drawn direction (its P0-P1)
+// keeps what crank angle 0 means.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "linkage/geometry.h"
+#include "linkage/kinematics.h"
+#include "linkage/model.h"
+#include "linkage/status.h"
+
+namespace linkage {
+
+// What a dimension is and what it moves per unit (the derivative of the drawing with respect to
+// it). The dimensions of a mechanism (dimensions() below), named as the editor names them:
+// - a moving body of points P0, P1, ... (file order, as linkage/edits.h's sideLengths):
+//   `body.P0-P1` (P0 stays, P1 keeps its direction from P0); each later point Pk by its
+//   distances from the first two, `body.P1-Pk` then `body.P0-Pk` (for three points: the
+//   triangle's three sides in sideLengths' order), Pk keeping its side of the line P0P1. A
+//   point on the line P0P1 (to 1e-3 rad seen from it) or on P0 or P1, which two distances do
+//   not place, is given by its coordinates along and across P0->P1 from P0 instead:
+//   `body.Pk.along`, `body.Pk.across`. A body whose P0 and P1 coincide: each later point's
+//   `body.Pk.x`, `body.Pk.y`.
+// - each ground point: `ground.O.x`, `ground.O.y` (the ground's own name).
+// - each straight slot: `body.slot.offset` (moved along its normal, mm; its value the line's
+//   signed distance from the body's first point, the ground's from the drawing's origin) and
+//   `body.slot.angle` (turned about its first end, degrees). Arc slots have none yet.
+// - each gear: `A-B.ratio` (the bodies of its points a and b).
+struct Dimension {
+  enum class Unit { Mm, Deg, Ratio };
+  std::string name;
+  double value = 0;  // as drawn: mm, degrees or a ratio
+  Unit unit = Unit::Mm;
+  std::vector<std::pair<PointId, Vec2>> points;  // d(sketch position) per unit
+  struct SlotMove {
+    SlotId slot;
+    Vec2 p0 = Vec2::Zero(), p1 = Vec2::Zero();  // d(its ends) per unit
+  };
+  std::vector<SlotMove> slots;
+  JointId ratioOf;  // a gear whose ratio it is
+};
+
+std::vector<Dimension> dimensions(const Mechanism& m);
+
+// The derivatives of the motion at a Kinematics' current pose with respect to dimensions.
+// prepare() refuses (BadModel, naming the joint or the reason) what it cannot differentiate yet:
+// a spatial model (planes), a ball rod, a kind it does not know. At a singular position (no
+// derivativesValid()) at() fails: the motion's derivatives are unbounded there.
+class Sensitivity {
+ public:
+  Status prepare(const Kinematics& k, std::vector<Dimension> dims);
+  // dq/dp at k's current pose: one column a dimension (x, y, theta per moving body).
+  Status at(const Kinematics& k);
+  const Eigen::MatrixXd& dq() const { return dq_; }
+  const std::vector<Dimension>& dims() const { return dims_; }
+  // d(position of p)/d(dimension k), mm per unit, at the pose of the last at().
+  Vec2 point(const Kinematics& k, PointId p, int dim) const;
+  // d(velocity of p)/d(dimension k), mm/s per unit at the driver's speed (from dq'/dp: J q' +
+  // Phi_phi = 0 differentiated along dq/dp), and d(acceleration)/d(dimension k), mm/s^2 per unit
+  // (from dq''/dp: J q'' = gamma differentiated along dq/dp and dq'/dp; NaN when the Kinematics
+  // computes no accelerations).
+  Vec2 velocity(const Kinematics& k, PointId p, int dim) const;
+  Vec2 acceleration(const Kinematics& k, PointId p, int dim) const;
+
+ private:
+  std::vector<Dimension> dims_;
+  std::vector<std::vector<Vec2>> pointMove_;  // by dimension, by PointId value
+  Eigen::MatrixXd dq_, dqd_, dqdd_;           // dq/dp, dq'/dp, dq''/dp (q' = dq/dphi)
+};
+
+}  // namespace linkage

@@ -1,0 +1,106 @@
+// linkage-cli sensitivity as a user and a script see it: the header, a row a dimension a step,
+// the numbers those of linkage/sensitivity.h to the last bit, and bad input named (exit 2).
+#ifdef LINKAGE_CLI
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_harness.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/numbers.h"
+#include "linkage/sensitivity.h"
+#include "mechanisms.h"
+
+namespace linkage {
+namespace {
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> v;
+  std::istringstream s(text);
+  for (std::string f; std::getline(s, f, sep);) v.push_back(f);
+  return v;
+}
+
+class SensitivityCli : public test::CliTest {
+ protected:
+  std::string save(const Mechanism& m) {
+    return "'" + writeFile("m.linkage.json", serializeMechanism(m)) + "'";
+  }
+};
+
+TEST_F(SensitivityCli, ARowADimensionAStepAsTheLibraryComputesThem) {
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  const test::CliResult res = run("sensitivity " + save(f.m) + " --point coupler.P --steps 8");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  const std::vector<Dimension> dims = dimensions(f.m);
+  ASSERT_EQ(dims.size(), 9u);
+  ASSERT_EQ(lines.size(), 1 + 8 * dims.size()) << res.out;
+  EXPECT_EQ(lines[0], "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm");
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dims).ok());
+  for (int step = 0; step < 8; ++step) {
+    ASSERT_TRUE(k.moveTo(45.0 * step).ok());
+    ASSERT_TRUE(s.at(k).ok());
+    for (size_t d = 0; d < dims.size(); ++d) {
+      const std::vector<std::string> row = split(lines[1 + step * dims.size() + d], ',');
+      ASSERT_EQ(row.size(), 4u);
+      EXPECT_EQ(parseNumber(row[0]), 45.0 * step);
+      EXPECT_EQ(row[1], dims[d].name);
+      const Vec2 want = s.point(k, f.P, static_cast<int>(d));
+      EXPECT_EQ(parseNumber(row[2]), want.x()) << row[1];
+      EXPECT_EQ(parseNumber(row[3]), want.y()) << row[1];
+    }
+  }
+}
+
+TEST_F(SensitivityCli, VelocityAndAccelerationColumnsWhenAsked) {
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  const test::CliResult res =
+      run("sensitivity " + save(f.m) + " --point coupler.P --steps 2 --acceleration --velocity");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  ASSERT_EQ(lines.size(), 1 + 2 * 9u) << res.out;
+  EXPECT_EQ(lines[0],
+            "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm,dvx_mm_s_per_mm,dvy_mm_s_per_mm,"
+            "dax_mm_s2_per_mm,day_mm_s2_per_mm");
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dimensions(f.m)).ok());
+  ASSERT_TRUE(k.moveTo(180).ok());
+  ASSERT_TRUE(s.at(k).ok());
+  const std::vector<std::string> row = split(lines[1 + 9 + 4], ',');  // 180 deg, crank.O2-A
+  ASSERT_EQ(row.size(), 8u);
+  EXPECT_EQ(row[1], "crank.O2-A");
+  EXPECT_EQ(parseNumber(row[4]), s.velocity(k, f.P, 4).x());
+  EXPECT_EQ(parseNumber(row[5]), s.velocity(k, f.P, 4).y());
+  EXPECT_EQ(parseNumber(row[6]), s.acceleration(k, f.P, 4).x());
+  EXPECT_EQ(parseNumber(row[7]), s.acceleration(k, f.P, 4).y());
+}
+
+TEST_F(SensitivityCli, BadInputIsNamed) {
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  const std::string model = save(f.m);
+  test::CliResult res = run("sensitivity " + model + " --point coupler.Q");
+  EXPECT_EQ(res.exit, 2);
+  EXPECT_NE(res.err.find("no point \"Q\" on body \"coupler\""), std::string::npos) << res.err;
+  res = run("sensitivity " + model);
+  EXPECT_EQ(res.exit, 2);
+  EXPECT_NE(res.err.find("--point"), std::string::npos) << res.err;
+  res = run("sensitivity " + model + " --point coupler.P --steps 0");
+  EXPECT_EQ(res.exit, 2);
+  EXPECT_NE(res.err.find("--steps"), std::string::npos) << res.err;
+  res = run("sensitivity rssr-crank-rocker --point rocker.C");
+  EXPECT_EQ(res.exit, 2);
+  EXPECT_NE(res.err.find("spatial model"), std::string::npos) << res.err;
+  EXPECT_TRUE(res.out.empty()) << res.out;
+}
+
+}  // namespace
+}  // namespace linkage
+#endif
