@@ -351,27 +351,37 @@ TEST(Sensitivity, ScalingTheDrawingScalesEveryPointOfTheMachines) {
 // (B - A) . (B' - A') = 0 and their derivatives. A pin in the arc (an OnCircle row), and the
 // example's block made a body of two points C, B (C first: block.C-B moves B in the block, the
 // row at the arc's centre with it): the rod's end does not move with the block's shape, exactly.
+// The curved guide: a crank, a rod whose end B runs in the arc, by itself or pinned to a block
+// of two points (C, B) in it.
+const Vec2 kGuideA0(0, 15), kGuideB0(-1.1292513648949634, 59.98582878368345);
+Mechanism curvedGuide(bool pinInSlot) {
+  Mechanism m;
+  const BodyId g = m.addBody("ground", true), crank = m.addBody("crank"), rod = m.addBody("rod");
+  const Vec2 A0 = kGuideA0, B0 = kGuideB0;
+  const SlotId guide = m.addSlot(g, "guide", Vec2(-4, 17), Vec2(-4, 73));
+  m.slots.back().mid = Vec2(0, 45);
+  const JointId drive =
+      m.addPin(m.addPoint(g, "O", Vec2(0, 0)), m.addPoint(crank, "O", Vec2(0, 0)));
+  m.addPin(m.addPoint(crank, "A", A0), m.addPoint(rod, "A", A0));
+  const PointId rodB = m.addPoint(rod, "B", B0);
+  if (pinInSlot) {
+    m.addPinInSlot(rodB, guide);
+  } else {
+    const BodyId block = m.addBody("block");
+    m.addPoint(block, "C", B0 + Vec2(6, -4));
+    const PointId blockB = m.addPoint(block, "B", B0);
+    m.addPin(rodB, blockB);
+    m.addSlider(blockB, guide);
+  }
+  m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
+  return m;
+}
+
 TEST(Sensitivity, CurvedGuideMatchesTheCirclesIntersection) {
   for (bool pinInSlot : {true, false}) {
-    Mechanism m;
-    const BodyId g = m.addBody("ground", true), crank = m.addBody("crank"), rod = m.addBody("rod");
-    const Vec2 A0(0, 15), B0(-1.1292513648949634, 59.98582878368345);
-    const SlotId guide = m.addSlot(g, "guide", Vec2(-4, 17), Vec2(-4, 73));
-    m.slots.back().mid = Vec2(0, 45);
-    const JointId drive =
-        m.addPin(m.addPoint(g, "O", Vec2(0, 0)), m.addPoint(crank, "O", Vec2(0, 0)));
-    m.addPin(m.addPoint(crank, "A", A0), m.addPoint(rod, "A", A0));
-    const PointId rodB = m.addPoint(rod, "B", B0);
-    if (pinInSlot) {
-      m.addPinInSlot(rodB, guide);
-    } else {
-      const BodyId block = m.addBody("block");
-      m.addPoint(block, "C", B0 + Vec2(6, -4));
-      const PointId blockB = m.addPoint(block, "B", B0);
-      m.addPin(rodB, blockB);
-      m.addSlider(blockB, guide);
-    }
-    m.driver = Driver{drive, 60, Direction::Ccw, 0, ""};
+    const Mechanism m = curvedGuide(pinInSlot);
+    const Vec2 A0 = kGuideA0, B0 = kGuideB0;
+    const PointId rodB = *m.findPoint("rod.B");
     Kinematics k;
     ASSERT_TRUE(k.load(m).ok());
     const std::optional<Guide> arc = guideOf(m.slots.front());
