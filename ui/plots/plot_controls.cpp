@@ -60,7 +60,7 @@ void PlotControls::addPlotRow() {
   row1->addWidget(new QLabel("Plot"));
   row1->addWidget(target_, 1);
   row1->addWidget(component_);
-  row1->addWidget(to_);
+  row1->addWidget(to_, 1);
   row1->addWidget(direction_);
   row1->addWidget(elevation_);
   row1_ = new QHBoxLayout;
