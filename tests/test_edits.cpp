@@ -87,7 +87,15 @@ TEST(Edits, AnEditWhoseSketchPoseIsOutOfReachBecomesTheDrawing) {
   // A crank-rocker turned to crank 90 (A = (0, 20)); its rocker pivot moved, where it is now, to
   // O4 = (-80, 70) with a rocker of 40: the loop closes here (|A O4| = 94.3 < 70 + 40) but not at
   // crank 0 (|A O4| = 122 > 110). The drawing becomes this pose, and crank angle 0 with it.
-  const test::FourBar f = test::fourBar(60, 20, 70, 50, 0);
+  // The crank's mass sits 10 mm off its line O2A: redrawn at crank 90, it stays there on it.
+  test::FourBar f = test::fourBar(60, 20, 70, 50, 0);
+  f.m.body(f.crank)->mass = Mass{.kg = 1, .com = Vec2(15, 10), .jKgMm2 = 1};
+  f.m.body(f.crank)->mass->counterweights.push_back({0.5, Vec2(15, 10)});
+  const auto onCrank = [&](const Mechanism& m, Vec2 at) -> Vec2 {
+    const Vec2 o = m.point(f.O2)->pos, oa = m.pointNamed(f.crank, "A")->pos - o;
+    return Vec2((at - o).dot(oa), cross(oa, at - o)) / oa.norm();
+  };
+  const Vec2 comOnCrank = onCrank(f.m, Vec2(15, 10));
   Kinematics k;
   ASSERT_TRUE(k.load(f.m).ok());
   ASSERT_TRUE(k.moveTo(90).ok());
@@ -113,6 +121,9 @@ TEST(Edits, AnEditWhoseSketchPoseIsOutOfReachBecomesTheDrawing) {
   for (const Point& p : edit.design.points)
     EXPECT_LT((loaded.position(p.id) - edit.kinematics.position(p.id)).norm(), 1e-9) << p.name;
   EXPECT_LT((loaded.position(f.O4) - O4).norm(), 1e-9);
+  const Mass& mass = *edit.design.body(f.crank)->mass;
+  EXPECT_LT((onCrank(edit.design, mass.com) - comOnCrank).norm(), 1e-9);
+  EXPECT_LT((onCrank(edit.design, mass.counterweights[0].at) - comOnCrank).norm(), 1e-9);
 }
 
 // A plate by its side lengths (the homework's triangle EF 16, FG 56, EG 62), a bar by its

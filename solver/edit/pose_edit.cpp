@@ -7,7 +7,13 @@ namespace linkage {
 
 namespace {
 
+// Its centre of mass and counterweights too: the file holds them in sketch coordinates, so a
+// body redrawn without them would carry its mass somewhere else.
 void transformBody(Mechanism& m, BodyId b, const Transform& T) {
+  if (Body* body = m.body(b); body && body->mass) {
+    body->mass->com = T * body->mass->com;
+    for (PointMass& w : body->mass->counterweights) w.at = T * w.at;
+  }
   for (Point& p : m.points)
     if (p.body == b) p.pos = T * p.pos;
   for (Slot& s : m.slots)
