@@ -163,19 +163,15 @@ std::optional<Fault> segments(const Joint& j, bool oscillating, std::vector<cam:
   return Fault{"motion[" + std::to_string(bad) + "]." + field, why};
 }
 
-// The drawing is the follower's lowest position (the spec's rules); the offset into c.
-std::optional<Fault> lowest(CamJoint& c) {
+// The drawing oriented (the spec's rules): a translating follower's rise direction u away from
+// the foot F of the perpendicular from a to the slot, towards b, and its offset; an oscillating
+// one's sign (+1 when turning counter-clockwise moves b away from a) and flat face.
+std::optional<Fault> orient(CamJoint& c) {
   cam::Place& d = c.drawn;
-  const double reach = c.kind.base + c.kind.roller;
   if (c.kind.oscillating) {
     if (c.kind.flat) d.face = (d.b - d.centre).normalized();
-    const double r = (d.b - d.centre).norm();
-    if (std::abs(r - reach) > kDrawn)
-      return Fault{"b", "b is " + mm(r) + " mm from a, not base + roller = " + mm(reach) +
-                            " mm: the drawing is the follower's lowest position, on the base "
-                            "circle"};
     const double turn = cross(d.b - d.pivot, d.b - d.centre);
-    if (!(std::abs(turn) > 1e-9 * (d.b - d.pivot).norm() * r))
+    if (!(std::abs(turn) > 1e-9 * (d.b - d.pivot).norm() * (d.b - d.centre).norm()))
       return Fault{"b",
                    "the follower's arm from its pivot points at the cam's centre: turning "
                    "it would not move b away from a"};
@@ -187,8 +183,24 @@ std::optional<Fault> lowest(CamJoint& c) {
   const double along = (d.b - foot).dot(line);
   if (along == 0) return Fault{"b", "b is at the foot of the perpendicular from a to the slot"};
   d.along = along > 0 ? line : Vec2(-line);
+  d.pivot = foot;  // a point of the slot's line: the foot, where the sizes are measured from
   const Vec2 w(d.along.y(), -d.along.x());
   c.offset = (d.b - d.centre).dot(w);
+  return std::nullopt;
+}
+
+// The drawing is the follower's lowest position (the spec's rules).
+std::optional<Fault> lowest(const CamJoint& c) {
+  const cam::Place& d = c.drawn;
+  const double reach = c.kind.base + c.kind.roller;
+  if (c.kind.oscillating) {
+    const double r = (d.b - d.centre).norm();
+    if (std::abs(r - reach) > kDrawn)
+      return Fault{"b", "b is " + mm(r) + " mm from a, not base + roller = " + mm(reach) +
+                            " mm: the drawing is the follower's lowest position, on the base "
+                            "circle"};
+    return std::nullopt;
+  }
   double distance = c.kind.base;
   if (!c.kind.flat) {
     if (!(std::abs(c.offset) < reach))
@@ -196,7 +208,7 @@ std::optional<Fault> lowest(CamJoint& c) {
                             mm(reach) + " mm: the slot's line misses the base circle"};
     distance = std::sqrt(reach * reach - c.offset * c.offset);
   }
-  const double off = (d.b - (foot + distance * d.along)).norm();
+  const double off = (d.b - (d.pivot + distance * d.along)).norm();
   if (off > kDrawn)
     return Fault{"b", "b is " + mm(off) + " mm from where the follower touches the base circle" +
                           " (on the slot's line, " + mm(distance) +
@@ -222,7 +234,8 @@ std::optional<Fault> sizes(const Joint& j, cam::Follower& f) {
   return std::nullopt;
 }
 
-std::optional<Fault> read(const Mechanism& m, const Joint& j, CamJoint& c) {
+// With `drawn` false, the sizes are not checked against the drawing (camJointAsDrawn).
+std::optional<Fault> read(const Mechanism& m, const Joint& j, CamJoint& c, bool drawn = true) {
   if (auto f = sizes(j, c.kind)) return f;
   const Point *a = m.point(j.a), *b = m.point(j.b);
   c.cam = a->body;
@@ -237,7 +250,9 @@ std::optional<Fault> read(const Mechanism& m, const Joint& j, CamJoint& c) {
   if (auto f = followerJoint(m, c)) return f;
   std::vector<cam::Segment> segs;
   if (auto f = segments(j, c.kind.oscillating, segs)) return f;
-  if (auto f = lowest(c)) return f;
+  if (auto f = orient(c)) return f;
+  if (drawn)
+    if (auto f = lowest(c)) return f;
   c.program = cam::Program(std::move(segs), c.kind.oscillating ? M_PI / 180 : 1.0);
   return std::nullopt;
 }
@@ -328,20 +343,34 @@ void place(const Mechanism&, const Joint& j, const Pose& pose, JointSymbol& s) {
 
 }  // namespace
 
-std::optional<CamJoint> camJoint(const Mechanism& m, const Joint& j, std::string* why,
-                                 std::string* where) {
+namespace {
+
+std::optional<CamJoint> readCam(const Mechanism& m, const Joint& j, std::string* why,
+                                std::string* where, bool drawn) {
   CamJoint c;
   if (!m.point(j.a) || !m.point(j.b)) {
     if (why) *why = "unknown reference";
     if (where) where->assign(1, m.point(j.a) ? 'b' : 'a');  // (GCC 12's -Wrestrict: bug 105329)
     return std::nullopt;
   }
-  if (std::optional<Fault> f = read(m, j, c)) {
+  if (std::optional<Fault> f = read(m, j, c, drawn)) {
     if (why) *why = f->why;
     if (where) *where = f->where;
     return std::nullopt;
   }
   return c;
+}
+
+}  // namespace
+
+std::optional<CamJoint> camJoint(const Mechanism& m, const Joint& j, std::string* why,
+                                 std::string* where) {
+  return readCam(m, j, why, where, true);
+}
+
+std::optional<CamJoint> camJointAsDrawn(const Mechanism& m, const Joint& j, std::string* why,
+                                        std::string* where) {
+  return readCam(m, j, why, where, false);
 }
 
 ElementKind camElement(JointType t) {

@@ -29,6 +29,12 @@ struct CamJoint {
 std::optional<CamJoint> camJoint(const Mechanism& m, const Joint& j, std::string* why = nullptr,
                                  std::string* where = nullptr);
 
+// The same with base and roller not checked against the drawing (the follower need not be at
+// its lowest position): what an editor reads to size a cam for a follower as it is drawn
+// (linkage/cam_edits.h).
+std::optional<CamJoint> camJointAsDrawn(const Mechanism& m, const Joint& j,
+                                        std::string* why = nullptr, std::string* where = nullptr);
+
 // The cam's angle theta (radians, counter-clockwise from the drawing) from the rotations of the
 // cam's body and the guide's at a pose.
 inline double camAngle(const Rot& cam, const Rot& guide) {
