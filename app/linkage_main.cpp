@@ -3,7 +3,7 @@
 //
 //   linkage [FILE | EXAMPLE-NAME]
 //   linkage --screenshot OUT.png [FILE|EXAMPLE] [--angle DEG] [--ics] [--plots] [--size WxH]
-//           [--dark] [--extremes] [--transmission] [--checks] [--forces] [--cycle] [--3d]
+//           [--dark] [--extremes] [--transmission] [--checks] [--forces] [--cycle] [--cam] [--3d]
 //           [--plane NAME]
 //   linkage --version | --help
 #include <QApplication>
@@ -59,6 +59,8 @@ struct Options {
   const QCommandLineOption cycle{
       QStringLiteral("cycle"),
       QStringLiteral("Show the cycle dock (the file's timing) and its clearances on the canvas.")};
+  const QCommandLineOption cam{QStringLiteral("cam"),
+                               QStringLiteral("Show the cam dock (the file's first cam).")};
 
   // The frame benchmarks were options of the editor until issue 19: they say where they went.
   const QCommandLineOption benchmarks = [] {
@@ -79,7 +81,7 @@ struct Options {
                                              "(e.g. wanzer-inversion-2)."),
                               QStringLiteral("[FILE | EXAMPLE-NAME]"));
     cli.addOptions({help, version, screenshot, angle, ics, plots, size, dark, extremes,
-                    transmission, checks, forces, cycle, view3d, plane, benchmarks});
+                    transmission, checks, forces, cycle, cam, view3d, plane, benchmarks});
   }
 };
 
@@ -140,6 +142,7 @@ int runOffscreen(const QCommandLineParser& cli, const Options& opt, const QStrin
   o.ics = cli.isSet(opt.ics);
   o.forces = cli.isSet(opt.forces);
   o.cycle = cli.isSet(opt.cycle);
+  o.cam = cli.isSet(opt.cam);
   o.plots = cli.isSet(opt.plots);
   o.dark = cli.isSet(opt.dark);
   o.extremes = cli.isSet(opt.extremes);

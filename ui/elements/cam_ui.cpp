@@ -1,11 +1,15 @@
 // The cam in the editor: its profile turning with the cam and its follower's roller or face
 // (cam_item.h); its follower, base circle, roller and motion programme in the panel. It is made
-// in the file (../shared/specs/model-format.md, "Cams"); the cam table that designs one from
-// the follower's motion is still to come (issue 28).
+// from a follower's point (its menu's "Drive by a Cam") and designed in the Cam dock
+// (cam/cam_panel.h) from the follower's motion.
+#include <QMenu>
+
 #include "document/document.h"
 #include "elements/cam_item.h"
 #include "elements/element_ui.h"
+#include "elements/menu_actions.h"
 #include "forms/form.h"
+#include "linkage/cam_edits.h"
 #include "linkage/cam_joint.h"
 
 namespace linkage::ui {
@@ -61,6 +65,27 @@ void form(Form& panel, JointId id) {
 
 void jointMenu(MenuActions&, QMenu&, const Joint&) {}
 
+// "Drive by a Cam" on a follower's point: a cam on each body that could carry it (pinned to
+// the body that guides the follower), with a roller or a flat face (cam_edits.h: addCam).
+void pointMenu(MenuActions& box, QMenu& menu, PointId p) {
+  const Mechanism& m = box.document()->design();
+  const std::vector<BodyId> cams = camBodiesFor(m, p);
+  if (cams.empty()) return;
+  QMenu* sub = menu.addMenu(MenuActions::tr("Drive by a Cam"));
+  for (bool flat : {false, true})
+    for (BodyId cam : cams) {
+      const QString on = QString::fromStdString(m.body(cam)->name);
+      sub->addAction(flat ? MenuActions::tr("Flat Face, Cam on %1").arg(on)
+                          : MenuActions::tr("Roller, Cam on %1").arg(on),
+                     sub, [&box, p, cam, flat] {
+                       box.editWith(MenuActions::tr("Drive by a Cam"),
+                                    [p, cam, flat](Mechanism& m, std::string& why) {
+                                      return static_cast<bool>(addCam(m, p, cam, flat, &why));
+                                    });
+                     });
+    }
+}
+
 }  // namespace
 
 const ElementUi& camUi() {
@@ -72,7 +97,7 @@ const ElementUi& camUi() {
       form,
       jointMenu,
       nullptr,
-      nullptr};
+      pointMenu};
   return ui;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "window/animation_feature.h"
+#include "window/cam_feature.h"
 #include "window/centres_feature.h"
 #include "window/cycle_feature.h"
 #include "window/design_feature.h"

@@ -26,6 +26,7 @@
 #include "tools/selection.h"
 #include "tools/toolbox.h"
 #include "window/animation_feature.h"
+#include "window/cam_feature.h"
 #include "window/centres_feature.h"
 #include "window/choice_keys.h"
 #include "window/cycle_feature.h"
@@ -105,6 +106,7 @@ void MainWindow::createFeatures() {
   add(forces_);                // its dock a tab beside the plots
   add(mechanisms_);            // its dock a tab beside the history
   add(cycle_);                 // its dock a tab beside the plots
+  add(cams_);                  // its dock a tab beside the plots
   add(view3d_);                // its dock a tab beside the properties
   properties_->dock->raise();  // the default front tab on the right (a saved layout may differ)
 }

@@ -32,6 +32,7 @@ class CanvasScene;
 class CanvasView;
 class CentresFeature;
 class CycleFeature;
+class CamFeature;
 class DesignFeature;
 class Document;
 class EditFeature;
@@ -78,6 +79,7 @@ class MainWindow : public QMainWindow {
   ForcesFeature& forces() const { return *forces_; }
   MechanismsFeature& mechanisms() const { return *mechanisms_; }
   CycleFeature& cycle() const { return *cycle_; }
+  CamFeature& cams() const { return *cams_; }
   View3dFeature& view3d() const { return *view3d_; }
 
   // Every open main window.
@@ -158,6 +160,7 @@ class MainWindow : public QMainWindow {
   ForcesFeature* forces_ = nullptr;
   MechanismsFeature* mechanisms_ = nullptr;
   CycleFeature* cycle_ = nullptr;
+  CamFeature* cams_ = nullptr;
   View3dFeature* view3d_ = nullptr;
   QFileSystemWatcher* watcher_ = nullptr;
   QString watched_;

@@ -16,6 +16,7 @@
 #include "document/document.h"
 #include "linkage/space.h"
 #include "view3d/view3d_widget.h"
+#include "window/cam_feature.h"
 #include "window/centres_feature.h"
 #include "window/cycle_feature.h"
 #include "window/design_feature.h"
@@ -66,6 +67,10 @@ void showAsked(MainWindow& w, const OffscreenOptions& o) {
   if (o.cycle) {
     w.cycle().dock->show();
     w.cycle().dock->raise();
+  }
+  if (o.cam) {
+    w.cams().dock->show();
+    w.cams().dock->raise();
   }
   if (o.ics) w.centres().dock->raise();
   w.plots().dock->setVisible(o.plots);

@@ -22,6 +22,7 @@ bool isSeparator(Slot s) {
     case Slot::AnalysisSeparator1:
     case Slot::AnalysisSeparator2:
     case Slot::AnalysisSeparator3:
+    case Slot::AnalysisSeparator4:
     case Slot::ToolsBarSeparator:
       return true;
     default:
@@ -71,7 +72,7 @@ QWidget* WindowLayout::target(Slot s) const {
   if (within(s, Slot::ToolsTools, Slot::ToolsSnap)) return tools_;
   if (within(s, Slot::ViewFit, Slot::View3dDock)) return view_;
   if (within(s, Slot::AnimationPlay, Slot::AnimationFaster)) return animation_;
-  if (within(s, Slot::AnalysisDesignChecks, Slot::AnalysisWatchClearance)) return analysis_;
+  if (within(s, Slot::AnalysisDesignChecks, Slot::AnalysisCamDock)) return analysis_;
   if (s == Slot::HelpAbout) return help_;
   if (within(s, Slot::FileBarNew, Slot::FileBarRedo)) return fileBar_;
   if (within(s, Slot::ToolsBarTools, Slot::ToolsBarFlip)) return toolsBar_;

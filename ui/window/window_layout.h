@@ -78,6 +78,7 @@ enum class Slot {
   ViewDesignChecksDock,
   ViewMechanismsDock,
   ViewCycleDock,
+  ViewCamDock,
   View3dDock,
   // Animation
   AnimationPlay,
@@ -100,6 +101,8 @@ enum class Slot {
   AnalysisSeparator3,
   AnalysisCycleDock,
   AnalysisWatchClearance,
+  AnalysisSeparator4,
+  AnalysisCamDock,
   // Help
   HelpAbout,
   // The toolbars: File (top), Tools (left), View (top), Animation (bottom).
