@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bench_common.h"
+#include "cam_fixtures.h"
 #include "kinematics/kinematics_state.h"
 #include "linkage/kinematics.h"
 
@@ -23,7 +24,8 @@ using bench::example;
 void kinematicStep(benchmark::State& state, const std::string& name, bool accelerations,
                    bool closedForm = true, const std::vector<std::string>& without = {},
                    const std::string& output = "") {
-  Mechanism m = example(name);
+  // A name starting with '{' is the mechanism's file text.
+  Mechanism m = name.starts_with('{') ? *parseMechanism(name).mechanism : example(name);
   std::vector<BodyId> gone;
   for (const std::string& b : without) gone.push_back(m.bodyNamed(b)->id);
   if (!gone.empty()) m.remove(gone);
@@ -111,8 +113,14 @@ BENCHMARK_CAPTURE(kinematicStep, cam, std::string("cam-translating-roller"), tru
 BENCHMARK_CAPTURE(kinematicStep, gear_pair, std::string("gear-four-bar"), true, true,
                   std::vector<std::string>{"coupler", "rocker"}, std::string("gear.A"))
     ->Name("step/gear_pair");
+// An oscillating roller follower (tests/cam_fixtures.h): its turn needs a sine and cosine.
+BENCHMARK_CAPTURE(kinematicStep, cam_oscillating, linkage::test::OscillatingCam{}.text(), true)
+    ->Name("step/cam_oscillating");
 BENCHMARK_CAPTURE(kinematicStep, cam, std::string("cam-translating-roller"), true, false)
     ->Name("step_general/cam_translating");
+BENCHMARK_CAPTURE(kinematicStep, cam_oscillating, linkage::test::OscillatingCam{}.text(), true,
+                  false)
+    ->Name("step_general/cam_oscillating");
 BENCHMARK_CAPTURE(kinematicStep, gear_pair, std::string("gear-four-bar"), true, false,
                   std::vector<std::string>{"coupler", "rocker"}, std::string("gear.A"))
     ->Name("step_general/gear_pair");

@@ -1,7 +1,7 @@
-// Closed-form kinematics for mechanisms built from a driven crank, gear-coupled bodies and dyads
-// (Assur groups of class II), solved one group after another from the ground outwards, in the
-// order of the structural decomposition (structure/decomposition.h), as a designer does by hand.
-// The same equations as the general solve, ordered into a block-triangular sequence:
+// Closed-form kinematics for mechanisms built from a driven crank, gear-coupled bodies, cams'
+// followers and dyads (Assur groups of class II), solved one group after another from the ground
+// outwards, in the order of the structural decomposition (structure/decomposition.h), as a designer
+// does by hand. The same equations as the general solve, ordered into a block-triangular sequence:
 //
 //   crank  body B pinned to a known body K at the driver:  theta_B = theta_K +- sigma phi,
 //          r_B from the pin.
