@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bench_common.h"
+#include "cam_fixtures.h"
 #include "kinematics/kinematics_state.h"
 #include "linkage/kinematics.h"
 
@@ -21,8 +22,10 @@ using namespace linkage;
 using bench::example;
 
 void kinematicStep(benchmark::State& state, const std::string& name, bool accelerations,
-                   bool closedForm = true, const std::vector<std::string>& without = {}) {
-  Mechanism m = example(name);
+                   bool closedForm = true, const std::vector<std::string>& without = {},
+                   const std::string& output = "") {
+  // A name starting with '{' is the mechanism's file text.
+  Mechanism m = name.starts_with('{') ? *parseMechanism(name).mechanism : example(name);
   std::vector<BodyId> gone;
   for (const std::string& b : without) gone.push_back(m.bodyNamed(b)->id);
   if (!gone.empty()) m.remove(gone);
@@ -31,7 +34,7 @@ void kinematicStep(benchmark::State& state, const std::string& name, bool accele
   opt.closedForm = closedForm;
   Kinematics k(opt);
   if (!k.load(m).ok()) std::abort();
-  const PointId out = m.outputs.at(0);
+  const PointId out = output.empty() ? m.outputs.at(0) : *m.findPoint(output);
   double angle = 0;
   for (auto _ : state) {
     angle += 1.0;
@@ -100,6 +103,27 @@ BENCHMARK_CAPTURE(kinematicStep, planet, std::string("planet-epicycloid"), true,
     ->Name("step_general/planet");
 BENCHMARK_CAPTURE(kinematicStep, curved_guide, std::string("curved-guide"), true, false)
     ->Name("step_general/curved_guide");
+// A cam and its follower against a gear pair of as many bodies (issue 28: a cam joint's step no
+// slower than a gear's). Each is a driven body and one body solved from it by a single row
+// (the follower: its slider and the cam's row; the gear: its pin and the gear's row), the
+// output a point of that second body: the cam example as it is, and the gear four-bar without
+// its coupler and rocker (the pinion driving the gear, gear.A the output).
+BENCHMARK_CAPTURE(kinematicStep, cam, std::string("cam-translating-roller"), true)
+    ->Name("step/cam_translating");
+BENCHMARK_CAPTURE(kinematicStep, gear_pair, std::string("gear-four-bar"), true, true,
+                  std::vector<std::string>{"coupler", "rocker"}, std::string("gear.A"))
+    ->Name("step/gear_pair");
+// An oscillating roller follower (tests/cam_fixtures.h): its turn needs a sine and cosine.
+BENCHMARK_CAPTURE(kinematicStep, cam_oscillating, linkage::test::OscillatingCam{}.text(), true)
+    ->Name("step/cam_oscillating");
+BENCHMARK_CAPTURE(kinematicStep, cam, std::string("cam-translating-roller"), true, false)
+    ->Name("step_general/cam_translating");
+BENCHMARK_CAPTURE(kinematicStep, cam_oscillating, linkage::test::OscillatingCam{}.text(), true,
+                  false)
+    ->Name("step_general/cam_oscillating");
+BENCHMARK_CAPTURE(kinematicStep, gear_pair, std::string("gear-four-bar"), true, false,
+                  std::vector<std::string>{"coupler", "rocker"}, std::string("gear.A"))
+    ->Name("step_general/gear_pair");
 // The same steps without accelerations (positions and velocities only): what leaving them out
 // saves.
 BENCHMARK_CAPTURE(kinematicStep, slider_crank, std::string("slider-crank-22a-lambda-0.5"), false)

@@ -6,8 +6,8 @@
 namespace linkage {
 
 const char* toString(GroupKind k) {
-  static const char* const names[] = {"crank", "geared", "RRR",   "RRP",  "RP",
-                                      "PR",    "RS",     "triad", "other"};
+  static const char* const names[] = {"crank", "geared", "RRR",   "RRP", "RP",
+                                      "PR",    "RS",     "triad", "cam", "other"};
   return names[static_cast<int>(k)];
 }
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "elements/cam_row.h"
+
 namespace linkage {
 
 namespace {
@@ -110,7 +112,7 @@ bool ClosedFormPlan::sameGeometry(const Group& a, const Group& b, const ClosedFo
   }
   return a.p1k == b.p1k && a.p1 == b.p1 && a.c1 == b.c1 && a.c2 == b.c2 && a.p2 == b.p2 &&
          a.p2k == b.p2k && a.u == b.u && a.n == b.n && a.q2 == b.q2 &&
-         (a.kind != Kind::RC || a.d2 == b.d2) &&
+         (a.kind != Kind::RC || a.d2 == b.d2) && (a.kind != Kind::Cam || *a.cam == *b.cam) &&
          (a.kind != Kind::RS ||
           (a.d2 == b.d2 && a.f1 == b.f1 && a.f2 == b.f2 && a.z1 == b.z1 && a.z2 == b.z2));
 }
@@ -297,6 +299,7 @@ bool ClosedFormPlan::solveGroup(const Group& g, const System& sys, const Motion&
     BodyState start;
     return corePose(core, next, start) && solveCore(core, sys, prev, next, &start);
   }
+  if (g.kind == Kind::Cam) return follower(g, prev, next, jump);
   const BodyState& k1 = next.of(g.k1);
   const PointState p1 = pointOf(g.k1, k1, g.p1k);
   if (g.kind == Kind::Crank) {

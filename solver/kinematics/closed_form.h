@@ -1,7 +1,7 @@
-// Closed-form kinematics for mechanisms built from a driven crank, gear-coupled bodies and dyads
-// (Assur groups of class II), solved one group after another from the ground outwards, in the
-// order of the structural decomposition (structure/decomposition.h), as a designer does by hand.
-// The same equations as the general solve, ordered into a block-triangular sequence:
+// Closed-form kinematics for mechanisms built from a driven crank, gear-coupled bodies, cams'
+// followers and dyads (Assur groups of class II), solved one group after another from the ground
+// outwards, in the order of the structural decomposition (structure/decomposition.h), as a designer
+// does by hand. The same equations as the general solve, ordered into a block-triangular sequence:
 //
 //   crank  body B pinned to a known body K at the driver:  theta_B = theta_K +- sigma phi,
 //          r_B from the pin.
@@ -31,6 +31,15 @@
 //          b = 2 Q . E2, c = l^2 - |Q|^2 - |u|^2: t = atan2(b, a) +- acos(c / sqrt(a^2 + b^2)),
 //          the drawn sign kept. With D = W1 - W2 and g = (D . X, D . Y):
 //          omega g . perp(R u) = D . (V2 - E vP1), and alpha from D' . D' + D . D'' = 0.
+//   cam    follower F moved by a cam's row (elements/cam_row.h) over the known cam C and guide
+//          G, held to G by its own joint; theta = angle(R_G^T R_C), theta' = w_C - w_G, and the
+//          programme's s, s', s'' at theta give s' theta' and s'' theta'^2 + s' theta''.
+//          Oscillating (F pinned to G, turning by sign s): theta_F = theta_G + sign s,
+//          w_F = w_G + sign s' theta', alpha_F likewise; r_F from the pin. Translating (a
+//          slider: F keeps G's angle): r_F from two lines turning with G, the cam's (normal
+//          N1 = R u along the slot: N1 . (r_F + R b_F - Q1) = s) and the slot's (normal N2:
+//          N2 . (r_F + R a - Q2) = 0), a 2 x 2 solve; their first and second derivatives
+//          (N' = w_G perp N) give v_F and a_F by the same matrix. No branch: it has no mirror.
 //   core   one body held by three scalar conditions to known bodies, its slider blocks
 //          eliminated (core_group.h): a 3 x 3 Newton, the one group here that iterates.
 // Every group's unknowns follow from known bodies, so no factorisation of the whole system is
@@ -41,6 +50,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -83,12 +93,13 @@ class ClosedFormPlan {
   // index in Mechanism::joints) belongs to.
   int groupOfBody(int b) const { return b >= 0 ? bodyGroup_[b] : -1; }
   int groupOfJoint(int j) const { return j >= 0 ? jointGroup_[j] : -1; }
-  // Whether a group has a second assembly (its mirror closure): every kind but the crank and a
-  // geared body. A
+  // Whether a group has a second assembly (its mirror closure): every kind but the crank, a
+  // geared body and a cam's follower. A
   // dyad's joint C is the other intersection of its two circles (RRR) or of its circle and line
   // (RRP, RP); a core's pose the other root of its rows (core_group.h: corePose).
   bool hasMirror(int g) const {
-    return g >= 0 && groups_[g].kind != Kind::Crank && groups_[g].kind != Kind::Geared;
+    return g >= 0 && groups_[g].kind != Kind::Crank && groups_[g].kind != Kind::Geared &&
+           groups_[g].kind != Kind::Cam;
   }
   // The group's unknown bodies.
   std::vector<int> bodiesOf(int g) const;
@@ -101,7 +112,10 @@ class ClosedFormPlan {
 
  private:
   class Builder;
-  enum class Kind { Crank, Geared, RRR, RRP, RP, RC, PR, RS, Core };
+  enum class Kind { Crank, Geared, RRR, RRP, RP, RC, PR, RS, Cam, Core };
+  // Cam: b1 the follower, k1 its guide, k2 the cam; p1k, p1 the oscillating follower's pin (on
+  // k1, on b1); c2, p2 the cam row's points (b on b1, as drawn on k1); translating, c1 and p2k
+  // the slot row's points on b1 and on k1 (either may be the slot's), n its normal.
   struct Group {
     Kind kind = Kind::Crank;
     int b1 = -1, b2 = -1;  // unknown bodies (b2 only for RRR and RRP)
@@ -120,6 +134,7 @@ class ClosedFormPlan {
     int f1 = 0, f2 = 0;      // RS: the plane classes (System::frames) of C and of W2's body
     double z1 = 0, z2 = 0;   // RS: their depths along those classes' normals
     int core = -1;           // Core: index into cores_
+    std::shared_ptr<const CamRow> cam;  // Cam: the programme, follower and slot direction
   };
   // Solves one group into next from prev (h radians of crank later, crank rotation `crank`).
   // A jump (h = 0, another assembly of it or of a group it depends on): no continuity with
@@ -145,6 +160,8 @@ class ClosedFormPlan {
               Motion& next, bool jump) const;
   // RS: the side (+-1) of the branch line that b1's rotation R is on, 0 on it.
   double rockerSide(const Group& g, const System& sys, const Motion& m, const Rot& R) const;
+  // Cam: the follower from its guide and its cam (closed_form_cam.cpp).
+  bool follower(const Group& g, const Motion& prev, Motion& next, bool jump) const;
   // PR: b1 from its pin and the known point in its slot.
   bool slotted(const Group& g, const Motion& prev, double h, const PointState& p1, Motion& next,
                bool jump) const;

@@ -4,6 +4,7 @@
 // Linear in the size of the mechanism.
 #include <algorithm>
 
+#include "elements/cam_row.h"
 #include "kinematics/closed_form.h"
 
 namespace linkage {
@@ -104,6 +105,9 @@ class ClosedFormPlan::Builder {
       case K::RS:
         if (!rocker(g, row(d.rows[0]), row(d.rows[1]))) return false;
         break;
+      case K::Cam:
+        if (!follower(g, d)) return false;
+        break;
       case K::Triad:
         return core(d, at);
       case K::Other:
@@ -145,6 +149,37 @@ class ClosedFormPlan::Builder {
     g.z2 = rod.depth[1 - e];
     g.d2 = rod.c[0];
     return (g.c1 - g.p1).squaredNorm() > 1e-18 * g.d2 * g.d2;
+  }
+
+  // Cam: the follower's own joint to the cam's guide, then the cam's row (closed_form.h). False
+  // where the rows are not the follower's as elements/cam.cpp compiles them (its slider keeps
+  // the guide's angle).
+  bool follower(Group& g, const linkage::Group& d) const {
+    g.kind = Kind::Cam;
+    const Row& c = row(d.rows.back());
+    g.cam = c.cam;
+    g.k2 = c.body[1];
+    g.c2 = c.s[0];
+    g.p2 = c.s[1];
+    if (c.cam->kind.oscillating) {
+      if (d.rows.size() != 2) return false;
+      outerPin(g, row(d.rows[0]));
+      return g.k1 == c.body[2];
+    }
+    if (d.rows.size() != 3) return false;
+    g.k1 = c.body[2];
+    const Row &line = row(d.rows[0]), &angle = row(d.rows[1]);
+    const int e = line.body[0] == g.b1 ? 0 : 1;
+    g.c1 = line.s[e];
+    g.p2k = line.s[1 - e];
+    g.n = line.n;
+    double cf = 0, cg = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (angle.c[k] == 0) continue;
+      if (angle.body[k] != g.b1 && angle.body[k] != g.k1) return false;
+      (angle.body[k] == g.b1 ? cf : cg) += angle.c[k];
+    }
+    return line.body[1 - e] == g.k1 && cf != 0 && cf + cg == 0 && angle.value == 0;
   }
 
   // A core body held by three conditions, its blocks eliminated (core_group.h). False where it
@@ -201,7 +236,9 @@ class ClosedFormPlan::Builder {
   // Local directions and the drawn branches, from the assembled configuration.
   void branches(const Motion& at) {
     for (Group& g : plan_.groups_) {
-      if (g.kind == Kind::Crank || g.kind == Kind::Core || g.kind == Kind::Geared) continue;
+      if (g.kind == Kind::Crank || g.kind == Kind::Core || g.kind == Kind::Geared ||
+          g.kind == Kind::Cam)
+        continue;
       if (g.kind == Kind::RS) {
         g.sign = plan_.rockerSide(g, sys_, at, at.of(g.b1).R) >= 0 ? 1 : -1;
         continue;

@@ -151,6 +151,7 @@ class Search {
 
   Group classify(const std::vector<int>& bodies, const std::vector<int>& rows) const;
   bool single(Group& g, int b, const std::vector<int>& rows) const;
+  bool follower(Group& g, int b, const std::vector<int>& rows) const;
   bool dyad(Group& g, int b1, int b2, const std::vector<int>& rows) const;
   bool triad(Group& g, const std::vector<int>& bodies, const std::vector<int>& rows) const;
 
@@ -210,6 +211,33 @@ bool Search::single(Group& g, int b, const std::vector<int>& rows) const {
     }
   }
   return false;
+}
+
+// A cam's follower: b held to the cam's guide by its own joint (a pin's Coincident row, or a
+// slider's OnLine and Angles rows) and moved by the Cam row over the known cam and guide.
+bool Search::follower(Group& g, int b, const std::vector<int>& rows) const {
+  int cam = -1;
+  for (int r : rows)
+    if (sys_.cons[r].kind == Primitive::Cam && sys_.cons[r].body[0] == b) cam = r;
+  if (cam < 0) return false;
+  const int guide = sys_.cons[cam].body[2];
+  int pin = -1, line = -1, angle = -1;
+  for (int r : rows) {
+    if (r == cam) continue;
+    const Row& row = sys_.cons[r];
+    if (knownOther(row, b) != guide) return false;
+    if (row.kind == Primitive::Coincident) pin = r;
+    if (row.kind == Primitive::OnLine) line = r;
+    if (row.kind == Primitive::Angles && !row.isDriver()) angle = r;
+  }
+  if (pin >= 0 && rows.size() == 2)
+    g.rows = {pin, cam};
+  else if (line >= 0 && angle >= 0 && rows.size() == 3)
+    g.rows = {line, angle, cam};
+  else
+    return false;
+  g.kind = Group::Kind::Cam;
+  return true;
 }
 
 bool Search::dyad(Group& g, int b1, int b2, const std::vector<int>& rows) const {
@@ -302,7 +330,8 @@ Group Search::classify(const std::vector<int>& bodies, const std::vector<int>& r
   for (int r : rows) equations += sys_.cons[r].rows();
   const bool exact = equations == 3 * static_cast<int>(bodies.size());
   Group t = g;
-  if (exact && bodies.size() == 1 && single(t, bodies[0], rows)) return t;
+  if (exact && bodies.size() == 1 && (single(t, bodies[0], rows) || follower(t, bodies[0], rows)))
+    return t;
   if (exact && bodies.size() == 2 && dyad(t, bodies[0], bodies[1], rows)) return t;
   if (exact && triad(t, bodies, rows)) return t;
   return g;

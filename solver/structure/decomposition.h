@@ -35,6 +35,8 @@ struct Group {
   // PR:     {B1}; B1's pin, the OnLine row of a known body's point in B1's straight slot (a
   //         swinging slotted link: a feed bar on its eccentric).
   // RS:     {B1}; B1's pin, the Distance3 row of a ball rod from B1's point to a known body's.
+  // Cam:    {follower B}; B's own joint to the cam's guide (a pin's Coincident row, or a
+  //         slider's OnLine and Angles rows), then the Cam row over the known cam and guide.
   // Triad:  {core, its blocks}; one body held by three scalar conditions to known bodies:
   //         pins (two), its points on known bodies' straight slots (one), and slider blocks
   //         pinned to it running in known bodies' straight slots (one); rows in body order.

@@ -19,10 +19,11 @@ namespace linkage {
 // holds a known body's point (a swinging slotted link: the feed bar on its eccentric). RS: a
 // body pinned to a known one with a point kept by a ball rod at its length from a known body's
 // point in space (the rocker of an RSSR: seed 004's W1 on its inclined axis). Triad:
-// one body held by three conditions, with its slider blocks (the Wanzer triangle). Other:
+// one body held by three conditions, with its slider blocks (the Wanzer triangle). Cam: a cam's
+// follower, held to the cam's guide by its own pin or slider and moved by the cam. Other:
 // anything else (solved by the general Newton).
-enum class GroupKind { Crank, Geared, RRR, RRP, RP, PR, RS, Triad, Other };
-// "crank", "geared", "RRR", "RRP", "RP", "PR", "RS", "triad", "other"
+enum class GroupKind { Crank, Geared, RRR, RRP, RP, PR, RS, Triad, Cam, Other };
+// "crank", "geared", "RRR", "RRP", "RP", "PR", "RS", "triad", "cam", "other"
 const char* toString(GroupKind k);
 
 struct AssurGroup {
