@@ -10,10 +10,11 @@
   chainstitch-looper-cam   a chain-stitch machine's looper rocked by a cam through a flat-faced
                            oscillating follower (dimensions ours)
 
-The follower is drawn at its lowest position, as the format requires: its roller centre b on the
-slot's line at sqrt((base + roller)^2 - e^2) from the foot of the perpendicular from the cam's
+Every follower is drawn at its lowest position (s = 0), as the format requires. The translating
+one: its roller centre b on the slot's line at sqrt((base + roller)^2 - e^2) from the foot of the perpendicular from the cam's
 centre. base 33 + roller 8 = 41 and the offset e = 9 make that 40, a whole number, so the file is
-exactly closed.
+exactly closed. The oscillating ones: b straight above the cam's centre at base + roller (or
+the base, for a flat face), whole numbers.
 
 Run from anywhere:  python3 resources/examples/cams.py
 """
