@@ -2,7 +2,8 @@
 // with and without offset, knife edge, flat face; oscillating roller and flat face) the same
 // with --steps 8 as with --steps 3600 (the steps set only the profile's points); the pressure
 // angle of the offset roller against a search of the spec's closed form; the profile the
-// joint's own (cam_profile.h) point for point; the written profile read back; bad input.
+// joint's own (cam_profile.h) point for point; the written profile read back; bad input; the
+// sewing machine examples' cams within their limits.
 #ifdef LINKAGE_CLI
 #include <gtest/gtest.h>
 
