@@ -1,10 +1,13 @@
 // Forces through a cam (issue 28 with issue 17's dynamics): the cam pushes its follower along the
 // common normal at the contact, so its reaction is that of its contact row, not of its
 // kinematic row (elements/cam_row.h). Against hand derivations:
-//   translating roller: N cos(alpha) = m a + W along the slot, the slot's side thrust
-//                       N sin(alpha), the cam's torque N times the normal's arm about a;
-//   translating flat face: N = m a + W, acting (s' - e) to the side of b: the slot's couple;
-//   oscillating roller: N cross(b - P, n) = J alpha - M about the pivot;
+//   translating roller and knife edge, with and without offset: N cos(alpha) = m a + W along
+//                       the slot, the slot's side thrust N sin(alpha), the cam's torque N times
+//                       the normal's arm about a;
+//   translating flat face, with and without offset: N = m a + W, acting (s' - e) to the side
+//                       of b: the slot's couple;
+//   oscillating roller, knife edge and flat face: N cross(I - P, n) = J alpha - M about the
+//                       pivot, n through the instant centre I (a flat face's normal, turned);
 // and by the power balance (the driver's power is the rate of the energy less the loads').
 #include <gtest/gtest.h>
 
@@ -51,8 +54,8 @@ struct Compare {
   }
 };
 
-TEST(CamForces, TranslatingRollerFollowersContactForceAndSideThrustAreTheHandDerivation) {
-  const test::TranslatingCam spec = loadedTranslating();
+// A translating roller or knife edge: the normal through b, d0 = sqrt((base + roller)^2 - e^2).
+void expectTranslatingContact(const test::TranslatingCam& spec) {
   const Mechanism m = parsed(spec.text());
   Kinematics k;
   ASSERT_TRUE(k.load(m).ok());
@@ -91,10 +94,26 @@ TEST(CamForces, TranslatingRollerFollowersContactForceAndSideThrustAreTheHandDer
   for (const auto& [got, want] : along.pairs) EXPECT_NEAR(got, want, 1e-9 * kSpring);
 }
 
+TEST(CamForces, TranslatingRollerFollowersContactForceAndSideThrustAreTheHandDerivation) {
+  expectTranslatingContact(loadedTranslating());
+}
+
+// The same hand derivation without offset, and for a knife edge (a roller of no radius) with
+// and without it.
+TEST(CamForces, CentralAndKnifeEdgeFollowersContactForceIsTheHandDerivation) {
+  for (double e : {10.0, 0.0})
+    for (double roller : {8.0, 0.0}) {
+      if (e == 10 && roller == 8) continue;  // the test above
+      test::TranslatingCam spec = loadedTranslating(false, e);
+      spec.roller = roller;
+      SCOPED_TRACE("e " + test::num(e) + ", roller " + test::num(roller));
+      expectTranslatingContact(spec);
+    }
+}
+
 // A flat face takes the force along the slot at the contact, s' - e to the side of b: the slot
 // holds its moment about b.
-TEST(CamForces, AFlatFacesContactMovesAcrossTheFaceAndTheSlotTakesItsMoment) {
-  const test::TranslatingCam spec = loadedTranslating(true, 6);
+void expectFlatContact(const test::TranslatingCam& spec) {
   const Mechanism m = parsed(spec.text());
   Kinematics k;
   ASSERT_TRUE(k.load(m).ok());
@@ -118,12 +137,19 @@ TEST(CamForces, AFlatFacesContactMovesAcrossTheFaceAndTheSlotTakesItsMoment) {
   for (const auto& [got, want] : side.pairs) EXPECT_NEAR(got, want, 1e-9 * kSpring);
 }
 
+TEST(CamForces, AFlatFacesContactMovesAcrossTheFaceAndTheSlotTakesItsMoment) {
+  expectFlatContact(loadedTranslating(true, 6));
+  SCOPED_TRACE("no offset");
+  expectFlatContact(loadedTranslating(true, 0));
+}
+
 // The rocker (its mass centre on its pivot P, J 50 kg mm^2, a spring torque of 1.5 N m
-// counter-clockwise: its rise turns it clockwise) turns as J alpha = N cross(b - P, n) + M, n
-// along (b - a) - k (b - P), k = sign s' (the normal through b meets the line a P where the two
-// bodies' velocities agree).
-TEST(CamForces, OscillatingRollerFollowersContactForceTurnsItsRocker) {
-  test::OscillatingCam spec;
+// counter-clockwise: its rise turns it clockwise) turns as J alpha = N cross(C - P, n) + M, C on
+// the common normal n. The normal passes through the instant centre of the cam and the rocker,
+// on the line a P where their velocities agree: I = k P / (k - 1), k = sign s' the rocker's
+// turn per the cam's (a at the origin). A roller's or a knife edge's normal runs from I through
+// b; a flat face's is the face's normal, b0 / |b0| turned with the rocker (sign s).
+void expectOscillatingContact(const test::OscillatingCam& spec) {
   const std::string mass = R"("name": "rocker", "mass": {"kg": 0.1, "com": [60, 0], )"
                            R"("j_kg_mm2": 50},)";
   std::string text = spec.text();
@@ -137,20 +163,35 @@ TEST(CamForces, OscillatingRollerFollowersContactForceTurnsItsRocker) {
   const std::optional<CamJoint> c = camJoint(m, m.joints[2]);
   const BodyId rocker = m.bodyNamed("rocker")->id;
   const PointId R = *m.findPoint("rocker.R");
-  const Vec2 P(60, 0);
+  const Vec2 P(60, 0), nu0 = k.position(R).normalized();  // the drawing
   Compare contact;
   for (double deg = 0; deg < 360; deg += 5) {
     ASSERT_TRUE(k.moveTo(deg).ok());
     const Forces& f = solver.compute(k);
     ASSERT_TRUE(f.status.ok()) << f.status.message;
-    const double kk = c->kind.sign * c->program.at(deg * kDeg).v;
-    const Vec2 b = k.position(R);
-    const Vec2 n = (b - kk * (b - P)).normalized();  // a at the origin
-    const double N = (1e-3 * 50 * k.bodyAlpha(rocker) - 1500) / cross(b - P, n);
+    const cam::Displacement s = c->program.at(deg * kDeg);
+    const double kk = c->kind.sign * s.v;
+    const Vec2 b = k.position(R), I = kk * P / (kk - 1);
+    const Vec2 n = spec.flat ? Vec2(Rot::of(c->kind.sign * s.s) * nu0) : (b - I).normalized();
+    const double N = (1e-3 * 50 * k.bodyAlpha(rocker) - 1500) / cross(I - P, n);
     contact.add(f.joints[2].contactN, N);
     EXPECT_GT(f.joints[2].contactN, 0) << deg;
   }
   contact.expect("contact force");
+}
+
+TEST(CamForces, OscillatingRollerFollowersContactForceTurnsItsRocker) {
+  expectOscillatingContact(test::OscillatingCam{});
+}
+
+TEST(CamForces, OscillatingKnifeEdgeAndFlatFacesContactForceTurnsItsRocker) {
+  test::OscillatingCam knife, flat;
+  knife.roller = 0;
+  flat.flat = true;
+  SCOPED_TRACE("knife edge");
+  expectOscillatingContact(knife);
+  SCOPED_TRACE("flat face");
+  expectOscillatingContact(flat);
 }
 
 // The driver's power is the rate of the kinetic and potential energy less the loads' power, to

@@ -2,7 +2,8 @@
 // velocity and acceleration from the constraint solves are s(theta), omega s'(theta) and
 // omega^2 s''(theta) of linkage/cam.h, to 1e-9 of their peaks, for translating (offset roller,
 // knife edge, flat face) and oscillating followers, and for a clockwise driver, which meets the
-// segments in reverse order.
+// segments in reverse order. Every follower the spec names: translating with and without offset
+// and oscillating, each with a roller, a knife edge and a flat face.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -135,6 +136,21 @@ TEST(CamJoint, OscillatingFollowerIsItsProgramme) {
   test::OscillatingCam flat;
   flat.flat = true;
   expectOscillating(flat, -1);
+}
+
+// The followers the tests above leave out, so that every one the spec names is its programme:
+// translating without offset (roller, knife edge, flat face) and an oscillating knife edge.
+TEST(CamJoint, CentralFollowersAndAnOscillatingKnifeEdgeAreTheirProgrammes) {
+  test::TranslatingCam roller, knife, flat;
+  roller.e = knife.e = flat.e = 0;
+  knife.roller = 0;
+  flat.flat = true;
+  expectTranslating(roller, 1e-9);
+  expectTranslating(knife, 1e-9);
+  expectTranslating(flat, 1e-9);
+  test::OscillatingCam edge;
+  edge.roller = 0;
+  expectOscillating(edge, -1);
 }
 
 }  // namespace

@@ -169,6 +169,145 @@ TEST(CamProfile, AnOscillatingFollowersPitchCurveAgreesWithItsPointsDifferences)
   EXPECT_GT(camPointAt(g, 120 * kDeg).pitch.norm(), camPointAt(g, 0).pitch.norm() + 1);
 }
 
+// A knife edge is a roller of no radius: the spec's closed form with base for base + roller,
+// atan((s' - e) / (sqrt(base^2 - e^2) + s)), with and without offset, and its largest.
+TEST(CamProfile, AKnifeEdgesPressureAngleIsTheClosedFormWithAndWithoutOffset) {
+  for (double e : {6.0, 0.0, -9.0}) {
+    const CamGeometry g = offsetRoller(30, 0, e);
+    ASSERT_EQ(g.face, FollowerFace::Knife);
+    const double d0 = std::sqrt(30.0 * 30.0 - e * e);
+    auto closed = [&](double t) {
+      const Displacement d = g.program.at(t);
+      return std::atan((d.v - e) / (d0 + d.s)) / kDeg;
+    };
+    for (int i = 0; i < 720; ++i) {
+      const double t = i * 0.5 * kDeg;
+      const CamPoint p = camPointAt(g, t);
+      EXPECT_NEAR(p.pressureDeg, closed(t), 1e-11) << e << " at " << i * 0.5;
+      EXPECT_NEAR((p.surface - p.pitch).norm(), 0, 1e-12) << e << " at " << i * 0.5;
+    }
+    const CamChecks c = camChecks(g);
+    const Max want = searchMax([&](double t) { return std::abs(closed(t)); });
+    ASSERT_TRUE(c.pressureMax.found) << e;
+    EXPECT_NEAR(c.pressureMax.value, want.value, 1e-9) << e;
+    EXPECT_NEAR(c.pressureMax.atDeg, want.deg, 1e-4) << e;
+  }
+}
+
+// A flat face's radius does not depend on its offset: base + s + s'' with the face's line off
+// the cam's centre too, and the checks' smallest against a search of it.
+TEST(CamProfile, AnOffsetFlatFacesRadiusIsBasePlusSPlusSDoublePrime) {
+  CamGeometry g = offsetRoller(30, 0, 7);
+  g.face = FollowerFace::Flat;
+  auto closed = [&](double t) {
+    const Displacement d = g.program.at(t);
+    return 30 + d.s + d.a;
+  };
+  for (int i = 0; i < 720; ++i)
+    EXPECT_NEAR(camPointAt(g, i * 0.5 * kDeg).radiusMm, closed(i * 0.5 * kDeg), 1e-10) << i;
+  const CamChecks c = camChecks(g);
+  const Max least = searchMax([&](double t) { return -closed(t); });
+  ASSERT_TRUE(c.surfaceRadiusMin.found);
+  EXPECT_NEAR(c.surfaceRadiusMin.value, -least.value, 1e-9);
+  EXPECT_NEAR(c.surfaceRadiusMin.atDeg, least.deg, 1e-4);
+}
+
+// An oscillating follower about c, its point b0 as drawn (the cam's centre a at the origin).
+CamGeometry oscillating(FollowerFace face, double base, double roller, Vec2 pivot, Vec2 b0) {
+  CamGeometry g;
+  g.motion = FollowerMotion::Oscillating;
+  g.face = face;
+  g.baseMm = base;
+  g.rollerMm = roller;
+  g.program = Program({{100, 18, Law::Cycloidal},
+                       {170, 0, std::nullopt},
+                       {290, -18, Law::Polynomial345},
+                       {360, 0, std::nullopt}},
+                      kDeg);
+  g.pivot = pivot;
+  g.b0 = b0;
+  // The spec: a rise moves b away from a. Turning counter-clockwise about c moves b along
+  // J (b0 - c); sigma is +1 when that leaves a.
+  g.sigma = b0.dot(perp(b0 - pivot)) > 0 ? 1 : -1;
+  return g;
+}
+
+// The cam's and the follower's instant centre by Kennedy's rule, written here: on the line of
+// a (the origin) and the pivot c, where the cam (omega 1) and the rocker (omega3 = sigma s')
+// have the same velocity: I = omega3 c / (omega3 - 1). The common normal passes through it.
+struct Rocker {
+  Vec2 b, m, I, nu, face;  // the follower's point, its motion, the centre, a flat face's normal
+                           // and a point of that face, in the guide's frame
+};
+Rocker rockerAt(const CamGeometry& g, double t) {
+  const Displacement d = g.program.at(t);
+  const Vec2 arm0 = g.b0 - g.pivot;
+  const double psi = g.sigma * d.s;
+  const Vec2 arm = Rot::of(psi) * arm0;
+  const double w3 = g.sigma * d.v;
+  return {g.pivot + arm, g.sigma * perp(arm.normalized()), w3 * g.pivot / (w3 - 1),
+          Rot::of(psi) * g.b0.normalized(), g.pivot + arm};
+}
+
+// Roller and knife edge: the pressure angle between b's motion m and the normal through b and
+// I (b is on the normal: the roller's centre, or the knife's edge), |atan(m x n / m . n)|.
+TEST(CamProfile, AnOscillatingFollowersPressureAngleIsKennedysClosedForm) {
+  const CamGeometry followers[] = {
+      oscillating(FollowerFace::Roller, 25, 6, Vec2(50, 10), Vec2(0, 31)),
+      oscillating(FollowerFace::Knife, 31, 0, Vec2(50, 10), Vec2(0, 31)),
+      oscillating(FollowerFace::Roller, 22, 8, Vec2(-40, 25), Vec2(18, 24)),  // |b0| = 30
+  };
+  for (const CamGeometry& g : followers) {
+    ASSERT_EQ(checkCamGeometry(g), "");
+    auto closed = [&](double t) {
+      const Rocker r = rockerAt(g, t);
+      const Vec2 n = r.b - r.I;
+      return std::abs(std::atan(cross(r.m, n) / r.m.dot(n))) / kDeg;
+    };
+    for (int i = 0; i < 720; ++i) {
+      const double t = i * 0.5 * kDeg;
+      EXPECT_NEAR(std::abs(camPointAt(g, t).pressureDeg), closed(t), 1e-9)
+          << g.pivot.x() << " " << i * 0.5;
+    }
+    const CamChecks c = camChecks(g);
+    const Max want = searchMax(closed);
+    ASSERT_TRUE(c.pressureMax.found);
+    EXPECT_NEAR(c.pressureMax.value, want.value, 1e-9) << g.pivot.x();
+    EXPECT_NEAR(c.pressureMax.atDeg, want.deg, 1e-4) << g.pivot.x();
+    EXPECT_GT(want.value, 10) << g.pivot.x();  // a real rise
+  }
+}
+
+// A flat face: the contact is the foot of the perpendicular from I to the face's line (the
+// normal to the face through the centre); on the cam, R(-theta) of it. Its radius of curvature
+// by central differences of those points (the curve runs clockwise on the cam: convex positive
+// is -|p'|^3 / (p' x p'')).
+TEST(CamProfile, AnOscillatingFlatFacesContactAndRadiusAreKennedys) {
+  const CamGeometry g = oscillating(FollowerFace::Flat, 30, 0, Vec2(50, 30), Vec2(0, 30));
+  ASSERT_EQ(checkCamGeometry(g), "");
+  auto contact = [&](double t) {
+    const Rocker r = rockerAt(g, t);
+    return Vec2(Rot::of(-t) * (r.I + (r.face - r.I).dot(r.nu) * r.nu));
+  };
+  const double h = 1e-4;
+  double least = INFINITY;
+  for (double deg = 0.25; deg < 360; deg += 0.5) {
+    const double t = deg * kDeg;
+    const CamPoint p = camPointAt(g, t);
+    const Vec2 c = contact(t);
+    EXPECT_NEAR((p.surface - c).norm(), 0, 1e-9) << deg;
+    const Vec2 a = contact(t - h), b = contact(t + h);
+    const Vec2 d1 = (b - a) / (2 * h), d2 = (b - 2 * c + a) / (h * h);
+    const double rho = -std::pow(d1.norm(), 3) / cross(d1, d2);
+    EXPECT_NEAR(p.radiusMm, rho, 1e-4 * std::max(1.0, std::abs(rho))) << deg;
+    least = std::min(least, rho);
+  }
+  const CamChecks c = camChecks(g);
+  ASSERT_TRUE(c.surfaceRadiusMin.found);
+  EXPECT_LE(c.surfaceRadiusMin.value, least + 1e-3);  // the checks' extreme is the least
+  EXPECT_GT(c.surfaceRadiusMin.value, least - 0.1);   // and near the sampled one
+}
+
 TEST(CamProfile, BadGeometryIsNamed) {
   CamGeometry g = offsetRoller(30, 8, 40);
   EXPECT_NE(checkCamGeometry(g).find("offset"), std::string::npos);

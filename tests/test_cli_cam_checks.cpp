@@ -2,7 +2,8 @@
 // with and without offset, knife edge, flat face; oscillating roller and flat face) the same
 // with --steps 8 as with --steps 3600 (the steps set only the profile's points); the pressure
 // angle of the offset roller against a search of the spec's closed form; the profile the
-// joint's own (cam_profile.h) point for point; the written profile read back; bad input.
+// joint's own (cam_profile.h) point for point; the written profile read back; bad input; the
+// sewing machine examples' cams within their limits.
 #ifdef LINKAGE_CLI
 #include <gtest/gtest.h>
 
@@ -118,6 +119,42 @@ TEST_F(CliCamChecks, BadInputExitsTwoNamingIt) {
     EXPECT_EQ(r.exit, 2) << c.args;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
   }
+}
+
+// The sewing machine's cams (resources/examples/cams.py): on the command line each prints the
+// same checks from 8 steps as from 3600, within the oscillating limit of 35 degrees and without
+// undercut; the lockstitch machine's feed dog is up about half a turn and never while the needle
+// is in the cloth (timing exits 0: no conflict; 4 would be one).
+TEST_F(CliCamChecks, TheSewingMachineExamplesKeepTheirLimits) {
+  for (const char* args :
+       {"lockstitch-cams --joint 5", "lockstitch-cams --joint 9", "chainstitch-looper-cam"}) {
+    const test::CliResult few = run(std::string("cam ") + args + " --steps 8");
+    const test::CliResult many = run(std::string("cam ") + args + " --steps 3600");
+    ASSERT_EQ(few.exit, 0) << args << ": " << few.err;
+    EXPECT_EQ(few.out, many.out) << args;
+    const std::vector<std::string> rows = few.lines();
+    ASSERT_GE(rows.size(), 3u) << few.out;
+    EXPECT_EQ(rows.back(), "undercut,no,") << args << ": " << few.err;
+    const std::string first = rows[1].substr(0, rows[1].find(','));
+    const double value =
+        *parseNumber(rows[1].substr(first.size() + 1, rows[1].rfind(',') - first.size() - 1));
+    if (first == "pressure_angle_max_deg") {
+      EXPECT_LT(value, 35) << args;
+    } else {
+      EXPECT_EQ(first, "surface_radius_min_mm") << args;
+      EXPECT_GT(value, 0) << args;
+    }
+  }
+  const test::CliResult t = run("timing lockstitch-cams");
+  ASSERT_EQ(t.exit, 0) << t.out << t.err;
+  const std::vector<std::string> rows = t.lines();
+  ASSERT_EQ(rows.size(), 3u) << t.out;
+  ASSERT_EQ(rows[2].rfind("feed,", 0), 0u) << rows[2];
+  std::istringstream cells(rows[2].substr(5));
+  std::string from, to;
+  std::getline(cells, from, ',');
+  std::getline(cells, to, ',');
+  EXPECT_NEAR(*parseNumber(to) - *parseNumber(from), 180, 10) << rows[2];
 }
 
 }  // namespace
