@@ -31,6 +31,7 @@ plots:       document docks figures export
 forces:      document draw forms docks figures canvas export plots
 design:      document draw docks figures canvas plots
 cycle:       document docks figures canvas tools export plots forces
+cam:         document docks figures canvas
 window:      *
 '
 

@@ -4,6 +4,7 @@
 // checked against the exact checks one step either side; the cursor at the cam's angle.
 #include <gtest/gtest.h>
 
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QTableWidget>
 #include <QTest>
@@ -157,6 +158,29 @@ TEST_F(CamPanelTest, TheCursorIsAtTheCamsAngle) {
   doc.setCrankDeg(75);
   settle();
   EXPECT_NEAR(panel.figure()->cursor(), 75, 1e-9);  // the cam is the crank, counter-clockwise
+}
+
+TEST_F(CamPanelTest, TheChecksAreMarkedOnTheCamWhereTheyOccur) {
+  // Turned to each extreme's cam angle, the mark is where the roller touches the cam: a
+  // roller's radius from its centre, whatever the pose was when the marks were made.
+  const CamJoint c = cam();
+  const cam::CamChecks checks = cam::camChecks(cam::geometryOf(c));
+  for (const cam::CamExtreme* e : {&checks.pressureMax, &checks.pitchRadiusMin}) {
+    ASSERT_TRUE(e->found);
+    doc.setCrankDeg(e->atDeg);  // the cam is the crank, counter-clockwise
+    settle();
+    ASSERT_EQ(panel.marks().size(), 2u);
+    const ClearanceMark& m = panel.marks()[e == &checks.pressureMax ? 0 : 1];
+    EXPECT_NEAR((doc.kinematics().position(*doc.design().findPoint("follower.R")) - m.a).norm(),
+                c.kind.roller, 1e-9)
+        << m.text;
+    EXPECT_FALSE(m.tooClose) << m.text;
+  }
+  // Under a limit below the largest angle, its mark is a warning.
+  panel.findChild<QDoubleSpinBox*>("camLimit")->setValue(10);
+  settle();
+  EXPECT_TRUE(panel.marks()[0].tooClose);
+  EXPECT_TRUE(panel.marks()[0].text.startsWith("largest pressure angle")) << panel.marks()[0].text;
 }
 
 TEST(CamPanel, AMechanismWithoutACamSaysHowToMakeOne) {

@@ -85,13 +85,14 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
                                                    "showDesignChecks",
                                                    "showMechanisms",
                                                    "showCyclePanel",
+                                                   "showCamPanel",
                                                    "show3dView"}));
   EXPECT_EQ(words(menu(bar, "Animation")),
             QStringList({"play", "stepBack", "stepForward", "toStart", "-", "slower", "faster"}));
   EXPECT_EQ(words(menu(bar, "Analysis")),
             QStringList({"showDesignChecks", "parameterStudy", "-", "showExtremes",
                          "showTransmission", "-", "showForcesPanel", "showForces", "balance", "-",
-                         "showCyclePanel", "watchClearance"}));
+                         "showCyclePanel", "watchClearance", "-", "showCamPanel"}));
   EXPECT_EQ(words(menu(bar, "Help")), QStringList({"about"}));
 }
 

@@ -200,7 +200,15 @@ void CamFigure::markSegments(const cam::Program& p) {
       line->setPen(QPen(QColor(150, 150, 150), 1));
     }
   double from = 0;
+  // A name wider than its segment is left out (the table names every segment).
+  const double width = std::max({200, rects_[0]->width(), plot_->width() - 90});
+  const QFontMetricsF metrics(plot_->font());
   for (const cam::Segment& s : segs) {
+    const QString text = s.law ? QString::fromLatin1(cam::lawName(*s.law)) : tr("dwell");
+    if (metrics.horizontalAdvance(text) + 6 > (s.toDeg - from) / 360 * width) {
+      from = s.toDeg;
+      continue;
+    }
     auto* name = new QCPItemText(plot_);
     name->setClipAxisRect(rects_[0]);
     name->position->setAxisRect(rects_[0]);
@@ -211,7 +219,7 @@ void CamFigure::markSegments(const cam::Program& p) {
     name->setClipToAxisRect(false);
     name->position->setCoords((from + s.toDeg) / 2, -0.01);
     name->setPositionAlignment(Qt::AlignHCenter | Qt::AlignBottom);
-    name->setText(s.law ? QString::fromLatin1(cam::lawName(*s.law)) : tr("dwell"));
+    name->setText(text);
     name->setColor(QColor(90, 90, 90));
     from = s.toDeg;
   }

@@ -77,10 +77,10 @@ void CamPanel::buildControls() {
             });
           });
   connect(table_, &CamTable::refused, this, &CamPanel::say);
-  checks_ = new QLabel;
-  checks_->setObjectName(QStringLiteral("camChecks"));
-  checks_->setWordWrap(true);
-  checks_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  checksText_ = new QLabel;
+  checksText_->setObjectName(QStringLiteral("camChecks"));
+  checksText_->setWordWrap(true);
+  checksText_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   message_ = new QLabel;
   message_->setObjectName(QStringLiteral("camMessage"));
   message_->setWordWrap(true);
@@ -90,7 +90,7 @@ void CamPanel::buildControls() {
   leftLayout->setContentsMargins(0, 0, 0, 0);
   leftLayout->addWidget(buildSizes());
   leftLayout->addWidget(table_, 1);
-  leftLayout->addWidget(checks_);
+  leftLayout->addWidget(checksText_);
   leftLayout->addWidget(message_);
   plot_ = new QCustomPlot;
   plot_->setObjectName(QStringLiteral("camPlot"));
@@ -207,9 +207,12 @@ void CamPanel::compute() {
     w->setEnabled(static_cast<bool>(c));
   if (!c) {
     geometry_.reset();
+    checks_.reset();
+    marks_.clear();
+    Q_EMIT marksChanged(marks_);
     table_->setSegments({}, false);
     follower_->clear();
-    checks_->clear();
+    checksText_->clear();
     figure_->showNothing(
         j ? tr("This cam is not one yet: %1: %2")
                 .arg(QString::fromStdString(where), QString::fromStdString(why))
@@ -243,6 +246,8 @@ void CamPanel::compute() {
   table_->setSegments(g.program.segments(), isOscillating(g));
   figure_->build(g, checks, limitDeg());
   showChecks(g, checks);
+  checks_ = checks;
+  centre_ = c->drawn.centre;
   followPose();
 }
 
@@ -250,12 +255,37 @@ void CamPanel::cameIntoView() {
   followPose();
 }
 
+void CamPanel::leftView() {
+  marks_.clear();
+  Q_EMIT marksChanged(marks_);
+}
+
 void CamPanel::followPose() {
-  if (!geometry_ || !doc_->solved()) return;
+  if (!geometry_ || !checks_ || !doc_->solved()) return;
   const Kinematics& k = doc_->kinematics();
-  const double theta =
-      camAngle(k.bodyTransform(camBody_).R, k.bodyTransform(guideBody_).R) * 180 / M_PI;
+  const Transform cam = k.bodyTransform(camBody_);
+  const double theta = camAngle(cam.R, k.bodyTransform(guideBody_).R) * 180 / M_PI;
   figure_->setCursor(crankInPeriod(theta, 360));
+  // Each extreme on the cam's surface where the follower touches it then: in the cam's frame
+  // about its centre as drawn, carried by the cam's motion.
+  marks_.clear();
+  auto mark = [&](const cam::CamExtreme& e, const QString& text, bool warn) {
+    if (!e.found) return;
+    const Vec2 at = cam * (centre_ + cam::camPointAt(*geometry_, e.atDeg * M_PI / 180).surface);
+    marks_.push_back({at,
+                      at,
+                      text.arg(e.value, 0, 'f', 2).arg(e.atDeg, 0, 'f', 1),
+                      warn,
+                      {},
+                      camBody_,
+                      camBody_});
+  };
+  const cam::CamChecks& c = *checks_;
+  mark(c.pressureMax, tr("largest pressure angle %1° (cam at %2°)"),
+       c.pressureMax.value > limitDeg());
+  mark(c.pitchRadiusMin, tr("least pitch radius %1 mm (cam at %2°)"), c.undercut);
+  mark(c.surfaceRadiusMin, tr("least surface radius %1 mm (cam at %2°)"), c.undercut);
+  Q_EMIT marksChanged(marks_);
 }
 
 void CamPanel::showChecks(const cam::CamGeometry& g, const cam::CamChecks& c) {
@@ -278,11 +308,11 @@ void CamPanel::showChecks(const cam::CamGeometry& g, const cam::CamChecks& c) {
   lines << (c.undercut ? tr("Undercut: %1").arg(QString::fromStdString(c.undercutWhy))
                        : tr("No undercut"));
   (void)g;
-  checks_->setText(lines.join(QLatin1Char('\n')));
+  checksText_->setText(lines.join(QLatin1Char('\n')));
 }
 
 QString CamPanel::checksText() const {
-  return checks_->text();
+  return checksText_->text();
 }
 
 void CamPanel::say(const QString& message) {
@@ -372,7 +402,7 @@ QStringList CamPanel::probeLines() const {
                 .arg(s.rise);
   out << QStringLiteral("cam segments: ") + segs.join(QStringLiteral(" | "));
   out << QStringLiteral("cam base: %1 roller: %2").arg(base_->value()).arg(roller_->value());
-  out << QStringLiteral("cam checks: ") + checks_->text().replace(QLatin1Char('\n'), " | ");
+  out << QStringLiteral("cam checks: ") + checksText_->text().replace(QLatin1Char('\n'), " | ");
   out << QStringLiteral("cam message: ") + message_->text();
   if (!isVisible()) return out;
   const QTableWidget* t = table_->table();

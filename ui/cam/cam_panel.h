@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "canvas/clearance_marks.h"
 #include "docks/dock_panel.h"
 #include "document/document.h"
 #include "linkage/cam_checks.h"
@@ -52,9 +53,19 @@ class CamPanel : public DockPanel {
   bool findBase(QString* why);
   bool findRoller(QString* why);
 
+  // The checks' extremes on the cam at the pose (world, mm), as the canvas rings them.
+  const std::vector<ClearanceMark>& marks() const { return marks_; }
+
+ Q_SIGNALS:
+  // While the dock is seen: the checks' extremes where they occur on the cam, turning with it
+  // (a ring and its words at each; the warning colour past the limit or undercutting); none
+  // when it is not.
+  void marksChanged(const std::vector<linkage::ui::ClearanceMark>& marks);
+
  protected:
   void compute() override;
   void cameIntoView() override;
+  void leftView() override;
 
  private:
   void buildControls();
@@ -74,9 +85,12 @@ class CamPanel : public DockPanel {
   JointId shown_, limitFor_;
   BodyId camBody_, guideBody_;
   std::optional<cam::CamGeometry> geometry_;
+  std::optional<cam::CamChecks> checks_;
+  Vec2 centre_ = Vec2::Zero();  // the cam's centre as drawn
+  std::vector<ClearanceMark> marks_;
   std::optional<DocumentState> dragBefore_;
   QComboBox* choice_;
-  QLabel *follower_, *checks_, *message_;
+  QLabel *follower_, *checksText_, *message_;
   QDoubleSpinBox *base_, *roller_, *limit_;
   QPushButton *findBase_, *findRoller_;
   CamTable* table_;

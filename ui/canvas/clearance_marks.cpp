@@ -63,8 +63,15 @@ void ClearanceMarksItem::rebuild() {
     QFont font;
     font.setBold(m.tooClose);
     const double half = QFontMetricsF(font).boundingRect(m.text).width() / 2;
+    // Marks a label's height apart or less on screen (a cam's extremes at neighbouring angles):
+    // each label a line under the one before.
+    int line = 0;
+    for (size_t k = 0; k + 1 < shown_.size() && &shown_[k] != &m; ++k) {
+      const Vec2 other = shown_[k].a.x() >= shown_[k].b.x() ? shown_[k].a : shown_[k].b;
+      if ((other - right).norm() < 18 * px()) ++line;
+    }
     l->setPos(right.x(), right.y());
-    l->setOffset(QPointF(kRingPx + 6 + half, -14));
+    l->setOffset(QPointF(kRingPx + 6 + half, -14 + 18 * line));
     l->setColours(m.tooClose ? style().warning : style().ink, style().paper);
     l->setBold(m.tooClose);
     labels_.push_back(l);

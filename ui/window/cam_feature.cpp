@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "cam/cam_panel.h"
+#include "canvas/canvas_scene.h"
+#include "canvas/clearance_marks.h"
 #include "document/document.h"
 #include "linkage/elements.h"
 #include "window/main_window.h"
@@ -30,6 +32,10 @@ CamFeature::CamFeature(MainWindow& w, WindowLayout& layout) : WindowFeature(&w),
     if (on)
       w_.resizeDocks({dock}, {std::max(dock->height(), w_.height() * 45 / 100)}, Qt::Vertical);
   });
+  auto* marks = new ClearanceMarksItem(w_.scene()->context());
+  w_.scene()->addOverlay(marks);
+  connect(panel_, &CamPanel::marksChanged, this,
+          [marks](const std::vector<ClearanceMark>& m) { marks->setMarks(m); });
   layout.add(Slot::ViewCamDock, dock->toggleViewAction());
   layout.add(Slot::AnalysisCamDock, showPanel);
   // A cam made (a follower's "Drive by a Cam", or its redo): the dock shows it. A file opened
