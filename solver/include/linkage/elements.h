@@ -104,7 +104,7 @@ struct JointSymbol {
   // A cam: radius[0] its base circle's about `at` (its centre), radius[1] the roller's about
   // at2 (b); a flat face through at2 normal to `direction` as drawn (turned with angle[1]);
   // angle[0], angle[1] the cam's and the follower's rotations; `curve` its working surface in
-  // its own frame about `at` (linkage/cam_profile.h), to be turned by angle[0].
+  // its own frame about `at` (linkage/cam_geometry.h), to be turned by angle[0].
   bool face = false;
   std::vector<Vec2> curve;
 };
