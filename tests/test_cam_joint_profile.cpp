@@ -12,6 +12,8 @@
 #include "cam_fixtures.h"
 #include "linkage/cam_geometry.h"
 #include "linkage/cam_joint.h"
+#include "linkage/drawing.h"
+#include "linkage/elements.h"
 #include "linkage/io/model_file.h"
 
 namespace linkage {
@@ -82,6 +84,37 @@ TEST(CamJointProfile, AFlatFacesContactIsSPrimeAside) {
     EXPECT_NEAR(world.x(), s.v, 1e-12) << theta;
     EXPECT_NEAR(p.pressureDeg, 0, 1e-15);
   }
+}
+
+}  // namespace
+}  // namespace linkage
+
+namespace linkage {
+namespace {
+
+// The canvas draws the profile it is cut to: the joint's symbol carries the surface and, for a
+// roller, the pitch curve a roller's radius outside it, both turning with the cam.
+TEST(CamJointProfile, TheDrawingCarriesTheSurfaceAndThePitchCurve) {
+  const LoadResult r = parseMechanism(test::TranslatingCam{}.text());
+  ASSERT_TRUE(r.mechanism) << r.error;
+  const Drawing d = describeSketch(*r.mechanism);
+  const JointSymbol* cam = nullptr;
+  for (const JointSymbol& s : d.joints)
+    if (!s.curve.empty()) cam = &s;
+  ASSERT_TRUE(cam);
+  ASSERT_EQ(cam->curve.size(), 360u);
+  ASSERT_EQ(cam->curve2.size(), 360u);
+  const cam::CamGeometry g = cam::geometryOf(*camJoint(*r.mechanism, r.mechanism->joints[2]));
+  for (size_t i = 0; i < 360; i += 7) {
+    const cam::CamPoint p = cam::camPointAt(g, i * kDeg);
+    EXPECT_LT((cam->curve[i] - p.surface).norm(), 1e-12);
+    EXPECT_LT((cam->curve2[i] - p.pitch).norm(), 1e-12);
+    EXPECT_NEAR((cam->curve2[i] - cam->curve[i]).norm(), 8, 1e-12);
+  }
+  test::TranslatingCam flat;
+  flat.flat = true;
+  const LoadResult f = parseMechanism(flat.text());
+  for (const JointSymbol& s : describeSketch(*f.mechanism).joints) EXPECT_TRUE(s.curve2.empty());
 }
 
 }  // namespace

@@ -331,8 +331,10 @@ void symbol(const Mechanism& m, const Joint& j, JointSymbol& s) {
   if (c && c->kind.flat) s.direction = c->kind.oscillating ? c->drawn.face : c->drawn.along;
   if (!c) return;
   // A degree a point: the canvas's profile, the checks' own points (linkage/cam_geometry.h).
-  for (const cam::CamPoint& p : cam::camPoints(cam::geometryOf(*c), 360))
+  for (const cam::CamPoint& p : cam::camPoints(cam::geometryOf(*c), 360)) {
     s.curve.push_back(p.surface);
+    if (!c->kind.flat && c->kind.roller > 0) s.curve2.push_back(p.pitch);
+  }
 }
 
 void place(const Mechanism&, const Joint& j, const Pose& pose, JointSymbol& s) {

@@ -107,6 +107,7 @@ struct JointSymbol {
   // its own frame about `at` (linkage/cam_geometry.h), to be turned by angle[0].
   bool face = false;
   std::vector<Vec2> curve;
+  std::vector<Vec2> curve2;  // a cam with a roller: its pitch curve, in the same frame
 };
 
 // A joint's reaction at a pose (linkage/dynamics.h): the force on the body of its point a from
