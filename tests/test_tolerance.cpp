@@ -8,6 +8,8 @@
 #include <complex>
 #include <map>
 
+#include "examples.h"
+#include "linkage/limits.h"
 #include "linkage/sensitivity.h"
 #include "linkage/tolerance.h"
 #include "mechanisms.h"
@@ -215,6 +217,40 @@ TEST(Tolerance, PinPlayIsTheLargestOverTheDirection) {
   spec.tolerances[0].dimension = "rocker.B-coupler.B";
   spec.samples = 0;
   EXPECT_TRUE(tolerances(f.m, spec).status.ok());
+}
+
+// Each sample's stroke is exact: the Wanzer needle's samples, each solved again independently
+// by findLimits (every extreme found by root finding over a sampled turn), give the Monte Carlo
+// extremes of the stroke to 1e-9 mm.
+TEST(Tolerance, EachSamplesStrokeIsItsLimitPositions) {
+  const Mechanism m = test::example("wanzer-inversion-2");
+  const PointId g = *m.findPoint("needlebar.G");
+  ToleranceSpec spec = specFor(g, {{"triangle.E-G", 0.1},
+                                   {"triangle.F-G", 0.1},
+                                   {"triangle.E-F", 0.05},
+                                   {"disk.B.offset", 0.05},
+                                   {"disk.C.angle", 0.2}});
+  spec.tolerances.push_back({"triangle.E-slider4.E", 0.02, true});
+  spec.samples = 6;
+  spec.band = false;
+  spec.seed = 3;
+  const ToleranceResult r = tolerances(m, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_EQ(r.used, 6) << r.firstFailure;
+  double lo = INFINITY, hi = -INFINITY;
+  for (int i = 0; i < 6; ++i) {
+    Mechanism s;
+    ASSERT_TRUE(toleranceSample(m, spec, i, s).ok());
+    Kinematics k;
+    ASSERT_TRUE(k.load(s).ok());
+    const Limits l = findLimits(k, LimitMeasure::along(g, Vec2(0, 1)));
+    ASSERT_TRUE(l.status.ok());
+    lo = std::min(lo, l.stroke);
+    hi = std::max(hi, l.stroke);
+  }
+  EXPECT_GT(hi - lo, 1e-3);  // the samples differ
+  EXPECT_NEAR(r.stroke.lo, lo, 1e-9);
+  EXPECT_NEAR(r.stroke.hi, hi, 1e-9);
 }
 
 TEST(Tolerance, UnknownNamesAreRefusedByName) {

@@ -363,6 +363,13 @@ void monteCarlo(const SampleRun& run, ToleranceResult& out) {
 
 }  // namespace
 
+Status toleranceSample(const Mechanism& m, const ToleranceSpec& spec, long long index,
+                       Mechanism& out) {
+  Resolved r;
+  if (Status s = resolve(m, spec, r); !s.ok()) return s;
+  return sampleDesign(m, r, spec.seed, index, out);
+}
+
 ToleranceResult tolerances(const Mechanism& m, const ToleranceSpec& spec) {
   ToleranceResult out;
   Resolved r;

@@ -91,4 +91,9 @@ struct ToleranceResult {
 
 ToleranceResult tolerances(const Mechanism& m, const ToleranceSpec& spec);
 
+// The design of Monte Carlo sample `index` as tolerances() draws it for this spec and seed: to
+// look at one sample again (and for tests to solve it independently).
+Status toleranceSample(const Mechanism& m, const ToleranceSpec& spec, long long index,
+                       Mechanism& out);
+
 }  // namespace linkage
