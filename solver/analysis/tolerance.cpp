@@ -386,7 +386,14 @@ ToleranceResult tolerances(const Mechanism& m, const ToleranceSpec& spec) {
   std::vector<double> extremeDeg;
   if (spec.stroke)
     if (out.status = firstOrderStroke(k0, r, spec, out, extremeDeg); !out.status.ok()) return out;
-  if (spec.samples > 0) monteCarlo(SampleRun{m, k0, r, spec, extremeDeg, k0.size()}, out);
+  if (spec.samples > 0) {
+    KinematicsOptions opt;
+    opt.maxStepDeg = spec.sampleStepDeg;
+    Kinematics ks(opt);
+    if (out.status = ks.load(m); !out.status.ok()) return out;
+    ks.setAccelerations(true);
+    monteCarlo(SampleRun{m, ks, r, spec, extremeDeg, ks.size()}, out);
+  }
   for (const ToleranceRow& row : out.rows)
     if (row.nonlinear) out.nonlinearDeg.push_back(row.crankDeg);
   return out;
