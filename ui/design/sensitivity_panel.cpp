@@ -3,10 +3,12 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QTabWidget>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 
+#include "design/tolerance_view.h"
 #include "document/document.h"
 #include "figures/qcp.h"
 #include "linkage/sensitivity.h"
@@ -54,11 +56,24 @@ SensitivityPanel::SensitivityPanel(Document* doc, QWidget* parent)
   summary_ = new QLabel;
   summary_->setObjectName(QStringLiteral("sensSummary"));
   summary_->setWordWrap(true);
+  auto* ranking = new QWidget;
+  auto* rankingLayout = new QVBoxLayout(ranking);
+  rankingLayout->setContentsMargins(0, 0, 0, 0);
+  rankingLayout->addWidget(plot_, 1);
+  rankingLayout->addWidget(summary_);
+  tolerances_ = new ToleranceView;
+  tabs_ = new QTabWidget;
+  tabs_->setObjectName(QStringLiteral("sensTabs"));
+  tabs_->addTab(ranking, tr("Ranking"));
+  tabs_->addTab(tolerances_, tr("Tolerances"));
+  connect(tabs_, &QTabWidget::currentChanged, this, [this] { markStale(); });
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);
-  layout->addWidget(plot_, 1);
-  layout->addWidget(summary_);
-  connect(doc_, &Document::designChanged, this, [this] { markStale(); });
+  layout->addWidget(tabs_, 1);
+  connect(doc_, &Document::designChanged, this, [this] {
+    toleranceStale_ = true;
+    markStale();
+  });
   connect(doc_, &Document::poseChanged, this, [this] { markStale(); });
 }
 
@@ -102,6 +117,15 @@ void SensitivityPanel::compute() {
     return;
   }
   const size_t n = s.dims().size();
+  const std::pair<PointId, int> asked{p, std::min(which, 1)};
+  if (tabs_->currentWidget() == tolerances_ && (toleranceStale_ || asked != toleranceFor_)) {
+    toleranceStale_ = false;
+    toleranceFor_ = asked;
+    // The tolerances' band follows a point's x or y (the length of a change has no band).
+    std::vector<std::string> names;
+    for (const Dimension& d : s.dims()) names.push_back(d.name);
+    tolerances_->update(doc_->design(), names, p, asked.second);
+  }
   bars_.assign(n, Bar{});
   for (size_t d = 0; d < n; ++d) bars_[d].dimension = s.dims()[d].name;
   const bool here = s.at(k).ok();

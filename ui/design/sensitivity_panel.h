@@ -5,9 +5,12 @@
 // size over a turn (grey, every 5 degrees), the largest first. Exact, from the constraint
 // Jacobian, never by differences. Computed while seen (docks/dock_panel.h); the text under the
 // chart names the one that matters most, and what the solver cannot differentiate yet is said.
+// Its second tab carries tolerances through the motion (design/tolerance_view.h) for the same
+// output.
 #pragma once
 
 #include <QString>
+#include <utility>
 #include <vector>
 
 #include "docks/dock_panel.h"
@@ -16,10 +19,12 @@
 class QComboBox;
 class QCustomPlot;
 class QLabel;
+class QTabWidget;
 
 namespace linkage::ui {
 
 class Document;
+class ToleranceView;
 
 class SensitivityPanel : public DockPanel {
   Q_OBJECT
@@ -39,6 +44,7 @@ class SensitivityPanel : public DockPanel {
   QComboBox* quantityBox() const { return quantity_; }
   QComboBox* componentBox() const { return component_; }
   QStringList probeLines() const;
+  ToleranceView* tolerances() const { return tolerances_; }
 
  protected:
   void compute() override;
@@ -52,9 +58,14 @@ class SensitivityPanel : public DockPanel {
   QComboBox *point_, *quantity_, *component_;
   QCustomPlot* plot_;
   QLabel* summary_;
+  QTabWidget* tabs_;
+  ToleranceView* tolerances_;
   std::vector<PointId> points_;
   std::vector<Bar> bars_;
   bool deadHere_ = false;
+  // The tolerances' band is of a design and an output: computed again only when they change.
+  bool toleranceStale_ = true;
+  std::pair<PointId, int> toleranceFor_;
 };
 
 }  // namespace linkage::ui
