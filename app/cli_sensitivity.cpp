@@ -6,6 +6,7 @@
 #include "cli_parser.h"
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
+#include "linkage/stroke_sensitivity.h"
 
 namespace linkage::cli {
 
@@ -31,6 +32,10 @@ degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
   --velocity           also the point's velocity's derivatives, mm/s per mm at the driver's
                        speed: columns dvx_mm_s_per_mm,dvy_mm_s_per_mm
   --acceleration       also its acceleration's, mm/s^2 per mm: dax_mm_s2_per_mm,day_mm_s2_per_mm
+  --stroke             instead, the derivative of the point's stroke (along its ground slot,
+                       else y; limit positions to 1e-9 degree, the envelope theorem: each
+                       extreme moves by the point's own derivative there): CSV
+                       dimension,dstroke_mm_per_mm, a row a dimension
 
 Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
 significant digits. A singular position (a dead point of the output, where the derivatives are
@@ -45,7 +50,7 @@ crank cannot turn fully (the rows up to there are written).
 struct Options {
   std::string model, point;
   int steps = 360;
-  bool velocity = false, acceleration = false;
+  bool velocity = false, acceleration = false, stroke = false;
 };
 
 // Appends ",x,y" (one string appended at a time: no temporaries to concatenate).
@@ -73,6 +78,27 @@ std::string rows(const Kinematics& k, const Sensitivity& s, PointId p, double de
   return out;
 }
 
+// The stroke's derivatives (linkage/stroke_sensitivity.h), along the point's default direction.
+int stroke(const Kinematics& k, PointId p) {
+  const StrokeSensitivity s =
+      strokeSensitivity(k, p, defaultDirection(k.mechanism(), p), dimensions(k.mechanism()));
+  if (!s.status.ok()) {
+    error("sensitivity: " + s.status.message);
+    return exitFor(s.status);
+  }
+  note("stroke " + formatNumber(s.limits.stroke) + " mm, from crank " +
+       formatNumber(s.limits.minDeg) + " to " + formatNumber(s.limits.maxDeg) + " deg");
+  std::string out = "dimension,dstroke_mm_per_mm\n";
+  for (size_t d = 0; d < s.dims.size(); ++d) {
+    out += s.dims[d].name;
+    out += ',';
+    out += formatNumber(s.derivative[d]);
+    out += '\n';
+  }
+  std::cout << out << std::flush;
+  return kOk;
+}
+
 int sensitivity(const Options& o) {
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
@@ -90,6 +116,7 @@ int sensitivity(const Options& o) {
     error("sensitivity: " + s.message);
     return exitFor(s);
   }
+  if (o.stroke) return stroke(k, p);
   std::string out = "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm";
   if (o.velocity) out += ",dvx_mm_s_per_mm,dvy_mm_s_per_mm";
   if (o.acceleration) out += ",dax_mm_s2_per_mm,day_mm_s2_per_mm";
@@ -124,6 +151,7 @@ Command sensitivityCommand(Parser& parser) {
   addWhole(c, "--steps", o->steps, 1, 1'000'000);
   addFlag(c, "--velocity", o->velocity);
   addFlag(c, "--acceleration", o->acceleration);
+  addFlag(c, "--stroke", o->stroke);
   return {&c, [o] { return sensitivity(*o); }};
 }
 

@@ -3,6 +3,7 @@
 #ifdef LINKAGE_CLI
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -81,6 +82,29 @@ TEST_F(SensitivityCli, VelocityAndAccelerationColumnsWhenAsked) {
   EXPECT_EQ(parseNumber(row[5]), s.velocity(k, f.P, 4).y());
   EXPECT_EQ(parseNumber(row[6]), s.acceleration(k, f.P, 4).x());
   EXPECT_EQ(parseNumber(row[7]), s.acceleration(k, f.P, 4).y());
+}
+
+// --stroke: a row a dimension, the slider-crank's closed form (tests/test_stroke_sensitivity.cpp
+// derives it): dS/dr = (l + r) / Y1 + (l - r) / Y2 for the block on x = e.
+TEST_F(SensitivityCli, TheStrokesDerivativesWhenAsked) {
+  const double r = 20, l = 70, e = 12;
+  const test::SliderCrank sc = test::sliderCrank(r, l, e, 30);
+  const test::CliResult res = run("sensitivity " + save(sc.m) + " --point slider.B --stroke");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  ASSERT_EQ(lines.size(), 1 + dimensions(sc.m).size()) << res.out;
+  EXPECT_EQ(lines[0], "dimension,dstroke_mm_per_mm");
+  const double Y1 = std::sqrt((l + r) * (l + r) - e * e), Y2 = std::sqrt((l - r) * (l - r) - e * e);
+  bool crank = false;
+  for (size_t i = 1; i < lines.size(); ++i) {
+    const std::vector<std::string> row = split(lines[i], ',');
+    ASSERT_EQ(row.size(), 2u);
+    if (row[0] != "crank.O-A") continue;
+    crank = true;
+    EXPECT_NEAR(*parseNumber(row[1]), (l + r) / Y1 + (l - r) / Y2, 1e-9);
+  }
+  EXPECT_TRUE(crank) << res.out;
+  EXPECT_NE(res.err.find("stroke "), std::string::npos) << res.err;
 }
 
 TEST_F(SensitivityCli, BadInputIsNamed) {

@@ -11,6 +11,8 @@
 #include "design/sensitivity_panel.h"
 #include "document/document.h"
 #include "linkage/io/model_lookup.h"
+#include "linkage/limits.h"
+#include "linkage/stroke_sensitivity.h"
 #include "ui_test.h"
 
 namespace linkage::ui {
@@ -72,6 +74,31 @@ TEST(SensitivityPanel, AFourBarsPointMovesWithItsGround) {
     EXPECT_NEAR(x, component == 0 ? 1 : 0, 1e-12) << component;
     EXPECT_NEAR(y, component == 1 ? 1 : 0, 1e-12) << component;
   }
+}
+
+// The stroke: the library's envelope-theorem derivatives (tests/test_stroke_sensitivity.cpp
+// holds them to closed forms and Euler's sum), ranked; the summary names the stroke.
+TEST(SensitivityPanel, TheStrokesDimensionsRanked) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("wanzer-inversion-2")), nullptr));
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  panel.quantityBox()->setCurrentIndex(3);
+  Q_EMIT panel.quantityBox()->activated(3);
+  settle(panel);
+  const Mechanism& m = doc.design();
+  const PointId G = *m.findPoint("needlebar.G");
+  const StrokeSensitivity want =
+      strokeSensitivity(doc.kinematics(), G, defaultDirection(m, G), dimensions(m));
+  ASSERT_TRUE(want.status.ok());
+  ASSERT_EQ(panel.bars().size(), want.dims.size());
+  for (const SensitivityPanel::Bar& b : panel.bars())
+    for (size_t d = 0; d < want.dims.size(); ++d)
+      if (want.dims[d].name == b.dimension) EXPECT_EQ(b.now, want.derivative[d]) << b.dimension;
+  EXPECT_TRUE(panel.summary().startsWith("The stroke (35.7209 mm")) << panel.summary();
+  shot(&panel, "stroke_sensitivity");
 }
 
 TEST(SensitivityPanel, WhatCannotBeDifferentiatedYetIsSaid) {

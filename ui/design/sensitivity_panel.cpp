@@ -11,7 +11,9 @@
 #include "design/tolerance_view.h"
 #include "document/document.h"
 #include "figures/qcp.h"
+#include "linkage/limits.h"
 #include "linkage/sensitivity.h"
+#include "linkage/stroke_sensitivity.h"
 
 namespace linkage::ui {
 
@@ -19,6 +21,7 @@ namespace {
 
 constexpr int kShown = 12;        // bars drawn; the rest counted under the chart
 constexpr double kCycleStep = 5;  // degrees between the turn's samples
+constexpr int kStroke = 3;        // the quantity: the stroke (linkage/stroke_sensitivity.h)
 
 // The chosen quantity's derivative: a component of it, or the length of the move.
 double component(const Sensitivity& s, const Kinematics& k, PointId p, int dim, int quantity,
@@ -38,7 +41,7 @@ SensitivityPanel::SensitivityPanel(Document* doc, QWidget* parent)
   point_->setObjectName(QStringLiteral("sensPoint"));
   quantity_ = new QComboBox;
   quantity_->setObjectName(QStringLiteral("sensQuantity"));
-  quantity_->addItems({tr("position"), tr("velocity"), tr("acceleration")});
+  quantity_->addItems({tr("position"), tr("velocity"), tr("acceleration"), tr("stroke")});
   component_ = new QComboBox;
   component_->setObjectName(QStringLiteral("sensComponent"));
   component_->addItems({tr("x"), tr("y"), tr("length of the change")});
@@ -116,6 +119,11 @@ void SensitivityPanel::compute() {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
     return;
   }
+  component_->setEnabled(quantity != kStroke);  // a stroke is along its slot, else y
+  if (quantity == kStroke) {
+    strokeBars(k, p);
+    return;
+  }
   const size_t n = s.dims().size();
   const std::pair<PointId, int> asked{p, std::min(which, 1)};
   if (tabs_->currentWidget() == tolerances_ && (toleranceStale_ || asked != toleranceFor_)) {
@@ -148,6 +156,32 @@ void SensitivityPanel::compute() {
         tr("A dead point of the output here: its derivatives are "
            "unbounded (the grey bars are the turn's)"));
   draw();
+}
+
+void SensitivityPanel::strokeBars(const Kinematics& k, PointId p) {
+  const StrokeSensitivity s =
+      strokeSensitivity(k, p, defaultDirection(k.mechanism(), p), dimensions(k.mechanism()));
+  if (!s.status.ok()) {
+    showNothing(QString::fromStdString(s.status.message));
+    return;
+  }
+  bars_.clear();
+  for (size_t d = 0; d < s.dims.size(); ++d)
+    bars_.push_back({s.dims[d].name, s.derivative[d], std::abs(s.derivative[d])});
+  std::stable_sort(bars_.begin(), bars_.end(),
+                   [](const Bar& a, const Bar& b) { return a.peak > b.peak; });
+  deadHere_ = false;
+  draw();
+  plot_->xAxis->setLabel(tr("change of the stroke per unit of the dimension (mm, degree, ratio)"));
+  plot_->replot();
+  if (bars_.empty()) return;
+  summary_->setText(tr("The stroke (%1 mm, between crank %2° and %3°) changes most with %4 "
+                       "(%5 per unit)")
+                        .arg(s.limits.stroke, 0, 'f', 4)
+                        .arg(s.limits.minDeg, 0, 'f', 1)
+                        .arg(s.limits.maxDeg, 0, 'f', 1)
+                        .arg(QString::fromStdString(bars_[0].dimension))
+                        .arg(bars_[0].now, 0, 'g', 4));
 }
 
 void SensitivityPanel::draw() {

@@ -1,6 +1,7 @@
 // The Sensitivity dock (issue 29, "Sensitivities, exact"): which dimensions matter most for a
 // chosen output, a point's x, y or the length of its move (position, velocity or acceleration),
-// as a ranked bar chart: for each dimension (linkage/sensitivity.h, named as the typed
+// or its stroke (along its slot, else y: linkage/stroke_sensitivity.h), as a ranked bar
+// chart: for each dimension (linkage/sensitivity.h, named as the typed
 // dimensions are) its derivative at the crank angle (signed, in colour) over the largest of its
 // size over a turn (grey, every 5 degrees), the largest first. Exact, from the constraint
 // Jacobian, never by differences. Computed while seen (docks/dock_panel.h); the text under the
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "docks/dock_panel.h"
+#include "linkage/kinematics.h"
 #include "linkage/model.h"
 
 class QComboBox;
@@ -53,6 +55,8 @@ class SensitivityPanel : public DockPanel {
   void fillPoints();
   void draw();
   void showNothing(const QString& why);
+  // The stroke's derivatives (the envelope theorem at its limit positions) as the bars.
+  void strokeBars(const Kinematics& k, PointId p);
 
   Document* doc_;
   QComboBox *point_, *quantity_, *component_;
