@@ -4,6 +4,7 @@
 
 #include "cli_common.h"
 #include "cli_parser.h"
+#include "linkage/clearance_sensitivity.h"
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
 #include "linkage/stroke_sensitivity.h"
@@ -14,7 +15,8 @@ namespace {
 
 const char* kHelp =
     R"(usage: linkage-cli sensitivity MODEL --point body.point [--steps N] [--velocity]
-                                   [--acceleration]
+                                   [--acceleration] | --point body.point --stroke |
+                                   --clearance N
 
 The derivative of a point's position with respect to every dimension of MODEL, at each crank
 angle of one turn: exact, from the constraint Jacobian (dq/dp = -J_q^-1 J_p), not by finite
@@ -36,6 +38,10 @@ degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
                        else y; limit positions to 1e-9 degree, the envelope theorem: each
                        extreme moves by the point's own derivative there): CSV
                        dimension,dstroke_mm_per_mm, a row a dimension
+  --clearance N        instead, the derivative of the least distance of the file's clearance N
+                       (0 the first of "timing"'s "clearances"; the envelope theorem at the
+                       closest approach): CSV dimension,dmin_mm_per_mm; --point not needed.
+                       Refused where the two touch (0 has no derivative) or to a slot
 
 Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
 significant digits. A singular position (a dead point of the output, where the derivatives are
@@ -51,6 +57,7 @@ struct Options {
   std::string model, point;
   int steps = 360;
   bool velocity = false, acceleration = false, stroke = false;
+  int clearance = -1;
 };
 
 // Appends ",x,y" (one string appended at a time: no temporaries to concatenate).
@@ -99,9 +106,42 @@ int stroke(const Kinematics& k, PointId p) {
   return kOk;
 }
 
+// A clearance's least distance's derivatives (linkage/clearance_sensitivity.h).
+int clearance(const Mechanism& m, int n) {
+  if (n >= static_cast<int>(m.timing.clearances.size())) {
+    error("--clearance " + std::to_string(n) + ": the file watches " +
+          std::to_string(m.timing.clearances.size()) +
+          " clearance(s) (\"timing\": " + "\"clearances\", counted from 0)");
+    return kBadInput;
+  }
+  Kinematics k;
+  if (int e = prepare(k, m); e != kOk) return e;
+  const ClearanceSensitivity s = clearanceSensitivity(k, m.timing.clearances[n], dimensions(m));
+  if (!s.status.ok()) {
+    error("sensitivity: clearance " + std::to_string(n) + ": " + s.status.message);
+    return exitFor(s.status);
+  }
+  note("closest " + formatNumber(s.clearance.closest.distance) + " mm at crank " +
+       formatNumber(s.clearance.closest.crankDeg) + " deg");
+  std::string out = "dimension,dmin_mm_per_mm\n";
+  for (size_t d = 0; d < s.dims.size(); ++d) {
+    out += s.dims[d].name;
+    out += ',';
+    out += formatNumber(s.derivative[d]);
+    out += '\n';
+  }
+  std::cout << out << std::flush;
+  return kOk;
+}
+
 int sensitivity(const Options& o) {
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
+  if (o.clearance >= 0) return clearance(*m, o.clearance);
+  if (o.point.empty()) {
+    error("sensitivity: --point body.point is required (or --clearance N)");
+    return kBadInput;
+  }
   std::optional<std::vector<PointId>> ids = outputPoints(*m, {o.point});
   if (!ids) return kBadInput;
   const PointId p = ids->front();
@@ -147,11 +187,12 @@ Command sensitivityCommand(Parser& parser) {
   auto o = std::make_shared<Options>();
   CLI::App& c = parser.command("sensitivity", kHelp);
   addModel(c, o->model);
-  required(addText(c, "--point", o->point));
+  addText(c, "--point", o->point);
   addWhole(c, "--steps", o->steps, 1, 1'000'000);
   addFlag(c, "--velocity", o->velocity);
   addFlag(c, "--acceleration", o->acceleration);
   addFlag(c, "--stroke", o->stroke);
+  addWhole(c, "--clearance", o->clearance, 0, 1'000'000);
   return {&c, [o] { return sensitivity(*o); }};
 }
 

@@ -107,6 +107,31 @@ TEST_F(SensitivityCli, TheStrokesDerivativesWhenAsked) {
   EXPECT_NE(res.err.find("stroke "), std::string::npos) << res.err;
 }
 
+// --clearance N: the file's clearance N, the slider-crank's block to a ground point above it
+// (tests/test_clearance_sensitivity.cpp derives it): d/dr = -(l + r) / Y1, d/d(Q.y) = 1.
+TEST_F(SensitivityCli, TheClosestApproachsDerivativesWhenAsked) {
+  const double r = 20, l = 70, e = 12, Y1 = std::sqrt((l + r) * (l + r) - e * e);
+  test::SliderCrank sc = test::sliderCrank(r, l, e, 30);
+  const PointId Q = sc.m.addPoint(sc.ground, "Q", Vec2(e, 110));
+  sc.m.timing.clearances.push_back({sc.B, ClearancePart::of(Q), {}});
+  const std::string path = save(sc.m);
+  const test::CliResult res = run("sensitivity " + path + " --clearance 0");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  EXPECT_EQ(lines.at(0), "dimension,dmin_mm_per_mm");
+  int found = 0;
+  for (size_t i = 1; i < lines.size(); ++i) {
+    const std::vector<std::string> row = split(lines[i], ',');
+    const double want = row[0] == "crank.O-A" ? -(l + r) / Y1 : row[0] == "ground.Q.y" ? 1 : NAN;
+    if (std::isnan(want)) continue;
+    ++found;
+    EXPECT_NEAR(*parseNumber(row[1]), want, 1e-9) << row[0];
+  }
+  EXPECT_EQ(found, 2) << res.out;
+  EXPECT_EQ(run("sensitivity " + path + " --clearance 1").exit, 2);
+  EXPECT_EQ(run("sensitivity " + path).exit, 2);
+}
+
 TEST_F(SensitivityCli, BadInputIsNamed) {
   const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
   const std::string model = save(f.m);

@@ -10,6 +10,7 @@
 
 #include "design/sensitivity_panel.h"
 #include "document/document.h"
+#include "linkage/clearance_sensitivity.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/limits.h"
 #include "linkage/stroke_sensitivity.h"
@@ -99,6 +100,40 @@ TEST(SensitivityPanel, TheStrokesDimensionsRanked) {
       if (want.dims[d].name == b.dimension) EXPECT_EQ(b.now, want.derivative[d]) << b.dimension;
   EXPECT_TRUE(panel.summary().startsWith("The stroke (35.7209 mm")) << panel.summary();
   shot(&panel, "stroke_sensitivity");
+}
+
+// A watched clearance's closest approach: after the points in the output list; its derivatives
+// the library's (tests/test_clearance_sensitivity.cpp holds them to a closed form and Euler's
+// sum); the machine's own hook-to-needle clearance touches (0: no derivative) and says so.
+TEST(SensitivityPanel, AClearancesClosestApproach) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("lockstitch-machine")), nullptr));
+  Mechanism m = doc.design();
+  m.timing.clearances.push_back(
+      {*m.findPoint("hook.K"), ClearancePart::of(*m.findPoint("needlebar.N")), {}});
+  doc.setContents(m, QString());
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  const int n = panel.pointBox()->count();
+  ASSERT_TRUE(panel.pointBox()->itemText(n - 2).startsWith("closest approach: hook.K to"));
+  panel.pointBox()->setCurrentIndex(n - 2);
+  Q_EMIT panel.pointBox()->activated(n - 2);
+  settle(panel);
+  EXPECT_TRUE(panel.bars().empty());
+  EXPECT_TRUE(panel.summary().contains("touch")) << panel.summary();
+  panel.pointBox()->setCurrentIndex(n - 1);
+  Q_EMIT panel.pointBox()->activated(n - 1);
+  settle(panel);
+  const ClearanceSensitivity want =
+      clearanceSensitivity(doc.kinematics(), m.timing.clearances[1], dimensions(m));
+  ASSERT_TRUE(want.status.ok()) << want.status.message;
+  ASSERT_EQ(panel.bars().size(), want.dims.size());
+  for (const SensitivityPanel::Bar& b : panel.bars())
+    for (size_t d = 0; d < want.dims.size(); ++d)
+      if (want.dims[d].name == b.dimension) EXPECT_EQ(b.now, want.derivative[d]) << b.dimension;
+  EXPECT_TRUE(panel.summary().startsWith("The closest approach")) << panel.summary();
 }
 
 TEST(SensitivityPanel, WhatCannotBeDifferentiatedYetIsSaid) {

@@ -11,6 +11,7 @@
 #include "design/tolerance_view.h"
 #include "document/document.h"
 #include "figures/qcp.h"
+#include "linkage/clearance_sensitivity.h"
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
 #include "linkage/stroke_sensitivity.h"
@@ -87,11 +88,23 @@ void SensitivityPanel::fillPoints() {
   for (const Point& p : m.points)
     if (!m.body(p.body)->ground && std::find(ids.begin(), ids.end(), p.id) == ids.end())
       ids.push_back(p.id);
-  if (ids == points_) return;
+  QStringList watched;
+  for (const ClearanceWatch& w : m.timing.clearances) {
+    const ClearancePart& o = w.other;
+    const std::string other = o.isSlot()      ? m.slotLabel(o.slot)
+                              : o.isSegment() ? m.pointLabel(o.point) + "-" + m.point(o.end)->name
+                                              : m.pointLabel(o.point);
+    watched << tr("closest approach: %1 to %2")
+                   .arg(QString::fromStdString(m.pointLabel(w.point)),
+                        QString::fromStdString(other));
+  }
+  if (ids == points_ && watched == clearances_) return;
   points_ = ids;
+  clearances_ = watched;
   const QSignalBlocker block(point_);
   point_->clear();
   for (PointId p : points_) point_->addItem(QString::fromStdString(m.pointLabel(p)));
+  point_->addItems(clearances_);
   const int again = point_->findText(was);
   point_->setCurrentIndex(again >= 0 ? again : 0);
 }
@@ -107,10 +120,18 @@ void SensitivityPanel::compute() {
   fillPoints();
   const int at = point_->currentIndex();
   if (!doc_->solved() || at < 0) {
+    quantity_->setEnabled(true);
     showNothing(doc_->solved() ? tr("No moving point to follow")
                                : QString::fromStdString(doc_->solveStatus().message));
     return;
   }
+  if (at >= static_cast<int>(points_.size())) {
+    quantity_->setEnabled(false);
+    component_->setEnabled(false);
+    clearanceBars(at - static_cast<int>(points_.size()));
+    return;
+  }
+  quantity_->setEnabled(true);
   const PointId p = points_[at];
   const int quantity = quantity_->currentIndex(), which = component_->currentIndex();
   Kinematics k = doc_->kinematics();
@@ -180,6 +201,33 @@ void SensitivityPanel::strokeBars(const Kinematics& k, PointId p) {
                         .arg(s.limits.stroke, 0, 'f', 4)
                         .arg(s.limits.minDeg, 0, 'f', 1)
                         .arg(s.limits.maxDeg, 0, 'f', 1)
+                        .arg(QString::fromStdString(bars_[0].dimension))
+                        .arg(bars_[0].now, 0, 'g', 4));
+}
+
+void SensitivityPanel::clearanceBars(int n) {
+  const Mechanism& m = doc_->design();
+  const ClearanceSensitivity s =
+      clearanceSensitivity(doc_->kinematics(), m.timing.clearances.at(n), dimensions(m));
+  if (!s.status.ok()) {
+    showNothing(QString::fromStdString(s.status.message));
+    return;
+  }
+  bars_.clear();
+  for (size_t d = 0; d < s.dims.size(); ++d)
+    bars_.push_back({s.dims[d].name, s.derivative[d], std::abs(s.derivative[d])});
+  std::stable_sort(bars_.begin(), bars_.end(),
+                   [](const Bar& a, const Bar& b) { return a.peak > b.peak; });
+  deadHere_ = false;
+  draw();
+  plot_->xAxis->setLabel(
+      tr("change of the closest approach per unit of the dimension (mm, degree, ratio)"));
+  plot_->replot();
+  if (bars_.empty()) return;
+  summary_->setText(tr("The closest approach (%1 mm at crank %2°) changes most with %3 (%4 per "
+                       "unit)")
+                        .arg(s.clearance.closest.distance, 0, 'f', 4)
+                        .arg(s.clearance.closest.crankDeg, 0, 'f', 1)
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4));
 }
