@@ -8,6 +8,7 @@
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
 #include "linkage/stroke_sensitivity.h"
+#include "linkage/window_sensitivity.h"
 
 namespace linkage::cli {
 
@@ -16,7 +17,7 @@ namespace {
 const char* kHelp =
     R"(usage: linkage-cli sensitivity MODEL --point body.point [--steps N] [--velocity]
                                    [--acceleration] | --point body.point --stroke |
-                                   --clearance N
+                                   --clearance N | --window NAME
 
 The derivative of a point's position with respect to every dimension of MODEL, at each crank
 angle of one turn: exact, from the constraint Jacobian (dq/dp = -J_q^-1 J_p), not by finite
@@ -42,6 +43,10 @@ degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
                        (0 the first of "timing"'s "clearances"; the envelope theorem at the
                        closest approach): CSV dimension,dmin_mm_per_mm; --point not needed.
                        Refused where the two touch (0 has no derivative) or to a slot
+  --window NAME        instead, the derivatives of the ends of the file's timing window NAME (a
+                       point's position below or above a level): CSV
+                       dimension,interval,dfrom_deg_per_unit,dto_deg_per_unit (degrees of
+                       crank per mm, degree or ratio; interval from 0 in crank order)
 
 Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
 significant digits. A singular position (a dead point of the output, where the derivatives are
@@ -58,6 +63,7 @@ struct Options {
   int steps = 360;
   bool velocity = false, acceleration = false, stroke = false;
   int clearance = -1;
+  std::string window;
 };
 
 // Appends ",x,y" (one string appended at a time: no temporaries to concatenate).
@@ -134,10 +140,37 @@ int clearance(const Mechanism& m, int n) {
   return kOk;
 }
 
+// A window's ends' derivatives (linkage/window_sensitivity.h).
+int window(const Mechanism& m, const std::string& name) {
+  Kinematics k;
+  if (int e = prepare(k, m); e != kOk) return e;
+  const WindowSensitivity s = windowSensitivity(k, name, dimensions(m));
+  if (!s.status.ok()) {
+    error("sensitivity: window " + name + ": " + s.status.message);
+    return exitFor(s.status);
+  }
+  std::string out = "dimension,interval,dfrom_deg_per_unit,dto_deg_per_unit\n";
+  for (size_t i = 0; i < s.intervals.size(); ++i) {
+    note("interval " + std::to_string(i) + ": crank " + formatNumber(s.intervals[i].fromDeg) +
+         " to " + formatNumber(s.intervals[i].toDeg) + " deg");
+    for (size_t d = 0; d < s.dims.size(); ++d) {
+      out += s.dims[d].name + ',' + std::to_string(i);
+      for (double v : {s.intervals[i].dFrom[d], s.intervals[i].dTo[d]}) {
+        out += ',';
+        out += formatNumber(v);
+      }
+      out += '\n';
+    }
+  }
+  std::cout << out << std::flush;
+  return kOk;
+}
+
 int sensitivity(const Options& o) {
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   if (o.clearance >= 0) return clearance(*m, o.clearance);
+  if (!o.window.empty()) return window(*m, o.window);
   if (o.point.empty()) {
     error("sensitivity: --point body.point is required (or --clearance N)");
     return kBadInput;
@@ -193,6 +226,7 @@ Command sensitivityCommand(Parser& parser) {
   addFlag(c, "--acceleration", o->acceleration);
   addFlag(c, "--stroke", o->stroke);
   addWhole(c, "--clearance", o->clearance, 0, 1'000'000);
+  addText(c, "--window", o->window);
   return {&c, [o] { return sensitivity(*o); }};
 }
 

@@ -12,6 +12,7 @@
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
+#include "linkage/window_sensitivity.h"
 #include "mechanisms.h"
 
 namespace linkage {
@@ -130,6 +131,30 @@ TEST_F(SensitivityCli, TheClosestApproachsDerivativesWhenAsked) {
   EXPECT_EQ(found, 2) << res.out;
   EXPECT_EQ(run("sensitivity " + path + " --clearance 1").exit, 2);
   EXPECT_EQ(run("sensitivity " + path).exit, 2);
+}
+
+// --window NAME: a row a dimension an interval, the library's numbers to the last bit
+// (tests/test_window_sensitivity.cpp holds them to the slider-crank's closed form).
+TEST_F(SensitivityCli, AWindowsEndsDerivativesWhenAsked) {
+  test::SliderCrank sc = test::sliderCrank(20, 70, 12, 30);
+  sc.m.timing.windows.push_back({"low", LimitMeasure::along(sc.B, Vec2(0, 1)), true, 70});
+  const std::string path = save(sc.m);
+  const test::CliResult res = run("sensitivity " + path + " --window low");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  EXPECT_EQ(lines.at(0), "dimension,interval,dfrom_deg_per_unit,dto_deg_per_unit");
+  Kinematics k;
+  ASSERT_TRUE(k.load(sc.m).ok());
+  const WindowSensitivity w = windowSensitivity(k, "low", dimensions(sc.m));
+  ASSERT_EQ(lines.size(), 1 + w.dims.size()) << res.out;
+  for (size_t d = 0; d < w.dims.size(); ++d) {
+    const std::vector<std::string> row = split(lines[1 + d], ',');
+    ASSERT_EQ(row.size(), 4u);
+    EXPECT_EQ(row[0], w.dims[d].name);
+    EXPECT_EQ(parseNumber(row[2]), w.intervals[0].dFrom[d]);
+    EXPECT_EQ(parseNumber(row[3]), w.intervals[0].dTo[d]);
+  }
+  EXPECT_EQ(run("sensitivity " + path + " --window nope").exit, 2);
 }
 
 TEST_F(SensitivityCli, BadInputIsNamed) {
