@@ -22,6 +22,7 @@ Command clearanceCommand(Parser& parser);
 Command timingCommand(Parser& parser);
 Command camCommand(Parser& parser);
 Command sensitivityCommand(Parser& parser);
+Command optimizeCommand(Parser& parser);
 }  // namespace linkage::cli
 
 namespace {
@@ -44,6 +45,8 @@ Commands:
   cam MODEL ...       a cam's checks (pressure angle, curvature, undercut) and its profile
   sensitivity MODEL --point body.point
                       how far a point moves per mm of each dimension, exactly, over a turn
+  optimize MODEL --vary DIM=LO:HI --target ...
+                      dimensions found for targets (stroke, position, path), by NLopt
   examples            list the example mechanisms that MODEL can name
 
 MODEL is a .linkage.json file or the name of an example (e.g. wanzer-inversion-2).
@@ -62,9 +65,10 @@ int main(int argc, char** argv) {
   Parser parser("linkage-cli", kHelp);
   parser.version("linkage-cli " LINKAGE_VERSION);
   std::vector<Command> commands;
-  for (auto* add : {analyzeCommand, infoCommand, icsCommand, plotCommand, limitsCommand,
-                    transmissionCommand, studyCommand, dynamicsCommand, balanceCommand,
-                    slotsCommand, clearanceCommand, timingCommand, camCommand, sensitivityCommand})
+  for (auto* add :
+       {analyzeCommand, infoCommand, icsCommand, plotCommand, limitsCommand, transmissionCommand,
+        studyCommand, dynamicsCommand, balanceCommand, slotsCommand, clearanceCommand,
+        timingCommand, camCommand, sensitivityCommand, optimizeCommand})
     commands.push_back(add(parser));
   commands.push_back({&parser.command("examples", kExamplesHelp), [] {
                         for (const std::string& n : linkage::listExamples(executablePath))
