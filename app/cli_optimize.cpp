@@ -32,7 +32,7 @@ pose on MODEL's assembly branches.
      position:body.point@DEG=X,Y     the point at crank angle DEG
      path:body.point=FILE.csv        the point's path through the points of FILE (x,y a line, an
                                      optional header): each one's distance to the nearest point of
-                                     the curve over the turn
+                                     the curve over the turn; lines starting with # are comments
   --starts K                  starts (default 16)
   --seed S                    seed of the starts (default 1)
   --steps N                   samples per turn for extremes and nearest points (default 360)
@@ -83,7 +83,7 @@ bool readPath(const std::string& file, std::vector<Vec2>& out, std::string& why)
   std::string line;
   for (int n = 1; std::getline(in, line); ++n) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
+    if (line.empty() || line[0] == '#') continue;  // comments (a source cited, as four-bar-rs does)
     std::optional<Vec2> p = parsePair(line);
     if (!p && n == 1) continue;
     if (!p) {

@@ -76,6 +76,11 @@ TEST_F(OptimizeCli, BadDimensionOrTargetIsNamedWithExit2) {
     EXPECT_EQ(r.exit, 2) << c.args;
     EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << ": " << r.err;
   }
+  // A cam's follower is not differentiated yet: said once, naming it, not 16 infeasible starts.
+  const test::CliResult cam =
+      run("optimize cam-translating-roller --vary ground.O.x=-1:1 --target stroke:follower.R=10");
+  EXPECT_EQ(cam.exit, 2);
+  EXPECT_NE(cam.err.find("cam"), std::string::npos) << cam.err;
 }
 
 }  // namespace

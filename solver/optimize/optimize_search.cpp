@@ -67,6 +67,10 @@ double uniform(std::mt19937_64& g) {
 
 Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<double>& before) {
   if (!base.valid()) return Status::badModel("no mechanism is loaded");
+  // What the sensitivities cannot differentiate yet (a spatial model, a cam) is said once here,
+  // not found infeasible at every start.
+  Sensitivity probe;
+  if (Status s = probe.prepare(base, {}); !s.ok()) return Status::badModel(s.message);
   if (spec.variables.empty()) return Status::badModel("no dimension to vary");
   if (spec.targets.empty()) return Status::badModel("no target");
   if (spec.starts < 1 || spec.steps < 4) return Status::badModel("starts >= 1, steps >= 4");
