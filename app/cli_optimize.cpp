@@ -9,6 +9,7 @@
 #include "linkage/io/numbers.h"
 #include "linkage/optimize.h"
 #include "linkage/sensitivity.h"
+#include "linkage/transmission.h"
 
 namespace linkage::cli {
 
@@ -33,6 +34,8 @@ pose on MODEL's assembly branches.
      path:body.point=FILE.csv        the point's path through the points of FILE (x,y a line, an
                                      optional header): each one's distance to the nearest point of
                                      the curve over the turn; lines starting with # are comments
+     transmission:mu:body.point>=DEG a dyad's transmission angle (as `transmission` names it)
+                                     within DEG to 180 - DEG over the turn
   --starts K                  starts (default 16)
   --seed S                    seed of the starts (default 1)
   --steps N                   samples per turn for extremes and nearest points (default 360)
@@ -96,6 +99,28 @@ bool readPath(const std::string& file, std::vector<Vec2>& out, std::string& why)
   return !out.empty();
 }
 
+// transmission:[mu:]body.point>=DEG, the joint named as `transmission` names it.
+bool parseTransmission(const Mechanism& m, const std::string& text, OptTarget& t,
+                       std::string& why) {
+  const size_t ge = text.find(">=");
+  auto deg = ge == std::string::npos ? std::nullopt : parseNumber(text.substr(ge + 2));
+  if (!deg) return why += "expected transmission:mu:body.point>=DEG", false;
+  std::string name = text.substr(13, ge - 13);
+  if (name.rfind("mu:", 0) != 0) name = "mu:" + name;
+  const std::vector<TransmissionJoint> js = transmissionJoints(m);
+  for (size_t j = 0; j < js.size(); ++j)
+    if (js[j].label == name) {
+      t.kind = OptTarget::Kind::Transmission;
+      t.joint = j;
+      t.limitDeg = *deg;
+      t.point = m.joint(js[j].joint)->a;
+      return true;
+    }
+  std::string known;
+  for (const TransmissionJoint& j : js) known += (known.empty() ? "" : ", ") + j.label;
+  return why += "no transmission angle '" + name + "' (the model's: " + known + ")", false;
+}
+
 // KIND:body.point=VALUE[*WEIGHT]
 bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string& why) {
   why = "--target " + text + ": ";
@@ -105,6 +130,7 @@ bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string
     t.weight = *w;
     text = text.substr(0, star);
   }
+  if (text.rfind("transmission:", 0) == 0) return parseTransmission(m, text, t, why);
   const size_t colon = text.find(':'), eq = text.find('=');
   if (colon == std::string::npos || eq == std::string::npos || eq < colon)
     return why += "expected KIND:body.point=VALUE", false;
@@ -159,6 +185,9 @@ std::string table(const OptimizeSpec& spec, const std::vector<std::string>& name
     } else if (t.kind == OptTarget::Kind::Position) {
       row("x_mm", 0, formatNumber(t.at.x()));
       row("y_mm", 1, formatNumber(t.at.y()));
+    } else if (t.kind == OptTarget::Kind::Transmission) {
+      row("transmission_min_deg", 0, ">=" + formatNumber(t.limitDeg));
+      row("transmission_max_deg", 1, "<=" + formatNumber(180 - t.limitDeg));
     } else {
       row("path_rms_mm", 0, "0");
       row("path_max_mm", 1, "0");
@@ -197,7 +226,9 @@ int optimizeModel(const Options& o) {
     }
     spec.targets.push_back(t);
     names.push_back(m->pointLabel(t.point));
-    if (t.kind == OptTarget::Kind::Position) names.back() += "@" + formatNumber(t.crankDeg);
+    if (t.kind == OptTarget::Kind::Position)
+      names.back().append("@").append(formatNumber(t.crankDeg));
+    if (t.kind == OptTarget::Kind::Transmission) names.back().insert(0, "mu:");
   }
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;

@@ -71,6 +71,8 @@ TEST_F(OptimizeCli, BadDimensionOrTargetIsNamedWithExit2) {
            {"--vary crank.O2-A=1:2 --target speed:coupler.P=10", "unknown kind 'speed'"},
            {"--vary crank.O2-A=1:2 --target position:coupler.P=10", "position:body.point@DEG"},
            {"--vary crank.O2-A=1:2 --target path:coupler.P=/nonexistent.csv", "/nonexistent.csv"},
+           {"--vary crank.O2-A=1:2 --target 'transmission:mu:coupler.X>=40'",
+            "no transmission angle 'mu:coupler.X' (the model's: mu:coupler.B)"},
        }) {
     const test::CliResult r = run("optimize " + m + " " + c.args);
     EXPECT_EQ(r.exit, 2) << c.args;

@@ -10,6 +10,7 @@
 #include "linkage/limits.h"
 #include "linkage/optimize.h"
 #include "linkage/sensitivity.h"
+#include "linkage/transmission.h"
 #include "mechanisms.h"
 
 namespace linkage {
@@ -109,11 +110,16 @@ TEST(Optimize, GradientMatchesCentralDifferences) {
   OptTarget path{OptTarget::Kind::Path, f.P};
   path.path = curve(other, 7, 10);
   path.weight = 0.5;
-  spec.targets = {stroke, at, path};
+  OptTarget mu{OptTarget::Kind::Transmission, f.B};
+  mu.joint = 0;      // the coupler-rocker dyad at B
+  mu.limitDeg = 75;  // below its smallest angle and above 180 - its largest: both residuals
+  spec.targets = {stroke, at, path, mu};
   std::vector<double> x;
   for (const OptVariable& v : spec.variables) x.push_back(valueOf(f.m, v.name));
   const Evaluation e = evaluate(base, spec, x);
   ASSERT_TRUE(e.feasible) << e.why;
+  ASSERT_LT(e.measures[3][0], 75);
+  ASSERT_GT(e.measures[3][1], 105);
   for (size_t i = 0; i < x.size(); ++i) {
     const double h = 1e-5;
     std::vector<double> up = x, down = x;
@@ -198,6 +204,31 @@ TEST(Optimize, NoFeasibleStartIsRefusedWithItsReason) {
   EXPECT_EQ(r.infeasibleStarts, 5);
   spec.variables = {{"crank.nothing", 1, 2}};
   EXPECT_NE(optimize(base, spec).status.message.find("crank.nothing"), std::string::npos);
+}
+
+// A transmission angle kept within 50 to 130 degrees: the crank-rocker's coupler-rocker angle
+// leaves that band as drawn; varying the rocker and its pivot brings it inside, the swept
+// angles of the design written out agreeing (the measures are the transmission sweep's own).
+TEST(Optimize, TransmissionAngleIsBroughtIntoItsBand) {
+  const test::FourBar f = design();
+  Kinematics base;
+  ASSERT_TRUE(base.load(f.m).ok());
+  const TransmissionSweep before = sweepTransmission(base);
+  ASSERT_LT(before.summaries[0].min, 50);
+  OptimizeSpec spec;
+  spec.variables = {{"rocker.B-O4", 30, 70}, {"ground.O4.x", 40, 80}, {"coupler.A-B", 40, 70}};
+  OptTarget mu{OptTarget::Kind::Transmission, f.B};
+  mu.limitDeg = 50;
+  spec.targets = {mu};
+  spec.starts = 4;
+  const OptimizeResult r = optimize(base, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  Kinematics again;
+  ASSERT_TRUE(again.load(r.design).ok());
+  const TransmissionSweep after = sweepTransmission(again);
+  EXPECT_GE(after.summaries[0].min, 50 - 1e-6);
+  EXPECT_LE(after.summaries[0].max, 130 + 1e-6);
+  EXPECT_NEAR(r.atAfter.measures[0][0], after.summaries[0].min, 1e-9);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "linkage/edits.h"
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
+#include "linkage/transmission.h"
 
 namespace linkage {
 
@@ -47,8 +48,43 @@ struct Probe {
   size_t target = 0;
   Vec2 weightOfDp = Vec2::Zero();  // d objective = weightOfDp . dP/dp
   PointId point;
-  size_t index = 0;  // a path's given point
+  size_t index = 0;        // a path's given point
+  double angleWeight = 0;  // Transmission: d objective = angleWeight . d mu (degrees)
 };
+
+// A dyad's angle between C->P1 and C->P2 (degrees, 0 to 180), and its derivative along the
+// dimension v: each line turns by cross(u, du) / |u|^2, the angle by the difference.
+double dyadAngle(const Kinematics& k, const TransmissionJoint& j, const Sensitivity* sens, int v,
+                 double* d) {
+  const Vec2 u = j.linkOuter.at(k) - j.linkAt.at(k), w = j.otherOuter.at(k) - j.otherAt.at(k);
+  const double turn = std::atan2(cross(u, w), u.dot(w));
+  if (sens && d) {
+    auto dp = [&](const Anchor& a) { return sens->point(k, a.point, v); };
+    const Vec2 du = dp(j.linkOuter) - dp(j.linkAt), dw = dp(j.otherOuter) - dp(j.otherAt);
+    const double dturn = cross(w, dw) / w.squaredNorm() - cross(u, du) / u.squaredNorm();
+    *d = (turn < 0 ? -dturn : dturn) / kDeg;
+  }
+  return std::abs(turn) / kDeg;
+}
+
+// Transmission: the dyad's extremes over the turn against the limits.
+Status transmissionResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t i, Evaluation& e,
+                             std::vector<Probe>& probes) {
+  const OptTarget& t = spec.targets[i];
+  TransmissionOptions to;
+  to.steps = spec.steps;
+  const TransmissionSweep sw = sweepTransmission(k, to);
+  if (!sw.status.ok()) return sw.status;
+  if (t.joint >= sw.summaries.size()) return Status::badModel("no such transmission angle");
+  const TransmissionSummary& m = sw.summaries[t.joint];
+  const double low = std::max(0.0, t.limitDeg - m.min),
+               high = std::max(0.0, m.max - (180 - t.limitDeg));
+  e.objective += t.weight * (low * low + high * high);
+  e.measures[i] = {m.min, m.max};
+  probes.push_back({m.minDeg, i, Vec2::Zero(), {}, 0, -2 * t.weight * low});
+  probes.push_back({m.maxDeg, i, Vec2::Zero(), {}, 0, 2 * t.weight * high});
+  return Status::success();
+}
 
 // A path's given points: each one's nearest point of the curve over the turn, the local minima
 // of |P - Q|^2 found as roots of (P - Q) . P' (exact rates, narrowed to 1e-9 degree).
@@ -109,6 +145,8 @@ Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec2* stro
     } else if (t.kind == OptTarget::Kind::Position) {
       probes.push_back(
           {std::fmod(std::fmod(t.crankDeg, 360) + 360, 360), i, Vec2::Zero(), t.point});
+    } else if (t.kind == OptTarget::Kind::Transmission) {
+      if (Status s = transmissionResiduals(k, spec, i, e, probes); !s.ok()) return s;
     } else {
       std::vector<double> deg;
       if (Status s = nearestPoints(k, t, spec.steps, deg); !s.ok()) return s;
@@ -127,6 +165,7 @@ Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, Sensitivity* se
                    [](const Probe& a, const Probe& b) { return a.deg < b.deg; });
   std::vector<double> sumSq(spec.targets.size(), 0), largest(spec.targets.size(), 0);
   Kinematics walker = k;
+  const std::vector<TransmissionJoint> joints = transmissionJoints(k.mechanism());
   for (Probe& p : probes) {
     if (Status s = walker.moveTo(p.deg); !s.ok()) return s;
     const OptTarget& t = spec.targets[p.target];
@@ -143,10 +182,18 @@ Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, Sensitivity* se
       largest[p.target] = std::max(largest[p.target], r.norm());
       p.weightOfDp = 2 * t.weight * r;
     }
-    if (!sens) continue;
+    if (!sens || (p.angleWeight == 0 && p.weightOfDp.isZero())) continue;
     if (Status s = sens->at(walker); !s.ok()) return s;
-    for (size_t v = 0; v < e.gradient.size(); ++v)
-      e.gradient[v] += p.weightOfDp.dot(sens->point(walker, p.point, static_cast<int>(v)));
+    for (size_t v = 0; v < e.gradient.size(); ++v) {
+      const int dim = static_cast<int>(v);
+      if (t.kind == OptTarget::Kind::Transmission) {
+        double d = 0;
+        dyadAngle(walker, joints[t.joint], sens, dim, &d);
+        e.gradient[v] += p.angleWeight * d;
+      } else {
+        e.gradient[v] += p.weightOfDp.dot(sens->point(walker, p.point, dim));
+      }
+    }
   }
   for (size_t i = 0; i < spec.targets.size(); ++i)
     if (spec.targets[i].kind == OptTarget::Kind::Path)

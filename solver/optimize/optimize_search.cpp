@@ -8,6 +8,7 @@
 #include "linkage/edits.h"
 #include "linkage/optimize.h"
 #include "linkage/sensitivity.h"
+#include "linkage/transmission.h"
 
 namespace linkage {
 
@@ -61,6 +62,19 @@ void localSearch(Local& l, std::vector<double> x0) {
   }
 }
 
+Status checkTransmission(const Mechanism& m, const OptTarget& t) {
+  const std::vector<TransmissionJoint> js = transmissionJoints(m);
+  if (t.joint >= js.size()) return Status::badModel("no such transmission angle");
+  const TransmissionJoint& j = js[t.joint];
+  if (j.kind != TransmissionKind::Dyad || j.linkOuter.arc || j.linkAt.arc || j.otherAt.arc ||
+      j.otherOuter.arc)
+    return Status::badModel("'" + j.label +
+                            "': only a dyad's angle between points is differentiated yet");
+  if (!(t.limitDeg >= 0 && t.limitDeg < 90))
+    return Status::badModel("'" + j.label + "': the limit must be from 0 to 90 degrees");
+  return Status::success();
+}
+
 double uniform(std::mt19937_64& g) {
   return static_cast<double>(g() >> 11) * 0x1.0p-53;
 }
@@ -90,6 +104,8 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
       return Status::badModel("a target's weight must be positive");
     if (t.kind == OptTarget::Kind::Path && t.path.empty())
       return Status::badModel("a path target has no points");
+    if (t.kind == OptTarget::Kind::Transmission)
+      if (Status s = checkTransmission(base.mechanism(), t); !s.ok()) return s;
   }
   return Status::success();
 }

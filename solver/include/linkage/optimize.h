@@ -37,18 +37,24 @@ struct OptVariable {
 };
 
 struct OptTarget {
-  enum class Kind { Stroke, Position, Path };
+  enum class Kind { Stroke, Position, Path, Transmission };
   Kind kind = Kind::Stroke;
   PointId point;
   double stroke = 0;       // Stroke: mm, along defaultDirection (linkage/limits.h)
   double crankDeg = 0;     // Position: at this crank angle,
   Vec2 at = Vec2::Zero();  // the point here (world mm)
   std::vector<Vec2> path;  // Path: world mm
+  // Transmission: the dyad's angle (transmissionJoints(m)[joint], linkage/transmission.h) kept
+  // within limitDeg to 180 - limitDeg over the turn: residuals max(0, limit - min) and
+  // max(0, max - (180 - limit)), degrees. Dyads whose lines run between points only (not an
+  // arc slot's radius).
+  size_t joint = 0;
+  double limitDeg = 0;
   double weight = 1;
 };
 
 // What a target measures, for people: Stroke {stroke}, Position {x, y}, Path {rms distance,
-// largest distance} (mm).
+// largest distance} (mm), Transmission {min, max} (degrees).
 using Measure = std::vector<double>;
 
 struct OptimizeSpec {
