@@ -3,7 +3,8 @@
 //
 //   linkage [FILE | EXAMPLE-NAME]
 //   linkage --screenshot OUT.png [FILE|EXAMPLE] [--angle DEG] [--ics] [--plots] [--size WxH]
-//           [--dark] [--extremes] [--transmission] [--checks] [--forces] [--cycle] [--cam] [--3d]
+//           [--dark] [--extremes] [--transmission] [--checks] [--forces] [--cycle] [--cam]
+//           [--sensitivity] [--3d]
 //           [--plane NAME]
 //   linkage --version | --help
 #include <QApplication>
@@ -61,6 +62,9 @@ struct Options {
       QStringLiteral("Show the cycle dock (the file's timing) and its clearances on the canvas.")};
   const QCommandLineOption cam{QStringLiteral("cam"),
                                QStringLiteral("Show the cam dock (the file's first cam).")};
+  const QCommandLineOption sensitivity{
+      QStringLiteral("sensitivity"),
+      QStringLiteral("Show the sensitivity dock (the first output point's y).")};
 
   // The frame benchmarks were options of the editor until issue 19: they say where they went.
   const QCommandLineOption benchmarks = [] {
@@ -81,7 +85,8 @@ struct Options {
                                              "(e.g. wanzer-inversion-2)."),
                               QStringLiteral("[FILE | EXAMPLE-NAME]"));
     cli.addOptions({help, version, screenshot, angle, ics, plots, size, dark, extremes,
-                    transmission, checks, forces, cycle, cam, view3d, plane, benchmarks});
+                    transmission, checks, forces, cycle, cam, sensitivity, view3d, plane,
+                    benchmarks});
   }
 };
 
@@ -143,6 +148,7 @@ int runOffscreen(const QCommandLineParser& cli, const Options& opt, const QStrin
   o.forces = cli.isSet(opt.forces);
   o.cycle = cli.isSet(opt.cycle);
   o.cam = cli.isSet(opt.cam);
+  o.sensitivity = cli.isSet(opt.sensitivity);
   o.plots = cli.isSet(opt.plots);
   o.dark = cli.isSet(opt.dark);
   o.extremes = cli.isSet(opt.extremes);

@@ -1,8 +1,9 @@
 // `linkage-cli cam` (issue 28): the checks of every follower the spec names (translating roller
 // with and without offset, knife edge, flat face; oscillating roller and flat face) the same
 // with --steps 8 as with --steps 3600 (the steps set only the profile's points); the pressure
-// angle of the offset roller against a search of the spec's closed form; the profile the
-// joint's own (cam_profile.h) point for point; the written profile read back; bad input; the
+// angle of the offset roller against a search of the spec's closed form; the profile's surface
+// and pressure angle against the contact the forces act through (cam::contact, written apart);
+// the written profile read back; bad input; the
 // sewing machine examples' cams within their limits.
 #ifdef LINKAGE_CLI
 #include <gtest/gtest.h>
@@ -14,7 +15,6 @@
 #include "cli_harness.h"
 #include "linkage/cam_checks.h"
 #include "linkage/cam_joint.h"
-#include "linkage/cam_profile.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
 
@@ -78,7 +78,7 @@ TEST_F(CliCamChecks, TheOffsetRollersPressureAngleIsTheSpecsClosedFormsLargest) 
   EXPECT_NEAR(*parseNumber(deg), at, 1e-4);
 }
 
-TEST_F(CliCamChecks, TheProfileIsTheJointsOwnAndReadsBack) {
+TEST_F(CliCamChecks, TheProfileIsWhereTheContactIsAndReadsBack) {
   for (const std::string& text : models()) {
     const LoadResult l = parseMechanism(text);
     ASSERT_TRUE(l.mechanism) << l.error;
@@ -86,11 +86,29 @@ TEST_F(CliCamChecks, TheProfileIsTheJointsOwnAndReadsBack) {
     ASSERT_TRUE(c);
     const cam::CamGeometry g = cam::geometryOf(*c);
     for (double deg = 0; deg < 360; deg += 17) {
-      const cam::CamPoint mine = cam::camPointAt(g, deg * kDeg);
-      const cam::ProfilePoint theirs = cam::profileAt(c->kind, c->drawn, c->program, deg * kDeg);
-      EXPECT_LT((mine.pitch - theirs.pitch).norm(), 1e-9) << deg;
-      EXPECT_LT((mine.surface - theirs.surface).norm(), 1e-9) << deg;
-      if (!c->kind.flat) EXPECT_NEAR(mine.pressureDeg, theirs.pressureAngle / kDeg, 1e-9) << deg;
+      // The follower where the programme puts it, the contact there (the guide's frame), seen
+      // from the cam turned by theta.
+      const double theta = deg * kDeg;
+      const cam::Displacement s = c->program.at(theta);
+      cam::Place at = c->drawn;
+      Vec2 dbds = at.along;
+      if (c->kind.oscillating) {
+        at.b = at.pivot + Rot::of(c->kind.sign * s.s) * (at.b - at.pivot);
+        at.face = Rot::of(c->kind.sign * s.s) * at.face;
+        dbds = c->kind.sign * perp(at.b - at.pivot);
+      } else {
+        at.b = at.b + s.s * at.along;
+      }
+      const cam::Contact k = cam::contact(c->kind, at, s.v);
+      const Vec2 surface = c->kind.flat ? k.point : Vec2(at.b - c->kind.roller * k.normal);
+      const cam::CamPoint mine = cam::camPointAt(g, theta);
+      const Rot back = Rot::of(-theta);
+      EXPECT_LT((mine.pitch - back * (at.b - at.centre)).norm(), 1e-9) << deg;
+      EXPECT_LT((mine.surface - back * (surface - at.centre)).norm(), 1e-9) << deg;
+      if (!c->kind.flat)
+        EXPECT_NEAR(mine.pressureDeg, std::atan2(cross(dbds, k.normal), dbds.dot(k.normal)) / kDeg,
+                    1e-9)
+            << deg;
     }
   }
   const std::string path = writeFile("c.json", test::TranslatingCam().text());

@@ -29,7 +29,7 @@
 
 #include "elements/cam_row.h"
 #include "elements/frames.h"
-#include "linkage/cam_profile.h"
+#include "linkage/cam_geometry.h"
 #include "linkage/guide.h"
 
 namespace linkage {
@@ -330,9 +330,11 @@ void symbol(const Mechanism& m, const Joint& j, JointSymbol& s) {
   s.face = c && c->kind.flat;
   if (c && c->kind.flat) s.direction = c->kind.oscillating ? c->drawn.face : c->drawn.along;
   if (!c) return;
-  // A degree a point: the canvas's profile (the checks' are exact, not drawn: cam_profile.h).
-  for (const cam::ProfilePoint& p : cam::profile(c->kind, c->drawn, c->program, 360))
+  // A degree a point: the canvas's profile, the checks' own points (linkage/cam_geometry.h).
+  for (const cam::CamPoint& p : cam::camPoints(cam::geometryOf(*c), 360)) {
     s.curve.push_back(p.surface);
+    if (!c->kind.flat && c->kind.roller > 0) s.curve2.push_back(p.pitch);
+  }
 }
 
 void place(const Mechanism&, const Joint& j, const Pose& pose, JointSymbol& s) {

@@ -8,6 +8,7 @@
 
 #include <QFormLayout>
 #include <QLabel>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <set>
 
@@ -15,6 +16,7 @@
 #include "document/document.h"
 #include "drawing.h"
 #include "elements/element_ui.h"
+#include "linkage/edits.h"
 #include "linkage/io/model_lookup.h"
 #include "properties/properties_panel.h"
 #include "tools/selection.h"
@@ -94,6 +96,38 @@ TEST_F(FormsTest, ASectionsShapeMakesTheRowsAnewAndOnlyIt) {
   auto* extra = qobject_cast<QLabel*>(panel.field("Extra"));
   ASSERT_NE(extra, nullptr);
   EXPECT_EQ(extra->text(), "another name");
+}
+
+// A link's form says what its dimensions do to the output at the crank angle: the Wanzer
+// triangle's side EG (its points pinned to one-point blocks only, so that typing it moves
+// nothing else's dimension) moves the needle as a side typed 1e-4 mm longer and solved does,
+// to second order.
+TEST_F(FormsTest, ALinksFormSaysWhatItsSidesDoToTheOutput) {
+  open("wanzer-inversion-2");
+  doc.setCrankDeg(70);
+  panel.setDocument(&doc, &selection);
+  const BodyId triangle = doc.design().bodyNamed("triangle")->id;
+  selection.add(triangle);
+  auto* effect = qobject_cast<QLabel*>(panel.field("Effect"));
+  ASSERT_NE(effect, nullptr);
+  const QString text = effect->text();
+  ASSERT_TRUE(text.startsWith("needlebar.G moves, here, by")) << text;
+  shot(&panel, "link_effect");
+  const QRegularExpression line(QStringLiteral("E-G: x (\\S+), y (\\S+) mm per mm"));
+  const QRegularExpressionMatch got = line.match(text);
+  ASSERT_TRUE(got.hasMatch()) << text;
+  const double dy = got.captured(2).toDouble();
+  Mechanism next = doc.design();
+  std::vector<double> sides = sideLengths(next, triangle);
+  sides[2] += 1e-4;  // |P0P2|: E-G
+  ASSERT_TRUE(setSideLengths(next, triangle, sides));
+  Kinematics k = doc.kinematics();
+  const PointId G = *next.findPoint("needlebar.G");
+  const double before = k.position(G).y();
+  ASSERT_TRUE(k.edit(next).ok());
+  EXPECT_NEAR((k.position(G).y() - before) / 1e-4, dy, 2e-3 * std::max(1.0, std::abs(dy)) + 1e-4)
+      << text;
+  EXPECT_GT(std::abs(dy), 0.01);
 }
 
 // The forces' rows are the forces' (ui/forces/), added to the window's panel, not the panel's.

@@ -86,13 +86,14 @@ TEST(WindowLayout, EveryMenuHoldsItsEntriesInOrder) {
                                                    "showMechanisms",
                                                    "showCyclePanel",
                                                    "showCamPanel",
+                                                   "showSensitivity",
                                                    "show3dView"}));
   EXPECT_EQ(words(menu(bar, "Animation")),
             QStringList({"play", "stepBack", "stepForward", "toStart", "-", "slower", "faster"}));
   EXPECT_EQ(words(menu(bar, "Analysis")),
-            QStringList({"showDesignChecks", "parameterStudy", "-", "showExtremes",
-                         "showTransmission", "-", "showForcesPanel", "showForces", "balance", "-",
-                         "showCyclePanel", "watchClearance", "-", "showCamPanel"}));
+            QStringList({"showDesignChecks", "parameterStudy", "showSensitivity", "-",
+                         "showExtremes", "showTransmission", "-", "showForcesPanel", "showForces",
+                         "balance", "-", "showCyclePanel", "watchClearance", "-", "showCamPanel"}));
   EXPECT_EQ(words(menu(bar, "Help")), QStringList({"about"}));
 }
 

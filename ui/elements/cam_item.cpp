@@ -41,6 +41,7 @@ QPolygonF CamItem::surface() const {
 QRectF CamItem::boundingRect() const {
   double r = s_.radius[0];
   for (const Vec2& p : s_.curve) r = std::max(r, p.norm());
+  for (const Vec2& p : s_.curve2) r = std::max(r, p.norm());
   const Vec2 b = s_.at2 - s_.at;
   const double reach = std::max(r, b.norm() + s_.radius[1] + r / 2) + 4 * px();
   return QRectF(-reach, -reach, 2 * reach, 2 * reach);
@@ -90,6 +91,14 @@ void CamItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
   p->setBrush(Qt::NoBrush);
   p->setPen(cosmetic(ink, 1, Qt::DashLine));
   p->drawEllipse(QPointF(0, 0), s_.radius[0], s_.radius[0]);
+  // The pitch curve (a roller's centre's path on the cam), dotted: the roller runs on it.
+  if (s_.curve2.size() >= 3) {
+    QPolygonF pitch;
+    const Rot R = Rot::of(s_.angle[0]);
+    for (const Vec2& v : s_.curve2) pitch << toQt(R * v);
+    p->setPen(cosmetic(ink, 1, Qt::DotLine));
+    p->drawPolygon(pitch);
+  }
   // The follower's end: its roller, or its flat face.
   const QPointF b = toQt(s_.at2 - s_.at);
   p->setPen(cosmetic(flagged() ? st.warning : st.ink, 1.6));

@@ -1,7 +1,8 @@
 // A cam and its follower (the cam element, solver/elements/cam.cpp): the cam's working surface
-// (its profile, linkage/cam_profile.h) turning with the cam's body about its centre, filled in
-// the body's colour, and the follower's roller (a circle at b) or flat face (a line through b
-// normal to its motion); a knife edge is its point on the surface. Picked by the surface.
+// (its profile, linkage/cam_geometry.h) turning with the cam's body about its centre, filled in
+// the body's colour, its pitch curve dotted (a roller's), and the follower's roller (a circle
+// at b) or flat face (a line through b normal to its motion); a knife edge is its point on the
+// surface. Picked by the surface.
 #pragma once
 
 #include "elements/joint_item.h"

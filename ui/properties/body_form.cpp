@@ -1,10 +1,12 @@
 // A link's form: its name (unique), its points, a bar's length and angle (editing them moves
 // its second point), a triangle plate's three sides. A moving link's mass and loads follow
-// (the forces' sections, ui/forces/).
+// (the forces' sections, ui/forces/). Under its sides, what its dimensions do to the output
+// point at the crank angle (properties/dimension_effect.h).
 #include <cmath>
 
 #include "document/document.h"
 #include "linkage/edits.h"
+#include "properties/dimension_effect.h"
 #include "properties/forms.h"
 
 namespace linkage::ui {
@@ -136,6 +138,9 @@ void fill(Form& form, const FormTarget& t) {
   });
   if (pts.size() == 3 && !b->ground) addTriangle(form, id);
   if (pts.size() == 2 && !b->ground) addBar(form, pts[0], pts[1]);
+  // What its dimensions do to the output, exactly, at this crank angle (issue 29).
+  if (!b->ground && !doc->design().outputs.empty())
+    form.addInfo(Form::tr("Effect"), [doc, id] { return dimensionEffect(*doc, id); });
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "window/mechanisms_feature.h"
 #include "window/plots_feature.h"
 #include "window/properties_feature.h"
+#include "window/sensitivity_feature.h"
 #include "window/tools_feature.h"
 #include "window/view3d_feature.h"
 #include "window/view_feature.h"

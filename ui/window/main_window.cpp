@@ -38,6 +38,7 @@
 #include "window/message_strip.h"
 #include "window/plots_feature.h"
 #include "window/properties_feature.h"
+#include "window/sensitivity_feature.h"
 #include "window/tools_feature.h"
 #include "window/view3d_feature.h"
 #include "window/view_feature.h"
@@ -107,6 +108,7 @@ void MainWindow::createFeatures() {
   add(mechanisms_);            // its dock a tab beside the history
   add(cycle_);                 // its dock a tab beside the plots
   add(cams_);                  // its dock a tab beside the plots
+  add(sensitivity_);           // its dock a tab beside the plots
   add(view3d_);                // its dock a tab beside the properties
   properties_->dock->raise();  // the default front tab on the right (a saved layout may differ)
 }

@@ -33,6 +33,7 @@ class CanvasView;
 class CentresFeature;
 class CycleFeature;
 class CamFeature;
+class SensitivityFeature;
 class DesignFeature;
 class Document;
 class EditFeature;
@@ -80,6 +81,7 @@ class MainWindow : public QMainWindow {
   MechanismsFeature& mechanisms() const { return *mechanisms_; }
   CycleFeature& cycle() const { return *cycle_; }
   CamFeature& cams() const { return *cams_; }
+  SensitivityFeature& sensitivity() const { return *sensitivity_; }
   View3dFeature& view3d() const { return *view3d_; }
 
   // Every open main window.
@@ -161,6 +163,7 @@ class MainWindow : public QMainWindow {
   MechanismsFeature* mechanisms_ = nullptr;
   CycleFeature* cycle_ = nullptr;
   CamFeature* cams_ = nullptr;
+  SensitivityFeature* sensitivity_ = nullptr;
   View3dFeature* view3d_ = nullptr;
   QFileSystemWatcher* watcher_ = nullptr;
   QString watched_;

@@ -23,6 +23,7 @@
 #include "window/forces_feature.h"
 #include "window/main_window.h"
 #include "window/plots_feature.h"
+#include "window/sensitivity_feature.h"
 #include "window/tools_feature.h"
 #include "window/view3d_feature.h"
 #include "window/view_feature.h"
@@ -67,6 +68,10 @@ void showAsked(MainWindow& w, const OffscreenOptions& o) {
   if (o.cycle) {
     w.cycle().dock->show();
     w.cycle().dock->raise();
+  }
+  if (o.sensitivity) {
+    w.sensitivity().dock->show();
+    w.sensitivity().dock->raise();
   }
   if (o.cam) {
     w.cams().dock->show();

@@ -13,7 +13,8 @@ class MainWindow;
 struct OffscreenOptions {
   QString model;  // a file or an example's name; empty: a new document
   double angleDeg = 0;
-  bool ics = false, plots = false, dark = false, forces = false, cycle = false, cam = false;
+  bool ics = false, plots = false, dark = false, forces = false, cycle = false, cam = false,
+       sensitivity = false;
   // The design checks: extreme positions, transmission arcs, the design-checks dock.
   bool extremes = false, transmission = false, checks = false;
   // The picture is the 3D view alone, at `size`, isometric (from the front for a

@@ -1,7 +1,9 @@
 #include "window/probe.h"
 
 #include "cam/cam_panel.h"
+#include "design/sensitivity_panel.h"
 #include "window/cam_feature.h"
+#include "window/sensitivity_feature.h"
 
 #include <QAbstractButton>
 #include <QAbstractSpinBox>
@@ -179,6 +181,7 @@ void windowText(MainWindow* w, QStringList& out) {
   out << w->mechanisms().panel->probeLines();
   out << w->cycle().panel()->probeLines();
   out << w->cams().panel()->probeLines();
+  out << w->sensitivity().panel()->probeLines();
   out << QStringLiteral("clearance marks: %1").arg(w->cycle().marks()->marks().size());
   for (const ClearanceMark& m : w->cycle().marks()->marks())
     out << QStringLiteral("clearance mark: %1 (part of %2 points)").arg(m.text).arg(m.part.size());

@@ -79,6 +79,7 @@ enum class Slot {
   ViewMechanismsDock,
   ViewCycleDock,
   ViewCamDock,
+  ViewSensitivityDock,
   View3dDock,
   // Animation
   AnimationPlay,
@@ -91,6 +92,7 @@ enum class Slot {
   // Analysis
   AnalysisDesignChecks,
   AnalysisStudy,
+  AnalysisSensitivityDock,
   AnalysisSeparator1,
   AnalysisExtremes,
   AnalysisTransmission,

@@ -104,9 +104,10 @@ struct JointSymbol {
   // A cam: radius[0] its base circle's about `at` (its centre), radius[1] the roller's about
   // at2 (b); a flat face through at2 normal to `direction` as drawn (turned with angle[1]);
   // angle[0], angle[1] the cam's and the follower's rotations; `curve` its working surface in
-  // its own frame about `at` (linkage/cam_profile.h), to be turned by angle[0].
+  // its own frame about `at` (linkage/cam_geometry.h), to be turned by angle[0].
   bool face = false;
   std::vector<Vec2> curve;
+  std::vector<Vec2> curve2;  // a cam with a roller: its pitch curve, in the same frame
 };
 
 // A joint's reaction at a pose (linkage/dynamics.h): the force on the body of its point a from

@@ -21,14 +21,15 @@
 
 namespace linkage {
 
-// Sets dimension `name` (as dimensions() names it) of m's drawing to `value` exactly, moving what
-// that dimension moves (linkage/sensitivity.h: a body's points in its own frame, its other
-// dimensions kept; a ground point; a straight slot; a gear's ratio) and nothing pinned to it:
-// the joints are closed again by the solve. BadModel, m unchanged, for a name m does not have, a
-// value that is not finite, or lengths that do not make a triangle.
+// Sets dimension `name` (as dimensions() names it) of m's drawing to `value` exactly, by
+// changeDimensions (linkage/dimension_change.h): it moves what that dimension moves (a body's
+// points in its own frame, its other dimensions kept; a ground point; a straight slot; a gear's
+// ratio) and nothing pinned to it: the joints are closed again by the solve. BadModel, m
+// unchanged, for a name m does not have, a value that is not finite, a length not positive, or
+// lengths that do not make a triangle.
 Status setDimension(Mechanism& m, const std::string& name, double value);
 // Several at once: a body is drawn again from all its dimensions together, so that the order does
-// not matter (one at a time, a triangle's sides could fail to close on the way).
+// not matter; a slot's angle and offset both read back as given.
 Status setDimensions(Mechanism& m, const std::vector<std::pair<std::string, double>>& values);
 
 struct OptVariable {

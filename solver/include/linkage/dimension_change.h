@@ -1,0 +1,47 @@
+// Exact finite changes of a mechanism's dimensions (issue 29, tolerances): the design with its
+// dimensions changed by given amounts, drawn exactly, for a Monte Carlo sample to be solved as
+// it is rather than linearised. The dimensions are linkage/sensitivity.h's (dimensions()): a
+// change of each moves what that dimension's derivative moves, so a change h gives the position
+// its derivative predicts to O(h^2).
+//
+// - A body's P0-P1: P1 along P0->P1 (its direction kept), the later points placed by their
+//   distances from P0 and P1 again (their side of P0P1 kept); P1-Pk and P0-Pk: Pk on the new
+//   circles on its side; Pk.along, Pk.across: Pk's coordinates along and across P0->P1 from
+//   P0; Pk.x, Pk.y: its coordinates. Every changed length reads back exactly.
+// - A ground point's x and y: the point.
+// - A straight slot's angle (degrees): both ends turned about its first end; then its offset:
+//   both ends moved along the (turned) normal. The angle reads back exactly; so does the offset
+//   when the angle is unchanged (a turn about the first end changes the offset measured from
+//   elsewhere, as its derivative says).
+// - A gear's ratio.
+// Nothing pinned to a moved point moves with it: loading (or Kinematics::edit) closes the joints.
+#pragma once
+
+#include <vector>
+
+#include "linkage/model.h"
+#include "linkage/sensitivity.h"
+#include "linkage/status.h"
+
+namespace linkage {
+
+// `delta[k]` is the change of dims[k], in its unit; dims must be dimensions(m) of this m (names
+// and order), delta of the same size. BadModel when a body's point cannot be placed (the new
+// distances do not meet: the triangle cannot close), naming the body and point; m is then left
+// partly changed (work on a copy).
+Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
+                        const std::vector<double>& delta);
+
+// A pin's radial play (pin clearance): which of its two points moves with its play (the one no
+// other joint uses, so the play opens only this pin), and the two dimensions (that point moved by
+// x and y of its body's frame, mm) whose derivatives give the play's first-order effect.
+struct PinPlay {
+  JointId joint;
+  PointId point;
+  Dimension x, y;
+};
+// `pin` names the pin by its two points, "body.P-body.Q" (either order). BadModel naming it when
+// there is no such pin joint, or both its points serve other joints too.
+Status pinPlay(const Mechanism& m, const std::string& pin, PinPlay& out);
+
+}  // namespace linkage

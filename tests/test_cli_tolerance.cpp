@@ -1,0 +1,111 @@
+// linkage-cli tolerance as a user and a script see it: the table is linkage/tolerance.h's to the
+// last bit, a toggle is said, and bad input is named (exit 2).
+#ifdef LINKAGE_CLI
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_harness.h"
+#include "linkage/io/model_file.h"
+#include "linkage/io/numbers.h"
+#include "linkage/tolerance.h"
+#include "mechanisms.h"
+
+namespace linkage {
+namespace {
+
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> v;
+  std::istringstream s(text);
+  for (std::string f; std::getline(s, f, ',');) v.push_back(f);
+  if (!text.empty() && text.back() == ',') v.push_back("");
+  return v;
+}
+
+class ToleranceCli : public test::CliTest {
+ protected:
+  std::string save(const Mechanism& m) {
+    return "'" + writeFile("m.linkage.json", serializeMechanism(m)) + "'";
+  }
+};
+
+TEST_F(ToleranceCli, TheTableIsTheLibrarysToTheLastBit) {
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  const test::CliResult res =
+      run("tolerance " + save(f.m) +
+          " --point coupler.P --tol crank.O2-A=0.02 --tol rocker.B-O4=0.05 --play "
+          "coupler.B-rocker.B=0.01 --samples 300 --seed 5 --steps 8");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  ASSERT_EQ(lines.size(), 9u) << res.out;
+  EXPECT_EQ(lines[0],
+            "crank_deg,x_nominal_mm,y_nominal_mm,x_worst_mm,y_worst_mm,x_rss_mm,y_rss_mm,"
+            "x_mc_lo_mm,x_mc_hi_mm,y_mc_lo_mm,y_mc_hi_mm,x_mc_sd_mm,y_mc_sd_mm,first_order");
+  ToleranceSpec spec;
+  spec.point = f.P;
+  spec.tolerances = {{"crank.O2-A", 0.02, false},
+                     {"rocker.B-O4", 0.05, false},
+                     {"coupler.B-rocker.B", 0.01, true}};
+  spec.samples = 300;
+  spec.seed = 5;
+  spec.steps = 8;
+  const ToleranceResult r = tolerances(f.m, spec);
+  ASSERT_TRUE(r.status.ok());
+  for (int i = 0; i < 8; ++i) {
+    const std::vector<std::string> row = split(lines[1 + i]);
+    ASSERT_EQ(row.size(), 14u) << lines[1 + i];
+    const ToleranceRow& w = r.rows[i];
+    const double want[13] = {w.crankDeg, w.nominal.x(), w.nominal.y(), w.worst.x(), w.worst.y(),
+                             w.rss.x(),  w.rss.y(),     w.lo.x(),      w.hi.x(),    w.lo.y(),
+                             w.hi.y(),   w.sd.x(),      w.sd.y()};
+    for (int c = 0; c < 13; ++c) EXPECT_EQ(parseNumber(row[c]), want[c]) << i << " " << c;
+    EXPECT_EQ(row[13], "ok");
+  }
+  EXPECT_NE(res.err.find("300 used"), std::string::npos) << res.err;
+  EXPECT_NE(res.err.find("stroke over the samples"), std::string::npos) << res.err;
+}
+
+// The crank-rocker 0.5 mm from its Grashof limit (tests/test_tolerance.cpp): the rows at its
+// toggle say first order fails, and so does the summary; wider, the failed samples are counted.
+TEST_F(ToleranceCli, AToggleIsSaid) {
+  const test::FourBar f = test::fourBar(60, 20, 70, 30.5, 60, true, 35, 25);
+  const std::string model = save(f.m);
+  test::CliResult res = run("tolerance " + model +
+                            " --point rocker.B --tol rocker.B-O4=0.45 --tol coupler.A-B=0.04 "
+                            "--samples 1000 --seed 7 --steps 72");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  ASSERT_EQ(lines.size(), 73u);
+  EXPECT_EQ(split(lines[1 + 60]).back(), "fails");  // 300 degrees
+  EXPECT_EQ(split(lines[1 + 24]).back(), "ok");     // 120 degrees
+  EXPECT_NE(res.err.find("first order is not enough at crank angles (deg):"), std::string::npos)
+      << res.err;
+  res = run("tolerance " + model +
+            " --point rocker.B --tol rocker.B-O4=0.8 --tol coupler.A-B=0.04 --samples 200");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  EXPECT_NE(res.err.find("samples failed (not used)"), std::string::npos) << res.err;
+  EXPECT_EQ(res.out.find("nan"), std::string::npos);
+}
+
+TEST_F(ToleranceCli, BadInputIsNamed) {
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  const std::string model = save(f.m);
+  test::CliResult res = run("tolerance " + model + " --point coupler.Q --tol crank.O2-A=1");
+  EXPECT_EQ(res.exit, 2);
+  EXPECT_NE(res.err.find("no point \"Q\" on body \"coupler\""), std::string::npos) << res.err;
+  res = run("tolerance " + model + " --point coupler.P --tol crank.O2-B=1");
+  EXPECT_EQ(res.exit, 2);
+  EXPECT_NE(res.err.find("unknown dimension crank.O2-B"), std::string::npos) << res.err;
+  res = run("tolerance " + model + " --point coupler.P --tol crank.O2-A");
+  EXPECT_EQ(res.exit, 2);
+  EXPECT_NE(res.err.find("DIM=T"), std::string::npos) << res.err;
+  res = run("tolerance " + model + " --point coupler.P --play coupler.A-rocker.B=0.1");
+  EXPECT_EQ(res.exit, 2);
+  EXPECT_NE(res.err.find("no pin joint coupler.A-rocker.B"), std::string::npos) << res.err;
+}
+
+}  // namespace
+}  // namespace linkage
+#endif

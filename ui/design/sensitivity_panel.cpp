@@ -1,0 +1,215 @@
+#include "design/sensitivity_panel.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QTabWidget>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+#include "design/tolerance_view.h"
+#include "document/document.h"
+#include "figures/qcp.h"
+#include "linkage/sensitivity.h"
+
+namespace linkage::ui {
+
+namespace {
+
+constexpr int kShown = 12;        // bars drawn; the rest counted under the chart
+constexpr double kCycleStep = 5;  // degrees between the turn's samples
+
+// The chosen quantity's derivative: a component of it, or the length of the move.
+double component(const Sensitivity& s, const Kinematics& k, PointId p, int dim, int quantity,
+                 int which) {
+  const Vec2 v = quantity == 0   ? s.point(k, p, dim)
+                 : quantity == 1 ? s.velocity(k, p, dim)
+                                 : s.acceleration(k, p, dim);
+  return which == 2 ? v.norm() : v[which];
+}
+
+}  // namespace
+
+SensitivityPanel::SensitivityPanel(Document* doc, QWidget* parent)
+    : DockPanel(Redraw::Throttled, Behind::Rests, parent), doc_(doc) {
+  setObjectName(QStringLiteral("sensitivityPanel"));
+  point_ = new QComboBox;
+  point_->setObjectName(QStringLiteral("sensPoint"));
+  quantity_ = new QComboBox;
+  quantity_->setObjectName(QStringLiteral("sensQuantity"));
+  quantity_->addItems({tr("position"), tr("velocity"), tr("acceleration")});
+  component_ = new QComboBox;
+  component_->setObjectName(QStringLiteral("sensComponent"));
+  component_->addItems({tr("x"), tr("y"), tr("length of the change")});
+  component_->setCurrentIndex(1);
+  for (QComboBox* c : {point_, quantity_, component_})
+    connect(c, &QComboBox::activated, this, [this] { markStale(); });
+  auto* top = new QHBoxLayout;
+  top->addWidget(new QLabel(tr("Output:")));
+  top->addWidget(point_, 2);
+  top->addWidget(quantity_, 1);
+  top->addWidget(component_, 1);
+  plot_ = new QCustomPlot;
+  plot_->setObjectName(QStringLiteral("sensPlot"));
+  plot_->setMinimumHeight(220);
+  summary_ = new QLabel;
+  summary_->setObjectName(QStringLiteral("sensSummary"));
+  summary_->setWordWrap(true);
+  auto* ranking = new QWidget;
+  auto* rankingLayout = new QVBoxLayout(ranking);
+  rankingLayout->setContentsMargins(0, 0, 0, 0);
+  rankingLayout->addWidget(plot_, 1);
+  rankingLayout->addWidget(summary_);
+  tolerances_ = new ToleranceView;
+  tabs_ = new QTabWidget;
+  tabs_->setObjectName(QStringLiteral("sensTabs"));
+  tabs_->addTab(ranking, tr("Ranking"));
+  tabs_->addTab(tolerances_, tr("Tolerances"));
+  connect(tabs_, &QTabWidget::currentChanged, this, [this] { markStale(); });
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(top);
+  layout->addWidget(tabs_, 1);
+  connect(doc_, &Document::designChanged, this, [this] {
+    toleranceStale_ = true;
+    markStale();
+  });
+  connect(doc_, &Document::poseChanged, this, [this] { markStale(); });
+}
+
+void SensitivityPanel::fillPoints() {
+  const Mechanism& m = doc_->design();
+  const QString was = point_->currentText();
+  std::vector<PointId> ids(m.outputs.begin(), m.outputs.end());
+  for (const Point& p : m.points)
+    if (!m.body(p.body)->ground && std::find(ids.begin(), ids.end(), p.id) == ids.end())
+      ids.push_back(p.id);
+  if (ids == points_) return;
+  points_ = ids;
+  const QSignalBlocker block(point_);
+  point_->clear();
+  for (PointId p : points_) point_->addItem(QString::fromStdString(m.pointLabel(p)));
+  const int again = point_->findText(was);
+  point_->setCurrentIndex(again >= 0 ? again : 0);
+}
+
+void SensitivityPanel::showNothing(const QString& why) {
+  bars_.clear();
+  plot_->clearPlottables();
+  plot_->replot();
+  summary_->setText(why);
+}
+
+void SensitivityPanel::compute() {
+  fillPoints();
+  const int at = point_->currentIndex();
+  if (!doc_->solved() || at < 0) {
+    showNothing(doc_->solved() ? tr("No moving point to follow")
+                               : QString::fromStdString(doc_->solveStatus().message));
+    return;
+  }
+  const PointId p = points_[at];
+  const int quantity = quantity_->currentIndex(), which = component_->currentIndex();
+  Kinematics k = doc_->kinematics();
+  Sensitivity s;
+  if (Status st = s.prepare(k, dimensions(k.mechanism())); !st.ok()) {
+    showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
+    return;
+  }
+  const size_t n = s.dims().size();
+  const std::pair<PointId, int> asked{p, std::min(which, 1)};
+  if (tabs_->currentWidget() == tolerances_ && (toleranceStale_ || asked != toleranceFor_)) {
+    toleranceStale_ = false;
+    toleranceFor_ = asked;
+    // The tolerances' band follows a point's x or y (the length of a change has no band).
+    std::vector<std::string> names;
+    for (const Dimension& d : s.dims()) names.push_back(d.name);
+    tolerances_->update(doc_->design(), names, p, asked.second);
+  }
+  bars_.assign(n, Bar{});
+  for (size_t d = 0; d < n; ++d) bars_[d].dimension = s.dims()[d].name;
+  const bool here = s.at(k).ok();
+  for (size_t d = 0; d < n && here; ++d)
+    bars_[d].now = component(s, k, p, static_cast<int>(d), quantity, which);
+  // Over a turn from here (the motion followed continuously), singular poses left out.
+  const double from = k.crankDeg();
+  for (double t = kCycleStep; t <= 360 + 1e-9; t += kCycleStep) {
+    if (!k.moveTo(from + t).ok()) break;
+    if (!s.at(k).ok()) continue;
+    for (size_t d = 0; d < n; ++d)
+      bars_[d].peak = std::max(bars_[d].peak,
+                               std::abs(component(s, k, p, static_cast<int>(d), quantity, which)));
+  }
+  for (Bar& b : bars_) b.peak = std::max(b.peak, std::abs(b.now));
+  std::stable_sort(bars_.begin(), bars_.end(),
+                   [](const Bar& a, const Bar& b) { return a.peak > b.peak; });
+  if (!here)
+    summary_->setText(
+        tr("A dead point of the output here: its derivatives are "
+           "unbounded (the grey bars are the turn's)"));
+  draw();
+}
+
+void SensitivityPanel::draw() {
+  plot_->clearPlottables();
+  const int shown = std::min<int>(kShown, static_cast<int>(bars_.size()));
+  QVector<double> keys, now, peak;
+  QVector<QString> names;
+  for (int i = 0; i < shown; ++i) {
+    keys << shown - i;  // the largest at the top
+    now << bars_[i].now;
+    peak << bars_[i].peak;
+    names << QString::fromStdString(bars_[i].dimension);
+  }
+  auto* grey = new QCPBars(plot_->yAxis, plot_->xAxis);
+  grey->setData(keys, peak, true);
+  grey->setWidth(0.8);
+  grey->setPen(Qt::NoPen);
+  grey->setBrush(QColor(200, 200, 200));
+  grey->setName(tr("largest over a turn"));
+  auto* blue = new QCPBars(plot_->yAxis, plot_->xAxis);
+  blue->setData(keys, now, true);
+  blue->setWidth(0.45);
+  blue->setPen(Qt::NoPen);
+  blue->setBrush(QColor(31, 119, 180));
+  blue->setName(tr("at this crank angle"));
+  auto ticker = QSharedPointer<QCPAxisTickerText>::create();
+  ticker->addTicks(keys, names);
+  plot_->yAxis->setTicker(ticker);
+  plot_->yAxis->setRange(0.4, shown + 0.6);
+  plot_->xAxis->setLabel(
+      tr("change of the output per unit of the dimension (mm, degree, ratio):"
+         " blue at this crank angle, grey the largest over a turn"));
+  double reach = 1e-12;
+  for (int i = 0; i < shown; ++i) reach = std::max({reach, peak[i], std::abs(now[i])});
+  const double left = *std::min_element(now.begin(), now.end()) < 0 ? -1.05 * reach : 0;
+  plot_->xAxis->setRange(left, 1.05 * reach);
+  plot_->replot();
+  if (bars_.empty()) return;
+  QString text = tr("Matters most: %1 (%2 at this angle, up to %3 over a turn)")
+                     .arg(QString::fromStdString(bars_[0].dimension))
+                     .arg(bars_[0].now, 0, 'g', 4)
+                     .arg(bars_[0].peak, 0, 'g', 4);
+  if (static_cast<int>(bars_.size()) > shown)
+    text += tr("; %1 more dimensions below these").arg(bars_.size() - shown);
+  summary_->setText(deadHere_ ? tr("A dead point of the output here: its derivatives are "
+                                   "unbounded (the grey bars are the turn's)")
+                              : text);
+}
+
+QString SensitivityPanel::summary() const {
+  return summary_->text();
+}
+
+QStringList SensitivityPanel::probeLines() const {
+  QStringList out;
+  out << QStringLiteral("sensitivity: ") + summary_->text();
+  for (const Bar& b : bars_)
+    out << QStringLiteral("sensitivity bar %1: %2 %3")
+               .arg(QString::fromStdString(b.dimension))
+               .arg(b.now, 0, 'g', 6)
+               .arg(b.peak, 0, 'g', 6);
+  return out;
+}
+
+}  // namespace linkage::ui

@@ -1,0 +1,71 @@
+// The Sensitivity dock (issue 29, "Sensitivities, exact"): which dimensions matter most for a
+// chosen output, a point's x, y or the length of its move (position, velocity or acceleration),
+// as a ranked bar chart: for each dimension (linkage/sensitivity.h, named as the typed
+// dimensions are) its derivative at the crank angle (signed, in colour) over the largest of its
+// size over a turn (grey, every 5 degrees), the largest first. Exact, from the constraint
+// Jacobian, never by differences. Computed while seen (docks/dock_panel.h); the text under the
+// chart names the one that matters most, and what the solver cannot differentiate yet is said.
+// Its second tab carries tolerances through the motion (design/tolerance_view.h) for the same
+// output.
+#pragma once
+
+#include <QString>
+#include <utility>
+#include <vector>
+
+#include "docks/dock_panel.h"
+#include "linkage/model.h"
+
+class QComboBox;
+class QCustomPlot;
+class QLabel;
+class QTabWidget;
+
+namespace linkage::ui {
+
+class Document;
+class ToleranceView;
+
+class SensitivityPanel : public DockPanel {
+  Q_OBJECT
+
+ public:
+  explicit SensitivityPanel(Document* doc, QWidget* parent = nullptr);
+
+  // What is shown (for tests and the probe): the dimensions ranked, the largest first, with
+  // their derivative at the crank angle and their largest size over a turn.
+  struct Bar {
+    std::string dimension;
+    double now = 0, peak = 0;
+  };
+  const std::vector<Bar>& bars() const { return bars_; }
+  QString summary() const;
+  QComboBox* pointBox() const { return point_; }
+  QComboBox* quantityBox() const { return quantity_; }
+  QComboBox* componentBox() const { return component_; }
+  QStringList probeLines() const;
+  ToleranceView* tolerances() const { return tolerances_; }
+
+ protected:
+  void compute() override;
+
+ private:
+  void fillPoints();
+  void draw();
+  void showNothing(const QString& why);
+
+  Document* doc_;
+  QComboBox *point_, *quantity_, *component_;
+  QCustomPlot* plot_;
+  QLabel* summary_;
+  QTabWidget* tabs_;
+  ToleranceView* tolerances_;
+  std::vector<PointId> points_;
+  std::vector<Bar> bars_;
+  bool deadHere_ = false;
+  // The tolerances' band is of a design and an output: computed again only when they change.
+  bool toleranceStale_ = true;
+  std::pair<PointId, int> toleranceFor_;
+};
+
+}  // namespace linkage::ui

@@ -1,0 +1,27 @@
+#include "window/sensitivity_feature.h"
+
+#include <QAction>
+#include <QDockWidget>
+
+#include "design/sensitivity_panel.h"
+#include "window/main_window.h"
+#include "window/plots_feature.h"
+#include "window/window_layout.h"
+
+namespace linkage::ui {
+
+SensitivityFeature::SensitivityFeature(MainWindow& w, WindowLayout& layout) : WindowFeature(&w) {
+  panel_ = new SensitivityPanel(w.document());
+  dock = addDock(&w, "sensitivity", tr("Sensitivity"), panel_, Qt::BottomDockWidgetArea);
+  dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
+  dock->hide();
+  w.tabifyDockWidget(w.plots().dock, dock);
+  showPanel = raisingToggle(dock, "showSensitivity", QKeySequence(tr("Shift+S")),
+                            tr("Which dimensions move the chosen output most: their exact "
+                               "derivatives at this crank angle and over a turn, ranked"));
+  showPanel->setText(tr("&Sensitivities"));
+  layout.add(Slot::ViewSensitivityDock, dock->toggleViewAction());
+  layout.add(Slot::AnalysisSensitivityDock, showPanel);
+}
+
+}  // namespace linkage::ui
