@@ -23,6 +23,7 @@ Command timingCommand(Parser& parser);
 Command camCommand(Parser& parser);
 Command sensitivityCommand(Parser& parser);
 Command toleranceCommand(Parser& parser);
+Command optimizeCommand(Parser& parser);
 }  // namespace linkage::cli
 
 namespace {
@@ -47,6 +48,8 @@ Commands:
                       how far a point moves per mm of each dimension, exactly, over a turn
   tolerance MODEL --point body.point --tol DIM=T ...
                       a point's band and stroke spread under tolerances: first order, Monte Carlo
+  optimize MODEL --vary DIM=LO:HI --target ...
+                      dimensions found for targets (stroke, position, path, transmission), NLopt
   examples            list the example mechanisms that MODEL can name
 
 MODEL is a .linkage.json file or the name of an example (e.g. wanzer-inversion-2).
@@ -68,7 +71,7 @@ int main(int argc, char** argv) {
   for (auto* add :
        {analyzeCommand, infoCommand, icsCommand, plotCommand, limitsCommand, transmissionCommand,
         studyCommand, dynamicsCommand, balanceCommand, slotsCommand, clearanceCommand,
-        timingCommand, camCommand, sensitivityCommand, toleranceCommand})
+        timingCommand, camCommand, sensitivityCommand, toleranceCommand, optimizeCommand})
     commands.push_back(add(parser));
   commands.push_back({&parser.command("examples", kExamplesHelp), [] {
                         for (const std::string& n : linkage::listExamples(executablePath))

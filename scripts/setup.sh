@@ -20,10 +20,12 @@ BUILD_DIR=${1:-build}
 # The programs: linkage-cli (solver, file format; COIN-OR CLP for the balancing programmes, whose
 # pkg-config file names -lz: zlib1g-dev; CLI11, header-only, for its options and linkage-plot's)
 # and the editor linkage (Qt 6 Widgets, Svg, QCustomPlot's Qt 6 build, giflib for animated
-# GIFs); dxflib for cams' profiles as DXF; a font so that labels are not boxes; ccache, which every build compiles through (a build
-# after a small change compiles only what changed).
+# GIFs); dxflib for cams' profiles as DXF; NLopt (its C++ header over the C library) for
+# `optimize`; a font so that labels are not boxes; ccache, which every build compiles through (a
+# build after a small change compiles only what changed).
 packages=(cmake ninja-build g++ pkg-config libeigen3-dev nlohmann-json3-dev coinor-libclp-dev
   zlib1g-dev libcli11-dev qt6-base-dev qt6-svg-dev libqcustomplot-dev libgif-dev libdxflib-dev
+  libnlopt-cxx-dev
   fonts-dejavu-core ccache)
 # The tests: GoogleTest and GoogleMock (separate packages on Debian 12), Google Benchmark, a real X
 # server and a way to drive it (Xvfb, xdotool, ImageMagick's import), a comma-decimal locale,

@@ -1,0 +1,261 @@
+// Dimensions found for targets (linkage/optimize.h): the objective, its exact gradient, and the
+// NLopt multistart.
+#include "linkage/optimize.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <nlopt.hpp>
+#include <random>
+
+#include "analysis/crank_roots.h"
+#include "linkage/edits.h"
+#include "linkage/limits.h"
+#include "linkage/sensitivity.h"
+#include "linkage/transmission.h"
+
+namespace linkage {
+
+namespace {
+
+constexpr double kDeg = M_PI / 180;
+
+// The design x, solved at crank angle 0 from the base's pose (the base's branches).
+bool solveDesign(const Kinematics& base, const OptimizeSpec& spec, const std::vector<double>& x,
+                 Kinematics& out, std::string& why, Mechanism* design = nullptr) {
+  Mechanism m = base.mechanism();
+  std::vector<std::pair<std::string, double>> values;
+  for (size_t i = 0; i < spec.variables.size(); ++i)
+    values.push_back({spec.variables[i].name, x[i]});
+  if (Status s = setDimensions(m, values); !s.ok()) {
+    why = s.message;
+    return false;
+  }
+  PoseEdit pe = editAtPose(base, std::move(m));
+  if (!pe.solved) {
+    why = "the design does not assemble";
+    return false;
+  }
+  out = std::move(pe.kinematics);
+  out.setAccelerations(true);
+  if (design) *design = std::move(pe.design);
+  return true;
+}
+
+// Where the gradient is read: a crank angle, and what to add there.
+struct Probe {
+  double deg = 0;
+  size_t target = 0;
+  Vec2 weightOfDp = Vec2::Zero();  // d objective = weightOfDp . dP/dp
+  PointId point;
+  size_t index = 0;        // a path's given point
+  double angleWeight = 0;  // Transmission: d objective = angleWeight . d mu (degrees)
+};
+
+// A dyad's angle between C->P1 and C->P2 (degrees, 0 to 180), and its derivative along the
+// dimension v: each line turns by cross(u, du) / |u|^2, the angle by the difference.
+double dyadAngle(const Kinematics& k, const TransmissionJoint& j, const Sensitivity* sens, int v,
+                 double* d) {
+  const Vec2 u = j.linkOuter.at(k) - j.linkAt.at(k), w = j.otherOuter.at(k) - j.otherAt.at(k);
+  const double turn = std::atan2(cross(u, w), u.dot(w));
+  if (sens && d) {
+    auto dp = [&](const Anchor& a) { return sens->point(k, a.point, v); };
+    const Vec2 du = dp(j.linkOuter) - dp(j.linkAt), dw = dp(j.otherOuter) - dp(j.otherAt);
+    const double dturn = cross(w, dw) / w.squaredNorm() - cross(u, du) / u.squaredNorm();
+    *d = (turn < 0 ? -dturn : dturn) / kDeg;
+  }
+  return std::abs(turn) / kDeg;
+}
+
+// Transmission: the dyad's extremes over the turn against the limits.
+Status transmissionResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t i, Evaluation& e,
+                             std::vector<Probe>& probes) {
+  const OptTarget& t = spec.targets[i];
+  TransmissionOptions to;
+  to.steps = spec.steps;
+  const TransmissionSweep sw = sweepTransmission(k, to);
+  if (!sw.status.ok()) return sw.status;
+  if (t.joint >= sw.summaries.size()) return Status::badModel("no such transmission angle");
+  const TransmissionSummary& m = sw.summaries[t.joint];
+  const double low = std::max(0.0, t.limitDeg - m.min),
+               high = std::max(0.0, m.max - (180 - t.limitDeg));
+  e.objective += t.weight * (low * low + high * high);
+  e.measures[i] = {m.min, m.max};
+  probes.push_back({m.minDeg, i, Vec2::Zero(), {}, 0, -2 * t.weight * low});
+  probes.push_back({m.maxDeg, i, Vec2::Zero(), {}, 0, 2 * t.weight * high});
+  return Status::success();
+}
+
+// A path's given points: each one's nearest point of the curve over the turn, the local minima
+// of |P - Q|^2 found as roots of (P - Q) . P' (exact rates, narrowed to 1e-9 degree).
+Status nearestPoints(const Kinematics& k, const OptTarget& t, int steps, std::vector<double>& deg) {
+  std::vector<RootChannel> channels(t.path.size());
+  std::vector<RootChannel*> ptrs;
+  for (size_t i = 0; i < t.path.size(); ++i) {
+    const Vec2 q = t.path[i];
+    channels[i].f = [q, p = t.point](const Kinematics& kk) {
+      const double rate = kDeg / kk.omega();
+      const Kinematics::PointMotion m = kk.motion(p);
+      const Vec2 d = m.position - q, v = m.velocity * rate, a = m.acceleration * rate * rate;
+      return RootSample{d.dot(v), v.squaredNorm() + d.dot(a)};
+    };
+    channels[i].value = [q, p = t.point](const Kinematics& kk) {
+      return (kk.position(p) - q).squaredNorm();
+    };
+    ptrs.push_back(&channels[i]);
+  }
+  Kinematics probe = k;
+  std::vector<double> crank;
+  std::vector<double> best(t.path.size(), std::numeric_limits<double>::infinity());
+  deg.assign(t.path.size(), 0);
+  for (int i = 0; i <= steps; ++i) {
+    crank.push_back(360.0 * i / steps);
+    if (Status s = probe.moveTo(crank.back()); !s.ok()) return s;
+    for (size_t j = 0; j < channels.size(); ++j) {
+      channels[j].samples.push_back(channels[j].f(probe));
+      const double d2 = channels[j].value(probe);
+      if (d2 < best[j]) best[j] = d2, deg[j] = crank.back();
+    }
+  }
+  probe = k;
+  if (Status s = findRoots(probe, crank, ptrs, true); !s.ok()) return s;
+  for (size_t j = 0; j < channels.size(); ++j)
+    for (const Root& r : channels[j].roots)
+      if (r.rising && r.value < best[j]) best[j] = r.value, deg[j] = r.crankDeg;
+  return Status::success();
+}
+
+// The targets' residuals at the design k: the objective, the measures, and the probes that give
+// the gradient.
+Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec2* strokeDirs,
+                 Evaluation& e, std::vector<Probe>& probes) {
+  e.measures.assign(spec.targets.size(), {});
+  for (size_t i = 0; i < spec.targets.size(); ++i) {
+    const OptTarget& t = spec.targets[i];
+    if (t.kind == OptTarget::Kind::Stroke) {
+      LimitOptions lo;
+      lo.steps = spec.steps;
+      const Limits l = findLimits(k, LimitMeasure::along(t.point, strokeDirs[i]), lo);
+      if (!l.status.ok()) return l.status;
+      const double r = l.stroke - t.stroke;
+      e.objective += t.weight * r * r;
+      e.measures[i] = {l.stroke};
+      probes.push_back({l.maxDeg, i, 2 * t.weight * r * strokeDirs[i], t.point});
+      probes.push_back({l.minDeg, i, -2 * t.weight * r * strokeDirs[i], t.point});
+    } else if (t.kind == OptTarget::Kind::Position) {
+      probes.push_back(
+          {std::fmod(std::fmod(t.crankDeg, 360) + 360, 360), i, Vec2::Zero(), t.point});
+    } else if (t.kind == OptTarget::Kind::Transmission) {
+      if (Status s = transmissionResiduals(k, spec, i, e, probes); !s.ok()) return s;
+    } else {
+      std::vector<double> deg;
+      if (Status s = nearestPoints(k, t, spec.steps, deg); !s.ok()) return s;
+      for (size_t j = 0; j < deg.size(); ++j)
+        probes.push_back({deg[j], i, Vec2::Zero(), t.point, j});
+    }
+  }
+  return Status::success();
+}
+
+// Walks the probes in crank order on one copy of k: the pose-dependent residuals (positions,
+// path distances) and every probe's gradient from the exact dP/dp.
+Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, Sensitivity* sens,
+                  std::vector<Probe>& probes, Evaluation& e) {
+  std::stable_sort(probes.begin(), probes.end(),
+                   [](const Probe& a, const Probe& b) { return a.deg < b.deg; });
+  std::vector<double> sumSq(spec.targets.size(), 0), largest(spec.targets.size(), 0);
+  Kinematics walker = k;
+  const std::vector<TransmissionJoint> joints = transmissionJoints(k.mechanism());
+  for (Probe& p : probes) {
+    if (Status s = walker.moveTo(p.deg); !s.ok()) return s;
+    const OptTarget& t = spec.targets[p.target];
+    const Vec2 at = walker.position(p.point);
+    if (t.kind == OptTarget::Kind::Position) {
+      const Vec2 r = at - t.at;
+      e.objective += t.weight * r.squaredNorm();
+      e.measures[p.target] = {at.x(), at.y()};
+      p.weightOfDp = 2 * t.weight * r;
+    } else if (t.kind == OptTarget::Kind::Path) {
+      const Vec2 r = at - t.path[p.index];
+      e.objective += t.weight * r.squaredNorm();
+      sumSq[p.target] += r.squaredNorm();
+      largest[p.target] = std::max(largest[p.target], r.norm());
+      p.weightOfDp = 2 * t.weight * r;
+    }
+    if (!sens || (p.angleWeight == 0 && p.weightOfDp.isZero())) continue;
+    if (Status s = sens->at(walker); !s.ok()) return s;
+    for (size_t v = 0; v < e.gradient.size(); ++v) {
+      const int dim = static_cast<int>(v);
+      if (t.kind == OptTarget::Kind::Transmission) {
+        double d = 0;
+        dyadAngle(walker, joints[t.joint], sens, dim, &d);
+        e.gradient[v] += p.angleWeight * d;
+      } else {
+        e.gradient[v] += p.weightOfDp.dot(sens->point(walker, p.point, dim));
+      }
+    }
+  }
+  for (size_t i = 0; i < spec.targets.size(); ++i)
+    if (spec.targets[i].kind == OptTarget::Kind::Path)
+      e.measures[i] = {std::sqrt(sumSq[i] / std::max<size_t>(1, spec.targets[i].path.size())),
+                       largest[i]};
+  return Status::success();
+}
+
+// The variables among the design's dimensions, in the spec's order.
+Status chosenDimensions(const Mechanism& m, const OptimizeSpec& spec, std::vector<Dimension>& out) {
+  const std::vector<Dimension> all = dimensions(m);
+  for (const OptVariable& v : spec.variables) {
+    auto it =
+        std::find_if(all.begin(), all.end(), [&](const Dimension& d) { return d.name == v.name; });
+    if (it == all.end()) return Status::badModel("no dimension '" + v.name + "' in the design");
+    out.push_back(*it);
+  }
+  return Status::success();
+}
+
+}  // namespace
+
+Evaluation evaluate(const Kinematics& base, const OptimizeSpec& spec, const std::vector<double>& x,
+                    bool withGradient) {
+  Evaluation e;
+  Kinematics k;
+  if (!solveDesign(base, spec, x, k, e.why)) return e;
+  std::vector<Vec2> dirs;
+  for (const OptTarget& t : spec.targets)
+    dirs.push_back(defaultDirection(base.mechanism(), t.point));
+  // Every design turns fully: a target read at one angle does not make a locking design good.
+  LimitOptions lo;
+  lo.steps = std::max(4, spec.steps / 8);
+  if (Limits l = findLimits(k, LimitMeasure::along(spec.targets.front().point, dirs.front()), lo);
+      !l.status.ok()) {
+    e.why = l.status.message;
+    return e;
+  }
+  std::vector<Probe> probes;
+  Sensitivity sens;
+  // A point come onto its body's line P0P1 changes how it is measured (along and across): the
+  // variables no longer describe the design there, with or without a gradient.
+  std::vector<Dimension> dims;
+  Status ds = chosenDimensions(k.mechanism(), spec, dims);
+  if (ds.ok() && withGradient) {
+    e.gradient.assign(spec.variables.size(), 0);
+    ds = sens.prepare(k, std::move(dims));
+  }
+  if (!ds.ok()) {
+    e.why = ds.message;
+    return e;
+  }
+  Status s = residuals(k, spec, dirs.data(), e, probes);
+  if (s.ok()) s = walkProbes(k, spec, withGradient ? &sens : nullptr, probes, e);
+  if (!s.ok()) {
+    e.why = s.message;
+    e.objective = 0;
+    return e;
+  }
+  e.feasible = std::isfinite(e.objective);
+  if (!e.feasible) e.why = "the objective is not finite";
+  return e;
+}
+
+}  // namespace linkage
