@@ -8,6 +8,7 @@
 #include "examples.h"
 #include "linkage/edits.h"
 #include "linkage/elements.h"
+#include "linkage/limits.h"
 #include "linkage/space.h"
 #include "mechanisms.h"
 
@@ -268,6 +269,40 @@ TEST(Edits, ABallRodJoinsPointsOfAnyPlanes) {
   EXPECT_NE(why.find("no length"), std::string::npos) << why;
   EXPECT_FALSE(addBallRod(m, c, c, &why));
   EXPECT_EQ(m.joints.size(), joints + 1);
+}
+
+}  // namespace
+}  // namespace linkage
+
+namespace linkage {
+namespace {
+
+// A body redrawn rigidly where the solve put it (what editAtPose does after an edit the solve
+// had to close: the slider-crank's crank made 2 mm longer, its rod moved up to meet it) is
+// solved again, not left where its old displacement from the drawing puts it: the rod's pin
+// closed and the motion a fresh load's. (The in-place edit kept the rod's old displacement from
+// its drawing, 2 mm too high, and its group unsolved as its shape had not changed: the stroke
+// read 36 mm where it is 34.)
+TEST(Edits, ABodyRedrawnRigidlyIsSolvedWhereItsJointsHoldIt) {
+  // Example 22-A: crank O-A 15 drawn up the y axis, rod A-B 50, the needle bar's block B in the
+  // slot x = 0: the stroke is 2 r.
+  const Mechanism m = test::example("slider-crank-22a-lambda-0.3");
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  Mechanism next = m;
+  next.point(*next.findPoint("crank.A"))->pos = Vec2(0, 17);  // the rod's A stays at (0, 15)
+  const PoseEdit e = editAtPose(k, next);
+  ASSERT_TRUE(e.solved);
+  const PointId rodA = *m.findPoint("rod.A"), B = *m.findPoint("needlebar.B");
+  EXPECT_LT((e.kinematics.position(rodA) - Vec2(0, 17)).norm(), 1e-12);  // the rod's pin
+  EXPECT_LT((e.design.point(rodA)->pos - Vec2(0, 17)).norm(), 1e-12);    // redrawn there
+  Kinematics fresh;
+  ASSERT_TRUE(fresh.load(e.design).ok());
+  for (const Point& p : e.design.points)
+    EXPECT_LT((e.kinematics.position(p.id) - fresh.position(p.id)).norm(), 1e-12) << p.name;
+  const LimitMeasure stroke = LimitMeasure::along(B, Vec2(0, 1));
+  EXPECT_NEAR(findLimits(e.kinematics, stroke).stroke, 34, 1e-9);
+  EXPECT_NEAR(findLimits(fresh, stroke).stroke, 34, 1e-9);
 }
 
 }  // namespace

@@ -124,8 +124,8 @@ std::vector<int> ClosedFormPlan::bodiesOf(int g) const {
 }
 
 int ClosedFormPlan::resolveFrom(size_t first, const System& sys, const Motion& prev, Motion& next,
-                                std::vector<char>& moved, bool jump,
-                                const ClosedFormPlan* before) const {
+                                std::vector<char>& moved, bool jump, const ClosedFormPlan* before,
+                                const std::vector<char>* reframed) const {
   const Rot crank{std::cos(prev.phi), std::sin(prev.phi)};
   std::vector<int> unknown, known;
   int solved = 0;
@@ -134,6 +134,9 @@ int ClosedFormPlan::resolveFrom(size_t first, const System& sys, const Motion& p
     bodiesOf(g, unknown, known);
     bool touched = before ? !sameGeometry(before->groups_[i], g, *before, *this) : i == first;
     for (int b : known) touched = touched || (b >= 0 && moved[b]);
+    // A body whose frame moved (its drawing changed, if only rigidly: a redraw) is where its
+    // old displacement puts it, not where its joints hold it: solved again too.
+    for (int b : unknown) touched = touched || (reframed && b >= 0 && (*reframed)[b]);
     if (!touched) continue;  // its bodies keep the motion already in next
     if (!solveGroup(g, sys, prev, 0.0, crank, next, jump)) return -1;
     for (int b : unknown) moved[b] = 1;
@@ -143,7 +146,8 @@ int ClosedFormPlan::resolveFrom(size_t first, const System& sys, const Motion& p
 }
 
 int ClosedFormPlan::resolveEdited(const System& sys, const ClosedFormPlan& before,
-                                  const Motion& prev, Motion& next) {
+                                  const Motion& prev, Motion& next,
+                                  const std::vector<char>& reframed) {
   if (before.groups_.size() != groups_.size() || before.cores_.size() != cores_.size()) return -1;
   std::vector<int> unknown, known, knownBefore;
   for (size_t i = 0; i < groups_.size(); ++i) {
@@ -160,7 +164,7 @@ int ClosedFormPlan::resolveEdited(const System& sys, const ClosedFormPlan& befor
   next.body = prev.body;
   next.accelerations = prev.accelerations;
   std::vector<char> moved(sys.nBodies, 0);
-  return resolveFrom(0, sys, prev, next, moved, false, &before);
+  return resolveFrom(0, sys, prev, next, moved, false, &before, &reframed);
 }
 
 bool ClosedFormPlan::flip(int g, const System& sys, const Motion& prev, Motion& next) {

@@ -85,8 +85,10 @@ class ClosedFormPlan {
   // new body frames), on the branches of `before`; every other group keeps its bodies'
   // motion from prev exactly. Returns the number of groups solved; -1 where the plans differ
   // in their groups, or a group cannot close or is singular there.
+  // `reframed` marks the bodies (system indices) whose frames moved: their groups are solved
+  // again whatever their geometry.
   int resolveEdited(const System& sys, const ClosedFormPlan& before, const Motion& prev,
-                    Motion& next);
+                    Motion& next, const std::vector<char>& reframed);
 
   int groups() const { return static_cast<int>(groups_.size()); }
   // The group that solves body b (a system body index), -1 for none; the group a joint (an
@@ -170,7 +172,8 @@ class ClosedFormPlan {
   // groups solved, -1 where one cannot be.
   int resolveFrom(size_t first, const System& sys, const Motion& prev, Motion& next,
                   std::vector<char>& moved, bool jump,
-                  const ClosedFormPlan* before = nullptr) const;
+                  const ClosedFormPlan* before = nullptr,
+                  const std::vector<char>* reframed = nullptr) const;
   static bool sameGeometry(const Group& a, const Group& b, const ClosedFormPlan& pa,
                            const ClosedFormPlan& pb);
   // The group's unknown bodies, then the known bodies it reads (-1 for ground).

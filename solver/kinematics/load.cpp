@@ -283,9 +283,11 @@ bool KinematicsState::editInPlace(const Mechanism& m, const std::vector<BodyId>&
   // The current pose in the new body frames: a reshaped body keeps its rigid displacement from
   // the drawing (its frame origin, the centroid of its points, moved with the points).
   Motion warm = reg;
+  std::vector<char> reframed(edited->nBodies, 0);
   for (BodyId id : reshaped) {
     const int k = edited->bodyIndex(id);
     if (k < 0) continue;  // ground: no frame to move
+    reframed[k] = edited->frameOrigin[k] != sys.frameOrigin[k];
     BodyState& b = warm.body[k];
     const Vec2 shift = b.R * (edited->frameOrigin[k] - sys.frameOrigin[k]);
     b.r += shift;
@@ -297,7 +299,7 @@ bool KinematicsState::editInPlace(const Mechanism& m, const std::vector<BodyId>&
       ClosedFormPlan::build(decomposition, *edited, static_cast<int>(m.joints.size()), warm);
   if (!editedPlan) return false;
   Motion solved;
-  const int groups = editedPlan->resolveEdited(*edited, *plan, warm, solved);
+  const int groups = editedPlan->resolveEdited(*edited, *plan, warm, solved, reframed);
   if (groups < 0) return false;
   mech = m;
   sys = std::move(*edited);

@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QDockWidget>
 
+#include "design/optimize_dialog.h"
 #include "design/sensitivity_panel.h"
 #include "window/main_window.h"
 #include "window/plots_feature.h"
@@ -10,7 +11,8 @@
 
 namespace linkage::ui {
 
-SensitivityFeature::SensitivityFeature(MainWindow& w, WindowLayout& layout) : WindowFeature(&w) {
+SensitivityFeature::SensitivityFeature(MainWindow& w, WindowLayout& layout)
+    : WindowFeature(&w), w_(w) {
   panel_ = new SensitivityPanel(w.document());
   dock = addDock(&w, "sensitivity", tr("Sensitivity"), panel_, Qt::BottomDockWidgetArea);
   dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
@@ -22,6 +24,21 @@ SensitivityFeature::SensitivityFeature(MainWindow& w, WindowLayout& layout) : Wi
   showPanel->setText(tr("&Sensitivities"));
   layout.add(Slot::ViewSensitivityDock, dock->toggleViewAction());
   layout.add(Slot::AnalysisSensitivityDock, showPanel);
+  findDimensions = makeAction(
+      &w, "findDimensions", tr("Find &Dimensions..."), QKeySequence(tr("Ctrl+Shift+F")),
+      tr("Find the dimensions that meet targets (a stroke, a point's place at a crank angle): "
+         "a search fed by the exact sensitivities, the result applied as one undo step"));
+  connect(findDimensions, &QAction::triggered, this, [this] {
+    OptimizeDialog* d = optimizeDialog();
+    d->show();
+    d->raise();
+  });
+  layout.add(Slot::AnalysisFindDimensions, findDimensions);
+}
+
+OptimizeDialog* SensitivityFeature::optimizeDialog() {
+  if (!optimize_) optimize_ = new OptimizeDialog(w_.document(), &w_);
+  return optimize_;
 }
 
 }  // namespace linkage::ui

@@ -1,5 +1,6 @@
 // Sensitivities (issue 29): the Sensitivity dock (design/sensitivity_panel.h), a tab beside the
-// plots, hidden until asked for (Analysis > Sensitivities, Shift+S).
+// plots, hidden until asked for (Analysis > Sensitivities, Shift+S); Analysis > Find
+// Dimensions (Ctrl+Shift+F: design/optimize_dialog.h), its dialog made on first use.
 #pragma once
 
 #include "window/window_feature.h"
@@ -7,6 +8,7 @@
 namespace linkage::ui {
 
 class MainWindow;
+class OptimizeDialog;
 class SensitivityPanel;
 class WindowLayout;
 
@@ -18,9 +20,13 @@ class SensitivityFeature : public WindowFeature {
 
   QDockWidget* dock;
   QAction* showPanel;  // the dock's toggle (Shift+S)
+  QAction* findDimensions;
+  OptimizeDialog* optimizeDialog();
 
  private:
+  MainWindow& w_;
   SensitivityPanel* panel_ = nullptr;
+  OptimizeDialog* optimize_ = nullptr;
 };
 
 }  // namespace linkage::ui

@@ -93,6 +93,7 @@ enum class Slot {
   AnalysisDesignChecks,
   AnalysisStudy,
   AnalysisSensitivityDock,
+  AnalysisFindDimensions,
   AnalysisSeparator1,
   AnalysisExtremes,
   AnalysisTransmission,
