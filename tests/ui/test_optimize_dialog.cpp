@@ -4,6 +4,7 @@
 // stroke 2 r: a stroke of 34 mm is a crank of 17 mm.
 #include <gtest/gtest.h>
 
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTest>
@@ -63,6 +64,12 @@ TEST(OptimizeDialog, WhatIsNotASearchIsSaid) {
   dialog.find();
   EXPECT_FALSE(dialog.busy());
   EXPECT_TRUE(dialog.summary().contains("Tick a dimension")) << dialog.summary();
+  // Add Target: the first output's stroke as it is (30 mm), ready to be typed over.
+  dialog.findChild<QPushButton*>("optAddTarget")->click();
+  auto* targets = dialog.findChild<QTableWidget*>("optTargets");
+  ASSERT_EQ(targets->rowCount(), 1);
+  EXPECT_EQ(targets->item(0, 2)->text(), "30");
+  targets->removeRow(0);
   EXPECT_FALSE(dialog.addStrokeTarget("nothing.X", 3));
   ASSERT_TRUE(dialog.vary("crank.O-A", 20, 10));  // low above high
   ASSERT_TRUE(dialog.addStrokeTarget("needlebar.B", 34));

@@ -16,6 +16,7 @@
 
 #include "document/commands.h"
 #include "document/document.h"
+#include "linkage/limits.h"
 #include "linkage/sensitivity.h"
 
 namespace linkage::ui {
@@ -61,7 +62,7 @@ OptimizeDialog::OptimizeDialog(Document* doc, QWidget* parent) : QDialog(parent)
       {tr("Quantity"), tr("Before"), tr("After"), tr("Target")});
   result_table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
   result_table_->verticalHeader()->setVisible(false);
-  summary_ = new QLabel(tr("Tick the dimensions to vary, give a target, and Find"));
+  summary_ = new QLabel(tr("Tick the dimensions to vary, add a target, and Find"));
   summary_->setObjectName(QStringLiteral("optSummary"));
   summary_->setWordWrap(true);
   auto* row = new QHBoxLayout;
@@ -72,6 +73,27 @@ OptimizeDialog::OptimizeDialog(Document* doc, QWidget* parent) : QDialog(parent)
   row->addStretch();
   row->addWidget(find_);
   row->addWidget(apply_);
+  auto* addTarget = new QPushButton(tr("Add &Target"));
+  addTarget->setObjectName(QStringLiteral("optAddTarget"));
+  addTarget->setStatusTip(tr("A target for the first output point: its stroke as it is now"));
+  auto* removeTarget = new QPushButton(tr("&Remove Target"));
+  connect(addTarget, &QPushButton::clicked, this, [this] {
+    const Mechanism& m = doc_->design();
+    const PointId p = !m.outputs.empty() ? m.outputs.front() : PointId{};
+    const double now =
+        p && doc_->solved()
+            ? findLimits(doc_->kinematics(), LimitMeasure::along(p, defaultDirection(m, p))).stroke
+            : 0.0;
+    addTargetRow(0, p ? QString::fromStdString(m.pointLabel(p)) : QString(), number(now), 0);
+  });
+  connect(removeTarget, &QPushButton::clicked, this, [this] {
+    if (targets_->currentRow() >= 0) targets_->removeRow(targets_->currentRow());
+  });
+  auto* targetButtons = new QHBoxLayout;
+  targetButtons->addWidget(addTarget);
+  targetButtons->addWidget(removeTarget);
+  targetButtons->addStretch();
+  summary_->setMinimumHeight(2 * summary_->fontMetrics().lineSpacing() + 4);
   auto* close = new QDialogButtonBox(QDialogButtonBox::Close);
   connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
   auto* layout = new QVBoxLayout(this);
@@ -79,6 +101,7 @@ OptimizeDialog::OptimizeDialog(Document* doc, QWidget* parent) : QDialog(parent)
   layout->addWidget(variables_, 2);
   layout->addWidget(new QLabel(tr("Targets")));
   layout->addWidget(targets, 1);
+  layout->addLayout(targetButtons);
   layout->addLayout(row);
   layout->addWidget(result_table_, 2);
   layout->addWidget(summary_);
@@ -236,7 +259,7 @@ bool OptimizeDialog::readSpec(OptimizeSpec& spec, QString* why) const {
     spec.targets.push_back(t);
   }
   if (spec.variables.empty() || spec.targets.empty())
-    return *why = tr("Tick a dimension to vary and give a target"), false;
+    return *why = tr("Tick a dimension to vary and add a target"), false;
   spec.starts = starts_->value();
   spec.seed = static_cast<std::uint64_t>(seed_->value());
   return true;
