@@ -5,6 +5,7 @@
 
 #include "cli_common.h"
 #include "cli_parser.h"
+#include "linkage/cycle_spread.h"
 #include "linkage/io/numbers.h"
 #include "linkage/tolerance.h"
 
@@ -16,6 +17,8 @@ const char* kHelp =
     R"(usage: linkage-cli tolerance MODEL --point body.point --tol DIM=T [--tol DIM=T ...]
                                  [--play PIN=C ...] [--samples N] [--seed S] [--steps N]
                                  [--threads N] [--stroke-only]
+       linkage-cli tolerance MODEL --clearance N | --window NAME --tol DIM=T [...]
+                                 [--samples N] [--seed S]
 
 The band of a point's x and y over one turn when dimensions of MODEL vary within symmetric
 tolerances +-T and pins have a radial play C, and the spread of its stroke (the range of y over
@@ -46,6 +49,13 @@ positions and standard deviation (empty without samples or with --stroke-only); 
 position: worst and RSS empty). The stroke's spread, the samples that failed and the angles
 where first order fails are written on standard error.
 
+  --clearance N       instead, the spread of the file's watched clearance N's closest approach
+                      ("timing"'s "clearances", from 0); --point not needed
+  --window NAME       instead, the spread of the ends of the file's timing window NAME
+With --clearance or --window (dimensions only, no --play): CSV
+quantity,nominal,worst,rss,mc_lo,mc_hi,mc_mean,mc_sd, a row for the closest approach
+(clearance_min_mm) or each interval's start and end (NAME_K_from_deg, NAME_K_to_deg).
+
 Exit status: 0 done, 2 bad input (an unknown dimension, pin or point, a bad DIM=T), 3 the
 nominal crank cannot turn fully.
 )";
@@ -56,6 +66,8 @@ struct Options {
   int samples = 0, steps = 360, threads = 0;
   long long seed = 1;
   bool strokeOnly = false;
+  int clearance = -1;
+  std::string window;
 };
 
 bool parseTol(const std::string& text, bool play, ToleranceSpec& spec) {
@@ -123,9 +135,60 @@ void summary(const ToleranceResult& r, const ToleranceSpec& spec) {
   }
 }
 
+// A clearance's or a window's spread (linkage/cycle_spread.h).
+int cycleSpread(const Mechanism& m, const Options& o, ToleranceSpec& spec) {
+  SpreadResult r;
+  std::vector<std::string> names;
+  if (o.clearance >= 0) {
+    if (o.clearance >= static_cast<int>(m.timing.clearances.size())) {
+      error("--clearance " + std::to_string(o.clearance) + ": the file watches " +
+            std::to_string(m.timing.clearances.size()) + " clearance(s), counted from 0");
+      return kBadInput;
+    }
+    r = clearanceSpread(m, spec, m.timing.clearances[o.clearance]);
+    names = {"clearance_min_mm"};
+  } else {
+    r = windowSpread(m, spec, o.window);
+    for (size_t i = 0; i < r.values.size(); ++i)
+      names.push_back(o.window + "_" + std::to_string(i / 2) + (i % 2 ? "_to_deg" : "_from_deg"));
+  }
+  if (!r.status.ok()) {
+    error("tolerance: " + r.status.message);
+    return exitFor(r.status);
+  }
+  std::string out = "quantity,nominal,worst,rss,mc_lo,mc_hi,mc_mean,mc_sd\n";
+  for (size_t i = 0; i < r.values.size(); ++i) {
+    const Spread& x = r.values[i];
+    out += names[i];
+    for (double v : {x.nominal, x.worst, x.rss}) field(out, v);
+    for (double v : {x.lo, x.hi, x.mean, x.sd}) field(out, v, r.used > 0);
+    out += '\n';
+  }
+  std::cout << out << std::flush;
+  if (r.samples > 0)
+    note("Monte Carlo: " + std::to_string(r.samples) + " samples, seed " +
+         std::to_string(spec.seed) + ", " + std::to_string(r.used) + " used" +
+         (r.firstFailure.empty() ? "" : "; the first not used: " + r.firstFailure));
+  return kOk;
+}
+
 int tolerance(const Options& o) {
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
+  if (o.clearance >= 0 || !o.window.empty()) {
+    ToleranceSpec spec;
+    for (const std::string& t : o.tols)
+      if (!parseTol(t, false, spec)) return kBadInput;
+    for (const std::string& t : o.plays)
+      if (!parseTol(t, true, spec)) return kBadInput;
+    spec.samples = o.samples;
+    spec.seed = static_cast<std::uint64_t>(o.seed);
+    return cycleSpread(*m, o, spec);
+  }
+  if (o.point.empty()) {
+    error("tolerance: --point body.point is required (or --clearance N, --window NAME)");
+    return kBadInput;
+  }
   std::optional<std::vector<PointId>> ids = outputPoints(*m, {o.point});
   if (!ids) return kBadInput;
   ToleranceSpec spec;
@@ -155,7 +218,7 @@ Command toleranceCommand(Parser& parser) {
   auto o = std::make_shared<Options>();
   CLI::App& c = parser.command("tolerance", kHelp);
   addModel(c, o->model);
-  required(addText(c, "--point", o->point));
+  addText(c, "--point", o->point);
   addTexts(c, "--tol", o->tols);
   addTexts(c, "--play", o->plays);
   addWhole(c, "--samples", o->samples, 0, 100'000'000);
@@ -163,6 +226,8 @@ Command toleranceCommand(Parser& parser) {
   addWhole(c, "--steps", o->steps, 4, 1'000'000);
   addWhole(c, "--threads", o->threads, 0, 256);
   addFlag(c, "--stroke-only", o->strokeOnly);
+  addWhole(c, "--clearance", o->clearance, 0, 1'000'000);
+  addText(c, "--window", o->window);
   return {&c, [o] { return tolerance(*o); }};
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli_harness.h"
+#include "linkage/cycle_spread.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
 #include "linkage/tolerance.h"
@@ -87,6 +88,35 @@ TEST_F(ToleranceCli, AToggleIsSaid) {
   ASSERT_EQ(res.exit, 0) << res.err;
   EXPECT_NE(res.err.find("samples failed (not used)"), std::string::npos) << res.err;
   EXPECT_EQ(res.out.find("nan"), std::string::npos);
+}
+
+// --clearance N: a row, the library's spread to the last bit (tests/test_cycle_spread.cpp
+// holds it to the slider-crank's closed form).
+TEST_F(ToleranceCli, AClosestApproachsSpreadIsTheLibrarys) {
+  test::SliderCrank sc = test::sliderCrank(20, 70, 12, 30);
+  const PointId Q = sc.m.addPoint(sc.ground, "Q", Vec2(12, 110));
+  sc.m.timing.clearances.push_back({sc.B, ClearancePart::of(Q), {}});
+  const std::string path = save(sc.m);
+  const test::CliResult res =
+      run("tolerance " + path + " --clearance 0 --tol crank.O-A=0.1 --samples 20 --seed 3");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  ASSERT_EQ(lines.size(), 2u) << res.out;
+  EXPECT_EQ(lines[0], "quantity,nominal,worst,rss,mc_lo,mc_hi,mc_mean,mc_sd");
+  ToleranceSpec spec;
+  spec.tolerances.push_back({"crank.O-A", 0.1, false});
+  spec.samples = 20;
+  spec.seed = 3;
+  const SpreadResult want = clearanceSpread(sc.m, spec, sc.m.timing.clearances[0]);
+  ASSERT_TRUE(want.status.ok());
+  const std::vector<std::string> row = split(lines[1]);
+  ASSERT_EQ(row.size(), 8u);
+  EXPECT_EQ(row[0], "clearance_min_mm");
+  const Spread& x = want.values[0];
+  const double values[] = {x.nominal, x.worst, x.rss, x.lo, x.hi, x.mean, x.sd};
+  for (size_t i = 0; i < 7; ++i) EXPECT_EQ(parseNumber(row[i + 1]), values[i]) << i;
+  EXPECT_EQ(run("tolerance " + path + " --clearance 1 --tol crank.O-A=0.1").exit, 2);
+  EXPECT_EQ(run("tolerance " + path + " --window none --tol crank.O-A=0.1").exit, 2);
 }
 
 TEST_F(ToleranceCli, BadInputIsNamed) {
