@@ -32,8 +32,10 @@ py::array_t<double> analyze(const Model& m, long long steps, double revs, double
                             const std::vector<std::string>& points) {
   linkage::py::Table t;
   {
+    // A copy, taken while the GIL is held: another thread may edit `m` meanwhile.
+    const Model snapshot = m;
     py::gil_scoped_release free;
-    t = m.analyze(steps, revs, rpm, points);
+    t = snapshot.analyze(steps, revs, rpm, points);
   }
   const auto cols = static_cast<py::ssize_t>(t.columns.size());
   py::array_t<double> a({static_cast<py::ssize_t>(t.rows()), cols});
@@ -50,8 +52,11 @@ py::array_t<double> sweep(const Model& m, const std::string& point,
   const double* a = in.data();
   double* o = out.mutable_data();
   {
-    py::gil_scoped_release free;  // a long loop of pure C++: other Python threads run meanwhile
-    m.sweep(point, a, n, rpm, o);
+    // A long loop of pure C++: other Python threads run meanwhile. On a copy taken while the
+    // GIL is held, as another thread may edit `m`; `in` and `out` are kept alive by the caller.
+    const Model snapshot = m;
+    py::gil_scoped_release free;
+    snapshot.sweep(point, a, n, rpm, o);
   }
   return out;
 }

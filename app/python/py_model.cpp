@@ -139,6 +139,9 @@ Table Model::analyze(long long steps, double revs, double rpm,
   const long long rows = motionTableRows(spec);
   if (rows < 0)
     throw BadInput("analyze: steps times revs must be a positive whole number of steps");
+  if (rows > 50'000'000)  // linkage-cli analyze's limit
+    throw BadInput("analyze: " + std::to_string(rows) +
+                   " rows is more than the 50000000 a table holds; use fewer steps or revolutions");
   spec.points = outputPoints(names);
   Kinematics k = base_;
   raise(k.checkDetermined(spec.points));

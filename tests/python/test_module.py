@@ -91,6 +91,26 @@ def test_sweep_lets_other_threads_run():
     assert ticks[0] > 10
 
 
+def test_an_edit_while_a_sweep_runs_does_not_touch_it():
+    m = linkage.load("four-bar-crank-rocker")
+    angles = np.linspace(0, 360 * 50, 500_000)
+    wants = []  # the sweep sees the model as it was at its call: one of these
+    for crank in (16, 15, 20):
+        m.set_dimension("crank.O2-A", crank)
+        wants.append(m.sweep("coupler.P", angles))
+    got = []
+    t = threading.Thread(target=lambda: got.append(m.sweep("coupler.P", angles)))
+    t.start()
+    n = 0
+    while t.is_alive():
+        m.set_dimension("crank.O2-A", 15 + (n % 2))  # edits the model the sweep was called on
+        n += 1
+    t.join()
+    assert n > 0
+    # (Loosely: a design redrawn after other edits may differ in its last bits.)
+    assert any(np.allclose(got[0], w, rtol=0, atol=1e-9 * np.abs(w).max()) for w in wants)
+
+
 def test_instant_centres_are_the_command_lines():
     for model, angle in [("four-bar-crank-rocker", "30"), ("wanzer-inversion-2", "-47.5")]:
         want = json.loads(cli("ics", model, "--angle", angle, "--json").stdout)["centres"]
@@ -203,6 +223,8 @@ def test_bad_files_and_names_are_value_errors(tmp_path):
         m.sweep("coupler.P", np.zeros((2, 2)))
     with pytest.raises(ValueError, match="whole number"):
         m.analyze(steps=3, revs=0.5)
+    with pytest.raises(ValueError, match="more than the 50000000"):
+        m.analyze(steps=360, revs=1e6)
     with pytest.raises(ValueError):
         m.save(str(tmp_path / "no-such-dir" / "x.linkage.json"))
 
