@@ -21,6 +21,11 @@ std::string modulePath() {
   return info.dli_fname;
 }
 
+// A path as str or any os.PathLike (pathlib.Path), as Python's own open() takes it.
+std::string fspath(const py::object& path) {
+  return py::str(py::module_::import("os").attr("fspath")(path));
+}
+
 py::tuple pair(const linkage::Vec2& v) {
   return py::make_tuple(v.x(), v.y());
 }
@@ -143,7 +148,7 @@ PYBIND11_MODULE(linkage, mod) {
   mod.attr("__version__") = LINKAGE_VERSION;
   py::register_exception<linkage::py::MotionFailure>(mod, "MotionError", PyExc_RuntimeError);
   mod.def(
-      "load", [](const std::string& name) { return Model::open(name, modulePath()); },
+      "load", [](const py::object& name) { return Model::open(fspath(name), modulePath()); },
       py::arg("model"), "A .linkage.json file or an example's name, as linkage-cli opens it");
   mod.def(
       "examples", [] { return linkage::py::examples(modulePath()); }, "The examples' names");
@@ -164,5 +169,7 @@ PYBIND11_MODULE(linkage, mod) {
       .def("set_side_lengths", &Model::setSideLengths, py::arg("body"), py::arg("lengths"))
       .def("set_point", &Model::setPoint, py::arg("point"), py::arg("x"), py::arg("y"))
       .def("set_dimension", &Model::setDimension, py::arg("name"), py::arg("value"))
-      .def("save", &Model::save, py::arg("path"));
+      .def(
+          "save", [](const Model& m, const py::object& path) { m.save(fspath(path)); },
+          py::arg("path"));
 }

@@ -1,5 +1,6 @@
 // The Python model's edits: the editor's typed dimensions (linkage/edits.h), solved as the editor
 // solves them (editAtPose at the design's crank angle 0), and its writer.
+#include <algorithm>
 #include <cmath>
 
 #include "linkage/edits.h"

@@ -162,9 +162,9 @@ def test_edit_save_and_the_command_line_on_the_saved_file(tmp_path):
     assert m.side_lengths("crank")[0] == pytest.approx(15, abs=1e-12)
     assert m.dimensions["ground.O4.x"] == 62
     path = tmp_path / "edited.linkage.json"
-    m.save(str(path))
+    m.save(path)  # a pathlib.Path, or a str
     assert not [p for p in os.listdir(tmp_path) if p != "edited.linkage.json"]  # no temporaries
-    again = linkage.load(str(path))
+    again = linkage.load(path)
     assert again.dimensions == m.dimensions
     _, table = cli_table("analyze", str(path), "--steps", "90", "--point", "coupler.P")
     assert same_bits(m.analyze(steps=90, points=["coupler.P"]), table)
