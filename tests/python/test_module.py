@@ -243,3 +243,19 @@ def test_the_docs_example_runs(tmp_path, monkeypatch, capsys):
     out = capsys.readouterr().out
     assert "needle stroke" in out and "refused:" in out
     assert (tmp_path / "wanzer-longer.linkage.json").exists()
+
+
+@pytest.mark.parametrize("model", linkage.examples())
+def test_every_examples_table_and_no_crash(model):
+    """Every example: the command line's table; every query answers or raises with a message."""
+    m = linkage.load(model)
+    header, table = cli_table("analyze", model, "--steps", "36")
+    assert m.columns() == header
+    assert same_bits(m.analyze(steps=36), table)
+    for query in (lambda: m.instant_centres(33), lambda: m.forces(33),
+                  lambda: m.sensitivity(m.points[-1], 33),
+                  lambda: m.sweep(m.points[-1], np.array([])), lambda: m.forces(1e300)):
+        try:
+            query()
+        except (ValueError, linkage.MotionError) as e:
+            assert str(e)
