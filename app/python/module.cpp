@@ -53,7 +53,8 @@ py::array_t<double> sweep(const Model& m, const std::string& point,
                           double rpm) {
   if (in.ndim() != 1) throw py::value_error("sweep: angles must be a one-dimensional array");
   const auto n = static_cast<size_t>(in.shape(0));
-  py::array_t<double> out({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(6)});
+  py::array_t<double> out(
+      {static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(m.sweepColumns())});
   const double* a = in.data();
   double* o = out.mutable_data();
   {

@@ -172,6 +172,10 @@ Table Model::analyze(long long steps, double revs, double rpm,
   return t;
 }
 
+int Model::sweepColumns() const {
+  return isSpatial(design_) ? 9 : 6;
+}
+
 void Model::sweep(const std::string& point, const double* angles, size_t n, double rpm,
                   double* out) const {
   const PointId p = pointNamed(point);
@@ -179,10 +183,20 @@ void Model::sweep(const std::string& point, const double* angles, size_t n, doub
   Kinematics k = base_;
   raise(k.checkDetermined({p}));
   if (rpm > 0) k.setRpm(rpm);
+  const bool spatial = isSpatial(design_);
   for (size_t i = 0; i < n; ++i) {
     if (!std::isfinite(angles[i]))
       throw BadInput("sweep: angle " + std::to_string(i) + " is not finite");
     raise(k.moveTo(angles[i]));
+    if (spatial) {
+      const Kinematics::PointMotion3 m = k.motionInSpace(p);
+      for (int c = 0; c < 3; ++c) {
+        out[9 * i + c] = m.position[c];
+        out[9 * i + 3 + c] = m.velocity[c];
+        out[9 * i + 6 + c] = m.acceleration[c];
+      }
+      continue;
+    }
     const Kinematics::PointMotion m = k.motion(p);
     double* row = out + 6 * i;
     row[0] = m.position.x();

@@ -62,7 +62,10 @@ class Model {
   // The motion table's column names for these points (none: the file's outputs).
   std::vector<std::string> columns(const std::vector<std::string>& points) const;
   // P, V, A of one point at many crank angles (deg), in the order given, tracked from one to
-  // the next: n rows of x, y, vx, vy, ax, ay. What a fast loop in Python calls once.
+  // the next: n rows of sweepColumns() values, analyze's columns of that point (x, y, vx, vy,
+  // ax, ay; in space x, y, z, vx, vy, vz, ax, ay, az in the world). What a fast loop in Python
+  // calls once.
+  int sweepColumns() const;
   void sweep(const std::string& point, const double* angles, size_t n, double rpm,
              double* out) const;
   InstantCentres instantCentres(double crankDeg) const;

@@ -71,6 +71,15 @@ def test_sweep_is_analyze_at_the_same_angles():
     assert same_bits(s, a[:, 2:])
 
 
+def test_sweep_in_space_is_analyze_in_the_world():
+    m = linkage.load("overedge-machine")
+    point = m.columns()[2].rsplit(".", 1)[0]
+    a = m.analyze(steps=72, points=[point])
+    s = m.sweep(point, a[:, 1])
+    assert s.shape == (73, 9)
+    assert same_bits(s, a[:, 2:])
+
+
 def test_sweep_lets_other_threads_run():
     m = linkage.load("four-bar-crank-rocker")
     angles = np.linspace(0, 360 * 300, 3_000_000)
