@@ -30,9 +30,21 @@ solves with the constraint Jacobian. The editor (linkage) draws and edits
 mechanisms live, animates them, shows every instant centre with its Kennedy
 lines, plots motion curves and checks designs (transmission angles, limit
 positions, Grashof, parameter studies); linkage-cli writes motion tables,
-instant centres, design checks and figures for scripts. Example mechanisms
+instant centres, design checks and figures for scripts, and the Python module
+linkage gives the same answers as numpy arrays. Example mechanisms
 include the Wanzer needle bar, slider-cranks, four-bars and a lockstitch arm
 shaft.")
+# The Python module (app/python, when built) is for the Python it was built with, whose minor
+# version fixes its ABI, and makes numpy arrays: the interpreter and numpy, not shared libraries
+# the module links, so dpkg-shlibdeps cannot name them.
+if(TARGET linkage_python)
+  string(REPLACE "." ";" v "${LINKAGE_PYTHON_VERSION}")
+  list(GET v 0 major)
+  list(GET v 1 minor)
+  math(EXPR next "${minor} + 1")
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS
+      "python3 (>= ${major}.${minor}), python3 (<< ${major}.${next}), python3-numpy")
+endif()
 # Debian policy: every package has /usr/share/doc/<package>/copyright, and a native package (no
 # Debian revision) its changelog.gz, compressed with gzip -9n (no name, no time: reproducible).
 install(FILES ${PROJECT_SOURCE_DIR}/cmake/copyright DESTINATION share/doc/linkage)

@@ -29,7 +29,8 @@ for f in /usr/bin/linkage /usr/bin/linkage-cli /usr/bin/linkage-plot \
   /usr/share/mime/packages/linkage.xml \
   /usr/share/metainfo/io.github.linkage.Linkage.metainfo.xml \
   /usr/share/doc/linkage/copyright /usr/share/doc/linkage/changelog.gz \
-  /usr/share/linkage/examples/wanzer-inversion-2.linkage.json; do
+  /usr/share/linkage/examples/wanzer-inversion-2.linkage.json \
+  /usr/lib/python3/dist-packages/linkage.cpython-*.so; do
   [ -s "$f" ] || fail "$f is not installed"
 done
 step "installed: programs, desktop entry, icon, MIME type, metainfo, copyright, changelog, examples"
@@ -52,6 +53,19 @@ linkage-cli analyze wanzer-inversion-2 --steps 4 | tee table.csv
 header='t_s,crank_deg,needlebar.G.x_mm,needlebar.G.y_mm,needlebar.G.vx_mm_s,needlebar.G.vy_mm_s,needlebar.G.ax_mm_s2,needlebar.G.ay_mm_s2'
 [ "$(head -1 table.csv)" = "$header" ] || fail "analyze: not the motion table's header"
 [ "$(wc -l <table.csv)" -eq 6 ] || fail "analyze: $(wc -l <table.csv) lines, not 6"
+
+# The Python module, in Debian's own path, for /usr/bin/python3: the same table to the last bit
+# (the command line writes 17 significant digits, which read back to the same double; -0 as 0).
+/usr/bin/python3 - <<'PY' || fail "the Python module does not give linkage-cli's table"
+import csv, linkage
+m = linkage.load("wanzer-inversion-2")
+assert m.path == "/usr/share/linkage/examples/wanzer-inversion-2.linkage.json", m.path
+rows = list(csv.reader(open("table.csv")))
+a = m.analyze(steps=4, points=["needlebar.G"])
+assert m.columns(["needlebar.G"]) == rows[0]
+assert ((a + 0.0).tobytes() == __import__("numpy").array(rows[1:], dtype=float).tobytes())
+PY
+step "python3: import linkage from $(/usr/bin/python3 -c 'import linkage; print(linkage.__file__)'), the same table"
 
 linkage-cli plot wanzer-inversion-2 --point needlebar.G --out fig.svg 2>plot.log ||
   { cat plot.log; fail "linkage-cli plot failed"; }

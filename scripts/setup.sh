@@ -22,17 +22,19 @@ BUILD_DIR=${1:-build}
 # and the editor linkage (Qt 6 Widgets, Svg, QCustomPlot's Qt 6 build, giflib for animated
 # GIFs); dxflib for cams' profiles as DXF; NLopt (its C++ header over the C library) for
 # `optimize`; a font so that labels are not boxes; ccache, which every build compiles through (a
-# build after a small change compiles only what changed).
+# build after a small change compiles only what changed); the Python module `linkage` (pybind11
+# and Python's headers to build it, numpy for its arrays: app/python).
 packages=(cmake ninja-build g++ pkg-config libeigen3-dev nlohmann-json3-dev coinor-libclp-dev
   zlib1g-dev libcli11-dev qt6-base-dev qt6-svg-dev libqcustomplot-dev libgif-dev libdxflib-dev
   libnlopt-cxx-dev
-  fonts-dejavu-core ccache)
+  fonts-dejavu-core ccache pybind11-dev python3-dev python3-numpy)
 # The tests: GoogleTest and GoogleMock (separate packages on Debian 12), Google Benchmark, a real X
 # server and a way to drive it (Xvfb, xdotool, ImageMagick's import), a comma-decimal locale,
 # pdftotext (poppler-utils) to read the labels of exported PDF figures, the freedesktop validators
-# of the desktop entry and the AppStream metadata (desktop-file-utils, appstream).
+# of the desktop entry and the AppStream metadata (desktop-file-utils, appstream); pytest for the
+# Python module's tests (tests/python), numba for its benchmark's four-bar loop (bench/).
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev locales xvfb xauth xdotool imagemagick
-  poppler-utils desktop-file-utils appstream)
+  poppler-utils desktop-file-utils appstream python3-pytest python3-numba)
 if [ $tests -eq 1 ]; then packages+=("${test_packages[@]}"); fi
 
 missing=()
@@ -60,5 +62,5 @@ if [ $tests -eq 1 ]; then
 else
   cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLINKAGE_BUILD_TESTS=OFF \
     -DLINKAGE_BUILD_BENCH=OFF >/dev/null
-  cmake --build "$BUILD_DIR" --target linkage linkage-cli linkage-plot
+  cmake --build "$BUILD_DIR" --target linkage linkage-cli linkage-plot linkage_python
 fi
