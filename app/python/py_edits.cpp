@@ -5,6 +5,7 @@
 
 #include "linkage/edits.h"
 #include "linkage/io/model_file.h"
+#include "linkage/optimize.h"
 #include "linkage/sensitivity.h"
 #include "py_model.h"
 
@@ -85,10 +86,16 @@ void Model::setDimension(const std::string& name, double value) {
     return;
   }
   const int side = b ? sideIndex(design_, *b, name.substr(dot + 1)) : -1;
-  if (side < 0)
-    throw BadInput(name +
-                   ": only a bar's or a triangle's sides and a ground point's x and y are typed "
-                   "as the editor types them; use set_point for the others");
+  if (side < 0) {
+    // Any other dimension (a later point's distances, along and across, a slot's offset and
+    // angle, a gear's ratio) set exactly as the optimiser sets it (linkage/optimize.h): nothing
+    // pinned to it moves, and the solve closes the joints.
+    Mechanism next = design_;
+    if (Status s = linkage::setDimension(next, name, value); !s.ok())
+      throw BadInput(name + ": " + s.message);
+    commit(std::move(next));
+    return;
+  }
   std::vector<double> lengths = linkage::sideLengths(design_, b->id);
   lengths[static_cast<size_t>(side)] = value;
   setSideLengths(b->name, lengths);

@@ -182,6 +182,17 @@ def test_edit_save_and_the_command_line_on_the_saved_file(tmp_path):
     assert not np.allclose(before[:, 2:4], table[:, 2:4])
 
 
+def test_any_named_dimension_is_set_exactly():
+    # The slider-crank of 22-A: its slot's angle and a gear-free offset, as optimize sets them.
+    m = linkage.load("slider-crank-22a-lambda-0.3")
+    m.set_dimension("ground.guide.angle", 85)
+    assert m.dimensions["ground.guide.angle"] == pytest.approx(85, abs=1e-9)
+    m.set_dimension("crank.O-A", 17)
+    assert m.dimensions["crank.O-A"] == pytest.approx(17, abs=1e-12)
+    with pytest.raises(ValueError, match="positive"):
+        m.set_dimension("rod.A-B", -3)
+
+
 def test_a_triangles_side_and_refused_edits():
     m = linkage.load("wanzer-inversion-2")
     m.set_dimension("triangle.F-G", 57)
