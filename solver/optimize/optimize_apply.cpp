@@ -35,7 +35,8 @@ Status checked(const Dimension& d, double value) {
 Status setDimensions(Mechanism& m, const std::vector<std::pair<std::string, double>>& values) {
   const std::vector<Dimension> dims = dimensions(m);
   std::vector<double> delta(dims.size(), 0.0);
-  for (const auto& [name, value] : values) {
+  for (const auto& [named, value] : values) {
+    const std::string& name = named;  // (a structured binding: clang cannot capture it)
     auto it =
         std::find_if(dims.begin(), dims.end(), [&](const Dimension& d) { return d.name == name; });
     if (it == dims.end()) return Status::badModel("no dimension '" + name + "' in the mechanism");
