@@ -14,6 +14,7 @@
 #include "linkage/io/model_lookup.h"
 #include "linkage/limits.h"
 #include "linkage/stroke_sensitivity.h"
+#include "linkage/window_sensitivity.h"
 #include "ui_test.h"
 
 namespace linkage::ui {
@@ -116,15 +117,16 @@ TEST(SensitivityPanel, AClearancesClosestApproach) {
   panel.resize(900, 400);
   panel.show();
   settle(panel);
-  const int n = panel.pointBox()->count();
-  ASSERT_TRUE(panel.pointBox()->itemText(n - 2).startsWith("closest approach: hook.K to"));
-  panel.pointBox()->setCurrentIndex(n - 2);
-  Q_EMIT panel.pointBox()->activated(n - 2);
+  const int n = panel.pointBox()->findText("closest approach: hook.K to needlebar.N");
+  ASSERT_GE(n, 1);  // the file's own (to the needle's segment), then this one
+  ASSERT_TRUE(panel.pointBox()->itemText(n - 1).startsWith("closest approach: hook.K to"));
+  panel.pointBox()->setCurrentIndex(n - 1);
+  Q_EMIT panel.pointBox()->activated(n - 1);
   settle(panel);
   EXPECT_TRUE(panel.bars().empty());
   EXPECT_TRUE(panel.summary().contains("touch")) << panel.summary();
-  panel.pointBox()->setCurrentIndex(n - 1);
-  Q_EMIT panel.pointBox()->activated(n - 1);
+  panel.pointBox()->setCurrentIndex(n);
+  Q_EMIT panel.pointBox()->activated(n);
   settle(panel);
   const ClearanceSensitivity want =
       clearanceSensitivity(doc.kinematics(), m.timing.clearances[1], dimensions(m));
@@ -134,6 +136,32 @@ TEST(SensitivityPanel, AClearancesClosestApproach) {
     for (size_t d = 0; d < want.dims.size(); ++d)
       if (want.dims[d].name == b.dimension) EXPECT_EQ(b.now, want.derivative[d]) << b.dimension;
   EXPECT_TRUE(panel.summary().startsWith("The closest approach")) << panel.summary();
+}
+
+// A window's start and end: after the clearances; the library's derivatives
+// (tests/test_window_sensitivity.cpp holds them to the slider-crank's closed form).
+TEST(SensitivityPanel, AWindowsEnds) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("lockstitch-machine")), nullptr));
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  const int at = panel.pointBox()->findText("window needle: its end");
+  ASSERT_GE(at, 0);
+  panel.pointBox()->setCurrentIndex(at);
+  Q_EMIT panel.pointBox()->activated(at);
+  settle(panel);
+  const Mechanism& m = doc.design();
+  const WindowSensitivity want = windowSensitivity(doc.kinematics(), "needle", dimensions(m));
+  ASSERT_TRUE(want.status.ok()) << want.status.message;
+  ASSERT_EQ(panel.bars().size(), want.dims.size());
+  for (const SensitivityPanel::Bar& b : panel.bars())
+    for (size_t d = 0; d < want.dims.size(); ++d)
+      if (want.dims[d].name == b.dimension)
+        EXPECT_EQ(b.now, want.intervals[0].dTo[d]) << b.dimension;
+  EXPECT_TRUE(panel.summary().startsWith("Window needle closes at crank 228.41"))
+      << panel.summary();
 }
 
 TEST(SensitivityPanel, WhatCannotBeDifferentiatedYetIsSaid) {

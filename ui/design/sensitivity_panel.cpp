@@ -15,6 +15,7 @@
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
 #include "linkage/stroke_sensitivity.h"
+#include "linkage/window_sensitivity.h"
 
 namespace linkage::ui {
 
@@ -98,9 +99,17 @@ void SensitivityPanel::fillPoints() {
                    .arg(QString::fromStdString(m.pointLabel(w.point)),
                         QString::fromStdString(other));
   }
+  // A window on a point's position: its first interval's start, then its end.
+  QStringList ends;
+  for (const TimingWindow& w : m.timing.windows)
+    if (w.output.point && !w.output.other)
+      for (const QString& which : {tr("start"), tr("end")})
+        ends << tr("window %1: its %2").arg(QString::fromStdString(w.name), which);
+  watched += ends;
   if (ids == points_ && watched == clearances_) return;
   points_ = ids;
   clearances_ = watched;
+  windowsFrom_ = static_cast<int>(watched.size() - ends.size());
   const QSignalBlocker block(point_);
   point_->clear();
   for (PointId p : points_) point_->addItem(QString::fromStdString(m.pointLabel(p)));
@@ -128,7 +137,11 @@ void SensitivityPanel::compute() {
   if (at >= static_cast<int>(points_.size())) {
     quantity_->setEnabled(false);
     component_->setEnabled(false);
-    clearanceBars(at - static_cast<int>(points_.size()));
+    const int n = at - static_cast<int>(points_.size());
+    if (n < windowsFrom_)
+      clearanceBars(n);
+    else
+      windowBars(n - windowsFrom_);
     return;
   }
   quantity_->setEnabled(true);
@@ -228,6 +241,42 @@ void SensitivityPanel::clearanceBars(int n) {
                        "unit)")
                         .arg(s.clearance.closest.distance, 0, 'f', 4)
                         .arg(s.clearance.closest.crankDeg, 0, 'f', 1)
+                        .arg(QString::fromStdString(bars_[0].dimension))
+                        .arg(bars_[0].now, 0, 'g', 4));
+}
+
+void SensitivityPanel::windowBars(int n) {
+  // The n-th end listed: window n / 2 of those on a point's position, its start or its end.
+  const Mechanism& m = doc_->design();
+  std::vector<const TimingWindow*> windows;
+  for (const TimingWindow& w : m.timing.windows)
+    if (w.output.point && !w.output.other) windows.push_back(&w);
+  const TimingWindow& w = *windows.at(n / 2);
+  const bool end = n % 2;
+  const WindowSensitivity s = windowSensitivity(doc_->kinematics(), w.name, dimensions(m));
+  if (!s.status.ok() || s.intervals.empty()) {
+    showNothing(s.status.ok() ? tr("The window is never open")
+                              : QString::fromStdString(s.status.message));
+    return;
+  }
+  const WindowEndSensitivity& i = s.intervals.front();
+  bars_.clear();
+  for (size_t d = 0; d < s.dims.size(); ++d) {
+    const double v = end ? i.dTo[d] : i.dFrom[d];
+    bars_.push_back({s.dims[d].name, v, std::abs(v)});
+  }
+  std::stable_sort(bars_.begin(), bars_.end(),
+                   [](const Bar& a, const Bar& b) { return a.peak > b.peak; });
+  deadHere_ = false;
+  draw();
+  plot_->xAxis->setLabel(tr("degrees of crank the window's %1 moves per unit of the dimension")
+                             .arg(end ? tr("end") : tr("start")));
+  plot_->replot();
+  if (bars_.empty()) return;
+  summary_->setText(tr("Window %1 %2 at crank %3°; it moves most with %4 (%5° per unit)")
+                        .arg(QString::fromStdString(w.name))
+                        .arg(end ? tr("closes") : tr("opens"))
+                        .arg(end ? i.toDeg : i.fromDeg, 0, 'f', 2)
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4));
 }

@@ -1,7 +1,8 @@
 // The Sensitivity dock (issue 29, "Sensitivities, exact"): which dimensions matter most for a
 // chosen output, a point's x, y or the length of its move (position, velocity or acceleration),
 // or its stroke (along its slot, else y: linkage/stroke_sensitivity.h), or a watched
-// clearance's closest approach (linkage/clearance_sensitivity.h), as a ranked bar
+// clearance's closest approach (linkage/clearance_sensitivity.h), or a timing window's start or
+// end (linkage/window_sensitivity.h), as a ranked bar
 // chart: for each dimension (linkage/sensitivity.h, named as the typed
 // dimensions are) its derivative at the crank angle (signed, in colour) over the largest of its
 // size over a turn (grey, every 5 degrees), the largest first. Exact, from the constraint
@@ -61,6 +62,8 @@ class SensitivityPanel : public DockPanel {
   void strokeBars(const Kinematics& k, PointId p);
   // The least distance of the file's clearance n (linkage/clearance_sensitivity.h).
   void clearanceBars(int n);
+  // A window's first interval's start or end (linkage/window_sensitivity.h): end n of the list.
+  void windowBars(int n);
 
   Document* doc_;
   QComboBox *point_, *quantity_, *component_;
@@ -69,7 +72,8 @@ class SensitivityPanel : public DockPanel {
   QTabWidget* tabs_;
   ToleranceView* tolerances_;
   std::vector<PointId> points_;
-  QStringList clearances_;  // the file's watched clearances, after the points in the list
+  QStringList clearances_;  // the file's watched clearances, then windows' ends, after the points
+  int windowsFrom_ = 0;     // where the windows' ends start in clearances_
   std::vector<Bar> bars_;
   bool deadHere_ = false;
   // The tolerances' band is of a design and an output: computed again only when they change.
