@@ -91,6 +91,19 @@ std::string rows(const Kinematics& k, const Sensitivity& s, PointId p, double de
   return out;
 }
 
+// One derivative a dimension: CSV dimension,COLUMN.
+void writeByDimension(const char* column, const std::vector<Dimension>& dims,
+                      const std::vector<double>& derivative) {
+  std::string out = std::string("dimension,") + column + "\n";
+  for (size_t d = 0; d < dims.size(); ++d) {
+    out += dims[d].name;
+    out += ',';
+    out += formatNumber(derivative[d]);
+    out += '\n';
+  }
+  std::cout << out << std::flush;
+}
+
 // The stroke's derivatives (linkage/stroke_sensitivity.h), along the point's default direction.
 int stroke(const Kinematics& k, PointId p) {
   const StrokeSensitivity s =
@@ -101,14 +114,7 @@ int stroke(const Kinematics& k, PointId p) {
   }
   note("stroke " + formatNumber(s.limits.stroke) + " mm, from crank " +
        formatNumber(s.limits.minDeg) + " to " + formatNumber(s.limits.maxDeg) + " deg");
-  std::string out = "dimension,dstroke_mm_per_mm\n";
-  for (size_t d = 0; d < s.dims.size(); ++d) {
-    out += s.dims[d].name;
-    out += ',';
-    out += formatNumber(s.derivative[d]);
-    out += '\n';
-  }
-  std::cout << out << std::flush;
+  writeByDimension("dstroke_mm_per_mm", s.dims, s.derivative);
   return kOk;
 }
 
@@ -129,14 +135,7 @@ int clearance(const Mechanism& m, int n) {
   }
   note("closest " + formatNumber(s.clearance.closest.distance) + " mm at crank " +
        formatNumber(s.clearance.closest.crankDeg) + " deg");
-  std::string out = "dimension,dmin_mm_per_mm\n";
-  for (size_t d = 0; d < s.dims.size(); ++d) {
-    out += s.dims[d].name;
-    out += ',';
-    out += formatNumber(s.derivative[d]);
-    out += '\n';
-  }
-  std::cout << out << std::flush;
+  writeByDimension("dmin_mm_per_mm", s.dims, s.derivative);
   return kOk;
 }
 

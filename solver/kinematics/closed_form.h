@@ -171,8 +171,7 @@ class ClosedFormPlan {
   // marked in `moved` (which gets their bodies); the others keep next's motion. The number of
   // groups solved, -1 where one cannot be.
   int resolveFrom(size_t first, const System& sys, const Motion& prev, Motion& next,
-                  std::vector<char>& moved, bool jump,
-                  const ClosedFormPlan* before = nullptr,
+                  std::vector<char>& moved, bool jump, const ClosedFormPlan* before = nullptr,
                   const std::vector<char>* reframed = nullptr) const;
   static bool sameGeometry(const Group& a, const Group& b, const ClosedFormPlan& pa,
                            const ClosedFormPlan& pb);

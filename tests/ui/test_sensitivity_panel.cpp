@@ -55,6 +55,35 @@ TEST(SensitivityPanel, TheGroundsDimensionsMoveThePointAsAWhole) {
       << panel.summary();
 }
 
+// Only what follows the pose is computed again when it changes: a point's derivatives at the
+// crank angle, not the turn's largest (of the design and the output), nor a stroke.
+TEST(SensitivityPanel, ANewPoseComputesOnlyWhatFollowsIt) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("wanzer-inversion-2")), nullptr));
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  ASSERT_EQ(panel.turnComputations(), 1);
+  const double before = panel.bars()[0].peak;
+  for (double deg : {30.0, 60.0, 90.0}) {
+    doc.setCrankDeg(deg);
+    settle(panel);
+  }
+  EXPECT_EQ(panel.turnComputations(), 1);
+  EXPECT_EQ(panel.bars()[0].peak, before);
+  Mechanism m = doc.design();
+  m.point(*m.findPoint("ground.A"))->pos.x() += 1;
+  doc.setDesign(m);
+  settle(panel);
+  EXPECT_EQ(panel.turnComputations(), 2);
+  panel.quantityBox()->setCurrentIndex(3);
+  Q_EMIT panel.quantityBox()->activated(3);
+  settle(panel);
+  doc.setCrankDeg(120);
+  EXPECT_FALSE(panel.redrawPending());  // a stroke does not follow the pose
+}
+
 TEST(SensitivityPanel, AFourBarsPointMovesWithItsGround) {
   Document doc;
   ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("four-bar-crank-rocker")), nullptr));

@@ -77,9 +77,16 @@ SensitivityPanel::SensitivityPanel(Document* doc, QWidget* parent)
   layout->addWidget(tabs_, 1);
   connect(doc_, &Document::designChanged, this, [this] {
     toleranceStale_ = true;
+    turnStale_ = true;
     markStale();
   });
-  connect(doc_, &Document::poseChanged, this, [this] { markStale(); });
+  // A stroke, a closest approach, a window's end are of the design, not of the pose: only a
+  // point's derivatives at the crank angle follow it.
+  connect(doc_, &Document::poseChanged, this, [this] {
+    const int at = point_->currentIndex();
+    if (at >= 0 && at < static_cast<int>(points_.size()) && quantity_->currentIndex() != kStroke)
+      markStale();
+  });
 }
 
 void SensitivityPanel::fillPoints() {
@@ -173,23 +180,53 @@ void SensitivityPanel::compute() {
   const bool here = s.at(k).ok();
   for (size_t d = 0; d < n && here; ++d)
     bars_[d].now = component(s, k, p, static_cast<int>(d), quantity, which);
+  // The turn's largest is of the design and the output, not of the pose: computed again only
+  // when either changed.
+  const std::tuple<PointId, int, int> key{p, quantity, which};
+  if (turnStale_ || key != turnFor_ || turnPeak_.size() != n) {
+    turnPeak_ = turnPeaks(s, k, p, quantity, which);
+    ++turnComputations_;
+    turnFor_ = key;
+    turnStale_ = false;
+  }
+  for (size_t d = 0; d < n; ++d) bars_[d].peak = turnPeak_[d];
+  for (Bar& b : bars_) b.peak = std::max(b.peak, std::abs(b.now));
+  rank();
+  deadHere_ = !here;
+  draw();
+}
+
+std::vector<double> SensitivityPanel::turnPeaks(Sensitivity& s, Kinematics k, PointId p,
+                                                int quantity, int which) const {
   // Over a turn from here (the motion followed continuously), singular poses left out.
+  std::vector<double> peak(s.dims().size(), 0.0);
   const double from = k.crankDeg();
   for (double t = kCycleStep; t <= 360 + 1e-9; t += kCycleStep) {
     if (!k.moveTo(from + t).ok()) break;
     if (!s.at(k).ok()) continue;
-    for (size_t d = 0; d < n; ++d)
-      bars_[d].peak = std::max(bars_[d].peak,
-                               std::abs(component(s, k, p, static_cast<int>(d), quantity, which)));
+    for (size_t d = 0; d < peak.size(); ++d)
+      peak[d] =
+          std::max(peak[d], std::abs(component(s, k, p, static_cast<int>(d), quantity, which)));
   }
-  for (Bar& b : bars_) b.peak = std::max(b.peak, std::abs(b.now));
+  return peak;
+}
+
+bool SensitivityPanel::showValues(const std::vector<Dimension>& dims,
+                                  const std::vector<double>& derivative, const QString& axis) {
+  bars_.clear();
+  for (size_t d = 0; d < dims.size(); ++d)
+    bars_.push_back({dims[d].name, derivative[d], std::abs(derivative[d])});
+  rank();
+  deadHere_ = false;
+  draw();
+  plot_->xAxis->setLabel(axis);
+  plot_->replot();
+  return !bars_.empty();
+}
+
+void SensitivityPanel::rank() {
   std::stable_sort(bars_.begin(), bars_.end(),
                    [](const Bar& a, const Bar& b) { return a.peak > b.peak; });
-  if (!here)
-    summary_->setText(
-        tr("A dead point of the output here: its derivatives are "
-           "unbounded (the grey bars are the turn's)"));
-  draw();
 }
 
 void SensitivityPanel::strokeBars(const Kinematics& k, PointId p) {
@@ -199,16 +236,9 @@ void SensitivityPanel::strokeBars(const Kinematics& k, PointId p) {
     showNothing(QString::fromStdString(s.status.message));
     return;
   }
-  bars_.clear();
-  for (size_t d = 0; d < s.dims.size(); ++d)
-    bars_.push_back({s.dims[d].name, s.derivative[d], std::abs(s.derivative[d])});
-  std::stable_sort(bars_.begin(), bars_.end(),
-                   [](const Bar& a, const Bar& b) { return a.peak > b.peak; });
-  deadHere_ = false;
-  draw();
-  plot_->xAxis->setLabel(tr("change of the stroke per unit of the dimension (mm, degree, ratio)"));
-  plot_->replot();
-  if (bars_.empty()) return;
+  if (!showValues(s.dims, s.derivative,
+                  tr("change of the stroke per unit of the dimension (mm, degree, ratio)")))
+    return;
   summary_->setText(tr("The stroke (%1 mm, between crank %2° and %3°) changes most with %4 "
                        "(%5 per unit)")
                         .arg(s.limits.stroke, 0, 'f', 4)
@@ -226,17 +256,10 @@ void SensitivityPanel::clearanceBars(int n) {
     showNothing(QString::fromStdString(s.status.message));
     return;
   }
-  bars_.clear();
-  for (size_t d = 0; d < s.dims.size(); ++d)
-    bars_.push_back({s.dims[d].name, s.derivative[d], std::abs(s.derivative[d])});
-  std::stable_sort(bars_.begin(), bars_.end(),
-                   [](const Bar& a, const Bar& b) { return a.peak > b.peak; });
-  deadHere_ = false;
-  draw();
-  plot_->xAxis->setLabel(
-      tr("change of the closest approach per unit of the dimension (mm, degree, ratio)"));
-  plot_->replot();
-  if (bars_.empty()) return;
+  if (!showValues(
+          s.dims, s.derivative,
+          tr("change of the closest approach per unit of the dimension (mm, degree, ratio)")))
+    return;
   summary_->setText(tr("The closest approach (%1 mm at crank %2°) changes most with %3 (%4 per "
                        "unit)")
                         .arg(s.clearance.closest.distance, 0, 'f', 4)
@@ -260,19 +283,10 @@ void SensitivityPanel::windowBars(int n) {
     return;
   }
   const WindowEndSensitivity& i = s.intervals.front();
-  bars_.clear();
-  for (size_t d = 0; d < s.dims.size(); ++d) {
-    const double v = end ? i.dTo[d] : i.dFrom[d];
-    bars_.push_back({s.dims[d].name, v, std::abs(v)});
-  }
-  std::stable_sort(bars_.begin(), bars_.end(),
-                   [](const Bar& a, const Bar& b) { return a.peak > b.peak; });
-  deadHere_ = false;
-  draw();
-  plot_->xAxis->setLabel(tr("degrees of crank the window's %1 moves per unit of the dimension")
-                             .arg(end ? tr("end") : tr("start")));
-  plot_->replot();
-  if (bars_.empty()) return;
+  if (!showValues(s.dims, end ? i.dTo : i.dFrom,
+                  tr("degrees of crank the window's %1 moves per unit of the dimension")
+                      .arg(end ? tr("end") : tr("start"))))
+    return;
   summary_->setText(tr("Window %1 %2 at crank %3°; it moves most with %4 (%5° per unit)")
                         .arg(QString::fromStdString(w.name))
                         .arg(end ? tr("closes") : tr("opens"))

@@ -14,12 +14,14 @@
 
 #include <QString>
 #include <QStringList>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "docks/dock_panel.h"
 #include "linkage/kinematics.h"
 #include "linkage/model.h"
+#include "linkage/sensitivity.h"
 
 class QComboBox;
 class QCustomPlot;
@@ -49,6 +51,8 @@ class SensitivityPanel : public DockPanel {
   QComboBox* quantityBox() const { return quantity_; }
   QComboBox* componentBox() const { return component_; }
   QStringList probeLines() const;
+  // How often the turn's largest derivatives were computed (tests: not again for a new pose).
+  int turnComputations() const { return turnComputations_; }
   ToleranceView* tolerances() const { return tolerances_; }
 
  protected:
@@ -64,6 +68,14 @@ class SensitivityPanel : public DockPanel {
   void clearanceBars(int n);
   // A window's first interval's start or end (linkage/window_sensitivity.h): end n of the list.
   void windowBars(int n);
+  // The bars of one derivative a dimension, ranked and drawn with the axis's label; false when
+  // there are none.
+  bool showValues(const std::vector<Dimension>& dims, const std::vector<double>& derivative,
+                  const QString& axis);
+  void rank();  // the bars, the largest (over a turn) first
+  // Each dimension's largest derivative size over a turn from k's pose (on a copy).
+  std::vector<double> turnPeaks(Sensitivity& s, Kinematics k, PointId p, int quantity,
+                                int which) const;
 
   Document* doc_;
   QComboBox *point_, *quantity_, *component_;
@@ -79,6 +91,11 @@ class SensitivityPanel : public DockPanel {
   // The tolerances' band is of a design and an output: computed again only when they change.
   bool toleranceStale_ = true;
   std::pair<PointId, int> toleranceFor_;
+  // The turn's largest derivatives, of a design and an output (point, quantity, component).
+  bool turnStale_ = true;
+  std::tuple<PointId, int, int> turnFor_;
+  std::vector<double> turnPeak_;
+  int turnComputations_ = 0;
 };
 
 }  // namespace linkage::ui
