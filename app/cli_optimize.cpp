@@ -36,6 +36,12 @@ pose on MODEL's assembly branches.
                                      the curve over the turn; lines starting with # are comments
      transmission:mu:body.point>=DEG a dyad's transmission angle (as `transmission` names it)
                                      within DEG to 180 - DEG over the turn
+     shaking:fx<=N                   the peak of the shaking force's |fx| (fy, or force: |f|)
+                                     over the turn at most N newtons (0: as low as it goes)
+  A variable may also be a counterweight added to a body pinned to the ground:
+     BODY.counterweight.x, BODY.counterweight.y   its static moment (kg mm) in the body's drawing
+                                     from its pivot (as `balance` places it); not together
+                                     with dimensions
   --starts K                  starts (default 16)
   --seed S                    seed of the starts (default 1)
   --steps N                   samples per turn for extremes and nearest points (default 360)
@@ -43,7 +49,8 @@ pose on MODEL's assembly branches.
 
 Output, CSV: quantity,name,before,after,target. A row a variable (variable,DIM); a row a target's
 measure: stroke_mm (body.point), x_mm and y_mm (body.point@DEG), path_rms_mm and path_max_mm (the
-given points' distances to the curve); the objective (mm^2); the starts, those infeasible and
+given points' distances to the curve), shaking_peak_N and shaking_peak_deg (fx, fy or force);
+a row a counterweight added (counterweight_kg,BODY: its mass, at the body's reach); the objective (mm^2, N^2, ...); the starts, those infeasible and
 those that found the best (within 1e-9 mm^2 + 1e-6 of it). A design infeasible as drawn leaves
 its before fields empty.
 
@@ -121,6 +128,23 @@ bool parseTransmission(const Mechanism& m, const std::string& text, OptTarget& t
   return why += "no transmission angle '" + name + "' (the model's: " + known + ")", false;
 }
 
+// shaking:fx<=N (fy, force)
+bool parseShaking(const std::string& text, OptTarget& t, std::string& why) {
+  const std::string usage = "expected shaking:fx<=N (fx, fy or force; N >= 0)";
+  const size_t le = text.find("<=");
+  if (le == std::string::npos) return why += usage, false;
+  const std::string what = text.substr(8, le - 8);
+  const std::optional<double> n = parseNumber(text.substr(le + 2));
+  if (!n.has_value() || !(n.value() >= 0) || (what != "fx" && what != "fy" && what != "force"))
+    return why += usage, false;
+  t.kind = OptTarget::Kind::Shaking;
+  t.measure = what == "fx"   ? BalanceMeasure::Fx
+              : what == "fy" ? BalanceMeasure::Fy
+                             : BalanceMeasure::Force;
+  t.limitN = n.value();
+  return true;
+}
+
 // KIND:body.point=VALUE[*WEIGHT]
 bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string& why) {
   why = "--target " + text + ": ";
@@ -131,6 +155,7 @@ bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string
     text = text.substr(0, star);
   }
   if (text.rfind("transmission:", 0) == 0) return parseTransmission(m, text, t, why);
+  if (text.rfind("shaking:", 0) == 0) return parseShaking(text, t, why);
   const size_t colon = text.find(':'), eq = text.find('=');
   if (colon == std::string::npos || eq == std::string::npos || eq < colon)
     return why += "expected KIND:body.point=VALUE", false;
@@ -155,12 +180,17 @@ bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string
     std::string fileWhy;
     if (!readPath(value, t.path, fileWhy)) return why += fileWhy, false;
   } else {
-    return why += "unknown kind '" + kind + "' (stroke, position, path)", false;
+    return why += "unknown kind '" + kind + "' (stroke, position, path, transmission, shaking)",
+           false;
   }
   std::optional<PointId> p = m.findPoint(point);
   if (!p) return why += "no point '" + point + "' in the model", false;
   t.point = *p;
   return true;
+}
+
+std::string shakingName(BalanceMeasure m) {
+  return m == BalanceMeasure::Fx ? "fx" : m == BalanceMeasure::Fy ? "fy" : "force";
 }
 
 std::string field(const Evaluation& e, size_t target, size_t k) {
@@ -188,11 +218,16 @@ std::string table(const OptimizeSpec& spec, const std::vector<std::string>& name
     } else if (t.kind == OptTarget::Kind::Transmission) {
       row("transmission_min_deg", 0, ">=" + formatNumber(t.limitDeg));
       row("transmission_max_deg", 1, "<=" + formatNumber(180 - t.limitDeg));
+    } else if (t.kind == OptTarget::Kind::Shaking) {
+      row("shaking_peak_N", 0, "<=" + formatNumber(t.limitN));
+      row("shaking_peak_deg", 1, "");
     } else {
       row("path_rms_mm", 0, "0");
       row("path_max_mm", 1, "0");
     }
   }
+  for (const Counterweight& c : r.counterweights)
+    out += "counterweight_kg," + r.design.body(c.body)->name + ",," + formatNumber(c.kg) + ",\n";
   out += "objective,," + (r.atBefore.feasible ? formatNumber(r.atBefore.objective) : "") + "," +
          formatNumber(r.atAfter.objective) + ",\n";
   out += "starts,," + std::to_string(r.starts) + ",,\n";
@@ -225,7 +260,8 @@ int optimizeModel(const Options& o) {
       return kBadInput;
     }
     spec.targets.push_back(t);
-    names.push_back(m->pointLabel(t.point));
+    names.push_back(t.kind == OptTarget::Kind::Shaking ? shakingName(t.measure)
+                                                       : m->pointLabel(t.point));
     if (t.kind == OptTarget::Kind::Position)
       names.back().append("@").append(formatNumber(t.crankDeg));
     if (t.kind == OptTarget::Kind::Transmission) names.back().insert(0, "mu:");

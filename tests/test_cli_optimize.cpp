@@ -85,6 +85,46 @@ TEST_F(OptimizeCli, BadDimensionOrTargetIsNamedWithExit2) {
   EXPECT_NE(cam.err.find("cam"), std::string::npos) << cam.err;
 }
 
+// Seed 003's problem from the command line: the counterweight on the lower shaft that minimises
+// the peak |fx| is balance's (its exact minimax), and the model written holds it.
+TEST_F(OptimizeCli, ShakingTargetFindsBalancesCounterweight) {
+  const std::string out = (dir_ / "cw.linkage.json").string();
+  const test::CliResult r =
+      run("optimize drop-feed --vary lowershaft.counterweight.x=-50:50 "
+          "--vary lowershaft.counterweight.y=-50:50 --target 'shaking:fx<=0' --starts 4 --out '" +
+          out + "'");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  auto t = rows(r);
+  const test::CliResult b = run("balance drop-feed --counterweight lowershaft --minimize fx");
+  ASSERT_EQ(b.exit, 0) << b.err;
+  auto exact = rows(b);
+  const double peak = *parseNumber(t["shaking_peak_N,fx"][1]);
+  EXPECT_NEAR(peak, *parseNumber(exact["peak_after,"][0]), 1e-7 * peak);
+  EXPECT_NEAR(*parseNumber(t["shaking_peak_N,fx"][0]), *parseNumber(exact["peak_before,"][0]),
+              1e-9 * peak);
+  EXPECT_EQ(t["shaking_peak_N,fx"][2], "<=0");
+  EXPECT_NEAR(*parseNumber(t["counterweight_kg,lowershaft"][1]),
+              *parseNumber(exact["counterweight_kg,lowershaft"][0]), 1e-5);
+  // The model written feels that peak: balanced again, nothing is left to gain.
+  const test::CliResult again =
+      run("balance '" + out + "' --counterweight lowershaft --minimize fx");
+  ASSERT_EQ(again.exit, 0) << again.err;
+  EXPECT_NEAR(*parseNumber(rows(again)["peak_before,"][0]), peak, 1e-9 * peak);
+  EXPECT_LT(*parseNumber(rows(again)["counterweight,lowershaft"][0]), 1e-4);
+}
+
+TEST_F(OptimizeCli, ShakingTargetRefusalsAreNamed) {
+  test::CliResult r =
+      run("optimize drop-feed --vary lowershaft.counterweight.x=-50:50 --target 'shaking:fz<=0'");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("shaking:fx<=N"), std::string::npos) << r.err;
+  r =
+      run("optimize drop-feed --vary lowershaft.counterweight.x=-50:50 --vary "
+          "feedrock.R-P=1:40 --target 'shaking:force<=0'");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("optimize: "), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace linkage
 #endif

@@ -96,46 +96,51 @@ Vec2 momentOf(const std::vector<double>& x, int k) {
   return Vec2(x[sx(k)], x[sx(k) + 1]);
 }
 
-bool Balancer::pivots(BalanceResult& r) {
-  const Mechanism& m = work_.mechanism();
+}  // namespace
+
+Status counterweightOn(const Mechanism& m, BodyId b, Counterweight& c) {
   const Body* g = m.ground();
-  for (BodyId b : opt_.bodies) {
-    const Body* body = m.body(b);
-    if (!body || body->ground) {
-      r.status = Status::badModel("a counterweight goes on a moving body");
-      return false;
+  const Body* body = m.body(b);
+  if (!body || body->ground) return Status::badModel("a counterweight goes on a moving body");
+  c = Counterweight{};
+  c.body = b;
+  for (const Joint& j : m.joints) {
+    if (kindOf(j).role != Role::Revolute) continue;
+    const Point *a = m.point(j.a), *o = m.point(j.b);
+    if (a->body == b && o->body == g->id) c.pivot = j.a;
+    if (o->body == b && a->body == g->id) c.pivot = j.b;
+    if (c.pivot) break;
+  }
+  if (!c.pivot)
+    return Status::badModel("body '" + body->name +
+                            "' is not pinned to the ground: a counterweight's static moment is "
+                            "measured from that pivot");
+  const Vec2 at = m.point(c.pivot)->pos;
+  auto reach = [&](const Vec2& p) { c.maxRadiusMm = std::max(c.maxRadiusMm, (p - at).norm()); };
+  for (const Point& p : m.points)
+    if (p.body == b) reach(p.pos);
+  for (const Slot& sl : m.slots)
+    if (sl.body == b) {
+      reach(sl.p0);
+      reach(sl.p1);
+      if (sl.mid) reach(*sl.mid);
     }
+  if (!(c.maxRadiusMm > 1e-9)) c.maxRadiusMm = 20;
+  return Status::success();
+}
+
+namespace {
+
+bool Balancer::pivots(BalanceResult& r) {
+  for (BodyId b : opt_.bodies) {
     for (const Counterweight& c : r.counterweights)
       if (c.body == b) {
-        r.status = Status::badModel("body '" + body->name + "' is given twice");
+        r.status =
+            Status::badModel("body '" + work_.mechanism().body(b)->name + "' is given twice");
         return false;
       }
     Counterweight c;
-    c.body = b;
-    for (const Joint& j : m.joints) {
-      if (kindOf(j).role != Role::Revolute) continue;
-      const Point *a = m.point(j.a), *o = m.point(j.b);
-      if (a->body == b && o->body == g->id) c.pivot = j.a;
-      if (o->body == b && a->body == g->id) c.pivot = j.b;
-      if (c.pivot) break;
-    }
-    if (!c.pivot) {
-      r.status = Status::badModel("body '" + body->name +
-                                  "' is not pinned to the ground: a counterweight's static "
-                                  "moment is measured from that pivot");
-      return false;
-    }
-    const Vec2 at = m.point(c.pivot)->pos;
-    auto reach = [&](const Vec2& p) { c.maxRadiusMm = std::max(c.maxRadiusMm, (p - at).norm()); };
-    for (const Point& p : m.points)
-      if (p.body == b) reach(p.pos);
-    for (const Slot& sl : m.slots)
-      if (sl.body == b) {
-        reach(sl.p0);
-        reach(sl.p1);
-        if (sl.mid) reach(*sl.mid);
-      }
-    if (!(c.maxRadiusMm > 1e-9)) c.maxRadiusMm = 20;
+    if (r.status = counterweightOn(work_.mechanism(), b, c); !r.status.ok()) return false;
     r.counterweights.push_back(c);
   }
   return true;

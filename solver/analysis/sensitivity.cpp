@@ -296,12 +296,24 @@ Vec2 Sensitivity::velocity(const Kinematics& k, PointId p, int dim) const {
 }
 
 Vec2 Sensitivity::acceleration(const Kinematics& k, PointId p, int dim) const {
-  const System& sys = internal::system(k);
-  const PointLocation* loc = sys.point(p);
+  const PointLocation* loc = internal::system(k).point(p);
   if (!loc || loc->body < 0) return Vec2::Zero();
-  const int c = 3 * loc->body;
+  return acceleration(k, loc->body, loc->s, pointMove_[dim][p.value], dim);
+}
+
+Vec2 Sensitivity::acceleration(const Kinematics& k, BodyId b, const Vec2& at, int dim) const {
+  const System& sys = internal::system(k);
+  const int body = sys.bodyIndex(b);
+  if (body < 0) return Vec2::Zero();
+  return acceleration(k, body, at - sys.frameOrigin[body], Vec2::Zero(), dim);
+}
+
+// s: the point in its body's frame; own: its move in the sketch per unit of the dimension.
+Vec2 Sensitivity::acceleration(const Kinematics& k, int body, const Vec2& s, const Vec2& own,
+                               int dim) const {
+  const int c = 3 * body;
   const Rot R = Rot::of(k.q()[c + 2]);
-  const Vec2 a = R * loc->s, own = pointMove_[dim][p.value];
+  const Vec2 a = R * s;
   const Vec2 da = dq_(c + 2, dim) * perp(a) + R * own;  // d(R s)
   const double w = k.dq()[c + 2], dw = dqd_(c + 2, dim), alpha = k.ddq()[c + 2];
   const double omega = k.omega();

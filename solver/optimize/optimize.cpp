@@ -13,6 +13,7 @@
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
 #include "linkage/transmission.h"
+#include "optimize/variables.h"
 
 namespace linkage {
 
@@ -25,8 +26,11 @@ bool solveDesign(const Kinematics& base, const OptimizeSpec& spec, const std::ve
                  Kinematics& out, std::string& why, Mechanism* design = nullptr) {
   Mechanism m = base.mechanism();
   std::vector<std::pair<std::string, double>> values;
+  std::string body;
+  int axis = 0;
   for (size_t i = 0; i < spec.variables.size(); ++i)
-    values.push_back({spec.variables[i].name, x[i]});
+    if (!opt::counterweightName(spec.variables[i].name, body, axis))
+      values.push_back({spec.variables[i].name, x[i]});
   if (Status s = setDimensions(m, values); !s.ok()) {
     why = s.message;
     return false;
@@ -128,6 +132,7 @@ Status nearestPoints(const Kinematics& k, const OptTarget& t, int steps, std::ve
 // The targets' residuals at the design k: the objective, the measures, and the probes that give
 // the gradient.
 Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec2* strokeDirs,
+                 const opt::Variables& vars, const std::vector<double>& x, Sensitivity* sens,
                  Evaluation& e, std::vector<Probe>& probes) {
   e.measures.assign(spec.targets.size(), {});
   for (size_t i = 0; i < spec.targets.size(); ++i) {
@@ -147,6 +152,8 @@ Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec2* stro
           {std::fmod(std::fmod(t.crankDeg, 360) + 360, 360), i, Vec2::Zero(), t.point});
     } else if (t.kind == OptTarget::Kind::Transmission) {
       if (Status s = transmissionResiduals(k, spec, i, e, probes); !s.ok()) return s;
+    } else if (t.kind == OptTarget::Kind::Shaking) {
+      if (Status s = opt::shakingResiduals(k, spec, i, vars, x, sens, e); !s.ok()) return s;
     } else {
       std::vector<double> deg;
       if (Status s = nearestPoints(k, t, spec.steps, deg); !s.ok()) return s;
@@ -159,8 +166,8 @@ Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec2* stro
 
 // Walks the probes in crank order on one copy of k: the pose-dependent residuals (positions,
 // path distances) and every probe's gradient from the exact dP/dp.
-Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, Sensitivity* sens,
-                  std::vector<Probe>& probes, Evaluation& e) {
+Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, const opt::Variables& vars,
+                  Sensitivity* sens, std::vector<Probe>& probes, Evaluation& e) {
   std::stable_sort(probes.begin(), probes.end(),
                    [](const Probe& a, const Probe& b) { return a.deg < b.deg; });
   std::vector<double> sumSq(spec.targets.size(), 0), largest(spec.targets.size(), 0);
@@ -182,10 +189,11 @@ Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, Sensitivity* se
       largest[p.target] = std::max(largest[p.target], r.norm());
       p.weightOfDp = 2 * t.weight * r;
     }
-    if (!sens || (p.angleWeight == 0 && p.weightOfDp.isZero())) continue;
+    if (!sens || vars.dims.empty() || (p.angleWeight == 0 && p.weightOfDp.isZero())) continue;
     if (Status s = sens->at(walker); !s.ok()) return s;
     for (size_t v = 0; v < e.gradient.size(); ++v) {
-      const int dim = static_cast<int>(v);
+      const int dim = vars.dim[v];
+      if (dim < 0) continue;  // a counterweight moves no point
       if (t.kind == OptTarget::Kind::Transmission) {
         double d = 0;
         dyadAngle(walker, joints[t.joint], sens, dim, &d);
@@ -202,19 +210,17 @@ Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, Sensitivity* se
   return Status::success();
 }
 
-// The variables among the design's dimensions, in the spec's order.
-Status chosenDimensions(const Mechanism& m, const OptimizeSpec& spec, std::vector<Dimension>& out) {
-  const std::vector<Dimension> all = dimensions(m);
-  for (const OptVariable& v : spec.variables) {
-    auto it =
-        std::find_if(all.begin(), all.end(), [&](const Dimension& d) { return d.name == v.name; });
-    if (it == all.end()) return Status::badModel("no dimension '" + v.name + "' in the design");
-    out.push_back(*it);
-  }
-  return Status::success();
-}
-
 }  // namespace
+
+// A point whose motion tells whether the design turns fully: the first target's, else the
+// first point of a moving body.
+static PointId turnPoint(const OptimizeSpec& spec, const Mechanism& m) {
+  for (const OptTarget& t : spec.targets)
+    if (t.point) return t.point;
+  for (const Point& p : m.points)
+    if (!m.body(p.body)->ground) return p.id;
+  return PointId{};
+}
 
 Evaluation evaluate(const Kinematics& base, const OptimizeSpec& spec, const std::vector<double>& x,
                     bool withGradient) {
@@ -223,11 +229,13 @@ Evaluation evaluate(const Kinematics& base, const OptimizeSpec& spec, const std:
   if (!solveDesign(base, spec, x, k, e.why)) return e;
   std::vector<Vec2> dirs;
   for (const OptTarget& t : spec.targets)
-    dirs.push_back(defaultDirection(base.mechanism(), t.point));
+    dirs.push_back(t.point ? defaultDirection(base.mechanism(), t.point) : Vec2(0, 1));
   // Every design turns fully: a target read at one angle does not make a locking design good.
   LimitOptions lo;
   lo.steps = std::max(4, spec.steps / 8);
-  if (Limits l = findLimits(k, LimitMeasure::along(spec.targets.front().point, dirs.front()), lo);
+  const PointId turn = turnPoint(spec, base.mechanism());
+  if (Limits l =
+          findLimits(k, LimitMeasure::along(turn, defaultDirection(base.mechanism(), turn)), lo);
       !l.status.ok()) {
     e.why = l.status.message;
     return e;
@@ -236,18 +244,20 @@ Evaluation evaluate(const Kinematics& base, const OptimizeSpec& spec, const std:
   Sensitivity sens;
   // A point come onto its body's line P0P1 changes how it is measured (along and across): the
   // variables no longer describe the design there, with or without a gradient.
-  std::vector<Dimension> dims;
-  Status ds = chosenDimensions(k.mechanism(), spec, dims);
+  opt::Variables vars;
+  Status ds = opt::mapVariables(base.mechanism(), k.mechanism(), spec, vars);
   if (ds.ok() && withGradient) {
     e.gradient.assign(spec.variables.size(), 0);
-    ds = sens.prepare(k, std::move(dims));
+    e.peakGradient.assign(spec.variables.size(), 0);
+    if (!vars.dims.empty()) ds = sens.prepare(k, vars.dims);
   }
   if (!ds.ok()) {
     e.why = ds.message;
     return e;
   }
-  Status s = residuals(k, spec, dirs.data(), e, probes);
-  if (s.ok()) s = walkProbes(k, spec, withGradient ? &sens : nullptr, probes, e);
+  Sensitivity* sp = withGradient ? &sens : nullptr;
+  Status s = residuals(k, spec, dirs.data(), vars, x, sp, e, probes);
+  if (s.ok()) s = walkProbes(k, spec, vars, sp, probes, e);
   if (!s.ok()) {
     e.why = s.message;
     e.objective = 0;

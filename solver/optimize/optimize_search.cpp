@@ -9,6 +9,7 @@
 #include "linkage/optimize.h"
 #include "linkage/sensitivity.h"
 #include "linkage/transmission.h"
+#include "optimize/variables.h"
 
 namespace linkage {
 
@@ -21,36 +22,90 @@ struct Local {
   double best = std::numeric_limits<double>::infinity();
   std::vector<double> bestX;
   int evaluations = 0;
+  // The peak targets' epigraph variables t follow the design's in the search's vector; the
+  // objective and the rows are read from one evaluation of the design (NLopt asks for both at
+  // the same point).
+  std::vector<size_t> peakTargets;
+  std::vector<double> lastX;
+  bool lastWithGradient = false;
+  Evaluation last;
+
+  size_t n() const { return spec->variables.size(); }
+  const Evaluation& at(const double* x, bool withGradient) {
+    std::vector<double> design(x, x + n());
+    if (design == lastX && (lastWithGradient || !withGradient)) return last;
+    ++evaluations;
+    last = evaluate(*base, *spec, design, withGradient);
+    lastX = design;
+    lastWithGradient = withGradient;
+    if (last.feasible) {
+      worstFeasible = std::max(worstFeasible, last.objective);
+      if (last.objective < best) best = last.objective, bestX = design;
+    }
+    return last;
+  }
 };
 
-double objective(const std::vector<double>& x, std::vector<double>& grad, void* data) {
+// The design's objective; with peak targets, the other targets' part plus weight * t^2 (the rows
+// hold each peak below its t).
+double objective(unsigned count, const double* x, double* grad, void* data) {
   Local& l = *static_cast<Local*>(data);
-  ++l.evaluations;
-  const Evaluation e = evaluate(*l.base, *l.spec, x, !grad.empty());
+  const Evaluation& e = l.at(x, grad != nullptr);
   if (!e.feasible) {
     // Infeasible: a plateau above everything feasible, flat, so a line search steps back.
-    std::fill(grad.begin(), grad.end(), 0.0);
+    if (grad) std::fill(grad, grad + count, 0.0);
     return 10 * (1 + l.worstFeasible);
   }
-  l.worstFeasible = std::max(l.worstFeasible, e.objective);
-  if (e.objective < l.best) {
-    l.best = e.objective;
-    l.bestX = x;
+  double f = e.objective - e.peakObjective;
+  for (size_t v = 0; grad && v < l.n(); ++v) grad[v] = e.gradient[v] - e.peakGradient[v];
+  for (size_t j = 0; j < l.peakTargets.size(); ++j) {
+    const double w = l.spec->targets[l.peakTargets[j]].weight, t = x[l.n() + j];
+    f += w * t * t;
+    if (grad) grad[l.n() + j] = 2 * w * t;
   }
-  if (!grad.empty()) grad = e.gradient;
-  return e.objective;
+  return f;
+}
+
+// Every peak row <= its target's t.
+void peakRows(unsigned m, double* result, unsigned count, const double* x, double* grad,
+              void* data) {
+  Local& l = *static_cast<Local*>(data);
+  const Evaluation& e = l.at(x, grad != nullptr);
+  if (grad) std::fill(grad, grad + size_t(m) * count, 0.0);
+  size_t row = 0;
+  for (size_t j = 0; j < l.peakTargets.size(); ++j) {
+    const size_t rows = m / l.peakTargets.size();
+    for (size_t i = 0; i < rows; ++i, ++row) {
+      // An infeasible design's rows hold (its objective's plateau keeps the search away).
+      const bool known = e.feasible && j < e.peaks.size() && i < e.peaks[j].value.size();
+      result[row] = known ? e.peaks[j].value[i] - x[l.n() + j] : -1;
+      if (!grad) continue;
+      grad[row * count + l.n() + j] = -1;
+      if (known && i < e.peaks[j].gradient.size())
+        for (size_t v = 0; v < l.n(); ++v) grad[row * count + v] = e.peaks[j].gradient[i][v];
+    }
+  }
 }
 
 // One local search from x0 (feasible): the best point it evaluated.
 void localSearch(Local& l, std::vector<double> x0) {
   const OptimizeSpec& spec = *l.spec;
-  const size_t n = spec.variables.size();
-  nlopt::opt o(nlopt::LD_SLSQP, static_cast<unsigned>(n));
-  std::vector<double> lo(n), hi(n);
+  const size_t n = spec.variables.size(), p = l.peakTargets.size();
+  nlopt::opt o(nlopt::LD_SLSQP, static_cast<unsigned>(n + p));
+  std::vector<double> lo(n + p, 0.0), hi(n + p, HUGE_VAL);
   for (size_t i = 0; i < n; ++i) lo[i] = spec.variables[i].lo, hi[i] = spec.variables[i].hi;
+  const Evaluation& e0 = l.at(x0.data(), true);
+  for (size_t j = 0; j < p; ++j) {
+    double top = 0;
+    for (double v : e0.peaks[j].value) top = std::max(top, v);
+    x0.push_back(top);
+  }
   o.set_lower_bounds(lo);
   o.set_upper_bounds(hi);
   o.set_min_objective(objective, &l);
+  if (p > 0)
+    o.add_inequality_mconstraint(peakRows, &l,
+                                 std::vector<double>(p * static_cast<size_t>(spec.steps), 1e-12));
   o.set_xtol_rel(1e-14);
   o.set_ftol_abs(0);
   o.set_maxeval(spec.maxEvaluations);
@@ -88,17 +143,22 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
   if (spec.variables.empty()) return Status::badModel("no dimension to vary");
   if (spec.targets.empty()) return Status::badModel("no target");
   if (spec.starts < 1 || spec.steps < 4) return Status::badModel("starts >= 1, steps >= 4");
-  const std::vector<Dimension> dims = dimensions(base.mechanism());
-  for (const OptVariable& v : spec.variables) {
-    auto it = std::find_if(dims.begin(), dims.end(),
-                           [&](const Dimension& d) { return d.name == v.name; });
-    if (it == dims.end()) return Status::badModel("no dimension '" + v.name + "' in the mechanism");
+  opt::Variables vars;
+  if (Status s = opt::mapVariables(base.mechanism(), base.mechanism(), spec, vars); !s.ok())
+    return s;
+  for (size_t i = 0; i < spec.variables.size(); ++i) {
+    const OptVariable& v = spec.variables[i];
     if (!(std::isfinite(v.lo) && std::isfinite(v.hi) && v.lo < v.hi))
       return Status::badModel("'" + v.name + "': its bounds need LO < HI, both finite");
-    before.push_back(it->value);
+    before.push_back(vars.dim[i] >= 0 ? vars.dims[vars.dim[i]].value : 0.0);
   }
   for (const OptTarget& t : spec.targets) {
-    if (!base.mechanism().contains(t.point))
+    if (t.kind == OptTarget::Kind::Shaking) {
+      if (t.measure == BalanceMeasure::Fz)
+        return Status::badModel("a planar machine's shaking force has no fz to target");
+      if (!(t.limitN >= 0 && std::isfinite(t.limitN)))
+        return Status::badModel("a shaking-force target's limit must be a number >= 0");
+    } else if (!base.mechanism().contains(t.point))
       return Status::badModel("a target's point is not in the mechanism");
     if (!(t.weight > 0 && std::isfinite(t.weight)))
       return Status::badModel("a target's weight must be positive");
@@ -130,8 +190,9 @@ OptimizeResult optimize(const Kinematics& base, const OptimizeSpec& spec) {
     Local l;
     l.base = &base;
     l.spec = &spec;
-    std::vector<double> g;
-    objective(x0, g, &l);
+    for (size_t t = 0; t < spec.targets.size(); ++t)
+      if (spec.targets[t].kind == OptTarget::Kind::Shaking) l.peakTargets.push_back(t);
+    l.at(x0.data(), true);
     if (l.bestX.empty()) {
       ++r.infeasibleStarts;
       continue;
@@ -153,11 +214,21 @@ OptimizeResult optimize(const Kinematics& base, const OptimizeSpec& spec) {
   r.after = xs[b];
   r.atAfter = evaluate(base, spec, r.after);
   Mechanism m = base.mechanism();
+  opt::Variables vars;
+  opt::mapVariables(base.mechanism(), base.mechanism(), spec, vars);
   std::vector<std::pair<std::string, double>> values;
-  for (size_t i = 0; i < n; ++i) values.push_back({spec.variables[i].name, r.after[i]});
+  for (size_t i = 0; i < n; ++i)
+    if (vars.dim[i] >= 0) values.push_back({spec.variables[i].name, r.after[i]});
   setDimensions(m, values);
   PoseEdit pe = editAtPose(base, std::move(m));
   r.design = std::move(pe.design);
+  for (size_t c = 0; c < vars.counterweights.size(); ++c) {
+    Counterweight cw = vars.counterweights[c];
+    cw.staticMoment = vars.moment(r.after, c);
+    cw.kg = vars.kg(r.after, c);
+    if (!cw.none()) r.counterweights.push_back(cw);
+  }
+  addCounterweights(r.design, r.counterweights);
   return r;
 }
 

@@ -71,6 +71,10 @@ struct BalanceResult {
   int angles = 0;     // angles the last programme used
 };
 
+// A counterweight on body b, none yet: its pivot (b's point pinned to the ground) and its reach
+// R. BadModel naming the body where it is the ground or not pinned to it.
+Status counterweightOn(const Mechanism& m, BodyId b, Counterweight& c);
+
 // k is not moved (copies of it are).
 BalanceResult balanceShaking(const Kinematics& k, const BalanceOptions& opt);
 

@@ -1,7 +1,9 @@
 // Dimensions found for targets (issue 29): the named dimensions of linkage/sensitivity.h varied
 // within bounds so that points meet targets (a stroke, a position at a crank angle, a path through
-// given points), by NLopt: a multistart over the bounds (a fixed seed), each start a local
-// gradient method (SLSQP) fed by the exact sensitivities chained through the targets.
+// given points, a transmission angle, the shaking force's peak), by NLopt: a multistart over the
+// bounds (a fixed seed), each start a local gradient method (SLSQP) fed by the exact
+// sensitivities chained through the targets. Or counterweights varied (their static moments) for
+// the shaking force: a peak over the turn is a minimax, met as one (below, Evaluation::peaks).
 //
 // Every design tried is the base design with its variables set exactly (setDimension), solved
 // from the base's pose at crank angle 0 on the same assembly branches (editAtPose, as an edit in
@@ -15,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "linkage/balance.h"
 #include "linkage/kinematics.h"
 #include "linkage/model.h"
 #include "linkage/status.h"
@@ -32,13 +35,19 @@ Status setDimension(Mechanism& m, const std::string& name, double value);
 // not matter; a slot's angle and offset both read back as given.
 Status setDimensions(Mechanism& m, const std::vector<std::pair<std::string, double>>& values);
 
+// A variable is a dimension (by its name) or a counterweight added to a body pinned to the
+// ground: `BODY.counterweight.x` and `BODY.counterweight.y`, its static moment (kg mm) in the
+// body's drawing from its pivot (linkage/balance.h), 0 as drawn; its mass the least that gives
+// it, at the body's reach R (|s| / R: its weight counts where gravity is on). Counterweights and
+// dimensions are not varied together: a dimension redraws the bodies it moves, and a moment
+// read in a body's drawing would turn with it.
 struct OptVariable {
-  std::string name;  // a dimension's name
+  std::string name;  // a dimension's or a counterweight's
   double lo = 0, hi = 0;
 };
 
 struct OptTarget {
-  enum class Kind { Stroke, Position, Path, Transmission };
+  enum class Kind { Stroke, Position, Path, Transmission, Shaking };
   Kind kind = Kind::Stroke;
   PointId point;
   double stroke = 0;       // Stroke: mm, along defaultDirection (linkage/limits.h)
@@ -51,11 +60,16 @@ struct OptTarget {
   // arc slot's radius).
   size_t joint = 0;
   double limitDeg = 0;
+  // Shaking: the peak over the turn of |fx|, |fy| or |f| of the shaking force (linkage/
+  // dynamics.h shaking(), with the counterweights varied) at most limitN: residual
+  // max(0, peak - limitN), N; limitN 0 minimises the peak. A planar machine's.
+  BalanceMeasure measure = BalanceMeasure::Force;
+  double limitN = 0;
   double weight = 1;
 };
 
 // What a target measures, for people: Stroke {stroke}, Position {x, y}, Path {rms distance,
-// largest distance} (mm), Transmission {min, max} (degrees).
+// largest distance} (mm), Transmission {min, max} (degrees), Shaking {peak (N), its crank angle}.
 using Measure = std::vector<double>;
 
 struct OptimizeSpec {
@@ -77,6 +91,19 @@ struct Evaluation {
   double objective = 0;
   std::vector<double> gradient;   // d objective / d variable
   std::vector<Measure> measures;  // by target
+  // A peak target's part: the turn cut into intervals, each interval's largest value less the
+  // limit (a row) and its exact gradient (at the angle where it is reached: the envelope
+  // theorem). The objective holds weight * max(0, largest row)^2 (peakObjective), the gradient
+  // that term's where one row is the largest (peakGradient); the search takes the rows instead:
+  // minimise weight * t^2 with every row <= t, smooth where the peak's is not.
+  struct PeakRows {
+    size_t target = 0;
+    std::vector<double> value;
+    std::vector<std::vector<double>> gradient;  // by row, by variable
+  };
+  std::vector<PeakRows> peaks;
+  double peakObjective = 0;
+  std::vector<double> peakGradient;
 };
 
 Evaluation evaluate(const Kinematics& base, const OptimizeSpec& spec, const std::vector<double>& x,
@@ -89,6 +116,7 @@ struct OptimizeResult {
   int starts = 0, infeasibleStarts = 0, foundBest = 0;
   int evaluations = 0;
   Mechanism design;  // the optimised design, redrawn so that its drawing closes
+  std::vector<Counterweight> counterweights;  // those varied, as added to `design`
 };
 
 // base: the design, loaded and at crank angle 0.

@@ -74,8 +74,12 @@ class Sensitivity {
   // computes no accelerations).
   Vec2 velocity(const Kinematics& k, PointId p, int dim) const;
   Vec2 acceleration(const Kinematics& k, PointId p, int dim) const;
+  // d(acceleration)/d(dimension k) of a point fixed in body b's frame at sketch position `at`,
+  // which no dimension moves (a centre of mass, a counterweight): mm/s^2 per unit.
+  Vec2 acceleration(const Kinematics& k, BodyId b, const Vec2& at, int dim) const;
 
  private:
+  Vec2 acceleration(const Kinematics& k, int body, const Vec2& s, const Vec2& own, int dim) const;
   std::vector<Dimension> dims_;
   std::vector<std::vector<Vec2>> pointMove_;  // by dimension, by PointId value
   Eigen::MatrixXd dq_, dqd_, dqdd_;           // dq/dp, dq'/dp, dq''/dp (q' = dq/dphi)

@@ -1,0 +1,161 @@
+// The shaking force's peak as a target (linkage/optimize.h): the rows a minimax is met by.
+//
+// With counterweights of static moments s_k added (kg mm, in their bodies' drawings, at their
+// pivots), the frame feels F = F0 + sum_k (1e-3 (omega_k^2 I - alpha_k perp) R(theta_k) s_k +
+// m_k g) (linkage/balance.h): linear in s_k, its gradient exact. A dimension's is F0's
+// (linkage/shaking_sensitivity.h). The turn is cut into `steps` intervals; an interval's row is
+// its largest |F| (or component): its ends' values, or a local maximum of the samples refined by
+// Brent's method on the exact motion where it falls inside the interval. The largest row is the
+// continuous peak, and every row moves continuously with the design, so the search's epigraph
+// (every row <= t) is smooth where the peak itself has corners.
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/brent.h"
+#include "linkage/dynamics.h"
+#include "linkage/shaking_sensitivity.h"
+#include "optimize/variables.h"
+
+namespace linkage::opt {
+
+namespace {
+
+Vec2 counterweightForce(const Kinematics& k, BodyId b, const Vec2& s) {
+  const Vec2 r = Rot::of(k.bodyAngle(b)) * s;
+  const double w = k.bodyOmega(b);
+  return 1e-3 * (w * w * r - k.bodyAlpha(b) * perp(r));
+}
+
+struct Shaker {
+  const Kinematics& design;
+  const OptTarget& t;
+  const Variables& vars;
+  const std::vector<double>& x;
+  Vec2 g = Vec2::Zero();  // N per kg
+
+  Vec2 force(const Kinematics& k) const {
+    Vec2 F;
+    double moment = 0;
+    shaking(k, F, moment);
+    for (size_t c = 0; c < vars.counterweights.size(); ++c)
+      F +=
+          counterweightForce(k, vars.counterweights[c].body, vars.moment(x, c)) + vars.kg(x, c) * g;
+    return F;
+  }
+  double measure(const Vec2& F) const {
+    if (t.measure == BalanceMeasure::Fx) return std::abs(F.x());
+    if (t.measure == BalanceMeasure::Fy) return std::abs(F.y());
+    return F.norm();
+  }
+  // d measure / d F: the unit the measure is read along (0 where it has no direction).
+  Vec2 along(const Vec2& F) const {
+    if (t.measure == BalanceMeasure::Fx) return Vec2(F.x() < 0 ? -1 : 1, 0);
+    if (t.measure == BalanceMeasure::Fy) return Vec2(0, F.y() < 0 ? -1 : 1);
+    return F.norm() > 0 ? Vec2(F / F.norm()) : Vec2::Zero();
+  }
+  std::vector<double> gradient(const Kinematics& k, const Sensitivity* sens) const;
+};
+
+// d measure / d variable at k's pose (sens at k's pose when there are dimensions).
+std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sens) const {
+  const Vec2 F = force(k), e = along(F);
+  std::vector<double> out(vars.dim.size(), 0.0);
+  for (size_t v = 0; v < out.size(); ++v) {
+    Vec2 dF = Vec2::Zero();
+    if (vars.dim[v] >= 0 && sens) {
+      dF = shakingForceSensitivity(k, *sens, vars.dim[v]);
+    } else if (vars.cw[v] >= 0) {
+      const size_t c = static_cast<size_t>(vars.cw[v]);
+      const Counterweight& cw = vars.counterweights[c];
+      const Vec2 unit = vars.axis[v] == 0 ? Vec2(1, 0) : Vec2(0, 1);
+      const Vec2 s = vars.moment(x, c);
+      dF = counterweightForce(k, cw.body, unit);
+      if (s.norm() > 0) dF += s.dot(unit) / (s.norm() * cw.maxRadiusMm) * g;  // d(|s| / R)
+    }
+    out[v] = e.dot(dF);
+  }
+  return out;
+}
+
+struct RowAt {
+  double value = -1, deg = 0;
+};
+
+// Each interval's largest measure and where: its ends, then the refined local maxima.
+Status intervalMaxima(const Shaker& sh, int n, std::vector<RowAt>& rows) {
+  Kinematics k = sh.design;
+  std::vector<double> v(n);
+  for (int i = 0; i < n; ++i) {
+    if (Status s = k.moveTo(360.0 * i / n); !s.ok()) return s;
+    v[i] = sh.measure(sh.force(k));
+  }
+  rows.assign(n, {});
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    rows[i] = v[i] >= v[j] ? RowAt{v[i], 360.0 * i / n} : RowAt{v[j], 360.0 * (i + 1) / n};
+  }
+  const double step = 360.0 / n;
+  Status status = Status::success();
+  for (int i = 0; i < n; ++i) {
+    if (v[i] < v[(i + n - 1) % n] || v[i] < v[(i + 1) % n]) continue;
+    auto negative = [&](double deg) {
+      if (status = k.moveTo(deg); !status.ok()) return 0.0;
+      return -sh.measure(sh.force(k));
+    };
+    double fmin = -v[i];
+    const double deg = brent::minimum(negative, step * i - step, step * i + step, 1e-9, &fmin);
+    if (!status.ok()) return status;
+    RowAt& in = rows[deg >= step * i ? i : (i + n - 1) % n];
+    if (-fmin > in.value) in = {-fmin, deg};
+  }
+  return Status::success();
+}
+
+}  // namespace
+
+Status shakingResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t target,
+                        const Variables& vars, const std::vector<double>& x, Sensitivity* sens,
+                        Evaluation& e) {
+  const OptTarget& t = spec.targets[target];
+  Shaker sh{k, t, vars, x, k.mechanism().gravity.value_or(Vec2::Zero())};
+  std::vector<RowAt> rows;
+  if (Status s = intervalMaxima(sh, spec.steps, rows); !s.ok()) return s;
+  const auto top = std::max_element(
+      rows.begin(), rows.end(), [](const RowAt& a, const RowAt& b) { return a.value < b.value; });
+  const double r = std::max(0.0, top->value - t.limitN);
+  e.objective += t.weight * r * r;
+  e.peakObjective += t.weight * r * r;
+  e.measures[target] = {top->value, std::fmod(top->deg + 360, 360)};
+  Evaluation::PeakRows pr;
+  pr.target = target;
+  for (const RowAt& row : rows) pr.value.push_back(row.value - t.limitN);
+  if (!e.gradient.empty()) {
+    // Each row's gradient where it is reached, the walker visiting the angles in order.
+    std::vector<size_t> order(rows.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return rows[a].deg < rows[b].deg; });
+    pr.gradient.resize(rows.size());
+    Kinematics walker = k;
+    for (size_t n = 0; n < order.size(); ++n) {
+      const size_t i = order[n];
+      if (n > 0 && rows[i].deg == rows[order[n - 1]].deg) {  // an end two intervals share
+        pr.gradient[i] = pr.gradient[order[n - 1]];
+        continue;
+      }
+      if (Status s = walker.moveTo(rows[i].deg); !s.ok()) return s;
+      if (sens && vars.dimensionCount() > 0)
+        if (Status s = sens->at(walker); !s.ok()) return s;
+      pr.gradient[i] = sh.gradient(walker, sens);
+    }
+    const std::vector<double>& g = pr.gradient[top - rows.begin()];
+    for (size_t v = 0; v < g.size(); ++v) {
+      e.gradient[v] += 2 * t.weight * r * g[v];
+      e.peakGradient[v] += 2 * t.weight * r * g[v];
+    }
+  }
+  e.peaks.push_back(std::move(pr));
+  return Status::success();
+}
+
+}  // namespace linkage::opt

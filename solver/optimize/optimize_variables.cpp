@@ -1,0 +1,82 @@
+// The search's variables on a design: see optimize/variables.h.
+#include <algorithm>
+
+#include "optimize/variables.h"
+
+namespace linkage::opt {
+
+Vec2 Variables::moment(const std::vector<double>& x, size_t k) const {
+  Vec2 s = Vec2::Zero();
+  for (size_t v = 0; v < cw.size(); ++v)
+    if (cw[v] == static_cast<int>(k)) s[axis[v]] = x[v];
+  return s;
+}
+
+double Variables::kg(const std::vector<double>& x, size_t k) const {
+  return moment(x, k).norm() / counterweights[k].maxRadiusMm;
+}
+
+bool counterweightName(const std::string& name, std::string& body, int& axis) {
+  static const std::string tail = ".counterweight.";
+  const size_t at = name.rfind(tail);
+  if (at == std::string::npos || at == 0 || name.size() != at + tail.size() + 1) return false;
+  const char a = name.back();
+  if (a != 'x' && a != 'y') return false;
+  body = name.substr(0, at);
+  axis = a == 'x' ? 0 : 1;
+  return true;
+}
+
+namespace {
+
+Status addCounterweight(const Mechanism& base, const std::string& name, const std::string& body,
+                        int axis, Variables& out) {
+  const Body* b = base.bodyNamed(body);
+  if (!b) return Status::badModel("'" + name + "': no body '" + body + "' in the design");
+  size_t k = 0;
+  while (k < out.counterweights.size() && out.counterweights[k].body != b->id) ++k;
+  if (k == out.counterweights.size()) {
+    Counterweight c;
+    if (Status s = counterweightOn(base, b->id, c); !s.ok())
+      return Status::badModel("'" + name + "': " + s.message);
+    out.counterweights.push_back(c);
+  }
+  for (size_t v = 0; v < out.cw.size(); ++v)
+    if (out.cw[v] == static_cast<int>(k) && out.axis[v] == axis)
+      return Status::badModel("'" + name + "' is given twice");
+  out.dim.push_back(-1);
+  out.cw.push_back(static_cast<int>(k));
+  out.axis.push_back(axis);
+  return Status::success();
+}
+
+}  // namespace
+
+Status mapVariables(const Mechanism& base, const Mechanism& design, const OptimizeSpec& spec,
+                    Variables& out) {
+  out = Variables{};
+  const std::vector<Dimension> all = dimensions(design);
+  for (const OptVariable& v : spec.variables) {
+    std::string body;
+    int axis = 0;
+    if (counterweightName(v.name, body, axis)) {
+      if (Status s = addCounterweight(base, v.name, body, axis, out); !s.ok()) return s;
+      continue;
+    }
+    auto it =
+        std::find_if(all.begin(), all.end(), [&](const Dimension& d) { return d.name == v.name; });
+    if (it == all.end()) return Status::badModel("no dimension '" + v.name + "' in the design");
+    out.dim.push_back(static_cast<int>(out.dims.size()));
+    out.cw.push_back(-1);
+    out.axis.push_back(0);
+    out.dims.push_back(*it);
+  }
+  if (!out.dims.empty() && !out.counterweights.empty())
+    return Status::badModel(
+        "counterweights and dimensions are varied apart: a dimension redraws the bodies it "
+        "moves, and a counterweight's moment turns with its body's drawing (vary the dimensions "
+        "first, then the counterweights on the design found)");
+  return Status::success();
+}
+
+}  // namespace linkage::opt
