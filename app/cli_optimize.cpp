@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "cli_common.h"
+#include "cli_optimize_text.h"
 #include "cli_parser.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
@@ -64,134 +65,6 @@ struct Options {
   int starts = 16, steps = 360;
   long long seed = 1;
 };
-
-std::optional<Vec2> parsePair(const std::string& s) {
-  const size_t c = s.find(',');
-  if (c == std::string::npos) return std::nullopt;
-  auto x = parseNumber(s.substr(0, c)), y = parseNumber(s.substr(c + 1));
-  if (!x || !y) return std::nullopt;
-  return Vec2(*x, *y);
-}
-
-bool parseVary(const std::string& text, OptVariable& v) {
-  const size_t eq = text.rfind('='), colon = text.rfind(':');
-  if (eq == std::string::npos || colon == std::string::npos || colon < eq) return false;
-  auto lo = parseNumber(text.substr(eq + 1, colon - eq - 1)),
-       hi = parseNumber(text.substr(colon + 1));
-  if (!lo || !hi) return false;
-  v = {text.substr(0, eq), *lo, *hi};
-  return true;
-}
-
-// FILE.csv: x,y a line; a first line that is not two numbers is a header.
-bool readPath(const std::string& file, std::vector<Vec2>& out, std::string& why) {
-  std::ifstream in(file);
-  if (!in) {
-    why = file + ": cannot be read";
-    return false;
-  }
-  std::string line;
-  for (int n = 1; std::getline(in, line); ++n) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;  // comments (a source cited, as four-bar-rs does)
-    std::optional<Vec2> p = parsePair(line);
-    if (!p && n == 1) continue;
-    if (!p) {
-      why = file + ":" + std::to_string(n) + ": not two numbers x,y";
-      return false;
-    }
-    out.push_back(*p);
-  }
-  if (out.empty()) why = file + ": no points";
-  return !out.empty();
-}
-
-// transmission:[mu:]body.point>=DEG, the joint named as `transmission` names it.
-bool parseTransmission(const Mechanism& m, const std::string& text, OptTarget& t,
-                       std::string& why) {
-  const size_t ge = text.find(">=");
-  auto deg = ge == std::string::npos ? std::nullopt : parseNumber(text.substr(ge + 2));
-  if (!deg) return why += "expected transmission:mu:body.point>=DEG", false;
-  std::string name = text.substr(13, ge - 13);
-  if (name.rfind("mu:", 0) != 0) name = "mu:" + name;
-  const std::vector<TransmissionJoint> js = transmissionJoints(m);
-  for (size_t j = 0; j < js.size(); ++j)
-    if (js[j].label == name) {
-      t.kind = OptTarget::Kind::Transmission;
-      t.joint = j;
-      t.limitDeg = *deg;
-      t.point = m.joint(js[j].joint)->a;
-      return true;
-    }
-  std::string known;
-  for (const TransmissionJoint& j : js) known += (known.empty() ? "" : ", ") + j.label;
-  return why += "no transmission angle '" + name + "' (the model's: " + known + ")", false;
-}
-
-// shaking:fx<=N (fy, force)
-bool parseShaking(const std::string& text, OptTarget& t, std::string& why) {
-  const std::string usage = "expected shaking:fx<=N (fx, fy or force; N >= 0)";
-  const size_t le = text.find("<=");
-  if (le == std::string::npos) return why += usage, false;
-  const std::string what = text.substr(8, le - 8);
-  const std::optional<double> n = parseNumber(text.substr(le + 2));
-  if (!n.has_value() || !(n.value() >= 0) || (what != "fx" && what != "fy" && what != "force"))
-    return why += usage, false;
-  t.kind = OptTarget::Kind::Shaking;
-  t.measure = what == "fx"   ? BalanceMeasure::Fx
-              : what == "fy" ? BalanceMeasure::Fy
-                             : BalanceMeasure::Force;
-  t.limitN = n.value();
-  return true;
-}
-
-// KIND:body.point=VALUE[*WEIGHT]
-bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string& why) {
-  why = "--target " + text + ": ";
-  if (const size_t star = text.rfind('*'); star != std::string::npos) {
-    auto w = parseNumber(text.substr(star + 1));
-    if (!w || !(*w > 0)) return why += "the weight after * must be a positive number", false;
-    t.weight = *w;
-    text = text.substr(0, star);
-  }
-  if (text.rfind("transmission:", 0) == 0) return parseTransmission(m, text, t, why);
-  if (text.rfind("shaking:", 0) == 0) return parseShaking(text, t, why);
-  const size_t colon = text.find(':'), eq = text.find('=');
-  if (colon == std::string::npos || eq == std::string::npos || eq < colon)
-    return why += "expected KIND:body.point=VALUE", false;
-  const std::string kind = text.substr(0, colon), value = text.substr(eq + 1);
-  std::string point = text.substr(colon + 1, eq - colon - 1);
-  if (kind == "position") {
-    const size_t at = point.find('@');
-    auto deg = at == std::string::npos ? std::nullopt : parseNumber(point.substr(at + 1));
-    std::optional<Vec2> xy = parsePair(value);
-    if (!deg || !xy) return why += "expected position:body.point@DEG=X,Y", false;
-    t.kind = OptTarget::Kind::Position;
-    t.crankDeg = *deg;
-    t.at = *xy;
-    point = point.substr(0, at);
-  } else if (kind == "stroke") {
-    auto mm = parseNumber(value);
-    if (!mm || !(*mm >= 0)) return why += "the stroke must be a number >= 0", false;
-    t.kind = OptTarget::Kind::Stroke;
-    t.stroke = *mm;
-  } else if (kind == "path") {
-    t.kind = OptTarget::Kind::Path;
-    std::string fileWhy;
-    if (!readPath(value, t.path, fileWhy)) return why += fileWhy, false;
-  } else {
-    return why += "unknown kind '" + kind + "' (stroke, position, path, transmission, shaking)",
-           false;
-  }
-  std::optional<PointId> p = m.findPoint(point);
-  if (!p) return why += "no point '" + point + "' in the model", false;
-  t.point = *p;
-  return true;
-}
-
-std::string shakingName(BalanceMeasure m) {
-  return m == BalanceMeasure::Fx ? "fx" : m == BalanceMeasure::Fy ? "fy" : "force";
-}
 
 std::string field(const Evaluation& e, size_t target, size_t k) {
   if (!e.feasible || target >= e.measures.size() || k >= e.measures[target].size()) return "";
@@ -260,11 +133,7 @@ int optimizeModel(const Options& o) {
       return kBadInput;
     }
     spec.targets.push_back(t);
-    names.push_back(t.kind == OptTarget::Kind::Shaking ? shakingName(t.measure)
-                                                       : m->pointLabel(t.point));
-    if (t.kind == OptTarget::Kind::Position)
-      names.back().append("@").append(formatNumber(t.crankDeg));
-    if (t.kind == OptTarget::Kind::Transmission) names.back().insert(0, "mu:");
+    names.push_back(targetName(*m, t));
   }
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;

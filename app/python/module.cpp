@@ -140,6 +140,37 @@ py::dict dimensions(const Model& m) {
   return out;
 }
 
+// vary: {name: (lo, hi)} in its own order; the answer as linkage-cli optimize's table says it.
+py::dict optimize(Model& m, const py::dict& vary, const std::vector<std::string>& targets,
+                  int starts, std::uint64_t seed, int steps, bool apply) {
+  std::vector<Model::Bounds> bounds;
+  for (const auto& [name, b] : vary) {
+    const auto lohi = b.cast<std::pair<double, double>>();
+    bounds.push_back({name.cast<std::string>(), lohi.first, lohi.second});
+  }
+  const Model::Optimized o = m.optimize(bounds, targets, starts, seed, steps, apply);
+  const linkage::OptimizeResult& r = o.result;
+  py::dict out, variables, measures, kg;
+  for (size_t i = 0; i < bounds.size(); ++i)
+    variables[py::str(bounds[i].name)] = py::make_tuple(r.before[i], r.after[i]);
+  auto measure = [](const linkage::Evaluation& e, size_t t) {
+    return e.feasible && t < e.measures.size() ? py::cast(e.measures[t]) : py::none();
+  };
+  for (size_t t = 0; t < targets.size(); ++t)
+    measures[py::str(targets[t])] = py::make_tuple(measure(r.atBefore, t), measure(r.atAfter, t));
+  for (const linkage::Counterweight& c : r.counterweights)
+    kg[py::str(r.design.body(c.body)->name)] = c.kg;
+  out["variables"] = variables;
+  out["targets"] = measures;
+  out["counterweights_kg"] = kg;
+  out["objective"] = py::make_tuple(
+      r.atBefore.feasible ? py::cast(r.atBefore.objective) : py::none(), r.atAfter.objective);
+  out["starts"] = r.starts;
+  out["starts_infeasible"] = r.infeasibleStarts;
+  out["starts_found_best"] = r.foundBest;
+  return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(linkage, mod) {
@@ -170,6 +201,8 @@ PYBIND11_MODULE(linkage, mod) {
       .def("set_side_lengths", &Model::setSideLengths, py::arg("body"), py::arg("lengths"))
       .def("set_point", &Model::setPoint, py::arg("point"), py::arg("x"), py::arg("y"))
       .def("set_dimension", &Model::setDimension, py::arg("name"), py::arg("value"))
+      .def("optimize", &optimize, py::arg("vary"), py::arg("targets"), py::arg("starts") = 16,
+           py::arg("seed") = 1, py::arg("steps") = 360, py::arg("apply") = false)
       .def(
           "save", [](const Model& m, const py::object& path) { m.save(fspath(path)); },
           py::arg("path"));

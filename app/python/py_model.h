@@ -7,6 +7,7 @@
 // it, and a motion table is the command line's to the last bit.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,7 @@
 #include "linkage/instant_centres.h"
 #include "linkage/kinematics.h"
 #include "linkage/model.h"
+#include "linkage/optimize.h"
 
 namespace linkage::py {
 
@@ -85,6 +87,20 @@ class Model {
   void setDimension(const std::string& name, double value);
   // The editor's writer, atomically.
   void save(const std::string& path) const;
+
+  // linkage-cli optimize's search (linkage/optimize.h): variables with their bounds, targets in
+  // its --target syntax; with `apply`, the design becomes the one found. BadInput naming the
+  // variable or target, or why no start could run.
+  struct Optimized {
+    OptimizeResult result;
+    std::vector<std::string> targetNames;
+  };
+  struct Bounds {
+    std::string name;
+    double lo = 0, hi = 0;
+  };
+  Optimized optimize(const std::vector<Bounds>& vary, const std::vector<std::string>& targets,
+                     int starts, std::uint64_t seed, int steps, bool apply);
 
   const Kinematics& loaded() const { return base_; }
 

@@ -193,6 +193,44 @@ def test_any_named_dimension_is_set_exactly():
         m.set_dimension("rod.A-B", -3)
 
 
+def test_optimize_is_the_command_lines_and_applies(tmp_path):
+    # Seed 001's stroke adjustment (tests/test_cli_optimize.cpp), the same numbers to the bit.
+    vary = {"ground.F.x": (10, 30), "ground.F.y": (137.05539931644228, 160)}
+    targets = ["stroke:needlebar.G=22.768569616037638",
+               "position:rocker.E@0=43,137.05539931644228"]
+    out = cli("optimize", "needle-876-alpha-0", *[f"--vary={k}={lo!r}:{hi!r}" for k, (lo, hi)
+                                                   in vary.items()],
+              *[f"--target={t}" for t in targets], "--starts", "4").stdout
+    want = {tuple(r[:2]): r[2:] for r in csv.reader(io.StringIO(out))}
+    m = linkage.load("needle-876-alpha-0")
+    r = m.optimize(vary, targets, starts=4, apply=True)
+    for name, (before, after) in r["variables"].items():
+        assert (before, after) == (float(want["variable", name][0]), float(want["variable", name][1]))
+        assert m.dimensions[name] == pytest.approx(after, abs=1e-9)
+    assert r["targets"][targets[0]][1][0] == float(want["stroke_mm", "needlebar.G"][1])
+    assert r["starts"] == 4 and r["starts_found_best"] == int(want["starts_found_best", ""][0])
+    m.save(tmp_path / "found.linkage.json")
+    limits = cli("limits", str(tmp_path / "found.linkage.json"), "--point", "needlebar.G").stdout
+    assert "stroke,,22.7685696160" in limits
+
+
+def test_optimize_counterweights_and_refusals():
+    # Seed 003's problem: the lower shaft's counterweight for the least peak |fx| (balance's).
+    m = linkage.load("drop-feed")
+    r = m.optimize({"lowershaft.counterweight.x": (-50, 50),
+                    "lowershaft.counterweight.y": (-50, 50)}, ["shaking:fx<=0"], starts=2)
+    before, after = r["targets"]["shaking:fx<=0"]
+    balance = {tuple(row[:2]): row[2:] for row in csv.reader(io.StringIO(
+        cli("balance", "drop-feed", "--counterweight", "lowershaft", "--minimize", "fx").stdout))}
+    assert after[0] == pytest.approx(float(balance["peak_after", ""][0]), rel=1e-7)
+    assert before[0] == pytest.approx(float(balance["peak_before", ""][0]), rel=1e-12)
+    assert r["counterweights_kg"]["lowershaft"] > 0
+    with pytest.raises(ValueError, match="no dimension 'nothing'"):
+        m.optimize({"nothing": (0, 1)}, ["shaking:fx<=0"])
+    with pytest.raises(ValueError, match="shaking:fx<=N"):
+        m.optimize({"lowershaft.counterweight.x": (0, 1)}, ["shaking:fz<=0"])
+
+
 def test_a_triangles_side_and_refused_edits():
     m = linkage.load("wanzer-inversion-2")
     m.set_dimension("triangle.F-G", 57)

@@ -1,0 +1,21 @@
+// The optimiser's variables and targets as text (`linkage-cli optimize`'s --vary and --target,
+// and the Python module's optimize()): one syntax, read in one place.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linkage/optimize.h"
+
+namespace linkage::cli {
+
+// DIM=LO:HI
+bool parseVary(const std::string& text, OptVariable& v);
+// KIND:...=VALUE[*WEIGHT]; false with `why` naming the target and the fault. A path's file is
+// read here.
+bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string& why);
+// The target's name in the output: body.point, body.point@DEG, mu:..., fx / fy / force.
+std::string targetName(const Mechanism& m, const OptTarget& t);
+
+}  // namespace linkage::cli
