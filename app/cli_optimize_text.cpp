@@ -1,6 +1,7 @@
 // The optimiser's variables and targets as text: see cli_optimize_text.h.
 #include "cli_optimize_text.h"
 
+#include <cmath>
 #include <fstream>
 
 #include "linkage/io/numbers.h"
@@ -84,6 +85,39 @@ std::string shakingName(BalanceMeasure m) {
   return m == BalanceMeasure::Fx ? "fx" : m == BalanceMeasure::Fy ? "fy" : "force";
 }
 
+// clearance:N>=GAP
+bool parseClearance(const std::string& text, OptTarget& t, std::string& why) {
+  const std::string usage = "expected clearance:N>=GAP (N the file's clearance, from 0; GAP mm)";
+  const size_t ge = text.find(">=");
+  if (ge == std::string::npos) return why += usage, false;
+  const std::optional<double> n = parseNumber(text.substr(10, ge - 10)),
+                              gap = parseNumber(text.substr(ge + 2));
+  if (!n.has_value() || !gap.has_value() || !(n.value() >= 0) || n.value() != std::floor(*n) ||
+      !(gap.value() >= 0))
+    return why += usage, false;
+  t.kind = OptTarget::Kind::Clearance;
+  t.index = static_cast<size_t>(n.value());
+  t.gapMm = gap.value();
+  return true;
+}
+
+// window:NAME.start=DEG, window:NAME.end=DEG
+bool parseWindow(const std::string& text, OptTarget& t, std::string& why) {
+  const std::string usage = "expected window:NAME.start=DEG or window:NAME.end=DEG";
+  const size_t eq = text.rfind('=');
+  if (eq == std::string::npos) return why += usage, false;
+  const size_t dot = text.rfind('.', eq);
+  const std::optional<double> deg = parseNumber(text.substr(eq + 1));
+  if (dot == std::string::npos || dot <= 7 || !deg.has_value()) return why += usage, false;
+  const std::string end = text.substr(dot + 1, eq - dot - 1);
+  if (end != "start" && end != "end") return why += usage, false;
+  t.kind = OptTarget::Kind::Window;
+  t.window = text.substr(7, dot - 7);
+  t.windowEnd = end == "end";
+  t.crankDeg = deg.value();
+  return true;
+}
+
 }  // namespace
 
 bool parseVary(const std::string& text, OptVariable& v) {
@@ -107,6 +141,8 @@ bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string
   }
   if (text.rfind("transmission:", 0) == 0) return parseTransmission(m, text, t, why);
   if (text.rfind("shaking:", 0) == 0) return parseShaking(text, t, why);
+  if (text.rfind("clearance:", 0) == 0) return parseClearance(text, t, why);
+  if (text.rfind("window:", 0) == 0) return parseWindow(text, t, why);
   const size_t colon = text.find(':'), eq = text.find('=');
   if (colon == std::string::npos || eq == std::string::npos || eq < colon)
     return why += "expected KIND:body.point=VALUE", false;
@@ -131,7 +167,8 @@ bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string
     std::string fileWhy;
     if (!readPath(value, t.path, fileWhy)) return why += fileWhy, false;
   } else {
-    return why += "unknown kind '" + kind + "' (stroke, position, path, transmission, shaking)",
+    return why += "unknown kind '" + kind +
+                  "' (stroke, position, path, transmission, shaking, clearance, window)",
            false;
   }
   std::optional<PointId> p = m.findPoint(point);
@@ -142,6 +179,8 @@ bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string
 
 std::string targetName(const Mechanism& m, const OptTarget& t) {
   if (t.kind == OptTarget::Kind::Shaking) return shakingName(t.measure);
+  if (t.kind == OptTarget::Kind::Clearance) return "clearance " + std::to_string(t.index);
+  if (t.kind == OptTarget::Kind::Window) return t.window + (t.windowEnd ? ".end" : ".start");
   std::string name = m.pointLabel(t.point);
   if (t.kind == OptTarget::Kind::Position) name.append("@").append(formatNumber(t.crankDeg));
   if (t.kind == OptTarget::Kind::Transmission) name.insert(0, "mu:");

@@ -113,6 +113,29 @@ TEST_F(OptimizeCli, ShakingTargetFindsBalancesCounterweight) {
   EXPECT_LT(*parseNumber(rows(again)["counterweight,lowershaft"][0]), 1e-4);
 }
 
+// The lockstitch machine's needle window opened 3.6 degrees earlier by its rod; its hook kept
+// 1 mm from the needle (as drawn they meet: a touch has no derivative, that design is
+// infeasible and said so; other starts find rods that keep the gap).
+TEST_F(OptimizeCli, WindowAndClearanceTargets) {
+  test::CliResult r =
+      run("optimize lockstitch-machine --vary rod.A-B=20:200 --target window:needle.start=128 "
+          "--starts 4");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  auto t = rows(r);
+  EXPECT_NEAR(*parseNumber(t["window_deg,needle.start"][1]), 128, 1e-9);
+  EXPECT_EQ(t["window_deg,needle.start"][2], "128");
+  r = run("optimize lockstitch-machine --vary rod.A-B=20:200 --target 'clearance:0>=1'");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  EXPECT_NE(r.err.find("as drawn the design is infeasible: the two touch"), std::string::npos)
+      << r.err;
+  t = rows(r);
+  EXPECT_EQ(t["clearance_least_mm,clearance 0"][0], "");
+  EXPECT_GE(*parseNumber(t["clearance_least_mm,clearance 0"][1]), 1);
+  r = run("optimize lockstitch-machine --vary rod.A-B=20:200 --target 'window:needle.middle=3'");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("window:NAME.start=DEG"), std::string::npos) << r.err;
+}
+
 TEST_F(OptimizeCli, ShakingTargetRefusalsAreNamed) {
   test::CliResult r =
       run("optimize drop-feed --vary lowershaft.counterweight.x=-50:50 --target 'shaking:fz<=0'");

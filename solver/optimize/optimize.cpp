@@ -154,6 +154,11 @@ Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec2* stro
       if (Status s = transmissionResiduals(k, spec, i, e, probes); !s.ok()) return s;
     } else if (t.kind == OptTarget::Kind::Shaking) {
       if (Status s = opt::shakingResiduals(k, spec, i, vars, x, sens, e); !s.ok()) return s;
+    } else if (t.kind == OptTarget::Kind::Clearance) {
+      if (Status s = opt::clearanceResiduals(k, spec, i, vars, sens != nullptr, e); !s.ok())
+        return s;
+    } else if (t.kind == OptTarget::Kind::Window) {
+      if (Status s = opt::windowResiduals(k, spec, i, vars, sens != nullptr, e); !s.ok()) return s;
     } else {
       std::vector<double> deg;
       if (Status s = nearestPoints(k, t, spec.steps, deg); !s.ok()) return s;

@@ -130,6 +130,32 @@ Status checkTransmission(const Mechanism& m, const OptTarget& t) {
   return Status::success();
 }
 
+// The targets that name no point: a shaking force, a watched clearance, a timing window.
+Status checkWatched(const Mechanism& m, const OptTarget& t) {
+  if (t.kind == OptTarget::Kind::Shaking) {
+    if (t.measure == BalanceMeasure::Fz)
+      return Status::badModel("a planar machine's shaking force has no fz to target");
+    if (!(t.limitN >= 0 && std::isfinite(t.limitN)))
+      return Status::badModel("a shaking-force target's limit must be a number >= 0");
+  }
+  if (t.kind == OptTarget::Kind::Clearance) {
+    if (t.index >= m.timing.clearances.size())
+      return Status::badModel("clearance " + std::to_string(t.index) + ": the file watches " +
+                              std::to_string(m.timing.clearances.size()) +
+                              " (\"timing\": \"clearances\", counted from 0)");
+    if (!(t.gapMm >= 0 && std::isfinite(t.gapMm)))
+      return Status::badModel("a clearance target's gap must be a number >= 0");
+  }
+  if (t.kind == OptTarget::Kind::Window) {
+    bool found = false;
+    for (const TimingWindow& w : m.timing.windows) found = found || w.name == t.window;
+    if (!found) return Status::badModel("no window named \"" + t.window + "\" in the timing");
+    if (!std::isfinite(t.crankDeg))
+      return Status::badModel("a window target's crank angle must be a number");
+  }
+  return Status::success();
+}
+
 double uniform(std::mt19937_64& g) {
   return static_cast<double>(g() >> 11) * 0x1.0p-53;
 }
@@ -153,12 +179,10 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
     before.push_back(vars.dim[i] >= 0 ? vars.dims[vars.dim[i]].value : 0.0);
   }
   for (const OptTarget& t : spec.targets) {
-    if (t.kind == OptTarget::Kind::Shaking) {
-      if (t.measure == BalanceMeasure::Fz)
-        return Status::badModel("a planar machine's shaking force has no fz to target");
-      if (!(t.limitN >= 0 && std::isfinite(t.limitN)))
-        return Status::badModel("a shaking-force target's limit must be a number >= 0");
-    } else if (!base.mechanism().contains(t.point))
+    if (Status s = checkWatched(base.mechanism(), t); !s.ok()) return s;
+    const bool named = t.kind == OptTarget::Kind::Shaking || t.kind == OptTarget::Kind::Clearance ||
+                       t.kind == OptTarget::Kind::Window;
+    if (!named && !base.mechanism().contains(t.point))
       return Status::badModel("a target's point is not in the mechanism");
     if (!(t.weight > 0 && std::isfinite(t.weight)))
       return Status::badModel("a target's weight must be positive");

@@ -32,6 +32,13 @@ bool counterweightName(const std::string& name, std::string& body, int& axis);
 Status mapVariables(const Mechanism& base, const Mechanism& design, const OptimizeSpec& spec,
                     Variables& out);
 
+// A clearance's or a window's end's residual, measure, objective term and gradient at design k
+// (sens prepared with vars.dims when a gradient is asked for, else null).
+Status clearanceResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t target,
+                          const Variables& vars, bool withGradient, Evaluation& e);
+Status windowResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t target,
+                       const Variables& vars, bool withGradient, Evaluation& e);
+
 // A shaking target's rows, measure, objective term and gradients at design k, its variables x.
 Status shakingResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t target,
                         const Variables& vars, const std::vector<double>& x, Sensitivity* sens,

@@ -47,7 +47,7 @@ struct OptVariable {
 };
 
 struct OptTarget {
-  enum class Kind { Stroke, Position, Path, Transmission, Shaking };
+  enum class Kind { Stroke, Position, Path, Transmission, Shaking, Clearance, Window };
   Kind kind = Kind::Stroke;
   PointId point;
   double stroke = 0;       // Stroke: mm, along defaultDirection (linkage/limits.h)
@@ -65,11 +65,21 @@ struct OptTarget {
   // max(0, peak - limitN), N; limitN 0 minimises the peak. A planar machine's.
   BalanceMeasure measure = BalanceMeasure::Force;
   double limitN = 0;
+  // Clearance: the file's watched clearance `index` (its timing's, counted from 0) at least
+  // gapMm at its closest approach over the turn: residual max(0, gapMm - least), mm.
+  size_t index = 0;
+  double gapMm = 0;
+  // Window: the file's timing window `window` (on a point's position), its first interval's
+  // start (its end with windowEnd) at crankDeg: residual the angle from crankDeg to it, degrees
+  // (-180 to 180). A design where it never opens is infeasible.
+  std::string window;
+  bool windowEnd = false;
   double weight = 1;
 };
 
 // What a target measures, for people: Stroke {stroke}, Position {x, y}, Path {rms distance,
-// largest distance} (mm), Transmission {min, max} (degrees), Shaking {peak (N), its crank angle}.
+// largest distance} (mm), Transmission {min, max} (degrees), Shaking {peak (N), its crank angle},
+// Clearance {least (mm), its crank angle}, Window {the end's crank angle}.
 using Measure = std::vector<double>;
 
 struct OptimizeSpec {
