@@ -8,6 +8,7 @@
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
 #include "linkage/stroke_sensitivity.h"
+#include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
 
 namespace linkage::cli {
@@ -17,7 +18,7 @@ namespace {
 const char* kHelp =
     R"(usage: linkage-cli sensitivity MODEL --point body.point [--steps N] [--velocity]
                                    [--acceleration] | --point body.point --stroke |
-                                   --clearance N | --window NAME
+                                   --clearance N | --window NAME | --transmission N
 
 The derivative of a point's position with respect to every dimension of MODEL, at each crank
 angle of one turn: exact, from the constraint Jacobian (dq/dp = -J_q^-1 J_p), not by finite
@@ -47,6 +48,12 @@ degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
                        point's position below or above a level): CSV
                        dimension,interval,dfrom_deg_per_unit,dto_deg_per_unit (degrees of
                        crank per mm, degree or ratio; interval from 0 in crank order)
+  --transmission N     instead, the derivatives of transmission angle N (0 the first mu column of
+                       `linkage-cli transmission`, or its name there, e.g. mu:coupler.B) at each
+                       crank angle of the turn: CSV crank_deg,dimension,dmu_deg_per_unit
+                       (degrees of the angle per mm, degree or ratio); --point not needed.
+                       A dyad between points only: a rod on a slider or in a slot, and a dyad
+                       with an arc slot, are refused by name
 
 Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
 significant digits. A singular position (a dead point of the output, where the derivatives are
@@ -63,7 +70,7 @@ struct Options {
   int steps = 360;
   bool velocity = false, acceleration = false, stroke = false;
   int clearance = -1;
-  std::string window;
+  std::string window, transmission;
 };
 
 // Appends ",x,y" (one string appended at a time: no temporaries to concatenate).
@@ -165,11 +172,74 @@ int window(const Mechanism& m, const std::string& name) {
   return kOk;
 }
 
+// The transmission angle `which` names: its index among transmissionJoints(m), from 0, or its
+// label (with or without "mu:"); nullopt, said, when there is none.
+std::optional<size_t> transmissionIndex(const std::vector<TransmissionJoint>& js,
+                                        const std::string& which) {
+  const bool number = !which.empty() && which.find_first_not_of("0123456789") == std::string::npos;
+  for (size_t j = 0; j < js.size(); ++j)
+    if (number ? which == std::to_string(j)
+               : js[j].label == (which.rfind("mu:", 0) == 0 ? which : "mu:" + which))
+      return j;
+  std::string known;
+  for (size_t j = 0; j < js.size(); ++j)
+    known += (j ? ", " : "") + std::to_string(j) + " " + js[j].label;
+  error("--transmission " + which +
+        ": no such transmission angle (the model's: " + (known.empty() ? "none" : known) + ")");
+  return std::nullopt;
+}
+
+// A dyad's transmission angle's derivatives (linkage/transmission_sensitivity.h), a row a
+// dimension a step.
+int transmission(Kinematics& k, Sensitivity& sens, const Options& o) {
+  const std::vector<TransmissionJoint> js = transmissionJoints(k.mechanism());
+  const std::optional<size_t> j = transmissionIndex(js, o.transmission);
+  if (!j) return kBadInput;
+  if (Status s = dyadDifferentiable(k.mechanism(), js[*j]); !s.ok()) {
+    error("sensitivity: " + s.message);
+    return exitFor(s);
+  }
+  std::string out = "crank_deg,dimension,dmu_deg_per_unit\n";
+  Status failed;
+  for (int i = 0; i < o.steps && failed.ok(); ++i) {
+    const double deg = 360.0 * i / o.steps;
+    Status s = k.moveTo(deg);
+    if (s.ok()) s = sens.at(k);
+    if (s.code == StatusCode::Singular) {
+      note("at " + formatNumber(deg) + " deg: " + s.message + "; no rows");
+      continue;
+    }
+    if (!(failed = s).ok()) break;
+    const std::vector<double> d = dyadAngleDerivatives(k, js[*j], sens);
+    const std::string at = formatNumber(deg);
+    for (size_t v = 0; v < d.size(); ++v)
+      out.append(at)
+          .append(",")
+          .append(sens.dims()[v].name)
+          .append(",")
+          .append(formatNumber(d[v]))
+          .append("\n");
+  }
+  std::cout << out << std::flush;
+  if (!failed.ok()) error(failed.message);
+  return failed.ok() ? kOk : exitFor(failed);
+}
+
 int sensitivity(const Options& o) {
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   if (o.clearance >= 0) return clearance(*m, o.clearance);
   if (!o.window.empty()) return window(*m, o.window);
+  if (!o.transmission.empty()) {
+    Kinematics k;
+    if (int e = prepare(k, *m); e != kOk) return e;
+    Sensitivity sens;
+    if (Status s = sens.prepare(k, dimensions(k.mechanism())); !s.ok()) {
+      error("sensitivity: " + s.message);
+      return exitFor(s);
+    }
+    return transmission(k, sens, o);
+  }
   if (o.point.empty()) {
     error("sensitivity: --point body.point is required (or --clearance N)");
     return kBadInput;
@@ -226,6 +296,7 @@ Command sensitivityCommand(Parser& parser) {
   addFlag(c, "--stroke", o->stroke);
   addWhole(c, "--clearance", o->clearance, 0, 1'000'000);
   addText(c, "--window", o->window);
+  addText(c, "--transmission", o->transmission);
   return {&c, [o] { return sensitivity(*o); }};
 }
 

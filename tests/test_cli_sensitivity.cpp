@@ -12,6 +12,7 @@
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
+#include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
 #include "mechanisms.h"
 
@@ -155,6 +156,53 @@ TEST_F(SensitivityCli, AWindowsEndsDerivativesWhenAsked) {
     EXPECT_EQ(parseNumber(row[3]), w.intervals[0].dTo[d]);
   }
   EXPECT_EQ(run("sensitivity " + path + " --window nope").exit, 2);
+}
+
+// --transmission N: a row a dimension a step, the library's numbers to the last bit
+// (tests/test_transmission_sensitivity.cpp holds them to the four-bar's law of cosines); the
+// angle by its index or its name; what is not a dyad between points refused by name.
+TEST_F(SensitivityCli, ATransmissionAnglesDerivativesWhenAsked) {
+  const test::FourBar f = test::fourBar(60, 20, 70, 50, 60, true, 35, 25);
+  const std::string path = save(f.m);
+  const test::CliResult res = run("sensitivity " + path + " --transmission 0 --steps 4");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  EXPECT_EQ(lines.at(0), "crank_deg,dimension,dmu_deg_per_unit");
+  Kinematics k;
+  ASSERT_TRUE(k.load(f.m).ok());
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dimensions(f.m)).ok());
+  const TransmissionJoint j = transmissionJoints(f.m).at(0);
+  const size_t n = s.dims().size();
+  ASSERT_EQ(lines.size(), 1 + 4 * n) << res.out;
+  for (int step = 0; step < 4; ++step) {
+    ASSERT_TRUE(k.moveTo(90.0 * step).ok());
+    ASSERT_TRUE(s.at(k).ok());
+    const std::vector<double> want = dyadAngleDerivatives(k, j, s);
+    for (size_t d = 0; d < n; ++d) {
+      const std::vector<std::string> row = split(lines[1 + step * n + d], ',');
+      ASSERT_EQ(row.size(), 3u);
+      EXPECT_EQ(parseNumber(row[0]), 90.0 * step);
+      EXPECT_EQ(row[1], s.dims()[d].name);
+      EXPECT_EQ(parseNumber(row[2]), want[d]) << row[1];
+    }
+  }
+  EXPECT_EQ(run("sensitivity " + path + " --transmission mu:coupler.B --steps 4").out, res.out);
+  EXPECT_EQ(run("sensitivity " + path + " --transmission coupler.B --steps 4").out, res.out);
+  test::CliResult bad = run("sensitivity " + path + " --transmission 1");
+  EXPECT_EQ(bad.exit, 2);
+  EXPECT_NE(bad.err.find("no such transmission angle (the model's: 0 mu:coupler.B)"),
+            std::string::npos)
+      << bad.err;
+  bad = run("sensitivity curved-guide --transmission 0");
+  EXPECT_EQ(bad.exit, 2);
+  EXPECT_NE(bad.err.find("mu:rod.B is a dyad with ground.guide's centre (an arc slot)"),
+            std::string::npos)
+      << bad.err;
+  bad = run("sensitivity slider-crank-22a-lambda-0.3 --transmission mu:rod.B");
+  EXPECT_EQ(bad.exit, 2);
+  EXPECT_NE(bad.err.find("mu:rod.B is a rod-slider angle"), std::string::npos) << bad.err;
+  EXPECT_TRUE(bad.out.empty()) << bad.out;
 }
 
 TEST_F(SensitivityCli, BadInputIsNamed) {

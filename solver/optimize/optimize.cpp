@@ -13,6 +13,7 @@
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
 #include "linkage/transmission.h"
+#include "linkage/transmission_sensitivity.h"
 #include "optimize/variables.h"
 
 namespace linkage {
@@ -60,15 +61,7 @@ struct Probe {
 // dimension v: each line turns by cross(u, du) / |u|^2, the angle by the difference.
 double dyadAngle(const Kinematics& k, const TransmissionJoint& j, const Sensitivity* sens, int v,
                  double* d) {
-  const Vec2 u = j.linkOuter.at(k) - j.linkAt.at(k), w = j.otherOuter.at(k) - j.otherAt.at(k);
-  const double turn = std::atan2(cross(u, w), u.dot(w));
-  if (sens && d) {
-    auto dp = [&](const Anchor& a) { return sens->point(k, a.point, v); };
-    const Vec2 du = dp(j.linkOuter) - dp(j.linkAt), dw = dp(j.otherOuter) - dp(j.otherAt);
-    const double dturn = cross(w, dw) / w.squaredNorm() - cross(u, du) / u.squaredNorm();
-    *d = (turn < 0 ? -dturn : dturn) / kDeg;
-  }
-  return std::abs(turn) / kDeg;
+  return dyadAngleSensitivity(k, j, sens, v, d);
 }
 
 // Transmission: the dyad's extremes over the turn against the limits.

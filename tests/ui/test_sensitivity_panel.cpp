@@ -14,6 +14,7 @@
 #include "linkage/io/model_lookup.h"
 #include "linkage/limits.h"
 #include "linkage/stroke_sensitivity.h"
+#include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
 #include "ui_test.h"
 
@@ -193,6 +194,50 @@ TEST(SensitivityPanel, AWindowsEnds) {
       << panel.summary();
 }
 
+// A dyad's transmission angle: after the windows, numbered as linkage-cli transmission numbers
+// them; at the crank angle the library's derivatives (tests/test_transmission_sensitivity.cpp
+// holds them to the law of cosines), which add up to 0 weighted by the lengths (an angle is
+// scale-free); followed by the pose, the turn's largest not computed again for it.
+TEST(SensitivityPanel, ATransmissionAngle) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("four-bar-crank-rocker")), nullptr));
+  doc.setCrankDeg(100);
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  const int at = panel.pointBox()->findText("transmission angle 0: mu:coupler.B");
+  ASSERT_EQ(at, panel.pointBox()->count() - 1);
+  panel.pointBox()->setCurrentIndex(at);
+  Q_EMIT panel.pointBox()->activated(at);
+  settle(panel);
+  const int turns = panel.turnComputations();
+  for (double deg : {100.0, 250.0}) {
+    doc.setCrankDeg(deg);
+    settle(panel);
+    const Mechanism& m = doc.design();
+    const Kinematics& k = doc.kinematics();
+    Sensitivity s;
+    ASSERT_TRUE(s.prepare(k, dimensions(m)).ok());
+    ASSERT_TRUE(s.at(k).ok());
+    const std::vector<double> want = dyadAngleDerivatives(k, transmissionJoints(m)[0], s);
+    ASSERT_EQ(panel.bars().size(), want.size());
+    double euler = 0, size = 0;
+    for (const SensitivityPanel::Bar& b : panel.bars())
+      for (size_t d = 0; d < want.size(); ++d)
+        if (s.dims()[d].name == b.dimension) {
+          EXPECT_EQ(b.now, want[d]) << b.dimension;
+          EXPECT_GE(b.peak, std::abs(b.now)) << b.dimension;
+          euler += s.dims()[d].value * b.now;
+          size += std::abs(s.dims()[d].value * b.now);
+        }
+    EXPECT_NEAR(euler, 0, 1e-12 * size) << deg;
+    EXPECT_TRUE(panel.summary().startsWith("mu:coupler.B is ")) << panel.summary();
+  }
+  EXPECT_EQ(panel.turnComputations(), turns);
+  shot(&panel, "transmission_sensitivity");
+}
+
 TEST(SensitivityPanel, WhatCannotBeDifferentiatedYetIsSaid) {
   Document doc;
   ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("cam-translating-roller")), nullptr));
@@ -202,6 +247,18 @@ TEST(SensitivityPanel, WhatCannotBeDifferentiatedYetIsSaid) {
   settle(panel);
   EXPECT_TRUE(panel.bars().empty());
   EXPECT_TRUE(panel.summary().startsWith("Not yet")) << panel.summary();
+  // A dyad with an arc slot's centre: its transmission angle listed, refused by name.
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("curved-guide")), nullptr));
+  settle(panel);
+  const int at = panel.pointBox()->findText("transmission angle 0: mu:rod.B");
+  ASSERT_GE(at, 0);
+  panel.pointBox()->setCurrentIndex(at);
+  Q_EMIT panel.pointBox()->activated(at);
+  settle(panel);
+  EXPECT_TRUE(panel.bars().empty());
+  EXPECT_TRUE(panel.summary().startsWith(
+      "Not yet: mu:rod.B is a dyad with ground.guide's centre (an arc slot)"))
+      << panel.summary();
 }
 
 }  // namespace

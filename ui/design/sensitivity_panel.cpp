@@ -15,6 +15,7 @@
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
 #include "linkage/stroke_sensitivity.h"
+#include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
 
 namespace linkage::ui {
@@ -83,8 +84,9 @@ SensitivityPanel::SensitivityPanel(Document* doc, QWidget* parent)
   // A stroke, a closest approach, a window's end are of the design, not of the pose: only a
   // point's derivatives at the crank angle follow it.
   connect(doc_, &Document::poseChanged, this, [this] {
-    const int at = point_->currentIndex();
-    if (at >= 0 && at < static_cast<int>(points_.size()) && quantity_->currentIndex() != kStroke)
+    const int at = point_->currentIndex(), points = static_cast<int>(points_.size());
+    if ((at >= 0 && at < points && quantity_->currentIndex() != kStroke) ||
+        at >= points + transmissionsFrom_)
       markStale();
   });
 }
@@ -113,10 +115,15 @@ void SensitivityPanel::fillPoints() {
       for (const QString& which : {tr("start"), tr("end")})
         ends << tr("window %1: its %2").arg(QString::fromStdString(w.name), which);
   watched += ends;
+  const int transmissionsFrom = static_cast<int>(watched.size());
+  const std::vector<TransmissionJoint> js = transmissionJoints(m);
+  for (size_t j = 0; j < js.size(); ++j)
+    watched << tr("transmission angle %1: %2").arg(j).arg(QString::fromStdString(js[j].label));
   if (ids == points_ && watched == clearances_) return;
   points_ = ids;
   clearances_ = watched;
-  windowsFrom_ = static_cast<int>(watched.size() - ends.size());
+  windowsFrom_ = transmissionsFrom - static_cast<int>(ends.size());
+  transmissionsFrom_ = transmissionsFrom;
   const QSignalBlocker block(point_);
   point_->clear();
   for (PointId p : points_) point_->addItem(QString::fromStdString(m.pointLabel(p)));
@@ -147,8 +154,10 @@ void SensitivityPanel::compute() {
     const int n = at - static_cast<int>(points_.size());
     if (n < windowsFrom_)
       clearanceBars(n);
-    else
+    else if (n < transmissionsFrom_)
       windowBars(n - windowsFrom_);
+    else
+      transmissionBars(n - transmissionsFrom_);
     return;
   }
   quantity_->setEnabled(true);
@@ -180,24 +189,21 @@ void SensitivityPanel::compute() {
   const bool here = s.at(k).ok();
   for (size_t d = 0; d < n && here; ++d)
     bars_[d].now = component(s, k, p, static_cast<int>(d), quantity, which);
-  // The turn's largest is of the design and the output, not of the pose: computed again only
-  // when either changed.
-  const std::tuple<PointId, int, int> key{p, quantity, which};
-  if (turnStale_ || key != turnFor_ || turnPeak_.size() != n) {
-    turnPeak_ = turnPeaks(s, k, p, quantity, which);
-    ++turnComputations_;
-    turnFor_ = key;
-    turnStale_ = false;
-  }
-  for (size_t d = 0; d < n; ++d) bars_[d].peak = turnPeak_[d];
+  const std::vector<double>& peak = turnPeaks(
+      {p, quantity, which}, s, k, [&](const Sensitivity& ss, const Kinematics& kk, int d) {
+        return component(ss, kk, p, d, quantity, which);
+      });
+  for (size_t d = 0; d < n; ++d) bars_[d].peak = peak[d];
   for (Bar& b : bars_) b.peak = std::max(b.peak, std::abs(b.now));
   rank();
   deadHere_ = !here;
   draw();
 }
 
-std::vector<double> SensitivityPanel::turnPeaks(Sensitivity& s, Kinematics k, PointId p,
-                                                int quantity, int which) const {
+const std::vector<double>& SensitivityPanel::turnPeaks(const std::tuple<PointId, int, int>& key,
+                                                       Sensitivity& s, Kinematics k,
+                                                       const PerDimension& f) {
+  if (!turnStale_ && key == turnFor_ && turnPeak_.size() == s.dims().size()) return turnPeak_;
   // Over a turn from here (the motion followed continuously), singular poses left out.
   std::vector<double> peak(s.dims().size(), 0.0);
   const double from = k.crankDeg();
@@ -205,10 +211,13 @@ std::vector<double> SensitivityPanel::turnPeaks(Sensitivity& s, Kinematics k, Po
     if (!k.moveTo(from + t).ok()) break;
     if (!s.at(k).ok()) continue;
     for (size_t d = 0; d < peak.size(); ++d)
-      peak[d] =
-          std::max(peak[d], std::abs(component(s, k, p, static_cast<int>(d), quantity, which)));
+      peak[d] = std::max(peak[d], std::abs(f(s, k, static_cast<int>(d))));
   }
-  return peak;
+  turnPeak_ = std::move(peak);
+  ++turnComputations_;
+  turnFor_ = key;
+  turnStale_ = false;
+  return turnPeak_;
 }
 
 bool SensitivityPanel::showValues(const std::vector<Dimension>& dims,
@@ -293,6 +302,46 @@ void SensitivityPanel::windowBars(int n) {
                         .arg(end ? i.toDeg : i.fromDeg, 0, 'f', 2)
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4));
+}
+
+void SensitivityPanel::transmissionBars(int n) {
+  const Mechanism& m = doc_->design();
+  const TransmissionJoint j = transmissionJoints(m).at(n);
+  Kinematics k = doc_->kinematics();
+  Sensitivity s;
+  Status st = dyadDifferentiable(m, j);
+  if (st.ok()) st = s.prepare(k, dimensions(k.mechanism()));
+  if (!st.ok()) {
+    showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
+    return;
+  }
+  const bool here = s.at(k).ok();
+  const std::vector<double> now =
+      here ? dyadAngleDerivatives(k, j, s) : std::vector<double>(s.dims().size(), 0.0);
+  const std::vector<double>& peak =
+      turnPeaks({PointId{}, -1, n}, s, k, [&j](const Sensitivity& ss, const Kinematics& kk, int d) {
+        double v = 0;
+        dyadAngleSensitivity(kk, j, &ss, d, &v);
+        return v;
+      });
+  bars_.clear();
+  for (size_t d = 0; d < now.size(); ++d)
+    bars_.push_back({s.dims()[d].name, now[d], std::max(peak[d], std::abs(now[d]))});
+  rank();
+  deadHere_ = !here;
+  draw();
+  plot_->xAxis->setLabel(
+      tr("degrees of the transmission angle per unit of the dimension (mm, degree, ratio):"
+         " blue at this crank angle, grey the largest over a turn"));
+  plot_->replot();
+  if (!here || bars_.empty()) return;
+  summary_->setText(tr("%1 is %2° here; it changes most with %3 (%4° per unit here, up to %5° "
+                       "over a turn)")
+                        .arg(QString::fromStdString(j.label))
+                        .arg(dyadAngleSensitivity(k, j, nullptr, 0, nullptr), 0, 'f', 2)
+                        .arg(QString::fromStdString(bars_[0].dimension))
+                        .arg(bars_[0].now, 0, 'g', 4)
+                        .arg(bars_[0].peak, 0, 'g', 4));
 }
 
 void SensitivityPanel::draw() {

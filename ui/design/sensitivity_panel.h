@@ -2,18 +2,19 @@
 // chosen output, a point's x, y or the length of its move (position, velocity or acceleration),
 // or its stroke (along its slot, else y: linkage/stroke_sensitivity.h), or a watched
 // clearance's closest approach (linkage/clearance_sensitivity.h), or a timing window's start or
-// end (linkage/window_sensitivity.h), as a ranked bar
-// chart: for each dimension (linkage/sensitivity.h, named as the typed
-// dimensions are) its derivative at the crank angle (signed, in colour) over the largest of its
-// size over a turn (grey, every 5 degrees), the largest first. Exact, from the constraint
-// Jacobian, never by differences. Computed while seen (docks/dock_panel.h); the text under the
-// chart names the one that matters most, and what the solver cannot differentiate yet is said.
-// Its second tab carries tolerances through the motion (design/tolerance_view.h) for the same
-// output.
+// end (linkage/window_sensitivity.h), or a dyad's transmission angle
+// (linkage/transmission_sensitivity.h), as a ranked bar chart: for each dimension
+// (linkage/sensitivity.h, named as the typed dimensions are) its derivative at the crank angle
+// (signed, in colour) over the largest of its size over a turn (grey, every 5 degrees), the largest
+// first. Exact, from the constraint Jacobian, never by differences. Computed while seen
+// (docks/dock_panel.h); the text under the chart names the one that matters most, and what the
+// solver cannot differentiate yet is said. Its second tab carries tolerances through the motion
+// (design/tolerance_view.h) for the same output.
 #pragma once
 
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -68,14 +69,20 @@ class SensitivityPanel : public DockPanel {
   void clearanceBars(int n);
   // A window's first interval's start or end (linkage/window_sensitivity.h): end n of the list.
   void windowBars(int n);
+  // Transmission angle n (as linkage-cli transmission numbers them): at the crank angle and the
+  // turn's largest, as a point's; what is not a dyad between points said.
+  void transmissionBars(int n);
   // The bars of one derivative a dimension, ranked and drawn with the axis's label; false when
   // there are none.
   bool showValues(const std::vector<Dimension>& dims, const std::vector<double>& derivative,
                   const QString& axis);
   void rank();  // the bars, the largest (over a turn) first
-  // Each dimension's largest derivative size over a turn from k's pose (on a copy).
-  std::vector<double> turnPeaks(Sensitivity& s, Kinematics k, PointId p, int quantity,
-                                int which) const;
+  // Each dimension's largest |f| over a turn from k's pose (on a copy), of the design and the
+  // output `key` (a point, quantity, component; a transmission angle: no point, -1, its number):
+  // computed again only when either changed.
+  using PerDimension = std::function<double(const Sensitivity&, const Kinematics&, int dim)>;
+  const std::vector<double>& turnPeaks(const std::tuple<PointId, int, int>& key, Sensitivity& s,
+                                       Kinematics k, const PerDimension& f);
 
   Document* doc_;
   QComboBox *point_, *quantity_, *component_;
@@ -84,8 +91,10 @@ class SensitivityPanel : public DockPanel {
   QTabWidget* tabs_;
   ToleranceView* tolerances_;
   std::vector<PointId> points_;
-  QStringList clearances_;  // the file's watched clearances, then windows' ends, after the points
-  int windowsFrom_ = 0;     // where the windows' ends start in clearances_
+  // After the points: the file's watched clearances, then windows' ends, then transmission angles.
+  QStringList clearances_;
+  int windowsFrom_ = 0;        // where the windows' ends start in clearances_
+  int transmissionsFrom_ = 0;  // where the transmission angles start
   std::vector<Bar> bars_;
   bool deadHere_ = false;
   // The tolerances' band is of a design and an output: computed again only when they change.
