@@ -132,8 +132,10 @@ Status pinPlay(const Mechanism& m, const std::string& pin, PinPlay& out) {
                               "moving either would open them as well");
     out.joint = j.id;
     out.point = p;
-    out.x = Dimension{pin + ".play.x", 0, Dimension::Unit::Mm, {{p, Vec2::UnitX()}}, {}, {}};
-    out.y = Dimension{pin + ".play.y", 0, Dimension::Unit::Mm, {{p, Vec2::UnitY()}}, {}, {}};
+    out.x =
+        Dimension{pin + ".play.x", 0, Dimension::Unit::Mm, {{p, Vec2::UnitX()}}, {}, {}, {}, {}};
+    out.y =
+        Dimension{pin + ".play.y", 0, Dimension::Unit::Mm, {{p, Vec2::UnitY()}}, {}, {}, {}, {}};
     return Status::success();
   }
   return Status::badModel("no pin joint " + pin +
