@@ -73,6 +73,8 @@ class SensitivityPanel : public DockPanel {
   bool showValues(const std::vector<Dimension>& dims, const std::vector<double>& derivative,
                   const QString& axis);
   void rank();  // the bars, the largest (over a turn) first
+  // The component z (the world's) offered on a machine in space only.
+  void offerZ(bool space);
   // Each dimension's largest derivative size over a turn from k's pose (on a copy).
   std::vector<double> turnPeaks(Sensitivity& s, Kinematics k, PointId p, int quantity,
                                 int which) const;
