@@ -1,10 +1,10 @@
 // Sensitivities of machines in space (linkage/sensitivity.h, Space::World; docs/sensitivity.md,
 // "In space"): the RSSR crank-rocker's rocker point against its closed form differentiated by
 // complex step (the rocker's equation a cos psi + b sin psi = c solved by the half-angle formula
-// over std::complex, each dimension stepped by i 1e-30), and Euler's theorem on every spatial
-// example: scaling every length, the ground's coordinates and the planes' origins scales the
-// machine in the world, so the lengths times their derivatives add up to each point's world
-// position, velocity and acceleration.
+// over std::complex, polished by Newton's steps on it, each dimension stepped by i 1e-30), and
+// Euler's theorem on every spatial example: scaling every length, the ground's coordinates and the
+// planes' origins scales the machine in the world, so the lengths times their derivatives add up to
+// each point's world position, velocity and acceleration.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -80,12 +80,19 @@ struct RssrClosedForm {
     const C c = dot(AH, AH) + w * w - l * l;
     const C a1 = a * std::cos(near) + b * std::sin(near),
             b1 = -a * std::sin(near) + b * std::cos(near);
+    // Of the two forms of each root, t = (b' + s q) / (a' + c) = (c - a') / (b' - s q), the
+    // one without cancellation; then two Newton steps on the equation (over std::complex, so
+    // they polish the derivative too) take it to rounding.
     C psi = 0;
     double best = INFINITY;
     for (double s : {1.0, -1.0}) {
-      const C u = 2.0 * std::atan((b1 + s * std::sqrt(a1 * a1 + b1 * b1 - c * c)) / (a1 + c));
+      const C q = std::sqrt(a1 * a1 + b1 * b1 - c * c);
+      const C t = s * b1.real() >= 0 ? (b1 + s * q) / (a1 + c) : (c - a1) / (b1 - s * q);
+      const C u = 2.0 * std::atan(t);
       if (std::abs(u.real()) < best) best = std::abs(u.real()), psi = near + u;
     }
+    for (int it = 0; it < 2; ++it)
+      psi -= (a * std::cos(psi) + b * std::sin(psi) - c) / (b * std::cos(psi) - a * std::sin(psi));
     const C3 e = std::cos(psi) * X + std::sin(psi) * Y;
     const C3 e1 = (-std::sin(psi)) * X + std::cos(psi) * Y;
     const C3 Cw = centre + w * e, C1 = w * e1, C2 = (-w) * e;
@@ -165,7 +172,7 @@ TEST(SpatialSensitivity, TheRssrRockerPointMatchesItsClosedFormByComplexStep) {
     }
   }
   std::printf("  the closed form's point against the solver's: %.2e mm\n", position);
-  EXPECT_LT(position, 1e-9);
+  EXPECT_LT(position, 1e-12);
   double any[3] = {0, 0, 0}, worst[3] = {0, 0, 0};
   for (size_t d = 0; d < n; ++d)
     for (int o = 0; o < 3; ++o) any[o] = std::max(any[o], peak[d][o]);
@@ -180,7 +187,7 @@ TEST(SpatialSensitivity, TheRssrRockerPointMatchesItsClosedFormByComplexStep) {
   }
   std::printf("  worst: position %.2e  velocity %.2e  acceleration %.2e\n", worst[0], worst[1],
               worst[2]);
-  for (double e : worst) EXPECT_LT(e, 1e-9);
+  for (double e : worst) EXPECT_LT(e, 1e-12);  // the issue asks 1e-9
   // Every dimension moves the point, and so is tested, but four the closed form says move
   // nothing: the pivots' moves along their own shafts (the crank's O along z, the rocker's H
   // along x, its plane's normal) and the rocker plane's origin in the plane (the pin at H holds
@@ -231,7 +238,7 @@ TEST(SpatialSensitivity, ScalingTheWorldScalesEveryPointOfTheSpatialExamples) {
     }
     std::printf("  %-20s scaling: worst error %.2e of %.4g mm (%zu dimensions)\n", name.c_str(),
                 worst, size, dims.size());
-    EXPECT_LT(worst, 1e-9 * size) << name;
+    EXPECT_LT(worst, 1e-11 * size) << name;
   }
 }
 
