@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "analysis/dimensions_space.h"
 #include "linkage/elements.h"
 #include "linkage/gear.h"
 #include "linkage/guide.h"
@@ -94,6 +95,11 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
   for (size_t k = 0; k < dims.size(); ++k)
     if (delta[k] != 0) c[dims[k].name] = delta[k];
   if (c.empty()) return Status::success();
+  // A machine in space's own dimensions are not drawn anew yet: refused by name, not ignored.
+  for (size_t k = 0; k < dims.size(); ++k)
+    if (delta[k] != 0)
+      if (std::string why = internal::notDrawnYet(m, dims[k]); !why.empty())
+        return Status::badModel(dims[k].name + ": " + why);
   for (size_t k = 0; k < dims.size(); ++k) {
     if (!dims[k].ratioOf || delta[k] == 0) continue;
     for (Joint& j : m.joints)
