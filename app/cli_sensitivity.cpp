@@ -7,6 +7,7 @@
 #include "linkage/clearance_sensitivity.h"
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
+#include "linkage/space.h"
 #include "linkage/stroke_sensitivity.h"
 #include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
@@ -59,7 +60,14 @@ Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension 
 significant digits. A singular position (a dead point of the output, where the derivatives are
 unbounded) writes no rows and says so on standard error.
 
-Not yet: spatial models (planes), ball rods, cams.
+A machine in space (the file has "planes" or a point with three numbers): the point's world x,
+y, z, columns dx_mm_per_mm,dy_mm_per_mm,dz_mm_per_mm (dvz, daz likewise); a body's dimensions
+in its plane's coordinates, and after all the others each moving point's depth
+(body.P.depth, where written or at a ball rod's end), each ground point's z, each ball rod's
+length (ball-rod:A.P.length) and each plane's origin (planes.NAME.origin.x, .y, .z); a ground
+slot's offset and angle in its block's plane. --stroke, --clearance and --window refuse it.
+
+Not yet: cams.
 
 Exit status: 0 done, 2 bad input (an unknown point, a model it cannot differentiate yet), 3 the
 crank cannot turn fully (the rows up to there are written).
@@ -69,6 +77,7 @@ struct Options {
   std::string model, point;
   int steps = 360;
   bool velocity = false, acceleration = false, stroke = false;
+  bool space = false;  // the model is spatial: x, y, z in the world
   int clearance = -1;
   std::string window, transmission;
 };
@@ -76,6 +85,14 @@ struct Options {
 // Appends ",x,y" (one string appended at a time: no temporaries to concatenate).
 void pair(std::string& out, const Vec2& v) {
   for (double c : {v.x(), v.y()}) {
+    out += ',';
+    out += formatNumber(c);
+  }
+}
+
+// Appends ",x,y,z".
+void triple(std::string& out, const Vec3& v) {
+  for (double c : {v.x(), v.y(), v.z()}) {
     out += ',';
     out += formatNumber(c);
   }
@@ -90,9 +107,15 @@ std::string rows(const Kinematics& k, const Sensitivity& s, PointId p, double de
     out += at;
     out += ',';
     out += s.dims()[d].name;
-    pair(out, s.point(k, p, i));
-    if (o.velocity) pair(out, s.velocity(k, p, i));
-    if (o.acceleration) pair(out, s.acceleration(k, p, i));
+    if (o.space) {
+      triple(out, s.point3(k, p, i));
+      if (o.velocity) triple(out, s.velocity3(k, p, i));
+      if (o.acceleration) triple(out, s.acceleration3(k, p, i));
+    } else {
+      pair(out, s.point(k, p, i));
+      if (o.velocity) pair(out, s.velocity(k, p, i));
+      if (o.acceleration) pair(out, s.acceleration(k, p, i));
+    }
     out += '\n';
   }
   return out;
@@ -225,7 +248,20 @@ int transmission(Kinematics& k, Sensitivity& sens, const Options& o) {
   return failed.ok() ? kOk : exitFor(failed);
 }
 
-int sensitivity(const Options& o) {
+// The CSV header of the point's rows.
+std::string header(const Options& o) {
+  std::string out = "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm";
+  if (o.space) out += ",dz_mm_per_mm";
+  if (o.velocity)
+    out += o.space ? ",dvx_mm_s_per_mm,dvy_mm_s_per_mm,dvz_mm_s_per_mm"
+                   : ",dvx_mm_s_per_mm,dvy_mm_s_per_mm";
+  if (o.acceleration)
+    out += o.space ? ",dax_mm_s2_per_mm,day_mm_s2_per_mm,daz_mm_s2_per_mm"
+                   : ",dax_mm_s2_per_mm,day_mm_s2_per_mm";
+  return out + "\n";
+}
+
+int sensitivity(Options o) {
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   if (o.clearance >= 0) return clearance(*m, o.clearance);
@@ -254,15 +290,16 @@ int sensitivity(const Options& o) {
     return exitFor(s);
   }
   Sensitivity sens;
-  if (Status s = sens.prepare(k, dimensions(k.mechanism())); !s.ok()) {
+  // The stroke's own analysis refuses a machine in space (stroke_sensitivity.h).
+  if (Status s = sens.prepare(k, dimensions(k.mechanism()),
+                              o.stroke ? Sensitivity::Space::Refuse : Sensitivity::Space::World);
+      !s.ok()) {
     error("sensitivity: " + s.message);
     return exitFor(s);
   }
   if (o.stroke) return stroke(k, p);
-  std::string out = "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm";
-  if (o.velocity) out += ",dvx_mm_s_per_mm,dvy_mm_s_per_mm";
-  if (o.acceleration) out += ",dax_mm_s2_per_mm,day_mm_s2_per_mm";
-  out += "\n";
+  o.space = isSpatial(k.mechanism());
+  std::string out = header(o);
   Status failed;
   for (int i = 0; i < o.steps && failed.ok(); ++i) {
     const double deg = 360.0 * i / o.steps;

@@ -217,10 +217,51 @@ TEST_F(SensitivityCli, BadInputIsNamed) {
   res = run("sensitivity " + model + " --point coupler.P --steps 0");
   EXPECT_EQ(res.exit, 2);
   EXPECT_NE(res.err.find("--steps"), std::string::npos) << res.err;
-  res = run("sensitivity rssr-crank-rocker --point rocker.C");
+  // A machine in space: its stroke is not differentiated yet, and says so.
+  res = run("sensitivity rssr-crank-rocker --point rocker.C --stroke");
   EXPECT_EQ(res.exit, 2);
   EXPECT_NE(res.err.find("spatial model"), std::string::npos) << res.err;
+  EXPECT_NE(res.err.find("linkage-cli sensitivity --point"), std::string::npos) << res.err;
   EXPECT_TRUE(res.out.empty()) << res.out;
+}
+
+// A machine in space: the point's world x, y, z (and their rates') derivatives, the library's
+// point3(), velocity3() and acceleration3() to the last bit, its rods and planes among the
+// dimensions.
+TEST_F(SensitivityCli, AMachineInSpaceGetsTheDzColumns) {
+  const test::CliResult res =
+      run("sensitivity rssr-crank-rocker --point rocker.C --steps 4 --velocity --acceleration");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  EXPECT_EQ(lines[0],
+            "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm,dz_mm_per_mm,dvx_mm_s_per_mm,"
+            "dvy_mm_s_per_mm,dvz_mm_s_per_mm,dax_mm_s2_per_mm,day_mm_s2_per_mm,"
+            "daz_mm_s2_per_mm");
+  const Mechanism m =
+      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/rssr-crank-rocker.linkage.json")
+          .mechanism.value();
+  const std::vector<Dimension> dims = dimensions(m);
+  ASSERT_EQ(lines.size(), 1 + 4 * dims.size()) << res.out;
+  const PointId C = *m.findPoint("rocker.C");
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dims, Sensitivity::Space::World).ok());
+  ASSERT_TRUE(k.moveTo(90).ok());
+  ASSERT_TRUE(s.at(k).ok());
+  bool rod = false;
+  for (size_t d = 0; d < dims.size(); ++d) {
+    const std::vector<std::string> row = split(lines[1 + dims.size() + d], ',');
+    ASSERT_EQ(row.size(), 11u);
+    EXPECT_EQ(row[0], "90");
+    EXPECT_EQ(row[1], dims[d].name);
+    rod = rod || row[1] == "ball-rod:crank.A.length";
+    const int i = static_cast<int>(d);
+    const Vec3 want[3] = {s.point3(k, C, i), s.velocity3(k, C, i), s.acceleration3(k, C, i)};
+    for (int o = 0; o < 3; ++o)
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(parseNumber(row[2 + 3 * o + c]), want[o][c]) << row[1];
+  }
+  EXPECT_TRUE(rod);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "analysis/dimensions_space.h"
 #include "linkage/elements.h"
 #include "linkage/gear.h"
 #include "linkage/guide.h"
@@ -94,6 +95,11 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
   for (size_t k = 0; k < dims.size(); ++k)
     if (delta[k] != 0) c[dims[k].name] = delta[k];
   if (c.empty()) return Status::success();
+  // A machine in space's own dimensions are not drawn anew yet: refused by name, not ignored.
+  for (size_t k = 0; k < dims.size(); ++k)
+    if (delta[k] != 0)
+      if (std::string why = internal::notDrawnYet(m, dims[k]); !why.empty())
+        return Status::badModel(dims[k].name + ": " + why);
   for (size_t k = 0; k < dims.size(); ++k) {
     if (!dims[k].ratioOf || delta[k] == 0) continue;
     for (Joint& j : m.joints)
@@ -132,8 +138,10 @@ Status pinPlay(const Mechanism& m, const std::string& pin, PinPlay& out) {
                               "moving either would open them as well");
     out.joint = j.id;
     out.point = p;
-    out.x = Dimension{pin + ".play.x", 0, Dimension::Unit::Mm, {{p, Vec2::UnitX()}}, {}, {}};
-    out.y = Dimension{pin + ".play.y", 0, Dimension::Unit::Mm, {{p, Vec2::UnitY()}}, {}, {}};
+    out.x =
+        Dimension{pin + ".play.x", 0, Dimension::Unit::Mm, {{p, Vec2::UnitX()}}, {}, {}, {}, {}};
+    out.y =
+        Dimension{pin + ".play.y", 0, Dimension::Unit::Mm, {{p, Vec2::UnitY()}}, {}, {}, {}, {}};
     return Status::success();
   }
   return Status::badModel("no pin joint " + pin +

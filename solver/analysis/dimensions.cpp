@@ -1,10 +1,12 @@
 // The dimensions of a mechanism and what each moves (linkage/sensitivity.h).
 #include <cmath>
 
+#include "analysis/dimensions_space.h"
 #include "linkage/elements.h"
 #include "linkage/gear.h"
 #include "linkage/guide.h"
 #include "linkage/sensitivity.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -89,6 +91,8 @@ void slotDimensions(const Mechanism& m, const Slot& s, std::vector<Dimension>& o
   if (s.arc()) return;
   const std::optional<Guide> g = guideOf(s);
   if (!g) return;
+  // In space the ground's slot is in the plane of its block, which its offset and angle keep.
+  if (m.body(s.body)->ground && isSpatial(m)) return internal::groundSlotInSpace(m, s, out);
   const std::string pre = m.slotLabel(s.id) + ".";
   // Measured from the body's first point (the ground's: the drawing's origin), so that the
   // body's lengths and its slot's offset scale together.
@@ -130,6 +134,7 @@ std::vector<Dimension> dimensions(const Mechanism& m) {
     d.ratioOf = j.id;
     out.push_back(d);
   }
+  if (internal::hasSpaceDimensions(m)) internal::spaceDimensions(m, out);
   return out;
 }
 

@@ -11,11 +11,16 @@
 //   OnCircle    Phi = (d . d - rho^2)/(2 rho) V = d . d' / rho      (centre and radius: arc slots
 //                                                                   have no dimension)
 //   Angles      Phi = L (sum c_k theta_k ...) V = L (sum c_k w_k ...) (a gear's ratio: dc)
+//   Distance3   Phi = (D . D - l^2)/(2 l)    V = D . D' / l        (a ball rod, D in the world:
+//                                                                   its ends' depths, dl)
 //
 // each changed to first order by the bodies' changes (dr, dtheta) and the constants' (ds, dn, dc).
+// In space each row is in its plane class's frame (analysis/sensitivity_space.h turns the
+// drawing's moves into it); a ball rod's ends are lifted to the world (elements/distance3.h).
 #include <Eigen/LU>
 #include <cmath>
 
+#include "analysis/sensitivity_space.h"
 #include "kinematics/kinematics_state.h"
 #include "linkage/elements.h"
 #include "linkage/guide.h"
@@ -26,61 +31,77 @@ namespace linkage {
 
 namespace {
 
-struct Moves {  // one dimension's move of the drawing, by id value
-  const std::vector<Vec2>& point;
+struct Moves {  // one dimension's move of the drawing, by id value (Sensitivity::pointMove_)
+  const std::vector<Vec3>& point;
   const Dimension& dim;
-  Vec2 at(PointId p) const { return p.value < point.size() ? point[p.value] : Vec2::Zero(); }
+  const internal::SpaceMoves& space;
+  Vec3 kept(PointId p) const { return p.value < point.size() ? point[p.value] : Vec3::Zero(); }
+  // In class cls's frame, and along its normal.
+  Vec2 at(PointId p, int cls) const { return space.inClass(p, kept(p), cls); }
+  double depth(PointId p, int cls) const { return space.depthIn(p, kept(p), cls); }
 };
 
 // The block's point of a slider in an arc slot is compiled as the point at the arc's centre,
 // p - radius (p - c) / |p - c|: its move for a move dp of p (the arc held).
-Vec2 arcBlockMove(const Mechanism& m, const Joint& j, const Vec2& dp) {
-  const std::optional<Guide> g = guideOf(*m.slot(j.slot));
-  const Vec2 d = m.point(j.a)->pos - g->centre;
+Vec2 arcBlockMove(const Mechanism& m, const Joint& j, const Moves& mv, int cls) {
+  const Vec2 dp = mv.at(j.a, cls);
+  const std::optional<Guide> g = guideOf(mv.space.slot(*m.slot(j.slot), cls));
+  const Vec2 d = mv.space.drawn(*m.point(j.a), cls) - g->centre;
   const Vec2 u = d.normalized();
   return dp - g->radius / d.norm() * (dp - u * u.dot(dp));
 }
 
 // A straight slot's point u (its first end) and unit normal n as they move.
-void slotMove(const Mechanism& m, const Joint& j, const Dimension& dim, Vec2& du, Vec2& dn) {
+void slotMove(const Mechanism& m, const Joint& j, const Moves& mv, int cls, Vec2& du, Vec2& dn) {
   du = dn = Vec2::Zero();
-  for (const Dimension::SlotMove& s : dim.slots) {
+  for (const Dimension::SlotMove& s : mv.dim.slots) {
     if (s.slot != j.slot) continue;
-    const Slot& slot = *m.slot(j.slot);
+    const Slot slot = mv.space.slot(*m.slot(j.slot), cls);
+    Vec2 d0, d1;
+    mv.space.slotMove(*m.slot(j.slot), s, cls, d0, d1);
     const Vec2 t = slot.p1 - slot.p0;
     const double len = t.norm();
-    const Vec2 e = t / len, dt = s.p1 - s.p0;
-    du = s.p0;
+    const Vec2 e = t / len, dt = d1 - d0;
+    du = d0;
     dn = perp((dt - e * e.dot(dt)) / len);
   }
 }
 
 // A row's constants as they move with a dimension: its local vectors s, a straight slot's
-// normal n, its coefficients c.
+// normal n, its coefficients c; a ball rod's ends' depths and its length.
 struct RowMove {
   Vec2 s[2] = {Vec2::Zero(), Vec2::Zero()};
   Vec2 n = Vec2::Zero();
   double c[3] = {0, 0, 0};
+  double depth[2] = {0, 0}, l = 0;
 };
 
 RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& mv) {
   RowMove out;
   const Role role = kindOf(j).role;
+  const int cls = mv.space.rowClass(r);
   switch (r.kind) {
     case Primitive::Coincident:
       if (role == Role::Prismatic) {
-        out.s[0] = arcBlockMove(m, j, mv.at(j.a));
+        out.s[0] = arcBlockMove(m, j, mv, cls);
       } else {
-        out.s[0] = mv.at(j.a);
-        out.s[1] = mv.at(j.b);
+        out.s[0] = mv.at(j.a, cls);
+        out.s[1] = mv.at(j.b, cls);
       }
       break;
     case Primitive::OnLine:
-      out.s[0] = mv.at(j.a);
-      slotMove(m, j, mv.dim, out.s[1], out.n);
+      out.s[0] = mv.at(j.a, cls);
+      slotMove(m, j, mv, cls, out.s[1], out.n);
       break;
     case Primitive::OnCircle:  // arc slots have no dimension: centre and radius stay
-      out.s[0] = mv.at(j.a);
+      out.s[0] = mv.at(j.a, cls);
+      break;
+    case Primitive::Distance3:  // each end in its own class (elements/ball_rod.cpp)
+      for (int e = 0; e < 2; ++e) {
+        out.s[e] = mv.at(e ? j.b : j.a, r.frame[e]);
+        out.depth[e] = mv.depth(e ? j.b : j.a, r.frame[e]);
+      }
+      out.l = mv.dim.lengthOf == j.id ? 1 : 0;
       break;
     case Primitive::Angles:
       // theta_b - ratio theta_a + (ratio - 1) theta_c: dc = (0, -1, 1) per unit ratio.
@@ -141,6 +162,27 @@ double lineChange(const Row& r, const Moving::At& p, const Moving::At& q, const 
   return dn2.dot(d) + n2.dot(dd) + 2 * (dn1.dot(v) + n1.dot(dv)) + dn.dot(a) + n.dot(da);
 }
 
+// A ball rod's row: D = W_i - W_j in the world, each end lifted from its class frame; at the
+// pose Phi = V = A = 0, so dPhi = D . dD / l - dl, dV = (dD . D' + D . dD') / l and
+// dA = (2 D' . dD' + dD . D'' + D . dD'') / l.
+void distance3Change(const System& sys, const Row& r, const Moving::At& p, const Moving::At& q,
+                     const RowMove& mv, RowChange& out) {
+  const Plane &fi = sys.frames[r.frame[0]], &fj = sys.frames[r.frame[1]];
+  auto lift = [](const Plane& f, const Vec2& v) -> Vec3 {
+    return v.x() * f.xAxis + v.y() * f.yAxis;
+  };
+  const Vec3 D = fi.origin + lift(fi, p.p) + r.depth[0] * fi.normal() - fj.origin - lift(fj, q.p) -
+                 r.depth[1] * fj.normal();
+  const Vec3 dD =
+      lift(fi, p.dp) + mv.depth[0] * fi.normal() - lift(fj, q.dp) - mv.depth[1] * fj.normal();
+  const Vec3 v = lift(fi, p.v) - lift(fj, q.v), dv = lift(fi, p.dv) - lift(fj, q.dv);
+  const Vec3 a = lift(fi, p.a) - lift(fj, q.a), da = lift(fi, p.da) - lift(fj, q.da);
+  const double l = r.c[0];
+  out.phi[0] = D.dot(dD) / l - mv.l;
+  out.v[0] = (dD.dot(v) + D.dot(dv)) / l;
+  out.a[0] = (2 * v.dot(dv) + dD.dot(a) + D.dot(da)) / l;
+}
+
 RowChange rowChange(const System& sys, const Row& r, const Moving& i, const Moving& j,
                     const Moving& k, const RowMove& mv) {
   RowChange out;
@@ -169,6 +211,9 @@ RowChange rowChange(const System& sys, const Row& r, const Moving& i, const Movi
       }
       break;
     }
+    case Primitive::Distance3:
+      distance3Change(sys, r, p, q, mv, out);
+      break;
     default:
       break;
   }
@@ -203,17 +248,20 @@ void rowChanges(const Mechanism& m, const System& sys, const std::vector<BodyVie
 }
 
 // What prepare() cannot differentiate, named; "" when it can.
-std::string unsupported(const Mechanism& m, const System& sys) {
-  if (sys.frames.size() > 1)
-    return "sensitivities of a spatial model (planes) are not computed yet";
+std::string unsupported(const Mechanism& m, const System& sys, Sensitivity::Space space) {
+  const bool world = space == Sensitivity::Space::World;
+  if (sys.frames.size() > 1 && !world)
+    return "sensitivities of a spatial model (planes) are not computed here yet (a point's "
+           "world x, y, z are: linkage-cli sensitivity --point)";
   for (const Row& r : sys.cons)
-    if (r.kind == Primitive::Distance3)
+    if (r.kind == Primitive::Distance3 && !world)
       return "sensitivities through a ball rod (" + jointLabel(m, m.joints[r.joint].id) +
-             ") are not computed yet";
+             ") are not computed here yet (a point's world x, y, z are: linkage-cli "
+             "sensitivity --point)";
   for (const Joint& j : m.joints) {
     const Role role = kindOf(j).role;
     if (role != Role::Revolute && role != Role::Prismatic && role != Role::PointOnCurve &&
-        role != Role::Coupling)
+        role != Role::Coupling && !(world && role == Role::Distance))
       return std::string("sensitivities through a ") + kindOf(j).name + " (" + jointLabel(m, j.id) +
              ") are not computed yet";
   }
@@ -222,19 +270,30 @@ std::string unsupported(const Mechanism& m, const System& sys) {
 
 }  // namespace
 
-Status Sensitivity::prepare(const Kinematics& k, std::vector<Dimension> dims) {
+Status Sensitivity::prepare(const Kinematics& k, std::vector<Dimension> dims, Space space) {
   dims_ = std::move(dims);
   pointMove_.clear();
   dq_.resize(0, 0);
   if (!k.valid()) return Status::badModel("no mechanism is loaded");
   const KinematicsState& s = internal::state(k);
-  if (std::string why = unsupported(s.mech, s.sys); !why.empty()) return Status::badModel(why);
+  if (std::string why = unsupported(s.mech, s.sys, space); !why.empty())
+    return Status::badModel(why);
   size_t ids = 0;
   for (const Point& p : s.mech.points) ids = std::max<size_t>(ids, p.id.value + 1);
-  pointMove_.assign(dims_.size(), std::vector<Vec2>(ids, Vec2::Zero()));
-  for (size_t d = 0; d < dims_.size(); ++d)
-    for (const auto& [p, move] : dims_[d].points)
-      if (p.value < ids) pointMove_[d][p.value] += move;
+  const internal::SpaceMoves sm(s.mech, s.sys);
+  std::vector<Vec2> move(ids);
+  std::vector<double> depth(ids);
+  pointMove_.assign(dims_.size(), std::vector<Vec3>(ids, Vec3::Zero()));
+  for (size_t d = 0; d < dims_.size(); ++d) {
+    std::fill(move.begin(), move.end(), Vec2::Zero());
+    std::fill(depth.begin(), depth.end(), 0.0);
+    for (const auto& [p, by] : dims_[d].points)
+      if (p.value < ids) move[p.value] += by;
+    for (const auto& [p, by] : dims_[d].depths)
+      if (p.value < ids) depth[p.value] += by;
+    for (const Point& p : s.mech.points)
+      pointMove_[d][p.id.value] = sm.kept(p, move[p.id.value], depth[p.id.value]);
+  }
   return Status::success();
 }
 
@@ -251,6 +310,7 @@ Status Sensitivity::at(const Kinematics& k) {
   const Eigen::VectorXd ddq = acc ? k.ddq() : Eigen::VectorXd();
   const std::vector<int>& map = s.newton.rowMap();
   const int n = sys.nCoords(), dims = static_cast<int>(dims_.size());
+  const internal::SpaceMoves space(s.mech, sys);
   Eigen::MatrixXd J(n, n), rhs(n, dims);
   evalJacobian(sys, views, map, J);
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(J);
@@ -261,7 +321,7 @@ Status Sensitivity::at(const Kinematics& k) {
     for (int d = 0; d < dims; ++d) {
       const Eigen::VectorXd dq = order ? Eigen::VectorXd(dq_.col(d)) : Eigen::VectorXd();
       const Eigen::VectorXd dqd = order > 1 ? Eigen::VectorXd(dqd_.col(d)) : Eigen::VectorXd();
-      rowChanges(s.mech, sys, views, ddq, {pointMove_[d], dims_[d]}, order, dq, dqd, map,
+      rowChanges(s.mech, sys, views, ddq, {pointMove_[d], dims_[d], space}, order, dq, dqd, map,
                  rhs.col(d));
     }
     *out[order] = -lu.solve(rhs);
@@ -274,7 +334,8 @@ Status Sensitivity::at(const Kinematics& k) {
 Vec2 Sensitivity::point(const Kinematics& k, PointId p, int dim) const {
   const System& sys = internal::system(k);
   const PointLocation* loc = sys.point(p);
-  const Vec2 own = p.value < pointMove_[dim].size() ? pointMove_[dim][p.value] : Vec2::Zero();
+  const Vec2 own =
+      p.value < pointMove_[dim].size() ? Vec2(pointMove_[dim][p.value].head<2>()) : Vec2::Zero();
   if (!loc || loc->body < 0) return own;
   const int c = 3 * loc->body;
   const Rot R = Rot::of(k.q()[c + 2]);
@@ -288,7 +349,7 @@ Vec2 Sensitivity::velocity(const Kinematics& k, PointId p, int dim) const {
   if (!loc || loc->body < 0) return Vec2::Zero();
   const int c = 3 * loc->body;
   const Rot R = Rot::of(k.q()[c + 2]);
-  const Vec2 a = R * loc->s, own = pointMove_[dim][p.value];
+  const Vec2 a = R * loc->s, own = pointMove_[dim][p.value].head<2>();
   const Vec2 da = dq_(c + 2, dim) * perp(a) + R * own;  // d(R s)
   const double w = k.dq()[c + 2];
   return k.omega() *
@@ -298,7 +359,7 @@ Vec2 Sensitivity::velocity(const Kinematics& k, PointId p, int dim) const {
 Vec2 Sensitivity::acceleration(const Kinematics& k, PointId p, int dim) const {
   const PointLocation* loc = internal::system(k).point(p);
   if (!loc || loc->body < 0) return Vec2::Zero();
-  return acceleration(k, loc->body, loc->s, pointMove_[dim][p.value], dim);
+  return acceleration(k, loc->body, loc->s, pointMove_[dim][p.value].head<2>(), dim);
 }
 
 Vec2 Sensitivity::acceleration(const Kinematics& k, BodyId b, const Vec2& at, int dim) const {
@@ -320,6 +381,33 @@ Vec2 Sensitivity::acceleration(const Kinematics& k, int body, const Vec2& s, con
   return omega * omega *
          (Vec2(dqdd_(c, dim), dqdd_(c + 1, dim)) + dqdd_(c + 2, dim) * perp(a) + alpha * perp(da) -
           2 * w * dw * a - w * w * da);
+}
+
+namespace {
+
+// A class-frame derivative of a point of a moving body in the world (its depth's move only for
+// the position); the ground's own move is already the world's.
+Vec3 inWorld(const Kinematics& k, PointId p, const Vec2& v, double depth, const Vec3& ground) {
+  const System& sys = internal::system(k);
+  const PointLocation* loc = sys.point(p);
+  if (!loc || loc->body < 0) return ground;
+  const Plane& f = sys.frames[sys.classOf.empty() ? 0 : sys.classOf[loc->body]];
+  return v.x() * f.xAxis + v.y() * f.yAxis + depth * f.normal();
+}
+
+}  // namespace
+
+Vec3 Sensitivity::point3(const Kinematics& k, PointId p, int dim) const {
+  const Vec3 own = p.value < pointMove_[dim].size() ? pointMove_[dim][p.value] : Vec3::Zero();
+  return inWorld(k, p, point(k, p, dim), own.z(), own);
+}
+
+Vec3 Sensitivity::velocity3(const Kinematics& k, PointId p, int dim) const {
+  return inWorld(k, p, velocity(k, p, dim), 0, Vec3::Zero());
+}
+
+Vec3 Sensitivity::acceleration3(const Kinematics& k, PointId p, int dim) const {
+  return inWorld(k, p, acceleration(k, p, dim), 0, Vec3::Zero());
 }
 
 }  // namespace linkage

@@ -238,6 +238,48 @@ TEST(SensitivityPanel, ATransmissionAngle) {
   shot(&panel, "transmission_sensitivity");
 }
 
+// A machine in space (the RSSR: a crank in the drawing plane, a rocker in an inclined plane, a
+// ball rod): the dock offers the world's z besides x and y; moving the whole machine along x (the
+// ground's x and the rocker plane's origin's x) moves the rocker point by (1, 0, 0): its x bars
+// add up to 1 and its z bars to 0 over those dimensions. A planar design again: no z.
+TEST(SensitivityPanel, AMachineInSpaceShowsTheWorldsXYAndZ) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("rssr-crank-rocker")), nullptr));
+  doc.setCrankDeg(70);
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  ASSERT_EQ(panel.pointBox()->currentText(), "rocker.C");
+  ASSERT_EQ(panel.componentBox()->count(), 4);
+  EXPECT_EQ(panel.componentBox()->itemText(3), "z");
+  auto sumAlongX = [&] {
+    double sum = 0;
+    for (const SensitivityPanel::Bar& b : panel.bars())
+      if (b.dimension == "ground.O.x" || b.dimension == "ground.H.x" ||
+          b.dimension == "planes.rocker.origin.x")
+        sum += b.now;
+    return sum;
+  };
+  panel.componentBox()->setCurrentIndex(0);
+  Q_EMIT panel.componentBox()->activated(0);
+  settle(panel);
+  ASSERT_FALSE(panel.bars().empty());
+  EXPECT_NEAR(sumAlongX(), 1, 1e-12);
+  panel.componentBox()->setCurrentIndex(3);
+  Q_EMIT panel.componentBox()->activated(3);
+  settle(panel);
+  EXPECT_NEAR(sumAlongX(), 0, 1e-12);
+  bool rod = false;
+  for (const SensitivityPanel::Bar& b : panel.bars())
+    rod = rod || (b.dimension == "ball-rod:crank.A.length" && std::abs(b.now) > 1e-3);
+  EXPECT_TRUE(rod) << "the rod's length moves the rocker point's z";
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("four-bar-crank-rocker")), nullptr));
+  settle(panel);
+  EXPECT_EQ(panel.componentBox()->count(), 3);
+  EXPECT_EQ(panel.componentBox()->currentIndex(), 1);
+}
+
 TEST(SensitivityPanel, WhatCannotBeDifferentiatedYetIsSaid) {
   Document doc;
   ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("cam-translating-roller")), nullptr));

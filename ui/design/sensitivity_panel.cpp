@@ -14,6 +14,7 @@
 #include "linkage/clearance_sensitivity.h"
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
+#include "linkage/space.h"
 #include "linkage/stroke_sensitivity.h"
 #include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
@@ -22,17 +23,19 @@ namespace linkage::ui {
 
 namespace {
 
-constexpr int kShown = 12;        // bars drawn; the rest counted under the chart
-constexpr double kCycleStep = 5;  // degrees between the turn's samples
-constexpr int kStroke = 3;        // the quantity: the stroke (linkage/stroke_sensitivity.h)
+constexpr int kShown = 12;          // bars drawn; the rest counted under the chart
+constexpr double kCycleStep = 5;    // degrees between the turn's samples
+constexpr int kStroke = 3;          // the quantity: the stroke (linkage/stroke_sensitivity.h)
+constexpr int kLength = 2, kZ = 3;  // the components: x, y, the length of the change, z
 
-// The chosen quantity's derivative: a component of it, or the length of the move.
+// The chosen quantity's derivative in the world (a planar machine's z is 0): a component of it,
+// or the length of the move.
 double component(const Sensitivity& s, const Kinematics& k, PointId p, int dim, int quantity,
                  int which) {
-  const Vec2 v = quantity == 0   ? s.point(k, p, dim)
-                 : quantity == 1 ? s.velocity(k, p, dim)
-                                 : s.acceleration(k, p, dim);
-  return which == 2 ? v.norm() : v[which];
+  const Vec3 v = quantity == 0   ? s.point3(k, p, dim)
+                 : quantity == 1 ? s.velocity3(k, p, dim)
+                                 : s.acceleration3(k, p, dim);
+  return which == kLength ? v.norm() : v[which == kZ ? 2 : which];
 }
 
 }  // namespace
@@ -162,10 +165,12 @@ void SensitivityPanel::compute() {
   }
   quantity_->setEnabled(true);
   const PointId p = points_[at];
-  const int quantity = quantity_->currentIndex(), which = component_->currentIndex();
   Kinematics k = doc_->kinematics();
+  offerZ(isSpatial(k.mechanism()));
+  const int quantity = quantity_->currentIndex(), which = component_->currentIndex();
   Sensitivity s;
-  if (Status st = s.prepare(k, dimensions(k.mechanism())); !st.ok()) {
+  // The world's x, y, z (a machine in space's too); a stroke refuses space by itself.
+  if (Status st = s.prepare(k, dimensions(k.mechanism()), Sensitivity::Space::World); !st.ok()) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
     return;
   }
@@ -198,6 +203,17 @@ void SensitivityPanel::compute() {
   rank();
   deadHere_ = !here;
   draw();
+}
+
+void SensitivityPanel::offerZ(bool space) {
+  if (space == (component_->count() > kZ)) return;
+  const QSignalBlocker block(component_);
+  if (space) {
+    component_->addItem(tr("z"));
+    return;
+  }
+  if (component_->currentIndex() == kZ) component_->setCurrentIndex(1);
+  component_->removeItem(kZ);
 }
 
 const std::vector<double>& SensitivityPanel::turnPeaks(const std::tuple<PointId, int, int>& key,

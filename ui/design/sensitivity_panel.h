@@ -83,6 +83,8 @@ class SensitivityPanel : public DockPanel {
   using PerDimension = std::function<double(const Sensitivity&, const Kinematics&, int dim)>;
   const std::vector<double>& turnPeaks(const std::tuple<PointId, int, int>& key, Sensitivity& s,
                                        Kinematics k, const PerDimension& f);
+  // The component z (the world's) offered on a machine in space only.
+  void offerZ(bool space);
 
   Document* doc_;
   QComboBox *point_, *quantity_, *component_;

@@ -14,6 +14,9 @@
 //   when the angle is unchanged (a turn about the first end changes the offset measured from
 //   elsewhere, as its derivative says).
 // - A gear's ratio.
+// - Not yet (refused, naming the dimension): a machine in space's depths, ground z, planes'
+//   origins, ground slots, and a ball rod's length (the file keeps none). A body's dimension
+//   that moves a rod's end changes the rod's drawn length here, which its derivative holds.
 // Nothing pinned to a moved point moves with it: loading (or Kinematics::edit) closes the joints.
 #pragma once
 

@@ -39,6 +39,14 @@ namespace linkage {
 //   signed distance from the body's first point, the ground's from the drawing's origin) and
 //   `body.slot.angle` (turned about its first end, degrees). Arc slots have none yet.
 // - each gear: `A-B.ratio` (the bodies of its points a and b).
+// In space (linkage/space.h; docs/sensitivity.md, "In space") a body's dimensions are in its
+// plane's coordinates, and there are besides (after all of the above):
+// - each ground point's `ground.O.z`; each moving point with a third number or at a ball rod's
+//   end: `body.P.depth` (along its plane's normal);
+// - each ball rod's `ball-rod:A.P.length` (named by its end a, as its force column is);
+// - each plane's `planes.NAME.origin.x`, `.y`, `.z` (its bodies move with it in the world);
+// - a ground slot's offset and angle are taken in the plane of the block running in it (moved
+//   along its normal in that plane, turned about that plane's normal).
 struct Dimension {
   enum class Unit { Mm, Deg, Ratio };
   std::string name;
@@ -48,20 +56,28 @@ struct Dimension {
   struct SlotMove {
     SlotId slot;
     Vec2 p0 = Vec2::Zero(), p1 = Vec2::Zero();  // d(its ends) per unit
+    double z0 = 0, z1 = 0;                      // d(the ground's ends' z) per unit, in space
   };
   std::vector<SlotMove> slots;
   JointId ratioOf;  // a gear whose ratio it is
+  // In space: d(a moving point's depth along its plane's normal, a ground point's z) per unit.
+  std::vector<std::pair<PointId, double>> depths;
+  JointId lengthOf;  // a ball rod whose length it is
 };
 
 std::vector<Dimension> dimensions(const Mechanism& m);
 
 // The derivatives of the motion at a Kinematics' current pose with respect to dimensions.
 // prepare() refuses (BadModel, naming the joint or the reason) what it cannot differentiate yet:
-// a spatial model (planes), a ball rod, a kind it does not know. At a singular position (no
-// derivativesValid()) at() fails: the motion's derivatives are unbounded there.
+// a kind it does not know (cams), and a spatial model (planes) or a ball rod unless the caller
+// reads the world's x, y, z (point3() and the rest: Space::World; point() and the rest give a
+// spatial model's point in its plane class's frame, which a caller of the drawing's x and y
+// would misread). At a singular position (no derivativesValid()) at() fails: the motion's
+// derivatives are unbounded there.
 class Sensitivity {
  public:
-  Status prepare(const Kinematics& k, std::vector<Dimension> dims);
+  enum class Space { Refuse, World };
+  Status prepare(const Kinematics& k, std::vector<Dimension> dims, Space space = Space::Refuse);
   // dq/dp at k's current pose: one column a dimension (x, y, theta per moving body).
   Status at(const Kinematics& k);
   const Eigen::MatrixXd& dq() const { return dq_; }
@@ -75,14 +91,21 @@ class Sensitivity {
   Vec2 velocity(const Kinematics& k, PointId p, int dim) const;
   Vec2 acceleration(const Kinematics& k, PointId p, int dim) const;
   // d(acceleration)/d(dimension k) of a point fixed in body b's frame at sketch position `at`,
-  // which no dimension moves (a centre of mass, a counterweight): mm/s^2 per unit.
+  // which no dimension moves (a centre of mass, a counterweight): mm/s^2 per unit. A planar
+  // model's.
   Vec2 acceleration(const Kinematics& k, BodyId b, const Vec2& at, int dim) const;
+  // The same in the world (mm, mm/s, mm/s^2 per unit): on a planar model (x, y, 0).
+  Vec3 point3(const Kinematics& k, PointId p, int dim) const;
+  Vec3 velocity3(const Kinematics& k, PointId p, int dim) const;
+  Vec3 acceleration3(const Kinematics& k, PointId p, int dim) const;
 
  private:
   Vec2 acceleration(const Kinematics& k, int body, const Vec2& s, const Vec2& own, int dim) const;
   std::vector<Dimension> dims_;
-  std::vector<std::vector<Vec2>> pointMove_;  // by dimension, by PointId value
-  Eigen::MatrixXd dq_, dqd_, dqdd_;           // dq/dp, dq'/dp, dq''/dp (q' = dq/dphi)
+  // By dimension, by PointId value: a moving point's move in its class frame and along its
+  // normal; a ground point's in the world (x, y, z; the drawing's x, y and 0 on a planar model).
+  std::vector<std::vector<Vec3>> pointMove_;
+  Eigen::MatrixXd dq_, dqd_, dqdd_;  // dq/dp, dq'/dp, dq''/dp (q' = dq/dphi)
 };
 
 }  // namespace linkage

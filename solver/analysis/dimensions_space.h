@@ -1,0 +1,26 @@
+// The dimensions of a machine in space beyond the planar ones (linkage/sensitivity.h,
+// analysis/dimensions.cpp): depths, the ground's z, ball rods' lengths, planes' origins, and a
+// ground slot's offset and angle in its block's plane.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "linkage/sensitivity.h"
+
+namespace linkage::internal {
+
+// Whether the mechanism has dimensions only a machine in space has (a plane, a third number, a
+// ball rod).
+bool hasSpaceDimensions(const Mechanism& m);
+// A straight ground slot's offset and angle in the plane of the block running in it (none when
+// no joint runs in it).
+void groundSlotInSpace(const Mechanism& m, const Slot& s, std::vector<Dimension>& out);
+// Appends the depths, the ground's z, the rods' lengths and the planes' origins.
+void spaceDimensions(const Mechanism& m, std::vector<Dimension>& out);
+// Why changeDimensions (linkage/dimension_change.h) cannot draw a change of `d` yet, "" when it
+// can: a depth, a ground point's z, a plane's origin, a ground slot of a machine in space, and a
+// ball rod's length (the file keeps no length: its ends' drawn distance is the rod's).
+std::string notDrawnYet(const Mechanism& m, const Dimension& d);
+
+}  // namespace linkage::internal
