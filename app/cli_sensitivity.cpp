@@ -1,5 +1,6 @@
 // linkage-cli sensitivity: how far a point moves per unit of each dimension of the mechanism,
 // exactly (linkage/sensitivity.h), at each crank angle of a turn.
+#include <functional>
 #include <iostream>
 
 #include "cli_common.h"
@@ -7,6 +8,7 @@
 #include "linkage/clearance_sensitivity.h"
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
+#include "linkage/shaking_sensitivity.h"
 #include "linkage/space.h"
 #include "linkage/stroke_sensitivity.h"
 #include "linkage/transmission_sensitivity.h"
@@ -19,7 +21,8 @@ namespace {
 const char* kHelp =
     R"(usage: linkage-cli sensitivity MODEL --point body.point [--steps N] [--velocity]
                                    [--acceleration] | --point body.point --stroke |
-                                   --clearance N | --window NAME | --transmission N
+                                   --clearance N | --window NAME | --transmission N |
+                                   --shaking
 
 The derivative of a point's position with respect to every dimension of MODEL, at each crank
 angle of one turn: exact, from the constraint Jacobian (dq/dp = -J_q^-1 J_p), not by finite
@@ -32,7 +35,7 @@ types them), or Pk.along and Pk.across P0->P1 where Pk is on the line P0P1; each
 x and y; each straight slot's offset (along its normal) and angle (about its first end, in
 degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
 
-  --point body.point   the point (required)
+  --point body.point   the point (required unless another output is asked for)
   --steps N            steps per revolution (default 360)
   --velocity           also the point's velocity's derivatives, mm/s per mm at the driver's
                        speed: columns dvx_mm_s_per_mm,dvy_mm_s_per_mm
@@ -55,6 +58,12 @@ degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
                        (degrees of the angle per mm, degree or ratio); --point not needed.
                        A dyad between points only: a rod on a slider or in a slot, and a dyad
                        with an arc slot, are refused by name
+  --shaking            instead, the derivatives of the shaking force (what the frame feels: the
+                       bodies' masses times their accelerations, with gravity and loads, as
+                       `dynamics` writes it) at the file's speed at each crank angle: CSV
+                       crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit (a dimension moves
+                       points, not masses: each centre of mass stays where it is drawn in its
+                       body). A planar machine's
 
 Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
 significant digits. A singular position (a dead point of the output, where the derivatives are
@@ -76,7 +85,7 @@ crank cannot turn fully (the rows up to there are written).
 struct Options {
   std::string model, point;
   int steps = 360;
-  bool velocity = false, acceleration = false, stroke = false;
+  bool velocity = false, acceleration = false, stroke = false, shaking = false;
   bool space = false;  // the model is spatial: x, y, z in the world
   int clearance = -1;
   std::string window, transmission;
@@ -212,17 +221,12 @@ std::optional<size_t> transmissionIndex(const std::vector<TransmissionJoint>& js
   return std::nullopt;
 }
 
-// A dyad's transmission angle's derivatives (linkage/transmission_sensitivity.h), a row a
-// dimension a step.
-int transmission(Kinematics& k, Sensitivity& sens, const Options& o) {
-  const std::vector<TransmissionJoint> js = transmissionJoints(k.mechanism());
-  const std::optional<size_t> j = transmissionIndex(js, o.transmission);
-  if (!j) return kBadInput;
-  if (Status s = dyadDifferentiable(k.mechanism(), js[*j]); !s.ok()) {
-    error("sensitivity: " + s.message);
-    return exitFor(s);
-  }
-  std::string out = "crank_deg,dimension,dmu_deg_per_unit\n";
+// A quantity's derivatives at each step of the turn: `values` gives them for every dimension
+// (several columns each, in `header`'s order) at k's pose.
+using PerDimension = std::function<std::vector<std::vector<double>>(Kinematics&, Sensitivity&)>;
+int perStep(Kinematics& k, Sensitivity& sens, const Options& o, const std::string& header,
+            const PerDimension& values) {
+  std::string out = "crank_deg,dimension," + header + "\n";
   Status failed;
   for (int i = 0; i < o.steps && failed.ok(); ++i) {
     const double deg = 360.0 * i / o.steps;
@@ -233,19 +237,48 @@ int transmission(Kinematics& k, Sensitivity& sens, const Options& o) {
       continue;
     }
     if (!(failed = s).ok()) break;
-    const std::vector<double> d = dyadAngleDerivatives(k, js[*j], sens);
+    const std::vector<std::vector<double>> d = values(k, sens);
     const std::string at = formatNumber(deg);
-    for (size_t v = 0; v < d.size(); ++v)
-      out.append(at)
-          .append(",")
-          .append(sens.dims()[v].name)
-          .append(",")
-          .append(formatNumber(d[v]))
-          .append("\n");
+    for (size_t v = 0; v < d.size(); ++v) {
+      out.append(at).append(",").append(sens.dims()[v].name);
+      for (double x : d[v]) out.append(",").append(formatNumber(x));
+      out.append("\n");
+    }
   }
   std::cout << out << std::flush;
   if (!failed.ok()) error(failed.message);
   return failed.ok() ? kOk : exitFor(failed);
+}
+
+// A dyad's transmission angle's derivatives (linkage/transmission_sensitivity.h), a row a
+// dimension a step.
+int transmission(Kinematics& k, Sensitivity& sens, const Options& o) {
+  const std::vector<TransmissionJoint> js = transmissionJoints(k.mechanism());
+  const std::optional<size_t> j = transmissionIndex(js, o.transmission);
+  if (!j) return kBadInput;
+  if (Status s = dyadDifferentiable(k.mechanism(), js[*j]); !s.ok()) {
+    error("sensitivity: " + s.message);
+    return exitFor(s);
+  }
+  return perStep(k, sens, o, "dmu_deg_per_unit", [&](Kinematics& kk, Sensitivity& ss) {
+    std::vector<std::vector<double>> out;
+    for (double d : dyadAngleDerivatives(kk, js[*j], ss)) out.push_back({d});
+    return out;
+  });
+}
+
+// The shaking force's derivatives (linkage/shaking_sensitivity.h), N per unit at the file's
+// speed, a row a dimension a step.
+int shakingForce(Kinematics& k, Sensitivity& sens, const Options& o) {
+  k.setAccelerations(true);
+  return perStep(k, sens, o, "dfx_N_per_unit,dfy_N_per_unit", [](Kinematics& kk, Sensitivity& ss) {
+    std::vector<std::vector<double>> out;
+    for (size_t d = 0; d < ss.dims().size(); ++d) {
+      const Vec2 f = shakingForceSensitivity(kk, ss, static_cast<int>(d));
+      out.push_back({f.x(), f.y()});
+    }
+    return out;
+  });
 }
 
 // The CSV header of the point's rows.
@@ -266,7 +299,7 @@ int sensitivity(Options o) {
   if (!m) return kBadInput;
   if (o.clearance >= 0) return clearance(*m, o.clearance);
   if (!o.window.empty()) return window(*m, o.window);
-  if (!o.transmission.empty()) {
+  if (!o.transmission.empty() || o.shaking) {
     Kinematics k;
     if (int e = prepare(k, *m); e != kOk) return e;
     Sensitivity sens;
@@ -274,7 +307,7 @@ int sensitivity(Options o) {
       error("sensitivity: " + s.message);
       return exitFor(s);
     }
-    return transmission(k, sens, o);
+    return o.shaking ? shakingForce(k, sens, o) : transmission(k, sens, o);
   }
   if (o.point.empty()) {
     error("sensitivity: --point body.point is required (or --clearance N)");
@@ -334,6 +367,7 @@ Command sensitivityCommand(Parser& parser) {
   addWhole(c, "--clearance", o->clearance, 0, 1'000'000);
   addText(c, "--window", o->window);
   addText(c, "--transmission", o->transmission);
+  addFlag(c, "--shaking", o->shaking);
   return {&c, [o] { return sensitivity(*o); }};
 }
 

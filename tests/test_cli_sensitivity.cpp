@@ -9,9 +9,11 @@
 #include <vector>
 
 #include "cli_harness.h"
+#include "examples.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
+#include "linkage/shaking_sensitivity.h"
 #include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
 #include "mechanisms.h"
@@ -203,6 +205,41 @@ TEST_F(SensitivityCli, ATransmissionAnglesDerivativesWhenAsked) {
   EXPECT_EQ(bad.exit, 2);
   EXPECT_NE(bad.err.find("mu:rod.B is a rod-slider angle"), std::string::npos) << bad.err;
   EXPECT_TRUE(bad.out.empty()) << bad.out;
+}
+
+// The shaking force's derivatives (tests/test_optimize_shaking.cpp holds the library to a
+// slider-crank's closed form): the drop feed's rows are the library's to the bit, and moving the
+// machine's frame point by point changes what the frame feels as the sum says.
+TEST_F(SensitivityCli, TheShakingForcesDerivativesWhenAsked) {
+  const test::CliResult res = run("sensitivity drop-feed --shaking --steps 3");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  EXPECT_EQ(lines.at(0), "crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit");
+  Kinematics k;
+  ASSERT_TRUE(k.load(test::example("drop-feed")).ok());
+  k.setAccelerations(true);
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dimensions(k.mechanism())).ok());
+  const size_t n = s.dims().size();
+  ASSERT_EQ(lines.size(), 1 + 3 * n) << res.out;
+  double largest = 0;
+  for (int step = 0; step < 3; ++step) {
+    ASSERT_TRUE(k.moveTo(120.0 * step).ok());
+    ASSERT_TRUE(s.at(k).ok());
+    for (size_t d = 0; d < n; ++d) {
+      const Vec2 want = shakingForceSensitivity(k, s, static_cast<int>(d));
+      const std::vector<std::string> row = split(lines[1 + step * n + d], ',');
+      ASSERT_EQ(row.size(), 4u);
+      EXPECT_EQ(row[1], s.dims()[d].name);
+      EXPECT_EQ(parseNumber(row[2]), want.x()) << row[1];
+      EXPECT_EQ(parseNumber(row[3]), want.y()) << row[1];
+      largest = std::max(largest, want.norm());
+    }
+  }
+  EXPECT_GT(largest, 0.1);  // the drop feed's dimensions do move its shaking force
+  const test::CliResult bad = run("sensitivity overedge-machine --shaking");
+  EXPECT_EQ(bad.exit, 2);
+  EXPECT_NE(bad.err.find("spatial"), std::string::npos) << bad.err;
 }
 
 TEST_F(SensitivityCli, BadInputIsNamed) {
