@@ -13,6 +13,7 @@
 #include "linkage/clearance_sensitivity.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/limits.h"
+#include "linkage/shaking_sensitivity.h"
 #include "linkage/stroke_sensitivity.h"
 #include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
@@ -278,6 +279,61 @@ TEST(SensitivityPanel, AMachineInSpaceShowsTheWorldsXYAndZ) {
   settle(panel);
   EXPECT_EQ(panel.componentBox()->count(), 3);
   EXPECT_EQ(panel.componentBox()->currentIndex(), 1);
+}
+
+// The shaking force (a design with masses: the drop feed): its x, y and the length of its
+// change per unit of each dimension, the library's (tests/test_optimize_shaking.cpp holds it to
+// a slider-crank's closed form) at each pose, the turn's largest computed once per component.
+TEST(SensitivityPanel, TheShakingForce) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("drop-feed")), nullptr));
+  doc.setCrankDeg(40);
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  const int at = panel.pointBox()->findText("shaking force");
+  ASSERT_EQ(at, panel.pointBox()->count() - 1);
+  panel.pointBox()->setCurrentIndex(at);
+  Q_EMIT panel.pointBox()->activated(at);
+  settle(panel);
+  EXPECT_TRUE(panel.componentBox()->isEnabled());
+  for (int which : {0, 1, 2}) {
+    panel.componentBox()->setCurrentIndex(which);
+    Q_EMIT panel.componentBox()->activated(which);
+    settle(panel);
+    const int turns = panel.turnComputations();
+    for (double deg : {40.0, 200.0}) {
+      doc.setCrankDeg(deg);
+      settle(panel);
+      Kinematics k = doc.kinematics();
+      k.setAccelerations(true);
+      Sensitivity s;
+      ASSERT_TRUE(s.prepare(k, dimensions(k.mechanism())).ok());
+      ASSERT_TRUE(s.at(k).ok());
+      ASSERT_EQ(panel.bars().size(), s.dims().size());
+      double largest = 0;
+      for (const SensitivityPanel::Bar& b : panel.bars())
+        for (size_t d = 0; d < s.dims().size(); ++d)
+          if (s.dims()[d].name == b.dimension) {
+            const Vec2 f = shakingForceSensitivity(k, s, static_cast<int>(d));
+            EXPECT_EQ(b.now, which == 2 ? f.norm() : f[which]) << b.dimension;
+            EXPECT_GE(b.peak, std::abs(b.now)) << b.dimension;
+            largest = std::max(largest, std::abs(b.now));
+          }
+      EXPECT_GT(largest, 0.01) << which << " at " << deg;
+      EXPECT_TRUE(panel.summary().startsWith("The frame feels ")) << panel.summary();
+    }
+    EXPECT_EQ(panel.turnComputations(), turns) << "once for the component, not again per pose";
+  }
+  shot(&panel, "shaking_sensitivity");
+  // A design without masses has no such entry.
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("four-bar-crank-rocker")), nullptr));
+  settle(panel);
+  const Mechanism& m = doc.design();
+  const bool masses = std::any_of(m.bodies.begin(), m.bodies.end(),
+                                  [](const Body& b) { return !b.ground && b.mass; });
+  EXPECT_EQ(panel.pointBox()->findText("shaking force") >= 0, masses);
 }
 
 TEST(SensitivityPanel, WhatCannotBeDifferentiatedYetIsSaid) {

@@ -12,8 +12,10 @@
 #include "document/document.h"
 #include "figures/qcp.h"
 #include "linkage/clearance_sensitivity.h"
+#include "linkage/dynamics.h"
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
+#include "linkage/shaking_sensitivity.h"
 #include "linkage/space.h"
 #include "linkage/stroke_sensitivity.h"
 #include "linkage/transmission_sensitivity.h"
@@ -122,6 +124,12 @@ void SensitivityPanel::fillPoints() {
   const std::vector<TransmissionJoint> js = transmissionJoints(m);
   for (size_t j = 0; j < js.size(); ++j)
     watched << tr("transmission angle %1: %2").arg(j).arg(QString::fromStdString(js[j].label));
+  // What the frame feels, where something has a mass.
+  const bool masses = std::any_of(m.bodies.begin(), m.bodies.end(), [](const Body& b) {
+    return !b.ground && b.mass && b.mass->kg > 0;
+  });
+  shakingAt_ = masses ? static_cast<int>(watched.size()) : -1;
+  if (masses) watched << tr("shaking force");
   if (ids == points_ && watched == clearances_) return;
   points_ = ids;
   clearances_ = watched;
@@ -155,6 +163,11 @@ void SensitivityPanel::compute() {
     quantity_->setEnabled(false);
     component_->setEnabled(false);
     const int n = at - static_cast<int>(points_.size());
+    if (n == shakingAt_) {
+      component_->setEnabled(true);
+      shakingBars(component_->currentIndex());
+      return;
+    }
     if (n < windowsFrom_)
       clearanceBars(n);
     else if (n < transmissionsFrom_)
@@ -355,6 +368,47 @@ void SensitivityPanel::transmissionBars(int n) {
                        "over a turn)")
                         .arg(QString::fromStdString(j.label))
                         .arg(dyadAngleSensitivity(k, j, nullptr, 0, nullptr), 0, 'f', 2)
+                        .arg(QString::fromStdString(bars_[0].dimension))
+                        .arg(bars_[0].now, 0, 'g', 4)
+                        .arg(bars_[0].peak, 0, 'g', 4));
+}
+
+void SensitivityPanel::shakingBars(int which) {
+  Kinematics k = doc_->kinematics();
+  k.setAccelerations(true);
+  Sensitivity s;
+  if (Status st = s.prepare(k, dimensions(k.mechanism())); !st.ok()) {
+    showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
+    return;
+  }
+  const int w = std::min(which, 2);
+  auto part = [w](const Sensitivity& ss, const Kinematics& kk, int d) {
+    const Vec2 f = shakingForceSensitivity(kk, ss, d);
+    return w == 2 ? f.norm() : f[w];
+  };
+  const bool here = s.at(k).ok();
+  const std::vector<double>& peak = turnPeaks({PointId{}, -2, w}, s, k, part);
+  bars_.clear();
+  for (size_t d = 0; d < s.dims().size(); ++d) {
+    const double now = here ? part(s, k, static_cast<int>(d)) : 0.0;
+    bars_.push_back({s.dims()[d].name, now, std::max(peak[d], std::abs(now))});
+  }
+  rank();
+  deadHere_ = !here;
+  draw();
+  plot_->xAxis->setLabel(
+      tr("N per unit of the dimension (mm, degree, ratio): blue at this "
+         "crank angle, grey the largest over a turn"));
+  plot_->replot();
+  if (!here || bars_.empty()) return;
+  Vec2 F;
+  double moment = 0;
+  shaking(k, F, moment);
+  summary_->setText(tr("The frame feels %1 N here (fx %2, fy %3); %4 changes it most (%5 N per "
+                       "unit here, up to %6 N over a turn)")
+                        .arg(F.norm(), 0, 'g', 4)
+                        .arg(F.x(), 0, 'g', 4)
+                        .arg(F.y(), 0, 'g', 4)
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4)
                         .arg(bars_[0].peak, 0, 'g', 4));

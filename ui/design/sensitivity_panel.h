@@ -72,6 +72,9 @@ class SensitivityPanel : public DockPanel {
   // Transmission angle n (as linkage-cli transmission numbers them): at the crank angle and the
   // turn's largest, as a point's; what is not a dyad between points said.
   void transmissionBars(int n);
+  // The shaking force's component `which` (x, y, the length of the change;
+  // linkage/shaking_sensitivity.h), at the crank angle and the turn's largest.
+  void shakingBars(int which);
   // The bars of one derivative a dimension, ranked and drawn with the axis's label; false when
   // there are none.
   bool showValues(const std::vector<Dimension>& dims, const std::vector<double>& derivative,
@@ -97,6 +100,7 @@ class SensitivityPanel : public DockPanel {
   QStringList clearances_;
   int windowsFrom_ = 0;        // where the windows' ends start in clearances_
   int transmissionsFrom_ = 0;  // where the transmission angles start
+  int shakingAt_ = -1;         // the shaking force's entry (a design with masses), else -1
   std::vector<Bar> bars_;
   bool deadHere_ = false;
   // The tolerances' band is of a design and an output: computed again only when they change.
