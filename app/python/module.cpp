@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include "linkage/elements.h"
+#include "linkage/space.h"
 #include "py_model.h"
 
 namespace py = pybind11;
@@ -128,9 +129,31 @@ py::dict forces(const Model& m, double crankDeg, double rpm) {
   return out;
 }
 
-py::dict sensitivity(const Model& m, const std::string& point, double crankDeg) {
+// A planar machine's (dx, dy); a machine in space's (dx, dy, dz) in the world.
+py::dict sensitivity(const Model& m, const std::string& point, double crankDeg,
+                     const std::string& quantity, double rpm) {
+  const int q = quantity == "position"       ? 0
+                : quantity == "velocity"     ? 1
+                : quantity == "acceleration" ? 2
+                                             : -1;
+  if (q < 0)
+    throw py::value_error("quantity: position, velocity or acceleration, not '" + quantity + "'");
+  const bool space = linkage::isSpatial(m.design());
   py::dict out;
-  for (const auto& [name, d] : m.sensitivity(point, crankDeg)) out[py::str(name)] = pair(d);
+  for (const auto& [name, d] : m.sensitivity(point, crankDeg, q, rpm))
+    out[py::str(name)] = space ? py::make_tuple(d.x(), d.y(), d.z()) : pair(d.head<2>());
+  return out;
+}
+
+py::dict strokeSensitivity(const Model& m, const std::string& point) {
+  py::dict out;
+  for (const auto& [name, d] : m.strokeSensitivity(point)) out[py::str(name)] = d;
+  return out;
+}
+
+py::dict shakingSensitivity(const Model& m, double crankDeg, double rpm) {
+  py::dict out;
+  for (const auto& [name, d] : m.shakingSensitivity(crankDeg, rpm)) out[py::str(name)] = pair(d);
   return out;
 }
 
@@ -196,7 +219,10 @@ PYBIND11_MODULE(linkage, mod) {
       .def("sweep", &sweep, py::arg("point"), py::arg("angles"), py::arg("rpm") = 0.0)
       .def("instant_centres", &centres, py::arg("crank_deg"))
       .def("forces", &forces, py::arg("crank_deg"), py::arg("rpm") = 0.0)
-      .def("sensitivity", &sensitivity, py::arg("point"), py::arg("crank_deg"))
+      .def("sensitivity", &sensitivity, py::arg("point"), py::arg("crank_deg"),
+           py::arg("quantity") = "position", py::arg("rpm") = 0.0)
+      .def("stroke_sensitivity", &strokeSensitivity, py::arg("point"))
+      .def("shaking_sensitivity", &shakingSensitivity, py::arg("crank_deg"), py::arg("rpm") = 0.0)
       .def("side_lengths", &Model::sideLengths, py::arg("body"))
       .def("set_side_lengths", &Model::setSideLengths, py::arg("body"), py::arg("lengths"))
       .def("set_point", &Model::setPoint, py::arg("point"), py::arg("x"), py::arg("y"))

@@ -6,8 +6,11 @@
 #include "linkage/edits.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
+#include "linkage/limits.h"
 #include "linkage/sensitivity.h"
+#include "linkage/shaking_sensitivity.h"
 #include "linkage/space.h"
+#include "linkage/stroke_sensitivity.h"
 #include "linkage/tables/motion_table.h"
 
 namespace linkage::py {
@@ -224,17 +227,47 @@ Forces Model::forces(double crankDeg, double rpm) const {
   return f;
 }
 
-std::vector<std::pair<std::string, Vec2>> Model::sensitivity(const std::string& point,
-                                                             double crankDeg) const {
+std::vector<std::pair<std::string, Vec3>> Model::sensitivity(const std::string& point,
+                                                             double crankDeg, int quantity,
+                                                             double rpm) const {
   const PointId p = pointNamed(point);
   raise(base_.checkDetermined({p}));
-  const Kinematics k = at(crankDeg);
+  Kinematics k = at(crankDeg, rpm);
+  if (quantity == 2) k.setAccelerations(true);
+  Sensitivity s;
+  raise(s.prepare(k, linkage::dimensions(k.mechanism()), Sensitivity::Space::World));
+  raise(s.at(k));
+  std::vector<std::pair<std::string, Vec3>> out;
+  for (size_t d = 0; d < s.dims().size(); ++d) {
+    const int i = static_cast<int>(d);
+    out.emplace_back(s.dims()[d].name, quantity == 0   ? s.point3(k, p, i)
+                                       : quantity == 1 ? s.velocity3(k, p, i)
+                                                       : s.acceleration3(k, p, i));
+  }
+  return out;
+}
+
+std::vector<std::pair<std::string, double>> Model::strokeSensitivity(
+    const std::string& point) const {
+  const PointId p = pointNamed(point);
+  const StrokeSensitivity s = linkage::strokeSensitivity(base_, p, defaultDirection(design_, p),
+                                                         linkage::dimensions(design_));
+  raise(s.status);
+  std::vector<std::pair<std::string, double>> out;
+  for (size_t d = 0; d < s.dims.size(); ++d) out.emplace_back(s.dims[d].name, s.derivative[d]);
+  return out;
+}
+
+std::vector<std::pair<std::string, Vec2>> Model::shakingSensitivity(double crankDeg,
+                                                                    double rpm) const {
+  Kinematics k = at(crankDeg, rpm);
+  k.setAccelerations(true);
   Sensitivity s;
   raise(s.prepare(k, linkage::dimensions(k.mechanism())));
   raise(s.at(k));
   std::vector<std::pair<std::string, Vec2>> out;
   for (size_t d = 0; d < s.dims().size(); ++d)
-    out.emplace_back(s.dims()[d].name, s.point(k, p, static_cast<int>(d)));
+    out.emplace_back(s.dims()[d].name, shakingForceSensitivity(k, s, static_cast<int>(d)));
   return out;
 }
 

@@ -73,9 +73,14 @@ class Model {
   InstantCentres instantCentres(double crankDeg) const;
   Forces forces(double crankDeg, double rpm) const;
   // d(position of the point)/d(dimension) at the crank angle, by dimension (linkage/
-  // sensitivity.h's names, file order).
-  std::vector<std::pair<std::string, Vec2>> sensitivity(const std::string& point,
-                                                        double crankDeg) const;
+  // sensitivity.h's names, file order); `quantity` 0 position, 1 velocity, 2 acceleration (at
+  // rpm, 0 the file's). In the world: (x, y, z), a planar machine's z 0.
+  std::vector<std::pair<std::string, Vec3>> sensitivity(const std::string& point, double crankDeg,
+                                                        int quantity, double rpm) const;
+  // d(stroke)/d(dimension) (linkage/stroke_sensitivity.h): along the point's default direction.
+  std::vector<std::pair<std::string, double>> strokeSensitivity(const std::string& point) const;
+  // d(shaking force)/d(dimension) at the crank angle and rpm (linkage/shaking_sensitivity.h).
+  std::vector<std::pair<std::string, Vec2>> shakingSensitivity(double crankDeg, double rpm) const;
   // Every dimension's name and value as drawn (mm, degrees or a ratio).
   std::vector<std::pair<std::string, double>> dimensions() const;
 

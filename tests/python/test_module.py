@@ -156,6 +156,41 @@ def test_sensitivity_is_the_command_lines():
     assert {k: (x + 0.0, y + 0.0) for k, (x, y) in got.items()} == want
 
 
+def rows_at(out, deg, columns):
+    rows = [r for r in csv.reader(io.StringIO(out))][1:]
+    return {r[1]: tuple(float(v) for v in r[2:2 + columns]) for r in rows if float(r[0]) == deg}
+
+
+def zero_signed(d):
+    return {k: tuple(x + 0.0 for x in v) for k, v in d.items()}
+
+
+def test_rates_and_space_sensitivities_are_the_command_lines():
+    out = cli("sensitivity", "drop-feed", "--point", "feedbar.D", "--steps", "8", "--velocity",
+              "--acceleration").stdout
+    rows = [r for r in csv.reader(io.StringIO(out))][1:]
+    m = linkage.load("drop-feed")
+    for quantity, cols in (("velocity", slice(4, 6)), ("acceleration", slice(6, 8))):
+        want = {r[1]: tuple(float(v) for v in r[cols]) for r in rows if float(r[0]) == 45}
+        assert zero_signed(m.sensitivity("feedbar.D", 45, quantity=quantity)) == want
+    # In space: the world's x, y, z (linkage-cli's dz columns).
+    out = cli("sensitivity", "overedge-machine", "--point", "needlearm.N", "--steps", "4").stdout
+    got = linkage.load("overedge-machine").sensitivity("needlearm.N", 90)
+    assert all(len(v) == 3 for v in got.values())
+    assert zero_signed(got) == rows_at(out, 90, 3)
+    with pytest.raises(ValueError, match="quantity"):
+        m.sensitivity("feedbar.D", 0, quantity="jerk")
+
+
+def test_stroke_and_shaking_sensitivities_are_the_command_lines():
+    m = linkage.load("drop-feed")
+    out = cli("sensitivity", "drop-feed", "--point", "feedbar.D", "--stroke").stdout
+    want = {r[0]: float(r[1]) for r in list(csv.reader(io.StringIO(out)))[1:]}
+    assert {k: v + 0.0 for k, v in m.stroke_sensitivity("feedbar.D").items()} == want
+    out = cli("sensitivity", "drop-feed", "--shaking", "--steps", "6").stdout
+    assert zero_signed(m.shaking_sensitivity(120)) == rows_at(out, 120, 2)
+
+
 def test_points_bodies_dimensions():
     m = linkage.load("four-bar-crank-rocker")
     assert m.bodies == ["ground", "crank", "coupler", "rocker"]
