@@ -223,6 +223,23 @@ TEST(OptimizeShaking, DimensionGradientMatchesCentralDifferences) {
   }
 }
 
+// The starts run on the cores, each from the same drawn point: the answer does not depend on how
+// many threads ran them.
+TEST(OptimizeShaking, TheSameAnswerOnAnyNumberOfThreads) {
+  const Kinematics k = dropFeed();
+  OptimizeSpec spec = counterweightSpec({"lowershaft", "feedrock"}, BalanceMeasure::Fx);
+  spec.starts = 5;
+  spec.threads = 1;
+  const OptimizeResult one = optimize(k, spec);
+  spec.threads = 3;
+  const OptimizeResult three = optimize(k, spec);
+  ASSERT_TRUE(one.status.ok() && three.status.ok());
+  EXPECT_EQ(one.after, three.after);
+  EXPECT_EQ(one.evaluations, three.evaluations);
+  EXPECT_EQ(one.foundBest, three.foundBest);
+  EXPECT_EQ(one.atAfter.objective, three.atAfter.objective);
+}
+
 TEST(OptimizeShaking, RefusesWhatItCannotVary) {
   const Kinematics k = dropFeed();
   auto refused = [&](OptimizeSpec spec, const std::string& words) {

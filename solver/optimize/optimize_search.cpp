@@ -1,9 +1,11 @@
 // The multistart (linkage/optimize.h): starts over the bounds from a fixed seed, each a local
 // SLSQP (NLopt) on the exact gradient; the best design and how many starts found it.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <nlopt.hpp>
 #include <random>
+#include <thread>
 
 #include "linkage/edits.h"
 #include "linkage/optimize.h"
@@ -194,6 +196,47 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
   return Status::success();
 }
 
+// One start's outcome.
+struct Start {
+  std::vector<double> x0;
+  bool feasible = false;
+  double best = 0;
+  std::vector<double> bestX;
+  int evaluations = 0;
+};
+
+void runStart(const Kinematics& base, const OptimizeSpec& spec, Start& s) {
+  Local l;
+  l.base = &base;
+  l.spec = &spec;
+  for (size_t t = 0; t < spec.targets.size(); ++t)
+    if (spec.targets[t].kind == OptTarget::Kind::Shaking) l.peakTargets.push_back(t);
+  l.at(s.x0.data(), true);
+  if (l.bestX.empty()) return;
+  localSearch(l, s.x0);
+  s.feasible = true;
+  s.best = l.best;
+  s.bestX = l.bestX;
+  s.evaluations = l.evaluations;
+}
+
+// The starts on the cores: each its own copy of the base, the starts drawn beforehand, so that
+// the answer is the same on any number of threads.
+void runStarts(const Kinematics& base, const OptimizeSpec& spec, std::vector<Start>& starts) {
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads =
+      std::clamp(spec.threads > 0 ? spec.threads : cores, 1, static_cast<int>(starts.size()));
+  std::vector<Kinematics> bases(threads, base);
+  std::atomic<size_t> next{0};
+  auto work = [&](int t) {
+    for (size_t i; (i = next++) < starts.size();) runStart(bases[t], spec, starts[i]);
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (std::thread& th : pool) th.join();
+}
+
 }  // namespace
 
 OptimizeResult optimize(const Kinematics& base, const OptimizeSpec& spec) {
@@ -202,29 +245,25 @@ OptimizeResult optimize(const Kinematics& base, const OptimizeSpec& spec) {
   const size_t n = spec.variables.size();
   r.atBefore = evaluate(base, spec, r.before);
   std::mt19937_64 gen(spec.seed);
-  std::vector<double> finals;
-  std::vector<std::vector<double>> xs;
-  for (int s = 0; s < spec.starts; ++s) {
-    std::vector<double> x0(n);
+  std::vector<Start> starts(spec.starts);
+  for (int s = 0; s < spec.starts; ++s)
     for (size_t i = 0; i < n; ++i) {
       const OptVariable& v = spec.variables[i];
-      x0[i] = s == 0 ? std::clamp(r.before[i], v.lo, v.hi) : v.lo + (v.hi - v.lo) * uniform(gen);
+      starts[s].x0.push_back(s == 0 ? std::clamp(r.before[i], v.lo, v.hi)
+                                    : v.lo + (v.hi - v.lo) * uniform(gen));
     }
+  runStarts(base, spec, starts);
+  std::vector<double> finals;
+  std::vector<std::vector<double>> xs;
+  for (const Start& s : starts) {
     ++r.starts;
-    Local l;
-    l.base = &base;
-    l.spec = &spec;
-    for (size_t t = 0; t < spec.targets.size(); ++t)
-      if (spec.targets[t].kind == OptTarget::Kind::Shaking) l.peakTargets.push_back(t);
-    l.at(x0.data(), true);
-    if (l.bestX.empty()) {
+    if (!s.feasible) {
       ++r.infeasibleStarts;
       continue;
     }
-    localSearch(l, x0);
-    r.evaluations += l.evaluations;
-    finals.push_back(l.best);
-    xs.push_back(l.bestX);
+    r.evaluations += s.evaluations;
+    finals.push_back(s.best);
+    xs.push_back(s.bestX);
   }
   if (finals.empty()) {
     r.status =

@@ -89,6 +89,7 @@ struct OptimizeSpec {
   std::uint64_t seed = 1;
   int steps = 360;           // samples per turn for the extremes and the path's nearest points
   int maxEvaluations = 300;  // per start
+  int threads = 0;           // the starts run on this many (0: every core); the same answer
   double sameBest = 1e-9;    // mm^2: a start found the best within this (+ 1e-6 of it)
 };
 
