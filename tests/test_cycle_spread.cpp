@@ -43,6 +43,29 @@ TEST(CycleSpread, AClosestApproachsSpread) {
   EXPECT_GT(x.hi, x.nominal + 0.85 * x.worst);
 }
 
+// The samples run on every core, gathered in their order: the same figures on one thread and
+// on three.
+TEST(CycleSpread, TheSameFiguresOnAnyNumberOfThreads) {
+  test::SliderCrank sc = test::sliderCrank(20, 70, 12, 30);
+  sc.m.timing.windows.push_back({"low", LimitMeasure::along(sc.B, Vec2(0, 1)), true, 70});
+  ToleranceSpec spec = tolerancesOf({{"crank.O-A", 0.05}, {"rod.A-B", 0.1}}, 60);
+  spec.threads = 1;
+  const SpreadResult one = windowSpread(sc.m, spec, "low");
+  spec.threads = 3;
+  const SpreadResult three = windowSpread(sc.m, spec, "low");
+  ASSERT_TRUE(one.status.ok() && three.status.ok());
+  EXPECT_EQ(one.used, 60);
+  EXPECT_EQ(three.used, one.used);
+  ASSERT_EQ(one.values.size(), three.values.size());
+  for (size_t i = 0; i < one.values.size(); ++i) {
+    EXPECT_EQ(one.values[i].lo, three.values[i].lo);
+    EXPECT_EQ(one.values[i].hi, three.values[i].hi);
+    EXPECT_EQ(one.values[i].mean, three.values[i].mean);
+    EXPECT_EQ(one.values[i].sd, three.values[i].sd);
+    EXPECT_LT(one.values[i].lo, one.values[i].hi);
+  }
+}
+
 TEST(CycleSpread, AWindowsEndsSpread) {
   test::SliderCrank sc = test::sliderCrank(20, 70, 12, 30);
   sc.m.timing.windows.push_back({"low", LimitMeasure::along(sc.B, Vec2(0, 1)), true, 70});

@@ -2,8 +2,10 @@
 #include "linkage/cycle_spread.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
+#include <thread>
 
 #include "linkage/clearance_sensitivity.h"
 #include "linkage/window_sensitivity.h"
@@ -40,33 +42,58 @@ void firstOrder(Spread& s, const std::vector<double>& d, const std::vector<doubl
 }
 
 // Each sample measured by `measure` (its values, in the nominal's order; false with why when it
-// cannot be measured), gathered into out.values.
+// cannot be measured), gathered into out.values. The samples are solved on every core (each
+// thread from its own copy of the nominal) and gathered in their order: the same figures on any
+// number of threads.
 using Measure = std::function<bool(const Kinematics&, std::vector<double>&, std::string&)>;
 void monteCarlo(const Mechanism& m, const ToleranceSpec& spec, const Kinematics& nominal,
                 const Measure& measure, SpreadResult& out) {
-  std::vector<double> sum(out.values.size(), 0.0), sum2(out.values.size(), 0.0);
-  for (long long i = 0; i < spec.samples; ++i) {
+  const long long n = std::max(0LL, static_cast<long long>(spec.samples));
+  const size_t width = out.values.size();
+  std::vector<std::vector<double>> got(n);
+  std::vector<std::string> why(n);
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = static_cast<int>(
+      std::clamp<long long>(spec.threads > 0 ? spec.threads : cores, 1, std::max(1LL, n)));
+  std::vector<Kinematics> bases(threads, nominal);
+  std::atomic<long long> next{0};
+  auto work = [&](int t) {
+    for (long long i; (i = next++) < n;) {
+      Mechanism sample;
+      Kinematics k = bases[t];
+      std::vector<double> v;
+      Status s = toleranceSample(m, spec, i, sample);
+      if (s.ok()) s = k.edit(sample);
+      if (!s.ok())
+        why[i] = s.message;
+      else if (measure(k, v, why[i]) && v.size() == width)
+        got[i] = std::move(v);
+      else if (why[i].empty())
+        why[i] = "not measured";
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (std::thread& th : pool) th.join();
+  std::vector<double> sum(width, 0.0), sum2(width, 0.0);
+  for (long long i = 0; i < n; ++i) {
     ++out.samples;
-    Mechanism sample;
-    Kinematics k = nominal;
-    std::vector<double> v;
-    std::string why;
-    Status s = toleranceSample(m, spec, i, sample);
-    if (s.ok()) s = k.edit(sample);
-    if (s.ok() && measure(k, v, why) && v.size() == out.values.size()) {
-      ++out.used;
-      for (size_t j = 0; j < v.size(); ++j) {
-        Spread& x = out.values[j];
-        x.lo = std::min(x.lo, v[j]);
-        x.hi = std::max(x.hi, v[j]);
-        sum[j] += v[j];
-        sum2[j] += v[j] * v[j];
-      }
-    } else if (out.firstFailure.empty()) {
-      out.firstFailure = "sample " + std::to_string(i) + ": " + (s.ok() ? why : s.message);
+    if (got[i].size() != width || width == 0) {
+      if (out.firstFailure.empty())
+        out.firstFailure = "sample " + std::to_string(i) + ": " + why[i];
+      continue;
+    }
+    ++out.used;
+    for (size_t j = 0; j < width; ++j) {
+      Spread& x = out.values[j];
+      x.lo = std::min(x.lo, got[i][j]);
+      x.hi = std::max(x.hi, got[i][j]);
+      sum[j] += got[i][j];
+      sum2[j] += got[i][j] * got[i][j];
     }
   }
-  for (size_t j = 0; j < out.values.size() && out.used > 0; ++j) {
+  for (size_t j = 0; j < width && out.used > 0; ++j) {
     Spread& x = out.values[j];
     x.mean = sum[j] / out.used;
     x.sd = std::sqrt(std::max(0.0, sum2[j] / out.used - x.mean * x.mean));

@@ -208,17 +208,17 @@ Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, const opt::Vari
   return Status::success();
 }
 
-}  // namespace
-
 // A point whose motion tells whether the design turns fully: the first target's, else the
 // first point of a moving body.
-static PointId turnPoint(const OptimizeSpec& spec, const Mechanism& m) {
+PointId turnPoint(const OptimizeSpec& spec, const Mechanism& m) {
   for (const OptTarget& t : spec.targets)
     if (t.point) return t.point;
   for (const Point& p : m.points)
     if (!m.body(p.body)->ground) return p.id;
   return PointId{};
 }
+
+}  // namespace
 
 Evaluation evaluate(const Kinematics& base, const OptimizeSpec& spec, const std::vector<double>& x,
                     bool withGradient) {
