@@ -6,6 +6,8 @@
 #include "cli_common.h"
 #include "cli_parser.h"
 #include "linkage/clearance_sensitivity.h"
+#include "linkage/elements.h"
+#include "linkage/force_sensitivity.h"
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
 #include "linkage/shaking_sensitivity.h"
@@ -22,7 +24,7 @@ const char* kHelp =
     R"(usage: linkage-cli sensitivity MODEL --point body.point [--steps N] [--velocity]
                                    [--acceleration] | --point body.point --stroke |
                                    --clearance N | --window NAME | --transmission N |
-                                   --shaking
+                                   --shaking | --force JOINT
 
 The derivative of a point's position with respect to every dimension of MODEL, at each crank
 angle of one turn: exact, from the constraint Jacobian (dq/dp = -J_q^-1 J_p), not by finite
@@ -64,6 +66,12 @@ degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
                        crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit (a dimension moves
                        points, not masses: each centre of mass stays where it is drawn in its
                        body). A planar machine's
+  --force JOINT        instead, the derivatives of a pin's reaction (JOINT as `dynamics` names
+                       its columns, e.g. pin:crank.A: the force on the body of its first point)
+                       at the file's speed at each crank angle: CSV
+                       crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit; from J^T lambda = Q
+                       differentiated exactly. A planar machine's pins; sliders, cams and
+                       redundant joints refused by name
 
 Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
 significant digits. A singular position (a dead point of the output, where the derivatives are
@@ -88,7 +96,7 @@ struct Options {
   bool velocity = false, acceleration = false, stroke = false, shaking = false;
   bool space = false;  // the model is spatial: x, y, z in the world
   int clearance = -1;
-  std::string window, transmission;
+  std::string window, transmission, force;
 };
 
 // Appends ",x,y" (one string appended at a time: no temporaries to concatenate).
@@ -281,6 +289,34 @@ int shakingForce(Kinematics& k, Sensitivity& sens, const Options& o) {
   });
 }
 
+// A pin's reaction's derivatives (linkage/force_sensitivity.h), N per unit at the file's speed,
+// a row a dimension a step.
+int jointForce(Kinematics& k, Sensitivity& sens, const Options& o) {
+  const Mechanism& m = k.mechanism();
+  std::optional<JointId> joint;
+  std::string known;
+  for (const Joint& j : m.joints) {  // named as dynamics' columns are
+    const std::string name = std::string(kindOf(j).name) + ":" + m.pointLabel(j.a);
+    known += (known.empty() ? "" : ", ") + name;
+    if (name == o.force) joint = j.id;
+  }
+  if (!joint) {
+    error("--force " + o.force + ": no such joint (the model's: " + known + ")");
+    return kBadInput;
+  }
+  const JointForceSensitivity first = jointForceSensitivity(k, *joint, sens.dims());
+  if (!first.status.ok()) {
+    error("sensitivity: " + first.status.message);
+    return exitFor(first.status);
+  }
+  return perStep(k, sens, o, "dfx_N_per_unit,dfy_N_per_unit", [&](Kinematics& kk, Sensitivity& ss) {
+    const JointForceSensitivity f = jointForceSensitivity(kk, *joint, ss.dims());
+    std::vector<std::vector<double>> out;
+    for (const Vec2& d : f.derivative) out.push_back({d.x(), d.y()});
+    return out;
+  });
+}
+
 // The CSV header of the point's rows.
 std::string header(const Options& o) {
   std::string out = "crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm";
@@ -299,7 +335,7 @@ int sensitivity(Options o) {
   if (!m) return kBadInput;
   if (o.clearance >= 0) return clearance(*m, o.clearance);
   if (!o.window.empty()) return window(*m, o.window);
-  if (!o.transmission.empty() || o.shaking) {
+  if (!o.transmission.empty() || o.shaking || !o.force.empty()) {
     Kinematics k;
     if (int e = prepare(k, *m); e != kOk) return e;
     Sensitivity sens;
@@ -307,6 +343,7 @@ int sensitivity(Options o) {
       error("sensitivity: " + s.message);
       return exitFor(s);
     }
+    if (!o.force.empty()) return jointForce(k, sens, o);
     return o.shaking ? shakingForce(k, sens, o) : transmission(k, sens, o);
   }
   if (o.point.empty()) {
@@ -368,6 +405,7 @@ Command sensitivityCommand(Parser& parser) {
   addText(c, "--window", o->window);
   addText(c, "--transmission", o->transmission);
   addFlag(c, "--shaking", o->shaking);
+  addText(c, "--force", o->force);
   return {&c, [o] { return sensitivity(*o); }};
 }
 

@@ -10,6 +10,7 @@
 
 #include "cli_harness.h"
 #include "examples.h"
+#include "linkage/force_sensitivity.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
@@ -240,6 +241,51 @@ TEST_F(SensitivityCli, TheShakingForcesDerivativesWhenAsked) {
   const test::CliResult bad = run("sensitivity overedge-machine --shaking");
   EXPECT_EQ(bad.exit, 2);
   EXPECT_NE(bad.err.find("spatial"), std::string::npos) << bad.err;
+}
+
+// A pin's reaction's derivatives (tests/test_force_sensitivity.cpp holds the library to a
+// slider-crank's Newton-Euler closed form): the drop feed's rows are the library's to the bit,
+// and moving the whole frame (every ground point's x, or y) moves no force, its gear included.
+TEST_F(SensitivityCli, APinsReactionsDerivativesWhenAsked) {
+  const test::CliResult res = run("sensitivity drop-feed --force pin:ground.L --steps 4");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  EXPECT_EQ(lines.at(0), "crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit");
+  Kinematics k;
+  ASSERT_TRUE(k.load(test::example("drop-feed")).ok());
+  const Mechanism& m = k.mechanism();
+  const size_t n = dimensions(m).size();
+  ASSERT_EQ(lines.size(), 1 + 4 * n) << res.out;
+  for (int step = 0; step < 4; ++step) {
+    ASSERT_TRUE(k.moveTo(90.0 * step).ok());
+    const JointForceSensitivity f = jointForceSensitivity(k, m.joints[1].id, dimensions(m));
+    ASSERT_TRUE(f.status.ok()) << f.status.message;
+    Vec2 sum = Vec2::Zero(), size = Vec2::Zero();
+    for (size_t d = 0; d < n; ++d) {
+      const std::vector<std::string> row = split(lines[1 + step * n + d], ',');
+      ASSERT_EQ(row.size(), 4u);
+      EXPECT_EQ(row[1], f.dims[d].name);
+      EXPECT_EQ(parseNumber(row[2]), f.derivative[d].x()) << row[1];
+      EXPECT_EQ(parseNumber(row[3]), f.derivative[d].y()) << row[1];
+      const std::string& name = f.dims[d].name;
+      if (name.rfind("ground.", 0) == 0 && name.size() > 2) {
+        const int axis = name.back() == 'x' ? 0 : 1;
+        sum[axis] += f.derivative[d][axis];
+        size[axis] += std::abs(f.derivative[d][axis]);
+      }
+    }
+    EXPECT_GT(size.norm(), 0.1);
+    EXPECT_NEAR(sum.x(), 0, 1e-12 * size.x()) << step;
+    EXPECT_NEAR(sum.y(), 0, 1e-12 * size.y()) << step;
+  }
+  test::CliResult bad = run("sensitivity drop-feed --force gear:armshaft.M");
+  EXPECT_EQ(bad.exit, 2);
+  EXPECT_NE(bad.err.find("only a pin's reaction"), std::string::npos) << bad.err;
+  bad = run("sensitivity drop-feed --force pin:nothing.X");
+  EXPECT_EQ(bad.exit, 2);
+  EXPECT_NE(bad.err.find("no such joint (the model's: pin:ground.M, pin:ground.L"),
+            std::string::npos)
+      << bad.err;
 }
 
 TEST_F(SensitivityCli, BadInputIsNamed) {

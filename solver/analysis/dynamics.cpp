@@ -472,4 +472,14 @@ void shaking(const Kinematics& k, Vec3& forceN, Vec3& momentNm) {
   momentNm = out.shakingMoment3Nm;
 }
 
+Eigen::VectorXd generalizedForces(const Kinematics& k) {
+  if (!k.valid() || !k.derivativesValid()) return Eigen::VectorXd();
+  const KinematicsState& s = internal::state(k);
+  ForceSolver::Impl d;
+  d.bodies(s);
+  viewsOf(s, d.views);
+  d.appliedAndInertia(s, k.omega(), k.crankDeg());
+  return d.Q;
+}
+
 }  // namespace linkage

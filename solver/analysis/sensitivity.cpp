@@ -331,6 +331,19 @@ Status Sensitivity::at(const Kinematics& k) {
   return Status::success();
 }
 
+Eigen::VectorXd Sensitivity::jacobianChange(const Kinematics& k, const Eigen::VectorXd& w,
+                                            int dim) const {
+  const KinematicsState& s = internal::state(k);
+  std::vector<BodyView> views;
+  makeViews(s.sys, k.q(), &w, views);
+  // The rates' change at order 1 holds the rates (here w) and moves the pose by dq/dp: d(J w).
+  Eigen::VectorXd out(s.sys.nCoords());
+  const internal::SpaceMoves space(s.mech, s.sys);
+  rowChanges(s.mech, s.sys, views, Eigen::VectorXd(), {pointMove_[dim], dims_[dim], space}, 1,
+             Eigen::VectorXd(dq_.col(dim)), Eigen::VectorXd(), s.newton.rowMap(), out);
+  return out;
+}
+
 Vec2 Sensitivity::point(const Kinematics& k, PointId p, int dim) const {
   const System& sys = internal::system(k);
   const PointLocation* loc = sys.point(p);

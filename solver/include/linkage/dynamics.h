@@ -51,6 +51,12 @@ struct Forces {
 
 void shaking(const Kinematics& k, Vec3& forceN, Vec3& momentNm);
 
+// The generalized forces the joints' multipliers balance (J^T lambda = Q): each moving body's
+// applied and inertia force (N) and moment about its frame origin (N mm), in the order of the
+// kinematics' coordinates, at k's pose. A planar machine's (what a reaction's derivative reads:
+// linkage/force_sensitivity.h).
+Eigen::VectorXd generalizedForces(const Kinematics& k);
+
 class ForceSolver {
  public:
   // For k's mechanism (its masses, gravity and loads): BadModel without a driver or when the
@@ -64,6 +70,7 @@ class ForceSolver {
 
  private:
   friend void shaking(const Kinematics& k, Vec3& forceN, Vec3& momentNm);
+  friend Eigen::VectorXd generalizedForces(const Kinematics& k);
   const Forces& overflowed(Forces& out);
   struct Impl;
   struct ImplDeleter {

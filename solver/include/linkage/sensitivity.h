@@ -94,6 +94,13 @@ class Sensitivity {
   // which no dimension moves (a centre of mass, a counterweight): mm/s^2 per unit. A planar
   // model's.
   Vec2 acceleration(const Kinematics& k, BodyId b, const Vec2& at, int dim) const;
+  // dq'/dp and dq''/dp at the pose of the last at(): one column a dimension (q' = dq/dphi).
+  const Eigen::MatrixXd& dqd() const { return dqd_; }
+  const Eigen::MatrixXd& dqdd() const { return dqdd_; }
+  // d(J w)/d(dimension k) with w held (a vector of coordinates), J the constraint Jacobian at the
+  // pose of the last at(), by the kinematics' independent rows (their row map): through it a
+  // multiplier's derivative (linkage/force_sensitivity.h).
+  Eigen::VectorXd jacobianChange(const Kinematics& k, const Eigen::VectorXd& w, int dim) const;
   // The same in the world (mm, mm/s, mm/s^2 per unit): on a planar model (x, y, 0).
   Vec3 point3(const Kinematics& k, PointId p, int dim) const;
   Vec3 velocity3(const Kinematics& k, PointId p, int dim) const;

@@ -1,0 +1,166 @@
+// A pin's reaction differentiated with respect to the dimensions (linkage/force_sensitivity.h)
+// against an offset slider-crank's Newton-Euler closed form, written over std::complex and
+// differentiated by the complex step (exact to rounding, independent of the solver's rows):
+// the slider's mass pushed along its slot by the rod, the rod's force and moment balance with
+// the crank pin's force and the slider pin's, the crank's with its pivot's.
+#include <gtest/gtest.h>
+
+#include <complex>
+#include <cstdio>
+#include <map>
+
+#include "linkage/dynamics.h"
+#include "linkage/force_sensitivity.h"
+#include "mechanisms.h"
+
+namespace linkage {
+namespace {
+
+using C = std::complex<double>;
+constexpr double kH = 1e-30;
+struct CVec {
+  C x, y;
+};
+CVec operator+(CVec a, CVec b) {
+  return {a.x + b.x, a.y + b.y};
+}
+CVec operator-(CVec a, CVec b) {
+  return {a.x - b.x, a.y - b.y};
+}
+CVec operator*(C s, CVec a) {
+  return {s * a.x, s * a.y};
+}
+C dot(CVec a, CVec b) {
+  return a.x * b.x + a.y * b.y;
+}
+C cross(CVec a, CVec b) {
+  return a.x * b.y - a.y * b.x;
+}
+CVec turned(CVec a) {
+  return {-a.y, a.x};
+}
+
+struct Pins {
+  CVec O, A, B;  // the reactions as linkage/dynamics.h reports them: on the body of point a
+};
+
+constexpr double kR = 20, kL = 70, kE = 8, kCrankDeg = 30, kRpm = 900;
+constexpr double kM1 = 0.1, kM2 = 0.15, kJ2 = 90, kM3 = 0.2;
+
+// The drawn centres: the crank's and the rod's along and across their lines.
+struct Drawn {
+  double a1, p1, a2, p2;
+};
+
+Pins closedForm(const std::map<std::string, C>& v, const Drawn& c, double phi, double gy) {
+  const CVec O{v.at("ground.O.x"), v.at("ground.O.y")};
+  const C cr = kR + v.at("crank.O-A"), rl = kL + v.at("rod.A-B");
+  const C alpha = M_PI / 2 + v.at("ground.guide.angle") * (M_PI / 180);
+  const CVec p0{kE - v.at("ground.guide.offset"), C(0)};
+  const CVec dir{std::cos(alpha), std::sin(alpha)}, n = turned(dir);
+  const double t = kCrankDeg * M_PI / 180 + phi, w2 = std::pow(kRpm * M_PI / 30, 2);
+  const CVec A = O + CVec{cr * std::cos(t), cr * std::sin(t)};
+  const CVec wA = A - p0, vA = turned(A - O), aA = O - A;
+  const C cc = cross(dir, wA), cv = cross(dir, vA), ca = cross(dir, aA);
+  const C root = std::sqrt(rl * rl - cc * cc);
+  const CVec B = p0 + (dot(dir, wA) + root) * dir;
+  const C s2 = dot(dir, aA) - (cv * cv + cc * ca) / root - cc * cc * cv * cv / (root * root * root);
+  // Accelerations at the crank's speed (mm/s^2), the forces in N (kg mm/s^2 / 1000).
+  const CVec aB = C(w2) * (s2 * dir), aAt = C(w2) * aA;
+  const CVec u = (C(1) / rl) * (B - A), u2 = (C(1) / rl) * (aB - aAt);
+  const CVec c2 = A + C(c.a2) * u + C(c.p2) * turned(u);
+  const CVec a2 = aAt + C(c.a2) * u2 + C(c.p2) * turned(u2);
+  const C psi2 = cross(u, u2);
+  const CVec uc = (C(1) / cr) * (A - O), uc2 = (C(1) / cr) * aAt;
+  const CVec a1 = C(c.a1) * uc2 + C(c.p1) * turned(uc2);
+  (void)uc;
+  // The slider: m3 aB = F_Bs + N n, so F_Bs = f dir + beta n with f = m3 aB . dir. The rod:
+  // m2 a2 = F_A - F_Bs; kJ2 psi'' = cross(A - c2, F_A) - cross(B - c2, F_Bs). Cramer's rule in
+  // (F_A.x, F_A.y, beta).
+  // Gravity (0, gy) m/s^2: each mass's weight joins, m (a / 1000 - g) in place of m a / 1000.
+  const CVec g{C(0), C(gy * 1000)};
+  const C f = C(kM3 / 1000) * dot(aB - g, dir);
+  const CVec m2a2 = C(kM2 / 1000) * (a2 - g);
+  const CVec rA = A - c2, rB = B - c2;
+  const C r1 = m2a2.x + f * dir.x, r2 = m2a2.y + f * dir.y,
+          r3 = C(kJ2 / 1000) * psi2 + f * cross(rB, dir);
+  const C m[3][3] = {{1, 0, -n.x}, {0, 1, -n.y}, {-rA.y, rA.x, -cross(rB, n)}};
+  auto det = [](const C(&a)[3][3]) {
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+           a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  };
+  const C D = det(m), rhs[3] = {r1, r2, r3};
+  C x[3];
+  for (int col = 0; col < 3; ++col) {
+    C mc[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) mc[i][j] = j == col ? rhs[i] : m[i][j];
+    x[col] = det(mc) / D;
+  }
+  const CVec FA{x[0], x[1]}, FBs = f * dir + x[2] * n;
+  // The crank: m1 a1 = F_O - F_A (F_O from the ground at O).
+  const CVec FO = C(kM1 / 1000) * (a1 - g) + FA;
+  // Reported on the body of each joint's point a: the crank pin's a is the crank's (-F_A), the
+  // slider pin's the rod's (-F_Bs), the pivot's the ground's (-F_O).
+  return {C(-1) * FO, C(-1) * FA, C(-1) * FBs};
+}
+
+class ForceSensitivity : public ::testing::TestWithParam<double> {};
+
+// Without gravity and with it (the weights' moments about the frames' origins turn with them).
+TEST_P(ForceSensitivity, SliderCrankPinsMatchNewtonEulerByComplexStep) {
+  const double gy = GetParam();
+  test::SliderCrank sc = test::sliderCrank(kR, kL, kE, kCrankDeg, Direction::Ccw, kRpm);
+  const Vec2 A0 = sc.m.point(sc.A)->pos, B0 = sc.m.point(sc.B)->pos;
+  const Vec2 c1(6, 9), c2 = A0 + 0.4 * (B0 - A0) + Vec2(4, -1);
+  sc.m.body(sc.crank)->mass = Mass{kM1, c1, 20, ""};
+  sc.m.body(sc.rod)->mass = Mass{kM2, c2, kJ2, ""};
+  sc.m.body(sc.slider)->mass = Mass{kM3, B0 + Vec2(1, 2), 0, ""};
+  if (gy != 0) sc.m.gravity = Vec2(0, gy);
+  auto parts = [](Vec2 from, Vec2 to, Vec2 c) {
+    const Vec2 u = (to - from).normalized();
+    return std::pair{(c - from).dot(u), (c - from).dot(perp(u))};
+  };
+  Drawn drawn;
+  std::tie(drawn.a1, drawn.p1) = parts(Vec2(0, 0), A0, c1);
+  std::tie(drawn.a2, drawn.p2) = parts(A0, B0, c2);
+  Kinematics k;
+  ASSERT_TRUE(k.load(sc.m).ok());
+  k.setAccelerations(true);
+  const std::vector<Dimension> dims = dimensions(sc.m);
+  std::map<std::string, C> base;
+  for (const Dimension& d : dims)
+    base[d.name] = d.name == "ground.O.x" || d.name == "ground.O.y" ? d.value : 0;
+  const JointId pins[3] = {sc.drive, sc.m.joints[1].id, sc.m.joints[2].id};
+  for (int pin = 0; pin < 3; ++pin) {
+    std::vector<double> peak(dims.size(), 0), err(dims.size(), 0);
+    for (int deg = 0; deg < 360; deg += 10) {
+      ASSERT_TRUE(k.moveTo(deg).ok());
+      const JointForceSensitivity s = jointForceSensitivity(k, pins[pin], dims);
+      ASSERT_TRUE(s.status.ok()) << s.status.message;
+      auto of = [&](const Pins& p) { return pin == 0 ? p.O : pin == 1 ? p.A : p.B; };
+      const CVec exact = of(closedForm(base, drawn, deg * M_PI / 180, gy));
+      ASSERT_NEAR(s.force.x(), exact.x.real(), 1e-9 * (1 + s.force.norm())) << pin << " " << deg;
+      ASSERT_NEAR(s.force.y(), exact.y.real(), 1e-9 * (1 + s.force.norm())) << pin << " " << deg;
+      for (size_t d = 0; d < dims.size(); ++d) {
+        std::map<std::string, C> v = base;
+        v.at(dims[d].name) += C(0, kH);
+        const CVec st = of(closedForm(v, drawn, deg * M_PI / 180, gy));
+        const Vec2 want(st.x.imag() / kH, st.y.imag() / kH);
+        peak[d] = std::max(peak[d], want.norm());
+        err[d] = std::max(err[d], (s.derivative[d] - want).norm());
+      }
+    }
+    for (size_t d = 0; d < dims.size(); ++d) {
+      std::printf("  pin %d, d F / d %-20s peak %.6g N per unit, worst error %.2e\n", pin,
+                  dims[d].name.c_str(), peak[d], err[d]);
+      EXPECT_LT(err[d], 1e-9 * std::max(peak[d], 1e-3)) << pin << " " << dims[d].name;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Gravity, ForceSensitivity, ::testing::Values(0.0, -9.81));
+
+}  // namespace
+}  // namespace linkage
