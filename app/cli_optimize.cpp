@@ -39,6 +39,9 @@ pose on MODEL's assembly branches.
                                      within DEG to 180 - DEG over the turn
      shaking:fx<=N                   the peak of the shaking force's |fx| (fy, or force: |f|)
                                      over the turn at most N newtons (0: as low as it goes)
+     force:JOINT<=N                  the peak over the turn of a pin's reaction |f| (JOINT as
+                                     `dynamics` names it: pin:crank.A) at most N newtons
+                                     (dimensions only)
      clearance:N>=GAP                the file's watched clearance N (from 0) at least GAP mm at
                                      its closest approach
      window:NAME.start=DEG           the first interval of the file's timing window NAME opens
@@ -55,6 +58,7 @@ pose on MODEL's assembly branches.
 Output, CSV: quantity,name,before,after,target. A row a variable (variable,DIM); a row a target's
 measure: stroke_mm (body.point), x_mm and y_mm (body.point@DEG), path_rms_mm and path_max_mm (the
 given points' distances to the curve), shaking_peak_N and shaking_peak_deg (fx, fy or force),
+force_peak_N and force_peak_deg (JOINT),
 clearance_least_mm and clearance_least_deg (clearance N), window_deg (NAME.start or NAME.end);
 a row a counterweight added (counterweight_kg,BODY: its mass, at the body's reach); the objective (mm^2, N^2, ...); the starts, those infeasible and
 those that found the best (within 1e-9 mm^2 + 1e-6 of it). A design infeasible as drawn leaves
@@ -99,6 +103,9 @@ std::string table(const OptimizeSpec& spec, const std::vector<std::string>& name
     } else if (t.kind == OptTarget::Kind::Shaking) {
       row("shaking_peak_N", 0, "<=" + formatNumber(t.limitN));
       row("shaking_peak_deg", 1, "");
+    } else if (t.kind == OptTarget::Kind::Force) {
+      row("force_peak_N", 0, "<=" + formatNumber(t.limitN));
+      row("force_peak_deg", 1, "");
     } else if (t.kind == OptTarget::Kind::Clearance) {
       row("clearance_least_mm", 0, ">=" + formatNumber(t.gapMm));
       row("clearance_least_deg", 1, "");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "linkage/elements.h"
 #include "linkage/io/numbers.h"
 #include "linkage/transmission.h"
 
@@ -85,6 +86,29 @@ std::string shakingName(BalanceMeasure m) {
   return m == BalanceMeasure::Fx ? "fx" : m == BalanceMeasure::Fy ? "fy" : "force";
 }
 
+// force:KIND:body.point<=N, the joint named as dynamics' columns name it
+bool parseForce(const Mechanism& m, const std::string& text, OptTarget& t, std::string& why) {
+  const size_t le = text.find("<=");
+  const std::optional<double> n =
+      le == std::string::npos ? std::nullopt : parseNumber(text.substr(le + 2));
+  if (!n.has_value() || !(n.value() >= 0))
+    return why += "expected force:JOINT<=N (JOINT as dynamics names it, pin:crank.A)", false;
+  const std::string name = text.substr(6, le - 6);
+  std::string known;
+  for (size_t j = 0; j < m.joints.size(); ++j) {
+    const std::string label =
+        std::string(kindOf(m.joints[j]).name) + ":" + m.pointLabel(m.joints[j].a);
+    known += (known.empty() ? "" : ", ") + label;
+    if (label != name) continue;
+    t.kind = OptTarget::Kind::Force;
+    t.index = j;
+    t.measure = BalanceMeasure::Force;
+    t.limitN = n.value();
+    return true;
+  }
+  return why += "no joint '" + name + "' (the model's: " + known + ")", false;
+}
+
 // clearance:N>=GAP
 bool parseClearance(const std::string& text, OptTarget& t, std::string& why) {
   const std::string usage = "expected clearance:N>=GAP (N the file's clearance, from 0; GAP mm)";
@@ -142,6 +166,7 @@ bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string
   if (text.rfind("transmission:", 0) == 0) return parseTransmission(m, text, t, why);
   if (text.rfind("shaking:", 0) == 0) return parseShaking(text, t, why);
   if (text.rfind("clearance:", 0) == 0) return parseClearance(text, t, why);
+  if (text.rfind("force:", 0) == 0) return parseForce(m, text, t, why);
   if (text.rfind("window:", 0) == 0) return parseWindow(text, t, why);
   const size_t colon = text.find(':'), eq = text.find('=');
   if (colon == std::string::npos || eq == std::string::npos || eq < colon)
@@ -168,7 +193,7 @@ bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string
     if (!readPath(value, t.path, fileWhy)) return why += fileWhy, false;
   } else {
     return why += "unknown kind '" + kind +
-                  "' (stroke, position, path, transmission, shaking, clearance, window)",
+                  "' (stroke, position, path, transmission, shaking, force, clearance, window)",
            false;
   }
   std::optional<PointId> p = m.findPoint(point);
@@ -180,6 +205,8 @@ bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string
 std::string targetName(const Mechanism& m, const OptTarget& t) {
   if (t.kind == OptTarget::Kind::Shaking) return shakingName(t.measure);
   if (t.kind == OptTarget::Kind::Clearance) return "clearance " + std::to_string(t.index);
+  if (t.kind == OptTarget::Kind::Force)
+    return std::string(kindOf(m.joints[t.index]).name) + ":" + m.pointLabel(m.joints[t.index].a);
   if (t.kind == OptTarget::Kind::Window) return t.window + (t.windowEnd ? ".end" : ".start");
   std::string name = m.pointLabel(t.point);
   if (t.kind == OptTarget::Kind::Position) name.append("@").append(formatNumber(t.crankDeg));

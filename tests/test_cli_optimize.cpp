@@ -136,6 +136,23 @@ TEST_F(OptimizeCli, WindowAndClearanceTargets) {
   EXPECT_NE(r.err.find("window:NAME.start=DEG"), std::string::npos) << r.err;
 }
 
+// A pin's reaction kept below a value by the lower shaft's eccentric: the row's peak at most the
+// limit after, above it before; a joint the model does not have named with the model's.
+TEST_F(OptimizeCli, APinsReactionTarget) {
+  test::CliResult r =
+      run("optimize drop-feed --vary lowershaft.L-Ea=2:6 --target 'force:pin:ground.L<=80' "
+          "--starts 3");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  auto t = rows(r);
+  EXPECT_GT(*parseNumber(t["force_peak_N,pin:ground.L"][0]), 80);
+  EXPECT_LE(*parseNumber(t["force_peak_N,pin:ground.L"][1]), 80 + 1e-6);
+  EXPECT_EQ(t["force_peak_N,pin:ground.L"][2], "<=80");
+  r = run("optimize drop-feed --vary lowershaft.L-Ea=2:6 --target 'force:pin:nothing.X<=1'");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("no joint 'pin:nothing.X' (the model's: pin:ground.M"), std::string::npos)
+      << r.err;
+}
+
 TEST_F(OptimizeCli, ShakingTargetRefusalsAreNamed) {
   test::CliResult r =
       run("optimize drop-feed --vary lowershaft.counterweight.x=-50:50 --target 'shaking:fz<=0'");

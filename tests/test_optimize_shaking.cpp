@@ -240,6 +240,54 @@ TEST(OptimizeShaking, TheSameAnswerOnAnyNumberOfThreads) {
   EXPECT_EQ(one.atAfter.objective, three.atAfter.objective);
 }
 
+// A pin's reaction as a target (its peak over the turn, met as the shaking force's): the
+// objective's gradient against central differences, and a limit met by the crank's length.
+TEST(OptimizeShaking, APinsReactionAsATarget) {
+  test::SliderCrank sc = test::sliderCrank(20, 70, 8, 30, Direction::Ccw, 600);
+  sc.m.body(sc.crank)->mass = Mass{0.1, Vec2(6, 9), 20, ""};
+  sc.m.body(sc.rod)->mass = Mass{0.15, Vec2(10, 40), 90, ""};
+  sc.m.body(sc.slider)->mass = Mass{0.2, sc.m.point(sc.B)->pos, 0, ""};
+  Kinematics base;
+  ASSERT_TRUE(base.load(sc.m).ok());
+  OptimizeSpec spec;
+  spec.variables = {{"crank.O-A", 10, 30}, {"rod.A-B", 50, 90}, {"ground.guide.offset", -20, 20}};
+  OptTarget t;
+  t.kind = OptTarget::Kind::Force;
+  t.index = 1;  // the crank pin
+  t.limitN = 1;
+  spec.targets = {t};
+  const std::vector<double> x = {20, 70, -8};
+  const Evaluation e = evaluate(base, spec, x);
+  ASSERT_TRUE(e.feasible) << e.why;
+  ASSERT_GT(e.measures[0][0], 1);
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double h = 1e-6;
+    std::vector<double> up = x, down = x;
+    up[i] += h;
+    down[i] -= h;
+    const double fd =
+        (evaluate(base, spec, up, false).objective - evaluate(base, spec, down, false).objective) /
+        (2 * h);
+    EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
+  }
+  // The peak with a 15 mm crank, asked of the crank alone from 20 mm: met.
+  spec.variables = {{"crank.O-A", 10, 20}};
+  const double at15 = evaluate(base, spec, {15}).measures[0][0];
+  spec.targets[0].limitN = at15;
+  spec.starts = 3;
+  const OptimizeResult r = optimize(base, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_LE(r.atAfter.measures[0][0], at15 + 1e-9 * at15);
+  EXPECT_GT(r.atBefore.measures[0][0], at15 * 1.1);
+  EXPECT_LT(r.atAfter.objective, 1e-12);
+  // Not over counterweights; not a slider's.
+  spec.variables = {{"crank.counterweight.x", -5, 5}};
+  EXPECT_NE(optimize(base, spec).status.message.find("a counterweight's share"), std::string::npos);
+  spec.variables = {{"crank.O-A", 10, 20}};
+  spec.targets[0].index = 3;
+  EXPECT_NE(optimize(base, spec).status.message.find("only a pin's reaction"), std::string::npos);
+}
+
 TEST(OptimizeShaking, RefusesWhatItCannotVary) {
   const Kinematics k = dropFeed();
   auto refused = [&](OptimizeSpec spec, const std::string& words) {

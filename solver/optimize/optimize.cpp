@@ -145,7 +145,7 @@ Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec2* stro
           {std::fmod(std::fmod(t.crankDeg, 360) + 360, 360), i, Vec2::Zero(), t.point});
     } else if (t.kind == OptTarget::Kind::Transmission) {
       if (Status s = transmissionResiduals(k, spec, i, e, probes); !s.ok()) return s;
-    } else if (t.kind == OptTarget::Kind::Shaking) {
+    } else if (t.kind == OptTarget::Kind::Shaking || t.kind == OptTarget::Kind::Force) {
       if (Status s = opt::shakingResiduals(k, spec, i, vars, x, sens, e); !s.ok()) return s;
     } else if (t.kind == OptTarget::Kind::Clearance) {
       if (Status s = opt::clearanceResiduals(k, spec, i, vars, sens != nullptr, e); !s.ok())

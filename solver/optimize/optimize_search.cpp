@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "linkage/edits.h"
+#include "linkage/elements.h"
 #include "linkage/optimize.h"
 #include "linkage/sensitivity.h"
 #include "linkage/transmission.h"
@@ -140,6 +141,14 @@ Status checkWatched(const Mechanism& m, const OptTarget& t) {
     if (!(t.limitN >= 0 && std::isfinite(t.limitN)))
       return Status::badModel("a shaking-force target's limit must be a number >= 0");
   }
+  if (t.kind == OptTarget::Kind::Force) {
+    if (t.index >= m.joints.size()) return Status::badModel("a force target's joint is not there");
+    if (kindOf(m.joints[t.index]).role != Role::Revolute)
+      return Status::badModel(jointLabel(m, m.joints[t.index].id) +
+                              ": only a pin's reaction is a target yet");
+    if (!(t.limitN >= 0 && std::isfinite(t.limitN)))
+      return Status::badModel("a force target's limit must be a number >= 0");
+  }
   if (t.kind == OptTarget::Kind::Clearance) {
     if (t.index >= m.timing.clearances.size())
       return Status::badModel("clearance " + std::to_string(t.index) + ": the file watches " +
@@ -182,8 +191,12 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
   }
   for (const OptTarget& t : spec.targets) {
     if (Status s = checkWatched(base.mechanism(), t); !s.ok()) return s;
-    const bool named = t.kind == OptTarget::Kind::Shaking || t.kind == OptTarget::Kind::Clearance ||
-                       t.kind == OptTarget::Kind::Window;
+    if (t.kind == OptTarget::Kind::Force && !vars.counterweights.empty())
+      return Status::badModel(
+          "a pin's reaction is a target over dimensions: a counterweight's share of it is not "
+          "differentiated yet (the shaking force's is)");
+    const bool named = t.kind == OptTarget::Kind::Shaking || t.kind == OptTarget::Kind::Force ||
+                       t.kind == OptTarget::Kind::Clearance || t.kind == OptTarget::Kind::Window;
     if (!named && !base.mechanism().contains(t.point))
       return Status::badModel("a target's point is not in the mechanism");
     if (!(t.weight > 0 && std::isfinite(t.weight)))
@@ -210,7 +223,9 @@ void runStart(const Kinematics& base, const OptimizeSpec& spec, Start& s) {
   l.base = &base;
   l.spec = &spec;
   for (size_t t = 0; t < spec.targets.size(); ++t)
-    if (spec.targets[t].kind == OptTarget::Kind::Shaking) l.peakTargets.push_back(t);
+    if (spec.targets[t].kind == OptTarget::Kind::Shaking ||
+        spec.targets[t].kind == OptTarget::Kind::Force)
+      l.peakTargets.push_back(t);
   l.at(s.x0.data(), true);
   if (l.bestX.empty()) return;
   localSearch(l, s.x0);

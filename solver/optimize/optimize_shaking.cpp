@@ -13,6 +13,7 @@
 
 #include "analysis/brent.h"
 #include "linkage/dynamics.h"
+#include "linkage/force_sensitivity.h"
 #include "linkage/shaking_sensitivity.h"
 #include "optimize/variables.h"
 
@@ -32,8 +33,12 @@ struct Shaker {
   const Variables& vars;
   const std::vector<double>& x;
   Vec2 g = Vec2::Zero();  // N per kg
+  // A pin's reaction (OptTarget::Kind::Force) instead of the shaking force.
+  JointId joint;
+  mutable ForceSolver solver;
 
   Vec2 force(const Kinematics& k) const {
+    if (joint) return solver.compute(k).joints[t.index].force;
     Vec2 F;
     double moment = 0;
     shaking(k, F, moment);
@@ -53,13 +58,21 @@ struct Shaker {
     if (t.measure == BalanceMeasure::Fy) return Vec2(0, F.y() < 0 ? -1 : 1);
     return F.norm() > 0 ? Vec2(F / F.norm()) : Vec2::Zero();
   }
-  std::vector<double> gradient(const Kinematics& k, const Sensitivity* sens) const;
+  std::vector<double> gradient(const Kinematics& k, const Sensitivity* sens, Status& status) const;
 };
 
 // d measure / d variable at k's pose (sens at k's pose when there are dimensions).
-std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sens) const {
+std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sens,
+                                     Status& status) const {
   const Vec2 F = force(k), e = along(F);
   std::vector<double> out(vars.dim.size(), 0.0);
+  if (joint) {  // dimensions only (counterweights are refused with a pin's reaction)
+    const JointForceSensitivity f = jointForceSensitivity(k, joint, vars.dims);
+    status = f.status;
+    for (size_t v = 0; v < out.size() && status.ok(); ++v)
+      if (vars.dim[v] >= 0) out[v] = e.dot(f.derivative[vars.dim[v]]);
+    return out;
+  }
   for (size_t v = 0; v < out.size(); ++v) {
     Vec2 dF = Vec2::Zero();
     if (vars.dim[v] >= 0 && sens) {
@@ -118,6 +131,10 @@ Status shakingResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t ta
                         Evaluation& e) {
   const OptTarget& t = spec.targets[target];
   Shaker sh{k, t, vars, x, k.mechanism().gravity.value_or(Vec2::Zero())};
+  if (t.kind == OptTarget::Kind::Force) {
+    sh.joint = k.mechanism().joints.at(t.index).id;
+    if (Status s = sh.solver.prepare(k); !s.ok()) return s;
+  }
   std::vector<RowAt> rows;
   if (Status s = intervalMaxima(sh, spec.steps, rows); !s.ok()) return s;
   const auto top = std::max_element(
@@ -146,7 +163,9 @@ Status shakingResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t ta
       if (Status s = walker.moveTo(rows[i].deg); !s.ok()) return s;
       if (sens && vars.dimensionCount() > 0)
         if (Status s = sens->at(walker); !s.ok()) return s;
-      pr.gradient[i] = sh.gradient(walker, sens);
+      Status status = Status::success();
+      pr.gradient[i] = sh.gradient(walker, sens, status);
+      if (!status.ok()) return status;
     }
     const std::vector<double>& g = pr.gradient[top - rows.begin()];
     for (size_t v = 0; v < g.size(); ++v) {

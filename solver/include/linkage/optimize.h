@@ -47,7 +47,7 @@ struct OptVariable {
 };
 
 struct OptTarget {
-  enum class Kind { Stroke, Position, Path, Transmission, Shaking, Clearance, Window };
+  enum class Kind { Stroke, Position, Path, Transmission, Shaking, Clearance, Window, Force };
   Kind kind = Kind::Stroke;
   PointId point;
   double stroke = 0;       // Stroke: mm, along defaultDirection (linkage/limits.h)
@@ -65,6 +65,9 @@ struct OptTarget {
   // max(0, peak - limitN), N; limitN 0 minimises the peak. A planar machine's.
   BalanceMeasure measure = BalanceMeasure::Force;
   double limitN = 0;
+  // Force: the peak over the turn of pin m.joints[index]'s reaction |f| (linkage/dynamics.h,
+  // on the body of its first point) at most limitN, as Shaking's (measure Force). Over
+  // dimensions only (a counterweight's share of a reaction is not differentiated yet).
   // Clearance: the file's watched clearance `index` (its timing's, counted from 0) at least
   // gapMm at its closest approach over the turn: residual max(0, gapMm - least), mm.
   size_t index = 0;
@@ -79,7 +82,8 @@ struct OptTarget {
 
 // What a target measures, for people: Stroke {stroke}, Position {x, y}, Path {rms distance,
 // largest distance} (mm), Transmission {min, max} (degrees), Shaking {peak (N), its crank angle},
-// Clearance {least (mm), its crank angle}, Window {the end's crank angle}.
+// Clearance {least (mm), its crank angle}, Window {the end's crank angle}, Force {peak (N), its
+// crank angle}.
 using Measure = std::vector<double>;
 
 struct OptimizeSpec {
