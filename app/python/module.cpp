@@ -151,6 +151,13 @@ py::dict strokeSensitivity(const Model& m, const std::string& point) {
   return out;
 }
 
+py::dict forceSensitivity(const Model& m, const std::string& joint, double crankDeg, double rpm) {
+  py::dict out;
+  for (const auto& [name, d] : m.forceSensitivity(joint, crankDeg, rpm))
+    out[py::str(name)] = pair(d);
+  return out;
+}
+
 py::dict shakingSensitivity(const Model& m, double crankDeg, double rpm) {
   py::dict out;
   for (const auto& [name, d] : m.shakingSensitivity(crankDeg, rpm)) out[py::str(name)] = pair(d);
@@ -223,6 +230,8 @@ PYBIND11_MODULE(linkage, mod) {
            py::arg("quantity") = "position", py::arg("rpm") = 0.0)
       .def("stroke_sensitivity", &strokeSensitivity, py::arg("point"))
       .def("shaking_sensitivity", &shakingSensitivity, py::arg("crank_deg"), py::arg("rpm") = 0.0)
+      .def("force_sensitivity", &forceSensitivity, py::arg("joint"), py::arg("crank_deg"),
+           py::arg("rpm") = 0.0)
       .def("side_lengths", &Model::sideLengths, py::arg("body"))
       .def("set_side_lengths", &Model::setSideLengths, py::arg("body"), py::arg("lengths"))
       .def("set_point", &Model::setPoint, py::arg("point"), py::arg("x"), py::arg("y"))

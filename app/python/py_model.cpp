@@ -4,6 +4,8 @@
 #include <filesystem>
 
 #include "linkage/edits.h"
+#include "linkage/elements.h"
+#include "linkage/force_sensitivity.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/limits.h"
@@ -268,6 +270,21 @@ std::vector<std::pair<std::string, Vec2>> Model::shakingSensitivity(double crank
   std::vector<std::pair<std::string, Vec2>> out;
   for (size_t d = 0; d < s.dims().size(); ++d)
     out.emplace_back(s.dims()[d].name, shakingForceSensitivity(k, s, static_cast<int>(d)));
+  return out;
+}
+
+std::vector<std::pair<std::string, Vec2>> Model::forceSensitivity(const std::string& joint,
+                                                                  double crankDeg,
+                                                                  double rpm) const {
+  std::optional<JointId> id;
+  for (const Joint& j : design_.joints)
+    if (std::string(kindOf(j).name) + ":" + design_.pointLabel(j.a) == joint) id = j.id;
+  if (!id) throw BadInput("no joint '" + joint + "' (named as linkage-cli dynamics names it)");
+  const JointForceSensitivity f =
+      jointForceSensitivity(at(crankDeg, rpm), *id, linkage::dimensions(design_));
+  raise(f.status);
+  std::vector<std::pair<std::string, Vec2>> out;
+  for (size_t d = 0; d < f.dims.size(); ++d) out.emplace_back(f.dims[d].name, f.derivative[d]);
   return out;
 }
 

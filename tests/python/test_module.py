@@ -182,13 +182,19 @@ def test_rates_and_space_sensitivities_are_the_command_lines():
         m.sensitivity("feedbar.D", 0, quantity="jerk")
 
 
-def test_stroke_and_shaking_sensitivities_are_the_command_lines():
+def test_stroke_shaking_and_force_sensitivities_are_the_command_lines():
     m = linkage.load("drop-feed")
     out = cli("sensitivity", "drop-feed", "--point", "feedbar.D", "--stroke").stdout
     want = {r[0]: float(r[1]) for r in list(csv.reader(io.StringIO(out)))[1:]}
     assert {k: v + 0.0 for k, v in m.stroke_sensitivity("feedbar.D").items()} == want
     out = cli("sensitivity", "drop-feed", "--shaking", "--steps", "6").stdout
     assert zero_signed(m.shaking_sensitivity(120)) == rows_at(out, 120, 2)
+    out = cli("sensitivity", "drop-feed", "--force", "pin:ground.L", "--steps", "6").stdout
+    assert zero_signed(m.force_sensitivity("pin:ground.L", 240)) == rows_at(out, 240, 2)
+    with pytest.raises(ValueError, match="no joint 'pin:x.Y'"):
+        m.force_sensitivity("pin:x.Y", 0)
+    with pytest.raises(ValueError, match="only a pin's reaction"):
+        m.force_sensitivity("gear:armshaft.M", 0)
 
 
 def test_points_bodies_dimensions():
