@@ -70,6 +70,15 @@ QString valueUsage(K kind) {
   return {};
 }
 
+// Only a position is at a crank angle (a window's end is its value): the cell is empty and
+// closed for the others.
+void showCrank(QTableWidgetItem* cell, K kind, const QString& deg) {
+  const bool at = kind == K::Position;
+  cell->setText(at ? deg : QString());
+  cell->setFlags(at ? Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable
+                    : Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+}
+
 }  // namespace
 
 OptimizeTargets::OptimizeTargets(Document* doc, QWidget* parent)
@@ -100,7 +109,8 @@ bool OptimizeTargets::addRow(OptTarget::Kind kind, const QString& of, const QStr
   if (!of.isEmpty()) what->setCurrentText(of);
   setCellWidget(r, Of, what);
   setItem(r, Value, new QTableWidgetItem(value));
-  setItem(r, Crank, new QTableWidgetItem(number(crankDeg)));
+  setItem(r, Crank, new QTableWidgetItem);
+  showCrank(item(r, Crank), kind, number(crankDeg));
   setItem(r, Weight, new QTableWidgetItem(number(weight)));
   item(r, Value)->setToolTip(valueUsage(kind));
   connect(kinds, &QComboBox::currentIndexChanged, this, [this, kinds](int k) {
@@ -137,7 +147,7 @@ void OptimizeTargets::setKind(int row, OptTarget::Kind kind) {
   if (what->findText(was) >= 0) what->setCurrentText(was);
   item(row, Value)->setText(defaultValue(kind, what->currentText()));
   item(row, Value)->setToolTip(valueUsage(kind));
-  if (kind == K::Position) item(row, Crank)->setText(number(doc_->crankDeg()));
+  showCrank(item(row, Crank), kind, number(doc_->crankDeg()));
 }
 
 void OptimizeTargets::refreshChoices() {
