@@ -9,16 +9,20 @@
 
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTableWidget>
 #include <QTest>
 
 #include "design/optimize_dialog.h"
+#include "document/commands.h"
 #include "document/document.h"
 #include "linkage/balance.h"
+#include "linkage/clearance.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
+#include "linkage/transmission.h"
 #include "ui_test.h"
 
 namespace linkage::ui {
@@ -223,6 +227,55 @@ TEST(OptimizeDialog, APathFromACsvFileIsMet) {
   ASSERT_GE(table->rowCount(), 3);
   EXPECT_EQ(table->item(1, 0)->text(),
             "rms distance of the path's 3 points to needlebar.B's curve (mm)");
+}
+
+// A clearance by its parts as the file names them, a transmission angle by the dyad's name as
+// `linkage-cli transmission` gives it: offered, read, and their measures shown with units (the
+// least clearance equal to the library's over the turn).
+TEST(OptimizeDialog, AClearanceAndATransmissionAngleByTheirNames) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("lockstitch-machine")), nullptr));
+  // The file's clearance is the hook passing the needle (they touch: said, below); a second
+  // one, from the hook to the take-up's eye, is watched as a user would add it.
+  Mechanism watched = doc.design();
+  watched.timing.clearances.push_back(
+      {*watched.findPoint("hook.K"), ClearancePart::of(*watched.findPoint("takeup.E")), {}});
+  commitEdit(&doc, "watch", watched);
+  const Mechanism& m = doc.design();
+  std::string dyad;
+  for (const TransmissionJoint& j : transmissionJoints(m))
+    if (j.kind == TransmissionKind::Dyad && dyad.empty()) dyad = j.label;
+  ASSERT_FALSE(dyad.empty());
+  OptimizeDialog dialog(&doc);
+  dialog.findChild<QSpinBox*>("optStarts")->setValue(1);
+  ASSERT_TRUE(dialog.vary("rod.A-B", 40, 50));
+  EXPECT_FALSE(dialog.addTarget(OptTarget::Kind::Clearance, "hook.K – nothing", "1"));
+  ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Clearance, "hook.K – takeup.E", "0"));
+  ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Transmission, QString::fromStdString(dyad), "0"));
+  QSignalSpy done(&dialog, &OptimizeDialog::finished);
+  dialog.find();
+  ASSERT_TRUE(done.wait(60000));
+  ASSERT_TRUE(dialog.result() && dialog.result()->status.ok()) << dialog.summary().toStdString();
+  const Measure& least = dialog.result()->atBefore.measures.at(0);
+  const ClearanceWatch& w = m.timing.clearances.at(1);
+  const Clearance exact = findClearance(doc.kinematics(), ClearancePart::of(w.point), w.other);
+  ASSERT_TRUE(exact.status.ok());
+  EXPECT_GT(exact.closest.distance, 1);
+  EXPECT_NEAR(least.at(0), exact.closest.distance, 1e-6);
+  QStringList rows;
+  auto* table = dialog.findChild<QTableWidget*>("optResult");
+  for (int r = 0; r < table->rowCount(); ++r) rows << table->item(r, 0)->text();
+  EXPECT_TRUE(rows.contains("least clearance hook.K – takeup.E (mm)"))
+      << rows.join("; ").toStdString();
+  EXPECT_TRUE(rows.contains(QString("least %1 (°)").arg(QString::fromStdString(dyad))))
+      << rows.join("; ").toStdString();
+  // The file's own: the two touch, so the least distance has no derivative; said.
+  auto* targets = dialog.findChild<QTableWidget*>("optTargets");
+  targets->setRowCount(0);
+  ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Clearance, "hook.K – needlebar.N-B", "0"));
+  dialog.find();
+  ASSERT_TRUE(done.wait(60000));
+  EXPECT_TRUE(dialog.summary().contains("the two touch")) << dialog.summary().toStdString();
 }
 
 }  // namespace

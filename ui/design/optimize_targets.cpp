@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "cli_optimize_text.h"
-#include "cycle/clearance_text.h"
 #include "document/document.h"
 #include "linkage/limits.h"
 #include "linkage/transmission.h"
@@ -18,6 +17,13 @@ using K = OptTarget::Kind;
 
 const char* const kKinds[] = {"stroke",  "position",  "path",  "transmission",
                               "shaking", "clearance", "window"};
+
+// A watched clearance by its two parts as the file's "between" names them ("hook.K –
+// needlebar.N-B").
+QString clearanceName(const Mechanism& m, const ClearanceWatch& w) {
+  return QString::fromStdString(m.pointLabel(w.point)) + QStringLiteral(" – ") +
+         QString::fromStdString(m.partLabel(w.other));
+}
 
 QString number(double v) {
   return QString::number(v, 'g', 10);
@@ -32,7 +38,7 @@ QStringList choices(const Mechanism& m, K kind) {
   } else if (kind == K::Shaking) {
     out << QStringLiteral("fx") << QStringLiteral("fy") << QStringLiteral("force");
   } else if (kind == K::Clearance) {
-    for (const ClearanceWatch& w : m.timing.clearances) out << clearanceLabel(m, w);
+    for (const ClearanceWatch& w : m.timing.clearances) out << clearanceName(m, w);
   } else if (kind == K::Window) {
     for (const TimingWindow& w : m.timing.windows)
       out << QString::fromStdString(w.name + ".start") << QString::fromStdString(w.name + ".end");
@@ -308,7 +314,7 @@ std::vector<MeasureRow> measureRows(const Mechanism& m, const OptTarget& t, cons
     }
     case K::Clearance: {
       const QString c = t.index < m.timing.clearances.size()
-                            ? clearanceLabel(m, m.timing.clearances[t.index])
+                            ? clearanceName(m, m.timing.clearances[t.index])
                             : QString::number(t.index);
       add(QObject::tr("least clearance %1 (mm)").arg(c), 0,
           QStringLiteral(">= ") + number(t.gapMm));
