@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -14,9 +15,10 @@
 #include <cmath>
 #include <map>
 
+#include "design/optimize_targets.h"
 #include "document/commands.h"
 #include "document/document.h"
-#include "linkage/limits.h"
+#include "linkage/balance.h"
 #include "linkage/sensitivity.h"
 
 namespace linkage::ui {
@@ -36,13 +38,19 @@ QString number(double v) {
   return QString::number(v, 'g', 10);
 }
 
+QString unitOf(Dimension::Unit u) {
+  return u == Dimension::Unit::Deg  ? QStringLiteral("°")
+         : u == Dimension::Unit::Mm ? QStringLiteral("mm")
+                                    : QObject::tr("ratio");
+}
+
 }  // namespace
 
 OptimizeDialog::OptimizeDialog(Document* doc, QWidget* parent) : QDialog(parent), doc_(doc) {
   setObjectName(QStringLiteral("optimizeDialog"));
   setWindowTitle(tr("Find Dimensions"));
   buildVariables();
-  QTableWidget* targets = buildTargets();
+  targets_ = new OptimizeTargets(doc_);
   starts_ = new QSpinBox;
   starts_->setObjectName(QStringLiteral("optStarts"));
   starts_->setRange(1, 1000);
@@ -73,40 +81,20 @@ OptimizeDialog::OptimizeDialog(Document* doc, QWidget* parent) : QDialog(parent)
   row->addStretch();
   row->addWidget(find_);
   row->addWidget(apply_);
-  auto* addTarget = new QPushButton(tr("Add &Target"));
-  addTarget->setObjectName(QStringLiteral("optAddTarget"));
-  addTarget->setStatusTip(tr("A target for the first output point: its stroke as it is now"));
-  auto* removeTarget = new QPushButton(tr("&Remove Target"));
-  connect(addTarget, &QPushButton::clicked, this, [this] {
-    const Mechanism& m = doc_->design();
-    const PointId p = !m.outputs.empty() ? m.outputs.front() : PointId{};
-    const double now =
-        p && doc_->solved()
-            ? findLimits(doc_->kinematics(), LimitMeasure::along(p, defaultDirection(m, p))).stroke
-            : 0.0;
-    addTargetRow(0, p ? QString::fromStdString(m.pointLabel(p)) : QString(), number(now), 0);
-  });
-  connect(removeTarget, &QPushButton::clicked, this, [this] {
-    if (targets_->currentRow() >= 0) targets_->removeRow(targets_->currentRow());
-  });
-  auto* targetButtons = new QHBoxLayout;
-  targetButtons->addWidget(addTarget);
-  targetButtons->addWidget(removeTarget);
-  targetButtons->addStretch();
   summary_->setMinimumHeight(2 * summary_->fontMetrics().lineSpacing() + 4);
   auto* close = new QDialogButtonBox(QDialogButtonBox::Close);
   connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
   auto* layout = new QVBoxLayout(this);
-  layout->addWidget(new QLabel(tr("Dimensions to vary")));
+  layout->addWidget(new QLabel(tr("Dimensions or counterweights to vary (not both)")));
   layout->addWidget(variables_, 2);
   layout->addWidget(new QLabel(tr("Targets")));
-  layout->addWidget(targets, 1);
-  layout->addLayout(targetButtons);
+  layout->addWidget(targets_, 1);
+  layout->addLayout(buildTargetButtons());
   layout->addLayout(row);
   layout->addWidget(result_table_, 2);
   layout->addWidget(summary_);
   layout->addWidget(close);
-  resize(640, 720);
+  resize(720, 760);
   connect(doc_, &Document::designChanged, this, [this] {
     ++generation_;  // a search under way is of the design before: its result is dropped
     result_.reset();
@@ -130,17 +118,61 @@ void OptimizeDialog::buildVariables() {
   variables_->verticalHeader()->setVisible(false);
 }
 
-QTableWidget* OptimizeDialog::buildTargets() {
-  targets_ = new QTableWidget(0, 4);
-  targets_->setObjectName(QStringLiteral("optTargets"));
-  targets_->setHorizontalHeaderLabels(
-      {tr("Kind"), tr("Point"), tr("Target (mm; x, y)"), tr("At crank (°)")});
-  targets_->horizontalHeader()->setSectionResizeMode(TargetPoint, QHeaderView::Stretch);
-  targets_->verticalHeader()->setVisible(false);
-  return targets_;
+// Add Target: the first output point's stroke as it is, ready to be typed over (its kind chosen
+// in the row); Path Points: a path target from a CSV file; Remove Target: the current row.
+QLayout* OptimizeDialog::buildTargetButtons() {
+  auto* addTarget = new QPushButton(tr("Add &Target"));
+  addTarget->setObjectName(QStringLiteral("optAddTarget"));
+  addTarget->setStatusTip(
+      tr("A target for the first output point: its stroke as it is now; "
+         "choose its kind in the row"));
+  auto* addPath = new QPushButton(tr("&Path Points..."));
+  addPath->setObjectName(QStringLiteral("optAddPath"));
+  addPath->setStatusTip(
+      tr("A path target: points x,y (mm) a line from a CSV file, the first "
+         "output point's curve to pass near them"));
+  auto* removeTarget = new QPushButton(tr("&Remove Target"));
+  connect(addTarget, &QPushButton::clicked, this, [this] {
+    const Mechanism& m = doc_->design();
+    const QString p =
+        !m.outputs.empty() ? QString::fromStdString(m.pointLabel(m.outputs.front())) : QString();
+    if (targets_->addRow(OptTarget::Kind::Stroke, p, QString()))
+      targets_->setKind(targets_->rowCount() - 1, OptTarget::Kind::Stroke);
+  });
+  connect(addPath, &QPushButton::clicked, this, [this] {
+    const QString file = QFileDialog::getOpenFileName(this, tr("Path Points"), QString(),
+                                                      tr("Points x,y (*.csv);;All files (*)"));
+    const Mechanism& m = doc_->design();
+    const QString p =
+        !m.outputs.empty() ? QString::fromStdString(m.pointLabel(m.outputs.front())) : QString();
+    if (!file.isEmpty()) targets_->addRow(OptTarget::Kind::Path, p, file);
+  });
+  connect(removeTarget, &QPushButton::clicked, this, [this] {
+    if (targets_->currentRow() >= 0) targets_->removeRow(targets_->currentRow());
+  });
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(addTarget);
+  buttons->addWidget(addPath);
+  buttons->addWidget(removeTarget);
+  buttons->addStretch();
+  return buttons;
 }
 
-// The dimensions' rows again, keeping what was ticked and the bounds typed, by name.
+void OptimizeDialog::addVariableRow(int r, const QString& name, const QString& value, double lo,
+                                    double hi) {
+  auto* vary = new QTableWidgetItem;
+  vary->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+  vary->setCheckState(Qt::Unchecked);
+  variables_->setItem(r, Vary, vary);
+  variables_->setItem(r, Name, fixed(name));
+  variables_->setItem(r, Value, fixed(value));
+  variables_->setItem(r, Low, new QTableWidgetItem(number(lo)));
+  variables_->setItem(r, High, new QTableWidgetItem(number(hi)));
+}
+
+// The dimensions' rows again, then two for each body pinned to the ground (its counterweight's
+// static moment, x and y in its drawing, 0 as drawn), keeping what was ticked and the bounds
+// typed, by name.
 void OptimizeDialog::refresh() {
   struct Kept {
     bool vary;
@@ -151,43 +183,31 @@ void OptimizeDialog::refresh() {
     kept[variables_->item(r, Name)->text()] = {
         variables_->item(r, Vary)->checkState() == Qt::Checked, variables_->item(r, Low)->text(),
         variables_->item(r, High)->text()};
-  const std::vector<Dimension> dims = dimensions(doc_->design());
-  variables_->setRowCount(static_cast<int>(dims.size()));
-  for (int r = 0; r < variables_->rowCount(); ++r) {
-    const Dimension& d = dims[r];
-    const QString name = QString::fromStdString(d.name);
-    const auto k = kept.find(name);
+  const Mechanism& m = doc_->design();
+  const std::vector<Dimension> dims = dimensions(m);
+  std::vector<std::string> weights;
+  for (const Body& b : m.bodies)
+    if (Counterweight c; !b.ground && counterweightOn(m, b.id, c).ok())
+      for (const char* axis : {".counterweight.x", ".counterweight.y"})
+        weights.push_back(b.name + axis);
+  variables_->setRowCount(static_cast<int>(dims.size() + weights.size()));
+  int r = 0;
+  for (const Dimension& d : dims) {
     const double span =
         std::max(0.1 * std::abs(d.value), d.unit == Dimension::Unit::Deg ? 5.0 : 1.0);
-    auto* vary = new QTableWidgetItem;
-    vary->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
-    vary->setCheckState(k != kept.end() && k->second.vary ? Qt::Checked : Qt::Unchecked);
-    variables_->setItem(r, Vary, vary);
-    variables_->setItem(r, Name, fixed(name));
-    variables_->setItem(r, Value, fixed(number(d.value)));
-    variables_->setItem(
-        r, Low, new QTableWidgetItem(k != kept.end() ? k->second.lo : number(d.value - span)));
-    variables_->setItem(
-        r, High, new QTableWidgetItem(k != kept.end() ? k->second.hi : number(d.value + span)));
+    addVariableRow(r++, QString::fromStdString(d.name),
+                   number(d.value) + QStringLiteral(" ") + unitOf(d.unit), d.value - span,
+                   d.value + span);
   }
-}
-
-void OptimizeDialog::addTargetRow(int kind, const QString& point, const QString& value,
-                                  double crankDeg) {
-  const int r = targets_->rowCount();
-  targets_->insertRow(r);
-  auto* kinds = new QComboBox;
-  kinds->addItems({tr("stroke"), tr("position")});
-  kinds->setCurrentIndex(kind);
-  targets_->setCellWidget(r, TargetKind, kinds);
-  auto* points = new QComboBox;
-  const Mechanism& m = doc_->design();
-  for (const Point& p : m.points)
-    if (!m.body(p.body)->ground) points->addItem(QString::fromStdString(m.pointLabel(p.id)));
-  points->setCurrentText(point);
-  targets_->setCellWidget(r, TargetPoint, points);
-  targets_->setItem(r, TargetValue, new QTableWidgetItem(value));
-  targets_->setItem(r, TargetCrank, new QTableWidgetItem(number(crankDeg)));
+  for (const std::string& w : weights)
+    addVariableRow(r++, QString::fromStdString(w), tr("0 kg mm"), -50, 50);
+  for (r = 0; r < variables_->rowCount(); ++r)
+    if (const auto k = kept.find(variables_->item(r, Name)->text()); k != kept.end()) {
+      variables_->item(r, Vary)->setCheckState(k->second.vary ? Qt::Checked : Qt::Unchecked);
+      variables_->item(r, Low)->setText(k->second.lo);
+      variables_->item(r, High)->setText(k->second.hi);
+    }
+  targets_->refreshChoices();
 }
 
 bool OptimizeDialog::vary(const std::string& dimension, double lo, double hi) {
@@ -202,16 +222,17 @@ bool OptimizeDialog::vary(const std::string& dimension, double lo, double hi) {
 }
 
 bool OptimizeDialog::addStrokeTarget(const std::string& point, double strokeMm) {
-  if (!doc_->design().findPoint(point)) return false;
-  addTargetRow(0, QString::fromStdString(point), number(strokeMm), 0);
-  return true;
+  return addTarget(OptTarget::Kind::Stroke, QString::fromStdString(point), number(strokeMm));
 }
 
 bool OptimizeDialog::addPositionTarget(const std::string& point, double crankDeg, Vec2 at) {
-  if (!doc_->design().findPoint(point)) return false;
-  addTargetRow(1, QString::fromStdString(point),
-               QStringLiteral("%1, %2").arg(number(at.x()), number(at.y())), crankDeg);
-  return true;
+  return addTarget(OptTarget::Kind::Position, QString::fromStdString(point),
+                   QStringLiteral("%1, %2").arg(number(at.x()), number(at.y())), crankDeg);
+}
+
+bool OptimizeDialog::addTarget(OptTarget::Kind kind, const QString& of, const QString& value,
+                               double crankDeg, double weight) {
+  return !of.isEmpty() && targets_->addRow(kind, of, value, crankDeg, weight);
 }
 
 bool OptimizeDialog::readSpec(OptimizeSpec& spec, QString* why) const {
@@ -230,36 +251,9 @@ bool OptimizeDialog::readSpec(OptimizeSpec& spec, QString* why) const {
              false;
     spec.variables.push_back(v);
   }
-  const Mechanism& m = doc_->design();
-  for (int r = 0; r < targets_->rowCount(); ++r) {
-    OptTarget t;
-    const auto* kind = qobject_cast<QComboBox*>(targets_->cellWidget(r, TargetKind));
-    const auto* point = qobject_cast<QComboBox*>(targets_->cellWidget(r, TargetPoint));
-    const std::optional<PointId> p = m.findPoint(point->currentText().toStdString());
-    if (!p) return *why = tr("target %1: no point %2").arg(r + 1).arg(point->currentText()), false;
-    t.point = *p;
-    const QStringList parts = targets_->item(r, TargetValue)->text().split(QLatin1Char(','));
-    bool ok = !parts.isEmpty();
-    std::vector<double> v;
-    for (const QString& s : parts)
-      v.push_back(s.trimmed().toDouble(&ok)), ok = ok && std::isfinite(v.back());
-    if (kind->currentIndex() == 0 && ok && v.size() == 1) {
-      t.kind = OptTarget::Kind::Stroke;
-      t.stroke = v[0];
-    } else if (kind->currentIndex() == 1 && ok && v.size() == 2 &&
-               value(targets_->item(r, TargetCrank), t.crankDeg)) {
-      t.kind = OptTarget::Kind::Position;
-      t.at = Vec2(v[0], v[1]);
-    } else {
-      return *why = tr("target %1: a stroke is one number (mm), a position two (x, y) and a crank "
-                       "angle")
-                        .arg(r + 1),
-             false;
-    }
-    spec.targets.push_back(t);
-  }
+  if (!targets_->read(spec.targets, why)) return false;
   if (spec.variables.empty() || spec.targets.empty())
-    return *why = tr("Tick a dimension to vary and add a target"), false;
+    return *why = tr("Tick a dimension or a counterweight to vary and add a target"), false;
   spec.starts = starts_->value();
   spec.seed = static_cast<std::uint64_t>(seed_->value());
   return true;
@@ -273,6 +267,7 @@ void OptimizeDialog::find() {
     return;
   }
   busy_ = true;
+  spec_ = spec;
   find_->setEnabled(false);
   apply_->setEnabled(false);
   summary_->setText(tr("Searching..."));
@@ -302,6 +297,8 @@ void OptimizeDialog::find() {
   }));
 }
 
+// Each variable with its unit, each target's measures (design/optimize_targets.h), each
+// counterweight's mass, the objective: before and after.
 void OptimizeDialog::showResult() {
   const OptimizeResult& r = *result_;
   result_table_->setRowCount(0);
@@ -309,9 +306,6 @@ void OptimizeDialog::showResult() {
     summary_->setText(QString::fromStdString(r.status.message));
     return;
   }
-  OptimizeSpec spec;
-  QString why;
-  readSpec(spec, &why);
   auto add = [this](const QString& what, double before, double after, const QString& target) {
     const int row = result_table_->rowCount();
     result_table_->insertRow(row);
@@ -320,28 +314,37 @@ void OptimizeDialog::showResult() {
     result_table_->setItem(row, 2, fixed(number(after)));
     result_table_->setItem(row, 3, fixed(target));
   };
-  for (size_t i = 0; i < r.before.size() && i < spec.variables.size(); ++i)
-    add(QString::fromStdString(spec.variables[i].name), r.before[i], r.after[i], QString());
   const Mechanism& m = doc_->design();
-  for (size_t t = 0; t < spec.targets.size() && t < r.atAfter.measures.size(); ++t) {
-    const OptTarget& g = spec.targets[t];
-    const QString p = QString::fromStdString(m.pointLabel(g.point));
-    const Measure& b = r.atBefore.measures.size() > t ? r.atBefore.measures[t] : Measure{};
-    const Measure& a = r.atAfter.measures[t];
-    if (g.kind == OptTarget::Kind::Stroke)
-      add(tr("stroke of %1 (mm)").arg(p), b.empty() ? NAN : b[0], a[0], number(g.stroke));
-    else
-      for (int c = 0; c < 2; ++c)
-        add(tr("%1 of %2 at crank %3°").arg(c ? "y" : "x", p).arg(g.crankDeg),
-            b.size() > 1 ? b[c] : NAN, a[c], number(g.at[c]));
+  std::map<std::string, Dimension::Unit> units;
+  for (const Dimension& d : dimensions(m)) units[d.name] = d.unit;
+  for (size_t i = 0; i < r.before.size() && i < spec_.variables.size(); ++i) {
+    const std::string& name = spec_.variables[i].name;
+    const auto u = units.find(name);
+    add(QStringLiteral("%1 (%2)").arg(QString::fromStdString(name),
+                                      u != units.end() ? unitOf(u->second) : tr("kg mm")),
+        r.before[i], r.after[i], QString());
   }
-  add(tr("objective (mm²)"), r.atBefore.objective, r.atAfter.objective, QStringLiteral("0"));
-  summary_->setText(summary());
+  for (size_t t = 0; t < spec_.targets.size() && t < r.atAfter.measures.size(); ++t) {
+    const Measure& b = r.atBefore.measures.size() > t ? r.atBefore.measures[t] : Measure{};
+    for (const MeasureRow& row : measureRows(m, spec_.targets[t], b, r.atAfter.measures[t]))
+      add(row.what, row.before, row.after, row.target);
+  }
+  for (const Counterweight& c : r.counterweights)
+    add(tr("counterweight on %1 (kg, at %2 mm)")
+            .arg(QString::fromStdString(m.body(c.body) ? m.body(c.body)->name : std::string()))
+            .arg(number(c.radiusMm())),
+        0, c.kg, QString());
+  add(tr("objective (weighted sum of squares)"), r.atBefore.objective, r.atAfter.objective,
+      QStringLiteral("0"));
+  summary_->setText(resultSummary());
   apply_->setEnabled(r.atAfter.feasible);
 }
 
 QString OptimizeDialog::summary() const {
-  if (!result_) return summary_->text();
+  return summary_->text();
+}
+
+QString OptimizeDialog::resultSummary() const {
   const OptimizeResult& r = *result_;
   if (!r.status.ok()) return QString::fromStdString(r.status.message);
   return tr("%1 of %2 starts found the best (%3 could not assemble or turn), %4 designs tried. "
@@ -356,6 +359,46 @@ bool OptimizeDialog::apply() {
   if (!result_ || !result_->status.ok() || !result_->atAfter.feasible) return false;
   commitEdit(doc_, tr("Find Dimensions"), result_->design);
   return true;
+}
+
+}  // namespace linkage::ui
+
+namespace linkage::ui {
+
+QStringList OptimizeDialog::probeLines() const {
+  QStringList out;
+  out << QStringLiteral("optimize summary: ") + summary_->text().simplified();
+  for (const QPushButton* b : findChildren<QPushButton*>()) {
+    if (b->objectName().isEmpty() || !b->isVisible()) continue;
+    const QPoint c = b->mapToGlobal(b->rect().center());
+    out << QStringLiteral("at optimize button %1: %2 %3 %4")
+               .arg(b->objectName())
+               .arg(c.x())
+               .arg(c.y())
+               .arg(b->isEnabled() ? "enabled" : "disabled");
+  }
+  // The Vary boxes of the rows in sight (a script scrolls to the others).
+  const QRect seen = variables_->viewport()->rect();
+  for (int r = 0; r < variables_->rowCount(); ++r) {
+    const QRect cell = variables_->visualItemRect(variables_->item(r, Vary));
+    const QString name = variables_->item(r, Name)->text();
+    out << QStringLiteral("optimize vary %1: %2")
+               .arg(name)
+               .arg(variables_->item(r, Vary)->checkState() == Qt::Checked ? 1 : 0);
+    if (!seen.contains(cell.center())) continue;
+    // The box at the cell's left, where a click ticks it.
+    const QPoint c =
+        variables_->viewport()->mapToGlobal(QPoint(cell.left() + 10, cell.center().y()));
+    out << QStringLiteral("at optimize vary %1: %2 %3").arg(name).arg(c.x()).arg(c.y());
+  }
+  out << targets_->probeLines();
+  for (int r = 0; r < result_table_->rowCount(); ++r) {
+    QStringList cells;
+    for (int c = 0; c < result_table_->columnCount(); ++c)
+      cells << (result_table_->item(r, c) ? result_table_->item(r, c)->text() : QString());
+    out << QStringLiteral("optimize result: ") + cells.join(QStringLiteral(" | "));
+  }
+  return out;
 }
 
 }  // namespace linkage::ui

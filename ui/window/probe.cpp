@@ -1,6 +1,7 @@
 #include "window/probe.h"
 
 #include "cam/cam_panel.h"
+#include "design/optimize_dialog.h"
 #include "design/sensitivity_panel.h"
 #include "window/cam_feature.h"
 #include "window/sensitivity_feature.h"
@@ -182,6 +183,7 @@ void windowText(MainWindow* w, QStringList& out) {
   out << w->cycle().panel()->probeLines();
   out << w->cams().panel()->probeLines();
   out << w->sensitivity().panel()->probeLines();
+  if (const auto* d = w->findChild<OptimizeDialog*>(); d && d->isVisible()) out << d->probeLines();
   out << QStringLiteral("clearance marks: %1").arg(w->cycle().marks()->marks().size());
   for (const ClearanceMark& m : w->cycle().marks()->marks())
     out << QStringLiteral("clearance mark: %1 (part of %2 points)").arg(m.text).arg(m.part.size());

@@ -26,8 +26,9 @@ SensitivityFeature::SensitivityFeature(MainWindow& w, WindowLayout& layout)
   layout.add(Slot::AnalysisSensitivityDock, showPanel);
   findDimensions = makeAction(
       &w, "findDimensions", tr("Find &Dimensions..."), QKeySequence(tr("Ctrl+Shift+F")),
-      tr("Find the dimensions that meet targets (a stroke, a point's place at a crank angle): "
-         "a search fed by the exact sensitivities, the result applied as one undo step"));
+      tr("Find the dimensions or counterweights that meet targets (a stroke, a place, a path, a "
+         "transmission angle, the shaking force, a clearance, a window's end): a search fed by "
+         "the exact sensitivities, the result applied as one undo step"));
   connect(findDimensions, &QAction::triggered, this, [this] {
     OptimizeDialog* d = optimizeDialog();
     d->show();
