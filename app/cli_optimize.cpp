@@ -4,11 +4,11 @@
 #include <sstream>
 
 #include "cli_common.h"
-#include "cli_optimize_text.h"
 #include "cli_parser.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
 #include "linkage/optimize.h"
+#include "linkage/optimize_text.h"
 #include "linkage/sensitivity.h"
 #include "linkage/transmission.h"
 
@@ -135,7 +135,7 @@ int optimizeModel(const Options& o) {
   spec.seed = static_cast<std::uint64_t>(o.seed);
   for (const std::string& v : o.vary) {
     OptVariable var;
-    if (!parseVary(v, var)) {
+    if (!parseOptVary(v, var)) {
       error("--vary " + v + ": expected DIM=LO:HI");
       return kBadInput;
     }
@@ -145,12 +145,12 @@ int optimizeModel(const Options& o) {
   for (const std::string& text : o.targets) {
     OptTarget t;
     std::string why;
-    if (!parseTarget(*m, text, t, why)) {
+    if (!parseOptTarget(*m, text, t, why)) {
       error(why);
       return kBadInput;
     }
     spec.targets.push_back(t);
-    names.push_back(targetName(*m, t));
+    names.push_back(optTargetName(*m, t));
   }
   Kinematics k;
   if (int e = prepare(k, *m); e != kOk) return e;

@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 
 #include "examples.h"
 #include "linkage/optimize.h"
+#include "linkage/optimize_text.h"
 #include "mechanisms.h"
 
 namespace linkage {
@@ -122,6 +124,29 @@ TEST(OptimizeWatch, TheLockstitchNeedleOpensWhereAsked) {
   spec.targets = {t};
   EXPECT_NE(optimize(base, spec).status.message.find("no window named \"nothing\""),
             std::string::npos);
+}
+
+// The targets' text (linkage/optimize_text.h), the CLI's, Python's and the editor's: a path's
+// file may cite its source in comments before its header; a bad line is named by its number.
+TEST(OptimizeText, APathFilesCommentsHeaderAndBadLine) {
+  const test::FourBar f = watched();
+  const std::string good = ::testing::TempDir() + "path_good.csv",
+                    bad = ::testing::TempDir() + "path_bad.csv";
+  std::ofstream(good) << "# McGarva (1994), as four-bar-rs keeps it\n\nx,y\n1,2\r\n3.5,-4\n";
+  std::ofstream(bad) << "x,y\n1,2\n# a comment\nthree,4\n";
+  OptTarget t;
+  std::string why;
+  ASSERT_TRUE(parseOptTarget(f.m, "path:coupler.P=" + good + "*2", t, why)) << why;
+  EXPECT_EQ(t.kind, OptTarget::Kind::Path);
+  ASSERT_EQ(t.path.size(), 2u);
+  EXPECT_EQ(t.path[1], Vec2(3.5, -4));
+  EXPECT_EQ(t.weight, 2);
+  EXPECT_FALSE(parseOptTarget(f.m, "path:coupler.P=" + bad, t, why));
+  EXPECT_NE(why.find(bad + ":4: not two numbers x,y"), std::string::npos) << why;
+  EXPECT_TRUE(parseOptTarget(f.m, "window:high.end=30", t, why)) << why;
+  EXPECT_EQ(optTargetName(f.m, t), "high.end");
+  EXPECT_TRUE(parseOptTarget(f.m, "force:pin:crank.A<=3", t, why)) << why;
+  EXPECT_EQ(optTargetName(f.m, t), "pin:crank.A");
 }
 
 }  // namespace

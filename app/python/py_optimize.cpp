@@ -1,5 +1,6 @@
-// The Python model's optimiser: linkage-cli optimize's search and its text for targets.
-#include "cli_optimize_text.h"
+// The Python model's optimiser: linkage-cli optimize's search and its text for targets
+// (linkage/optimize_text.h).
+#include "linkage/optimize_text.h"
 #include "py_model.h"
 
 namespace linkage::py {
@@ -16,9 +17,9 @@ Model::Optimized Model::optimize(const std::vector<Bounds>& vary,
   for (const std::string& text : targets) {
     OptTarget t;
     std::string why;
-    if (!cli::parseTarget(design_, text, t, why)) throw BadInput(why);
+    if (!parseOptTarget(design_, text, t, why)) throw BadInput(why);
     spec.targets.push_back(t);
-    out.targetNames.push_back(cli::targetName(design_, t));
+    out.targetNames.push_back(optTargetName(design_, t));
   }
   out.result = linkage::optimize(base_, spec);
   if (!out.result.status.ok()) throw BadInput("optimize: " + out.result.status.message);

@@ -4,9 +4,9 @@
 #include <QHeaderView>
 #include <cmath>
 
-#include "cli_optimize_text.h"
 #include "document/document.h"
 #include "linkage/limits.h"
+#include "linkage/optimize_text.h"
 #include "linkage/transmission.h"
 
 namespace linkage::ui {
@@ -210,7 +210,7 @@ bool OptimizeTargets::readRow(int r, OptTarget& t, QString* why) const {
           "path:" + what->currentText().toStdString() + "=" + value.toStdString() + "*1";
       std::string fault;
       OptTarget read;
-      if (!cli::parseTarget(m, text, read, fault))
+      if (!parseOptTarget(m, text, read, fault))
         return fail(QString::fromStdString(fault.substr(("--target " + text + ": ").size())));
       t.path = std::move(read.path);
       return true;

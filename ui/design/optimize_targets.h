@@ -33,7 +33,7 @@ class OptimizeTargets : public QTableWidget {
   // The design changed: every row's list again, keeping what was chosen by its name.
   void refreshChoices();
   // The targets; false with `why` naming the row and its fault. A path's CSV is read here (the
-  // command line's format, app/cli_optimize_text.h).
+  // command line's format, linkage/optimize_text.h).
   bool read(std::vector<OptTarget>& out, QString* why) const;
   QStringList probeLines() const;
 

@@ -8,14 +8,14 @@
 
 #include "linkage/optimize.h"
 
-namespace linkage::cli {
+namespace linkage {
 
 // DIM=LO:HI
-bool parseVary(const std::string& text, OptVariable& v);
+bool parseOptVary(const std::string& text, OptVariable& v);
 // KIND:...=VALUE[*WEIGHT]; false with `why` naming the target and the fault. A path's file is
 // read here.
-bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string& why);
+bool parseOptTarget(const Mechanism& m, std::string text, OptTarget& t, std::string& why);
 // The target's name in the output: body.point, body.point@DEG, mu:..., fx / fy / force.
-std::string targetName(const Mechanism& m, const OptTarget& t);
+std::string optTargetName(const Mechanism& m, const OptTarget& t);
 
-}  // namespace linkage::cli
+}  // namespace linkage

@@ -1,5 +1,5 @@
-// The optimiser's variables and targets as text: see cli_optimize_text.h.
-#include "cli_optimize_text.h"
+// The optimiser's variables and targets as text: see linkage/optimize_text.h.
+#include "linkage/optimize_text.h"
 
 #include <cmath>
 #include <fstream>
@@ -8,7 +8,7 @@
 #include "linkage/io/numbers.h"
 #include "linkage/transmission.h"
 
-namespace linkage::cli {
+namespace linkage {
 
 namespace {
 
@@ -28,11 +28,14 @@ bool readPath(const std::string& file, std::vector<Vec2>& out, std::string& why)
     return false;
   }
   std::string line;
+  bool first = true;  // the first line that is not a comment may be a header
   for (int n = 1; std::getline(in, line); ++n) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;  // comments (a source cited, as four-bar-rs does)
     std::optional<Vec2> p = parsePair(line);
-    if (!p && n == 1) continue;
+    const bool header = !p && first;
+    first = false;
+    if (header) continue;
     if (!p) {
       why = file + ":" + std::to_string(n) + ": not two numbers x,y";
       return false;
@@ -144,7 +147,7 @@ bool parseWindow(const std::string& text, OptTarget& t, std::string& why) {
 
 }  // namespace
 
-bool parseVary(const std::string& text, OptVariable& v) {
+bool parseOptVary(const std::string& text, OptVariable& v) {
   const size_t eq = text.rfind('='), colon = text.rfind(':');
   if (eq == std::string::npos || colon == std::string::npos || colon < eq) return false;
   auto lo = parseNumber(text.substr(eq + 1, colon - eq - 1)),
@@ -155,7 +158,7 @@ bool parseVary(const std::string& text, OptVariable& v) {
 }
 
 // KIND:body.point=VALUE[*WEIGHT]
-bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string& why) {
+bool parseOptTarget(const Mechanism& m, std::string text, OptTarget& t, std::string& why) {
   why = "--target " + text + ": ";
   if (const size_t star = text.rfind('*'); star != std::string::npos) {
     auto w = parseNumber(text.substr(star + 1));
@@ -202,7 +205,7 @@ bool parseTarget(const Mechanism& m, std::string text, OptTarget& t, std::string
   return true;
 }
 
-std::string targetName(const Mechanism& m, const OptTarget& t) {
+std::string optTargetName(const Mechanism& m, const OptTarget& t) {
   if (t.kind == OptTarget::Kind::Shaking) return shakingName(t.measure);
   if (t.kind == OptTarget::Kind::Clearance) return "clearance " + std::to_string(t.index);
   if (t.kind == OptTarget::Kind::Force)
@@ -214,4 +217,4 @@ std::string targetName(const Mechanism& m, const OptTarget& t) {
   return name;
 }
 
-}  // namespace linkage::cli
+}  // namespace linkage
