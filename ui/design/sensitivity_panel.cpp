@@ -7,12 +7,15 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "design/tolerance_view.h"
 #include "document/document.h"
 #include "figures/qcp.h"
 #include "linkage/clearance_sensitivity.h"
 #include "linkage/dynamics.h"
+#include "linkage/elements.h"
+#include "linkage/force_sensitivity.h"
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
 #include "linkage/shaking_sensitivity.h"
@@ -130,6 +133,15 @@ void SensitivityPanel::fillPoints() {
   });
   shakingAt_ = masses ? static_cast<int>(watched.size()) : -1;
   if (masses) watched << tr("shaking force");
+  // Each pin's reaction (named as linkage-cli dynamics names it).
+  pins_.clear();
+  for (size_t j = 0; j < m.joints.size() && masses && !isSpatial(m); ++j)
+    if (kindOf(m.joints[j]).role == Role::Revolute) {
+      pins_.push_back(j);
+      watched << tr("reaction at %1:%2")
+                     .arg(QString::fromUtf8(kindOf(m.joints[j]).name),
+                          QString::fromStdString(m.pointLabel(m.joints[j].a)));
+    }
   if (ids == points_ && watched == clearances_) return;
   points_ = ids;
   clearances_ = watched;
@@ -163,9 +175,12 @@ void SensitivityPanel::compute() {
     quantity_->setEnabled(false);
     component_->setEnabled(false);
     const int n = at - static_cast<int>(points_.size());
-    if (n == shakingAt_) {
+    if (shakingAt_ >= 0 && n >= shakingAt_) {
       component_->setEnabled(true);
-      shakingBars(component_->currentIndex());
+      if (n == shakingAt_)
+        shakingBars(component_->currentIndex());
+      else
+        reactionBars(pins_.at(n - shakingAt_ - 1), component_->currentIndex());
       return;
     }
     if (n < windowsFrom_)
@@ -409,6 +424,61 @@ void SensitivityPanel::shakingBars(int which) {
                         .arg(F.norm(), 0, 'g', 4)
                         .arg(F.x(), 0, 'g', 4)
                         .arg(F.y(), 0, 'g', 4)
+                        .arg(QString::fromStdString(bars_[0].dimension))
+                        .arg(bars_[0].now, 0, 'g', 4)
+                        .arg(bars_[0].peak, 0, 'g', 4));
+}
+
+void SensitivityPanel::reactionBars(size_t j, int which) {
+  Kinematics k = doc_->kinematics();
+  k.setAccelerations(true);
+  const Mechanism& m = k.mechanism();
+  const JointId id = m.joints.at(j).id;
+  const std::vector<Dimension> dims = dimensions(m);
+  const JointForceSensitivity here = jointForceSensitivity(k, id, dims);
+  if (here.status.code == StatusCode::BadModel) {
+    showNothing(tr("Not yet: %1").arg(QString::fromStdString(here.status.message)));
+    return;
+  }
+  const int w = std::min(which, 2);
+  auto part = [w](const Vec2& f) { return w == 2 ? f.norm() : f[w]; };
+  // The turn's largest: all the dimensions' derivatives at once at each angle, read one by one.
+  struct Memo {
+    double deg = NAN;
+    JointForceSensitivity f;
+  };
+  auto memo = std::make_shared<Memo>();
+  Sensitivity s;
+  if (Status st = s.prepare(k, dims); !st.ok()) {
+    showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
+    return;
+  }
+  const std::vector<double>& peak =
+      turnPeaks({PointId{}, -3 - static_cast<int>(j), w}, s, k,
+                [&, memo](const Sensitivity&, const Kinematics& kk, int d) {
+                  if (memo->deg != kk.crankDeg()) memo->f = jointForceSensitivity(kk, id, dims);
+                  memo->deg = kk.crankDeg();
+                  return memo->f.status.ok() ? part(memo->f.derivative[d]) : 0.0;
+                });
+  const bool ok = here.status.ok();
+  bars_.clear();
+  for (size_t d = 0; d < dims.size(); ++d) {
+    const double now = ok ? part(here.derivative[d]) : 0.0;
+    bars_.push_back({dims[d].name, now, std::max(peak[d], std::abs(now))});
+  }
+  rank();
+  deadHere_ = !ok;
+  draw();
+  plot_->xAxis->setLabel(
+      tr("N per unit of the dimension (mm, degree, ratio): blue at this "
+         "crank angle, grey the largest over a turn"));
+  plot_->replot();
+  if (!ok || bars_.empty()) return;
+  summary_->setText(tr("The pin bears %1 N here (fx %2, fy %3); %4 changes it most (%5 N per "
+                       "unit here, up to %6 N over a turn)")
+                        .arg(here.force.norm(), 0, 'g', 4)
+                        .arg(here.force.x(), 0, 'g', 4)
+                        .arg(here.force.y(), 0, 'g', 4)
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4)
                         .arg(bars_[0].peak, 0, 'g', 4));
