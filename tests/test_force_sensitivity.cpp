@@ -8,6 +8,7 @@
 #include <complex>
 #include <cstdio>
 #include <map>
+#include <tuple>
 
 #include "linkage/dynamics.h"
 #include "linkage/force_sensitivity.h"

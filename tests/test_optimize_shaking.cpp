@@ -7,6 +7,7 @@
 
 #include <complex>
 #include <map>
+#include <tuple>
 
 #include "examples.h"
 #include "linkage/balance.h"
@@ -68,8 +69,9 @@ TEST(ShakingSensitivity, SliderCrankMatchesClosedFormByComplexStep) {
     const Vec2 u = (to - from).normalized();
     return std::pair{(c - from).dot(u), (c - from).dot(perp(u))};
   };
-  const auto [a1, p1] = parts(Vec2(0, 0), A0, c1);
-  const auto [a2, p2] = parts(A0, B0, c2);
+  double a1 = 0, p1 = 0, a2 = 0, p2 = 0;  // (clang 14 captures no structured binding)
+  std::tie(a1, p1) = parts(Vec2(0, 0), A0, c1);
+  std::tie(a2, p2) = parts(A0, B0, c2);
   const std::vector<Dimension> dims = dimensions(sc.m);
   std::map<std::string, C> base;
   for (const Dimension& d : dims) base[d.name] = 0;
