@@ -260,9 +260,10 @@ TEST(Sensitivity, PlanetGearsRatioAndLengthsMatchTheEpicycloid) {
 // 0) and the y ones to (0, 1), for every point of every body: every row kind and every slot,
 // exactly.
 TEST(Sensitivity, MovingTheGroundMovesEveryPointOfTheMachines) {
-  for (const char* name : {"wanzer-inversion-2", "drop-feed", "lockstitch-machine",
-                           "overedge-needle-arm", "needle-876-alpha-35", "gear-four-bar",
-                           "lockstitch-arm-shaft", "slider-crank-22a-lambda-0.3"}) {
+  for (const char* name :
+       {"wanzer-inversion-2", "drop-feed", "lockstitch-machine", "overedge-needle-arm",
+        "needle-876-alpha-35", "gear-four-bar", "lockstitch-arm-shaft",
+        "slider-crank-22a-lambda-0.3", "lockstitch-cams", "chainstitch-looper-cam"}) {
     const Mechanism m = test::example(name);
     Kinematics k;
     ASSERT_TRUE(k.load(m).ok()) << name;
@@ -310,9 +311,10 @@ TEST(Sensitivity, MovingTheGroundMovesEveryPointOfTheMachines) {
 // position itself. Every body's dimensions of the machines, exactly (arc slots, which have no
 // dimension, left out).
 TEST(Sensitivity, ScalingTheDrawingScalesEveryPointOfTheMachines) {
-  for (const char* name : {"wanzer-inversion-2", "drop-feed", "lockstitch-machine",
-                           "overedge-needle-arm", "needle-876-alpha-35", "gear-four-bar",
-                           "lockstitch-arm-shaft", "slider-crank-22a-lambda-0.3"}) {
+  for (const char* name :
+       {"wanzer-inversion-2", "drop-feed", "lockstitch-machine", "overedge-needle-arm",
+        "needle-876-alpha-35", "gear-four-bar", "lockstitch-arm-shaft",
+        "slider-crank-22a-lambda-0.3", "lockstitch-cams", "chainstitch-looper-cam"}) {
     const Mechanism m = test::example(name);
     Kinematics k;
     ASSERT_TRUE(k.load(m).ok()) << name;

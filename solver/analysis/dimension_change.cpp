@@ -138,10 +138,11 @@ Status pinPlay(const Mechanism& m, const std::string& pin, PinPlay& out) {
                               "moving either would open them as well");
     out.joint = j.id;
     out.point = p;
-    out.x =
-        Dimension{pin + ".play.x", 0, Dimension::Unit::Mm, {{p, Vec2::UnitX()}}, {}, {}, {}, {}};
-    out.y =
-        Dimension{pin + ".play.y", 0, Dimension::Unit::Mm, {{p, Vec2::UnitY()}}, {}, {}, {}, {}};
+    out.x = out.y = Dimension{};
+    out.x.name = pin + ".play.x";
+    out.x.points = {{p, Vec2::UnitX()}};
+    out.y.name = pin + ".play.y";
+    out.y.points = {{p, Vec2::UnitY()}};
     return Status::success();
   }
   return Status::badModel("no pin joint " + pin +

@@ -192,6 +192,25 @@ bool setCamMotion(Mechanism& m, JointId j, std::span<const cam::Segment> segment
   return true;
 }
 
+int risePartner(std::span<const cam::Segment> s, size_t k, double way) {
+  for (size_t i = 1; i < s.size(); ++i) {
+    const size_t o = (k + i) % s.size();
+    if (s[o].law && s[o].rise * way < 0) return static_cast<int>(o);
+  }
+  return -1;
+}
+
+bool withCamRise(std::vector<cam::Segment>& s, size_t k, double rise) {
+  if (k >= s.size()) return false;
+  const double delta = rise - s[k].rise;
+  if (delta == 0) return true;
+  const int o = risePartner(s, k, rise != 0 ? rise : s[k].rise);
+  if (o < 0) return false;
+  s[k].rise = rise;
+  s[o].rise -= delta;
+  return true;
+}
+
 bool setCamBase(Mechanism& m, JointId j, double baseMm, std::string* why) {
   Joint* k = camJointOf(m, j, why);
   if (!k) return false;
