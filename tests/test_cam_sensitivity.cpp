@@ -14,10 +14,13 @@
 
 #include "cam_fixtures.h"
 #include "linkage/cam.h"
+#include "linkage/cam_edits.h"
 #include "linkage/cam_joint.h"
+#include "linkage/dimension_change.h"
 #include "linkage/guide.h"
 #include "linkage/io/model_file.h"
 #include "linkage/kinematics.h"
+#include "linkage/optimize.h"
 #include "linkage/sensitivity.h"
 
 namespace linkage {
@@ -223,6 +226,82 @@ TEST(CamSensitivity, OscillatingFollowerMatchesItsClosedForm) {
     return {Pc + arm, sign * s.v * perp(arm), sign * s.a * perp(arm) - s.v * s.v * arm};
   };
   expectMatches(m, "rocker.R", v, pre, closedForm, 9);
+}
+
+// Finite changes (linkage/dimension_change.h): the translating follower with its first rise
+// 0.5 mm higher (its fall 0.5 mm deeper), its base 2 mm and its roller 1 mm larger rides at
+// sqrt((base + roller)^2 - e^2) + s(theta) of the new programme, exactly; the file says so.
+TEST(CamSensitivity, ChangedRisesBaseAndRollerAreTheClosedForm) {
+  test::TranslatingCam spec;
+  Mechanism m = parsed(spec.text());
+  const std::vector<Dimension> dims = dimensions(m);
+  std::vector<double> delta(dims.size(), 0.0);
+  for (size_t d = 0; d < dims.size(); ++d) {
+    if (dims[d].name == "cam:follower.R.segment1.rise") delta[d] = 0.5;
+    if (dims[d].name == "cam:follower.R.base") delta[d] = 2;
+    if (dims[d].name == "cam:follower.R.roller") delta[d] = 1;
+  }
+  ASSERT_TRUE(changeDimensions(m, dims, delta).ok());
+  const std::optional<CamJoint> c = camJoint(m, m.joints.back());
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->kind.base, 32);
+  EXPECT_EQ(c->kind.roller, 9);
+  const std::vector<cam::Segment> segs = c->program.segments();
+  ASSERT_EQ(segs.size(), 4u);
+  EXPECT_EQ(segs[0].rise, 10.5);
+  EXPECT_EQ(segs[2].rise, -10.5);
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const PointId R = *m.findPoint("follower.R");
+  const double by = std::sqrt(41.0 * 41.0 - spec.e * spec.e);
+  const std::vector<C> h = {10.5, 0, -10.5, 0};
+  for (int deg = 0; deg < 360; deg += 5) {
+    ASSERT_TRUE(k.moveTo(deg).ok()) << deg;
+    const double s = law(segs, h, 1, deg * kDeg).s.real();
+    EXPECT_NEAR(k.position(R).x(), spec.e, 1e-9 * 50) << deg;
+    EXPECT_NEAR(k.position(R).y(), by + s, 1e-9 * 50) << deg;
+  }
+}
+
+// setDimension of a rise is the rise typed in the Cam dock (withCamRise: the next segment
+// moving the other way takes the difference), for the translating and the oscillating
+// follower's first rise; and a finite change of each cam dimension of the oscillating follower
+// moves its roller as its derivative says, to O(h^2).
+TEST(CamSensitivity, SetDimensionOfARiseIsTheRiseTypedInTheDock) {
+  for (bool oscillating : {false, true}) {
+    Mechanism m =
+        parsed(oscillating ? test::OscillatingCam{}.text() : test::TranslatingCam{}.text());
+    const std::string name =
+        std::string("cam:") + (oscillating ? "rocker.R" : "follower.R") + ".segment1.rise";
+    std::vector<cam::Segment> typed = camJoint(m, m.joints.back())->program.segments();
+    const double rise = typed[0].rise + 1.5;
+    ASSERT_TRUE(withCamRise(typed, 0, rise));
+    ASSERT_TRUE(setDimension(m, name, rise).ok()) << name;
+    EXPECT_EQ(camJoint(m, m.joints.back())->program.segments(), typed) << name;
+    EXPECT_EQ(typed[2].rise, -rise) << name;  // the fall, by hand
+  }
+  const Mechanism m = parsed(test::OscillatingCam{}.text());
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const std::vector<Dimension> dims = dimensions(m);
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dims).ok());
+  const PointId R = *m.findPoint("rocker.R");
+  const double h = 1e-4;
+  for (size_t d = 0; d < dims.size(); ++d) {
+    if (!dims[d].camOf) continue;
+    Mechanism changed = m;
+    std::vector<double> delta(dims.size(), 0.0);
+    delta[d] = h;
+    ASSERT_TRUE(changeDimensions(changed, dims, delta).ok()) << dims[d].name;
+    Kinematics kc;
+    ASSERT_TRUE(kc.load(changed).ok()) << dims[d].name;
+    for (int deg = 0; deg < 360; deg += 30) {
+      ASSERT_TRUE(k.moveTo(deg).ok() && kc.moveTo(deg).ok() && s.at(k).ok());
+      const Vec2 moved = (kc.position(R) - k.position(R)) / h;
+      EXPECT_LT((moved - s.point(k, R, static_cast<int>(d))).norm(), 1e-3) << dims[d].name;
+    }
+  }
 }
 
 }  // namespace

@@ -1,10 +1,13 @@
 // Exact finite changes of a mechanism's dimensions (linkage/dimension_change.h).
 #include "linkage/dimension_change.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "analysis/dimensions_space.h"
+#include "linkage/cam_edits.h"
+#include "linkage/cam_joint.h"
 #include "linkage/elements.h"
 #include "linkage/gear.h"
 #include "linkage/guide.h"
@@ -85,6 +88,37 @@ void changeSlot(Mechanism& m, Slot& s, const Changes& c) {
   s.p0 += offset * normal;
 }
 
+// A cam's changes as the Cam dock makes them (linkage/cam_edits.h): the rises by each
+// dimension's own change of the programme (the segment and the one taking the difference), the
+// roller on the same cam (setCamRoller keeps base + roller, so the base is set back after it)
+// and the base, the follower moved to its new lowest position.
+Status changeCam(Mechanism& m, JointId j, const std::vector<Dimension>& dims,
+                 const std::vector<double>& delta) {
+  const Joint* joint = m.joint(j);
+  std::string why;
+  const std::optional<CamJoint> c = joint ? camJointAsDrawn(m, *joint, &why) : std::nullopt;
+  if (!c) return Status::badModel(jointLabel(m, j) + ": " + why);
+  std::vector<cam::Segment> segs = c->program.segments();
+  double base = c->kind.base, roller = c->kind.roller;
+  std::string names;
+  bool rises = false;
+  for (size_t k = 0; k < dims.size(); ++k) {
+    if (dims[k].camOf != j || delta[k] == 0) continue;
+    names += (names.empty() ? "" : ", ") + dims[k].name;
+    for (size_t i = 0; i < segs.size() && i < dims[k].camRises.size(); ++i) {
+      segs[i].rise += delta[k] * dims[k].camRises[i];
+      rises = true;
+    }
+    (dims[k].camRoller ? roller : base) += delta[k] * dims[k].camBase;
+  }
+  if (rises && !setCamMotion(m, j, segs, &why)) return Status::badModel(names + ": " + why);
+  if (roller != c->kind.roller && !setCamRoller(m, j, roller, &why))
+    return Status::badModel(names + ": " + why);
+  if ((base != c->kind.base || roller != c->kind.roller) && !setCamBase(m, j, base, &why))
+    return Status::badModel(names + ": " + why);
+  return Status::success();
+}
+
 }  // namespace
 
 Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
@@ -105,6 +139,14 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
     for (Joint& j : m.joints)
       if (j.id == dims[k].ratioOf) setGearRatio(j, gearRatio(j) + delta[k]);
   }
+  // The cams first: their lowest positions are placed from the drawing as it is.
+  std::vector<JointId> cams;
+  for (size_t k = 0; k < dims.size(); ++k)
+    if (dims[k].camOf && delta[k] != 0 &&
+        std::find(cams.begin(), cams.end(), dims[k].camOf) == cams.end())
+      cams.push_back(dims[k].camOf);
+  for (JointId j : cams)
+    if (Status s = changeCam(m, j, dims, delta); !s.ok()) return s;
   for (Slot& s : m.slots) changeSlot(m, s, c);
   for (const Body& b : m.bodies) {
     if (!b.ground) {
