@@ -71,14 +71,22 @@ Status changeBody(Mechanism& m, const Body& body, const Changes& c) {
   return Status::success();
 }
 
-void changeSlot(Mechanism& m, Slot& s, const Changes& c) {
-  if (s.arc()) return;
+Status changeSlot(Mechanism& m, Slot& s, const Changes& c) {
   const std::optional<Guide> g = guideOf(s);
-  if (!g) return;
+  if (!g) return Status::success();
   const std::string pre = m.slotLabel(s.id) + ".";
+  if (s.arc()) {  // its radius about its centre, then the whole arc moved
+    if (!c.count(pre + "radius") && !c.count(pre + "centre.x") && !c.count(pre + "centre.y"))
+      return Status::success();  // drawn as it was, to the bit
+    const double radius = g->radius + changeOf(c, pre + "radius");
+    if (!(radius > 0)) return Status::badModel(pre + "radius: an arc's radius must stay above 0");
+    const Vec2 to = g->centre + Vec2(changeOf(c, pre + "centre.x"), changeOf(c, pre + "centre.y"));
+    for (Vec2* p : {&s.p0, &*s.mid, &s.p1}) *p = to + radius / g->radius * (*p - g->centre);
+    return Status::success();
+  }
   const double turn = changeOf(c, pre + "angle") * M_PI / 180;
   const double offset = changeOf(c, pre + "offset");
-  if (turn == 0 && offset == 0) return;
+  if (turn == 0 && offset == 0) return Status::success();
   const double cs = std::cos(turn), sn = std::sin(turn);
   auto rotate = [&](const Vec2& v) {
     return Vec2(cs * v.x() - sn * v.y(), sn * v.x() + cs * v.y());
@@ -86,6 +94,7 @@ void changeSlot(Mechanism& m, Slot& s, const Changes& c) {
   const Vec2 normal = rotate(g->normal);
   s.p1 = s.p0 + rotate(s.p1 - s.p0) + offset * normal;
   s.p0 += offset * normal;
+  return Status::success();
 }
 
 // A cam's changes as the Cam dock makes them (linkage/cam_edits.h): the rises by each
@@ -147,7 +156,8 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
       cams.push_back(dims[k].camOf);
   for (JointId j : cams)
     if (Status s = changeCam(m, j, dims, delta); !s.ok()) return s;
-  for (Slot& s : m.slots) changeSlot(m, s, c);
+  for (Slot& s : m.slots)
+    if (Status st = changeSlot(m, s, c); !st.ok()) return st;
   for (const Body& b : m.bodies) {
     if (!b.ground) {
       if (Status s = changeBody(m, b, c); !s.ok()) return s;

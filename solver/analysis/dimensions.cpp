@@ -89,10 +89,25 @@ void groundDimensions(const Mechanism& m, const Body& ground, std::vector<Dimens
   }
 }
 
+// An arc slot's centre and radius (linkage/sensitivity.h), `from` its body's first point.
+void arcDimensions(const Mechanism& m, const Slot& s, const Guide& g, const Vec2& from,
+                   std::vector<Dimension>& out) {
+  const std::string pre = m.slotLabel(s.id) + ".";
+  for (int c = 0; c < 2; ++c) {
+    const Vec2 e = c ? Vec2::UnitY() : Vec2::UnitX();
+    Dimension d = distance(pre + (c ? "centre.y" : "centre.x"), g.centre[c] - from[c]);
+    d.slots.push_back({s.id, e, e, 0, 0, e});
+    out.push_back(d);
+  }
+  Dimension radius = distance(pre + "radius", g.radius);
+  auto radial = [&](const Vec2& p) -> Vec2 { return (p - g.centre) / g.radius; };
+  radius.slots.push_back({s.id, radial(s.p0), radial(s.p1), 0, 0, radial(*s.mid)});
+  out.push_back(radius);
+}
+
 void slotDimensions(const Mechanism& m, const Slot& s, std::vector<Dimension>& out) {
-  if (s.arc()) return;
   const std::optional<Guide> g = guideOf(s);
-  if (!g) return;
+  if (!g || (s.arc() && isSpatial(m))) return;
   // In space the ground's slot is in the plane of its block, which its offset and angle keep.
   if (m.body(s.body)->ground && isSpatial(m)) return internal::groundSlotInSpace(m, s, out);
   const std::string pre = m.slotLabel(s.id) + ".";
@@ -105,6 +120,7 @@ void slotDimensions(const Mechanism& m, const Slot& s, std::vector<Dimension>& o
         from = q.pos;
         break;
       }
+  if (s.arc()) return arcDimensions(m, s, *g, from, out);
   Dimension offset = distance(pre + "offset", g->normal.dot(s.p0 - from));
   offset.slots.push_back({s.id, g->normal, g->normal});
   Dimension angle =

@@ -8,8 +8,8 @@
 //
 //   Coincident  Phi = p - q                  V = p' - q'           (p = r_i + R_i s_i, ...)
 //   OnLine      Phi = n . (p - q)            V = n' . (p - q) + n . (p' - q')
-//   OnCircle    Phi = (d . d - rho^2)/(2 rho) V = d . d' / rho      (centre and radius: arc slots
-//                                                                   have no dimension)
+//   OnCircle    Phi = (d . d - rho^2)/(2 rho) V = d . d' / rho      (an arc's centre and radius
+//                                                                   from its three points' moves)
 //   Angles      Phi = L (sum c_k theta_k ...) V = L (sum c_k w_k ...) (a gear's ratio: dc)
 //   Distance3   Phi = (D . D - l^2)/(2 l)    V = D . D' / l        (a ball rod, D in the world:
 //                                                                   its ends' depths, dl)
@@ -51,14 +51,38 @@ struct Moves {  // one dimension's move of the drawing, by id value (Sensitivity
   double depth(PointId p, int cls) const { return space.depthIn(p, kept(p), cls); }
 };
 
+// An arc slot's centre c and radius rho as its three points P move (planar machines: an arc
+// of a machine in space has no dimension): (P - c) . (dP - dc) = rho drho for each.
+void arcMove(const Mechanism& m, SlotId id, const Moves& mv, Vec2& dc, double& drho) {
+  dc = Vec2::Zero();
+  drho = 0;
+  for (const Dimension::SlotMove& s : mv.dim.slots) {
+    if (s.slot != id || !s.mid) continue;
+    const Slot& slot = *m.slot(id);
+    const std::optional<Guide> g = guideOf(slot);
+    Eigen::Matrix3d A;
+    Eigen::Vector3d b;
+    const Vec2 p[3] = {slot.p0, *slot.mid, slot.p1}, dp[3] = {s.p0, *s.mid, s.p1};
+    for (int i = 0; i < 3; ++i) {
+      const Vec2 r = p[i] - g->centre;
+      A.row(i) << r.x(), r.y(), g->radius;
+      b[i] = r.dot(dp[i]);
+    }
+    const Eigen::Vector3d x = A.partialPivLu().solve(b);
+    dc = x.head<2>();
+    drho = x[2];
+  }
+}
+
 // The block's point of a slider in an arc slot is compiled as the point at the arc's centre,
-// p - radius (p - c) / |p - c|: its move for a move dp of p (the arc held).
-Vec2 arcBlockMove(const Mechanism& m, const Joint& j, const Moves& mv, int cls) {
-  const Vec2 dp = mv.at(j.a, cls);
+// C' = p - rho (p - c) / |p - c|: its move for a move dp of p and dc, drho of the arc.
+Vec2 arcBlockMove(const Mechanism& m, const Joint& j, const Moves& mv, int cls, const Vec2& dc,
+                  double drho) {
+  const Vec2 dp = mv.at(j.a, cls) - dc;
   const std::optional<Guide> g = guideOf(mv.space.slot(*m.slot(j.slot), cls));
   const Vec2 d = mv.space.drawn(*m.point(j.a), cls) - g->centre;
   const Vec2 u = d.normalized();
-  return dp - g->radius / d.norm() * (dp - u * u.dot(dp));
+  return dp + dc - g->radius / d.norm() * (dp - u * u.dot(dp)) - drho * u;
 }
 
 // A straight slot's point u (its first end) and unit normal n as they move.
@@ -84,6 +108,7 @@ struct RowMove {
   Vec2 n = Vec2::Zero();
   double c[3] = {0, 0, 0};
   double depth[2] = {0, 0}, l = 0;
+  double rho = 0;                              // an arc slot's radius
   double turn = 0;                             // a cam's phi0
   const std::vector<double>* rises = nullptr;  // a cam's d(rises)
 };
@@ -94,8 +119,9 @@ RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& m
   const int cls = mv.space.rowClass(r);
   switch (r.kind) {
     case Primitive::Coincident:
-      if (role == Role::Prismatic) {
-        out.s[0] = arcBlockMove(m, j, mv, cls);
+      if (role == Role::Prismatic) {  // a block in an arc: its point at the centre, the centre
+        arcMove(m, j.slot, mv, out.s[1], out.rho);
+        out.s[0] = arcBlockMove(m, j, mv, cls, out.s[1], out.rho);
       } else {
         out.s[0] = mv.at(j.a, cls);
         out.s[1] = mv.at(j.b, cls);
@@ -105,8 +131,9 @@ RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& m
       out.s[0] = mv.at(j.a, cls);
       slotMove(m, j, mv, cls, out.s[1], out.n);
       break;
-    case Primitive::OnCircle:  // arc slots have no dimension: centre and radius stay
+    case Primitive::OnCircle:  // a pin in an arc: the centre and the radius
       out.s[0] = mv.at(j.a, cls);
+      arcMove(m, j.slot, mv, out.s[1], out.rho);
       break;
     case Primitive::Distance3:  // each end in its own class (elements/ball_rod.cpp)
       for (int e = 0; e < 2; ++e) {
@@ -247,8 +274,8 @@ RowChange rowChange(const System& sys, const Row& r, const Moving& i, const Movi
       for (int o = 0; o < 3; ++o)
         (o == 0 ? out.phi : o == 1 ? out.v : out.a)[0] = lineChange(r.n, mv.n, p, q, j, o);
       break;
-    case Primitive::OnCircle:  // Phi'' = (d' . d' + d . d'') / rho
-      out.phi[0] = d.dot(dd) / r.c[0];
+    case Primitive::OnCircle:  // Phi'' = (d' . d' + d . d'') / rho; V = A = 0 at the pose
+      out.phi[0] = d.dot(dd) / r.c[0] - mv.rho;
       out.v[0] = (dd.dot(v) + d.dot(dv)) / r.c[0];
       out.a[0] = (2 * v.dot(dv) + dd.dot(a) + d.dot(da)) / r.c[0];
       break;

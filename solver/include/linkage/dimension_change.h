@@ -13,6 +13,8 @@
 //   both ends moved along the (turned) normal. The angle reads back exactly; so does the offset
 //   when the angle is unchanged (a turn about the first end changes the offset measured from
 //   elsewhere, as its derivative says).
+// - An arc slot's radius: its three points along their radii from its centre; its centre: the
+//   arc moved. Both read back exactly.
 // - A gear's ratio.
 // - A cam's rises: the segment's and the one taking the difference (the dimension's change of
 //   the programme: the Cam dock's for a rise that keeps its way), refused where the programme

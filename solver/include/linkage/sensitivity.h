@@ -14,6 +14,7 @@
 // keeps what crank angle 0 means.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,10 @@ namespace linkage {
 // - each ground point: `ground.O.x`, `ground.O.y` (the ground's own name).
 // - each straight slot: `body.slot.offset` (moved along its normal, mm; its value the line's
 //   signed distance from the body's first point, the ground's from the drawing's origin) and
-//   `body.slot.angle` (turned about its first end, degrees). Arc slots have none yet.
+//   `body.slot.angle` (turned about its first end, degrees).
+// - each arc slot of a planar machine: `body.slot.centre.x`, `.y` (the arc moved, its three
+//   points with it; the value from the body's first point, the ground's from the drawing's
+//   origin) and `body.slot.radius` (about its centre, its three points along their radii).
 // - each gear: `A-B.ratio` (the bodies of its points a and b).
 // - each cam (named by its follower's point b, as `cam:follower.R`): each segment's rise with a
 //   law, `cam:follower.R.segmentK.rise` (K from 1, the Cam dock's rows; mm, or degrees for an
@@ -64,6 +68,7 @@ struct Dimension {
     SlotId slot;
     Vec2 p0 = Vec2::Zero(), p1 = Vec2::Zero();  // d(its ends) per unit
     double z0 = 0, z1 = 0;                      // d(the ground's ends' z) per unit, in space
+    std::optional<Vec2> mid = std::nullopt;     // an arc's: d(its point on the way) per unit
   };
   std::vector<SlotMove> slots;
   JointId ratioOf;  // a gear whose ratio it is
