@@ -128,6 +128,18 @@ Status changeCam(Mechanism& m, JointId j, const std::vector<Dimension>& dims,
   return Status::success();
 }
 
+// The cams whose parts the other changes took off what they rest on (the guide's pin under the
+// cam's centre, the follower's pivot or slot, its lowest position): put back, as the
+// derivatives place them (replaceCam).
+Status replaceFollowers(Mechanism& m) {
+  for (const Joint& j : m.joints) {
+    if (std::string_view(kindOf(j).name) != "cam") continue;
+    std::string why;
+    if (!replaceCam(m, j.id, &why)) return Status::badModel(jointLabel(m, j.id) + ": " + why);
+  }
+  return Status::success();
+}
+
 }  // namespace
 
 Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
@@ -168,7 +180,7 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
         q.pos += Vec2(changeOf(c, b.name + "." + q.name + ".x"),
                       changeOf(c, b.name + "." + q.name + ".y"));
   }
-  return Status::success();
+  return replaceFollowers(m);
 }
 
 Status pinPlay(const Mechanism& m, const std::string& pin, PinPlay& out) {

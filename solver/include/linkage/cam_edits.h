@@ -41,6 +41,13 @@ int risePartner(std::span<const cam::Segment> s, size_t k, double way);
 // The base circle's radius, the follower moved to its new lowest position; refused with why
 // where it cannot be (a slot that misses the circle, an arm that cannot reach it).
 bool setCamBase(Mechanism& m, JointId j, double baseMm, std::string* why = nullptr);
+// Cam joint j's parts put back where the drawing's rules want them after other edits moved
+// what they rest on (the sensitivities' dimensions: linkage/dimension_change.h): the cam's body
+// translated so that its centre a is on the guide's pin there, the follower translated onto its
+// pivot (oscillating) or b onto its slot's line (translating), then to its lowest position
+// (setCamBase with the base as it is). Nothing moves where nothing is off. Refused with why
+// where it cannot be.
+bool replaceCam(Mechanism& m, JointId j, std::string* why = nullptr);
 // The roller's radius (0 a knife edge) with the pitch curve kept (base + roller fixed, the
 // follower not moved); refused for a flat face and for a roller of base + roller or more.
 bool setCamRoller(Mechanism& m, JointId j, double rollerMm, std::string* why = nullptr);
