@@ -156,11 +156,11 @@ Values withRises(Values v, const std::vector<cam::Segment>& segs, const std::str
   return v;
 }
 
-// The translating roller follower (tests/cam_fixtures.h), offset, its slot turned about its first
-// end (angle) and moved along its normal (offset): R where the slot's line meets the circle of
-// base + roller about O, then s along the line.
-TEST(CamSensitivity, TranslatingFollowerMatchesItsClosedForm) {
-  test::TranslatingCam spec;
+// A translating follower (tests/cam_fixtures.h), offset, its slot turned about its first end
+// (angle) and moved along its normal (offset): R where the slot's line meets the circle of
+// base + roller about O (a flat face: at base along the slot from the foot of O), then s along
+// the line.
+void expectTranslating(const test::TranslatingCam& spec, size_t dimensionsExpected) {
   const Mechanism m = parsed(spec.text());
   const std::vector<cam::Segment> segs = segmentsOf(m);
   const Slot& slot = m.slots.front();
@@ -180,21 +180,33 @@ TEST(CamSensitivity, TranslatingFollowerMatchesItsClosedForm) {
     const CVec d = rot(turn, CVec{0, 1});
     const CVec D = P0 - O;
     const C r = x.at(pre + "base") + x.at(pre + "roller"), dd = dot(D, d);
-    const C t = -dd + std::sqrt(dd * dd - dot(D, D) + r * r);
+    const C t = spec.flat ? r - dd : -dd + std::sqrt(dd * dd - dot(D, D) + r * r);
     std::vector<C> h(segs.size());
     for (size_t k = 0; k < h.size(); ++k) h[k] = x.at(pre + "h" + std::to_string(k));
     const Law s = law(segs, h, 1, x.at("theta").real());
     return {P0 + (t + s.s) * d, s.v * d, s.a * d};
   };
   // The offset and angle are the slot's values as drawn, not 0: only their steps matter here.
-  expectMatches(m, "follower.R", v, pre, closedForm, 8);
+  expectMatches(m, "follower.R", v, pre, closedForm, dimensionsExpected);
 }
 
-// The oscillating roller follower (tests/cam_fixtures.h): the rocker's arm P->R of length l as
-// drawn, turned by t0 onto the circle of base + roller about O (Newton's method over the complex
-// numbers from 0, the drawing's own turn) and by sign s(theta) beyond.
-TEST(CamSensitivity, OscillatingFollowerMatchesItsClosedForm) {
-  test::OscillatingCam spec;
+// Roller (8 dimensions: its roller one), knife edge (offset the other way) and flat face.
+TEST(CamSensitivity, TranslatingFollowerMatchesItsClosedForm) {
+  expectTranslating(test::TranslatingCam{}, 8);
+  test::TranslatingCam knife;
+  knife.roller = 0;
+  knife.e = -7;
+  expectTranslating(knife, 7);
+  test::TranslatingCam flat;
+  flat.flat = true;
+  flat.roller = 0;
+  expectTranslating(flat, 7);
+}
+
+// An oscillating follower (tests/cam_fixtures.h): the rocker's arm P->R of length l as drawn,
+// turned by t0 onto the circle of base + roller (a flat face: base) about O (Newton's method over
+// the complex numbers from 0, the drawing's own turn) and by sign s(theta) beyond.
+void expectOscillating(const test::OscillatingCam& spec, size_t dimensionsExpected) {
   const Mechanism m = parsed(spec.text());
   const std::vector<cam::Segment> segs = segmentsOf(m);
   const Vec2 R0 = m.point(*m.findPoint("rocker.R"))->pos, P = Vec2(spec.px, spec.py);
@@ -225,7 +237,16 @@ TEST(CamSensitivity, OscillatingFollowerMatchesItsClosedForm) {
     const CVec arm = rot(t + sign * s.s, q);
     return {Pc + arm, sign * s.v * perp(arm), sign * s.a * perp(arm) - s.v * s.v * arm};
   };
-  expectMatches(m, "rocker.R", v, pre, closedForm, 9);
+  expectMatches(m, "rocker.R", v, pre, closedForm, dimensionsExpected);
+}
+
+// Roller (9 dimensions: its roller one) and flat face.
+TEST(CamSensitivity, OscillatingFollowerMatchesItsClosedForm) {
+  expectOscillating(test::OscillatingCam{}, 9);
+  test::OscillatingCam flat;
+  flat.flat = true;
+  flat.roller = 0;
+  expectOscillating(flat, 8);
 }
 
 // Finite changes (linkage/dimension_change.h): the translating follower with its first rise
