@@ -34,6 +34,10 @@ std::vector<Case> cases() {
     const PointId p = *m.findPoint(e[0] == 'w' ? "needlebar.G" : "planet.P");
     c.push_back({e, m, p});
   }
+  // An arc slot's centre and radius, a block in it (the rod's end B pinned to it).
+  Mechanism curved = test::example("curved-guide");
+  const PointId B = *curved.findPoint("rod.B");
+  c.push_back({"curved-guide", curved, B});
   return c;
 }
 

@@ -256,18 +256,19 @@ TEST(Sensitivity, PlanetGearsRatioAndLengthsMatchTheEpicycloid) {
 // Machines no closed form covers: moving the whole ground (its points and its straight slots)
 // by a vector moves every point of the mechanism by that vector and changes no velocity or
 // acceleration, so at
-// every pose the ground's x derivatives (a slot's offset counted by its normal's x) add up to (1,
+// every pose the ground's x derivatives (a slot's offset counted by its normal's x, an arc's
+// centre by its own) add up to (1,
 // 0) and the y ones to (0, 1), for every point of every body: every row kind and every slot,
 // exactly.
 TEST(Sensitivity, MovingTheGroundMovesEveryPointOfTheMachines) {
   for (const char* name : {"wanzer-inversion-2", "drop-feed", "lockstitch-machine",
                            "overedge-needle-arm", "needle-876-alpha-35", "gear-four-bar",
-                           "lockstitch-arm-shaft", "slider-crank-22a-lambda-0.3"}) {
+                           "lockstitch-arm-shaft", "slider-crank-22a-lambda-0.3", "lockstitch-cams",
+                           "chainstitch-looper-cam", "curved-guide"}) {
     const Mechanism m = test::example(name);
     Kinematics k;
     ASSERT_TRUE(k.load(m).ok()) << name;
     const BodyId ground = m.ground()->id;
-    for (const Slot& s : m.slots) ASSERT_FALSE(s.body == ground && s.arc()) << name;
     const std::vector<Dimension> dims = dimensions(m);
     std::vector<Vec2> weight(dims.size(), Vec2::Zero());  // (x, y) share of each dimension
     for (size_t d = 0; d < dims.size(); ++d) {
@@ -307,16 +308,16 @@ TEST(Sensitivity, MovingTheGroundMovesEveryPointOfTheMachines) {
 // The drawing scaled about the origin scales the motion: each point's position at a crank angle
 // (and its velocity and acceleration) is homogeneous of degree one in the lengths (angles and
 // ratios kept), so by Euler's theorem sum over the lengths of length * d(position)/d(length) is the
-// position itself. Every body's dimensions of the machines, exactly (arc slots, which have no
-// dimension, left out).
+// position itself. Every body's dimensions of the machines, exactly (a cam's base, roller and
+// a translating follower's rises among them, an arc slot's centre and radius).
 TEST(Sensitivity, ScalingTheDrawingScalesEveryPointOfTheMachines) {
   for (const char* name : {"wanzer-inversion-2", "drop-feed", "lockstitch-machine",
                            "overedge-needle-arm", "needle-876-alpha-35", "gear-four-bar",
-                           "lockstitch-arm-shaft", "slider-crank-22a-lambda-0.3"}) {
+                           "lockstitch-arm-shaft", "slider-crank-22a-lambda-0.3", "lockstitch-cams",
+                           "chainstitch-looper-cam", "curved-guide"}) {
     const Mechanism m = test::example(name);
     Kinematics k;
     ASSERT_TRUE(k.load(m).ok()) << name;
-    for (const Slot& s : m.slots) ASSERT_FALSE(s.arc()) << name;
     const std::vector<Dimension> dims = dimensions(m);
     Sensitivity s;
     ASSERT_TRUE(s.prepare(k, dims).ok()) << name;
@@ -377,6 +378,12 @@ Mechanism curvedGuide(bool pinInSlot) {
   return m;
 }
 
+// The guide's centre and radius (its dimensions: concentric, its three points along their radii).
+std::pair<CVec, C> arcOf(const std::map<std::string, C>& v) {
+  return {CVec{v.at("ground.guide.centre.x"), v.at("ground.guide.centre.y")},
+          v.at("ground.guide.radius")};
+}
+
 TEST(Sensitivity, CurvedGuideMatchesTheCirclesIntersection) {
   for (bool pinInSlot : {true, false}) {
     const Mechanism m = curvedGuide(pinInSlot);
@@ -386,13 +393,12 @@ TEST(Sensitivity, CurvedGuideMatchesTheCirclesIntersection) {
     ASSERT_TRUE(k.load(m).ok());
     const std::optional<Guide> arc = guideOf(m.slots.front());
     ASSERT_TRUE(arc && arc->arc);
-    const CVec c{arc->centre.x(), arc->centre.y()};
-    const double R = arc->radius;
     const std::vector<Dimension> dims = dimensions(m);
     std::map<std::string, C> base;
     for (const Dimension& d : dims) base[d.name] = d.value;
     const double side = linkage::cross(Vec2(arc->centre - A0), Vec2(B0 - A0)) > 0 ? 1 : -1;
     auto B = [&](const std::map<std::string, C>& v, double phi) {
+      const auto [c, R] = arcOf(v);
       const CVec O{v.at("ground.O.x"), v.at("ground.O.y")};
       const C r = v.at("crank.O-A"), l = v.at("rod.A-B");
       const double t = M_PI / 2 + phi;
@@ -421,7 +427,7 @@ TEST(Sensitivity, CurvedGuideMatchesTheCirclesIntersection) {
     std::vector<std::string> compared;
     std::printf("curved guide, %s:\n", pinInSlot ? "pin in the arc" : "two-point block");
     const double worst = worstRelative(k, rodB, dims, exact, compared, "block.C-B");
-    EXPECT_EQ(compared.size(), pinInSlot ? 4u : 5u);
+    EXPECT_EQ(compared.size(), pinInSlot ? 7u : 8u);
     EXPECT_LT(worst, 1e-10);
     if (pinInSlot) continue;
     // The block's C: the block turns about the arc's centre c with B, its point at c being
@@ -431,6 +437,7 @@ TEST(Sensitivity, CurvedGuideMatchesTheCirclesIntersection) {
     const Vec2 C0 = B0 + Vec2(6, -4), e = (B0 - C0).normalized();
     auto blockC = [&](const std::map<std::string, C>& v, double phi) {
       const PV b = B(v, phi);
+      const auto [c, R] = arcOf(v);
       const C t = v.at("block.C-B");
       const CVec Bd{B0.x() + t * e.x(), B0.y() + t * e.y()}, fromC = Bd - c;
       const CVec q = (1.0 / std::sqrt(dot(fromC, fromC))) * fromC;

@@ -1,10 +1,13 @@
 // Exact finite changes of a mechanism's dimensions (linkage/dimension_change.h).
 #include "linkage/dimension_change.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "analysis/dimensions_space.h"
+#include "linkage/cam_edits.h"
+#include "linkage/cam_joint.h"
 #include "linkage/elements.h"
 #include "linkage/gear.h"
 #include "linkage/guide.h"
@@ -68,14 +71,22 @@ Status changeBody(Mechanism& m, const Body& body, const Changes& c) {
   return Status::success();
 }
 
-void changeSlot(Mechanism& m, Slot& s, const Changes& c) {
-  if (s.arc()) return;
+Status changeSlot(Mechanism& m, Slot& s, const Changes& c) {
   const std::optional<Guide> g = guideOf(s);
-  if (!g) return;
+  if (!g) return Status::success();
   const std::string pre = m.slotLabel(s.id) + ".";
+  if (s.arc()) {  // its radius about its centre, then the whole arc moved
+    if (!c.count(pre + "radius") && !c.count(pre + "centre.x") && !c.count(pre + "centre.y"))
+      return Status::success();  // drawn as it was, to the bit
+    const double radius = g->radius + changeOf(c, pre + "radius");
+    if (!(radius > 0)) return Status::badModel(pre + "radius: an arc's radius must stay above 0");
+    const Vec2 to = g->centre + Vec2(changeOf(c, pre + "centre.x"), changeOf(c, pre + "centre.y"));
+    for (Vec2* p : {&s.p0, &*s.mid, &s.p1}) *p = to + radius / g->radius * (*p - g->centre);
+    return Status::success();
+  }
   const double turn = changeOf(c, pre + "angle") * M_PI / 180;
   const double offset = changeOf(c, pre + "offset");
-  if (turn == 0 && offset == 0) return;
+  if (turn == 0 && offset == 0) return Status::success();
   const double cs = std::cos(turn), sn = std::sin(turn);
   auto rotate = [&](const Vec2& v) {
     return Vec2(cs * v.x() - sn * v.y(), sn * v.x() + cs * v.y());
@@ -83,6 +94,50 @@ void changeSlot(Mechanism& m, Slot& s, const Changes& c) {
   const Vec2 normal = rotate(g->normal);
   s.p1 = s.p0 + rotate(s.p1 - s.p0) + offset * normal;
   s.p0 += offset * normal;
+  return Status::success();
+}
+
+// A cam's changes as the Cam dock makes them (linkage/cam_edits.h): the rises by each
+// dimension's own change of the programme (the segment and the one taking the difference), the
+// roller on the same cam (setCamRoller keeps base + roller, so the base is set back after it)
+// and the base, the follower moved to its new lowest position.
+Status changeCam(Mechanism& m, JointId j, const std::vector<Dimension>& dims,
+                 const std::vector<double>& delta) {
+  const Joint* joint = m.joint(j);
+  std::string why;
+  const std::optional<CamJoint> c = joint ? camJointAsDrawn(m, *joint, &why) : std::nullopt;
+  if (!c) return Status::badModel(jointLabel(m, j) + ": " + why);
+  std::vector<cam::Segment> segs = c->program.segments();
+  double base = c->kind.base, roller = c->kind.roller;
+  std::string names;
+  bool rises = false;
+  for (size_t k = 0; k < dims.size(); ++k) {
+    if (dims[k].camOf != j || delta[k] == 0) continue;
+    names += (names.empty() ? "" : ", ") + dims[k].name;
+    for (size_t i = 0; i < segs.size() && i < dims[k].camRises.size(); ++i) {
+      segs[i].rise += delta[k] * dims[k].camRises[i];
+      rises = true;
+    }
+    (dims[k].camRoller ? roller : base) += delta[k] * dims[k].camBase;
+  }
+  if (rises && !setCamMotion(m, j, segs, &why)) return Status::badModel(names + ": " + why);
+  if (roller != c->kind.roller && !setCamRoller(m, j, roller, &why))
+    return Status::badModel(names + ": " + why);
+  if ((base != c->kind.base || roller != c->kind.roller) && !setCamBase(m, j, base, &why))
+    return Status::badModel(names + ": " + why);
+  return Status::success();
+}
+
+// The cams whose parts the other changes took off what they rest on (the guide's pin under the
+// cam's centre, the follower's pivot or slot, its lowest position): put back, as the
+// derivatives place them (replaceCam).
+Status replaceFollowers(Mechanism& m) {
+  for (const Joint& j : m.joints) {
+    if (std::string_view(kindOf(j).name) != "cam") continue;
+    std::string why;
+    if (!replaceCam(m, j.id, &why)) return Status::badModel(jointLabel(m, j.id) + ": " + why);
+  }
+  return Status::success();
 }
 
 }  // namespace
@@ -105,7 +160,16 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
     for (Joint& j : m.joints)
       if (j.id == dims[k].ratioOf) setGearRatio(j, gearRatio(j) + delta[k]);
   }
-  for (Slot& s : m.slots) changeSlot(m, s, c);
+  // The cams first: their lowest positions are placed from the drawing as it is.
+  std::vector<JointId> cams;
+  for (size_t k = 0; k < dims.size(); ++k)
+    if (dims[k].camOf && delta[k] != 0 &&
+        std::find(cams.begin(), cams.end(), dims[k].camOf) == cams.end())
+      cams.push_back(dims[k].camOf);
+  for (JointId j : cams)
+    if (Status s = changeCam(m, j, dims, delta); !s.ok()) return s;
+  for (Slot& s : m.slots)
+    if (Status st = changeSlot(m, s, c); !st.ok()) return st;
   for (const Body& b : m.bodies) {
     if (!b.ground) {
       if (Status s = changeBody(m, b, c); !s.ok()) return s;
@@ -116,7 +180,7 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
         q.pos += Vec2(changeOf(c, b.name + "." + q.name + ".x"),
                       changeOf(c, b.name + "." + q.name + ".y"));
   }
-  return Status::success();
+  return replaceFollowers(m);
 }
 
 Status pinPlay(const Mechanism& m, const std::string& pin, PinPlay& out) {
@@ -138,10 +202,11 @@ Status pinPlay(const Mechanism& m, const std::string& pin, PinPlay& out) {
                               "moving either would open them as well");
     out.joint = j.id;
     out.point = p;
-    out.x =
-        Dimension{pin + ".play.x", 0, Dimension::Unit::Mm, {{p, Vec2::UnitX()}}, {}, {}, {}, {}};
-    out.y =
-        Dimension{pin + ".play.y", 0, Dimension::Unit::Mm, {{p, Vec2::UnitY()}}, {}, {}, {}, {}};
+    out.x = out.y = Dimension{};
+    out.x.name = pin + ".play.x";
+    out.x.points = {{p, Vec2::UnitX()}};
+    out.y.name = pin + ".play.y";
+    out.y.points = {{p, Vec2::UnitY()}};
     return Status::success();
   }
   return Status::badModel("no pin joint " + pin +

@@ -2,6 +2,8 @@
 #include <cmath>
 
 #include "analysis/dimensions_space.h"
+#include "linkage/cam_edits.h"
+#include "linkage/cam_joint.h"
 #include "linkage/elements.h"
 #include "linkage/gear.h"
 #include "linkage/guide.h"
@@ -87,10 +89,25 @@ void groundDimensions(const Mechanism& m, const Body& ground, std::vector<Dimens
   }
 }
 
+// An arc slot's centre and radius (linkage/sensitivity.h), `from` its body's first point.
+void arcDimensions(const Mechanism& m, const Slot& s, const Guide& g, const Vec2& from,
+                   std::vector<Dimension>& out) {
+  const std::string pre = m.slotLabel(s.id) + ".";
+  for (int c = 0; c < 2; ++c) {
+    const Vec2 e = c ? Vec2::UnitY() : Vec2::UnitX();
+    Dimension d = distance(pre + (c ? "centre.y" : "centre.x"), g.centre[c] - from[c]);
+    d.slots.push_back({s.id, e, e, 0, 0, e});
+    out.push_back(d);
+  }
+  Dimension radius = distance(pre + "radius", g.radius);
+  auto radial = [&](const Vec2& p) -> Vec2 { return (p - g.centre) / g.radius; };
+  radius.slots.push_back({s.id, radial(s.p0), radial(s.p1), 0, 0, radial(*s.mid)});
+  out.push_back(radius);
+}
+
 void slotDimensions(const Mechanism& m, const Slot& s, std::vector<Dimension>& out) {
-  if (s.arc()) return;
   const std::optional<Guide> g = guideOf(s);
-  if (!g) return;
+  if (!g || (s.arc() && isSpatial(m))) return;
   // In space the ground's slot is in the plane of its block, which its offset and angle keep.
   if (m.body(s.body)->ground && isSpatial(m)) return internal::groundSlotInSpace(m, s, out);
   const std::string pre = m.slotLabel(s.id) + ".";
@@ -103,6 +120,7 @@ void slotDimensions(const Mechanism& m, const Slot& s, std::vector<Dimension>& o
         from = q.pos;
         break;
       }
+  if (s.arc()) return arcDimensions(m, s, *g, from, out);
   Dimension offset = distance(pre + "offset", g->normal.dot(s.p0 - from));
   offset.slots.push_back({s.id, g->normal, g->normal});
   Dimension angle =
@@ -111,6 +129,38 @@ void slotDimensions(const Mechanism& m, const Slot& s, std::vector<Dimension>& o
   angle.slots.push_back({s.id, Vec2::Zero(), perp(s.p1 - s.p0) * (M_PI / 180)});
   out.push_back(offset);
   out.push_back(angle);
+}
+
+// A cam's rises (each segment with a law that moves: a rise of 0 has no way to take the
+// difference from) and its base (linkage/sensitivity.h). A cam not sound has none: its joint
+// refuses to compile.
+void camDimensions(const Mechanism& m, const Joint& j, std::vector<Dimension>& out) {
+  const std::optional<CamJoint> c = camJoint(m, j);
+  if (!c) return;
+  const std::string pre = "cam:" + m.pointLabel(j.b) + ".";
+  const std::vector<cam::Segment>& s = c->program.segments();
+  for (size_t k = 0; k < s.size(); ++k) {
+    const int o = s[k].law && s[k].rise != 0 ? risePartner(s, k, s[k].rise) : -1;
+    if (o < 0) continue;
+    Dimension d = distance(pre + "segment" + std::to_string(k + 1) + ".rise", s[k].rise);
+    if (c->kind.oscillating) d.unit = Dimension::Unit::Deg;
+    d.camOf = j.id;
+    d.camRises.assign(s.size(), 0.0);
+    d.camRises[k] = 1;
+    d.camRises[o] = -1;
+    out.push_back(d);
+  }
+  Dimension base = distance(pre + "base", c->kind.base);
+  base.camOf = j.id;
+  base.camBase = 1;
+  out.push_back(base);
+  if (c->kind.flat || c->kind.roller == 0) return;  // a flat face or a knife edge: no roller
+  // The roller on the same cam: it reaches as far as the base (the pitch curve is their sum).
+  Dimension roller = distance(pre + "roller", c->kind.roller);
+  roller.camOf = j.id;
+  roller.camBase = 1;
+  roller.camRoller = true;
+  out.push_back(roller);
 }
 
 }  // namespace
@@ -134,6 +184,8 @@ std::vector<Dimension> dimensions(const Mechanism& m) {
     d.ratioOf = j.id;
     out.push_back(d);
   }
+  for (const Joint& j : m.joints)
+    if (std::string_view(kindOf(j).name) == "cam") camDimensions(m, j, out);
   if (internal::hasSpaceDimensions(m)) internal::spaceDimensions(m, out);
   return out;
 }

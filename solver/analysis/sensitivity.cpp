@@ -8,11 +8,18 @@
 //
 //   Coincident  Phi = p - q                  V = p' - q'           (p = r_i + R_i s_i, ...)
 //   OnLine      Phi = n . (p - q)            V = n' . (p - q) + n . (p' - q')
-//   OnCircle    Phi = (d . d - rho^2)/(2 rho) V = d . d' / rho      (centre and radius: arc slots
-//                                                                   have no dimension)
+//   OnCircle    Phi = (d . d - rho^2)/(2 rho) V = d . d' / rho      (an arc's centre and radius
+//                                                                   from its three points' moves)
 //   Angles      Phi = L (sum c_k theta_k ...) V = L (sum c_k w_k ...) (a gear's ratio: dc)
 //   Distance3   Phi = (D . D - l^2)/(2 l)    V = D . D' / l        (a ball rod, D in the world:
 //                                                                   its ends' depths, dl)
+//   Cam         Phi = u . (p - q) - s(theta) V = u' . (p - q) + u . (p' - q') - s' theta'
+//               (translating; q the lowest position of b, u the rise direction, in the guide)
+//               Phi = L (sign (phi - phi0) - s(theta))   V = L (sign phi' - s' theta')
+//               (oscillating; phi0 its turn to the lowest position, 0 as drawn)
+//               s linear in the rises (cam::Program::perRise); q, u and phi0 move with the cam's
+//               centre (the guide's pin at a), the slot, b, the block's point or the pivot's two
+//               points and the base as the drawing's rules place the lowest position (camMove)
 //
 // each changed to first order by the bodies' changes (dr, dtheta) and the constants' (ds, dn, dc).
 // In space each row is in its plane class's frame (analysis/sensitivity_space.h turns the
@@ -21,7 +28,9 @@
 #include <cmath>
 
 #include "analysis/sensitivity_space.h"
+#include "elements/cam_row.h"
 #include "kinematics/kinematics_state.h"
+#include "linkage/cam_joint.h"
 #include "linkage/elements.h"
 #include "linkage/guide.h"
 #include "linkage/sensitivity.h"
@@ -35,20 +44,45 @@ struct Moves {  // one dimension's move of the drawing, by id value (Sensitivity
   const std::vector<Vec3>& point;
   const Dimension& dim;
   const internal::SpaceMoves& space;
+  const std::vector<internal::CamMove>* cams = nullptr;  // by joint index
   Vec3 kept(PointId p) const { return p.value < point.size() ? point[p.value] : Vec3::Zero(); }
   // In class cls's frame, and along its normal.
   Vec2 at(PointId p, int cls) const { return space.inClass(p, kept(p), cls); }
   double depth(PointId p, int cls) const { return space.depthIn(p, kept(p), cls); }
 };
 
+// An arc slot's centre c and radius rho as its three points P move (planar machines: an arc
+// of a machine in space has no dimension): (P - c) . (dP - dc) = rho drho for each.
+void arcMove(const Mechanism& m, SlotId id, const Moves& mv, Vec2& dc, double& drho) {
+  dc = Vec2::Zero();
+  drho = 0;
+  for (const Dimension::SlotMove& s : mv.dim.slots) {
+    if (s.slot != id || !s.mid) continue;
+    const Slot& slot = *m.slot(id);
+    const std::optional<Guide> g = guideOf(slot);
+    Eigen::Matrix3d A;
+    Eigen::Vector3d b;
+    const Vec2 p[3] = {slot.p0, *slot.mid, slot.p1}, dp[3] = {s.p0, *s.mid, s.p1};
+    for (int i = 0; i < 3; ++i) {
+      const Vec2 r = p[i] - g->centre;
+      A.row(i) << r.x(), r.y(), g->radius;
+      b[i] = r.dot(dp[i]);
+    }
+    const Eigen::Vector3d x = A.partialPivLu().solve(b);
+    dc = x.head<2>();
+    drho = x[2];
+  }
+}
+
 // The block's point of a slider in an arc slot is compiled as the point at the arc's centre,
-// p - radius (p - c) / |p - c|: its move for a move dp of p (the arc held).
-Vec2 arcBlockMove(const Mechanism& m, const Joint& j, const Moves& mv, int cls) {
-  const Vec2 dp = mv.at(j.a, cls);
+// C' = p - rho (p - c) / |p - c|: its move for a move dp of p and dc, drho of the arc.
+Vec2 arcBlockMove(const Mechanism& m, const Joint& j, const Moves& mv, int cls, const Vec2& dc,
+                  double drho) {
+  const Vec2 dp = mv.at(j.a, cls) - dc;
   const std::optional<Guide> g = guideOf(mv.space.slot(*m.slot(j.slot), cls));
   const Vec2 d = mv.space.drawn(*m.point(j.a), cls) - g->centre;
   const Vec2 u = d.normalized();
-  return dp - g->radius / d.norm() * (dp - u * u.dot(dp));
+  return dp + dc - g->radius / d.norm() * (dp - u * u.dot(dp)) - drho * u;
 }
 
 // A straight slot's point u (its first end) and unit normal n as they move.
@@ -74,6 +108,9 @@ struct RowMove {
   Vec2 n = Vec2::Zero();
   double c[3] = {0, 0, 0};
   double depth[2] = {0, 0}, l = 0;
+  double rho = 0;                              // an arc slot's radius
+  double turn = 0;                             // a cam's phi0
+  const std::vector<double>* rises = nullptr;  // a cam's d(rises)
 };
 
 RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& mv) {
@@ -82,8 +119,9 @@ RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& m
   const int cls = mv.space.rowClass(r);
   switch (r.kind) {
     case Primitive::Coincident:
-      if (role == Role::Prismatic) {
-        out.s[0] = arcBlockMove(m, j, mv, cls);
+      if (role == Role::Prismatic) {  // a block in an arc: its point at the centre, the centre
+        arcMove(m, j.slot, mv, out.s[1], out.rho);
+        out.s[0] = arcBlockMove(m, j, mv, cls, out.s[1], out.rho);
       } else {
         out.s[0] = mv.at(j.a, cls);
         out.s[1] = mv.at(j.b, cls);
@@ -93,8 +131,9 @@ RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& m
       out.s[0] = mv.at(j.a, cls);
       slotMove(m, j, mv, cls, out.s[1], out.n);
       break;
-    case Primitive::OnCircle:  // arc slots have no dimension: centre and radius stay
+    case Primitive::OnCircle:  // a pin in an arc: the centre and the radius
       out.s[0] = mv.at(j.a, cls);
+      arcMove(m, j.slot, mv, out.s[1], out.rho);
       break;
     case Primitive::Distance3:  // each end in its own class (elements/ball_rod.cpp)
       for (int e = 0; e < 2; ++e) {
@@ -103,6 +142,15 @@ RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& m
       }
       out.l = mv.dim.lengthOf == j.id ? 1 : 0;
       break;
+    case Primitive::Cam: {  // b, the lowest position and u (cam.cpp's compile), phi0
+      const internal::CamMove& c = (*mv.cams)[r.joint];
+      out.s[0] = c.b;
+      out.s[1] = c.lowest;
+      out.n = c.along;
+      out.turn = c.turn;
+      if (mv.dim.camOf == j.id) out.rises = &mv.dim.camRises;
+      break;
+    }
     case Primitive::Angles:
       // theta_b - ratio theta_a + (ratio - 1) theta_c: dc = (0, -1, 1) per unit ratio.
       if (!r.isDriver() && role == Role::Coupling && mv.dim.ratioOf == j.id) {
@@ -148,11 +196,12 @@ struct RowChange {
   double phi[2] = {0, 0}, v[2] = {0, 0}, a[2] = {0, 0};
 };
 
-double lineChange(const Row& r, const Moving::At& p, const Moving::At& q, const Moving& j,
-                  const RowMove& mv, int order) {
+// n0 the line's normal in j's frame (a cam's rise direction), dn0 its move.
+double lineChange(const Vec2& n0, const Vec2& dn0, const Moving::At& p, const Moving::At& q,
+                  const Moving& j, int order) {
   const Vec2 d = p.p - q.p, dd = p.dp - q.dp, v = p.v - q.v, dv = p.dv - q.dv;
   const double w = j.b.w;
-  const Vec2 n = j.b.R * r.n, dn = perp(n) * j.dtheta + j.b.R * mv.n;
+  const Vec2 n = j.b.R * n0, dn = perp(n) * j.dtheta + j.b.R * dn0;
   if (order == 0) return dn.dot(d) + n.dot(dd);
   const Vec2 n1 = w * perp(n), dn1 = j.dw * perp(n) + w * perp(dn);
   if (order == 1) return dn1.dot(d) + n1.dot(dd) + dn.dot(v) + n.dot(dv);
@@ -183,9 +232,37 @@ void distance3Change(const System& sys, const Row& r, const Moving::At& p, const
   out.a[0] = (2 * v.dot(dv) + dD.dot(a) + D.dot(da)) / l;
 }
 
+// A cam's row (cam_row.h) for follower i, cam c and guide g: the law's s, s', s'' change with
+// theta (by dtheta = dtheta_c - dtheta_g) and the rises (perRise); the second rates held.
+void camChange(const System& sys, const Row& r, const Moving& i, const Moving& c, const Moving& g,
+               const RowMove& mv, RowChange& out) {
+  const CamRow& k = *r.cam;
+  const double theta = cam_row::theta(c.b, g.b);
+  const cam::Displacement s = k.program.at(theta);
+  const cam::Displacement h = mv.rises ? k.program.perRise(theta, *mv.rises) : cam::Displacement{};
+  const double w = c.b.w - g.b.w, dw = c.dw - g.dw, alpha = c.alpha - g.alpha;
+  const double dtheta = c.dtheta - g.dtheta;
+  const double ds = h.s + s.v * dtheta, dv = h.v + s.a * dtheta, da = h.a + s.j * dtheta;
+  const double law[3] = {ds, dv * w + s.v * dw, da * w * w + 2 * s.a * w * dw + dv * alpha};
+  if (k.kind.oscillating) {
+    const double L = sys.size, sign = k.kind.sign;
+    out.phi[0] = L * (sign * (i.dtheta - g.dtheta - mv.turn) - law[0]);
+    out.v[0] = L * (sign * (i.dw - g.dw) - law[1]);
+    out.a[0] = -L * law[2];
+    return;
+  }
+  const Moving::At p = i.at(r.s[0], mv.s[0]), q = g.at(r.s[1], mv.s[1]);
+  for (int o = 0; o < 3; ++o)
+    (o == 0 ? out.phi : o == 1 ? out.v : out.a)[0] = lineChange(k.along, mv.n, p, q, g, o) - law[o];
+}
+
 RowChange rowChange(const System& sys, const Row& r, const Moving& i, const Moving& j,
                     const Moving& k, const RowMove& mv) {
   RowChange out;
+  if (r.kind == Primitive::Cam) {
+    camChange(sys, r, i, j, k, mv, out);
+    return out;
+  }
   const Moving::At p = i.at(r.s[0], mv.s[0]), q = j.at(r.s[1], mv.s[1]);
   const Vec2 d = p.p - q.p, dd = p.dp - q.dp, v = p.v - q.v, dv = p.dv - q.dv;
   const Vec2 a = p.a - q.a, da = p.da - q.da;
@@ -195,10 +272,10 @@ RowChange rowChange(const System& sys, const Row& r, const Moving& i, const Movi
       break;
     case Primitive::OnLine:
       for (int o = 0; o < 3; ++o)
-        (o == 0 ? out.phi : o == 1 ? out.v : out.a)[0] = lineChange(r, p, q, j, mv, o);
+        (o == 0 ? out.phi : o == 1 ? out.v : out.a)[0] = lineChange(r.n, mv.n, p, q, j, o);
       break;
-    case Primitive::OnCircle:  // Phi'' = (d' . d' + d . d'') / rho
-      out.phi[0] = d.dot(dd) / r.c[0];
+    case Primitive::OnCircle:  // Phi'' = (d' . d' + d . d'') / rho; V = A = 0 at the pose
+      out.phi[0] = d.dot(dd) / r.c[0] - mv.rho;
       out.v[0] = (dd.dot(v) + d.dot(dv)) / r.c[0];
       out.a[0] = (2 * v.dot(dv) + dd.dot(a) + d.dot(da)) / r.c[0];
       break;
@@ -247,6 +324,77 @@ void rowChanges(const Mechanism& m, const System& sys, const std::vector<BodyVie
   }
 }
 
+bool isCam(const Joint& j) {
+  return std::string_view(kindOf(j).name) == "cam";
+}
+
+// The point of the guide the cam's body is pinned to at a (its centre as the guide sees it;
+// cam.cpp's pinnedAt), or none.
+PointId guidePin(const Mechanism& m, const CamJoint& c, const Point& a) {
+  for (const Joint& k : m.joints) {
+    if (kindOf(k).role != Role::Revolute) continue;
+    const Point *x = m.point(k.a), *y = m.point(k.b);
+    if (!x || !y) continue;
+    for (const auto& [on, other] : {std::pair{x, y}, std::pair{y, x}})
+      if (on->body == c.cam && other->body == c.guide && (on->id == a.id || on->pos == a.pos))
+        return other->id;
+  }
+  return {};
+}
+
+// A cam whose rows' constants are not derived here, named; "" when they are.
+std::string camRefused(const Mechanism& m, const System& sys, const Joint& j) {
+  const std::string name = "sensitivities through a cam (" + jointLabel(m, j.id) + ") ";
+  if (sys.frames.size() > 1) return name + "on a machine in space are not computed yet";
+  const std::optional<CamJoint> c = camJoint(m, j);
+  if (!c) return name + "not sound are not computed";
+  if (!guidePin(m, *c, *m.point(j.a))) return name + "pinned off its centre are not computed yet";
+  const Joint* f = m.joint(c->followerJoint);
+  if (!c->kind.oscillating && m.point(f->a)->body != c->follower)
+    return name + "whose follower carries the slot are not computed yet";
+  return "";
+}
+
+// A cam row's constants' moves for one dimension (internal::CamMove): the lowest position as
+// the drawing's rules place it (cam.cpp's lowest, setCamBase's move) with the cam's centre a
+// (the guide's pin), b, the follower's slot or pivot and the base moved. Translating: b runs on
+// the line c + t u (c its drawn place, the slot's line carried by the block's point to b) and
+// lies at base + roller from a (a flat face: at base along u); oscillating: b turned about the
+// pivot by phi0 lies at base + roller (a flat face: base) from a. To first order.
+internal::CamMove camMove(const Mechanism& m, const Joint& j, const Moves& mv) {
+  internal::CamMove out;
+  const CamJoint c = *camJoint(m, j);
+  const Vec2 a = c.drawn.centre, b = c.drawn.b;
+  const Vec2 da = mv.at(guidePin(m, c, *m.point(j.a)), 0);
+  const double dR = mv.dim.camOf == j.id ? mv.dim.camBase : 0;
+  const double R = c.kind.base + c.kind.roller;
+  out.b = mv.at(j.b, 0);
+  const Joint& f = *m.joint(c.followerJoint);
+  if (c.kind.oscillating) {
+    const Point &x = *m.point(f.a), &y = *m.point(f.b);
+    const Point& onFollower = x.body == c.follower ? x : y;
+    const Point& onGuide = x.body == c.follower ? y : x;
+    const Vec2 w = (b - a).normalized();
+    const Vec2 pivotMove = mv.at(onGuide.id, 0) - mv.at(onFollower.id, 0);
+    out.turn = (dR - w.dot(pivotMove + out.b - da)) / w.dot(perp(b - c.drawn.pivot));
+    return out;
+  }
+  const Slot& slot = *m.slot(f.slot);
+  Vec2 d0 = Vec2::Zero(), d1 = Vec2::Zero();
+  for (const Dimension::SlotMove& s : mv.dim.slots)
+    if (s.slot == slot.id) mv.space.slotMove(slot, s, 0, d0, d1);
+  const Vec2 t = slot.p1 - slot.p0, u = c.drawn.along;
+  const double len = t.norm();
+  const Vec2 e = t / len, dt = d1 - d0;
+  const double tau = e.dot(m.point(f.a)->pos - slot.p0);
+  out.along = u.dot(e) * (dt - e * e.dot(dt)) / len;
+  const Vec2 dc = d0 + tau / len * dt + out.b - mv.at(f.a, 0);
+  const double step = c.kind.flat ? dR - u.dot(dc - da) - out.along.dot(b - a)
+                                  : (R * dR - (b - a).dot(dc - da)) / (b - a).dot(u);
+  out.lowest = dc + step * u;
+  return out;
+}
+
 // What prepare() cannot differentiate, named; "" when it can.
 std::string unsupported(const Mechanism& m, const System& sys, Sensitivity::Space space) {
   const bool world = space == Sensitivity::Space::World;
@@ -260,6 +408,10 @@ std::string unsupported(const Mechanism& m, const System& sys, Sensitivity::Spac
              "sensitivity --point)";
   for (const Joint& j : m.joints) {
     const Role role = kindOf(j).role;
+    if (isCam(j)) {
+      if (std::string why = camRefused(m, sys, j); !why.empty()) return why;
+      continue;
+    }
     if (role != Role::Revolute && role != Role::Prismatic && role != Role::PointOnCurve &&
         role != Role::Coupling && !(world && role == Role::Distance))
       return std::string("sensitivities through a ") + kindOf(j).name + " (" + jointLabel(m, j.id) +
@@ -294,6 +446,11 @@ Status Sensitivity::prepare(const Kinematics& k, std::vector<Dimension> dims, Sp
     for (const Point& p : s.mech.points)
       pointMove_[d][p.id.value] = sm.kept(p, move[p.id.value], depth[p.id.value]);
   }
+  camMove_.assign(dims_.size(), std::vector<internal::CamMove>(s.mech.joints.size()));
+  for (size_t d = 0; d < dims_.size(); ++d)
+    for (size_t j = 0; j < s.mech.joints.size(); ++j)
+      if (isCam(s.mech.joints[j]))
+        camMove_[d][j] = camMove(s.mech, s.mech.joints[j], {pointMove_[d], dims_[d], sm});
   return Status::success();
 }
 
@@ -321,8 +478,8 @@ Status Sensitivity::at(const Kinematics& k) {
     for (int d = 0; d < dims; ++d) {
       const Eigen::VectorXd dq = order ? Eigen::VectorXd(dq_.col(d)) : Eigen::VectorXd();
       const Eigen::VectorXd dqd = order > 1 ? Eigen::VectorXd(dqd_.col(d)) : Eigen::VectorXd();
-      rowChanges(s.mech, sys, views, ddq, {pointMove_[d], dims_[d], space}, order, dq, dqd, map,
-                 rhs.col(d));
+      rowChanges(s.mech, sys, views, ddq, {pointMove_[d], dims_[d], space, &camMove_[d]}, order, dq,
+                 dqd, map, rhs.col(d));
     }
     *out[order] = -lu.solve(rhs);
     if (!out[order]->allFinite()) return singular;

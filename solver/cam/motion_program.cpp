@@ -94,4 +94,22 @@ Displacement Program::at(double theta) const {
   return {base + h * n.s, h * n.v / beta, h * n.a / (beta * beta), h * n.j / (beta * beta * beta)};
 }
 
+Displacement Program::perRise(double theta, std::span<const double> dRise) const {
+  const int k = segmentAt(theta);
+  if (k < 0 || dRise.size() != segments_.size()) return {};
+  Displacement out;
+  for (int i = 0; i < k; ++i) out.s += scale_ * dRise[i];
+  const Segment& seg = segments_[k];
+  if (!seg.law || seg.rise == 0) return out;  // as at(): such a segment holds its base
+  double t = std::fmod(theta, kTurn);
+  if (t < 0) t += kTurn;
+  const double beta = span_[k], h = scale_ * dRise[k];
+  const Normalised n = evaluate(*seg.law, (t - start_[k]) / beta);
+  out.s += h * n.s;
+  out.v = h * n.v / beta;
+  out.a = h * n.a / (beta * beta);
+  out.j = h * n.j / (beta * beta * beta);
+  return out;
+}
+
 }  // namespace linkage::cam

@@ -6,6 +6,7 @@
 #include "linkage/cam_joint.h"
 #include "linkage/elements.h"
 #include "linkage/geometry.h"
+#include "linkage/guide.h"
 
 namespace linkage {
 
@@ -189,6 +190,74 @@ bool setCamMotion(Mechanism& m, JointId j, std::span<const cam::Segment> segment
   next.records = {camMotionRecords(segments, c->kind.oscillating)};
   if (!camJointAsDrawn(m, next, &w, &where)) return refuse(why, where + ": " + w);
   *k = std::move(next);
+  return true;
+}
+
+namespace {
+
+// Where b should be moved by T for `to` to be where `from` is, when they are apart.
+bool apart(const Vec2& from, const Vec2& to, Transform& T) {
+  T = Transform{};
+  T.t = from - to;
+  return T.t.norm() > 1e-12 * std::max(1.0, from.cwiseAbs().maxCoeff());
+}
+
+// The cam's body onto the guide's pin at a; the follower onto its pivot (oscillating) or b onto
+// its slot's line (translating): rigid translations.
+void ontoSupports(Mechanism& m, const Joint& k, const CamJoint& c) {
+  Transform T;
+  const Point& a = *m.point(k.a);
+  for (const Joint& p : m.joints) {
+    if (kindOf(p).role != Role::Revolute) continue;
+    const Point *x = m.point(p.a), *y = m.point(p.b);
+    if (!x || !y || (x->id != a.id && y->id != a.id)) continue;
+    const Point* other = x->id == a.id ? y : x;
+    if (other->body == c.guide && apart(other->pos, a.pos, T)) moveBody(m, c.cam, T);
+  }
+  const Joint& f = *m.joint(c.followerJoint);
+  if (c.kind.oscillating) {
+    const Point *x = m.point(f.a), *y = m.point(f.b);
+    const bool xOn = x->body == c.follower;
+    if (apart((xOn ? y : x)->pos, (xOn ? x : y)->pos, T)) moveBody(m, c.follower, T);
+    return;
+  }
+  const std::optional<Guide> g = guideOf(*m.slot(f.slot));
+  const Vec2 b = m.point(k.b)->pos;
+  if (g && apart(b - g->normal * g->normal.dot(b - g->p0), b, T)) moveBody(m, c.follower, T);
+}
+
+}  // namespace
+
+bool replaceCam(Mechanism& m, JointId j, std::string* why) {
+  Joint* k = camJointOf(m, j, why);
+  if (!k) return false;
+  std::string where, w;
+  std::optional<CamJoint> c = camJointAsDrawn(m, *k, &w, &where);
+  if (!c) return refuse(why, where + ": " + w);
+  Mechanism trial = m;
+  ontoSupports(trial, *k, *c);
+  const Joint& moved = *trial.joint(j);
+  if (!camJoint(trial, moved) && !setCamBase(trial, j, c->kind.base, why)) return false;
+  m = std::move(trial);
+  return true;
+}
+
+int risePartner(std::span<const cam::Segment> s, size_t k, double way) {
+  for (size_t i = 1; i < s.size(); ++i) {
+    const size_t o = (k + i) % s.size();
+    if (s[o].law && s[o].rise * way < 0) return static_cast<int>(o);
+  }
+  return -1;
+}
+
+bool withCamRise(std::vector<cam::Segment>& s, size_t k, double rise) {
+  if (k >= s.size()) return false;
+  const double delta = rise - s[k].rise;
+  if (delta == 0) return true;
+  const int o = risePartner(s, k, rise != 0 ? rise : s[k].rise);
+  if (o < 0) return false;
+  s[k].rise = rise;
+  s[o].rise -= delta;
   return true;
 }
 

@@ -18,6 +18,8 @@ bool endsWith(const std::string& s, const std::string& tail) {
 // A side (P0-P1, P1-Pk, P0-Pk), whose value is a length and must stay positive: a change past 0
 // would draw the body mirrored rather than fail.
 bool isSide(const Dimension& d) {
+  // A cam's rise is signed (a fall is a negative rise); its base and roller are lengths.
+  if (d.camOf && endsWith(d.name, ".rise")) return false;
   return d.unit == Dimension::Unit::Mm && d.slots.empty() && !endsWith(d.name, ".x") &&
          !endsWith(d.name, ".y") && !endsWith(d.name, ".along") && !endsWith(d.name, ".across");
 }

@@ -107,6 +107,10 @@ class Program {
   Displacement at(double theta) const;
   // The segment theta (radians, any turn) is in: [start, end) of its span.
   int segmentAt(double theta) const;
+  // The change of at(theta) for changes dRise of the segments' rises (the file's unit, one a
+  // segment), ends and laws held: s and its derivatives are linear in the rises (a segment's
+  // law its normalised shape there, the rises before it its base). The sensitivities' rises.
+  Displacement perRise(double theta, std::span<const double> dRise) const;
 
   const std::vector<Segment>& segments() const { return segments_; }
   double scale() const { return scale_; }

@@ -13,7 +13,16 @@
 //   both ends moved along the (turned) normal. The angle reads back exactly; so does the offset
 //   when the angle is unchanged (a turn about the first end changes the offset measured from
 //   elsewhere, as its derivative says).
+// - An arc slot's radius: its three points along their radii from its centre; its centre: the
+//   arc moved. Both read back exactly.
 // - A gear's ratio.
+// - A cam's rises: the segment's and the one taking the difference (the dimension's change of
+//   the programme: the Cam dock's for a rise that keeps its way), refused where the programme
+//   is not one (a partial sum below 0); its base: the follower moved to its new lowest position
+//   (setCamBase); its roller: the same cam (the base kept), the follower moved as far. Any
+//   other change that takes a follower off its lowest position (the cam's centre, its slot, b
+//   or its pivot moved) puts it back there, along its slot or about its pivot, as the
+//   derivatives do.
 // - Not yet (refused, naming the dimension): a machine in space's depths, ground z, planes'
 //   origins, ground slots, and a ball rod's length (the file keeps none). A body's dimension
 //   that moves a rod's end changes the rod's drawn length here, which its derivative holds.

@@ -14,6 +14,7 @@
 // keeps what crank angle 0 means.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,8 +38,18 @@ namespace linkage {
 // - each ground point: `ground.O.x`, `ground.O.y` (the ground's own name).
 // - each straight slot: `body.slot.offset` (moved along its normal, mm; its value the line's
 //   signed distance from the body's first point, the ground's from the drawing's origin) and
-//   `body.slot.angle` (turned about its first end, degrees). Arc slots have none yet.
+//   `body.slot.angle` (turned about its first end, degrees).
+// - each arc slot of a planar machine: `body.slot.centre.x`, `.y` (the arc moved, its three
+//   points with it; the value from the body's first point, the ground's from the drawing's
+//   origin) and `body.slot.radius` (about its centre, its three points along their radii).
 // - each gear: `A-B.ratio` (the bodies of its points a and b).
+// - each cam (named by its follower's point b, as `cam:follower.R`): each segment's rise with a
+//   law, `cam:follower.R.segmentK.rise` (K from 1, the Cam dock's rows; mm, or degrees for an
+//   oscillating follower), the next segment moving the other way round the turn taking the
+//   difference (the dock's rule: linkage/cam_edits.h, withCamRise), the base circle's radius
+//   `cam:follower.R.base` (the follower moved to its new lowest position, as setCamBase moves
+//   it) and a roller's `cam:follower.R.roller` (the same cam: the base kept, the follower moved
+//   out as far; the motion sees base + roller, the pitch curve's, alone).
 // In space (linkage/space.h; docs/sensitivity.md, "In space") a body's dimensions are in its
 // plane's coordinates, and there are besides (after all of the above):
 // - each ground point's `ground.O.z`; each moving point with a third number or at a ball rod's
@@ -57,19 +68,38 @@ struct Dimension {
     SlotId slot;
     Vec2 p0 = Vec2::Zero(), p1 = Vec2::Zero();  // d(its ends) per unit
     double z0 = 0, z1 = 0;                      // d(the ground's ends' z) per unit, in space
+    std::optional<Vec2> mid = std::nullopt;     // an arc's: d(its point on the way) per unit
   };
   std::vector<SlotMove> slots;
   JointId ratioOf;  // a gear whose ratio it is
   // In space: d(a moving point's depth along its plane's normal, a ground point's z) per unit.
   std::vector<std::pair<PointId, double>> depths;
   JointId lengthOf;  // a ball rod whose length it is
+  // A cam's: d(each segment's rise, the file's unit) and d(its base, mm) per unit; its roller
+  // (camBase then d(base + roller), the base kept).
+  JointId camOf;
+  std::vector<double> camRises;
+  double camBase = 0;
+  bool camRoller = false;
 };
 
 std::vector<Dimension> dimensions(const Mechanism& m);
 
+namespace internal {
+// A cam row's constants as one dimension moves the drawing (per unit): the follower's b in its
+// own frame; the lowest position of b and the rise direction u in the guide's frame
+// (translating), or the follower's turn to its lowest position (oscillating). From the drawing
+// alone, so worked out once (Sensitivity::prepare).
+struct CamMove {
+  Vec2 b = Vec2::Zero(), lowest = Vec2::Zero(), along = Vec2::Zero();
+  double turn = 0;
+};
+}  // namespace internal
+
 // The derivatives of the motion at a Kinematics' current pose with respect to dimensions.
 // prepare() refuses (BadModel, naming the joint or the reason) what it cannot differentiate yet:
-// a kind it does not know (cams), and a spatial model (planes) or a ball rod unless the caller
+// a kind it does not know, a cam on a machine in space or whose follower's slot is on the
+// follower, and a spatial model (planes) or a ball rod unless the caller
 // reads the world's x, y, z (point3() and the rest: Space::World; point() and the rest give a
 // spatial model's point in its plane class's frame, which a caller of the drawing's x and y
 // would misread). At a singular position (no derivativesValid()) at() fails: the motion's
@@ -113,6 +143,8 @@ class Sensitivity {
   // normal; a ground point's in the world (x, y, z; the drawing's x, y and 0 on a planar model).
   std::vector<std::vector<Vec3>> pointMove_;
   Eigen::MatrixXd dq_, dqd_, dqdd_;  // dq/dp, dq'/dp, dq''/dp (q' = dq/dphi)
+  // By dimension, by joint index: a cam row's constants' moves (analysis/sensitivity.cpp).
+  std::vector<std::vector<internal::CamMove>> camMove_;
 };
 
 }  // namespace linkage
