@@ -35,7 +35,10 @@ Dimensions, in this order: for each body, its P0-P1 (its first two points in fil
 for each later point Pk its P1-Pk and P0-Pk (a three-point body: its three sides, as the editor
 types them), or Pk.along and Pk.across P0->P1 where Pk is on the line P0P1; each ground point's
 x and y; each straight slot's offset (along its normal) and angle (about its first end, in
-degrees: its rows are mm per degree); each gear's ratio (mm per unit of ratio).
+degrees: its rows are mm per degree), each arc slot's centre (body.slot.centre.x, .y) and
+radius (body.slot.radius); each gear's ratio (mm per unit of ratio); each cam's rises (one a
+rise or fall segment, cam:F.R.segmentK.rise, the next segment moving the other way taking the
+difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.roller).
 
   --point body.point   the point (required unless another output is asked for)
   --steps N            steps per revolution (default 360)
@@ -84,7 +87,7 @@ in its plane's coordinates, and after all the others each moving point's depth
 length (ball-rod:A.P.length) and each plane's origin (planes.NAME.origin.x, .y, .z); a ground
 slot's offset and angle in its block's plane. --stroke, --clearance and --window refuse it.
 
-Not yet: cams.
+Not yet: a cam on a machine in space; a cam segment's end angle.
 
 Exit status: 0 done, 2 bad input (an unknown point, a model it cannot differentiate yet), 3 the
 crank cannot turn fully (the rows up to there are written).
