@@ -488,6 +488,11 @@ Status Sensitivity::at(const Kinematics& k) {
   return Status::success();
 }
 
+double Sensitivity::angle(const Kinematics& k, BodyId b, int dim) const {
+  const int i = internal::system(k).bodyIndex(b);
+  return i < 0 ? 0.0 : dq_(3 * i + 2, dim);
+}
+
 Eigen::VectorXd Sensitivity::jacobianChange(const Kinematics& k, const Eigen::VectorXd& w,
                                             int dim) const {
   const KinematicsState& s = internal::state(k);

@@ -11,14 +11,33 @@ Status refused(std::string why) {
   return Status::failure(StatusCode::BadModel, std::move(why));
 }
 
+// The output's rate per degree of crank and its derivative in dimension d at the pose: a point
+// along u, a body's angle (radians), or the distance between two points.
+double outputRate(const Kinematics& at, const LimitMeasure& w) {
+  const double perDeg = M_PI / 180 / at.omega();
+  if (w.body) return at.bodyOmega(w.body) * perDeg;
+  if (w.other) {
+    const Vec2 e = (at.position(w.point) - at.position(w.other)).normalized();
+    return e.dot(at.velocity(w.point) - at.velocity(w.other)) * perDeg;
+  }
+  return w.direction.normalized().dot(at.velocity(w.point)) * perDeg;
+}
+
+double outputChange(const Kinematics& at, const Sensitivity& s, const LimitMeasure& w, int d) {
+  if (w.body) return s.angle(at, w.body, d);
+  if (w.other) {
+    const Vec2 e = (at.position(w.point) - at.position(w.other)).normalized();
+    return e.dot(s.point(at, w.point, d) - s.point(at, w.other, d));
+  }
+  return w.direction.normalized().dot(s.point(at, w.point, d));
+}
+
 // d(phi_e)/dp at the pose of `at` for every dimension; false where the output does not cross
-// (its crank rate along u is 0 there).
+// (its crank rate is 0 there).
 bool endDerivatives(Kinematics& at, Sensitivity& s, const LimitMeasure& w, double deg,
                     std::vector<double>& out, Status& status) {
   if (!(status = at.moveTo(deg)).ok() || !(status = s.at(at)).ok()) return false;
-  const Vec2 u = w.direction.normalized();
-  // The velocity at the driver's speed, per degree of crank.
-  const double rate = u.dot(at.motion(w.point).velocity) / at.omega() * M_PI / 180;
+  const double rate = outputRate(at, w);
   if (!(std::abs(rate) > 1e-12)) {
     status = refused(
         "the output stands still where it crosses the level (a dead centre on "
@@ -27,7 +46,7 @@ bool endDerivatives(Kinematics& at, Sensitivity& s, const LimitMeasure& w, doubl
   }
   out.clear();
   for (size_t d = 0; d < s.dims().size(); ++d)
-    out.push_back(-u.dot(s.point(at, w.point, static_cast<int>(d))) / rate);
+    out.push_back(-outputChange(at, s, w, static_cast<int>(d)) / rate);
   return true;
 }
 
@@ -41,10 +60,10 @@ WindowSensitivity windowSensitivity(const Kinematics& k, const std::string& name
   for (const TimingWindow& x : t.windows)
     if (x.name == name) w = &x;
   if (!w) return out.status = refused("no window named \"" + name + "\" in the timing"), out;
-  if (w->output.body || w->output.other || w->output.dz != 0)
+  if (w->output.dz != 0)
     return out.status = refused("window \"" + name +
-                                "\" follows a body's angle or a distance: "
-                                "its ends have no derivatives yet (a point's position has)"),
+                                "\" follows a point in space: its ends have no derivatives "
+                                "yet (in the plane they have)"),
            out;
   const CycleDiagram d = cycleDiagram(k, t);
   if (!(out.status = d.status).ok()) return out;

@@ -116,10 +116,10 @@ void SensitivityPanel::fillPoints() {
                    .arg(QString::fromStdString(m.pointLabel(w.point)),
                         QString::fromStdString(other));
   }
-  // A window on a point's position: its first interval's start, then its end.
+  // A window in the plane: its first interval's start, then its end.
   QStringList ends;
   for (const TimingWindow& w : m.timing.windows)
-    if (w.output.point && !w.output.other)
+    if (w.output.dz == 0)
       for (const QString& which : {tr("start"), tr("end")})
         ends << tr("window %1: its %2").arg(QString::fromStdString(w.name), which);
   watched += ends;
@@ -326,7 +326,7 @@ void SensitivityPanel::windowBars(int n) {
   const Mechanism& m = doc_->design();
   std::vector<const TimingWindow*> windows;
   for (const TimingWindow& w : m.timing.windows)
-    if (w.output.point && !w.output.other) windows.push_back(&w);
+    if (w.output.dz == 0) windows.push_back(&w);
   const TimingWindow& w = *windows.at(n / 2);
   const bool end = n % 2;
   const WindowSensitivity s = windowSensitivity(doc_->kinematics(), w.name, dimensions(m));

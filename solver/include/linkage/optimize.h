@@ -72,8 +72,9 @@ struct OptTarget {
   // gapMm at its closest approach over the turn: residual max(0, gapMm - least), mm.
   size_t index = 0;
   double gapMm = 0;
-  // Window: the file's timing window `window` (on a point's position), its first interval's
-  // start (its end with windowEnd) at crankDeg: residual the angle from crankDeg to it, degrees
+  // Window: the file's timing window `window` (a point's, a body's angle, a distance), its first
+  // interval's start (its end with windowEnd) at crankDeg: residual the angle from crankDeg to it,
+  // degrees
   // (-180 to 180). A design where it never opens is infeasible.
   std::string window;
   bool windowEnd = false;

@@ -124,6 +124,8 @@ class Sensitivity {
   // which no dimension moves (a centre of mass, a counterweight): mm/s^2 per unit. A planar
   // model's.
   Vec2 acceleration(const Kinematics& k, BodyId b, const Vec2& at, int dim) const;
+  // d(body b's angle)/d(dimension k), radians per unit (0 for the ground).
+  double angle(const Kinematics& k, BodyId b, int dim) const;
   // dq'/dp and dq''/dp at the pose of the last at(): one column a dimension (q' = dq/dphi).
   const Eigen::MatrixXd& dqd() const { return dqd_; }
   const Eigen::MatrixXd& dqdd() const { return dqdd_; }

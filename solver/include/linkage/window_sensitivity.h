@@ -1,10 +1,11 @@
 // A timing window's ends differentiated with respect to the dimensions (issue 29: "the
 // derivative of ... a window's ends"), exactly: an end is a crank angle phi_e where the output
-// u . r(phi) crosses the window's level, so by the implicit function theorem
-//   d(phi_e)/dp = -(u . dr/dp) / (u . dr/dphi)
-// at that pose, dr/dp from linkage/sensitivity.h and dr/dphi the point's velocity per unit of
-// crank (the velocity solve), in degrees of crank per unit of the dimension. Windows on a
-// point's position; a body's angle or a distance between points, not yet (said).
+// y(phi, p) crosses the window's level, so by the implicit function theorem
+//   d(phi_e)/dp = -(dy/dp) / (dy/dphi)
+// at that pose: for a point along u, u . dr/dp over u . dr/dphi (linkage/sensitivity.h, the
+// velocity solve); for a body's angle, its dtheta/dp over its rate; for the distance between two
+// points, e . (dP/dp - dQ/dp) over e . (P' - Q'), e along P - Q. Degrees of crank per unit of the
+// dimension. A point in space (a window with dz), not yet (said).
 #pragma once
 
 #include <string>
