@@ -1,9 +1,9 @@
 // Find Dimensions' targets (issue 29, "Dimensions found for targets"): a table whose rows are
 // the optimiser's targets of every kind (linkage/optimize.h OptTarget), each with what it is of
 // (a point; a dyad as `linkage-cli transmission` names it; fx, fy or the force; the file's
-// watched clearances by their parts as the file names them; its timing windows' ends), its value, a crank angle where
-// one is needed, and its weight; read with a message naming the row and the fault; and each
-// target's measures in words with their units, for the result table.
+// watched clearances by their parts as the file names them; its timing windows' ends), its value, a
+// crank angle where one is needed, and its weight; read with a message naming the row and the
+// fault; and each target's measures in words with their units, for the result table.
 #pragma once
 
 #include <QStringList>
