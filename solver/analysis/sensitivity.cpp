@@ -467,6 +467,14 @@ Status Sensitivity::at(const Kinematics& k) {
   const Eigen::VectorXd ddq = acc ? k.ddq() : Eigen::VectorXd();
   const std::vector<int>& map = s.newton.rowMap();
   const int n = sys.nCoords(), dims = static_cast<int>(dims_.size());
+  // A caller after the values alone (a window's ends, a clearance) asks for no dimension:
+  // Eigen's solve of an empty right-hand side offsets a null pointer (UBSan).
+  if (dims == 0) {
+    dq_.resize(n, 0);
+    dqd_.resize(n, 0);
+    dqdd_.resize(n, 0);
+    return Status::success();
+  }
   const internal::SpaceMoves space(s.mech, sys);
   Eigen::MatrixXd J(n, n), rhs(n, dims);
   evalJacobian(sys, views, map, J);
