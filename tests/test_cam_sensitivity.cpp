@@ -13,6 +13,7 @@
 #include <map>
 
 #include "cam_fixtures.h"
+#include "complex_step.h"
 #include "linkage/cam.h"
 #include "linkage/cam_edits.h"
 #include "linkage/cam_joint.h"
@@ -26,8 +27,10 @@
 namespace linkage {
 namespace {
 
-using C = std::complex<double>;
-constexpr double kH = 1e-30, kDeg = M_PI / 180;
+using test::C;
+using test::CVec;
+using test::kH;
+constexpr double kDeg = M_PI / 180;
 
 Mechanism parsed(const std::string& text) {
   LoadResult r = parseMechanism(text);
@@ -35,26 +38,8 @@ Mechanism parsed(const std::string& text) {
   return r.mechanism ? std::move(*r.mechanism) : Mechanism{};
 }
 
-struct CVec {
-  C x, y;
-};
-CVec operator+(CVec a, CVec b) {
-  return {a.x + b.x, a.y + b.y};
-}
-CVec operator-(CVec a, CVec b) {
-  return {a.x - b.x, a.y - b.y};
-}
-CVec operator*(C s, CVec a) {
-  return {s * a.x, s * a.y};
-}
-C dot(CVec a, CVec b) {
-  return a.x * b.x + a.y * b.y;
-}
 CVec rot(C t, CVec a) {
   return {std::cos(t) * a.x - std::sin(t) * a.y, std::sin(t) * a.x + std::cos(t) * a.y};
-}
-CVec perp(CVec a) {
-  return {-a.y, a.x};
 }
 
 // s, s', s'' at theta (radians) of segments with rises h (times `scale`).

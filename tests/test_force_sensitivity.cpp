@@ -10,6 +10,7 @@
 #include <map>
 #include <tuple>
 
+#include "complex_step.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_sensitivity.h"
 #include "mechanisms.h"
@@ -17,29 +18,9 @@
 namespace linkage {
 namespace {
 
-using C = std::complex<double>;
-constexpr double kH = 1e-30;
-struct CVec {
-  C x, y;
-};
-CVec operator+(CVec a, CVec b) {
-  return {a.x + b.x, a.y + b.y};
-}
-CVec operator-(CVec a, CVec b) {
-  return {a.x - b.x, a.y - b.y};
-}
-CVec operator*(C s, CVec a) {
-  return {s * a.x, s * a.y};
-}
-C dot(CVec a, CVec b) {
-  return a.x * b.x + a.y * b.y;
-}
-C cross(CVec a, CVec b) {
-  return a.x * b.y - a.y * b.x;
-}
-CVec turned(CVec a) {
-  return {-a.y, a.x};
-}
+using test::C;
+using test::CVec;
+using test::kH;
 
 struct Pins {
   CVec O, A, B;  // the reactions as linkage/dynamics.h reports them: on the body of point a
@@ -58,10 +39,10 @@ Pins closedForm(const std::map<std::string, C>& v, const Drawn& c, double phi, d
   const C cr = kR + v.at("crank.O-A"), rl = kL + v.at("rod.A-B");
   const C alpha = M_PI / 2 + v.at("ground.guide.angle") * (M_PI / 180);
   const CVec p0{kE - v.at("ground.guide.offset"), C(0)};
-  const CVec dir{std::cos(alpha), std::sin(alpha)}, n = turned(dir);
+  const CVec dir{std::cos(alpha), std::sin(alpha)}, n = perp(dir);
   const double t = kCrankDeg * M_PI / 180 + phi, w2 = std::pow(kRpm * M_PI / 30, 2);
   const CVec A = O + CVec{cr * std::cos(t), cr * std::sin(t)};
-  const CVec wA = A - p0, vA = turned(A - O), aA = O - A;
+  const CVec wA = A - p0, vA = perp(A - O), aA = O - A;
   const C cc = cross(dir, wA), cv = cross(dir, vA), ca = cross(dir, aA);
   const C root = std::sqrt(rl * rl - cc * cc);
   const CVec B = p0 + (dot(dir, wA) + root) * dir;
@@ -69,11 +50,11 @@ Pins closedForm(const std::map<std::string, C>& v, const Drawn& c, double phi, d
   // Accelerations at the crank's speed (mm/s^2), the forces in N (kg mm/s^2 / 1000).
   const CVec aB = C(w2) * (s2 * dir), aAt = C(w2) * aA;
   const CVec u = (C(1) / rl) * (B - A), u2 = (C(1) / rl) * (aB - aAt);
-  const CVec c2 = A + C(c.a2) * u + C(c.p2) * turned(u);
-  const CVec a2 = aAt + C(c.a2) * u2 + C(c.p2) * turned(u2);
+  const CVec c2 = A + C(c.a2) * u + C(c.p2) * perp(u);
+  const CVec a2 = aAt + C(c.a2) * u2 + C(c.p2) * perp(u2);
   const C psi2 = cross(u, u2);
   const CVec uc = (C(1) / cr) * (A - O), uc2 = (C(1) / cr) * aAt;
-  const CVec a1 = C(c.a1) * uc2 + C(c.p1) * turned(uc2);
+  const CVec a1 = C(c.a1) * uc2 + C(c.p1) * perp(uc2);
   (void)uc;
   // The slider: m3 aB = F_Bs + N n, so F_Bs = f dir + beta n with f = m3 aB . dir. The rod:
   // m2 a2 = F_A - F_Bs; kJ2 psi'' = cross(A - c2, F_A) - cross(B - c2, F_Bs). Cramer's rule in

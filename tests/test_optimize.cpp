@@ -12,6 +12,7 @@
 #include "linkage/sensitivity.h"
 #include "linkage/transmission.h"
 #include "mechanisms.h"
+#include "optimize_checks.h"
 
 namespace linkage {
 namespace {
@@ -121,13 +122,7 @@ TEST(Optimize, GradientMatchesCentralDifferences) {
   ASSERT_LT(e.measures[3][0], 75);
   ASSERT_GT(e.measures[3][1], 105);
   for (size_t i = 0; i < x.size(); ++i) {
-    const double h = 1e-5;
-    std::vector<double> up = x, down = x;
-    up[i] += h;
-    down[i] -= h;
-    const double fd =
-        (evaluate(base, spec, up, false).objective - evaluate(base, spec, down, false).objective) /
-        (2 * h);
+    const double fd = test::centralDifference(base, spec, x, i, 1e-5);
     EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
   }
 }

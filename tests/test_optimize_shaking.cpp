@@ -9,6 +9,7 @@
 #include <map>
 #include <tuple>
 
+#include "complex_step.h"
 #include "examples.h"
 #include "linkage/balance.h"
 #include "linkage/dynamics.h"
@@ -16,38 +17,19 @@
 #include "linkage/sensitivity.h"
 #include "linkage/shaking_sensitivity.h"
 #include "mechanisms.h"
+#include "optimize_checks.h"
 
 namespace linkage {
 namespace {
 
-using C = std::complex<double>;
-constexpr double kH = 1e-30;
-struct CVec {
-  C x, y;
-};
-CVec operator+(CVec a, CVec b) {
-  return {a.x + b.x, a.y + b.y};
-}
-CVec operator-(CVec a, CVec b) {
-  return {a.x - b.x, a.y - b.y};
-}
-CVec operator*(C s, CVec a) {
-  return {s * a.x, s * a.y};
-}
-C dot(CVec a, CVec b) {
-  return a.x * b.x + a.y * b.y;
-}
-C cross(CVec a, CVec b) {
-  return a.x * b.y - a.y * b.x;
-}
-CVec turned(CVec a) {  // a quarter turn ccw, as linkage's perp()
-  return {-a.y, a.x};
-}
+using test::C;
+using test::CVec;
+using test::kH;
 
 // A body-fixed point's acceleration per rad^2 of crank: along and across the body's line u
 // (a unit vector whose second derivative is u2) from its base point (second derivative b2).
 CVec bodyPoint(CVec b2, CVec u2, double along, double across) {
-  return b2 + C(along) * u2 + C(across) * turned(u2);
+  return b2 + C(along) * u2 + C(across) * perp(u2);
 }
 
 // The offset slider-crank of tests/mechanisms.h (block in a ground slot), masses on all three
@@ -83,7 +65,7 @@ TEST(ShakingSensitivity, SliderCrankMatchesClosedFormByComplexStep) {
     const CVec dir{std::cos(alpha), std::sin(alpha)};
     const double t = crankDeg * M_PI / 180 + phi;
     const CVec A = O + CVec{cr * std::cos(t), cr * std::sin(t)};
-    const CVec w = A - p0, vA = turned(A - O), aA = O - A;
+    const CVec w = A - p0, vA = perp(A - O), aA = O - A;
     const C c = cross(dir, w), cv = cross(dir, vA), ca = cross(dir, aA);
     const C root = std::sqrt(rl * rl - c * c);
     const C s2 = dot(dir, aA) - (cv * cv + c * ca) / root - c * c * cv * cv / (root * root * root);
@@ -213,13 +195,7 @@ TEST(OptimizeShaking, DimensionGradientMatchesCentralDifferences) {
     ASSERT_GT(e.measures[0][0], 1);
     ASSERT_EQ(e.peaks.size(), 1u);
     for (size_t i = 0; i < x.size(); ++i) {
-      const double h = 1e-6;
-      std::vector<double> up = x, down = x;
-      up[i] += h;
-      down[i] -= h;
-      const double fd = (evaluate(base, spec, up, false).objective -
-                         evaluate(base, spec, down, false).objective) /
-                        (2 * h);
+      const double fd = test::centralDifference(base, spec, x, i, 1e-6);
       EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
     }
   }
@@ -263,13 +239,7 @@ TEST(OptimizeShaking, APinsReactionAsATarget) {
   ASSERT_TRUE(e.feasible) << e.why;
   ASSERT_GT(e.measures[0][0], 1);
   for (size_t i = 0; i < x.size(); ++i) {
-    const double h = 1e-6;
-    std::vector<double> up = x, down = x;
-    up[i] += h;
-    down[i] -= h;
-    const double fd =
-        (evaluate(base, spec, up, false).objective - evaluate(base, spec, down, false).objective) /
-        (2 * h);
+    const double fd = test::centralDifference(base, spec, x, i, 1e-6);
     EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
   }
   // The peak with a 15 mm crank, asked of the crank alone from 20 mm: met.

@@ -12,6 +12,7 @@
 #include "linkage/optimize.h"
 #include "linkage/optimize_text.h"
 #include "mechanisms.h"
+#include "optimize_checks.h"
 
 namespace linkage {
 namespace {
@@ -70,13 +71,7 @@ TEST(OptimizeWatch, GradientMatchesCentralDifferences) {
   const Evaluation e = evaluate(base, spec, x);
   ASSERT_TRUE(e.feasible) << e.why;
   for (size_t i = 0; i < x.size(); ++i) {
-    const double h = 1e-6;
-    std::vector<double> up = x, down = x;
-    up[i] += h;
-    down[i] -= h;
-    const double fd =
-        (evaluate(base, spec, up, false).objective - evaluate(base, spec, down, false).objective) /
-        (2 * h);
+    const double fd = test::centralDifference(base, spec, x, i, 1e-6);
     EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
     EXPECT_GT(std::abs(fd), 1e-3) << spec.variables[i].name;  // each variable moves something
   }

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <map>
 
+#include "complex_step.h"
 #include "examples.h"
 #include "linkage/guide.h"
 #include "linkage/kinematics.h"
@@ -18,29 +19,9 @@
 namespace linkage {
 namespace {
 
-using C = std::complex<double>;
-constexpr double kH = 1e-30;
-struct CVec {
-  C x, y;
-};
-CVec operator+(CVec a, CVec b) {
-  return {a.x + b.x, a.y + b.y};
-}
-CVec operator-(CVec a, CVec b) {
-  return {a.x - b.x, a.y - b.y};
-}
-CVec operator*(C s, CVec a) {
-  return {s * a.x, s * a.y};
-}
-C dot(CVec a, CVec b) {
-  return a.x * b.x + a.y * b.y;
-}
-C cross(CVec a, CVec b) {
-  return a.x * b.y - a.y * b.x;
-}
-CVec perp(CVec a) {
-  return {-a.y, a.x};
-}
+using test::C;
+using test::CVec;
+using test::kH;
 // A point, its velocity and its acceleration per radian (and radian squared) of crank.
 struct PV {
   CVec p, v, a;
