@@ -39,8 +39,9 @@ pose on MODEL's assembly branches.
                                      within DEG to 180 - DEG over the turn
      shaking:fx<=N                   the peak of the shaking force's |fx| (fy, or force: |f|)
                                      over the turn at most N newtons (0: as low as it goes)
-     force:JOINT<=N                  the peak over the turn of a pin's reaction |f| (JOINT as
-                                     `dynamics` names it: pin:crank.A) at most N newtons
+     force:JOINT<=N                  the peak over the turn of a joint's reaction |f| (JOINT as
+                                     `dynamics` names it: pin:crank.A, slider:block.B) at most
+                                     N newtons
                                      (dimensions only)
      clearance:N>=GAP                the file's watched clearance N (from 0) at least GAP mm at
                                      its closest approach

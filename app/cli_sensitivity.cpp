@@ -13,6 +13,7 @@
 #include "linkage/shaking_sensitivity.h"
 #include "linkage/space.h"
 #include "linkage/stroke_sensitivity.h"
+#include "linkage/tables/force_table.h"
 #include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
 
@@ -69,13 +70,15 @@ difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.ro
                        crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit (a dimension moves
                        points, not masses: each centre of mass stays where it is drawn in its
                        body). A planar machine's
-  --force JOINT        instead, the derivatives of a pin's reaction (JOINT as `dynamics` names
-                       its columns, e.g. pin:crank.A: the force on the body of its first point)
-                       at the file's speed at each crank angle: CSV
-                       crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit; from J^T lambda = Q
-                       differentiated exactly. A planar machine's pins; sliders, cams and
-                       redundant joints refused by name
-
+  --force JOINT        instead, the derivatives of a joint's reaction (JOINT as `dynamics` names
+                       its columns, e.g. pin:crank.A: on the body of its first point) at the
+                       file's speed at each crank angle: CSV crank_deg,dimension and a column a
+                       column of its kind there, d<column>_per_unit (a pin's
+                       dfx_N_per_unit,dfy_N_per_unit; a slider's also dm_Nm_per_unit; a cam's
+                       also dcontact_N_per_unit; a gear's or belt's the tooth force or the pull
+                       where its kind restates it, its pivots' pins with it); from J^T lambda = Q
+                       differentiated exactly. A planar machine's; redundant joints refused by
+                       name
 Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
 significant digits. A singular position (a dead point of the output, where the derivatives are
 unbounded) writes no rows and says so on standard error.
@@ -292,30 +295,40 @@ int shakingForce(Kinematics& k, Sensitivity& sens, const Options& o) {
   });
 }
 
-// A pin's reaction's derivatives (linkage/force_sensitivity.h), N per unit at the file's speed,
-// a row a dimension a step.
+// A joint's reaction's derivatives (linkage/force_sensitivity.h), N (N m) per unit at the file's
+// speed, a row a dimension a step, a column a column of its kind in `dynamics`.
 int jointForce(Kinematics& k, Sensitivity& sens, const Options& o) {
   const Mechanism& m = k.mechanism();
-  std::optional<JointId> joint;
+  const Joint* joint = nullptr;
   std::string known;
   for (const Joint& j : m.joints) {  // named as dynamics' columns are
     const std::string name = std::string(kindOf(j).name) + ":" + m.pointLabel(j.a);
     known += (known.empty() ? "" : ", ") + name;
-    if (name == o.force) joint = j.id;
+    if (name == o.force) joint = &j;
   }
   if (!joint) {
     error("--force " + o.force + ": no such joint (the model's: " + known + ")");
     return kBadInput;
   }
-  const JointForceSensitivity first = jointForceSensitivity(k, *joint, sens.dims());
+  const JointForceSensitivity first = jointForceSensitivity(k, joint->id, sens.dims());
   if (!first.status.ok()) {
     error("sensitivity: " + first.status.message);
     return exitFor(first.status);
   }
-  return perStep(k, sens, o, "dfx_N_per_unit,dfy_N_per_unit", [&](Kinematics& kk, Sensitivity& ss) {
-    const JointForceSensitivity f = jointForceSensitivity(kk, *joint, ss.dims());
+  const ElementKind& kind = kindOf(*joint);
+  const bool coupling = kind.role == Role::Coupling;
+  std::string header;
+  for (const char* c : kind.reactionColumns)
+    header += (header.empty() ? "d" : ",d") + std::string(c) + "_per_unit";
+  const JointId id = joint->id;
+  return perStep(k, sens, o, header, [&](Kinematics& kk, Sensitivity& ss) {
+    const JointForceSensitivity f = jointForceSensitivity(kk, id, ss.dims());
     std::vector<std::vector<double>> out;
-    for (const Vec2& d : f.derivative) out.push_back({d.x(), d.y()});
+    for (const JointReaction& d : f.change) {
+      out.emplace_back();
+      for (const char* c : kind.reactionColumns)
+        out.back().push_back(reactionValue(d, c, coupling));
+    }
     return out;
   });
 }

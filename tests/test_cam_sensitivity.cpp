@@ -12,6 +12,7 @@
 #include <complex>
 #include <map>
 
+#include "cam_closed_form.h"
 #include "cam_fixtures.h"
 #include "complex_step.h"
 #include "linkage/cam.h"
@@ -30,50 +31,15 @@ namespace {
 using test::C;
 using test::CVec;
 using test::kH;
+using test::Law;
+using test::law;
+using test::parsed;
+using test::PV;
+using test::rot;
+using test::segmentsOf;
+using test::Values;
+using test::withRises;
 constexpr double kDeg = M_PI / 180;
-
-Mechanism parsed(const std::string& text) {
-  LoadResult r = parseMechanism(text);
-  EXPECT_TRUE(r.mechanism) << r.error;
-  return r.mechanism ? std::move(*r.mechanism) : Mechanism{};
-}
-
-CVec rot(C t, CVec a) {
-  return {std::cos(t) * a.x - std::sin(t) * a.y, std::sin(t) * a.x + std::cos(t) * a.y};
-}
-
-// s, s', s'' at theta (radians) of segments with rises h (times `scale`).
-struct Law {
-  C s, v, a;
-};
-Law law(const std::vector<cam::Segment>& segs, const std::vector<C>& h, double scale,
-        double theta) {
-  double from = 0;
-  Law out{0, 0, 0};
-  for (size_t k = 0; k < segs.size(); ++k) {
-    const double to = segs[k].toDeg * kDeg;
-    if (theta >= to) {
-      out.s += scale * h[k];
-      from = to;
-      continue;
-    }
-    if (segs[k].law) {
-      const double beta = to - from;
-      const cam::Normalised n = cam::evaluate(*segs[k].law, (theta - from) / beta);
-      out.s += scale * h[k] * n.s;
-      out.v = scale * h[k] * n.v / beta;
-      out.a = scale * h[k] * n.a / (beta * beta);
-    }
-    break;
-  }
-  return out;
-}
-
-// The follower's point (position, and rates per radian of the cam) in the dimensions' terms.
-struct PV {
-  CVec p, v, a;
-};
-using Values = std::map<std::string, C>;
 
 // The dimension d stepped by i kH in the values (a rise with its partner, as the dimension's
 // camRises say), and the closed form's imaginary parts: d(point), d(rate), d(second rate).
@@ -129,50 +95,15 @@ void expectMatches(const Mechanism& m, const char* point, const Values& values,
     }
 }
 
-std::vector<cam::Segment> segmentsOf(const Mechanism& m) {
-  for (const Joint& j : m.joints)
-    if (std::optional<CamJoint> c = camJoint(m, j)) return c->program.segments();
-  ADD_FAILURE() << "no cam";
-  return {};
-}
-
-Values withRises(Values v, const std::vector<cam::Segment>& segs, const std::string& pre) {
-  for (size_t k = 0; k < segs.size(); ++k) v[pre + "h" + std::to_string(k)] = segs[k].rise;
-  return v;
-}
-
 // A translating follower (tests/cam_fixtures.h), offset, its slot turned about its first end
 // (angle) and moved along its normal (offset): R where the slot's line meets the circle of
 // base + roller about O (a flat face: at base along the slot from the foot of O), then s along
 // the line.
 void expectTranslating(const test::TranslatingCam& spec, size_t dimensionsExpected) {
   const Mechanism m = parsed(spec.text());
-  const std::vector<cam::Segment> segs = segmentsOf(m);
-  const Slot& slot = m.slots.front();
-  const Vec2 n = guideOf(slot)->normal, p0 = slot.p0;
-  const std::string pre = "cam:follower.R.";
-  Values v = withRises({{"ground.O.x", 0},
-                        {"ground.O.y", 0},
-                        {"ground.guide.offset", 0},
-                        {"ground.guide.angle", 0},
-                        {pre + "base", spec.base},
-                        {pre + "roller", spec.roller}},
-                       segs, pre);
-  auto closedForm = [&](const Values& x) -> PV {
-    const CVec O{x.at("ground.O.x"), x.at("ground.O.y")};
-    const C off = x.at("ground.guide.offset"), turn = x.at("ground.guide.angle") * kDeg;
-    const CVec P0 = CVec{p0.x(), p0.y()} + off * CVec{n.x(), n.y()};
-    const CVec d = rot(turn, CVec{0, 1});
-    const CVec D = P0 - O;
-    const C r = x.at(pre + "base") + x.at(pre + "roller"), dd = dot(D, d);
-    const C t = spec.flat ? r - dd : -dd + std::sqrt(dd * dd - dot(D, D) + r * r);
-    std::vector<C> h(segs.size());
-    for (size_t k = 0; k < h.size(); ++k) h[k] = x.at(pre + "h" + std::to_string(k));
-    const Law s = law(segs, h, 1, x.at("theta").real());
-    return {P0 + (t + s.s) * d, s.v * d, s.a * d};
-  };
+  const test::TranslatingForm form = test::translatingForm(m, spec);
   // The offset and angle are the slot's values as drawn, not 0: only their steps matter here.
-  expectMatches(m, "follower.R", v, pre, closedForm, dimensionsExpected);
+  expectMatches(m, "follower.R", form.values, form.pre, form.at, dimensionsExpected);
 }
 
 // Roller (8 dimensions: its roller one), knife edge (offset the other way) and flat face.

@@ -8,6 +8,7 @@
 #include <complex>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <tuple>
 
 #include "complex_step.h"
@@ -24,6 +25,8 @@ using test::kH;
 
 struct Pins {
   CVec O, A, B;  // the reactions as linkage/dynamics.h reports them: on the body of point a
+  CVec G;        // the guide's on the block (a slider) or on the rod at B (a pin in the slot)
+  C couple;      // the guide's couple on the block about B, N m
 };
 
 constexpr double kR = 20, kL = 70, kE = 8, kCrankDeg = 30, kRpm = 900;
@@ -34,7 +37,11 @@ struct Drawn {
   double a1, p1, a2, p2;
 };
 
-Pins closedForm(const std::map<std::string, C>& v, const Drawn& c, double phi, double gy) {
+// The block's centre of mass from B (it does not turn: the slot keeps its drawn angle to it).
+const Vec2 kBlockCom(1, 2);
+
+Pins closedForm(const std::map<std::string, C>& v, const Drawn& c, double phi, double gy,
+                double m3 = kM3) {
   const CVec O{v.at("ground.O.x"), v.at("ground.O.y")};
   const C cr = kR + v.at("crank.O-A"), rl = kL + v.at("rod.A-B");
   const C alpha = M_PI / 2 + v.at("ground.guide.angle") * (M_PI / 180);
@@ -61,7 +68,7 @@ Pins closedForm(const std::map<std::string, C>& v, const Drawn& c, double phi, d
   // (F_A.x, F_A.y, beta).
   // Gravity (0, gy) m/s^2: each mass's weight joins, m (a / 1000 - g) in place of m a / 1000.
   const CVec g{C(0), C(gy * 1000)};
-  const C f = C(kM3 / 1000) * dot(aB - g, dir);
+  const C f = C(m3 / 1000) * dot(aB - g, dir);
   const CVec m2a2 = C(kM2 / 1000) * (a2 - g);
   const CVec rA = A - c2, rB = B - c2;
   const C r1 = m2a2.x + f * dir.x, r2 = m2a2.y + f * dir.y,
@@ -85,7 +92,42 @@ Pins closedForm(const std::map<std::string, C>& v, const Drawn& c, double phi, d
   const CVec FO = C(kM1 / 1000) * (a1 - g) + FA;
   // Reported on the body of each joint's point a: the crank pin's a is the crank's (-F_A), the
   // slider pin's the rod's (-F_Bs), the pivot's the ground's (-F_O).
-  return {C(-1) * FO, C(-1) * FA, C(-1) * FBs};
+  // The block: m3 (aB - g) = F_Bs + G, and about B the guide's couple balances the weight's and
+  // the inertia's moment at its centre. Without a block (a pin in the slot) G = -F_Bs on the rod.
+  const CVec mb = C(m3 / 1000) * (aB - g);
+  const CVec G = m3 > 0 ? mb - FBs : C(-1) * FBs;
+  const C couple = cross(CVec{C(kBlockCom.x()), C(kBlockCom.y())}, mb) / C(1000);
+  return {C(-1) * FO, C(-1) * FA, C(-1) * FBs, G, couple};
+}
+
+// The slider-crank with masses on its bodies (the block's: none with a pin in the slot), its
+// centres as the closed form reads them, loaded, and its dimensions' values for it.
+struct Loaded {
+  test::SliderCrank sc;
+  Drawn drawn;
+  Kinematics k;
+  std::vector<Dimension> dims;
+  std::map<std::string, C> base;
+};
+
+std::unique_ptr<Loaded> loaded(double gy, bool pinInSlot = false) {
+  auto out = std::make_unique<Loaded>();
+  test::SliderCrank& sc = out->sc =
+      test::sliderCrank(kR, kL, kE, kCrankDeg, Direction::Ccw, kRpm, pinInSlot);
+  const Vec2 A0 = sc.m.point(sc.A)->pos, B0 = sc.m.point(sc.B)->pos;
+  const Vec2 c1(6, 9), c2 = A0 + 0.4 * (B0 - A0) + Vec2(4, -1);
+  sc.m.body(sc.crank)->mass = Mass{kM1, c1, 20, ""};
+  sc.m.body(sc.rod)->mass = Mass{kM2, c2, kJ2, ""};
+  if (!pinInSlot) sc.m.body(sc.slider)->mass = Mass{kM3, B0 + kBlockCom, 0, ""};
+  if (gy != 0) sc.m.gravity = Vec2(0, gy);
+  const Vec2 u1 = A0.normalized(), u2 = (B0 - A0).normalized();
+  out->drawn = {c1.dot(u1), c1.dot(perp(u1)), (c2 - A0).dot(u2), (c2 - A0).dot(perp(u2))};
+  EXPECT_TRUE(out->k.load(sc.m).ok());
+  out->k.setAccelerations(true);
+  out->dims = dimensions(sc.m);
+  for (const Dimension& d : out->dims)
+    out->base[d.name] = d.name == "ground.O.x" || d.name == "ground.O.y" ? d.value : 0;
+  return out;
 }
 
 class ForceSensitivity : public ::testing::TestWithParam<double> {};
@@ -93,27 +135,12 @@ class ForceSensitivity : public ::testing::TestWithParam<double> {};
 // Without gravity and with it (the weights' moments about the frames' origins turn with them).
 TEST_P(ForceSensitivity, SliderCrankPinsMatchNewtonEulerByComplexStep) {
   const double gy = GetParam();
-  test::SliderCrank sc = test::sliderCrank(kR, kL, kE, kCrankDeg, Direction::Ccw, kRpm);
-  const Vec2 A0 = sc.m.point(sc.A)->pos, B0 = sc.m.point(sc.B)->pos;
-  const Vec2 c1(6, 9), c2 = A0 + 0.4 * (B0 - A0) + Vec2(4, -1);
-  sc.m.body(sc.crank)->mass = Mass{kM1, c1, 20, ""};
-  sc.m.body(sc.rod)->mass = Mass{kM2, c2, kJ2, ""};
-  sc.m.body(sc.slider)->mass = Mass{kM3, B0 + Vec2(1, 2), 0, ""};
-  if (gy != 0) sc.m.gravity = Vec2(0, gy);
-  auto parts = [](Vec2 from, Vec2 to, Vec2 c) {
-    const Vec2 u = (to - from).normalized();
-    return std::pair{(c - from).dot(u), (c - from).dot(perp(u))};
-  };
-  Drawn drawn;
-  std::tie(drawn.a1, drawn.p1) = parts(Vec2(0, 0), A0, c1);
-  std::tie(drawn.a2, drawn.p2) = parts(A0, B0, c2);
-  Kinematics k;
-  ASSERT_TRUE(k.load(sc.m).ok());
-  k.setAccelerations(true);
-  const std::vector<Dimension> dims = dimensions(sc.m);
-  std::map<std::string, C> base;
-  for (const Dimension& d : dims)
-    base[d.name] = d.name == "ground.O.x" || d.name == "ground.O.y" ? d.value : 0;
+  const std::unique_ptr<Loaded> l = loaded(gy);
+  const test::SliderCrank& sc = l->sc;
+  const Drawn& drawn = l->drawn;
+  Kinematics& k = l->k;
+  const std::vector<Dimension>& dims = l->dims;
+  const std::map<std::string, C>& base = l->base;
   const JointId pins[3] = {sc.drive, sc.m.joints[1].id, sc.m.joints[2].id};
   for (int pin = 0; pin < 3; ++pin) {
     std::vector<double> peak(dims.size(), 0), err(dims.size(), 0);
@@ -138,6 +165,50 @@ TEST_P(ForceSensitivity, SliderCrankPinsMatchNewtonEulerByComplexStep) {
       std::printf("  pin %d, d F / d %-20s peak %.6g N per unit, worst error %.2e\n", pin,
                   dims[d].name.c_str(), peak[d], err[d]);
       EXPECT_LT(err[d], 1e-9 * std::max(peak[d], 1e-3)) << pin << " " << dims[d].name;
+    }
+  }
+}
+
+// The slider's reaction (a force normal to its slot that turns with it, and a couple) and a pin in
+// a slot's, against the same closed form: every dimension, every 10 degrees.
+TEST_P(ForceSensitivity, SliderAndPinInSlotMatchNewtonEulerByComplexStep) {
+  const double gy = GetParam();
+  for (const bool pinInSlot : {false, true}) {
+    const std::unique_ptr<Loaded> l = loaded(gy, pinInSlot);
+    const test::SliderCrank& sc = l->sc;
+    const Drawn& drawn = l->drawn;
+    Kinematics& k = l->k;
+    const std::vector<Dimension>& dims = l->dims;
+    const std::map<std::string, C>& base = l->base;
+    const double m3 = pinInSlot ? 0 : kM3;
+    const JointId guide = sc.m.joints.back().id;
+    std::vector<double> peak(dims.size(), 0), err(dims.size(), 0);
+    for (int deg = 0; deg < 360; deg += 10) {
+      ASSERT_TRUE(k.moveTo(deg).ok());
+      const JointForceSensitivity s = jointForceSensitivity(k, guide, dims);
+      ASSERT_TRUE(s.status.ok()) << s.status.message;
+      const Pins exact = closedForm(base, drawn, deg * M_PI / 180, gy, m3);
+      const double size = 1 + s.force.norm();
+      ASSERT_NEAR(s.force.x(), exact.G.x.real(), 1e-9 * size) << pinInSlot << " " << deg;
+      ASSERT_NEAR(s.force.y(), exact.G.y.real(), 1e-9 * size) << pinInSlot << " " << deg;
+      ASSERT_NEAR(s.reaction.coupleNm, pinInSlot ? 0.0 : exact.couple.real(), 1e-12 * size);
+      for (size_t d = 0; d < dims.size(); ++d) {
+        std::map<std::string, C> v = base;
+        v.at(dims[d].name) += C(0, kH);
+        const Pins st = closedForm(v, drawn, deg * M_PI / 180, gy, m3);
+        const Eigen::Vector3d want(st.G.x.imag() / kH, st.G.y.imag() / kH,
+                                   pinInSlot ? 0.0 : 1000 * st.couple.imag() / kH);
+        const Eigen::Vector3d got(s.change[d].force.x(), s.change[d].force.y(),
+                                  1000 * s.change[d].coupleNm);  // N mm
+        peak[d] = std::max(peak[d], want.norm());
+        err[d] = std::max(err[d], (got - want).norm());
+        ASSERT_EQ(s.derivative[d], s.change[d].force);
+      }
+    }
+    for (size_t d = 0; d < dims.size(); ++d) {
+      std::printf("  %s, d(F, M) / d %-20s peak %.6g per unit, worst error %.2e\n",
+                  pinInSlot ? "pin in slot" : "slider", dims[d].name.c_str(), peak[d], err[d]);
+      EXPECT_LT(err[d], 1e-9 * std::max(peak[d], 1e-3)) << pinInSlot << " " << dims[d].name;
     }
   }
 }

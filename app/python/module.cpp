@@ -154,7 +154,7 @@ py::dict strokeSensitivity(const Model& m, const std::string& point) {
 py::dict forceSensitivity(const Model& m, const std::string& joint, double crankDeg, double rpm) {
   py::dict out;
   for (const auto& [name, d] : m.forceSensitivity(joint, crankDeg, rpm))
-    out[py::str(name)] = pair(d);
+    out[py::str(name)] = py::tuple(py::cast(d));
   return out;
 }
 

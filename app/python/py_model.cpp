@@ -13,6 +13,7 @@
 #include "linkage/shaking_sensitivity.h"
 #include "linkage/space.h"
 #include "linkage/stroke_sensitivity.h"
+#include "linkage/tables/force_table.h"
 #include "linkage/tables/motion_table.h"
 
 namespace linkage::py {
@@ -273,18 +274,23 @@ std::vector<std::pair<std::string, Vec2>> Model::shakingSensitivity(double crank
   return out;
 }
 
-std::vector<std::pair<std::string, Vec2>> Model::forceSensitivity(const std::string& joint,
-                                                                  double crankDeg,
-                                                                  double rpm) const {
-  std::optional<JointId> id;
+std::vector<std::pair<std::string, std::vector<double>>> Model::forceSensitivity(
+    const std::string& joint, double crankDeg, double rpm) const {
+  const Joint* found = nullptr;
   for (const Joint& j : design_.joints)
-    if (std::string(kindOf(j).name) + ":" + design_.pointLabel(j.a) == joint) id = j.id;
-  if (!id) throw BadInput("no joint '" + joint + "' (named as linkage-cli dynamics names it)");
+    if (std::string(kindOf(j).name) + ":" + design_.pointLabel(j.a) == joint) found = &j;
+  if (!found) throw BadInput("no joint '" + joint + "' (named as linkage-cli dynamics names it)");
   const JointForceSensitivity f =
-      jointForceSensitivity(at(crankDeg, rpm), *id, linkage::dimensions(design_));
+      jointForceSensitivity(at(crankDeg, rpm), found->id, linkage::dimensions(design_));
   raise(f.status);
-  std::vector<std::pair<std::string, Vec2>> out;
-  for (size_t d = 0; d < f.dims.size(); ++d) out.emplace_back(f.dims[d].name, f.derivative[d]);
+  const ElementKind& kind = kindOf(*found);
+  std::vector<std::pair<std::string, std::vector<double>>> out;
+  for (size_t d = 0; d < f.dims.size(); ++d) {
+    std::vector<double> v;
+    for (const char* c : kind.reactionColumns)
+      v.push_back(reactionValue(f.change[d], c, kind.role == Role::Coupling));
+    out.emplace_back(f.dims[d].name, std::move(v));
+  }
   return out;
 }
 

@@ -81,10 +81,10 @@ class Model {
   std::vector<std::pair<std::string, double>> strokeSensitivity(const std::string& point) const;
   // d(shaking force)/d(dimension) at the crank angle and rpm (linkage/shaking_sensitivity.h).
   std::vector<std::pair<std::string, Vec2>> shakingSensitivity(double crankDeg, double rpm) const;
-  // d(a pin's reaction)/d(dimension) (linkage/force_sensitivity.h), the joint named as
-  // linkage-cli dynamics names it (pin:crank.A).
-  std::vector<std::pair<std::string, Vec2>> forceSensitivity(const std::string& joint,
-                                                             double crankDeg, double rpm) const;
+  // d(a joint's reaction)/d(dimension) (linkage/force_sensitivity.h), the joint named as
+  // linkage-cli dynamics names it (pin:crank.A): a value a column of its kind there.
+  std::vector<std::pair<std::string, std::vector<double>>> forceSensitivity(
+      const std::string& joint, double crankDeg, double rpm) const;
   // Every dimension's name and value as drawn (mm, degrees or a ratio).
   std::vector<std::pair<std::string, double>> dimensions() const;
 

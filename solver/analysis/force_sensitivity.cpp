@@ -1,10 +1,13 @@
-// A pin's reaction differentiated with respect to the dimensions: see
+// A joint's reaction differentiated with respect to the dimensions: see
 // linkage/force_sensitivity.h.
 #include "linkage/force_sensitivity.h"
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
+#include <string>
 
+#include "analysis/forces_jacobian.h"
 #include "kinematics/kinematics_state.h"
 #include "linkage/dynamics.h"
 #include "linkage/elements.h"
@@ -48,6 +51,146 @@ Eigen::VectorXd forcesChange(const Kinematics& k, const Sensitivity& s, int dim)
   return dQ;
 }
 
+// A joint's reaction as its rows make it: the generalized force -sum lambda_r J_r on one body
+// (its force and its moment about that body's frame origin), read about the joint's point a; the
+// rows are the kinematics' (independent) ones.
+struct RowsReaction {
+  int joint = -1;
+  std::vector<int> rows, cams;  // J's rows; of them, a cam's contact
+  int body = -1;                // the moving body it is read on
+  double flip = 1;              // -1: that body is the other side (a is on the ground)
+  PointId a;
+};
+
+std::string rowsOf(const KinematicsState& st, int ji, RowsReaction& out) {
+  const System& sys = st.sys;
+  const std::vector<int>& map = st.newton.rowMap();
+  out = {};
+  out.joint = ji;
+  out.a = st.mech.joints[ji].a;
+  out.body = sys.point(out.a)->body;
+  for (const Row& r : sys.cons) {
+    if (r.joint != ji || r.isDriver() || r.kind == Primitive::Hold) continue;
+    for (int e = 0; e < r.rows(); ++e) {
+      if (map[r.row + e] < 0) return "its rows are not independent";
+      out.rows.push_back(map[r.row + e]);
+      if (r.kind == Primitive::Cam) out.cams.push_back(map[r.row + e]);
+    }
+    if (out.body >= 0 && out.flip > 0) continue;
+    // a on the ground: the reaction is what the other side bears, turned round.
+    if (r.bodies() > 2) return "a on the ground with rows on three bodies";
+    out.flip = -1;
+    out.body = r.body[0] >= 0 ? r.body[0] : r.body[1];
+  }
+  return "";
+}
+
+// The derivatives' common parts at one pose.
+struct Context {
+  const Kinematics& k;
+  const Sensitivity& s;
+  Eigen::MatrixXd J;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  Eigen::VectorXd lambda;
+};
+
+Eigen::Vector3d generalized(const Eigen::MatrixXd& J, const RowsReaction& r,
+                            const Eigen::VectorXd& lambda) {
+  Eigen::Vector3d G = Eigen::Vector3d::Zero();
+  if (r.body < 0) return G;
+  for (int row : r.rows) G -= lambda[row] * J.block<1, 3>(row, 3 * r.body).transpose();
+  return G;
+}
+
+JointReaction value(const Context& c, const RowsReaction& r) {
+  JointReaction out;
+  const Eigen::Vector3d G = generalized(c.J, r, c.lambda);
+  out.at = c.k.position(r.a);
+  if (r.body >= 0) {
+    const Vec2 origin = c.k.q().segment<2>(3 * r.body), F = G.head<2>();
+    out.force = r.flip * F;
+    out.coupleNm = r.flip * (G[2] - cross(out.at - origin, F)) / 1000;
+  }
+  for (int row : r.cams) out.contactN = -c.lambda[row];
+  return out;
+}
+
+// Its derivative along dimension dim, dQ the generalized forces' (forcesChange): each row's
+// multiplier's (header) and the rows' own turn, dG = -sum (dlambda_r J_r + lambda_r dJ_r).
+JointReaction change(const Context& c, const RowsReaction& r, int dim, const Eigen::VectorXd& dQ) {
+  const int n = static_cast<int>(c.lambda.size());
+  std::vector<double> dl;
+  for (int row : r.rows) {
+    const Eigen::VectorXd w = c.lu.solve(Eigen::VectorXd::Unit(n, row));
+    dl.push_back(w.dot(dQ) - c.lambda.dot(forcesJacobianChange(c.k, c.s, w, dim)));
+  }
+  JointReaction out;
+  out.at = c.s.point(c.k, r.a, dim);
+  for (size_t i = 0; i < r.cams.size(); ++i)
+    for (size_t e = 0; e < r.rows.size(); ++e)
+      if (r.rows[e] == r.cams[i]) out.contactN = -dl[e];
+  if (r.body < 0) return out;
+  Eigen::Vector3d dG = Eigen::Vector3d::Zero();
+  for (int col = 0; col < 3; ++col) {
+    const Eigen::VectorXd dJ =
+        forcesJacobianChange(c.k, c.s, Eigen::VectorXd::Unit(n, 3 * r.body + col), dim);
+    for (int row : r.rows) dG[col] -= c.lambda[row] * dJ[row];
+  }
+  for (size_t e = 0; e < r.rows.size(); ++e)
+    dG -= dl[e] * c.J.block<1, 3>(r.rows[e], 3 * r.body).transpose();
+  const Eigen::Vector3d G = generalized(c.J, r, c.lambda);
+  const Vec2 at = c.k.position(r.a), origin = c.k.q().segment<2>(3 * r.body), F = G.head<2>();
+  const Vec2 dOrigin = c.s.dq().block<2, 1>(3 * r.body, dim), dF = dG.head<2>();
+  out.force = r.flip * dF;
+  out.coupleNm = r.flip * (dG[2] - cross(out.at - dOrigin, F) - cross(at - origin, dF)) / 1000;
+  return out;
+}
+
+// Positions at k's pose and their moves along one dimension, for the kinds' reactChange().
+struct SensitivityPose : Pose {
+  const Kinematics& k;
+  const Sensitivity& s;
+  int dim = 0;
+  SensitivityPose(const Kinematics& kin, const Sensitivity& sens) : k(kin), s(sens) {}
+  Vec2 point(PointId p) const override { return k.position(p); }
+  Transform body(BodyId b) const override { return k.bodyTransform(b); }
+  Vec2 drawnMove(PointId p) const {
+    for (const auto& [id, move] : s.dims()[dim].points)
+      if (id == p) return move;
+    return Vec2::Zero();
+  }
+};
+
+struct PointChange : PoseChange {
+  const SensitivityPose& pose;
+  explicit PointChange(const SensitivityPose& p) : pose(p) {}
+  Vec2 point(PointId p) const override { return pose.s.point(pose.k, p, pose.dim); }
+  Vec2 drawn(PointId p) const override { return pose.drawnMove(p); }
+  double ratio(JointId j) const override { return pose.s.dims()[pose.dim].ratioOf == j ? 1 : 0; }
+};
+
+// What cannot be differentiated here, named; "" when the joint's reaction can be.
+std::string refused(const Kinematics& k, int ji, const Forces& f) {
+  const Mechanism& m = k.mechanism();
+  if (isSpatial(m)) return "a machine in space's reactions are not differentiated yet";
+  if (!f.undetermined.empty())
+    return "redundant joints: their reactions' shares are not determined, nor their derivatives";
+  for (const Joint& j : m.joints)
+    if (kindOf(j).react && !kindOf(j).reactChange)
+      return jointLabel(m, j.id) + ": its restated reaction is not differentiated yet";
+  (void)ji;
+  return "";
+}
+
+// The reactions that make joint ji's: its own and the restated ones (a gear's moves its pivots').
+std::vector<int> involved(const Mechanism& m, int ji) {
+  std::vector<int> out{ji};
+  for (size_t j = 0; j < m.joints.size(); ++j)
+    if (kindOf(m.joints[j]).reactChange && static_cast<int>(j) != ji)
+      out.push_back(static_cast<int>(j));
+  return out;
+}
+
 }  // namespace
 
 JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
@@ -58,58 +201,44 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
   const Mechanism& m = k.mechanism();
   const int ji = m.jointIndex(joint);
   if (ji < 0) return out.status = Status::badModel("no such joint"), out;
-  const std::string name = jointLabel(m, joint);
-  if (kindOf(m.joints[ji]).role != Role::Revolute)
-    return out.status = Status::badModel(name + ": only a pin's reaction is differentiated yet"),
-           out;
-  if (isSpatial(m))
-    return out.status = Status::badModel(
-               "a machine in space's reactions are not "
-               "differentiated yet"),
-           out;
-  const KinematicsState& st = internal::state(k);
-  if (st.sys.contactRows)
-    return out.status = Status::badModel("reactions through a cam are not differentiated yet"), out;
   const Forces f = computeForces(k);
   if (!f.status.ok()) return out.status = f.status, out;
-  if (!f.undetermined.empty())
-    return out.status = Status::badModel(
-               "redundant joints: their reactions' shares are not "
-               "determined, nor their derivatives"),
-           out;
-  out.force = f.joints[ji].force;
+  if (std::string why = refused(k, ji, f); !why.empty())
+    return out.status = Status::badModel(jointLabel(m, joint) + ": " + why), out;
+  out.reaction = f.joints[ji];
+  out.force = out.reaction.force;
   Sensitivity s;
   if (out.status = s.prepare(k, std::move(dims)); !out.status.ok()) return out;
   if (out.status = s.at(k); !out.status.ok()) return out;
   out.dims = s.dims();
-  const System& sys = st.sys;
-  const std::vector<int>& map = st.newton.rowMap();
-  std::vector<BodyView> views;
-  makeViews(sys, k.q(), &k.dq(), views);
-  Eigen::MatrixXd J(sys.nCoords(), sys.nCoords());
-  evalJacobian(sys, views, map, J);
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(J);
-  const Eigen::VectorXd lambda = lu.transpose().solve(generalizedForces(k));
-  // The pin's rows, and on which side its point a is (the reaction is on a's body).
-  const Row* row = nullptr;
-  for (const Row& r : sys.cons)
-    if (r.joint == ji && r.kind == Primitive::Coincident) row = &r;
-  if (!row || map[row->row] < 0 || map[row->row + 1] < 0)
-    return out.status = Status::badModel(name + ": its rows are not independent"), out;
-  const PointLocation* a = sys.point(m.joints[ji].a);
-  const double sign = a && row->body[0] == a->body ? 1 : -1;
-  Eigen::VectorXd w[2];
-  for (int e = 0; e < 2; ++e)
-    w[e] = lu.solve(Eigen::VectorXd::Unit(sys.nCoords(), map[row->row + e]));
+  const KinematicsState& st = internal::state(k);
+  Context c{k, s, forcesJacobian(k), {}, {}};
+  c.lu.compute(c.J);
+  c.lambda = c.lu.transpose().solve(generalizedForces(k));
+  const std::vector<int> joints = involved(m, ji);
+  std::vector<RowsReaction> rows(joints.size());
+  for (size_t i = 0; i < joints.size(); ++i)
+    if (std::string why = rowsOf(st, joints[i], rows[i]); !why.empty())
+      return out.status = Status::badModel(jointLabel(m, m.joints[joints[i]].id) + ": " + why), out;
+  SensitivityPose pose(k, s);
+  const PointChange dpose(pose);
+  std::vector<JointReaction> all(m.joints.size()), changes(m.joints.size());
   for (size_t d = 0; d < out.dims.size(); ++d) {
-    const int dim = static_cast<int>(d);
-    const Eigen::VectorXd dQ = forcesChange(k, s, dim);
-    Vec2 dl;
-    for (int e = 0; e < 2; ++e) dl[e] = w[e].dot(dQ) - lambda.dot(s.jacobianChange(k, w[e], dim));
-    out.derivative.push_back(-sign * dl);
+    pose.dim = static_cast<int>(d);
+    const Eigen::VectorXd dQ = forcesChange(k, s, pose.dim);
+    for (size_t i = 0; i < joints.size(); ++i) {
+      all[joints[i]] = value(c, rows[i]);
+      changes[joints[i]] = change(c, rows[i], pose.dim, dQ);
+    }
+    for (int j : joints)
+      if (kindOf(m.joints[j]).reactChange)
+        kindOf(m.joints[j]).reactChange(m, j, pose, dpose, all, changes);
+    out.change.push_back(changes[ji]);
+    out.derivative.push_back(changes[ji].force);
   }
-  if (!std::all_of(out.derivative.begin(), out.derivative.end(),
-                   [](const Vec2& v) { return v.allFinite(); }))
+  if (!std::all_of(out.change.begin(), out.change.end(), [](const JointReaction& r) {
+        return r.force.allFinite() && std::isfinite(r.coupleNm) && std::isfinite(r.contactN);
+      }))
     out.status = Status::failure(StatusCode::Singular, "the reaction's derivatives are unbounded");
   return out;
 }

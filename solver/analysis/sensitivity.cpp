@@ -377,6 +377,10 @@ internal::CamMove camMove(const Mechanism& m, const Joint& j, const Moves& mv) {
     const Vec2 w = (b - a).normalized();
     const Vec2 pivotMove = mv.at(onGuide.id, 0) - mv.at(onFollower.id, 0);
     out.turn = (dR - w.dot(pivotMove + out.b - da)) / w.dot(perp(b - c.drawn.pivot));
+    // b at the new lowest position (out.b in the follower's frame, the frame carried onto the
+    // guide's pivot and turned by out.turn): the face's normal there, in the follower's frame.
+    const Vec2 low = pivotMove + out.b + out.turn * perp(b - c.drawn.pivot);
+    if (c.kind.flat) out.faceTurn = cross(w, low - da) / (b - a).norm() - out.turn;
     return out;
   }
   const Slot& slot = *m.slot(f.slot);
@@ -509,8 +513,9 @@ Eigen::VectorXd Sensitivity::jacobianChange(const Kinematics& k, const Eigen::Ve
   // The rates' change at order 1 holds the rates (here w) and moves the pose by dq/dp: d(J w).
   Eigen::VectorXd out(s.sys.nCoords());
   const internal::SpaceMoves space(s.mech, s.sys);
-  rowChanges(s.mech, s.sys, views, Eigen::VectorXd(), {pointMove_[dim], dims_[dim], space}, 1,
-             Eigen::VectorXd(dq_.col(dim)), Eigen::VectorXd(), s.newton.rowMap(), out);
+  rowChanges(s.mech, s.sys, views, Eigen::VectorXd(),
+             {pointMove_[dim], dims_[dim], space, &camMove_[dim]}, 1, Eigen::VectorXd(dq_.col(dim)),
+             Eigen::VectorXd(), s.newton.rowMap(), out);
   return out;
 }
 

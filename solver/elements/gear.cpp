@@ -21,7 +21,9 @@
 #include "elements/gear.h"
 
 #include <cmath>
+#include <vector>
 
+#include "elements/dual.h"
 #include "elements/frames.h"
 #include "elements/rows.h"
 #include "linkage/gear.h"
@@ -181,41 +183,104 @@ int pivotIndex(const Mechanism& m, const Point& p, BodyId carrier) {
 // it leaves a's pulley, -F where it meets b's (the drawn pulleys, radii in the ratio, the run
 // their outer tangent; the pretension, which pulls the shafts together, is not in the model).
 // Either way the shafts' pins carry what F pushes them by; the carrier then takes the pins' forces
-// only.
-void react(const Mechanism& m, int index, const Pose& pose, std::vector<JointReaction>& all) {
-  const Joint& j = m.joints[index];
-  JointReaction& r = all[index];
-  const Point *a = m.point(j.a), *b = m.point(j.b);
-  // A bevel pair transmits the couple about each axis and no more is computed: its tooth
-  // force's other components (radial, axial) are not in the model (docs/dynamics.md).
-  if (!parallel(planeOf(m, a->body), planeOf(m, b->body))) return;
-  const Vec2 A = pose.point(j.a), B = pose.point(j.b);
-  const double M = r.coupleNm * 1000;  // N mm, on a's body about A
-  const double d = (B - A).norm();
-  if (!(d > 0)) return;  // coaxial: a couple is all there is
-  const Vec2 u = (B - A) / d;
-  if (gearRatio(j) > 0) {
-    JointSymbol s;
-    symbol(m, j, s);
-    // The run: tangent to both pulleys on the same side, n its normal from the centres.
-    const double along = (s.radius[0] - s.radius[1]) / d;
-    const Vec2 n = along * u - std::sqrt(1 - along * along) * perp(u);
-    r.at = A + s.radius[0] * n;
-    const Vec2 run = (B + s.radius[1] * n - r.at).normalized();
-    r.force = M / cross(r.at - A, run) * run;  // cross(at - A, F) = M
-  } else {
-    const double toPitch = std::abs(gearRatio(j)) * d / (1 + std::abs(gearRatio(j)));
-    r.at = A + toPitch * u;
-    r.force = M / toPitch * perp(u);
+// only. Written over T = double (react) and T = Dual (reactChange: its derivative).
+template <class T>
+struct Tooth {
+  T at[2], force[2];
+};
+
+// F and where it acts, from the centres A and B at the pose, the couple M (N mm, on a's body
+// about A), the ratio and the drawn centres' distance (the pulleys' size); false when A and B
+// meet (coaxial: a couple is all there is).
+template <class T>
+bool tooth(const T A[2], const T B[2], T M, T ratio, T drawn, Tooth<T>& out) {
+  using std::sqrt;
+  const T ux0 = B[0] - A[0], uy0 = B[1] - A[1];
+  const T d = sqrt(ux0 * ux0 + uy0 * uy0);
+  if (!(value(d) > 0)) return false;
+  const T u[2] = {ux0 / d, uy0 / d}, pu[2] = {-u[1], u[0]};
+  const T r = value(ratio) < 0 ? -ratio : ratio;
+  if (value(ratio) < 0) {
+    const T toPitch = r * d / (T(1) + r);
+    for (int i = 0; i < 2; ++i) out.at[i] = A[i] + toPitch * u[i];
+    for (int i = 0; i < 2; ++i) out.force[i] = M / toPitch * pu[i];
+    return true;
   }
-  r.coupleNm = 0;
+  // The pulleys as symbol() draws them; the run tangent to both on the same side, n its normal
+  // from the centres.
+  const T r0 = value(r) >= 1 ? drawn / T(6) : r * drawn / T(6);
+  const T r1 = value(r) >= 1 ? drawn / (T(6) * r) : drawn / T(6);
+  const T along = (r0 - r1) / d, across = sqrt(T(1) - along * along);
+  const T n[2] = {along * u[0] - across * pu[0], along * u[1] - across * pu[1]};
+  for (int i = 0; i < 2; ++i) out.at[i] = A[i] + r0 * n[i];
+  T run[2] = {B[0] + r1 * n[0] - out.at[0], B[1] + r1 * n[1] - out.at[1]};
+  const T len = sqrt(run[0] * run[0] + run[1] * run[1]);
+  for (T& x : run) x = x / len;
+  const T arm = (out.at[0] - A[0]) * run[1] - (out.at[1] - A[1]) * run[0];  // cross(at - A, run)
+  for (int i = 0; i < 2; ++i) out.force[i] = M / arm * run[i];
+  return true;
+}
+
+// The pins that carry F: (joint index, the sign of F on the body of the pin's point a).
+std::vector<std::pair<int, double>> pivots(const Mechanism& m, const Joint& j) {
+  std::vector<std::pair<int, double>> out;
   const BodyId c = carrierOf(m, j);
-  for (const auto& [p, sign] : {std::pair{a, 1.0}, std::pair{b, -1.0}}) {
+  for (const auto& [p, sign] : {std::pair{m.point(j.a), 1.0}, std::pair{m.point(j.b), -1.0}}) {
     const int pin = pivotIndex(m, *p, c);
     if (pin < 0) continue;
     // The force on p's body from its pin changes by -(the coupling's force on that body).
     const bool onGearSide = m.point(m.joints[pin].a)->body == p->body;
-    all[pin].force -= (onGearSide ? 1.0 : -1.0) * sign * r.force;
+    out.emplace_back(pin, -(onGearSide ? 1.0 : -1.0) * sign);
+  }
+  return out;
+}
+
+// A bevel pair transmits the couple about each axis and no more is computed: its tooth force's
+// other components (radial, axial) are not in the model (docs/dynamics.md).
+bool bevel(const Mechanism& m, const Joint& j) {
+  return !parallel(planeOf(m, m.point(j.a)->body), planeOf(m, m.point(j.b)->body));
+}
+
+double drawnDistance(const Mechanism& m, const Joint& j) {
+  return (m.point(j.b)->pos - m.point(j.a)->pos).norm();
+}
+
+void react(const Mechanism& m, int index, const Pose& pose, std::vector<JointReaction>& all) {
+  const Joint& j = m.joints[index];
+  JointReaction& r = all[index];
+  if (bevel(m, j)) return;
+  const Vec2 a = pose.point(j.a), b = pose.point(j.b);
+  const double A[2] = {a.x(), a.y()}, B[2] = {b.x(), b.y()};
+  Tooth<double> t;
+  if (!tooth<double>(A, B, r.coupleNm * 1000, gearRatio(j), drawnDistance(m, j), t)) return;
+  r.at = Vec2(t.at[0], t.at[1]);
+  r.force = Vec2(t.force[0], t.force[1]);
+  r.coupleNm = 0;
+  for (const auto& [pin, sign] : pivots(m, j)) all[pin].force += sign * r.force;
+}
+
+void reactChange(const Mechanism& m, int index, const Pose& pose, const PoseChange& dpose,
+                 std::vector<JointReaction>& all, std::vector<JointReaction>& change) {
+  const Joint& j = m.joints[index];
+  JointReaction &r = all[index], &dr = change[index];
+  if (bevel(m, j)) return;
+  const Vec2 a = pose.point(j.a), b = pose.point(j.b), da = dpose.point(j.a), db = dpose.point(j.b);
+  const Dual A[2] = {{a.x(), da.x()}, {a.y(), da.y()}}, B[2] = {{b.x(), db.x()}, {b.y(), db.y()}};
+  const Vec2 drawn = m.point(j.b)->pos - m.point(j.a)->pos;
+  const double dDrawn =
+      drawn.norm() > 0 ? drawn.normalized().dot(dpose.drawn(j.b) - dpose.drawn(j.a)) : 0.0;
+  Tooth<Dual> t;
+  if (!tooth<Dual>(A, B, Dual(r.coupleNm, dr.coupleNm) * Dual(1000),
+                   Dual(gearRatio(j), dpose.ratio(j.id)), Dual(drawn.norm(), dDrawn), t))
+    return;
+  r.at = Vec2(t.at[0].v, t.at[1].v);
+  dr.at = Vec2(t.at[0].d, t.at[1].d);
+  r.force = Vec2(t.force[0].v, t.force[1].v);
+  dr.force = Vec2(t.force[0].d, t.force[1].d);
+  r.coupleNm = dr.coupleNm = 0;
+  for (const auto& [pin, sign] : pivots(m, j)) {
+    all[pin].force += sign * r.force;
+    change[pin].force += sign * dr.force;
   }
 }
 
@@ -235,7 +300,9 @@ ElementKind gearElement(JointType t) {
           place,
           kForceColumns,
           react,
-          true};
+          true,
+          nullptr,
+          reactChange};
 }
 
 }  // namespace linkage

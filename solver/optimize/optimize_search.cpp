@@ -143,9 +143,6 @@ Status checkWatched(const Mechanism& m, const OptTarget& t) {
   }
   if (t.kind == OptTarget::Kind::Force) {
     if (t.index >= m.joints.size()) return Status::badModel("a force target's joint is not there");
-    if (kindOf(m.joints[t.index]).role != Role::Revolute)
-      return Status::badModel(jointLabel(m, m.joints[t.index].id) +
-                              ": only a pin's reaction is a target yet");
     if (!(t.limitN >= 0 && std::isfinite(t.limitN)))
       return Status::badModel("a force target's limit must be a number >= 0");
   }

@@ -21,8 +21,10 @@ std::span<const char* const> spaceColumns(const ElementKind& kind) {
   return kOutOfPlane;
 }
 
+}  // namespace
+
 // A column's value by its name: planar columns are the force, its couple and a rod's pull.
-double value(const JointReaction& x, const char* column, bool coupling) {
+double reactionValue(const JointReaction& x, const char* column, bool coupling) {
   if (!std::strcmp(column, "fx_N")) return x.force.x();
   if (!std::strcmp(column, "fy_N")) return x.force.y();
   if (!std::strcmp(column, "axial_N")) return x.axialN;
@@ -32,8 +34,6 @@ double value(const JointReaction& x, const char* column, bool coupling) {
   if (!std::strcmp(column, "my_Nm")) return x.tiltNm.y();
   return coupling ? x.transmittedNm : x.coupleNm;  // m_Nm
 }
-
-}  // namespace
 
 std::string forceTableHeader(const Mechanism& m) {
   const bool space = isSpatial(m);
@@ -71,7 +71,7 @@ std::string forceTableRow(const Mechanism& m, const Forces& f, double tS, double
                                  planeOf(m, m.point(m.joints[i].b)->body));
     auto cell = [&](const char* c) {
       // (A bearing's load out of its plane is not known where a joint of its body's is not.)
-      const double v = value(x, c, coupling);
+      const double v = reactionValue(x, c, coupling);
       const bool empty =
           undetermined[i] || (bevel && std::strcmp(c, "m_Nm") != 0) || !std::isfinite(v);
       return "," + (empty ? std::string() : formatNumber(v));

@@ -193,8 +193,12 @@ def test_stroke_shaking_and_force_sensitivities_are_the_command_lines():
     assert zero_signed(m.force_sensitivity("pin:ground.L", 240)) == rows_at(out, 240, 2)
     with pytest.raises(ValueError, match="no joint 'pin:x.Y'"):
         m.force_sensitivity("pin:x.Y", 0)
-    with pytest.raises(ValueError, match="only a pin's reaction"):
-        m.force_sensitivity("gear:armshaft.M", 0)
+    out = cli("sensitivity", "drop-feed", "--force", "gear:armshaft.M", "--steps", "6").stdout
+    assert zero_signed(m.force_sensitivity("gear:armshaft.M", 60)) == rows_at(out, 60, 2)
+    s = linkage.load("slider-crank-22a-masses")
+    out = cli("sensitivity", "slider-crank-22a-masses", "--force", "slider:needlebar.B",
+              "--steps", "6").stdout
+    assert zero_signed(s.force_sensitivity("slider:needlebar.B", 180)) == rows_at(out, 180, 3)
 
 
 def test_points_bodies_dimensions():

@@ -133,15 +133,14 @@ void SensitivityPanel::fillPoints() {
   });
   shakingAt_ = masses ? static_cast<int>(watched.size()) : -1;
   if (masses) watched << tr("shaking force");
-  // Each pin's reaction (named as linkage-cli dynamics names it).
-  pins_.clear();
-  for (size_t j = 0; j < m.joints.size() && masses && !isSpatial(m); ++j)
-    if (kindOf(m.joints[j]).role == Role::Revolute) {
-      pins_.push_back(j);
-      watched << tr("reaction at %1:%2")
-                     .arg(QString::fromUtf8(kindOf(m.joints[j]).name),
-                          QString::fromStdString(m.pointLabel(m.joints[j].a)));
-    }
+  // Each joint's reaction (named as linkage-cli dynamics names it): its force.
+  reactions_.clear();
+  for (size_t j = 0; j < m.joints.size() && masses && !isSpatial(m); ++j) {
+    reactions_.push_back(j);
+    watched << tr("reaction at %1:%2")
+                   .arg(QString::fromUtf8(kindOf(m.joints[j]).name),
+                        QString::fromStdString(m.pointLabel(m.joints[j].a)));
+  }
   if (ids == points_ && watched == clearances_) return;
   points_ = ids;
   clearances_ = watched;
@@ -180,7 +179,7 @@ void SensitivityPanel::compute() {
       if (n == shakingAt_)
         shakingBars(component_->currentIndex());
       else
-        reactionBars(pins_.at(n - shakingAt_ - 1), component_->currentIndex());
+        reactionBars(reactions_.at(n - shakingAt_ - 1), component_->currentIndex());
       return;
     }
     if (n < windowsFrom_)
@@ -474,8 +473,9 @@ void SensitivityPanel::reactionBars(size_t j, int which) {
          "crank angle, grey the largest over a turn"));
   plot_->replot();
   if (!ok || bars_.empty()) return;
-  summary_->setText(tr("The pin bears %1 N here (fx %2, fy %3); %4 changes it most (%5 N per "
-                       "unit here, up to %6 N over a turn)")
+  summary_->setText(tr("The %1 bears %2 N here (fx %3, fy %4); %5 changes it most (%6 N per "
+                       "unit here, up to %7 N over a turn)")
+                        .arg(QString::fromUtf8(kindOf(m.joints.at(j)).name))
                         .arg(here.force.norm(), 0, 'g', 4)
                         .arg(here.force.x(), 0, 'g', 4)
                         .arg(here.force.y(), 0, 'g', 4)

@@ -75,7 +75,7 @@ class SensitivityPanel : public DockPanel {
   // The shaking force's component `which` (x, y, the length of the change;
   // linkage/shaking_sensitivity.h), at the crank angle and the turn's largest.
   void shakingBars(int which);
-  // Pin m.joints[j]'s reaction's component `which` (linkage/force_sensitivity.h), likewise.
+  // Joint m.joints[j]'s reaction's component `which` (linkage/force_sensitivity.h), likewise.
   void reactionBars(size_t j, int which);
   // The bars of one derivative a dimension, ranked and drawn with the axis's label; false when
   // there are none.
@@ -100,10 +100,10 @@ class SensitivityPanel : public DockPanel {
   std::vector<PointId> points_;
   // After the points: the file's watched clearances, then windows' ends, then transmission angles.
   QStringList clearances_;
-  int windowsFrom_ = 0;        // where the windows' ends start in clearances_
-  int transmissionsFrom_ = 0;  // where the transmission angles start
-  int shakingAt_ = -1;         // the shaking force's entry (a design with masses), else -1
-  std::vector<size_t> pins_;   // the pins whose reactions follow it (m.joints' indices)
+  int windowsFrom_ = 0;            // where the windows' ends start in clearances_
+  int transmissionsFrom_ = 0;      // where the transmission angles start
+  int shakingAt_ = -1;             // the shaking force's entry (a design with masses), else -1
+  std::vector<size_t> reactions_;  // the joints whose reactions follow it (m.joints' indices)
   std::vector<Bar> bars_;
   bool deadHere_ = false;
   // The tolerances' band is of a design and an output: computed again only when they change.

@@ -172,4 +172,10 @@ struct Contact {
 };
 Contact contact(const Follower& f, const Place& at, double sPrime);
 
+// The contact's change (its point's and normal's derivatives) when the parts move by `move` (each
+// Place member's derivative) and s' by dsPrime: contact() differentiated, term by term (a
+// reaction's derivative through a cam, linkage/force_sensitivity.h).
+Contact contactChange(const Follower& f, const Place& at, const Place& move, double sPrime,
+                      double dsPrime);
+
 }  // namespace linkage::cam

@@ -27,6 +27,15 @@ struct Pose {
   virtual Transform body(BodyId b) const = 0;
 };
 
+// How a pose changes along one dimension (linkage/sensitivity.h), for a kind's reactChange():
+// the derivatives of each point's world position, of its drawn position, of a gear's ratio.
+struct PoseChange {
+  virtual ~PoseChange() = default;
+  virtual Vec2 point(PointId p) const = 0;
+  virtual Vec2 drawn(PointId p) const = 0;
+  virtual double ratio(JointId j) const = 0;
+};
+
 // A field of a joint object in a file, as its kind declares it: the key, what it holds and where
 // it goes in a Joint (points: a for index 0, b for 1; slot; carrier; numbers[index]; a flag,
 // true or false, as numbers[index] 1 or 0; records: records[index], an array of objects whose
@@ -164,6 +173,12 @@ struct ElementKind {
   // (world mm); false where there is none. nullptr for the kinds whose rule is another.
   bool (*centreLine)(const Mechanism& m, const Joint& j, const Pose& pose, Vec2& through,
                      Vec2& along) = nullptr;
+  // react() with its derivative along a dimension (linkage/force_sensitivity.h): `all` holds the
+  // reactions as their rows make them and `change` their derivatives; both are restated as
+  // react() restates `all`. nullptr where react() is.
+  void (*reactChange)(const Mechanism& m, int index, const Pose& pose, const PoseChange& dpose,
+                      std::vector<JointReaction>& all,
+                      std::vector<JointReaction>& change) = nullptr;
 
   // Whether it has a field of this type (a slot, a second point, ...).
   bool reads(FieldType t, unsigned char index = 0) const;

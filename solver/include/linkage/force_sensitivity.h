@@ -1,4 +1,4 @@
-// A pin's reaction differentiated with respect to the dimensions (issue 29: "the derivative of
+// A joint's reaction differentiated with respect to the dimensions (issue 29: "the derivative of
 // ... a force"), exactly. The joints' multipliers balance the bodies' applied and inertia forces,
 // J^T lambda = Q; along a dimension p both sides change, J with the pose (dq/dp) and the
 // constants, Q with the motion (dq/dp, dq'/dp, dq''/dp: the centres' accelerations, the moment
@@ -7,13 +7,19 @@
 //   dlambda_r = w . dQ - lambda . (dJ w),
 // dJ w the change of J w with w held, what the velocities' sensitivities already compute for
 // J q' (linkage/sensitivity.h, Sensitivity::jacobianChange): no second derivative is written
-// out again. A pin's reaction is its two multipliers (linkage/dynamics.h's sign). A planar
-// machine's; joints of other kinds (a slider's normal force turns with its slot), cams, and
-// redundant joints (their shares are not determined) are refused by name.
+// out again. A joint's reaction is what its rows put on one of its bodies, -sum lambda_r J_r
+// (the force and its moment about the body's frame origin, read about the joint's point a as
+// linkage/dynamics.h reports it), so it changes by -sum (dlambda_r J_r + lambda_r dJ_r): a
+// slider's normal force turns with its slot, a cam's contact force with its common normal. A
+// gear's, restated as a tooth force at its pitch point (a belt's as a run's pull) that its
+// pivots' pins carry, is differentiated through its kind's reactChange() (forward-mode, the same
+// formula: elements/gear.cpp). A planar machine's; redundant joints (their shares are not
+// determined) are refused by name.
 #pragma once
 
 #include <vector>
 
+#include "linkage/elements.h"
 #include "linkage/kinematics.h"
 #include "linkage/sensitivity.h"
 
@@ -21,12 +27,17 @@ namespace linkage {
 
 struct JointForceSensitivity {
   Status status;
-  Vec2 force = Vec2::Zero();  // the reaction (linkage/dynamics.h JointReaction::force), N
+  JointReaction reaction;     // as linkage/dynamics.h reports it
+  Vec2 force = Vec2::Zero();  // its force, N
   std::vector<Dimension> dims;
   std::vector<Vec2> derivative;  // d(force)/d(dimension k), N per unit
+  // d(each part)/d(dimension k): the force (N), where it acts (mm), the couple (N m), a cam's
+  // contact force (N), per unit.
+  std::vector<JointReaction> change;
 };
 
-// At k's pose and speed, for the pin `joint`.
+// At k's pose and speed, for `joint` (any kind: its reaction's parts as its dynamics columns
+// name them, linkage/tables/force_table.h reactionValue).
 JointForceSensitivity jointForceSensitivity(const Kinematics& k, JointId joint,
                                             std::vector<Dimension> dims);
 

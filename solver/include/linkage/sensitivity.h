@@ -93,6 +93,9 @@ namespace internal {
 struct CamMove {
   Vec2 b = Vec2::Zero(), lowest = Vec2::Zero(), along = Vec2::Zero();
   double turn = 0;
+  // An oscillating flat face's normal (CamRow::face, unit(b - a) at the lowest position), turned
+  // in the follower's frame: what the contact row reads (linkage/force_sensitivity.h).
+  double faceTurn = 0;
 };
 }  // namespace internal
 
@@ -133,6 +136,9 @@ class Sensitivity {
   // pose of the last at(), by the kinematics' independent rows (their row map): through it a
   // multiplier's derivative (linkage/force_sensitivity.h).
   Eigen::VectorXd jacobianChange(const Kinematics& k, const Eigen::VectorXd& w, int dim) const;
+  // The moves of cam joint `joint`'s row's constants along dimension dim (by Mechanism::joints
+  // index; zero for other joints).
+  const internal::CamMove& camRowMove(int dim, int joint) const { return camMove_[dim][joint]; }
   // The same in the world (mm, mm/s, mm/s^2 per unit): on a planar model (x, y, 0).
   Vec3 point3(const Kinematics& k, PointId p, int dim) const;
   Vec3 velocity3(const Kinematics& k, PointId p, int dim) const;

@@ -17,6 +17,10 @@ std::string forceTableHeader(const Mechanism& m);
 std::string forceTableRow(const Mechanism& m, const Forces& f, double tS, double crankDeg,
                           const std::vector<char>& undetermined);
 
+// A reaction's column of its kind (reactionColumns, or a machine in space's fn_N, mx_Nm, my_Nm)
+// as the table writes it; a coupling's m_Nm is the couple it transmits.
+double reactionValue(const JointReaction& x, const char* column, bool coupling);
+
 // undetermined() as forceTableRow() takes it.
 std::vector<char> undeterminedJoints(const Mechanism& m, const std::vector<JointId>& joints);
 
