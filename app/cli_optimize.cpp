@@ -41,8 +41,7 @@ pose on MODEL's assembly branches.
                                      over the turn at most N newtons (0: as low as it goes)
      force:JOINT<=N                  the peak over the turn of a joint's reaction |f| (JOINT as
                                      `dynamics` names it: pin:crank.A, slider:block.B) at most
-                                     N newtons
-                                     (dimensions only)
+                                     N newtons (over dimensions or counterweights)
      clearance:N>=GAP                the file's watched clearance N (from 0) at least GAP mm at
                                      its closest approach
      window:NAME.start=DEG           the first interval of the file's timing window NAME opens

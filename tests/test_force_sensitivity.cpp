@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "complex_step.h"
+#include "linkage/balance.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_sensitivity.h"
 #include "mechanisms.h"
@@ -211,6 +212,52 @@ TEST_P(ForceSensitivity, SliderAndPinInSlotMatchNewtonEulerByComplexStep) {
       EXPECT_LT(err[d], 1e-9 * std::max(peak[d], 1e-3)) << pinInSlot << " " << dims[d].name;
     }
   }
+}
+
+// A counterweight's share of every joint's reaction (what optimize's force target reads over
+// counterweights) against the design with the counterweight written in as a mass of its body
+// (addCounterweights, solved by the dynamics again), and its derivatives by the static moment
+// against central differences of the share (the mass |s| / R following it).
+TEST_P(ForceSensitivity, ACounterweightsShareIsTheMassWrittenIn) {
+  const std::unique_ptr<Loaded> l = loaded(GetParam());
+  Counterweight cw;
+  ASSERT_TRUE(counterweightOn(l->sc.m, l->sc.crank, cw).ok());
+  auto with = [&](const Vec2& s) {
+    Counterweight c = cw;
+    c.staticMoment = s;
+    c.kg = s.norm() / c.maxRadiusMm;
+    return c;
+  };
+  const Vec2 s0(1.5, -2);
+  Mechanism heavier = l->sc.m;
+  addCounterweights(heavier, {with(s0)});
+  Kinematics kh;
+  ASSERT_TRUE(kh.load(heavier).ok());
+  double largest = 0;
+  for (int deg = 0; deg < 360; deg += 30) {
+    ASSERT_TRUE(l->k.moveTo(deg).ok() && kh.moveTo(deg).ok());
+    const Forces before = computeForces(l->k), after = computeForces(kh);
+    for (size_t j = 0; j < l->sc.m.joints.size(); ++j) {
+      const JointId id = l->sc.m.joints[j].id;
+      const CounterweightShare sh = counterweightShare(l->k, id, with(s0));
+      ASSERT_TRUE(sh.status.ok()) << sh.status.message;
+      const Vec2 dF = after.joints[j].force - before.joints[j].force;
+      const double dM = after.joints[j].coupleNm - before.joints[j].coupleNm;
+      largest = std::max(largest, dF.norm());
+      const double size = 1e-9 * (1 + after.joints[j].force.norm());
+      EXPECT_LT((sh.share.force - dF).norm(), size) << j << " at " << deg;
+      EXPECT_NEAR(sh.share.coupleNm, dM, size) << j << " at " << deg;
+      for (int e = 0; e < 2; ++e) {
+        const double h = 1e-6;
+        const CounterweightShare p = counterweightShare(l->k, id, with(s0 + h * Vec2::Unit(e)));
+        const CounterweightShare q = counterweightShare(l->k, id, with(s0 - h * Vec2::Unit(e)));
+        const Vec2 want = (p.share.force - q.share.force) / (2 * h);
+        const Vec2 got = e == 0 ? sh.perX.force : sh.perY.force;
+        EXPECT_LT((got - want).norm(), 1e-7 * (1 + want.norm())) << j << " " << e << " " << deg;
+      }
+    }
+  }
+  EXPECT_GT(largest, 1.0);  // the counterweight moves the reactions by newtons
 }
 
 INSTANTIATE_TEST_SUITE_P(Gravity, ForceSensitivity, ::testing::Values(0.0, -9.81));

@@ -170,7 +170,7 @@ struct PointChange : PoseChange {
 };
 
 // What cannot be differentiated here, named; "" when the joint's reaction can be.
-std::string refused(const Kinematics& k, int ji, const Forces& f) {
+std::string refused(const Kinematics& k, const Forces& f) {
   const Mechanism& m = k.mechanism();
   if (isSpatial(m)) return "a machine in space's reactions are not differentiated yet";
   if (!f.undetermined.empty())
@@ -178,7 +178,6 @@ std::string refused(const Kinematics& k, int ji, const Forces& f) {
   for (const Joint& j : m.joints)
     if (kindOf(j).react && !kindOf(j).reactChange)
       return jointLabel(m, j.id) + ": its restated reaction is not differentiated yet";
-  (void)ji;
   return "";
 }
 
@@ -190,6 +189,35 @@ std::vector<int> involved(const Mechanism& m, int ji) {
       out.push_back(static_cast<int>(j));
   return out;
 }
+
+// A counterweight's generalized forces on its body (system index i), N and N mm: columns of a
+// mass, a static moment and the |s|^2 / m of its moment of inertia about the pivot, which act
+// linearly (put's three numbers).
+struct CounterweightForces {
+  const Kinematics& k;
+  const Counterweight& cw;
+  int i;
+  Eigen::MatrixXd& Q;
+  void put(int col, double kg, const Vec2& moment, double spin) const {
+    const Rot R = Rot::of(k.bodyAngle(cw.body));
+    const double w = k.bodyOmega(cw.body), alpha = k.bodyAlpha(cw.body);
+    const Vec2 g = k.mechanism().gravity.value_or(Vec2::Zero()), Rs = R * moment;
+    const Vec2 arm = k.position(cw.pivot) - Vec2(k.q().segment<2>(3 * i));
+    const Vec2 F = kg * g + 1e-3 * (w * w * Rs - alpha * perp(Rs));  // its weight and inertia
+    Q.block<2, 1>(3 * i, col) = F;
+    Q(3 * i + 2, col) = cross(arm, F) + cross(Rs, g) - 1e-3 * alpha * spin;
+  }
+};
+
+// Positions at k's pose, and no move: a share of the forces at a held pose, for reactChange().
+struct HeldPose : Pose, PoseChange {
+  const Kinematics& k;
+  explicit HeldPose(const Kinematics& kin) : k(kin) {}
+  Vec2 point(PointId p) const override { return k.position(p); }
+  Transform body(BodyId b) const override { return k.bodyTransform(b); }
+  Vec2 drawn(PointId) const override { return Vec2::Zero(); }
+  double ratio(JointId) const override { return 0; }
+};
 
 }  // namespace
 
@@ -203,7 +231,7 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
   if (ji < 0) return out.status = Status::badModel("no such joint"), out;
   const Forces f = computeForces(k);
   if (!f.status.ok()) return out.status = f.status, out;
-  if (std::string why = refused(k, ji, f); !why.empty())
+  if (std::string why = refused(k, f); !why.empty())
     return out.status = Status::badModel(jointLabel(m, joint) + ": " + why), out;
   out.reaction = f.joints[ji];
   out.force = out.reaction.force;
@@ -240,6 +268,57 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
         return r.force.allFinite() && std::isfinite(r.coupleNm) && std::isfinite(r.contactN);
       }))
     out.status = Status::failure(StatusCode::Singular, "the reaction's derivatives are unbounded");
+  return out;
+}
+
+CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
+                                      const Counterweight& cw) {
+  CounterweightShare out;
+  Kinematics k = k0;
+  k.setAccelerations(true);
+  const Mechanism& m = k.mechanism();
+  const int ji = m.jointIndex(joint);
+  if (ji < 0) return out.status = Status::badModel("no such joint"), out;
+  const Forces f = computeForces(k);
+  if (!f.status.ok()) return out.status = f.status, out;
+  if (std::string why = refused(k, f); !why.empty())
+    return out.status = Status::badModel(jointLabel(m, joint) + ": " + why), out;
+  const KinematicsState& st = internal::state(k);
+  const int i = st.sys.bodyIndex(cw.body);
+  if (i < 0) return out.status = Status::badModel("a counterweight on no moving body"), out;
+  Eigen::MatrixXd dQ = Eigen::MatrixXd::Zero(st.sys.nCoords(), 3);
+  const CounterweightForces put{k, cw, i, dQ};
+  const Vec2 s = cw.staticMoment;
+  const double norm = s.norm(), R = cw.maxRadiusMm;
+  put.put(0, cw.kg, s, cw.kg > 0 ? s.squaredNorm() / cw.kg : 0.0);
+  for (int e = 0; e < 2; ++e)  // the mass |s| / R, so the spin |s| R
+    put.put(1 + e, norm > 0 ? s[e] / (norm * R) : 0.0, Vec2::Unit(e),
+            norm > 0 ? R * s[e] / norm : 0.0);
+  const Sensitivity none;
+  Context c{k, none, forcesJacobian(k), {}, {}};
+  c.lu.compute(c.J);
+  c.lambda = c.lu.transpose().solve(generalizedForces(k));
+  const Eigen::MatrixXd dl = c.lu.transpose().solve(dQ);
+  const std::vector<int> joints = involved(m, ji);
+  std::vector<RowsReaction> rows(joints.size());
+  for (size_t r = 0; r < joints.size(); ++r)
+    if (std::string why = rowsOf(st, joints[r], rows[r]); !why.empty())
+      return out.status = Status::badModel(jointLabel(m, m.joints[joints[r]].id) + ": " + why), out;
+  const HeldPose pose(k);
+  JointReaction* parts[3] = {&out.share, &out.perX, &out.perY};
+  for (int col = 0; col < 3; ++col) {
+    Context share{k, none, c.J, {}, dl.col(col)};
+    std::vector<JointReaction> all(m.joints.size()), changes(m.joints.size());
+    for (size_t r = 0; r < joints.size(); ++r) {
+      all[joints[r]] = value(c, rows[r]);
+      changes[joints[r]] = value(share, rows[r]);
+      changes[joints[r]].at = Vec2::Zero();
+    }
+    for (int j : joints)
+      if (kindOf(m.joints[j]).reactChange)
+        kindOf(m.joints[j]).reactChange(m, j, pose, pose, all, changes);
+    *parts[col] = changes[ji];
+  }
   return out;
 }
 

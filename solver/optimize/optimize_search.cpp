@@ -188,10 +188,6 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
   }
   for (const OptTarget& t : spec.targets) {
     if (Status s = checkWatched(base.mechanism(), t); !s.ok()) return s;
-    if (t.kind == OptTarget::Kind::Force && !vars.counterweights.empty())
-      return Status::badModel(
-          "a pin's reaction is a target over dimensions: a counterweight's share of it is not "
-          "differentiated yet (the shaking force's is)");
     const bool named = t.kind == OptTarget::Kind::Shaking || t.kind == OptTarget::Kind::Force ||
                        t.kind == OptTarget::Kind::Clearance || t.kind == OptTarget::Kind::Window;
     if (!named && !base.mechanism().contains(t.point))

@@ -33,12 +33,24 @@ struct Shaker {
   const Variables& vars;
   const std::vector<double>& x;
   Vec2 g = Vec2::Zero();  // N per kg
-  // A pin's reaction (OptTarget::Kind::Force) instead of the shaking force.
+  // A joint's reaction (OptTarget::Kind::Force) instead of the shaking force.
   JointId joint;
   mutable ForceSolver solver;
 
+  // Counterweight c at x, as optimize's variables make it.
+  Counterweight placed(size_t c) const {
+    Counterweight cw = vars.counterweights[c];
+    cw.staticMoment = vars.moment(x, c);
+    cw.kg = vars.kg(x, c);
+    return cw;
+  }
   Vec2 force(const Kinematics& k) const {
-    if (joint) return solver.compute(k).joints[t.index].force;
+    if (joint) {  // the design's reaction and the counterweights' shares (the forces add)
+      Vec2 F = solver.compute(k).joints[t.index].force;
+      for (size_t c = 0; c < vars.counterweights.size(); ++c)
+        F += counterweightShare(k, joint, placed(c)).share.force;
+      return F;
+    }
     Vec2 F;
     double moment = 0;
     shaking(k, F, moment);
@@ -66,11 +78,19 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
                                      Status& status) const {
   const Vec2 F = force(k), e = along(F);
   std::vector<double> out(vars.dim.size(), 0.0);
-  if (joint) {  // dimensions only (counterweights are refused with a pin's reaction)
+  if (joint && vars.counterweights.empty()) {
     const JointForceSensitivity f = jointForceSensitivity(k, joint, vars.dims);
     status = f.status;
     for (size_t v = 0; v < out.size() && status.ok(); ++v)
       if (vars.dim[v] >= 0) out[v] = e.dot(f.derivative[vars.dim[v]]);
+    return out;
+  }
+  if (joint) {  // counterweights only (they are not varied with dimensions)
+    for (size_t v = 0; v < out.size() && status.ok(); ++v) {
+      const CounterweightShare sh = counterweightShare(k, joint, placed(vars.cw[v]));
+      status = sh.status;
+      out[v] = e.dot(vars.axis[v] == 0 ? sh.perX.force : sh.perY.force);
+    }
     return out;
   }
   for (size_t v = 0; v < out.size(); ++v) {

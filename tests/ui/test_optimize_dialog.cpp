@@ -18,6 +18,7 @@
 #include "document/document.h"
 #include "linkage/balance.h"
 #include "linkage/clearance.h"
+#include "linkage/dynamics.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/limits.h"
@@ -135,6 +136,40 @@ TEST(OptimizeDialog, ACounterweightMeetsBalanceShakingInOneUndoStep) {
   EXPECT_NEAR(balanceShaking(after, opt).peakBefore, peak, 1e-9 * peak);
   doc.undoStack()->undo();
   EXPECT_EQ(serializeMechanism(doc.design()), before);
+}
+
+// A joint's reaction as a target (its peak over the turn), met by a counterweight: the crank
+// pivot of the 22-A slider-crank with masses, the result named as `dynamics` names the joint,
+// applied as one undo step whose design bears the peak reported.
+TEST(OptimizeDialog, AReactionsPeakLoweredByACounterweight) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("slider-crank-22a-masses")), nullptr));
+  OptimizeDialog dialog(&doc);
+  ASSERT_TRUE(dialog.vary("crank.counterweight.x", -50, 50));
+  ASSERT_TRUE(dialog.vary("crank.counterweight.y", -50, 50));
+  EXPECT_FALSE(dialog.addTarget(OptTarget::Kind::Force, "pin:nothing.X", "0"));
+  ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Force, "pin:ground.O", "0"));
+  QSignalSpy done(&dialog, &OptimizeDialog::finished);
+  dialog.find();
+  ASSERT_TRUE(done.wait(60000));
+  ASSERT_TRUE(dialog.result() && dialog.result()->status.ok()) << dialog.summary().toStdString();
+  const double before = dialog.result()->atBefore.measures.at(0).at(0);
+  const double peak = dialog.result()->atAfter.measures.at(0).at(0);
+  const double peakDeg = dialog.result()->atAfter.measures.at(0).at(1);
+  EXPECT_LT(peak, 0.6 * before);
+  auto* table = dialog.findChild<QTableWidget*>("optResult");
+  QStringList rows;
+  for (int r = 0; r < table->rowCount(); ++r) rows << table->item(r, 0)->text();
+  EXPECT_TRUE(rows.contains("peak reaction |f| at pin:ground.O (N)"))
+      << rows.join("; ").toStdString();
+  shot(&dialog, "optimize_dialog_reaction");
+  const int steps = doc.undoStack()->count();
+  ASSERT_TRUE(dialog.apply());
+  EXPECT_EQ(doc.undoStack()->count(), steps + 1);
+  Kinematics after;
+  ASSERT_TRUE(after.load(doc.design()).ok());
+  ASSERT_TRUE(after.moveTo(peakDeg).ok());
+  EXPECT_NEAR(computeForces(after).joints[0].force.norm(), peak, 1e-9 * peak);
 }
 
 // The dialog refuses counterweights and dimensions in one search, as the solver does, with its

@@ -15,8 +15,9 @@ namespace {
 
 using K = OptTarget::Kind;
 
-const char* const kKinds[] = {"stroke",  "position",  "path",  "transmission",
-                              "shaking", "clearance", "window"};
+// In OptTarget::Kind's order (a kind is its index here).
+const char* const kKinds[] = {"stroke",  "position",  "path",   "transmission",
+                              "shaking", "clearance", "window", "reaction"};
 
 // A watched clearance by its two parts as the file's "between" names them ("hook.K –
 // needlebar.N-B").
@@ -42,6 +43,10 @@ QStringList choices(const Mechanism& m, K kind) {
   } else if (kind == K::Window) {
     for (const TimingWindow& w : m.timing.windows)
       out << QString::fromStdString(w.name + ".start") << QString::fromStdString(w.name + ".end");
+  } else if (kind == K::Force) {  // each joint, as linkage-cli dynamics names its columns
+    for (const Joint& j : m.joints)
+      out << QString::fromUtf8(linkage::kindOf(j).name) + QLatin1Char(':') +
+                 QString::fromStdString(m.pointLabel(j.a));
   } else {
     for (const Point& p : m.points)
       if (!m.body(p.body)->ground) out << QString::fromStdString(m.pointLabel(p.id));
@@ -72,6 +77,8 @@ QString valueUsage(K kind) {
       return QObject::tr("the clearance's gap is a number >= 0 (mm)");
     case K::Window:
       return QObject::tr("the window's end is a crank angle (degrees)");
+    case K::Force:
+      return QObject::tr("the reaction's limit is a number >= 0 (N)");
   }
   return {};
 }
@@ -83,6 +90,47 @@ void showCrank(QTableWidgetItem* cell, K kind, const QString& deg) {
   cell->setText(at ? deg : QString());
   cell->setFlags(at ? Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable
                     : Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+}
+
+// The kinds that name something of the design by its index in their list (choices()) and take
+// one number: false when the number is not the kind's.
+bool readOther(const Mechanism& m, K kind, int of, bool isNumber, double v, OptTarget& t) {
+  switch (kind) {
+    case K::Transmission: {
+      if (!isNumber || !(v >= 0 && v < 90)) return false;
+      const std::vector<TransmissionJoint> js = transmissionJoints(m);
+      t.joint = static_cast<size_t>(of);
+      t.limitDeg = v;
+      t.point = m.joint(js.at(t.joint).joint)->a;
+      return true;
+    }
+    case K::Shaking:
+      if (!isNumber || !(v >= 0)) return false;
+      t.measure = of == 0   ? BalanceMeasure::Fx
+                  : of == 1 ? BalanceMeasure::Fy
+                            : BalanceMeasure::Force;
+      t.limitN = v;
+      return true;
+    case K::Clearance:
+      if (!isNumber || !(v >= 0)) return false;
+      t.index = static_cast<size_t>(of);
+      t.gapMm = v;
+      return true;
+    case K::Window:
+      if (!isNumber) return false;
+      t.window = m.timing.windows.at(static_cast<size_t>(of / 2)).name;
+      t.windowEnd = of % 2 == 1;
+      t.crankDeg = v;
+      return true;
+    case K::Force:
+      if (!isNumber || !(v >= 0)) return false;
+      t.index = static_cast<size_t>(of);
+      t.measure = BalanceMeasure::Force;
+      t.limitN = v;
+      return true;
+    default:
+      return false;
+  }
 }
 
 }  // namespace
@@ -215,31 +263,8 @@ bool OptimizeTargets::readRow(int r, OptTarget& t, QString* why) const {
       t.path = std::move(read.path);
       return true;
     }
-    case K::Transmission: {
-      if (!isNumber || !(v >= 0 && v < 90)) return fail(valueUsage(kind));
-      const std::vector<TransmissionJoint> js = transmissionJoints(m);
-      t.joint = static_cast<size_t>(of);
-      t.limitDeg = v;
-      t.point = m.joint(js.at(t.joint).joint)->a;
-      return true;
-    }
-    case K::Shaking:
-      if (!isNumber || !(v >= 0)) return fail(valueUsage(kind));
-      t.measure = of == 0   ? BalanceMeasure::Fx
-                  : of == 1 ? BalanceMeasure::Fy
-                            : BalanceMeasure::Force;
-      t.limitN = v;
-      return true;
-    case K::Clearance:
-      if (!isNumber || !(v >= 0)) return fail(valueUsage(kind));
-      t.index = static_cast<size_t>(of);
-      t.gapMm = v;
-      return true;
-    case K::Window:
-      if (!isNumber) return fail(valueUsage(kind));
-      t.window = m.timing.windows.at(static_cast<size_t>(of / 2)).name;
-      t.windowEnd = of % 2 == 1;
-      t.crankDeg = v;
+    default:
+      if (!readOther(m, kind, of, isNumber, v, t)) return fail(valueUsage(kind));
       return true;
   }
   return fail(tr("unknown kind"));
@@ -326,6 +351,17 @@ std::vector<MeasureRow> measureRows(const Mechanism& m, const OptTarget& t, cons
               .arg(QString::fromStdString(t.window), t.windowEnd ? "end" : "start"),
           0, number(t.crankDeg));
       break;
+    case K::Force: {
+      const QString j = t.index < m.joints.size()
+                            ? QString::fromUtf8(linkage::kindOf(m.joints[t.index]).name) +
+                                  QLatin1Char(':') +
+                                  QString::fromStdString(m.pointLabel(m.joints[t.index].a))
+                            : QString::number(t.index);
+      add(QObject::tr("peak reaction |f| at %1 (N)").arg(j), 0,
+          QStringLiteral("<= ") + number(t.limitN));
+      add(QObject::tr("its crank angle (°)"), 1, QString());
+      break;
+    }
   }
   return rows;
 }

@@ -19,6 +19,7 @@
 
 #include <vector>
 
+#include "linkage/balance.h"
 #include "linkage/elements.h"
 #include "linkage/kinematics.h"
 #include "linkage/sensitivity.h"
@@ -40,5 +41,19 @@ struct JointForceSensitivity {
 // name them, linkage/tables/force_table.h reactionValue).
 JointForceSensitivity jointForceSensitivity(const Kinematics& k, JointId joint,
                                             std::vector<Dimension> dims);
+
+// A counterweight's share of joint's reaction at k's pose (linkage/balance.h: its mass cw.kg at
+// cw.staticMoment / cw.kg from its pivot in its body's sketch frame, turning with the body), and
+// the share's derivatives with respect to the static moment's x and y, its mass the least that
+// gives the moment at the body's reach (|s| / R, as optimize's counterweight variables take it).
+// The reactions are linear in the forces (J^T lambda = Q with the pose held), so a mass adds
+// J^-T of its weight and inertia: m g - m a at its place, a point mass's. A planar machine's.
+struct CounterweightShare {
+  Status status;
+  JointReaction share;       // force, couple and contact only (`at` is the joint's)
+  JointReaction perX, perY;  // d(share)/d(static moment's x and y), per kg mm
+};
+
+CounterweightShare counterweightShare(const Kinematics& k, JointId joint, const Counterweight& cw);
 
 }  // namespace linkage

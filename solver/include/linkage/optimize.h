@@ -65,9 +65,9 @@ struct OptTarget {
   // max(0, peak - limitN), N; limitN 0 minimises the peak. A planar machine's.
   BalanceMeasure measure = BalanceMeasure::Force;
   double limitN = 0;
-  // Force: the peak over the turn of pin m.joints[index]'s reaction |f| (linkage/dynamics.h,
+  // Force: the peak over the turn of joint m.joints[index]'s reaction |f| (linkage/dynamics.h,
   // on the body of its first point) at most limitN, as Shaking's (measure Force). Over
-  // dimensions only (a counterweight's share of a reaction is not differentiated yet).
+  // dimensions or counterweights (their shares: linkage/force_sensitivity.h).
   // Clearance: the file's watched clearance `index` (its timing's, counted from 0) at least
   // gapMm at its closest approach over the turn: residual max(0, gapMm - least), mm.
   size_t index = 0;
