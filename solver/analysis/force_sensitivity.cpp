@@ -219,35 +219,62 @@ struct HeldPose : Pose, PoseChange {
   double ratio(JointId) const override { return 0; }
 };
 
+// What both derivatives start from: k with its accelerations, the joint's place, its reaction,
+// and the rows of the reactions that make it (involved()).
+struct Setup {
+  Kinematics k;
+  int ji = -1;
+  JointReaction reaction;
+  std::vector<int> joints;
+  std::vector<RowsReaction> rows;
+};
+
+Status setUp(const Kinematics& k0, JointId joint, Setup& s) {
+  s.k = k0;
+  s.k.setAccelerations(true);
+  const Mechanism& m = s.k.mechanism();
+  s.ji = m.jointIndex(joint);
+  if (s.ji < 0) return Status::badModel("no such joint");
+  const Forces f = computeForces(s.k);
+  if (!f.status.ok()) return f.status;
+  if (std::string why = refused(s.k, f); !why.empty())
+    return Status::badModel(jointLabel(m, joint) + ": " + why);
+  s.reaction = f.joints[s.ji];
+  s.joints = involved(m, s.ji);
+  s.rows.resize(s.joints.size());
+  for (size_t i = 0; i < s.joints.size(); ++i)
+    if (std::string why = rowsOf(internal::state(s.k), s.joints[i], s.rows[i]); !why.empty())
+      return Status::badModel(jointLabel(m, m.joints[s.joints[i]].id) + ": " + why);
+  return Status::success();
+}
+
+// The forces' Jacobian at k's pose, factored, and the multipliers.
+Context factored(const Kinematics& k, const Sensitivity& s) {
+  Context c{k, s, forcesJacobian(k), {}, {}};
+  c.lu.compute(c.J);
+  c.lambda = c.lu.transpose().solve(generalizedForces(k));
+  return c;
+}
+
 }  // namespace
 
 JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
                                             std::vector<Dimension> dims) {
   JointForceSensitivity out;
-  Kinematics k = k0;
-  k.setAccelerations(true);
+  Setup su;
+  if (out.status = setUp(k0, joint, su); !out.status.ok()) return out;
+  const Kinematics& k = su.k;
   const Mechanism& m = k.mechanism();
-  const int ji = m.jointIndex(joint);
-  if (ji < 0) return out.status = Status::badModel("no such joint"), out;
-  const Forces f = computeForces(k);
-  if (!f.status.ok()) return out.status = f.status, out;
-  if (std::string why = refused(k, f); !why.empty())
-    return out.status = Status::badModel(jointLabel(m, joint) + ": " + why), out;
-  out.reaction = f.joints[ji];
+  const int ji = su.ji;
+  const std::vector<int>& joints = su.joints;
+  const std::vector<RowsReaction>& rows = su.rows;
+  out.reaction = su.reaction;
   out.force = out.reaction.force;
   Sensitivity s;
   if (out.status = s.prepare(k, std::move(dims)); !out.status.ok()) return out;
   if (out.status = s.at(k); !out.status.ok()) return out;
   out.dims = s.dims();
-  const KinematicsState& st = internal::state(k);
-  Context c{k, s, forcesJacobian(k), {}, {}};
-  c.lu.compute(c.J);
-  c.lambda = c.lu.transpose().solve(generalizedForces(k));
-  const std::vector<int> joints = involved(m, ji);
-  std::vector<RowsReaction> rows(joints.size());
-  for (size_t i = 0; i < joints.size(); ++i)
-    if (std::string why = rowsOf(st, joints[i], rows[i]); !why.empty())
-      return out.status = Status::badModel(jointLabel(m, m.joints[joints[i]].id) + ": " + why), out;
+  const Context c = factored(k, s);
   SensitivityPose pose(k, s);
   const PointChange dpose(pose);
   std::vector<JointReaction> all(m.joints.size()), changes(m.joints.size());
@@ -274,15 +301,13 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
 CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
                                       const Counterweight& cw) {
   CounterweightShare out;
-  Kinematics k = k0;
-  k.setAccelerations(true);
+  Setup su;
+  if (out.status = setUp(k0, joint, su); !out.status.ok()) return out;
+  const Kinematics& k = su.k;
   const Mechanism& m = k.mechanism();
-  const int ji = m.jointIndex(joint);
-  if (ji < 0) return out.status = Status::badModel("no such joint"), out;
-  const Forces f = computeForces(k);
-  if (!f.status.ok()) return out.status = f.status, out;
-  if (std::string why = refused(k, f); !why.empty())
-    return out.status = Status::badModel(jointLabel(m, joint) + ": " + why), out;
+  const int ji = su.ji;
+  const std::vector<int>& joints = su.joints;
+  const std::vector<RowsReaction>& rows = su.rows;
   const KinematicsState& st = internal::state(k);
   const int i = st.sys.bodyIndex(cw.body);
   if (i < 0) return out.status = Status::badModel("a counterweight on no moving body"), out;
@@ -295,15 +320,8 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
     put.put(1 + e, norm > 0 ? s[e] / (norm * R) : 0.0, Vec2::Unit(e),
             norm > 0 ? R * s[e] / norm : 0.0);
   const Sensitivity none;
-  Context c{k, none, forcesJacobian(k), {}, {}};
-  c.lu.compute(c.J);
-  c.lambda = c.lu.transpose().solve(generalizedForces(k));
+  const Context c = factored(k, none);
   const Eigen::MatrixXd dl = c.lu.transpose().solve(dQ);
-  const std::vector<int> joints = involved(m, ji);
-  std::vector<RowsReaction> rows(joints.size());
-  for (size_t r = 0; r < joints.size(); ++r)
-    if (std::string why = rowsOf(st, joints[r], rows[r]); !why.empty())
-      return out.status = Status::badModel(jointLabel(m, m.joints[joints[r]].id) + ": " + why), out;
   const HeldPose pose(k);
   JointReaction* parts[3] = {&out.share, &out.perX, &out.perY};
   for (int col = 0; col < 3; ++col) {
