@@ -172,9 +172,9 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
       cams.push_back(dims[k].camOf);
   for (JointId j : cams)
     if (Status s = changeCam(m, j, dims, delta); !s.ok()) return s;
-  const Body* ground = m.ground();
+  const Body* ground = isSpatial(m) ? m.ground() : nullptr;
   for (Slot& s : m.slots)
-    if (!isSpatial(m) || !ground || s.body != ground->id)  // else changeInSpace's
+    if (!ground || s.body != ground->id)  // else changeInSpace's
       if (Status st = changeSlot(m, s, c); !st.ok()) return st;
   if (Status s = internal::changeInSpace(m, dims, delta); !s.ok()) return s;
   for (const Body& b : m.bodies) {

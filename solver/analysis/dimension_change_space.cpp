@@ -56,6 +56,7 @@ Status moveGroundSlot(Mechanism& m, Slot& s, double turnDeg, double offset) {
 
 Status changeInSpace(Mechanism& m, const std::vector<Dimension>& dims,
                      const std::vector<double>& delta) {
+  if (!isSpatial(m)) return Status::success();  // none of these dimensions: the planar path
   for (Slot& s : m.slots) {
     const std::string pre = m.slotLabel(s.id) + ".";
     double turn = 0, offset = 0;
