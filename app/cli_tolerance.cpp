@@ -22,7 +22,10 @@ const char* kHelp =
 
 The band of a point's x and y over one turn when dimensions of MODEL vary within symmetric
 tolerances +-T and pins have a radial play C, and the spread of its stroke (the range of y over
-the turn). First order from the exact sensitivities (as 'linkage-cli sensitivity'): worst case
+the turn). A machine in space is carried in the world: the band of its x, y and z, its stroke
+of the world's y; its dimensions include depths, the ground's z, ball rods' lengths and planes'
+origins, each sample drawn exactly; a play of a pin whose free point is on the ground is
+refused. First order from the exact sensitivities (as 'linkage-cli sensitivity'): worst case
 sum |d/dp_k| T_k, root sum of squares sqrt(sum (d/dp_k T_k)^2); a play counts C times the
 largest derivative over the direction its pin's point may sit. Monte Carlo: every dimension
 uniform in [-T, T], every play's offset uniform over its disc (held over the turn), each
@@ -42,7 +45,9 @@ used.
   --stroke-only       Monte Carlo of the stroke alone (no band at each angle: faster)
 
 Output, CSV: crank_deg,x_nominal_mm,y_nominal_mm,x_worst_mm,y_worst_mm,x_rss_mm,y_rss_mm,
-x_mc_lo_mm,x_mc_hi_mm,y_mc_lo_mm,y_mc_hi_mm,x_mc_sd_mm,y_mc_sd_mm,first_order. Worst and RSS
+x_mc_lo_mm,x_mc_hi_mm,y_mc_lo_mm,y_mc_hi_mm,x_mc_sd_mm,y_mc_sd_mm,first_order; a machine in
+space has z's columns after y's in each group (z_nominal_mm, z_worst_mm, z_rss_mm, z_mc_lo_mm,
+z_mc_hi_mm, z_mc_sd_mm). Worst and RSS
 are half-widths about the nominal; the Monte Carlo columns the samples' least and greatest
 positions and standard deviation (empty without samples or with --stroke-only); first_order is
 'ok', 'fails' (the samples leave first order here: near a toggle) or 'unbounded' (a singular
@@ -88,7 +93,29 @@ void field(std::string& out, double v, bool given = true) {
   if (given) out += formatNumber(v);
 }
 
+// A machine in space's: the planar columns with z's after y's in each group.
+std::string spaceRows(const ToleranceResult& r, bool mc) {
+  std::string out =
+      "crank_deg,x_nominal_mm,y_nominal_mm,z_nominal_mm,x_worst_mm,y_worst_mm,z_worst_mm,"
+      "x_rss_mm,y_rss_mm,z_rss_mm,x_mc_lo_mm,x_mc_hi_mm,y_mc_lo_mm,y_mc_hi_mm,z_mc_lo_mm,"
+      "z_mc_hi_mm,x_mc_sd_mm,y_mc_sd_mm,z_mc_sd_mm,first_order\n";
+  for (const ToleranceRow& row : r.rows) {
+    out += formatNumber(row.crankDeg);
+    for (int c = 0; c < 3; ++c) field(out, row.nominal[c]);
+    for (const Vec3* v : {&row.worst, &row.rss})
+      for (int c = 0; c < 3; ++c) field(out, (*v)[c], row.firstOrder);
+    for (int c = 0; c < 3; ++c) {
+      field(out, row.lo[c], mc);
+      field(out, row.hi[c], mc);
+    }
+    for (int c = 0; c < 3; ++c) field(out, row.sd[c], mc);
+    out += !row.firstOrder ? ",unbounded\n" : row.nonlinear ? ",fails\n" : ",ok\n";
+  }
+  return out;
+}
+
 std::string rows(const ToleranceResult& r, bool mc) {
+  if (r.space) return spaceRows(r, mc);
   std::string out =
       "crank_deg,x_nominal_mm,y_nominal_mm,x_worst_mm,y_worst_mm,x_rss_mm,y_rss_mm,x_mc_lo_mm,"
       "x_mc_hi_mm,y_mc_lo_mm,y_mc_hi_mm,x_mc_sd_mm,y_mc_sd_mm,first_order\n";
@@ -106,8 +133,9 @@ std::string rows(const ToleranceResult& r, bool mc) {
 
 void summary(const ToleranceResult& r, const ToleranceSpec& spec) {
   const StrokeSpread& s = r.stroke;
-  std::string t = "stroke of y: " + formatNumber(s.nominal) + " mm (largest at " +
-                  formatNumber(s.maxDeg) + " deg, least at " + formatNumber(s.minDeg) + " deg)";
+  std::string t = std::string(r.space ? "stroke of the world's y: " : "stroke of y: ") +
+                  formatNumber(s.nominal) + " mm (largest at " + formatNumber(s.maxDeg) +
+                  " deg, least at " + formatNumber(s.minDeg) + " deg)";
   if (s.firstOrder)
     t += "; first order: worst +-" + formatNumber(s.worst) + " mm, RSS +-" + formatNumber(s.rss);
   note(t);

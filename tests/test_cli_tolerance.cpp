@@ -3,11 +3,13 @@
 #ifdef LINKAGE_CLI
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli_harness.h"
+#include "examples.h"
 #include "linkage/cycle_spread.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
@@ -117,6 +119,70 @@ TEST_F(ToleranceCli, AClosestApproachsSpreadIsTheLibrarys) {
   for (size_t i = 0; i < 7; ++i) EXPECT_EQ(parseNumber(row[i + 1]), values[i]) << i;
   EXPECT_EQ(run("tolerance " + path + " --clearance 1 --tol crank.O-A=0.1").exit, 2);
   EXPECT_EQ(run("tolerance " + path + " --window none --tol crank.O-A=0.1").exit, 2);
+}
+
+std::string dataFile(const std::string& name) {
+  std::ifstream in(std::string(LINKAGE_TEST_DATA_DIR) + "/" + name, std::ios::binary);
+  std::stringstream read;
+  read << in.rdbuf();
+  return read.str();
+}
+
+// A planar machine's table and notes byte for byte as before machines in space were taken
+// (tests/data/tolerance-wanzer-planar.*: written by the linkage-cli of commit 66823d1).
+TEST_F(ToleranceCli, APlanarMachinesOutputIsAsBefore) {
+  const test::CliResult res =
+      run("tolerance wanzer-inversion-2 --point needlebar.G --tol triangle.E-F=0.05 --tol "
+          "disk.B.angle=0.2 --tol ground.A.x=0.03 --play triangle.E-slider4.E=0.01 --samples 200 "
+          "--seed 3 --steps 24 --threads 2");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  EXPECT_EQ(res.out, dataFile("tolerance-wanzer-planar.csv"));
+  EXPECT_EQ(res.err, dataFile("tolerance-wanzer-planar.err"));
+}
+
+// A machine in space: z's columns after y's in each group, the library's numbers to the last
+// bit, the stroke said to be of the world's y.
+TEST_F(ToleranceCli, AMachineInSpaceHasZColumns) {
+  const test::CliResult res =
+      run("tolerance rssr-crank-rocker --point rocker.C --tol rocker.C.depth=0.05 --tol "
+          "ball-rod:crank.A.length=0.1 --tol planes.rocker.origin.z=0.1 --samples 50 --seed 2 "
+          "--steps 8");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  ASSERT_EQ(lines.size(), 9u) << res.out;
+  EXPECT_EQ(lines[0],
+            "crank_deg,x_nominal_mm,y_nominal_mm,z_nominal_mm,x_worst_mm,y_worst_mm,z_worst_mm,"
+            "x_rss_mm,y_rss_mm,z_rss_mm,x_mc_lo_mm,x_mc_hi_mm,y_mc_lo_mm,y_mc_hi_mm,z_mc_lo_mm,"
+            "z_mc_hi_mm,x_mc_sd_mm,y_mc_sd_mm,z_mc_sd_mm,first_order");
+  ToleranceSpec spec;
+  const Mechanism m = test::example("rssr-crank-rocker");
+  spec.point = *m.findPoint("rocker.C");
+  spec.tolerances = {{"rocker.C.depth", 0.05, false},
+                     {"ball-rod:crank.A.length", 0.1, false},
+                     {"planes.rocker.origin.z", 0.1, false}};
+  spec.samples = 50;
+  spec.seed = 2;
+  spec.steps = 8;
+  const ToleranceResult r = tolerances(m, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_TRUE(r.space);
+  for (int i = 0; i < 8; ++i) {
+    const std::vector<std::string> row = split(lines[1 + i]);
+    ASSERT_EQ(row.size(), 20u) << lines[1 + i];
+    const ToleranceRow& w = r.rows[i];
+    std::vector<double> want = {w.crankDeg};
+    for (const Vec3* v : {&w.nominal, &w.worst, &w.rss})
+      for (int c = 0; c < 3; ++c) want.push_back((*v)[c]);
+    for (int c = 0; c < 3; ++c) {
+      want.push_back(w.lo[c]);
+      want.push_back(w.hi[c]);
+    }
+    for (int c = 0; c < 3; ++c) want.push_back(w.sd[c]);
+    for (int c = 0; c < 19; ++c) EXPECT_EQ(parseNumber(row[c]), want[c]) << i << " " << c;
+    EXPECT_EQ(row[19], "ok");
+  }
+  EXPECT_NE(res.err.find("stroke of the world's y"), std::string::npos) << res.err;
+  EXPECT_NE(res.err.find("50 used"), std::string::npos) << res.err;
 }
 
 TEST_F(ToleranceCli, BadInputIsNamed) {

@@ -76,29 +76,6 @@ TEST(DimensionChange, EveryKindReadsBackExactly) {
   EXPECT_GE(checked, 30);
 }
 
-// A machine in space's own dimensions (depths, the ground's z, a rod's length, a plane's origin,
-// a ground slot in its block's plane) are not drawn anew yet: a change is refused naming the
-// dimension, never left out; a change of none of them is drawn as before.
-TEST(DimensionChange, AMachineInSpacesOwnDimensionsAreRefusedByName) {
-  const Mechanism m = test::example("overedge-machine");
-  const std::vector<Dimension> dims = dimensions(m);
-  int refused = 0;
-  for (size_t k = 0; k < dims.size(); ++k) {
-    const std::string& name = dims[k].name;
-    const bool own = name.ends_with(".depth") || name.ends_with(".z") ||
-                     name.ends_with(".length") || name.starts_with("planes.") ||
-                     name.starts_with("ground.u.");
-    std::vector<double> delta(dims.size(), 0.0);
-    delta[k] = 0.5;
-    Mechanism out = m;
-    const Status s = changeDimensions(out, dims, delta);
-    EXPECT_EQ(s.ok(), !own) << name << ": " << s.message;
-    if (own) EXPECT_EQ(s.message.rfind(name + ": ", 0), 0u) << s.message;
-    refused += own;
-  }
-  EXPECT_EQ(refused, 2 + 2 + 28 + 6 + 9);  // the slot, the rods, the depths, z, the planes
-}
-
 // The triangle of the Wanzer needle bar, all three sides at once: each reads back.
 TEST(DimensionChange, TriangleSidesAllAtOnce) {
   const Mechanism m = test::example("wanzer-inversion-2");

@@ -5,12 +5,13 @@
 #include <cmath>
 #include <map>
 
-#include "analysis/dimensions_space.h"
+#include "analysis/dimension_change_space.h"
 #include "linkage/cam_edits.h"
 #include "linkage/cam_joint.h"
 #include "linkage/elements.h"
 #include "linkage/gear.h"
 #include "linkage/guide.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -51,9 +52,16 @@ Status changeBody(Mechanism& m, const Body& body, const Changes& c) {
   }
   const Vec2 e = (b - a) / len;
   const Vec2 b2 = a + (len + changeOf(c, pre + p[0]->name + "-" + p[1]->name)) * e;
+  const bool base = c.count(pre + p[0]->name + "-" + p[1]->name) > 0;
   for (size_t k = 2; k < p.size(); ++k) {
     const Vec2 q = p[k]->pos;
     const std::string along = pre + p[k]->name + ".along";
+    // A point none of whose dimensions change stays as drawn, to the bit: placing it again by
+    // its two distances loses digits where it is near the line P0P1.
+    if (!base && !c.count(along) && !c.count(pre + p[k]->name + ".across") &&
+        !c.count(pre + p[0]->name + "-" + p[k]->name) &&
+        !c.count(pre + p[1]->name + "-" + p[k]->name))
+      continue;
     if (c.count(along) || c.count(pre + p[k]->name + ".across")) {
       // Placed along and across P0->P1 (whose direction no dimension turns).
       p[k]->pos = a + (e.dot(q - a) + changeOf(c, along)) * e +
@@ -150,11 +158,7 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
   for (size_t k = 0; k < dims.size(); ++k)
     if (delta[k] != 0) c[dims[k].name] = delta[k];
   if (c.empty()) return Status::success();
-  // A machine in space's own dimensions are not drawn anew yet: refused by name, not ignored.
-  for (size_t k = 0; k < dims.size(); ++k)
-    if (delta[k] != 0)
-      if (std::string why = internal::notDrawnYet(m, dims[k]); !why.empty())
-        return Status::badModel(dims[k].name + ": " + why);
+  const std::vector<internal::RodLength> rods = internal::rodLengths(m, dims, delta);
   for (size_t k = 0; k < dims.size(); ++k) {
     if (!dims[k].ratioOf || delta[k] == 0) continue;
     for (Joint& j : m.joints)
@@ -168,8 +172,11 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
       cams.push_back(dims[k].camOf);
   for (JointId j : cams)
     if (Status s = changeCam(m, j, dims, delta); !s.ok()) return s;
+  const Body* ground = isSpatial(m) ? m.ground() : nullptr;
   for (Slot& s : m.slots)
-    if (Status st = changeSlot(m, s, c); !st.ok()) return st;
+    if (!ground || s.body != ground->id)  // else changeInSpace's
+      if (Status st = changeSlot(m, s, c); !st.ok()) return st;
+  if (Status s = internal::changeInSpace(m, dims, delta); !s.ok()) return s;
   for (const Body& b : m.bodies) {
     if (!b.ground) {
       if (Status s = changeBody(m, b, c); !s.ok()) return s;
@@ -180,7 +187,10 @@ Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
         q.pos += Vec2(changeOf(c, b.name + "." + q.name + ".x"),
                       changeOf(c, b.name + "." + q.name + ".y"));
   }
-  return replaceFollowers(m);
+  if (Status s = replaceFollowers(m); !s.ok()) return s;
+  std::string names;
+  for (const auto& [name, by] : c) names += (names.empty() ? "" : ", ") + name;
+  return internal::keepRodLengths(m, rods, names);
 }
 
 Status pinPlay(const Mechanism& m, const std::string& pin, PinPlay& out) {

@@ -112,20 +112,6 @@ void groundSlotInSpace(const Mechanism& m, const Slot& s, std::vector<Dimension>
   out.push_back(angle);
 }
 
-std::string notDrawnYet(const Mechanism& m, const Dimension& d) {
-  if (d.lengthOf)
-    return "a ball rod's length is its ends' drawn distance in the file: it is not changed by "
-           "itself yet";
-  if (!d.depths.empty())
-    return "a depth, a ground point's z or a plane's origin is not changed here yet";
-  const Body* g = m.ground();
-  if (isSpatial(m) && g)
-    for (const Dimension::SlotMove& s : d.slots)
-      if (const Slot* slot = m.slot(s.slot); slot && slot->body == g->id)
-        return "a ground slot of a machine in space is not changed here yet";
-  return "";
-}
-
 void spaceDimensions(const Mechanism& m, std::vector<Dimension>& out) {
   if (isSpatial(m)) {
     depths(m, out);

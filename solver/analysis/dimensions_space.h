@@ -18,9 +18,5 @@ bool hasSpaceDimensions(const Mechanism& m);
 void groundSlotInSpace(const Mechanism& m, const Slot& s, std::vector<Dimension>& out);
 // Appends the depths, the ground's z, the rods' lengths and the planes' origins.
 void spaceDimensions(const Mechanism& m, std::vector<Dimension>& out);
-// Why changeDimensions (linkage/dimension_change.h) cannot draw a change of `d` yet, "" when it
-// can: a depth, a ground point's z, a plane's origin, a ground slot of a machine in space, and a
-// ball rod's length (the file keeps no length: its ends' drawn distance is the rod's).
-std::string notDrawnYet(const Mechanism& m, const Dimension& d);
 
 }  // namespace linkage::internal

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <thread>
 
+#include "analysis/dimensions_space.h"
 #include "linkage/dimension_change.h"
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -19,6 +21,9 @@ namespace {
 // which of them vary and by how much, the plays, and the columns handed to Sensitivity (the
 // varied dimensions, then each play's x and y).
 struct Resolved {
+  // Read in the world (Sensitivity::Space::World, Kinematics::motionInSpace): a machine in space
+  // or with a ball rod.
+  bool world = false;
   std::vector<Dimension> all;
   std::vector<int> index;  // into all
   std::vector<double> T;
@@ -29,12 +34,19 @@ struct Resolved {
 
 Status resolve(const Mechanism& m, const ToleranceSpec& spec, Resolved& r) {
   r.all = dimensions(m);
+  r.world = internal::hasSpaceDimensions(m);
   for (const ToleranceSpec::Tol& t : spec.tolerances) {
     if (!(t.plusMinus >= 0) || !std::isfinite(t.plusMinus))
       return Status::badModel(t.dimension + ": a tolerance is a finite number >= 0");
     if (t.play) {
       PinPlay p;
       if (Status s = pinPlay(m, t.dimension, p); !s.ok()) return s;
+      const Body* g = m.ground();
+      if (isSpatial(m) && g && m.point(p.point)->body == g->id)
+        return Status::badModel("pin " + t.dimension +
+                                ": its play would move its point on the ground, whose x and y "
+                                "are the world's, not its plane's: a play in space is of a pin "
+                                "with a point on a moving body that no other joint holds");
       r.plays.push_back(p);
       r.c.push_back(t.plusMinus);
       continue;
@@ -53,6 +65,23 @@ Status resolve(const Mechanism& m, const ToleranceSpec& spec, Resolved& r) {
     r.columns.push_back(p.y);
   }
   return Status::success();
+}
+
+// Where the point is: in the world, or the drawing's x and y (z 0).
+Vec3 positionOf(const Kinematics& k, PointId p, bool world) {
+  if (world) return k.motionInSpace(p).position;
+  const Vec2 at = k.position(p);
+  return Vec3(at.x(), at.y(), 0);
+}
+
+Vec3 derivativeOf(const Sensitivity& s, const Kinematics& k, PointId p, int col, bool world) {
+  if (world) return s.point3(k, p, col);
+  const Vec2 d = s.point(k, p, col);
+  return Vec3(d.x(), d.y(), 0);
+}
+
+Sensitivity::Space spaceOf(const Resolved& r) {
+  return r.world ? Sensitivity::Space::World : Sensitivity::Space::Refuse;
 }
 
 // The first-order half-widths of a change of the point along `dir`, from the derivatives at s's
@@ -87,16 +116,18 @@ Status firstOrderRows(const Kinematics& k0, const Resolved& r, const ToleranceSp
                       ToleranceResult& out) {
   Kinematics k = k0;
   Sensitivity s;
-  if (Status st = s.prepare(k, r.columns); !st.ok()) return st;
+  if (Status st = s.prepare(k, r.columns, spaceOf(r)); !st.ok()) return st;
+  const int axes = isSpatial(k0.mechanism()) ? 3 : 2;
   for (int i = 0; i < spec.steps; ++i) {
     ToleranceRow row;
     row.crankDeg = 360.0 * i / spec.steps;
     if (Status st = k.moveTo(row.crankDeg); !st.ok() && st.code != StatusCode::Singular) return st;
-    row.nominal = k.position(spec.point);
+    row.nominal = positionOf(k, spec.point, r.world);
     row.firstOrder = s.at(k).ok();
     if (row.firstOrder)
-      for (int c = 0; c < 2; ++c) {
-        const Linear l = linear(r, [&](int col) { return s.point(k, spec.point, col)[c]; });
+      for (int c = 0; c < axes; ++c) {
+        const Linear l =
+            linear(r, [&](int col) { return derivativeOf(s, k, spec.point, col, r.world)[c]; });
         row.worst[c] = l.worst;
         row.rss[c] = l.rss;
         row.sigma[c] = l.sigma;
@@ -122,11 +153,13 @@ Status firstOrderStroke(const Kinematics& k0, const Resolved& r, const Tolerance
   Kinematics kMax = k0, kMin = k0;
   Sensitivity sMax, sMin;
   st.firstOrder = lim.moves && kMax.moveTo(lim.maxDeg).ok() && kMin.moveTo(lim.minDeg).ok() &&
-                  sMax.prepare(kMax, r.columns).ok() && sMin.prepare(kMin, r.columns).ok() &&
-                  sMax.at(kMax).ok() && sMin.at(kMin).ok();
+                  sMax.prepare(kMax, r.columns, spaceOf(r)).ok() &&
+                  sMin.prepare(kMin, r.columns, spaceOf(r)).ok() && sMax.at(kMax).ok() &&
+                  sMin.at(kMin).ok();
   if (st.firstOrder) {
     const Linear l = linear(r, [&](int col) {
-      return sMax.point(kMax, spec.point, col).y() - sMin.point(kMin, spec.point, col).y();
+      return derivativeOf(sMax, kMax, spec.point, col, r.world).y() -
+             derivativeOf(sMin, kMin, spec.point, col, r.world).y();
     });
     st.worst = l.worst;
     st.rss = l.rss;
@@ -165,17 +198,26 @@ Status sampleDesign(const Mechanism& m, const Resolved& r, std::uint64_t seed, l
   return Status::success();
 }
 
-// Narrows a local extreme of y near the current angle by Newton on its exact derivatives.
-Status narrow(Kinematics& k, PointId p, double& y) {
+// Narrows a local extreme of y (the world's, in space) near the current angle by Newton on its
+// exact derivatives.
+Status narrow(Kinematics& k, PointId p, bool world, double& y) {
   for (int it = 0; it < 30; ++it) {
     const double w = k.omega();
-    const double v = k.velocity(p).y() / w, a = k.acceleration(p).y() / (w * w);
+    double v = 0, a = 0;
+    if (world) {
+      const Kinematics::PointMotion3 m = k.motionInSpace(p);
+      v = m.velocity.y() / w;
+      a = m.acceleration.y() / (w * w);
+    } else {
+      v = k.velocity(p).y() / w;
+      a = k.acceleration(p).y() / (w * w);
+    }
     if (!(std::abs(a) > 0) || !std::isfinite(v)) break;
     const double step = std::clamp(-v / a * 180 / M_PI, -2.0, 2.0);
     if (Status s = k.moveTo(k.crankDeg() + step); !s.ok()) return s;
     if (std::abs(step) < 1e-10) break;
   }
-  y = k.position(p).y();
+  y = positionOf(k, p, world).y();
   return Status::success();
 }
 
@@ -190,7 +232,7 @@ struct SampleRun {
   double size = 1;
 
   // `stopDeg`: where a sample that cannot turn the crank stopped (NaN before it moved).
-  Status run(long long index, std::vector<Vec2>& at, double& stroke, double& stopDeg) const {
+  Status run(long long index, std::vector<Vec3>& at, double& stroke, double& stopDeg) const {
     stopDeg = NAN;
     Mechanism design;
     if (Status s = sampleDesign(m, r, spec.seed, index, design); !s.ok()) return s;
@@ -201,8 +243,8 @@ struct SampleRun {
     return s;
   }
 
-  Status turn(Kinematics& k, std::vector<Vec2>& at, double& stroke) const {
-    const Vec2 start = k.position(spec.point);
+  Status turn(Kinematics& k, std::vector<Vec3>& at, double& stroke) const {
+    const Vec3 start = positionOf(k, spec.point, r.world);
     double lo = INFINITY, hi = -INFINITY;
     size_t e = 0;
     const int rows = spec.band ? spec.steps : 0;
@@ -211,14 +253,14 @@ struct SampleRun {
       for (; spec.stroke && e < extremeDeg.size() && extremeDeg[e] < deg; ++e) {
         double y = 0;
         if (Status s = k.moveTo(extremeDeg[e]); !s.ok()) return s;
-        if (Status s = narrow(k, spec.point, y); !s.ok()) return s;
+        if (Status s = narrow(k, spec.point, r.world, y); !s.ok()) return s;
         lo = std::min(lo, y);
         hi = std::max(hi, y);
       }
       if (Status s = k.moveTo(deg); !s.ok()) return s;
-      if (i < rows) at[i] = k.position(spec.point);
+      if (i < rows) at[i] = positionOf(k, spec.point, r.world);
     }
-    if ((k.position(spec.point) - start).norm() > 1e-7 * size)
+    if ((positionOf(k, spec.point, r.world) - start).norm() > 1e-7 * size)
       return Status::failure(StatusCode::Unreachable,
                              "not back where it started after a turn (another branch)");
     stroke = hi - lo;
@@ -228,7 +270,7 @@ struct SampleRun {
 
 // Sums over a chunk of samples, added in sample order: the same whatever thread ran it.
 struct Chunk {
-  std::vector<Vec2> sum, sum2, lo, hi;  // of (position - nominal), by row
+  std::vector<Vec3> sum, sum2, lo, hi;  // of (position - nominal), by row
   std::string firstFailure;
   double stopLo = INFINITY, stopHi = -INFINITY;  // where failed samples stopped
 };
@@ -237,11 +279,11 @@ constexpr long long kChunk = 128;
 void runChunk(const SampleRun& run, const ToleranceResult& nominal, long long c, Chunk& out,
               std::vector<double>& stroke, std::vector<char>& ok) {
   const size_t rows = run.spec.band ? nominal.rows.size() : 0;
-  out.sum.assign(rows, Vec2::Zero());
+  out.sum.assign(rows, Vec3::Zero());
   out.sum2 = out.sum;
-  out.lo.assign(rows, Vec2::Constant(INFINITY));
-  out.hi.assign(rows, Vec2::Constant(-INFINITY));
-  std::vector<Vec2> at(rows);
+  out.lo.assign(rows, Vec3::Constant(INFINITY));
+  out.hi.assign(rows, Vec3::Constant(-INFINITY));
+  std::vector<Vec3> at(rows);
   const long long end = std::min<long long>(run.spec.samples, (c + 1) * kChunk);
   for (long long i = c * kChunk; i < end; ++i) {
     double stopDeg = NAN;
@@ -257,7 +299,7 @@ void runChunk(const SampleRun& run, const ToleranceResult& nominal, long long c,
       continue;
     }
     for (size_t j = 0; j < rows; ++j) {
-      const Vec2 d = at[j] - nominal.rows[j].nominal;
+      const Vec3 d = at[j] - nominal.rows[j].nominal;
       out.sum[j] += d;
       out.sum2[j] += d.cwiseProduct(d);
       out.lo[j] = out.lo[j].cwiseMin(d);
@@ -281,8 +323,8 @@ bool beyondFirstOrder(double lo, double hi, double mean, double sd, double worst
 void summarise(const std::vector<Chunk>& chunks, int n, double eps, ToleranceResult& out) {
   for (size_t j = 0; j < out.rows.size() && !chunks.empty() && !chunks[0].sum.empty(); ++j) {
     ToleranceRow& row = out.rows[j];
-    Vec2 sum = Vec2::Zero(), sum2 = Vec2::Zero(), lo = Vec2::Constant(INFINITY),
-         hi = Vec2::Constant(-INFINITY);
+    Vec3 sum = Vec3::Zero(), sum2 = Vec3::Zero(), lo = Vec3::Constant(INFINITY),
+         hi = Vec3::Constant(-INFINITY);
     for (const Chunk& c : chunks) {
       sum += c.sum[j];
       sum2 += c.sum2[j];
@@ -290,11 +332,11 @@ void summarise(const std::vector<Chunk>& chunks, int n, double eps, ToleranceRes
       hi = hi.cwiseMax(c.hi[j]);
     }
     if (n == 0) continue;
-    const Vec2 mean = sum / n;
+    const Vec3 mean = sum / n;
     row.mean = row.nominal + mean;
     row.lo = row.nominal + lo;
     row.hi = row.nominal + hi;
-    for (int c = 0; c < 2; ++c) {
+    for (int c = 0; c < (out.space ? 3 : 2); ++c) {
       row.sd[c] = n > 1 ? std::sqrt(std::max(0.0, (sum2[c] - n * mean[c] * mean[c]) / (n - 1))) : 0;
       if (row.firstOrder &&
           beyondFirstOrder(lo[c], hi[c], mean[c], row.sd[c], row.worst[c], row.sigma[c], n, eps))
@@ -378,6 +420,7 @@ ToleranceResult tolerances(const Mechanism& m, const ToleranceSpec& spec) {
     return out;
   }
   if (out.status = resolve(m, spec, r); !out.status.ok()) return out;
+  out.space = isSpatial(m);
   Kinematics k0;
   if (out.status = k0.load(m); !out.status.ok()) return out;
   if (out.status = k0.checkDetermined({spec.point}); !out.status.ok()) return out;

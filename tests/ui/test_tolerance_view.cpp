@@ -5,6 +5,7 @@
 // but for second-order terms, far from a toggle.
 #include <gtest/gtest.h>
 
+#include <QComboBox>
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTest>
@@ -12,6 +13,7 @@
 #include "design/sensitivity_panel.h"
 #include "design/tolerance_view.h"
 #include "document/document.h"
+#include "figures/qcp.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/sensitivity.h"
 #include "ui_test.h"
@@ -70,6 +72,53 @@ TEST(ToleranceView, TheBandIsTheDerivativeTimesTheTolerance) {
   EXPECT_GT(peak, 0.01);
   EXPECT_TRUE(view->summary().contains("200 of 200 solved")) << view->summary();
   shot(&panel, "tolerance_view");
+}
+
+// A machine in space (the overedge machine): with z chosen the tab shows the band of the
+// needle's world z (not a refusal): first order |dz/dp| T from Sensitivity World, the axis
+// saying so.
+TEST(ToleranceView, AMachineInSpaceShowsItsZBand) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("overedge-machine")), nullptr));
+  SensitivityPanel panel(&doc);
+  panel.resize(1000, 420);
+  panel.show();
+  auto* point = panel.findChild<QComboBox*>("sensPoint");
+  const int at = point->findText("needlearm.N");
+  ASSERT_GE(at, 0);
+  point->setCurrentIndex(at);
+  QTest::qWait(30);
+  auto* component = panel.findChild<QComboBox*>("sensComponent");
+  ASSERT_EQ(component->count(), 4);  // x, y, the length of the change, z
+  component->setCurrentIndex(3);
+  panel.findChild<QTabWidget*>("sensTabs")->setCurrentIndex(1);
+  QTest::qWait(60);
+  ToleranceView* view = panel.tolerances();
+  view->setTolerance("planes.rocker.origin.z", 0.1);
+  ASSERT_TRUE(waitFor(view)) << view->summary();
+  const ToleranceResult& r = view->result();
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_TRUE(r.space);
+  Kinematics k = doc.kinematics();
+  std::vector<Dimension> dims;
+  for (Dimension& d : dimensions(k.mechanism()))
+    if (d.name == "planes.rocker.origin.z") dims.push_back(d);
+  ASSERT_EQ(dims.size(), 1u);
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dims, Sensitivity::Space::World).ok());
+  const PointId N = *doc.design().findPoint("needlearm.N");
+  double peak = 0;
+  for (int i = 0; i < 360; i += 30) {
+    ASSERT_TRUE(k.moveTo(i).ok() && s.at(k).ok());
+    EXPECT_NEAR(r.rows[i].worst.z(), 0.1 * std::abs(s.point3(k, N, 0).z()), 1e-12) << i;
+    peak = std::max(peak, r.rows[i].worst.z());
+  }
+  EXPECT_GT(peak, 0.01);
+  auto* plot = view->findChild<QCustomPlot*>("tolPlot");
+  EXPECT_TRUE(plot->yAxis->label().startsWith("z from the nominal, in the world"))
+      << plot->yAxis->label().toStdString();
+  EXPECT_TRUE(view->summary().contains("world's y")) << view->summary().toStdString();
+  shot(&panel, "tolerance_view_space");
 }
 
 }  // namespace

@@ -207,11 +207,12 @@ void SensitivityPanel::compute() {
     return;
   }
   const size_t n = s.dims().size();
-  const std::pair<PointId, int> asked{p, std::min(which, 1)};
+  const std::pair<PointId, int> asked{p, which == kZ ? 2 : std::min(which, 1)};
   if (tabs_->currentWidget() == tolerances_ && (toleranceStale_ || asked != toleranceFor_)) {
     toleranceStale_ = false;
     toleranceFor_ = asked;
-    // The tolerances' band follows a point's x or y (the length of a change has no band).
+    // The tolerances' band follows a point's x, y or z (the length of a change has no band:
+    // y's is shown).
     std::vector<std::string> names;
     for (const Dimension& d : s.dims()) names.push_back(d.name);
     tolerances_->update(doc_->design(), names, p, asked.second);

@@ -203,7 +203,9 @@ void ToleranceView::draw() {
   marks->setLineStyle(QCPGraph::lsNone);
   marks->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QColor(200, 0, 0), 7));
   setCrankAxis(plot_->xAxis, 360, tr("crank angle (°)"));
-  plot_->yAxis->setLabel(tr("%1 from the nominal (mm)").arg(c == 0 ? "x" : "y"));
+  const QString axis = c == 0 ? QStringLiteral("x") : c == 1 ? QStringLiteral("y") : "z";
+  plot_->yAxis->setLabel(r.space ? tr("%1 from the nominal, in the world (mm)").arg(axis)
+                                 : tr("%1 from the nominal (mm)").arg(axis));
   plot_->rescaleAxes(true);
   setCrankAxis(plot_->xAxis, 360, tr("crank angle (°)"));
   const QCPRange y = plot_->yAxis->range();
@@ -219,7 +221,8 @@ QString ToleranceView::summary() const {
   if (!r.status.ok() || r.rows.empty()) return summary_->text();
   QStringList out;
   const StrokeSpread& s = r.stroke;
-  QString stroke = tr("Stroke %1 mm").arg(s.nominal, 0, 'f', 4);
+  QString stroke = r.space ? tr("Stroke of the world's y %1 mm").arg(s.nominal, 0, 'f', 4)
+                           : tr("Stroke %1 mm").arg(s.nominal, 0, 'f', 4);
   if (s.firstOrder)
     stroke += tr(": first order ±%1 worst, ±%2 root sum of squares")
                   .arg(s.worst, 0, 'f', 4)

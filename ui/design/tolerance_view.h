@@ -32,7 +32,7 @@ class ToleranceView : public QWidget {
   explicit ToleranceView(QWidget* parent = nullptr);
   ~ToleranceView() override;
 
-  // The design, its dimensions' names, the point and component (0 x, 1 y) to show; a new
+  // The design, its dimensions' names, the point and component (0 x, 1 y, 2 z) to show; a new
   // computation starts when any of them or a tolerance changed.
   void update(const Mechanism& m, const std::vector<std::string>& dimensions, PointId point,
               int component);

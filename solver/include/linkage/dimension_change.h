@@ -23,9 +23,15 @@
 //   other change that takes a follower off its lowest position (the cam's centre, its slot, b
 //   or its pivot moved) puts it back there, along its slot or about its pivot, as the
 //   derivatives do.
-// - Not yet (refused, naming the dimension): a machine in space's depths, ground z, planes'
-//   origins, ground slots, and a ball rod's length (the file keeps none). A body's dimension
-//   that moves a rod's end changes the rod's drawn length here, which its derivative holds.
+// - In space (analysis/dimension_change_space.h): a depth or a ground point's z, its third
+//   number; a plane's origin, the plane (its bodies with it); a ground slot's angle and offset
+//   in its block's plane, as a planar slot's, its ends' z with them.
+// - Ball rods, last: the file keeps a rod's length as its ends' drawn distance, which a rod's own
+//   change and any change that moves an end (a depth, a plane's origin, a body's dimension)
+//   alter; every derivative holds the other dimensions, the rods' lengths among them. So each
+//   rod is given its drawn length plus its own change: the machine is solved at the drawing's
+//   crank angle with those lengths and every body that moves is redrawn there, rigidly (its
+//   shape kept), so that each rod reads back its length (analysis/dimension_change_space.h).
 // Nothing pinned to a moved point moves with it: loading (or Kinematics::edit) closes the joints.
 #pragma once
 
@@ -39,8 +45,9 @@ namespace linkage {
 
 // `delta[k]` is the change of dims[k], in its unit; dims must be dimensions(m) of this m (names
 // and order), delta of the same size. BadModel when a body's point cannot be placed (the new
-// distances do not meet: the triangle cannot close), naming the body and point; m is then left
-// partly changed (work on a copy).
+// distances do not meet: the triangle cannot close), naming the body and point, or when the
+// machine does not close with a rod's changed length, naming it; m is then left partly changed
+// (work on a copy).
 Status changeDimensions(Mechanism& m, const std::vector<Dimension>& dims,
                         const std::vector<double>& delta);
 

@@ -1,6 +1,14 @@
-// Tolerances carried through the motion (issue 29): the band of a point's x and y over the
-// cycle, and the spread of its stroke, when the named dimensions (linkage/sensitivity.h) vary
-// within symmetric tolerances +-T_k and pins have a radial play c.
+// Tolerances carried through the motion (issue 29): the band of a point's x and y (and z, on a
+// machine in space) over the cycle, and the spread of its stroke, when the named dimensions
+// (linkage/sensitivity.h) vary within symmetric tolerances +-T_k and pins have a radial play c.
+//
+// A machine in space (linkage/space.h) is carried in the world: its dimensions include depths,
+// the ground's z, rods' lengths and planes' origins, its derivatives are Sensitivity's
+// Space::World, each sample's design is drawn exactly (linkage/dimension_change.h), and the
+// band is of the point's world x, y and z. Its stroke is still of y, the world's (the stroke's
+// direction is not an option here). A play opens its pin in the pin's plane, its free point
+// moved in its body's plane; one whose free point is on the ground (whose x and y are the
+// world's, not the pin's plane's) is refused by name.
 //
 // First order, from the exact derivatives at each crank angle: worst case sum |d out/d p_k| T_k
 // (a play counts c |d out/d offset|, the derivative's largest over the direction the pin's
@@ -59,14 +67,16 @@ struct ToleranceSpec {
   double sampleStepDeg = 5.0;
 };
 
+// x, y and z: a planar machine's x and y in the drawing, z 0 throughout; a machine in space's
+// in the world.
 struct ToleranceRow {
   double crankDeg = 0;
-  Vec2 nominal = Vec2::Zero();
+  Vec3 nominal = Vec3::Zero();
   bool firstOrder = false;  // the derivatives exist here (not a singular position)
-  Vec2 worst = Vec2::Zero(), rss = Vec2::Zero();  // half-widths, mm
-  Vec2 sigma = Vec2::Zero();                      // first order's standard deviation, mm
+  Vec3 worst = Vec3::Zero(), rss = Vec3::Zero();  // half-widths, mm
+  Vec3 sigma = Vec3::Zero();                      // first order's standard deviation, mm
   // Monte Carlo over the samples that completed: extremes, mean, standard deviation.
-  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero(), mean = Vec2::Zero(), sd = Vec2::Zero();
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero(), mean = Vec3::Zero(), sd = Vec3::Zero();
   bool nonlinear = false;  // first order is not enough here
 };
 
@@ -79,8 +89,10 @@ struct StrokeSpread {
 };
 
 struct ToleranceResult {
-  // BadModel naming an unknown dimension or pin, a negative tolerance; the nominal's failure.
+  // BadModel naming an unknown dimension or pin, a negative tolerance, a play in space on a
+  // ground point; the nominal's failure.
   Status status;
+  bool space = false;  // a machine in space (linkage/space.h): the rows' z is the world's
   std::vector<ToleranceRow> rows;
   StrokeSpread stroke;
   int samples = 0;           // drawn
