@@ -141,3 +141,32 @@ TEST(DimensionChange, SmallChangesMoveThePointAsTheDerivativeSays) {
 
 }  // namespace
 }  // namespace linkage
+
+namespace linkage {
+namespace {
+
+// A point on its body's line P0P1 is given along and across P0->P1; a change of P0-P1 keeps those
+// (its derivative moves it not), where placing it by its two distances failed ("do not meet":
+// the circles about P0 and the moved P1 are apart on the line).
+TEST(DimensionChange, APointOnTheBodysLineKeepsItsAlongAndAcross) {
+  test::SliderCrank sc = test::sliderCrank(20, 70, 8, 30);
+  const Vec2 A = sc.m.point(sc.A)->pos, B = sc.m.point(*sc.m.findPoint("rod.B"))->pos;
+  const PointId M = sc.m.addPoint(sc.rod, "M", A + 0.4 * (B - A));
+  const std::vector<Dimension> dims = dimensions(sc.m);
+  std::vector<double> delta(dims.size(), 0.0);
+  bool named = false;
+  for (size_t d = 0; d < dims.size(); ++d) {
+    if (dims[d].name == "rod.A-B") delta[d] = 3;
+    named = named || dims[d].name == "rod.M.along";
+  }
+  ASSERT_TRUE(named);
+  Mechanism changed = sc.m;
+  const Status s = changeDimensions(changed, dims, delta);
+  ASSERT_TRUE(s.ok()) << s.message;
+  const Vec2 e = (B - A).normalized();
+  EXPECT_NEAR((changed.point(M)->pos - (A + 0.4 * (B - A).norm() * e)).norm(), 0, 1e-12);
+  EXPECT_NEAR((changed.point(*changed.findPoint("rod.B"))->pos - (B + 3 * e)).norm(), 0, 1e-12);
+}
+
+}  // namespace
+}  // namespace linkage

@@ -1,6 +1,7 @@
 // The dimensions of a mechanism and what each moves (linkage/sensitivity.h).
 #include <cmath>
 
+#include "analysis/body_points.h"
 #include "analysis/dimensions_space.h"
 #include "linkage/cam_edits.h"
 #include "linkage/cam_joint.h"
@@ -13,10 +14,6 @@
 namespace linkage {
 
 namespace {
-
-// Seen from Pk, P0 and P1 closer than this to one line (rad): two distances do not place Pk
-// well (their sensitivities grow as 1 / this), so it is placed along and across P0->P1.
-constexpr double kOnLine = 1e-3;
 
 Dimension distance(const std::string& name, double value) {
   Dimension d;
@@ -59,7 +56,7 @@ void bodyDimensions(const Mechanism& m, const Body& body, std::vector<Dimension>
     const Vec2 c = p[k]->pos;
     const double r0 = (c - a).norm(), r1 = (c - b).norm();
     const Vec2 u0 = (c - a) / r0, u1 = (c - b) / r1;
-    if (!(r0 > 1e-9 * len && r1 > 1e-9 * len && std::abs(cross(u0, u1)) > kOnLine)) {
+    if (alongAndAcross(a, b, c)) {
       Dimension along = distance(pre + p[k]->name + ".along", e.dot(c - a));
       along.points.push_back({p[k]->id, e});
       Dimension across = distance(pre + p[k]->name + ".across", cross(e, c - a));

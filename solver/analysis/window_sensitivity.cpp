@@ -3,6 +3,9 @@
 
 #include <cmath>
 
+#include "analysis/measure_track.h"
+#include "linkage/space.h"
+
 namespace linkage {
 
 namespace {
@@ -12,10 +15,12 @@ Status refused(std::string why) {
 }
 
 // The output's rate per degree of crank and its derivative in dimension d at the pose: a point
-// along u, a body's angle (radians), or the distance between two points.
+// along u, a body's angle (radians), or the distance between two points. On a machine in space
+// the point and the distance are the world's (readMeasure's rate, Sensitivity's point3).
 double outputRate(const Kinematics& at, const LimitMeasure& w) {
   const double perDeg = M_PI / 180 / at.omega();
   if (w.body) return at.bodyOmega(w.body) * perDeg;
+  if (isSpatial(at.mechanism())) return readMeasure(at, w).d1;
   if (w.other) {
     const Vec2 e = (at.position(w.point) - at.position(w.other)).normalized();
     return e.dot(at.velocity(w.point) - at.velocity(w.other)) * perDeg;
@@ -25,6 +30,12 @@ double outputRate(const Kinematics& at, const LimitMeasure& w) {
 
 double outputChange(const Kinematics& at, const Sensitivity& s, const LimitMeasure& w, int d) {
   if (w.body) return s.angle(at, w.body, d);
+  if (isSpatial(at.mechanism())) {
+    if (!w.other) return w.direction3().dot(s.point3(at, w.point, d));
+    const Vec3 e =
+        (at.motionInSpace(w.point).position - at.motionInSpace(w.other).position).normalized();
+    return e.dot(s.point3(at, w.point, d) - s.point3(at, w.other, d));
+  }
   if (w.other) {
     const Vec2 e = (at.position(w.point) - at.position(w.other)).normalized();
     return e.dot(s.point(at, w.point, d) - s.point(at, w.other, d));
@@ -60,16 +71,13 @@ WindowSensitivity windowSensitivity(const Kinematics& k, const std::string& name
   for (const TimingWindow& x : t.windows)
     if (x.name == name) w = &x;
   if (!w) return out.status = refused("no window named \"" + name + "\" in the timing"), out;
-  if (w->output.dz != 0)
-    return out.status = refused("window \"" + name +
-                                "\" follows a point in space: its ends have no derivatives "
-                                "yet (in the plane they have)"),
-           out;
   const CycleDiagram d = cycleDiagram(k, t);
   if (!(out.status = d.status).ok()) return out;
   Kinematics at = k;
   Sensitivity s;
-  if (!(out.status = s.prepare(at, std::move(dims))).ok()) return out;
+  const Sensitivity::Space world =
+      isSpatial(k.mechanism()) ? Sensitivity::Space::World : Sensitivity::Space::Refuse;
+  if (!(out.status = s.prepare(at, std::move(dims), world)).ok()) return out;
   out.dims = s.dims();
   for (const WindowIntervals& wi : d.windows) {
     if (wi.name != name) continue;

@@ -6,16 +6,20 @@
 #include <gtest/gtest.h>
 
 #include <QComboBox>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include "design/sensitivity_panel.h"
 #include "document/document.h"
+#include "examples.h"
 #include "linkage/clearance_sensitivity.h"
 #include "linkage/force_sensitivity.h"
+#include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/limits.h"
 #include "linkage/shaking_sensitivity.h"
 #include "linkage/stroke_sensitivity.h"
+#include "linkage/timing.h"
 #include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
 #include "ui_test.h"
@@ -194,6 +198,37 @@ TEST(SensitivityPanel, AWindowsEnds) {
         EXPECT_EQ(b.now, want.intervals[0].dTo[d]) << b.dimension;
   EXPECT_TRUE(panel.summary().startsWith("Window needle closes at crank 228.41"))
       << panel.summary();
+}
+
+// A window on a machine in space, on a point's world z (it was left out of the list): its end's
+// derivatives, the library's (tests/test_spatial_window_sensitivity.cpp holds them to the
+// lockstitch machine's closed form).
+TEST(SensitivityPanel, AWindowInSpace) {
+  const Mechanism m = test::exampleWithWindow("lockstitch-bevel", "low=vshaft.M:z>6");
+  QTemporaryDir dir;
+  const QString path = dir.filePath("bevel.linkage.json");
+  ASSERT_TRUE(saveMechanismFile(m, path.toStdString()).ok);
+  Document doc;
+  ASSERT_TRUE(doc.open(path, nullptr));
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  const int at = panel.pointBox()->findText("window low: its start");
+  ASSERT_GE(at, 0);
+  panel.pointBox()->setCurrentIndex(at);
+  Q_EMIT panel.pointBox()->activated(at);
+  settle(panel);
+  const WindowSensitivity want =
+      windowSensitivity(doc.kinematics(), "low", dimensions(doc.design()));
+  ASSERT_TRUE(want.status.ok()) << want.status.message;
+  ASSERT_EQ(panel.bars().size(), want.dims.size());
+  for (const SensitivityPanel::Bar& b : panel.bars())
+    for (size_t d = 0; d < want.dims.size(); ++d)
+      if (want.dims[d].name == b.dimension)
+        EXPECT_EQ(b.now, want.intervals[0].dFrom[d]) << b.dimension;
+  EXPECT_TRUE(panel.summary().startsWith("Window low opens at crank 210")) << panel.summary();
+  shot(&panel, "space_window_sensitivity");
 }
 
 // A dyad's transmission angle: after the windows, numbered as linkage-cli transmission numbers

@@ -116,12 +116,11 @@ void SensitivityPanel::fillPoints() {
                    .arg(QString::fromStdString(m.pointLabel(w.point)),
                         QString::fromStdString(other));
   }
-  // A window in the plane: its first interval's start, then its end.
+  // Each window (in the world on a machine in space): its first interval's start, then its end.
   QStringList ends;
   for (const TimingWindow& w : m.timing.windows)
-    if (w.output.dz == 0)
-      for (const QString& which : {tr("start"), tr("end")})
-        ends << tr("window %1: its %2").arg(QString::fromStdString(w.name), which);
+    for (const QString& which : {tr("start"), tr("end")})
+      ends << tr("window %1: its %2").arg(QString::fromStdString(w.name), which);
   watched += ends;
   const int transmissionsFrom = static_cast<int>(watched.size());
   const std::vector<TransmissionJoint> js = transmissionJoints(m);
@@ -322,12 +321,9 @@ void SensitivityPanel::clearanceBars(int n) {
 }
 
 void SensitivityPanel::windowBars(int n) {
-  // The n-th end listed: window n / 2 of those on a point's position, its start or its end.
+  // The n-th end listed: window n / 2, its start or its end.
   const Mechanism& m = doc_->design();
-  std::vector<const TimingWindow*> windows;
-  for (const TimingWindow& w : m.timing.windows)
-    if (w.output.dz == 0) windows.push_back(&w);
-  const TimingWindow& w = *windows.at(n / 2);
+  const TimingWindow& w = m.timing.windows.at(static_cast<size_t>(n / 2));
   const bool end = n % 2;
   const WindowSensitivity s = windowSensitivity(doc_->kinematics(), w.name, dimensions(m));
   if (!s.status.ok() || s.intervals.empty()) {

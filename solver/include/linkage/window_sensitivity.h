@@ -5,7 +5,8 @@
 // at that pose: for a point along u, u . dr/dp over u . dr/dphi (linkage/sensitivity.h, the
 // velocity solve); for a body's angle, its dtheta/dp over its rate; for the distance between two
 // points, e . (dP/dp - dQ/dp) over e . (P' - Q'), e along P - Q. Degrees of crank per unit of the
-// dimension. A point in space (a window with dz), not yet (said).
+// dimension. On a machine in space a point's position and a distance are the world's (the
+// window's direction with its dz; Sensitivity::Space::World), a body's angle in its plane.
 #pragma once
 
 #include <string>
