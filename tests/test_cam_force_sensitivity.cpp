@@ -12,9 +12,9 @@
 #include <cstdlib>
 
 #include "cam_closed_form.h"
-#include "linkage/dimension_change.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_sensitivity.h"
+#include "reaction_checks.h"
 
 namespace linkage {
 namespace {
@@ -140,60 +140,26 @@ TEST(CamForceSensitivity, ContactChangeIsTheContactsDerivative) {
 }
 
 // Every joint's reaction on the followers without a closed form here (a flat face, an
-// oscillating roller and flat face) against the changed designs' forces (changeDimensions, the
-// whole solve again): central differences, to 1e-5 of the reaction's size.
-void expectChangedDesignsAgree(const Mechanism& m) {
-  Kinematics k;
-  ASSERT_TRUE(k.load(m).ok());
-  const std::vector<Dimension> dims = dimensions(m);
-  const double h = 1e-5;
-  for (size_t d = 0; d < dims.size(); ++d) {
-    Kinematics kc[2];
-    for (int side = 0; side < 2; ++side) {
-      Mechanism changed = m;
-      std::vector<double> delta(dims.size(), 0.0);
-      delta[d] = side ? h : -h;
-      ASSERT_TRUE(changeDimensions(changed, dims, delta).ok()) << dims[d].name;
-      ASSERT_TRUE(kc[side].load(changed).ok()) << dims[d].name;
-    }
-    for (int deg = 10; deg < 360; deg += 40) {
-      ASSERT_TRUE(k.moveTo(deg).ok() && kc[0].moveTo(deg).ok() && kc[1].moveTo(deg).ok());
-      const Forces f[2] = {computeForces(kc[0]), computeForces(kc[1])};
-      for (size_t j = 0; j < m.joints.size(); ++j) {
-        const JointForceSensitivity s = jointForceSensitivity(k, m.joints[j].id, dims);
-        ASSERT_TRUE(s.status.ok()) << s.status.message;
-        const JointReaction &p = f[1].joints[j], &q = f[0].joints[j], &c = s.change[d];
-        const Eigen::Vector4d want(
-            (p.force.x() - q.force.x()) / (2 * h), (p.force.y() - q.force.y()) / (2 * h),
-            1000 * (p.coupleNm - q.coupleNm) / (2 * h), (p.contactN - q.contactN) / (2 * h));
-        const Eigen::Vector4d got(c.force.x(), c.force.y(), 1000 * c.coupleNm, c.contactN);
-        const double size = 1 + s.force.norm() + 1000 * std::abs(s.reaction.coupleNm);
-        EXPECT_LT((got - want).norm(), 1e-5 * size)
-            << dims[d].name << " joint " << j << " at " << deg;
-      }
-    }
-  }
-}
-
+// oscillating roller and flat face) against the changed designs' forces (tests/reaction_checks.h).
 TEST(CamForceSensitivity, FlatAndOscillatingFollowersMoveAsChangedDesignsDo) {
   test::TranslatingCam roller;
   roller.followerMass = R"("mass": {"kg": 0.2, "com": [10, 50], "j_kg_mm2": 30},)";
   roller.extra =
       R"(, "gravity": [0, -9.81], "loads": [{"point": "follower.R", "force_N": [0, -30]}])";
-  expectChangedDesignsAgree(test::parsed(roller.text()));
+  test::expectReactionsMoveAsChangedDesignsDo(test::parsed(roller.text()));
   test::TranslatingCam flat;
   flat.flat = true;
   flat.roller = 0;
   flat.followerMass = R"("mass": {"kg": 0.2, "com": [10, 50], "j_kg_mm2": 30},)";
   flat.extra =
       R"(, "gravity": [0, -9.81], "loads": [{"point": "follower.R", "force_N": [0, -30]}])";
-  expectChangedDesignsAgree(test::parsed(flat.text()));
+  test::expectReactionsMoveAsChangedDesignsDo(test::parsed(flat.text()));
   for (const bool face : {false, true}) {
     test::OscillatingCam osc;
     osc.flat = face;
     if (face) osc.roller = 0;
     osc.extra = R"(, "loads": [{"point": "rocker.R", "force_N": [0, -30]}])";
-    expectChangedDesignsAgree(test::parsed(osc.text()));
+    test::expectReactionsMoveAsChangedDesignsDo(test::parsed(osc.text()));
   }
 }
 

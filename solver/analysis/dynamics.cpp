@@ -482,4 +482,35 @@ Eigen::VectorXd generalizedForces(const Kinematics& k) {
   return d.Q;
 }
 
+Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Eigen::VectorXd& dq,
+                                        const Eigen::VectorXd& dqd, const Eigen::VectorXd& dqdd,
+                                        const std::function<Vec2(PointId)>& armMove) {
+  if (!k.valid() || !k.derivativesValid()) return Eigen::VectorXd();
+  const KinematicsState& s = internal::state(k);
+  ForceSolver::Impl d;
+  d.bodies(s);
+  const double w2 = k.omega() * k.omega();
+  Eigen::VectorXd dQ = Eigen::VectorXd::Zero(3 * s.sys.nBodies);
+  for (int i = 0; i < s.sys.nBodies; ++i) {
+    if (!d.mass[i]) continue;
+    const ForceSolver::Impl::BodyMass& bm = *d.mass[i];
+    // The centre's arm g = R c turns by dtheta; its acceleration w^2 (a + alpha perp(g) -
+    // omega^2 g), per radian rates, changes with every term.
+    const Vec2 g = Rot::of(k.q()[3 * i + 2]) * bm.c, dg = dq[3 * i + 2] * perp(g);
+    const double w = k.dq()[3 * i + 2], alpha = k.ddq()[3 * i + 2];
+    const double dw = dqd[3 * i + 2], dalpha = dqdd[3 * i + 2];
+    const Vec2 acc = w2 * (Vec2(k.ddq().segment<2>(3 * i)) + alpha * perp(g) - w * w * g);
+    const Vec2 dacc = w2 * (Vec2(dqdd.segment<2>(3 * i)) + dalpha * perp(g) + alpha * perp(dg) -
+                            2 * w * dw * g - w * w * dg);
+    const Vec2 F = bm.kg * ((d.space.on() ? d.space.gravityIn(i) : d.gravity) - acc / 1000);
+    const Vec2 dF = -bm.kg * dacc / 1000;
+    dQ.segment<2>(3 * i) += dF;
+    dQ[3 * i + 2] += cross(dg, F) + cross(g, dF) - bm.j * w2 * dalpha / 1000;
+  }
+  for (const ForceSolver::Impl::LoadAt& l : d.loads)
+    if (l.load.point && l.load.activeAt(k.crankDeg()))
+      dQ[3 * l.body + 2] += cross(armMove(l.load.point), l.force);
+  return dQ;
+}
+
 }  // namespace linkage

@@ -18,37 +18,15 @@ namespace linkage {
 
 namespace {
 
-// dQ/dp: each body's applied and inertia force m (g - a) / 1000 and its moment about the frame
-// origin, cross(R c, F) - j omega^2 alpha / 1000, with the loads' moments; a dimension moves no
-// mass (its centre stays in its body) and no load's force.
+// dQ/dp (linkage/dynamics.h generalizedForcesChange): a load's arm from its body's frame origin
+// moves as its point less the origin.
 Eigen::VectorXd forcesChange(const Kinematics& k, const Sensitivity& s, int dim) {
-  const KinematicsState& st = internal::state(k);
-  const System& sys = st.sys;
-  Eigen::VectorXd dQ = Eigen::VectorXd::Zero(sys.nCoords());
-  const double w2 = k.omega() * k.omega();
-  const Vec2 gravity = st.mech.gravity.value_or(Vec2::Zero());
-  for (const Body& b : st.mech.bodies) {
-    const int i = sys.bodyIndex(b.id);
-    if (i < 0 || !b.mass || b.mass->kg == 0) continue;
-    const double w = k.dq()[3 * i + 2], alpha = k.ddq()[3 * i + 2];
-    const Vec2 g = Rot::of(k.q()[3 * i + 2]) * Vec2(b.mass->com - sys.frameOrigin[i]);
-    const Vec2 acc = w2 * (Vec2(k.ddq().segment<2>(3 * i)) + alpha * perp(g) - w * w * g);
-    const Vec2 F = b.mass->kg * (gravity - acc / 1000);
-    const Vec2 dF = -b.mass->kg * s.acceleration(k, b.id, b.mass->com, dim) / 1000;
-    const Vec2 dg = s.dq()(3 * i + 2, dim) * perp(g);
-    dQ.segment<2>(3 * i) += dF;
-    dQ[3 * i + 2] +=
-        cross(dg, F) + cross(g, dF) - b.mass->jKgMm2 * w2 * s.dqdd()(3 * i + 2, dim) / 1000;
-  }
-  for (const Load& l : st.mech.loads) {
-    if (!l.point || !l.activeAt(k.crankDeg())) continue;
-    const PointLocation* p = sys.point(l.point);
-    if (!p || p->body < 0) continue;
-    // The arm from the frame origin: the point's move less the origin's.
-    const Vec2 dat = s.point(k, l.point, dim) - Vec2(s.dq().block<2, 1>(3 * p->body, dim));
-    dQ[3 * p->body + 2] += cross(dat, l.forceN);
-  }
-  return dQ;
+  const System& sys = internal::state(k).sys;
+  return generalizedForcesChange(
+      k, s.dq().col(dim), s.dqd().col(dim), s.dqdd().col(dim), [&](PointId p) {
+        const PointLocation* at = sys.point(p);
+        return Vec2(s.point(k, p, dim) - Vec2(s.dq().block<2, 1>(3 * at->body, dim)));
+      });
 }
 
 // A joint's reaction as its rows make it: the generalized force -sum lambda_r J_r on one body
@@ -126,9 +104,9 @@ JointReaction change(const Context& c, const RowsReaction& r, int dim, const Eig
   }
   JointReaction out;
   out.at = c.s.point(c.k, r.a, dim);
-  for (size_t i = 0; i < r.cams.size(); ++i)
-    for (size_t e = 0; e < r.rows.size(); ++e)
-      if (r.rows[e] == r.cams[i]) out.contactN = -dl[e];
+  for (size_t e = 0; e < r.rows.size(); ++e)
+    for (int row : r.cams)
+      if (r.rows[e] == row) out.contactN = -dl[e];
   if (r.body < 0) return out;
   Eigen::Vector3d dG = Eigen::Vector3d::Zero();
   for (int col = 0; col < 3; ++col) {
@@ -308,6 +286,10 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
   const int ji = su.ji;
   const std::vector<int>& joints = su.joints;
   const std::vector<RowsReaction>& rows = su.rows;
+  if (isSpatial(m))
+    return out.status = Status::badModel(
+               "a counterweight's share of a reaction on a machine in space is not computed"),
+           out;
   const KinematicsState& st = internal::state(k);
   const int i = st.sys.bodyIndex(cw.body);
   if (i < 0) return out.status = Status::badModel("a counterweight on no moving body"), out;

@@ -16,6 +16,7 @@
 // the shaking force and moment do not depend on it.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -57,6 +58,16 @@ void shaking(const Kinematics& k, Vec3& forceN, Vec3& momentNm);
 // linkage/force_sensitivity.h).
 Eigen::VectorXd generalizedForces(const Kinematics& k);
 
+// Its change along a change of the motion (a dimension's: linkage/sensitivity.h's columns dq/dp,
+// dq'/dp, dq''/dp at k's pose, per radian of crank) that moves no mass in its body (each centre
+// stays where it is drawn) and no load's force: the centres' accelerations and the moment arms
+// turning with their bodies, and each point load's arm from its body's frame origin changing by
+// armMove(point) (in that frame's axes, as the generalized forces are). A machine in space's in
+// its plane classes' frames.
+Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Eigen::VectorXd& dq,
+                                        const Eigen::VectorXd& dqd, const Eigen::VectorXd& dqdd,
+                                        const std::function<Vec2(PointId)>& armMove);
+
 class ForceSolver {
  public:
   // For k's mechanism (its masses, gravity and loads): BadModel without a driver or when the
@@ -71,6 +82,20 @@ class ForceSolver {
  private:
   friend void shaking(const Kinematics& k, Vec3& forceN, Vec3& momentNm);
   friend Eigen::VectorXd generalizedForces(const Kinematics& k);
+  friend Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Eigen::VectorXd& dq,
+                                                 const Eigen::VectorXd& dqd,
+                                                 const Eigen::VectorXd& dqdd,
+                                                 const std::function<Vec2(PointId)>& armMove);
+
+  // Its change along a change of the motion (a dimension's: linkage/sensitivity.h's columns dq/dp,
+  // dq'/dp, dq''/dp at k's pose, per radian of crank) that moves no mass in its body (each centre
+  // stays where it is drawn) and no load's force: the centres' accelerations and the moment arms
+  // turning with their bodies, and each point load's arm from its body's frame origin changing by
+  // armMove(point) (in that frame's axes, as the generalized forces are). A machine in space's in
+  // its plane classes' frames.
+  Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Eigen::VectorXd& dq,
+                                          const Eigen::VectorXd& dqd, const Eigen::VectorXd& dqdd,
+                                          const std::function<Vec2(PointId)>& armMove);
   const Forces& overflowed(Forces& out);
   struct Impl;
   struct ImplDeleter {
