@@ -355,7 +355,12 @@ int sensitivity(Options o) {
     Kinematics k;
     if (int e = prepare(k, *m); e != kOk) return e;
     Sensitivity sens;
-    if (Status s = sens.prepare(k, dimensions(k.mechanism())); !s.ok()) {
+    // A reaction on a machine in space is in its plane class's frame, what the world's
+    // sensitivities compute (the others are refused there, by name).
+    const bool world = !o.force.empty() && isSpatial(k.mechanism());
+    if (Status s = sens.prepare(k, dimensions(k.mechanism()),
+                                world ? Sensitivity::Space::World : Sensitivity::Space::Refuse);
+        !s.ok()) {
       error("sensitivity: " + s.message);
       return exitFor(s);
     }

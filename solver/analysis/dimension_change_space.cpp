@@ -79,14 +79,15 @@ Status changeInSpace(Mechanism& m, const std::vector<Dimension>& dims,
 
 namespace {
 
-// The bodies of the state's system redrawn at coordinates q: each moving body's points and slot
-// ends (in its plane's coordinates, through its class's frame) by its rigid move from the
+// The bodies of the state's system redrawn at coordinates q: each moving body's points, slot
+// ends and centre of mass (in its plane's coordinates, through its class's frame) by its rigid
+// move from the
 // drawing; a body that q leaves where it is drawn (to rounding) keeps its numbers to the bit.
 // So the new drawing is closed: its rods' drawn lengths are the solve's.
 void redraw(Mechanism& m, const System& sys, const Eigen::VectorXd& q) {
   const PlaneClasses pc = planeClasses(m);
   for (int k = 0; k < sys.nBodies; ++k) {
-    const Body* b = m.body(sys.bodyIds[k]);
+    Body* b = m.body(sys.bodyIds[k]);
     if (!b) continue;
     const PlaneInClass& at = pc.of(b->plane);
     const Rot R = Rot::of(q[3 * k + 2]);
@@ -105,6 +106,11 @@ void redraw(Mechanism& m, const System& sys, const Eigen::VectorXd& q) {
         for (Vec2* e : {&s.p0, &s.p1}) *e = moved(*e);
     for (Slot& s : m.slots)
       if (s.body == b->id && s.mid) *s.mid = moved(*s.mid);
+    // Its mass goes with it (a centre of mass is drawn in sketch coordinates, as its points).
+    if (b->mass) {
+      b->mass->com = moved(b->mass->com);
+      for (PointMass& c : b->mass->counterweights) c.at = moved(c.at);
+    }
   }
 }
 

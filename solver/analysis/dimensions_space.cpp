@@ -68,6 +68,7 @@ void planeOrigins(const Mechanism& m, std::vector<Dimension>& out) {
   for (const Plane& f : *m.planes)
     for (int c = 0; c < 3; ++c) {
       Dimension d = named("planes." + f.name + ".origin" + kAxis[c], f.origin[c]);
+      d.carriesMasses = true;
       const Vec2 in(f.xAxis[c], f.yAxis[c]);
       const double along = f.normal()[c];
       for (const Body& b : m.bodies) {

@@ -484,7 +484,8 @@ Eigen::VectorXd generalizedForces(const Kinematics& k) {
 
 Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Eigen::VectorXd& dq,
                                         const Eigen::VectorXd& dqd, const Eigen::VectorXd& dqdd,
-                                        const std::function<Vec2(PointId)>& armMove) {
+                                        const std::function<Vec2(PointId)>& armMove,
+                                        const std::function<Vec2(int)>& comMove) {
   if (!k.valid() || !k.derivativesValid()) return Eigen::VectorXd();
   const KinematicsState& s = internal::state(k);
   ForceSolver::Impl d;
@@ -496,7 +497,8 @@ Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Eigen::Vector
     const ForceSolver::Impl::BodyMass& bm = *d.mass[i];
     // The centre's arm g = R c turns by dtheta; its acceleration w^2 (a + alpha perp(g) -
     // omega^2 g), per radian rates, changes with every term.
-    const Vec2 g = Rot::of(k.q()[3 * i + 2]) * bm.c, dg = dq[3 * i + 2] * perp(g);
+    const Vec2 g = Rot::of(k.q()[3 * i + 2]) * bm.c;
+    const Vec2 dg = dq[3 * i + 2] * perp(g) + (comMove ? comMove(i) : Vec2::Zero());
     const double w = k.dq()[3 * i + 2], alpha = k.ddq()[3 * i + 2];
     const double dw = dqd[3 * i + 2], dalpha = dqdd[3 * i + 2];
     const Vec2 acc = w2 * (Vec2(k.ddq().segment<2>(3 * i)) + alpha * perp(g) - w * w * g);

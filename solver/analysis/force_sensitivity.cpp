@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 
 #include "analysis/forces_jacobian.h"
@@ -22,11 +23,28 @@ namespace {
 // moves as its point less the origin.
 Eigen::VectorXd forcesChange(const Kinematics& k, const Sensitivity& s, int dim) {
   const System& sys = internal::state(k).sys;
+  const Mechanism& m = k.mechanism();
+  // A point's own move in its body (turned into the frame's axes): its move less the body's.
+  auto own = [&](PointId p) {
+    const PointLocation* at = sys.point(p);
+    const Vec2 arm = Rot::of(k.q()[3 * at->body + 2]) * at->s;
+    return Vec2(s.point(k, p, dim) - Vec2(s.dq().block<2, 1>(3 * at->body, dim)) -
+                s.dq()(3 * at->body + 2, dim) * perp(arm));
+  };
+  std::function<Vec2(int)> comMove;
+  if (s.dims()[dim].carriesMasses)  // every point of a body in the plane moves alike
+    comMove = [&](int body) {
+      for (const Point& p : m.points)
+        if (sys.bodyIndex(p.body) == body) return own(p.id);
+      return Vec2(Vec2::Zero());
+    };
   return generalizedForcesChange(
-      k, s.dq().col(dim), s.dqd().col(dim), s.dqdd().col(dim), [&](PointId p) {
+      k, s.dq().col(dim), s.dqd().col(dim), s.dqdd().col(dim),
+      [&](PointId p) {
         const PointLocation* at = sys.point(p);
         return Vec2(s.point(k, p, dim) - Vec2(s.dq().block<2, 1>(3 * at->body, dim)));
-      });
+      },
+      comMove);
 }
 
 // A joint's reaction as its rows make it: the generalized force -sum lambda_r J_r on one body
@@ -34,9 +52,9 @@ Eigen::VectorXd forcesChange(const Kinematics& k, const Sensitivity& s, int dim)
 // rows are the kinematics' (independent) ones.
 struct RowsReaction {
   int joint = -1;
-  std::vector<int> rows, cams;  // J's rows; of them, a cam's contact
-  int body = -1;                // the moving body it is read on
-  double flip = 1;              // -1: that body is the other side (a is on the ground)
+  std::vector<int> rows, cams, rods;  // J's rows; of them, a cam's contact, a ball rod's
+  int body = -1;                      // the moving body it is read on
+  double flip = 1;                    // -1: that body is the other side (a is on the ground)
   PointId a;
 };
 
@@ -53,6 +71,7 @@ std::string rowsOf(const KinematicsState& st, int ji, RowsReaction& out) {
       if (map[r.row + e] < 0) return "its rows are not independent";
       out.rows.push_back(map[r.row + e]);
       if (r.kind == Primitive::Cam) out.cams.push_back(map[r.row + e]);
+      if (r.kind == Primitive::Distance3) out.rods.push_back(map[r.row + e]);
     }
     if (out.body >= 0 && out.flip > 0) continue;
     // a on the ground: the reaction is what the other side bears, turned round.
@@ -90,6 +109,7 @@ JointReaction value(const Context& c, const RowsReaction& r) {
     out.coupleNm = r.flip * (G[2] - cross(out.at - origin, F)) / 1000;
   }
   for (int row : r.cams) out.contactN = -c.lambda[row];
+  for (int row : r.rods) out.axialN = c.lambda[row];  // the tension (analysis/space_forces.h)
   return out;
 }
 
@@ -104,9 +124,12 @@ JointReaction change(const Context& c, const RowsReaction& r, int dim, const Eig
   }
   JointReaction out;
   out.at = c.s.point(c.k, r.a, dim);
-  for (size_t e = 0; e < r.rows.size(); ++e)
+  for (size_t e = 0; e < r.rows.size(); ++e) {
     for (int row : r.cams)
       if (r.rows[e] == row) out.contactN = -dl[e];
+    for (int row : r.rods)
+      if (r.rows[e] == row) out.axialN = dl[e];
+  }
   if (r.body < 0) return out;
   Eigen::Vector3d dG = Eigen::Vector3d::Zero();
   for (int col = 0; col < 3; ++col) {
@@ -150,7 +173,6 @@ struct PointChange : PoseChange {
 // What cannot be differentiated here, named; "" when the joint's reaction can be.
 std::string refused(const Kinematics& k, const Forces& f) {
   const Mechanism& m = k.mechanism();
-  if (isSpatial(m)) return "a machine in space's reactions are not differentiated yet";
   if (!f.undetermined.empty())
     return "redundant joints: their reactions' shares are not determined, nor their derivatives";
   for (const Joint& j : m.joints)
@@ -249,7 +271,9 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
   out.reaction = su.reaction;
   out.force = out.reaction.force;
   Sensitivity s;
-  if (out.status = s.prepare(k, std::move(dims)); !out.status.ok()) return out;
+  const Sensitivity::Space world =
+      isSpatial(m) ? Sensitivity::Space::World : Sensitivity::Space::Refuse;
+  if (out.status = s.prepare(k, std::move(dims), world); !out.status.ok()) return out;
   if (out.status = s.at(k); !out.status.ok()) return out;
   out.dims = s.dims();
   const Context c = factored(k, s);

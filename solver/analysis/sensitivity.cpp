@@ -212,8 +212,8 @@ double lineChange(const Vec2& n0, const Vec2& dn0, const Moving::At& p, const Mo
 }
 
 // A ball rod's row: D = W_i - W_j in the world, each end lifted from its class frame; at the
-// pose Phi = V = A = 0, so dPhi = D . dD / l - dl, dV = (dD . D' + D . dD') / l and
-// dA = (2 D' . dD' + dD . D'' + D . dD'') / l.
+// pose Phi = V = A = 0, so dPhi = D . dD / l - dl, dV = (dD . D' + D . dD') / l - (D . D') dl / l
+// and dA = (2 D' . dD' + dD . D'' + D . dD'') / l.
 void distance3Change(const System& sys, const Row& r, const Moving::At& p, const Moving::At& q,
                      const RowMove& mv, RowChange& out) {
   const Plane &fi = sys.frames[r.frame[0]], &fj = sys.frames[r.frame[1]];
@@ -228,7 +228,8 @@ void distance3Change(const System& sys, const Row& r, const Moving::At& p, const
   const Vec3 a = lift(fi, p.a) - lift(fj, q.a), da = lift(fi, p.da) - lift(fj, q.da);
   const double l = r.c[0];
   out.phi[0] = D.dot(dD) / l - mv.l;
-  out.v[0] = (dD.dot(v) + D.dot(dv)) / l;
+  // (D . v = 0 for the motion's own rates; not for any w a multiplier's derivative holds.)
+  out.v[0] = (dD.dot(v) + D.dot(dv)) / l - D.dot(v) * mv.l / (l * l);
   out.a[0] = (2 * v.dot(dv) + dD.dot(a) + D.dot(da)) / l;
 }
 

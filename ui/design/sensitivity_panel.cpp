@@ -132,9 +132,10 @@ void SensitivityPanel::fillPoints() {
   });
   shakingAt_ = masses ? static_cast<int>(watched.size()) : -1;
   if (masses) watched << tr("shaking force");
-  // Each joint's reaction (named as linkage-cli dynamics names it): its force.
+  // Each joint's reaction (named as linkage-cli dynamics names it): its force (in its plane
+  // class's frame on a machine in space, as dynamics writes it).
   reactions_.clear();
-  for (size_t j = 0; j < m.joints.size() && masses && !isSpatial(m); ++j) {
+  for (size_t j = 0; j < m.joints.size() && masses; ++j) {
     reactions_.push_back(j);
     watched << tr("reaction at %1:%2")
                    .arg(QString::fromUtf8(kindOf(m.joints[j]).name),

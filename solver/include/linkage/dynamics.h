@@ -63,10 +63,12 @@ Eigen::VectorXd generalizedForces(const Kinematics& k);
 // stays where it is drawn) and no load's force: the centres' accelerations and the moment arms
 // turning with their bodies, and each point load's arm from its body's frame origin changing by
 // armMove(point) (in that frame's axes, as the generalized forces are). A machine in space's in
-// its plane classes' frames.
+// its plane classes' frames. comMove(body index), where given, moves a centre of mass in its body
+// (turned into the frame's axes): a plane's origin carries its bodies' masses.
 Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Eigen::VectorXd& dq,
                                         const Eigen::VectorXd& dqd, const Eigen::VectorXd& dqdd,
-                                        const std::function<Vec2(PointId)>& armMove);
+                                        const std::function<Vec2(PointId)>& armMove,
+                                        const std::function<Vec2(int)>& comMove = nullptr);
 
 class ForceSolver {
  public:
@@ -85,7 +87,8 @@ class ForceSolver {
   friend Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Eigen::VectorXd& dq,
                                                  const Eigen::VectorXd& dqd,
                                                  const Eigen::VectorXd& dqdd,
-                                                 const std::function<Vec2(PointId)>& armMove);
+                                                 const std::function<Vec2(PointId)>& armMove,
+                                                 const std::function<Vec2(int)>& comMove);
 
   // Its change along a change of the motion (a dimension's: linkage/sensitivity.h's columns dq/dp,
   // dq'/dp, dq''/dp at k's pose, per radian of crank) that moves no mass in its body (each centre

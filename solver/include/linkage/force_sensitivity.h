@@ -13,8 +13,10 @@
 // slider's normal force turns with its slot, a cam's contact force with its common normal. A
 // gear's, restated as a tooth force at its pitch point (a belt's as a run's pull) that its
 // pivots' pins carry, is differentiated through its kind's reactChange() (forward-mode, the same
-// formula: elements/gear.cpp). A planar machine's; redundant joints (their shares are not
-// determined) are refused by name.
+// formula: elements/gear.cpp). On a machine in space the in-plane reaction in its plane class's
+// frame and a ball rod's tension (axialN), from the world's sensitivities; not the out-of-plane
+// parts (normalN, tiltNm). Redundant joints (their shares are not determined) are refused by
+// name.
 #pragma once
 
 #include <vector>

@@ -75,6 +75,9 @@ struct Dimension {
   // In space: d(a moving point's depth along its plane's normal, a ground point's z) per unit.
   std::vector<std::pair<PointId, double>> depths;
   JointId lengthOf;  // a ball rod whose length it is
+  // A plane's origin: its bodies' centres of mass move with their points (every other dimension
+  // leaves each centre where it is drawn in its body).
+  bool carriesMasses = false;
   // A cam's: d(each segment's rise, the file's unit) and d(its base, mm) per unit; its roller
   // (camBase then d(base + roller), the base kept).
   JointId camOf;
