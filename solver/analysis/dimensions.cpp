@@ -33,6 +33,16 @@ Vec2 placed(const Vec2& u0, const Vec2& u1, double t0, double t1, const Vec2& m1
   return Vec2(b0 * u1.y() - b1 * u0.y(), u0.x() * b1 - u1.x() * b0) / det;
 }
 
+}  // namespace
+
+bool measuredAlongAcross(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const double len = (b - a).norm(), r0 = (c - a).norm(), r1 = (c - b).norm();
+  return !(r0 > 1e-9 * len && r1 > 1e-9 * len &&
+           std::abs(cross((c - a) / r0, (c - b) / r1)) > kOnLine);
+}
+
+namespace {
+
 void bodyDimensions(const Mechanism& m, const Body& body, std::vector<Dimension>& out) {
   std::vector<const Point*> p;
   for (const Point& q : m.points)
@@ -59,7 +69,7 @@ void bodyDimensions(const Mechanism& m, const Body& body, std::vector<Dimension>
     const Vec2 c = p[k]->pos;
     const double r0 = (c - a).norm(), r1 = (c - b).norm();
     const Vec2 u0 = (c - a) / r0, u1 = (c - b) / r1;
-    if (!(r0 > 1e-9 * len && r1 > 1e-9 * len && std::abs(cross(u0, u1)) > kOnLine)) {
+    if (measuredAlongAcross(a, b, c)) {
       Dimension along = distance(pre + p[k]->name + ".along", e.dot(c - a));
       along.points.push_back({p[k]->id, e});
       Dimension across = distance(pre + p[k]->name + ".across", cross(e, c - a));
