@@ -30,8 +30,9 @@ pose on MODEL's assembly branches.
   --vary DIM=LO:HI            a dimension to vary, and its bounds (repeatable)
   --target TARGET             (repeatable), each optionally followed by *WEIGHT (default 1):
      stroke:body.point=MM            the point's stroke (extremes over the turn along its default
-                                     direction: its ground slot's, else y)
-     position:body.point@DEG=X,Y     the point at crank angle DEG
+                                     direction: its ground slot's, else y; in space the world's y)
+     position:body.point@DEG=X,Y[,Z] the point at crank angle DEG (Z: a machine in space's world
+                                     z; without it x and y only)
      path:body.point=FILE.csv        the point's path through the points of FILE (x,y a line, an
                                      optional header): each one's distance to the nearest point of
                                      the curve over the turn; lines starting with # are comments
@@ -56,13 +57,17 @@ pose on MODEL's assembly branches.
   --out FILE                  write the optimised model (atomically)
 
 Output, CSV: quantity,name,before,after,target. A row a variable (variable,DIM); a row a target's
-measure: stroke_mm (body.point), x_mm and y_mm (body.point@DEG), path_rms_mm and path_max_mm (the
+measure: stroke_mm (body.point), x_mm and y_mm (and z_mm) (body.point@DEG), path_rms_mm and path_max_mm (the
 given points' distances to the curve), shaking_peak_N and shaking_peak_deg (fx, fy or force),
 force_peak_N and force_peak_deg (JOINT),
 clearance_least_mm and clearance_least_deg (clearance N), window_deg (NAME.start or NAME.end);
 a row a counterweight added (counterweight_kg,BODY: its mass, at the body's reach); the objective (mm^2, N^2, ...); the starts, those infeasible and
 those that found the best (within 1e-9 mm^2 + 1e-6 of it). A design infeasible as drawn leaves
 its before fields empty.
+
+A machine in space (planes, docs/spatial.md): any dimension `sensitivity` lists may vary (depths,
+ground z, ball rods' lengths, planes' origins); stroke and position targets, in the world; the
+other targets are refused by name (their derivatives in space are not computed yet).
 
 Exit status: 0 done, 1 the --out file could not be written, 2 bad input (an unknown dimension or
 point, bad bounds or target, no start that assembles and turns fully).
@@ -97,6 +102,7 @@ std::string table(const OptimizeSpec& spec, const std::vector<std::string>& name
     } else if (t.kind == OptTarget::Kind::Position) {
       row("x_mm", 0, formatNumber(t.at.x()));
       row("y_mm", 1, formatNumber(t.at.y()));
+      if (t.z) row("z_mm", 2, formatNumber(*t.z));
     } else if (t.kind == OptTarget::Kind::Transmission) {
       row("transmission_min_deg", 0, ">=" + formatNumber(t.limitDeg));
       row("transmission_max_deg", 1, "<=" + formatNumber(180 - t.limitDeg));

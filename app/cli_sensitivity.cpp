@@ -47,7 +47,7 @@ difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.ro
                        speed: columns dvx_mm_s_per_mm,dvy_mm_s_per_mm
   --acceleration       also its acceleration's, mm/s^2 per mm: dax_mm_s2_per_mm,day_mm_s2_per_mm
   --stroke             instead, the derivative of the point's stroke (along its ground slot,
-                       else y; limit positions to 1e-9 degree, the envelope theorem: each
+                       else y; on a machine in space the world's y; limit positions to 1e-9 degree, the envelope theorem: each
                        extreme moves by the point's own derivative there): CSV
                        dimension,dstroke_mm_per_mm, a row a dimension
   --clearance N        instead, the derivative of the least distance of the file's clearance N
@@ -88,7 +88,8 @@ y, z, columns dx_mm_per_mm,dy_mm_per_mm,dz_mm_per_mm (dvz, daz likewise); a body
 in its plane's coordinates, and after all the others each moving point's depth
 (body.P.depth, where written or at a ball rod's end), each ground point's z, each ball rod's
 length (ball-rod:A.P.length) and each plane's origin (planes.NAME.origin.x, .y, .z); a ground
-slot's offset and angle in its block's plane. --stroke, --clearance and --window refuse it.
+slot's offset and angle in its block's plane. --stroke is along the world's y, as `limits`
+measures it there; --clearance and --window refuse it.
 
 Not yet: a cam on a machine in space; a cam segment's end angle.
 
@@ -157,10 +158,11 @@ void writeByDimension(const char* column, const std::vector<Dimension>& dims,
   std::cout << out << std::flush;
 }
 
-// The stroke's derivatives (linkage/stroke_sensitivity.h), along the point's default direction.
+// The stroke's derivatives (linkage/stroke_sensitivity.h), along the point's default direction
+// (in space the world's +y).
 int stroke(const Kinematics& k, PointId p) {
   const StrokeSensitivity s =
-      strokeSensitivity(k, p, defaultDirection(k.mechanism(), p), dimensions(k.mechanism()));
+      strokeSensitivity(k, p, strokeDirection(k.mechanism(), p), dimensions(k.mechanism()));
   if (!s.status.ok()) {
     error("sensitivity: " + s.status.message);
     return exitFor(s.status);
@@ -381,10 +383,7 @@ int sensitivity(Options o) {
     return exitFor(s);
   }
   Sensitivity sens;
-  // The stroke's own analysis refuses a machine in space (stroke_sensitivity.h).
-  if (Status s = sens.prepare(k, dimensions(k.mechanism()),
-                              o.stroke ? Sensitivity::Space::Refuse : Sensitivity::Space::World);
-      !s.ok()) {
+  if (Status s = sens.prepare(k, dimensions(k.mechanism()), Sensitivity::Space::World); !s.ok()) {
     error("sensitivity: " + s.message);
     return exitFor(s);
   }

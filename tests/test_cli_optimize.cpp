@@ -59,6 +59,37 @@ TEST_F(OptimizeCli, Seed001StrokeAdjustmentFindsTheAlpha35Pivot) {
   EXPECT_NE(again.out.find("min,0,107.47500040094"), std::string::npos) << again.out;
 }
 
+// Machines in space: the overedge machine's needle stroke (along the world's y, as `limits`
+// measures it there) met by its rocker's arm, the design written and measured again; the RSSR's
+// rocker point put at a world x, y, z by its arm and its crank ball's depth (the z_mm row).
+TEST_F(OptimizeCli, MachinesInSpaceMeetStrokeAndPositionTargets) {
+  const std::string out = (dir_ / "overedge.linkage.json").string();
+  test::CliResult r =
+      run("optimize overedge-machine --vary needlerock.H-B=20:40 --target stroke:needlearm.N=21 "
+          "--starts 2 --out '" +
+          out + "'");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  auto t = rows(r);
+  EXPECT_NEAR(*parseNumber(t["stroke_mm,needlearm.N"][0]), 20.090055230857999, 1e-9);
+  EXPECT_NEAR(*parseNumber(t["stroke_mm,needlearm.N"][1]), 21, 1e-9);
+  const test::CliResult again = run("limits '" + out + "' --point needlearm.N");
+  ASSERT_EQ(again.exit, 0) << again.err;
+  const std::string stroke = again.lines().back();
+  ASSERT_EQ(stroke.rfind("stroke,,", 0), 0u) << again.out;
+  EXPECT_NEAR(*parseNumber(stroke.substr(8)), 21, 1e-9);
+  r =
+      run("optimize rssr-crank-rocker --vary rocker.H-C=20:40 --vary crank.A.depth=0:20 "
+          "--target position:rocker.C@90=0,-28,76 --starts 2");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  t = rows(r);
+  EXPECT_NEAR(*parseNumber(t["y_mm,rocker.C@90"][1]), -28, 1e-9);
+  EXPECT_NEAR(*parseNumber(t["z_mm,rocker.C@90"][1]), 76, 1e-9);
+  EXPECT_EQ(t["z_mm,rocker.C@90"][2], "76");
+  r = run("optimize rssr-crank-rocker --vary rocker.H-C=20:40 --target 'shaking:fx<=0'");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("a shaking target on a machine in space"), std::string::npos) << r.err;
+}
+
 TEST_F(OptimizeCli, BadDimensionOrTargetIsNamedWithExit2) {
   const std::string m = "four-bar-crank-rocker";
   struct Case {

@@ -15,6 +15,7 @@
 #include "linkage/io/numbers.h"
 #include "linkage/sensitivity.h"
 #include "linkage/shaking_sensitivity.h"
+#include "linkage/stroke_sensitivity.h"
 #include "linkage/tables/force_table.h"
 #include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
@@ -355,12 +356,36 @@ TEST_F(SensitivityCli, BadInputIsNamed) {
   res = run("sensitivity " + model + " --point coupler.P --steps 0");
   EXPECT_EQ(res.exit, 2);
   EXPECT_NE(res.err.find("--steps"), std::string::npos) << res.err;
-  // A machine in space: its stroke is not differentiated yet, and says so.
-  res = run("sensitivity rssr-crank-rocker --point rocker.C --stroke");
-  EXPECT_EQ(res.exit, 2);
-  EXPECT_NE(res.err.find("spatial model"), std::string::npos) << res.err;
-  EXPECT_NE(res.err.find("linkage-cli sensitivity --point"), std::string::npos) << res.err;
-  EXPECT_TRUE(res.out.empty()) << res.out;
+}
+
+// A machine in space: the stroke along the world's +y (as `limits` measures it there), a row a
+// dimension, the library's strokeSensitivity to the last bit (tests/test_stroke_sensitivity_space
+// checks that against the RSSR's closed form), its rod and plane among the dimensions.
+TEST_F(SensitivityCli, AMachineInSpacesStrokeIsAlongTheWorldsY) {
+  const test::CliResult res = run("sensitivity rssr-crank-rocker --point rocker.C --stroke");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const Mechanism m =
+      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/rssr-crank-rocker.linkage.json")
+          .mechanism.value();
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const StrokeSensitivity s =
+      strokeSensitivity(k, *m.findPoint("rocker.C"), Vec3(0, 1, 0), dimensions(m));
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  const std::vector<std::string> lines = res.lines();
+  ASSERT_EQ(lines.size(), 1 + s.dims.size()) << res.out;
+  EXPECT_EQ(lines[0], "dimension,dstroke_mm_per_mm");
+  bool rod = false;
+  for (size_t d = 0; d < s.dims.size(); ++d) {
+    const std::vector<std::string> row = split(lines[1 + d], ',');
+    ASSERT_EQ(row.size(), 2u);
+    EXPECT_EQ(row[0], s.dims[d].name);
+    EXPECT_EQ(parseNumber(row[1]), s.derivative[d]) << row[0];
+    rod = rod || (row[0] == "ball-rod:crank.A.length" && s.derivative[d] != 0);
+  }
+  EXPECT_TRUE(rod);
+  EXPECT_NE(res.err.find("stroke " + formatNumber(s.limits.stroke) + " mm"), std::string::npos)
+      << res.err;
 }
 
 // A machine in space: the point's world x, y, z (and their rates') derivatives, the library's

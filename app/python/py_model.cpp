@@ -253,7 +253,7 @@ std::vector<std::pair<std::string, Vec3>> Model::sensitivity(const std::string& 
 std::vector<std::pair<std::string, double>> Model::strokeSensitivity(
     const std::string& point) const {
   const PointId p = pointNamed(point);
-  const StrokeSensitivity s = linkage::strokeSensitivity(base_, p, defaultDirection(design_, p),
+  const StrokeSensitivity s = linkage::strokeSensitivity(base_, p, strokeDirection(design_, p),
                                                          linkage::dimensions(design_));
   raise(s.status);
   std::vector<std::pair<std::string, double>> out;

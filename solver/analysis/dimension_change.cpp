@@ -5,13 +5,13 @@
 #include <cmath>
 #include <map>
 
-#include "analysis/body_points.h"
 #include "analysis/dimension_change_space.h"
 #include "linkage/cam_edits.h"
 #include "linkage/cam_joint.h"
 #include "linkage/elements.h"
 #include "linkage/gear.h"
 #include "linkage/guide.h"
+#include "linkage/sensitivity.h"
 #include "linkage/space.h"
 
 namespace linkage {
@@ -63,9 +63,9 @@ Status changeBody(Mechanism& m, const Body& body, const Changes& c) {
         !c.count(pre + p[0]->name + "-" + p[k]->name) &&
         !c.count(pre + p[1]->name + "-" + p[k]->name))
       continue;
-    if (alongAndAcross(a, b, q)) {
-      // Placed along and across P0->P1 (whose direction no dimension turns), as the dimensions
-      // give it (a change of P0-P1 moves it not).
+    if (c.count(along) || c.count(pre + p[k]->name + ".across") || measuredAlongAcross(a, b, q)) {
+      // Placed along and across P0->P1 (whose direction no dimension turns): so is a point
+      // dimensions() measures so when P0-P1 changes (its distances would not meet again).
       p[k]->pos = a + (e.dot(q - a) + changeOf(c, along)) * e +
                   (cross(e, q - a) + changeOf(c, pre + p[k]->name + ".across")) * perp(e);
       continue;

@@ -1,7 +1,6 @@
 // The dimensions of a mechanism and what each moves (linkage/sensitivity.h).
 #include <cmath>
 
-#include "analysis/body_points.h"
 #include "analysis/dimensions_space.h"
 #include "linkage/cam_edits.h"
 #include "linkage/cam_joint.h"
@@ -14,6 +13,10 @@
 namespace linkage {
 
 namespace {
+
+// Seen from Pk, P0 and P1 closer than this to one line (rad): two distances do not place Pk
+// well (their sensitivities grow as 1 / this), so it is placed along and across P0->P1.
+constexpr double kOnLine = 1e-3;
 
 Dimension distance(const std::string& name, double value) {
   Dimension d;
@@ -29,6 +32,16 @@ Vec2 placed(const Vec2& u0, const Vec2& u1, double t0, double t1, const Vec2& m1
   const double b0 = t0, b1 = t1 + u1.dot(m1);
   return Vec2(b0 * u1.y() - b1 * u0.y(), u0.x() * b1 - u1.x() * b0) / det;
 }
+
+}  // namespace
+
+bool measuredAlongAcross(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const double len = (b - a).norm(), r0 = (c - a).norm(), r1 = (c - b).norm();
+  return !(r0 > 1e-9 * len && r1 > 1e-9 * len &&
+           std::abs(cross((c - a) / r0, (c - b) / r1)) > kOnLine);
+}
+
+namespace {
 
 void bodyDimensions(const Mechanism& m, const Body& body, std::vector<Dimension>& out) {
   std::vector<const Point*> p;
@@ -56,7 +69,7 @@ void bodyDimensions(const Mechanism& m, const Body& body, std::vector<Dimension>
     const Vec2 c = p[k]->pos;
     const double r0 = (c - a).norm(), r1 = (c - b).norm();
     const Vec2 u0 = (c - a) / r0, u1 = (c - b) / r1;
-    if (alongAndAcross(a, b, c)) {
+    if (measuredAlongAcross(a, b, c)) {
       Dimension along = distance(pre + p[k]->name + ".along", e.dot(c - a));
       along.points.push_back({p[k]->id, e});
       Dimension across = distance(pre + p[k]->name + ".across", cross(e, c - a));

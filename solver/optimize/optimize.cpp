@@ -12,6 +12,8 @@
 #include "linkage/edits.h"
 #include "linkage/limits.h"
 #include "linkage/sensitivity.h"
+#include "linkage/space.h"
+#include "linkage/stroke_sensitivity.h"
 #include "linkage/transmission.h"
 #include "linkage/transmission_sensitivity.h"
 #include "optimize/variables.h"
@@ -55,6 +57,9 @@ struct Probe {
   PointId point;
   size_t index = 0;        // a path's given point
   double angleWeight = 0;  // Transmission: d objective = angleWeight . d mu (degrees)
+  // On a machine in space, instead of weightOfDp: d objective = weightOfDp3 . dP/dp, P the
+  // point's world position.
+  Vec3 weightOfDp3 = Vec3::Zero();
 };
 
 // A dyad's angle between C->P1 and C->P2 (degrees, 0 to 180), and its derivative along the
@@ -124,7 +129,7 @@ Status nearestPoints(const Kinematics& k, const OptTarget& t, int steps, std::ve
 
 // The targets' residuals at the design k: the objective, the measures, and the probes that give
 // the gradient.
-Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec2* strokeDirs,
+Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec3* strokeDirs,
                  const opt::Variables& vars, const std::vector<double>& x, Sensitivity* sens,
                  Evaluation& e, std::vector<Probe>& probes) {
   e.measures.assign(spec.targets.size(), {});
@@ -133,13 +138,18 @@ Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec2* stro
     if (t.kind == OptTarget::Kind::Stroke) {
       LimitOptions lo;
       lo.steps = spec.steps;
-      const Limits l = findLimits(k, LimitMeasure::along(t.point, strokeDirs[i]), lo);
+      const Limits l = findLimits(k, LimitMeasure::alongInSpace(t.point, strokeDirs[i]), lo);
       if (!l.status.ok()) return l.status;
       const double r = l.stroke - t.stroke;
       e.objective += t.weight * r * r;
       e.measures[i] = {l.stroke};
-      probes.push_back({l.maxDeg, i, 2 * t.weight * r * strokeDirs[i], t.point});
-      probes.push_back({l.minDeg, i, -2 * t.weight * r * strokeDirs[i], t.point});
+      // A planar machine's direction has z 0: its weights are the plane's.
+      const Vec3 w = 2 * t.weight * r * strokeDirs[i];
+      const bool space = isSpatial(k.mechanism());
+      probes.push_back({l.maxDeg, i, space ? Vec2::Zero() : Vec2(w.head<2>()), t.point, 0, 0,
+                        space ? w : Vec3::Zero()});
+      probes.push_back({l.minDeg, i, space ? Vec2::Zero() : Vec2(-w.head<2>()), t.point, 0, 0,
+                        space ? Vec3(-w) : Vec3::Zero()});
     } else if (t.kind == OptTarget::Kind::Position) {
       probes.push_back(
           {std::fmod(std::fmod(t.crankDeg, 360) + 360, 360), i, Vec2::Zero(), t.point});
@@ -162,6 +172,18 @@ Status residuals(const Kinematics& k, const OptimizeSpec& spec, const Vec2* stro
   return Status::success();
 }
 
+// A position target on a machine in space at the walker's pose: the point's world x, y (and z
+// when the target gives one) against the target's.
+void spacePosition(const Kinematics& walker, const OptTarget& t, Evaluation& e, Probe& p) {
+  const Vec3 at = walker.motionInSpace(p.point).position;
+  Vec3 r = at - Vec3(t.at.x(), t.at.y(), t.z.value_or(at.z()));
+  if (!t.z) r.z() = 0;
+  e.objective += t.weight * r.squaredNorm();
+  e.measures[p.target] = {at.x(), at.y()};
+  if (t.z) e.measures[p.target].push_back(at.z());
+  p.weightOfDp3 = 2 * t.weight * r;
+}
+
 // Walks the probes in crank order on one copy of k: the pose-dependent residuals (positions,
 // path distances) and every probe's gradient from the exact dP/dp.
 Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, const opt::Variables& vars,
@@ -171,11 +193,14 @@ Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, const opt::Vari
   std::vector<double> sumSq(spec.targets.size(), 0), largest(spec.targets.size(), 0);
   Kinematics walker = k;
   const std::vector<TransmissionJoint> joints = transmissionJoints(k.mechanism());
+  const bool space = isSpatial(k.mechanism());
   for (Probe& p : probes) {
     if (Status s = walker.moveTo(p.deg); !s.ok()) return s;
     const OptTarget& t = spec.targets[p.target];
     const Vec2 at = walker.position(p.point);
-    if (t.kind == OptTarget::Kind::Position) {
+    if (t.kind == OptTarget::Kind::Position && space) {
+      spacePosition(walker, t, e, p);
+    } else if (t.kind == OptTarget::Kind::Position) {
       const Vec2 r = at - t.at;
       e.objective += t.weight * r.squaredNorm();
       e.measures[p.target] = {at.x(), at.y()};
@@ -187,7 +212,9 @@ Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, const opt::Vari
       largest[p.target] = std::max(largest[p.target], r.norm());
       p.weightOfDp = 2 * t.weight * r;
     }
-    if (!sens || vars.dims.empty() || (p.angleWeight == 0 && p.weightOfDp.isZero())) continue;
+    if (!sens || vars.dims.empty() ||
+        (p.angleWeight == 0 && p.weightOfDp.isZero() && p.weightOfDp3.isZero()))
+      continue;
     if (Status s = sens->at(walker); !s.ok()) return s;
     for (size_t v = 0; v < e.gradient.size(); ++v) {
       const int dim = vars.dim[v];
@@ -196,6 +223,8 @@ Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, const opt::Vari
         double d = 0;
         dyadAngle(walker, joints[t.joint], sens, dim, &d);
         e.gradient[v] += p.angleWeight * d;
+      } else if (space) {
+        e.gradient[v] += p.weightOfDp3.dot(sens->point3(walker, p.point, dim));
       } else {
         e.gradient[v] += p.weightOfDp.dot(sens->point(walker, p.point, dim));
       }
@@ -225,15 +254,15 @@ Evaluation evaluate(const Kinematics& base, const OptimizeSpec& spec, const std:
   Evaluation e;
   Kinematics k;
   if (!solveDesign(base, spec, x, k, e.why)) return e;
-  std::vector<Vec2> dirs;
+  std::vector<Vec3> dirs;
   for (const OptTarget& t : spec.targets)
-    dirs.push_back(t.point ? defaultDirection(base.mechanism(), t.point) : Vec2(0, 1));
+    dirs.push_back(t.point ? strokeDirection(base.mechanism(), t.point) : Vec3(0, 1, 0));
   // Every design turns fully: a target read at one angle does not make a locking design good.
   LimitOptions lo;
   lo.steps = std::max(4, spec.steps / 8);
   const PointId turn = turnPoint(spec, base.mechanism());
-  if (Limits l =
-          findLimits(k, LimitMeasure::along(turn, defaultDirection(base.mechanism(), turn)), lo);
+  if (Limits l = findLimits(
+          k, LimitMeasure::alongInSpace(turn, strokeDirection(base.mechanism(), turn)), lo);
       !l.status.ok()) {
     e.why = l.status.message;
     return e;
@@ -247,7 +276,10 @@ Evaluation evaluate(const Kinematics& base, const OptimizeSpec& spec, const std:
   if (ds.ok() && withGradient) {
     e.gradient.assign(spec.variables.size(), 0);
     e.peakGradient.assign(spec.variables.size(), 0);
-    if (!vars.dims.empty()) ds = sens.prepare(k, vars.dims);
+    if (!vars.dims.empty())
+      ds = sens.prepare(
+          k, vars.dims,
+          isSpatial(k.mechanism()) ? Sensitivity::Space::World : Sensitivity::Space::Refuse);
   }
   if (!ds.ok()) {
     e.why = ds.message;

@@ -11,6 +11,7 @@
 #include "linkage/elements.h"
 #include "linkage/optimize.h"
 #include "linkage/sensitivity.h"
+#include "linkage/space.h"
 #include "linkage/transmission.h"
 #include "optimize/variables.h"
 
@@ -164,16 +165,42 @@ Status checkWatched(const Mechanism& m, const OptTarget& t) {
   return Status::success();
 }
 
+// What a target may be on a machine in space (a stroke, a position with or without z) and on a
+// planar one (a position without z).
+Status checkSpace(bool space, const OptTarget& t) {
+  using K = OptTarget::Kind;
+  if (!space) {
+    if (t.kind == K::Position && t.z)
+      return Status::badModel(
+          "a position's z is of a machine in space (planes); this one is "
+          "planar: give x, y");
+    return Status::success();
+  }
+  if (t.kind == K::Position && !(t.at.allFinite() && std::isfinite(t.z.value_or(0))))
+    return Status::badModel("a position target's coordinates must be numbers");
+  if (t.kind == K::Stroke || t.kind == K::Position) return Status::success();
+  static const char* names[] = {"stroke",  "position",  "path",   "transmission",
+                                "shaking", "clearance", "window", "force"};
+  return Status::badModel(
+      std::string("a ") + names[static_cast<int>(t.kind)] +
+      " target on a machine in space (planes) is not optimised yet (its "
+      "derivatives in space are not computed): stroke and position targets are");
+}
+
 double uniform(std::mt19937_64& g) {
   return static_cast<double>(g() >> 11) * 0x1.0p-53;
 }
 
 Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<double>& before) {
   if (!base.valid()) return Status::badModel("no mechanism is loaded");
-  // What the sensitivities cannot differentiate yet (a spatial model, a cam) is said once here,
-  // not found infeasible at every start.
+  // What the sensitivities cannot differentiate yet (a cam, and in space what is not in the
+  // world's sensitivities) is said once here, not found infeasible at every start.
+  const bool space = isSpatial(base.mechanism());
   Sensitivity probe;
-  if (Status s = probe.prepare(base, {}); !s.ok()) return Status::badModel(s.message);
+  if (Status s =
+          probe.prepare(base, {}, space ? Sensitivity::Space::World : Sensitivity::Space::Refuse);
+      !s.ok())
+    return Status::badModel(s.message);
   if (spec.variables.empty()) return Status::badModel("no dimension to vary");
   if (spec.targets.empty()) return Status::badModel("no target");
   if (spec.starts < 1 || spec.steps < 4) return Status::badModel("starts >= 1, steps >= 4");
@@ -187,6 +214,7 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
     before.push_back(vars.dim[i] >= 0 ? vars.dims[vars.dim[i]].value : 0.0);
   }
   for (const OptTarget& t : spec.targets) {
+    if (Status s = checkSpace(space, t); !s.ok()) return s;
     if (Status s = checkWatched(base.mechanism(), t); !s.ok()) return s;
     const bool named = t.kind == OptTarget::Kind::Shaking || t.kind == OptTarget::Kind::Force ||
                        t.kind == OptTarget::Kind::Clearance || t.kind == OptTarget::Kind::Window;

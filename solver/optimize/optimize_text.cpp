@@ -20,6 +20,20 @@ std::optional<Vec2> parsePair(const std::string& s) {
   return Vec2(*x, *y);
 }
 
+// X,Y or X,Y,Z: the position target's point; nullopt else.
+std::optional<std::vector<double>> parseCoordinates(const std::string& s) {
+  std::vector<double> out;
+  size_t from = 0;
+  for (size_t comma = 0; comma != std::string::npos; from = comma + 1) {
+    comma = s.find(',', from);
+    const std::optional<double> v = parseNumber(s.substr(from, comma - from));
+    if (!v) return std::nullopt;
+    out.push_back(*v);
+  }
+  if (out.size() != 2 && out.size() != 3) return std::nullopt;
+  return out;
+}
+
 // FILE.csv: x,y a line; a first line that is not two numbers is a header.
 bool readPath(const std::string& file, std::vector<Vec2>& out, std::string& why) {
   std::ifstream in(file);
@@ -179,11 +193,13 @@ bool parseOptTarget(const Mechanism& m, std::string text, OptTarget& t, std::str
   if (kind == "position") {
     const size_t at = point.find('@');
     auto deg = at == std::string::npos ? std::nullopt : parseNumber(point.substr(at + 1));
-    std::optional<Vec2> xy = parsePair(value);
-    if (!deg || !xy) return why += "expected position:body.point@DEG=X,Y", false;
+    const std::optional<std::vector<double>> xyz = parseCoordinates(value);
+    if (!deg || !xyz)
+      return why += "expected position:body.point@DEG=X,Y (X,Y,Z on a machine in space)", false;
     t.kind = OptTarget::Kind::Position;
     t.crankDeg = *deg;
-    t.at = *xy;
+    t.at = Vec2((*xyz)[0], (*xyz)[1]);
+    if (xyz->size() == 3) t.z = (*xyz)[2];
     point = point.substr(0, at);
   } else if (kind == "stroke") {
     auto mm = parseNumber(value);

@@ -187,6 +187,11 @@ def test_stroke_shaking_and_force_sensitivities_are_the_command_lines():
     out = cli("sensitivity", "drop-feed", "--point", "feedbar.D", "--stroke").stdout
     want = {r[0]: float(r[1]) for r in list(csv.reader(io.StringIO(out)))[1:]}
     assert {k: v + 0.0 for k, v in m.stroke_sensitivity("feedbar.D").items()} == want
+    # A machine in space: along the world's y, as the command line takes it there.
+    out = cli("sensitivity", "rssr-crank-rocker", "--point", "rocker.C", "--stroke").stdout
+    want = {r[0]: float(r[1]) for r in list(csv.reader(io.StringIO(out)))[1:]}
+    got = linkage.load("rssr-crank-rocker").stroke_sensitivity("rocker.C")
+    assert {k: v + 0.0 for k, v in got.items()} == want and want["ball-rod:crank.A.length"] != 0
     out = cli("sensitivity", "drop-feed", "--shaking", "--steps", "6").stdout
     assert zero_signed(m.shaking_sensitivity(120)) == rows_at(out, 120, 2)
     out = cli("sensitivity", "drop-feed", "--force", "pin:ground.L", "--steps", "6").stdout

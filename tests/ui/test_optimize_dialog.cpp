@@ -4,6 +4,7 @@
 // stroke 2 r: a stroke of 34 mm is a crank of 17 mm.
 #include <gtest/gtest.h>
 
+#include <QComboBox>
 #include <QFile>
 #include <QTemporaryDir>
 
@@ -65,6 +66,58 @@ TEST(OptimizeDialog, AStrokeMetByTheCrankIsOneUndoStep) {
   EXPECT_FALSE(dialog.result());  // the design changed: the result was of the one before
   doc.undoStack()->undo();
   EXPECT_EQ(crank(doc.design()), 15);
+}
+
+// A machine in space (issue 29): the RSSR's rocker stroke (along the world's y, as `limits`
+// measures it there) met by its ball rod's length, applied and measured again on the document;
+// its rocker point put at a world x, y, z by its arm and its crank ball's depth, the z shown.
+TEST(OptimizeDialog, AMachineInSpaceTakesStrokeAndPositionTargets) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("rssr-crank-rocker")), nullptr));
+  OptimizeDialog dialog(&doc);
+  dialog.show();
+  ASSERT_TRUE(dialog.vary("ball-rod:crank.A.length", 78, 86));
+  ASSERT_TRUE(dialog.addStrokeTarget("rocker.C", 0.3));
+  QSignalSpy done(&dialog, &OptimizeDialog::finished);
+  dialog.find();
+  ASSERT_TRUE(done.wait(20000));
+  ASSERT_TRUE(dialog.result() && dialog.result()->status.ok()) << dialog.summary();
+  EXPECT_NEAR(dialog.result()->atAfter.measures.at(0).at(0), 0.3, 1e-9);
+  ASSERT_TRUE(dialog.apply());
+  ASSERT_TRUE(doc.solved());
+  const PointId C = *doc.design().findPoint("rocker.C");
+  EXPECT_NEAR(findLimits(doc.kinematics(), LimitMeasure::alongInSpace(C, Vec3(0, 1, 0))).stroke,
+              0.3, 1e-9);
+  doc.undoStack()->undo();
+
+  OptimizeDialog at(&doc);
+  at.show();
+  // Add Target's position on a machine in space: the world's x, y, z as they are.
+  at.findChild<QPushButton*>("optAddTarget")->click();
+  auto* targets = at.findChild<QTableWidget*>("optTargets");
+  ASSERT_EQ(targets->rowCount(), 1);
+  auto* kinds = qobject_cast<QComboBox*>(targets->cellWidget(0, 0));
+  ASSERT_TRUE(kinds);
+  kinds->setCurrentIndex(static_cast<int>(OptTarget::Kind::Position));
+  EXPECT_EQ(targets->item(0, 2)->text().count(QLatin1Char(',')), 2) << targets->item(0, 2)->text();
+  targets->removeRow(0);
+  ASSERT_TRUE(at.vary("rocker.H-C", 20, 40));
+  ASSERT_TRUE(at.vary("crank.A.depth", 0, 20));
+  ASSERT_TRUE(at.addTarget(OptTarget::Kind::Position, "rocker.C", "0, -28, 76", 90));
+  QSignalSpy found(&at, &OptimizeDialog::finished);
+  at.find();
+  ASSERT_TRUE(found.wait(20000));
+  ASSERT_TRUE(at.result() && at.result()->status.ok()) << at.summary();
+  const Measure& m = at.result()->atAfter.measures.at(0);
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_NEAR(m[1], -28, 1e-9);
+  EXPECT_NEAR(m[2], 76, 1e-9);
+  auto* table = at.findChild<QTableWidget*>("optResult");
+  bool z = false;
+  for (int r = 0; r < table->rowCount(); ++r)
+    z = z || table->item(r, 0)->text() == QStringLiteral("z of rocker.C at crank 90° (mm)");
+  EXPECT_TRUE(z);
+  shot(&at, "optimize_dialog_space");
 }
 
 TEST(OptimizeDialog, WhatIsNotASearchIsSaid) {

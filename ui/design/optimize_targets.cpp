@@ -7,6 +7,8 @@
 #include "document/document.h"
 #include "linkage/limits.h"
 #include "linkage/optimize_text.h"
+#include "linkage/space.h"
+#include "linkage/stroke_sensitivity.h"
 #include "linkage/transmission.h"
 
 namespace linkage::ui {
@@ -66,7 +68,9 @@ QString valueUsage(K kind) {
     case K::Stroke:
       return QObject::tr("the stroke is a number >= 0 (mm)");
     case K::Position:
-      return QObject::tr("the position is two numbers x, y (mm) at a crank angle");
+      return QObject::tr(
+          "the position is two numbers x, y (mm) at a crank angle (on a machine "
+          "in space x, y or x, y, z in the world)");
     case K::Path:
       return QObject::tr("the path is a CSV file of points x,y (mm)");
     case K::Transmission:
@@ -179,7 +183,12 @@ QString OptimizeTargets::defaultValue(OptTarget::Kind kind, const QString& of) c
   const std::optional<PointId> p = m.findPoint(of.toStdString());
   if (kind == K::Stroke && p && doc_->solved())
     return number(
-        findLimits(doc_->kinematics(), LimitMeasure::along(*p, defaultDirection(m, *p))).stroke);
+        findLimits(doc_->kinematics(), LimitMeasure::alongInSpace(*p, strokeDirection(m, *p)))
+            .stroke);
+  if (kind == K::Position && p && doc_->solved() && isSpatial(m)) {  // the world's x, y, z
+    const Vec3 at = doc_->kinematics().motionInSpace(*p).position;
+    return QStringLiteral("%1, %2, %3").arg(number(at.x()), number(at.y()), number(at.z()));
+  }
   if (kind == K::Position && p && doc_->solved()) {
     const Vec2 at = doc_->kinematics().position(*p);
     return QStringLiteral("%1, %2").arg(number(at.x()), number(at.y()));
@@ -243,10 +252,12 @@ bool OptimizeTargets::readRow(int r, OptTarget& t, QString* why) const {
       return true;
     case K::Position: {
       const QStringList xy = value.split(QLatin1Char(','));
-      bool okX = false, okY = false;
-      if (xy.size() == 2)
+      bool okX = false, okY = false, okZ = true;
+      if (xy.size() == 2 || xy.size() == 3)
         t.at = Vec2(xy[0].trimmed().toDouble(&okX), xy[1].trimmed().toDouble(&okY));
-      if (!okX || !okY || !t.at.allFinite() || !readNumber(item(r, Crank), t.crankDeg))
+      if (xy.size() == 3) t.z = xy[2].trimmed().toDouble(&okZ);
+      if (!okX || !okY || !okZ || !t.at.allFinite() || !std::isfinite(t.z.value_or(0)) ||
+          !readNumber(item(r, Crank), t.crankDeg))
         return fail(valueUsage(kind));
       return true;
     }
@@ -313,6 +324,8 @@ std::vector<MeasureRow> measureRows(const Mechanism& m, const OptTarget& t, cons
       for (size_t c = 0; c < 2; ++c)
         add(QObject::tr("%1 of %2 at crank %3° (mm)").arg(c ? "y" : "x", p).arg(t.crankDeg), c,
             number(t.at[static_cast<int>(c)]));
+      if (t.z)
+        add(QObject::tr("z of %1 at crank %2° (mm)").arg(p).arg(t.crankDeg), 2, number(*t.z));
       break;
     case K::Path:
       add(QObject::tr("rms distance of the path's %1 points to %2's curve (mm)")

@@ -196,7 +196,7 @@ void SensitivityPanel::compute() {
   offerZ(isSpatial(k.mechanism()));
   const int quantity = quantity_->currentIndex(), which = component_->currentIndex();
   Sensitivity s;
-  // The world's x, y, z (a machine in space's too); a stroke refuses space by itself.
+  // The world's x, y, z (a machine in space's too); a stroke in space is along the world's y.
   if (Status st = s.prepare(k, dimensions(k.mechanism()), Sensitivity::Space::World); !st.ok()) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
     return;
@@ -284,7 +284,7 @@ void SensitivityPanel::rank() {
 
 void SensitivityPanel::strokeBars(const Kinematics& k, PointId p) {
   const StrokeSensitivity s =
-      strokeSensitivity(k, p, defaultDirection(k.mechanism(), p), dimensions(k.mechanism()));
+      strokeSensitivity(k, p, strokeDirection(k.mechanism(), p), dimensions(k.mechanism()));
   if (!s.status.ok()) {
     showNothing(QString::fromStdString(s.status.message));
     return;

@@ -10,9 +10,16 @@
 // the editor is), and tracked through a full turn of the crank. A design that does not assemble,
 // or whose crank does not turn fully, is infeasible: the optimiser sees a penalty above every
 // feasible value tried, never a NaN.
+//
+// On a machine in space (planes, docs/spatial.md) every dimension may vary (depths, ground z,
+// ball rods' lengths, planes' origins too: changeDimensions sets them exactly), the gradient is
+// the world's (Sensitivity::Space::World), and the targets are a stroke (along the world's +y,
+// strokeDirection in linkage/stroke_sensitivity.h) and a position (world x, y and, if given, z);
+// the others are refused by name (their derivatives in space are not computed yet).
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,10 +57,11 @@ struct OptTarget {
   enum class Kind { Stroke, Position, Path, Transmission, Shaking, Clearance, Window, Force };
   Kind kind = Kind::Stroke;
   PointId point;
-  double stroke = 0;       // Stroke: mm, along defaultDirection (linkage/limits.h)
-  double crankDeg = 0;     // Position: at this crank angle,
-  Vec2 at = Vec2::Zero();  // the point here (world mm)
-  std::vector<Vec2> path;  // Path: world mm
+  double stroke = 0;        // Stroke: mm, along strokeDirection (linkage/stroke_sensitivity.h)
+  double crankDeg = 0;      // Position: at this crank angle,
+  Vec2 at = Vec2::Zero();   // the point here (world mm)
+  std::optional<double> z;  // and, on a machine in space, at this world z (none: x, y only)
+  std::vector<Vec2> path;   // Path: world mm
   // Transmission: the dyad's angle (transmissionJoints(m)[joint], linkage/transmission.h) kept
   // within limitDeg to 180 - limitDeg over the turn: residuals max(0, limit - min) and
   // max(0, max - (180 - limit)), degrees. Dyads whose lines run between points only (not an
@@ -81,10 +89,10 @@ struct OptTarget {
   double weight = 1;
 };
 
-// What a target measures, for people: Stroke {stroke}, Position {x, y}, Path {rms distance,
-// largest distance} (mm), Transmission {min, max} (degrees), Shaking {peak (N), its crank angle},
-// Clearance {least (mm), its crank angle}, Window {the end's crank angle}, Force {peak (N), its
-// crank angle}.
+// What a target measures, for people: Stroke {stroke}, Position {x, y} ({x, y, z} with a z), Path
+// {rms distance, largest distance} (mm), Transmission {min, max} (degrees), Shaking {peak (N), its
+// crank angle}, Clearance {least (mm), its crank angle}, Window {the end's crank angle}, Force
+// {peak (N), its crank angle}.
 using Measure = std::vector<double>;
 
 struct OptimizeSpec {

@@ -12,8 +12,8 @@ namespace linkage {
 
 // DIM=LO:HI
 bool parseOptVary(const std::string& text, OptVariable& v);
-// KIND:...=VALUE[*WEIGHT]; false with `why` naming the target and the fault. A path's file is
-// read here.
+// KIND:...=VALUE[*WEIGHT] (position:body.point@DEG=X,Y[,Z], Z a machine in space's); false with
+// `why` naming the target and the fault. A path's file is read here.
 bool parseOptTarget(const Mechanism& m, std::string text, OptTarget& t, std::string& why);
 // The target's name in the output: body.point, body.point@DEG, mu:..., fx / fy / force.
 std::string optTargetName(const Mechanism& m, const OptTarget& t);

@@ -87,6 +87,11 @@ struct Dimension {
 };
 
 std::vector<Dimension> dimensions(const Mechanism& m);
+// Whether a body's later point c is measured along and across its P0->P1 (a, b) rather than by
+// its distances from them (dimensions() names it Pk.along, Pk.across): seen from c, a and b
+// (nearly) on one line, or c at one of them. A change of P0-P1 keeps such a point's along and
+// across.
+bool measuredAlongAcross(const Vec2& a, const Vec2& b, const Vec2& c);
 
 namespace internal {
 // A cam row's constants as one dimension moves the drawing (per unit): the follower's b in its

@@ -7,6 +7,10 @@
 // with dr/dp the exact derivative of linkage/sensitivity.h. Where an extreme is not a limit
 // position (a motion that does not repeat after a turn: its end counts) the theorem does not
 // hold and the result says so.
+//
+// On a machine in space (planes, docs/spatial.md) the stroke is along a direction in the world,
+// u . r with r the point's world x, y, z, as `linkage-cli limits` measures a point there
+// (LimitMeasure::alongInSpace), and dr/dp is the world's (Sensitivity::Space::World, point3).
 #pragma once
 
 #include <string>
@@ -26,5 +30,14 @@ struct StrokeSensitivity {
 
 StrokeSensitivity strokeSensitivity(const Kinematics& k, PointId p, const Vec2& direction,
                                     std::vector<Dimension> dims);
+// Along a direction in the world: on a machine in space any (x, y, z); on a planar one its z
+// must be 0 (the planar stroke above).
+StrokeSensitivity strokeSensitivity(const Kinematics& k, PointId p, const Vec3& direction,
+                                    std::vector<Dimension> dims);
+
+// The direction a point's stroke is taken along by default: defaultDirection (linkage/limits.h)
+// on a planar machine; on a machine in space the world's +y, as `linkage-cli limits` takes it
+// there (a slot's direction is in its block's plane, which need not be the world's).
+Vec3 strokeDirection(const Mechanism& m, PointId p);
 
 }  // namespace linkage

@@ -1,0 +1,161 @@
+// Dimensions found for targets on machines in space (linkage/optimize.h, docs/optimize.md "In
+// space"): the objective's exact gradient (the world's sensitivities, spatial dimensions among
+// the variables) against central differences of the objective on the overedge machine and the
+// RSSR; the RSSR's rocker stroke met by its rod's length, checked by solving the written design
+// again; the targets whose derivatives in space are not there refused by name.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "examples.h"
+#include "linkage/io/model_file.h"
+#include "linkage/limits.h"
+#include "linkage/optimize.h"
+#include "linkage/optimize_text.h"
+#include "linkage/sensitivity.h"
+#include "optimize_checks.h"
+
+namespace linkage {
+namespace {
+
+double valueOf(const Mechanism& m, const std::string& name) {
+  for (const Dimension& d : dimensions(m))
+    if (d.name == name) return d.value;
+  ADD_FAILURE() << "no dimension " << name;
+  return 0;
+}
+
+OptTarget target(const Mechanism& m, const std::string& text) {
+  OptTarget t;
+  std::string why;
+  EXPECT_TRUE(parseOptTarget(m, text, t, why)) << why;
+  return t;
+}
+
+// The spec's gradient at the design as drawn (moved by `offset` on every variable) against
+// central differences of the objective, every variable.
+void checkGradient(const Mechanism& m, const OptimizeSpec& spec, double offset) {
+  Kinematics base;
+  ASSERT_TRUE(base.load(m).ok());
+  std::vector<double> x;
+  for (const OptVariable& v : spec.variables) x.push_back(valueOf(m, v.name) + offset);
+  const Evaluation e = evaluate(base, spec, x);
+  ASSERT_TRUE(e.feasible) << e.why;
+  ASSERT_GT(e.objective, 1e-3);
+  double largest = 0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double fd = test::centralDifference(base, spec, x, i, 1e-5);
+    EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
+    largest = std::max(largest, std::abs(fd));
+    std::printf("  %-26s gradient %.10g  central difference %.10g\n",
+                spec.variables[i].name.c_str(), e.gradient[i], fd);
+  }
+  EXPECT_GT(largest, 1e-2);
+}
+
+// The overedge machine's needle: its stroke (along the world's y) and its world x, y, z at a
+// crank angle, and the looper's x, y there; over link lengths, a depth, a ball rod's length, a
+// ground point's z and a plane's origin.
+TEST(OptimizeSpace, TheOveredgeMachinesGradientMatchesCentralDifferences) {
+  const Mechanism m = test::example("overedge-machine");
+  OptimizeSpec spec;
+  for (const char* v : {"main.O-A1", "needlerock.H-B", "needlerock.C.along", "main.A1.depth",
+                        "ground.H.z", "ball-rod:main.A1.length", "planes.rocker.origin.z"})
+    spec.variables.push_back({v, -1e3, 1e3});
+  spec.targets = {target(m, "stroke:needlearm.N=30"),
+                  target(m, "position:needlearm.N@40=10,20,30*0.5"),
+                  target(m, "position:needlerock.B@200=0,0")};
+  ASSERT_TRUE(spec.targets[1].z.has_value());
+  checkGradient(m, spec, 0.05);
+}
+
+TEST(OptimizeSpace, TheRssrsGradientMatchesCentralDifferences) {
+  const Mechanism m = test::example("rssr-crank-rocker");
+  OptimizeSpec spec;
+  for (const char* v : {"crank.O-A", "rocker.H-C", "crank.A.depth", "rocker.C.depth", "ground.H.z",
+                        "ball-rod:crank.A.length", "planes.rocker.origin.z"})
+    spec.variables.push_back({v, -1e3, 1e3});
+  spec.targets = {target(m, "stroke:rocker.C=1"), target(m, "position:rocker.C@100=1,-20,70")};
+  checkGradient(m, spec, 0.1);
+}
+
+// The rocker's stroke (along the world's y) met by the rod's length alone: the design written
+// and read again, solved afresh, has that stroke to 1e-9 mm.
+TEST(OptimizeSpace, TheRssrsRockerStrokeIsMetByTheRodsLength) {
+  const Mechanism m = test::example("rssr-crank-rocker");
+  Kinematics base;
+  ASSERT_TRUE(base.load(m).ok());
+  OptimizeSpec spec;
+  spec.variables = {{"ball-rod:crank.A.length", 78, 86}};
+  spec.targets = {target(m, "stroke:rocker.C=0.3")};
+  spec.starts = 4;
+  const OptimizeResult r = optimize(base, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_GT(std::abs(r.after[0] - r.before[0]), 0.5);
+  const LoadResult written = parseMechanism(serializeMechanism(r.design));
+  ASSERT_TRUE(written.mechanism) << written.error;
+  EXPECT_NEAR(valueOf(*written.mechanism, "ball-rod:crank.A.length"), r.after[0], 1e-9);
+  Kinematics k;
+  ASSERT_TRUE(k.load(*written.mechanism).ok());
+  const Limits l = findLimits(
+      k, LimitMeasure::alongInSpace(*written.mechanism->findPoint("rocker.C"), Vec3(0, 1, 0)));
+  ASSERT_TRUE(l.status.ok()) << l.status.message;
+  EXPECT_NEAR(l.stroke, 0.3, 1e-9);
+}
+
+// The overedge machine's needle rocker has C on its line H->B (measured along and across it): a
+// change of H-B keeps C's along and across, as the derivatives take it (dimensions()), where its
+// distances from H and B could not meet again (C beyond H: |CB| - |CH| is |HB|).
+TEST(OptimizeSpace, ABodysBaseLengthKeepsAPointOnItsLineWhereItIs) {
+  Mechanism m = test::example("overedge-machine");
+  const double along = valueOf(m, "needlerock.C.along"), across = valueOf(m, "needlerock.C.across");
+  ASSERT_TRUE(setDimension(m, "needlerock.H-B", 25).ok());
+  EXPECT_NEAR(valueOf(m, "needlerock.H-B"), 25, 1e-12);
+  EXPECT_NEAR(valueOf(m, "needlerock.C.along"), along, 1e-12);
+  EXPECT_NEAR(valueOf(m, "needlerock.C.across"), across, 1e-12);
+  // And the optimiser moves it: the needle's stroke found by H-B alone.
+  Kinematics base;
+  ASSERT_TRUE(base.load(test::example("overedge-machine")).ok());
+  OptimizeSpec spec;
+  spec.variables = {{"needlerock.H-B", 20, 40}};
+  spec.targets = {target(base.mechanism(), "stroke:needlearm.N=21")};
+  spec.starts = 2;
+  const OptimizeResult r = optimize(base, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_NEAR(r.atAfter.measures[0][0], 21, 1e-9);
+}
+
+// In space only a stroke and a position are targets yet; a z is a machine in space's.
+TEST(OptimizeSpace, TargetsWithoutDerivativesInSpaceAreRefusedByName) {
+  const Mechanism m = test::example("overedge-machine");
+  Kinematics base;
+  ASSERT_TRUE(base.load(m).ok());
+  OptimizeSpec spec;
+  spec.variables = {{"main.O-A1", 5, 15}};
+  OptTarget shaking;
+  shaking.kind = OptTarget::Kind::Shaking;
+  OptTarget path = target(m, "stroke:needlearm.N=3");
+  path.kind = OptTarget::Kind::Path;
+  path.path = {Vec2(0, 0)};
+  for (const auto& [t, name] : {std::pair{shaking, "shaking"}, {path, "path"}}) {
+    spec.targets = {t};
+    const OptimizeResult r = optimize(base, spec);
+    EXPECT_EQ(r.status.code, StatusCode::BadModel);
+    EXPECT_NE(r.status.message.find(std::string("a ") + name + " target on a machine in space"),
+              std::string::npos)
+        << r.status.message;
+  }
+  const Mechanism planar = test::example("drop-feed");
+  Kinematics flat;
+  ASSERT_TRUE(flat.load(planar).ok());
+  OptimizeSpec withZ;
+  withZ.variables = {{dimensions(planar).front().name, -1e3, 1e3}};
+  withZ.targets = {target(planar, "position:feedbar.D@0=1,2,3")};
+  const OptimizeResult r = optimize(flat, withZ);
+  EXPECT_EQ(r.status.code, StatusCode::BadModel);
+  EXPECT_NE(r.status.message.find("a position's z is of a machine in space"), std::string::npos)
+      << r.status.message;
+}
+
+}  // namespace
+}  // namespace linkage
