@@ -15,6 +15,7 @@
 #include "examples.h"
 #include "linkage/dimension_change.h"
 #include "linkage/kinematics.h"
+#include "linkage/optimize.h"
 #include "linkage/timing.h"
 #include "linkage/window_sensitivity.h"
 
@@ -129,6 +130,27 @@ TEST(SpatialWindowSensitivity, ADistancesEndsMoveAsChangedDesignsDo) {
     }
   }
   EXPECT_GT(peak, 0.1);
+}
+
+// A window's start on a machine in space as an optimize target: the vertical shaft's radius r
+// that opens "z > 6" at 215 degrees, 180 + asin(6 / r) = 215, r = 6 / sin 35 degrees.
+TEST(SpatialWindowSensitivity, AWindowsStartMetByTheRadius) {
+  const Mechanism m = test::exampleWithWindow("lockstitch-bevel", "low=vshaft.M:z>6");
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  OptimizeSpec spec;
+  spec.variables = {{"vshaft.V-M", 8, 16}};
+  OptTarget t;
+  t.kind = OptTarget::Kind::Window;
+  t.window = "low";
+  t.windowEnd = false;
+  t.crankDeg = 215;
+  spec.targets = {t};
+  spec.starts = 3;
+  const OptimizeResult r = optimize(k, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_NEAR(r.after.at(0), 6 / std::sin(35 * M_PI / 180), 1e-7);
+  EXPECT_NEAR(r.atAfter.measures.at(0).at(0), 215, 1e-7);
 }
 
 }  // namespace
