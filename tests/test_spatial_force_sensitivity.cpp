@@ -12,21 +12,29 @@
 #include "linkage/dimension_change.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_sensitivity.h"
+#include "linkage/optimize.h"
+#include "linkage/optimize_text.h"
+#include "optimize_checks.h"
 
 namespace linkage {
 namespace {
 
-TEST(SpatialForceSensitivity, TheRssrsReactionsMoveAsChangedDesignsDo) {
+// The RSSR with masses on its crank and rocker and gravity across both planes.
+Mechanism loadedRssr() {
   Mechanism m = test::example("rssr-crank-rocker");
   Body* crank = m.body(m.bodyNamed("crank")->id);
   Body* rocker = m.body(m.bodyNamed("rocker")->id);
-  ASSERT_TRUE(crank && rocker);
   const Vec2 c0 = m.point(*m.findPoint("crank.A"))->pos,
              r0 = m.point(*m.findPoint("rocker.C"))->pos;
   crank->mass = Mass{0.3, 0.5 * c0 + Vec2(2, -1), 60, ""};
   rocker->mass = Mass{0.2, 0.6 * r0 + Vec2(-3, 2), 90, ""};
   m.gravity = Vec2(0, -9.81);
   m.gravityZ = -3.0;
+  return m;
+}
+
+TEST(SpatialForceSensitivity, TheRssrsReactionsMoveAsChangedDesignsDo) {
+  const Mechanism m = loadedRssr();
   Kinematics k;
   ASSERT_TRUE(k.load(m).ok());
   const std::vector<Dimension> dims = dimensions(m);
@@ -67,6 +75,45 @@ TEST(SpatialForceSensitivity, TheRssrsReactionsMoveAsChangedDesignsDo) {
     }
   }
   EXPECT_GT(largest, 0.01);
+}
+
+// The rod's tension as an optimize target (its peak over the turn): the objective's gradient
+// over the machine's own dimensions in space against central differences, and a limit met, the
+// written design bearing the peak reported.
+TEST(SpatialForceSensitivity, TheRodsTensionAsATarget) {
+  Kinematics base;
+  ASSERT_TRUE(base.load(loadedRssr()).ok());
+  OptimizeSpec spec;
+  spec.variables = {{"crank.A.depth", -20, 20},
+                    {"ball-rod:crank.A.length", 70, 90},
+                    {"planes.rocker.origin.x", 30, 60}};
+  std::string why;
+  OptTarget t;
+  ASSERT_TRUE(parseOptTarget(base.mechanism(), "force:ball-rod:crank.A<=0", t, why)) << why;
+  spec.targets = {t};
+  std::vector<double> x;
+  for (const OptVariable& v : spec.variables)
+    for (const Dimension& d : dimensions(base.mechanism()))
+      if (d.name == v.name) x.push_back(d.value);
+  ASSERT_EQ(x.size(), 3u);
+  const Evaluation e = evaluate(base, spec, x);
+  ASSERT_TRUE(e.feasible) << e.why;
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double fd = test::centralDifference(base, spec, x, i, 1e-6);
+    EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
+  }
+  const double before = e.measures[0][0];
+  spec.targets[0].limitN = 0.95 * before;
+  spec.variables = {{"ball-rod:crank.A.length", 70, 90}};
+  spec.starts = 3;
+  const OptimizeResult r = optimize(base, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  const double peak = r.atAfter.measures[0][0];
+  EXPECT_LE(peak, 0.95 * before * (1 + 1e-9));
+  Kinematics after;
+  ASSERT_TRUE(after.load(r.design).ok());
+  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  EXPECT_NEAR(std::abs(computeForces(after).joints[2].axialN), peak, 1e-9 * peak);
 }
 
 }  // namespace

@@ -166,7 +166,8 @@ Status checkWatched(const Mechanism& m, const OptTarget& t) {
 }
 
 // What a target may be on a machine in space (a stroke, a position with or without z, a timing
-// window's end) and on a planar one (a position without z).
+// window's end, a joint's in-plane reaction or a ball rod's tension) and on a planar one (a
+// position without z).
 Status checkSpace(bool space, const OptTarget& t) {
   using K = OptTarget::Kind;
   if (!space) {
@@ -178,13 +179,15 @@ Status checkSpace(bool space, const OptTarget& t) {
   }
   if (t.kind == K::Position && !(t.at.allFinite() && std::isfinite(t.z.value_or(0))))
     return Status::badModel("a position target's coordinates must be numbers");
-  if (t.kind == K::Stroke || t.kind == K::Position || t.kind == K::Window) return Status::success();
+  if (t.kind == K::Stroke || t.kind == K::Position || t.kind == K::Window || t.kind == K::Force)
+    return Status::success();
   static const char* names[] = {"stroke",  "position",  "path",   "transmission",
                                 "shaking", "clearance", "window", "force"};
   return Status::badModel(
       std::string("a ") + names[static_cast<int>(t.kind)] +
       " target on a machine in space (planes) is not optimised yet (its "
-      "derivatives in space are not computed): stroke, position and window targets are");
+      "derivatives in space are not computed): stroke, position, window and force targets "
+      "are");
 }
 
 double uniform(std::mt19937_64& g) {

@@ -44,9 +44,14 @@ struct Shaker {
     cw.kg = vars.kg(x, c);
     return cw;
   }
+  // A joint's force as the target reads it: a ball rod's (a machine in space) is its tension.
+  Vec2 part(const JointReaction& r) const {
+    return kindOf(design.mechanism().joints[t.index]).role == Role::Distance ? Vec2(r.axialN, 0)
+                                                                             : r.force;
+  }
   Vec2 force(const Kinematics& k) const {
     if (joint) {  // the design's reaction and the counterweights' shares (the forces add)
-      Vec2 F = solver.compute(k).joints[t.index].force;
+      Vec2 F = part(solver.compute(k).joints[t.index]);
       for (size_t c = 0; c < vars.counterweights.size(); ++c)
         F += counterweightShare(k, joint, placed(c)).share.force;
       return F;
@@ -82,7 +87,7 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
     const JointForceSensitivity f = jointForceSensitivity(k, joint, vars.dims);
     status = f.status;
     for (size_t v = 0; v < out.size() && status.ok(); ++v)
-      if (vars.dim[v] >= 0) out[v] = e.dot(f.derivative[vars.dim[v]]);
+      if (vars.dim[v] >= 0) out[v] = e.dot(part(f.change[vars.dim[v]]));
     return out;
   }
   if (joint) {  // counterweights only (they are not varied with dimensions)
