@@ -287,6 +287,16 @@ int transmission(Kinematics& k, Sensitivity& sens, const Options& o) {
 // speed, a row a dimension a step.
 int shakingForce(Kinematics& k, Sensitivity& sens, const Options& o) {
   k.setAccelerations(true);
+  if (isSpatial(k.mechanism()))  // in the world, with its z
+    return perStep(k, sens, o, "dfx_N_per_unit,dfy_N_per_unit,dfz_N_per_unit",
+                   [](Kinematics& kk, Sensitivity& ss) {
+                     std::vector<std::vector<double>> out;
+                     for (size_t d = 0; d < ss.dims().size(); ++d) {
+                       const Vec3 f = shakingForceSensitivity3(kk, ss, static_cast<int>(d));
+                       out.push_back({f.x(), f.y(), f.z()});
+                     }
+                     return out;
+                   });
   return perStep(k, sens, o, "dfx_N_per_unit,dfy_N_per_unit", [](Kinematics& kk, Sensitivity& ss) {
     std::vector<std::vector<double>> out;
     for (size_t d = 0; d < ss.dims().size(); ++d) {
@@ -357,9 +367,9 @@ int sensitivity(Options o) {
     Kinematics k;
     if (int e = prepare(k, *m); e != kOk) return e;
     Sensitivity sens;
-    // A reaction on a machine in space is in its plane class's frame, what the world's
-    // sensitivities compute (the others are refused there, by name).
-    const bool world = !o.force.empty() && isSpatial(k.mechanism());
+    // A reaction or the shaking force on a machine in space: from the world's sensitivities
+    // (a transmission angle is refused there, by name).
+    const bool world = (!o.force.empty() || o.shaking) && isSpatial(k.mechanism());
     if (Status s = sens.prepare(k, dimensions(k.mechanism()),
                                 world ? Sensitivity::Space::World : Sensitivity::Space::Refuse);
         !s.ok()) {

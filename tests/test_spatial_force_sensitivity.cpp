@@ -14,6 +14,7 @@
 #include "linkage/force_sensitivity.h"
 #include "linkage/optimize.h"
 #include "linkage/optimize_text.h"
+#include "linkage/shaking_sensitivity.h"
 #include "optimize_checks.h"
 
 namespace linkage {
@@ -72,6 +73,43 @@ TEST(SpatialForceSensitivity, TheRssrsReactionsMoveAsChangedDesignsDo) {
             << dims[d].name << " joint " << j << " at " << deg << ": " << got.transpose()
             << " against " << want.transpose();
       }
+    }
+  }
+  EXPECT_GT(largest, 0.01);
+}
+
+// The shaking force in the world (linkage/shaking_sensitivity.h) against the changed designs'.
+TEST(SpatialForceSensitivity, TheShakingForceInTheWorldMovesAsChangedDesignsDo) {
+  const Mechanism m = loadedRssr();
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  k.setAccelerations(true);
+  const std::vector<Dimension> dims = dimensions(m);
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dims, Sensitivity::Space::World).ok());
+  const double h = 1e-5;
+  double largest = 0;
+  for (size_t d = 0; d < dims.size(); ++d) {
+    Kinematics kc[2];
+    for (int side = 0; side < 2; ++side) {
+      Mechanism c = m;
+      std::vector<double> delta(dims.size(), 0.0);
+      delta[d] = side ? h : -h;
+      ASSERT_TRUE(changeDimensions(c, dims, delta).ok()) << dims[d].name;
+      ASSERT_TRUE(kc[side].load(c).ok()) << dims[d].name;
+      kc[side].setAccelerations(true);
+    }
+    for (int deg = 15; deg < 360; deg += 45) {
+      ASSERT_TRUE(k.moveTo(deg).ok() && s.at(k).ok());
+      Vec3 F[2], M;
+      for (int side = 0; side < 2; ++side) {
+        ASSERT_TRUE(kc[side].moveTo(deg).ok());
+        shaking(kc[side], F[side], M);
+      }
+      const Vec3 want = (F[1] - F[0]) / (2 * h);
+      const Vec3 got = shakingForceSensitivity3(k, s, static_cast<int>(d));
+      largest = std::max(largest, want.norm());
+      EXPECT_LT((got - want).norm(), 1e-6 * (1 + want.norm())) << dims[d].name << " at " << deg;
     }
   }
   EXPECT_GT(largest, 0.01);

@@ -160,7 +160,8 @@ py::dict forceSensitivity(const Model& m, const std::string& joint, double crank
 
 py::dict shakingSensitivity(const Model& m, double crankDeg, double rpm) {
   py::dict out;
-  for (const auto& [name, d] : m.shakingSensitivity(crankDeg, rpm)) out[py::str(name)] = pair(d);
+  for (const auto& [name, d] : m.shakingSensitivity(crankDeg, rpm))
+    out[py::str(name)] = py::tuple(py::cast(d));
   return out;
 }
 

@@ -261,16 +261,26 @@ std::vector<std::pair<std::string, double>> Model::strokeSensitivity(
   return out;
 }
 
-std::vector<std::pair<std::string, Vec2>> Model::shakingSensitivity(double crankDeg,
-                                                                    double rpm) const {
+std::vector<std::pair<std::string, std::vector<double>>> Model::shakingSensitivity(
+    double crankDeg, double rpm) const {
   Kinematics k = at(crankDeg, rpm);
   k.setAccelerations(true);
+  const bool space = isSpatial(k.mechanism());
   Sensitivity s;
-  raise(s.prepare(k, linkage::dimensions(k.mechanism())));
+  raise(s.prepare(k, linkage::dimensions(k.mechanism()),
+                  space ? Sensitivity::Space::World : Sensitivity::Space::Refuse));
   raise(s.at(k));
-  std::vector<std::pair<std::string, Vec2>> out;
-  for (size_t d = 0; d < s.dims().size(); ++d)
-    out.emplace_back(s.dims()[d].name, shakingForceSensitivity(k, s, static_cast<int>(d)));
+  std::vector<std::pair<std::string, std::vector<double>>> out;
+  for (size_t d = 0; d < s.dims().size(); ++d) {
+    const int i = static_cast<int>(d);
+    if (space) {
+      const Vec3 f = shakingForceSensitivity3(k, s, i);
+      out.emplace_back(s.dims()[d].name, std::vector<double>{f.x(), f.y(), f.z()});
+    } else {
+      const Vec2 f = shakingForceSensitivity(k, s, i);
+      out.emplace_back(s.dims()[d].name, std::vector<double>{f.x(), f.y()});
+    }
+  }
   return out;
 }
 

@@ -79,8 +79,10 @@ class Model {
                                                         int quantity, double rpm) const;
   // d(stroke)/d(dimension) (linkage/stroke_sensitivity.h): along the point's default direction.
   std::vector<std::pair<std::string, double>> strokeSensitivity(const std::string& point) const;
-  // d(shaking force)/d(dimension) at the crank angle and rpm (linkage/shaking_sensitivity.h).
-  std::vector<std::pair<std::string, Vec2>> shakingSensitivity(double crankDeg, double rpm) const;
+  // d(shaking force)/d(dimension) at the crank angle and rpm (linkage/shaking_sensitivity.h):
+  // (dfx, dfy), on a machine in space the world's (dfx, dfy, dfz).
+  std::vector<std::pair<std::string, std::vector<double>>> shakingSensitivity(double crankDeg,
+                                                                              double rpm) const;
   // d(a joint's reaction)/d(dimension) (linkage/force_sensitivity.h), the joint named as
   // linkage-cli dynamics names it (pin:crank.A): a value a column of its kind there.
   std::vector<std::pair<std::string, std::vector<double>>> forceSensitivity(

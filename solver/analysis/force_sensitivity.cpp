@@ -21,7 +21,7 @@ namespace {
 
 // dQ/dp (linkage/dynamics.h generalizedForcesChange): a load's arm from its body's frame origin
 // moves as its point less the origin.
-Eigen::VectorXd forcesChange(const Kinematics& k, const Sensitivity& s, int dim) {
+Eigen::VectorXd forcesChangeOf(const Kinematics& k, const Sensitivity& s, int dim) {
   const System& sys = internal::state(k).sys;
   const Mechanism& m = k.mechanism();
   // A point's own move in its body (turned into the frame's axes): its move less the body's.
@@ -282,7 +282,7 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
   std::vector<JointReaction> all(m.joints.size()), changes(m.joints.size());
   for (size_t d = 0; d < out.dims.size(); ++d) {
     pose.dim = static_cast<int>(d);
-    const Eigen::VectorXd dQ = forcesChange(k, s, pose.dim);
+    const Eigen::VectorXd dQ = forcesChangeOf(k, s, pose.dim);
     for (size_t i = 0; i < joints.size(); ++i) {
       all[joints[i]] = value(c, rows[i]);
       changes[joints[i]] = change(c, rows[i], pose.dim, dQ);
@@ -344,6 +344,10 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
     *parts[col] = changes[ji];
   }
   return out;
+}
+
+Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Sensitivity& s, int dim) {
+  return forcesChangeOf(k, s, dim);
 }
 
 }  // namespace linkage

@@ -194,6 +194,9 @@ def test_stroke_shaking_and_force_sensitivities_are_the_command_lines():
     assert {k: v + 0.0 for k, v in got.items()} == want and want["ball-rod:crank.A.length"] != 0
     out = cli("sensitivity", "drop-feed", "--shaking", "--steps", "6").stdout
     assert zero_signed(m.shaking_sensitivity(120)) == rows_at(out, 120, 2)
+    space = linkage.load("overedge-machine")  # in the world: (dfx, dfy, dfz)
+    out = cli("sensitivity", "overedge-machine", "--shaking", "--steps", "6").stdout
+    assert zero_signed(space.shaking_sensitivity(60)) == rows_at(out, 60, 3)
     out = cli("sensitivity", "drop-feed", "--force", "pin:ground.L", "--steps", "6").stdout
     assert zero_signed(m.force_sensitivity("pin:ground.L", 240)) == rows_at(out, 240, 2)
     with pytest.raises(ValueError, match="no joint 'pin:x.Y'"):

@@ -39,6 +39,11 @@ struct JointForceSensitivity {
   std::vector<JointReaction> change;
 };
 
+// d(generalized forces)/d(dimension dim) at the pose of s's last at() (linkage/dynamics.h
+// generalizedForcesChange with the sensitivities' motion; a plane's origin carries its bodies'
+// masses): N and N mm per unit, in the plane classes' frames.
+Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Sensitivity& s, int dim);
+
 // At k's pose and speed, for `joint` (any kind: its reaction's parts as its dynamics columns
 // name them, linkage/tables/force_table.h reactionValue).
 JointForceSensitivity jointForceSensitivity(const Kinematics& k, JointId joint,

@@ -13,4 +13,10 @@ namespace linkage {
 // N per unit of dimension `dim`, at the pose of s's last at() (k's pose). A planar machine's.
 Vec2 shakingForceSensitivity(const Kinematics& k, const Sensitivity& s, int dim);
 
+// The same in the world (linkage/dynamics.h shaking(k, Vec3&, Vec3&)), any machine (in space, s
+// prepared with Space::World): each moving body's force's change (its centre's acceleration's,
+// linkage/force_sensitivity.h generalizedForcesChange) lifted from its plane class's frame; the
+// weights and loads do not change.
+Vec3 shakingForceSensitivity3(const Kinematics& k, const Sensitivity& s, int dim);
+
 }  // namespace linkage
