@@ -38,7 +38,8 @@ pose on MODEL's assembly branches.
                                      the curve over the turn; lines starting with # are comments
      transmission:mu:body.point>=DEG a dyad's transmission angle (as `transmission` names it)
                                      within DEG to 180 - DEG over the turn
-     shaking:fx<=N                   the peak of the shaking force's |fx| (fy, or force: |f|)
+     shaking:fx<=N                   the peak of the shaking force's |fx| (fy, fz in space, or
+                                     force: |f|)
                                      over the turn at most N newtons (0: as low as it goes)
      force:JOINT<=N                  the peak over the turn of a joint's reaction |f| (JOINT as
                                      `dynamics` names it: pin:crank.A, slider:block.B) at most

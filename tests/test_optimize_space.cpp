@@ -132,12 +132,12 @@ TEST(OptimizeSpace, TargetsWithoutDerivativesInSpaceAreRefusedByName) {
   ASSERT_TRUE(base.load(m).ok());
   OptimizeSpec spec;
   spec.variables = {{"main.O-A1", 5, 15}};
-  OptTarget shaking;
-  shaking.kind = OptTarget::Kind::Shaking;
+  OptTarget transmission;
+  transmission.kind = OptTarget::Kind::Transmission;
   OptTarget path = target(m, "stroke:needlearm.N=3");
   path.kind = OptTarget::Kind::Path;
   path.path = {Vec2(0, 0)};
-  for (const auto& [t, name] : {std::pair{shaking, "shaking"}, {path, "path"}}) {
+  for (const auto& [t, name] : {std::pair{transmission, "transmission"}, {path, "path"}}) {
     spec.targets = {t};
     const OptimizeResult r = optimize(base, spec);
     EXPECT_EQ(r.status.code, StatusCode::BadModel);

@@ -115,24 +115,32 @@ TEST(SpatialForceSensitivity, TheShakingForceInTheWorldMovesAsChangedDesignsDo) 
   EXPECT_GT(largest, 0.01);
 }
 
-// The rod's tension as an optimize target (its peak over the turn): the objective's gradient
-// over the machine's own dimensions in space against central differences, and a limit met, the
-// written design bearing the peak reported.
-TEST(SpatialForceSensitivity, TheRodsTensionAsATarget) {
-  Kinematics base;
-  ASSERT_TRUE(base.load(loadedRssr()).ok());
+// A search over a depth, the rod's length and a plane's origin for the target `text`, and the
+// design's values of those (where the gradient is checked).
+OptimizeSpec spaceSpec(const Mechanism& m, const char* text, std::vector<double>& x) {
   OptimizeSpec spec;
   spec.variables = {{"crank.A.depth", -20, 20},
                     {"ball-rod:crank.A.length", 70, 90},
                     {"planes.rocker.origin.x", 30, 60}};
   std::string why;
   OptTarget t;
-  ASSERT_TRUE(parseOptTarget(base.mechanism(), "force:ball-rod:crank.A<=0", t, why)) << why;
+  EXPECT_TRUE(parseOptTarget(m, text, t, why)) << why;
   spec.targets = {t};
-  std::vector<double> x;
+  x.clear();
   for (const OptVariable& v : spec.variables)
-    for (const Dimension& d : dimensions(base.mechanism()))
+    for (const Dimension& d : dimensions(m))
       if (d.name == v.name) x.push_back(d.value);
+  return spec;
+}
+
+// The rod's tension as an optimize target (its peak over the turn): the objective's gradient
+// over the machine's own dimensions in space against central differences, and a limit met, the
+// written design bearing the peak reported.
+TEST(SpatialForceSensitivity, TheRodsTensionAsATarget) {
+  Kinematics base;
+  ASSERT_TRUE(base.load(loadedRssr()).ok());
+  std::vector<double> x;
+  OptimizeSpec spec = spaceSpec(base.mechanism(), "force:ball-rod:crank.A<=0", x);
   ASSERT_EQ(x.size(), 3u);
   const Evaluation e = evaluate(base, spec, x);
   ASSERT_TRUE(e.feasible) << e.why;
@@ -152,6 +160,40 @@ TEST(SpatialForceSensitivity, TheRodsTensionAsATarget) {
   ASSERT_TRUE(after.load(r.design).ok());
   ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
   EXPECT_NEAR(std::abs(computeForces(after).joints[2].axialN), peak, 1e-9 * peak);
+}
+
+// The shaking force's peak in the world as an optimize target (|F| and its z): the gradient over
+// the machine's dimensions in space against central differences, and a limit met by the rod's
+// length, the written design feeling the peak reported.
+TEST(SpatialForceSensitivity, TheShakingForceAsATarget) {
+  Kinematics base;
+  ASSERT_TRUE(base.load(loadedRssr()).ok());
+  for (const char* text : {"shaking:force<=0", "shaking:fz<=0"}) {
+    std::vector<double> x;
+    OptimizeSpec spec = spaceSpec(base.mechanism(), text, x);
+    const OptTarget& t = spec.targets[0];
+    const Evaluation e = evaluate(base, spec, x);
+    ASSERT_TRUE(e.feasible) << e.why;
+    for (size_t i = 0; i < x.size(); ++i) {
+      const double fd = test::centralDifference(base, spec, x, i, 1e-6);
+      EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << text << spec.variables[i].name;
+    }
+    if (t.measure != BalanceMeasure::Force) continue;
+    spec.targets[0].limitN = 0.97 * e.measures[0][0];
+    spec.variables = {{"ball-rod:crank.A.length", 70, 90}};
+    spec.starts = 3;
+    const OptimizeResult r = optimize(base, spec);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    const double peak = r.atAfter.measures[0][0];
+    EXPECT_LE(peak, spec.targets[0].limitN * (1 + 1e-9));
+    Kinematics after;
+    ASSERT_TRUE(after.load(r.design).ok());
+    after.setAccelerations(true);
+    ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+    Vec3 F, M;
+    shaking(after, F, M);
+    EXPECT_NEAR(F.norm(), peak, 1e-9 * peak);
+  }
 }
 
 }  // namespace

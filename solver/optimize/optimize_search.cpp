@@ -137,7 +137,7 @@ Status checkTransmission(const Mechanism& m, const OptTarget& t) {
 // The targets that name no point: a shaking force, a watched clearance, a timing window.
 Status checkWatched(const Mechanism& m, const OptTarget& t) {
   if (t.kind == OptTarget::Kind::Shaking) {
-    if (t.measure == BalanceMeasure::Fz)
+    if (t.measure == BalanceMeasure::Fz && !isSpatial(m))
       return Status::badModel("a planar machine's shaking force has no fz to target");
     if (!(t.limitN >= 0 && std::isfinite(t.limitN)))
       return Status::badModel("a shaking-force target's limit must be a number >= 0");
@@ -166,8 +166,8 @@ Status checkWatched(const Mechanism& m, const OptTarget& t) {
 }
 
 // What a target may be on a machine in space (a stroke, a position with or without z, a timing
-// window's end, a joint's in-plane reaction or a ball rod's tension) and on a planar one (a
-// position without z).
+// window's end, a joint's in-plane reaction or a ball rod's tension, the shaking force in the
+// world) and on a planar one (a position without z).
 Status checkSpace(bool space, const OptTarget& t) {
   using K = OptTarget::Kind;
   if (!space) {
@@ -179,15 +179,16 @@ Status checkSpace(bool space, const OptTarget& t) {
   }
   if (t.kind == K::Position && !(t.at.allFinite() && std::isfinite(t.z.value_or(0))))
     return Status::badModel("a position target's coordinates must be numbers");
-  if (t.kind == K::Stroke || t.kind == K::Position || t.kind == K::Window || t.kind == K::Force)
+  if (t.kind == K::Stroke || t.kind == K::Position || t.kind == K::Window || t.kind == K::Force ||
+      t.kind == K::Shaking)
     return Status::success();
   static const char* names[] = {"stroke",  "position",  "path",   "transmission",
                                 "shaking", "clearance", "window", "force"};
   return Status::badModel(
       std::string("a ") + names[static_cast<int>(t.kind)] +
       " target on a machine in space (planes) is not optimised yet (its "
-      "derivatives in space are not computed): stroke, position, window and force targets "
-      "are");
+      "derivatives in space are not computed): stroke, position, window, force and shaking "
+      "targets are");
 }
 
 double uniform(std::mt19937_64& g) {

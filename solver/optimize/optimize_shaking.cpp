@@ -15,6 +15,7 @@
 #include "linkage/dynamics.h"
 #include "linkage/force_sensitivity.h"
 #include "linkage/shaking_sensitivity.h"
+#include "linkage/space.h"
 #include "optimize/variables.h"
 
 namespace linkage::opt {
@@ -49,11 +50,17 @@ struct Shaker {
     return kindOf(design.mechanism().joints[t.index]).role == Role::Distance ? Vec2(r.axialN, 0)
                                                                              : r.force;
   }
-  Vec2 force(const Kinematics& k) const {
+  // What the frame feels (or the joint bears), in the world: a planar machine's z is 0.
+  Vec3 force(const Kinematics& k) const {
     if (joint) {  // the design's reaction and the counterweights' shares (the forces add)
       Vec2 F = part(solver.compute(k).joints[t.index]);
       for (size_t c = 0; c < vars.counterweights.size(); ++c)
         F += counterweightShare(k, joint, placed(c)).share.force;
+      return Vec3(F.x(), F.y(), 0);
+    }
+    if (isSpatial(k.mechanism())) {  // dimensions only (counterweights are planar)
+      Vec3 F, moment;
+      shaking(k, F, moment);
       return F;
     }
     Vec2 F;
@@ -62,18 +69,22 @@ struct Shaker {
     for (size_t c = 0; c < vars.counterweights.size(); ++c)
       F +=
           counterweightForce(k, vars.counterweights[c].body, vars.moment(x, c)) + vars.kg(x, c) * g;
-    return F;
+    return Vec3(F.x(), F.y(), 0);
   }
-  double measure(const Vec2& F) const {
+  double measure(const Vec3& F) const {
     if (t.measure == BalanceMeasure::Fx) return std::abs(F.x());
     if (t.measure == BalanceMeasure::Fy) return std::abs(F.y());
+    if (t.measure == BalanceMeasure::Fz) return std::abs(F.z());
     return F.norm();
   }
   // d measure / d F: the unit the measure is read along (0 where it has no direction).
-  Vec2 along(const Vec2& F) const {
-    if (t.measure == BalanceMeasure::Fx) return Vec2(F.x() < 0 ? -1 : 1, 0);
-    if (t.measure == BalanceMeasure::Fy) return Vec2(0, F.y() < 0 ? -1 : 1);
-    return F.norm() > 0 ? Vec2(F / F.norm()) : Vec2::Zero();
+  Vec3 along(const Vec3& F) const {
+    for (int c = 0; c < 3; ++c)
+      if (t.measure == (c == 0   ? BalanceMeasure::Fx
+                        : c == 1 ? BalanceMeasure::Fy
+                                 : BalanceMeasure::Fz))
+        return Vec3::Unit(c) * (F[c] < 0 ? -1 : 1);
+    return F.norm() > 0 ? Vec3(F / F.norm()) : Vec3::Zero();
   }
   std::vector<double> gradient(const Kinematics& k, const Sensitivity* sens, Status& status) const;
 };
@@ -81,34 +92,38 @@ struct Shaker {
 // d measure / d variable at k's pose (sens at k's pose when there are dimensions).
 std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sens,
                                      Status& status) const {
-  const Vec2 F = force(k), e = along(F);
+  const Vec3 F = force(k), e = along(F);
+  auto lift = [](const Vec2& v) { return Vec3(v.x(), v.y(), 0); };
   std::vector<double> out(vars.dim.size(), 0.0);
   if (joint && vars.counterweights.empty()) {
     const JointForceSensitivity f = jointForceSensitivity(k, joint, vars.dims);
     status = f.status;
     for (size_t v = 0; v < out.size() && status.ok(); ++v)
-      if (vars.dim[v] >= 0) out[v] = e.dot(part(f.change[vars.dim[v]]));
+      if (vars.dim[v] >= 0) out[v] = e.dot(lift(part(f.change[vars.dim[v]])));
     return out;
   }
   if (joint) {  // counterweights only (they are not varied with dimensions)
     for (size_t v = 0; v < out.size() && status.ok(); ++v) {
       const CounterweightShare sh = counterweightShare(k, joint, placed(vars.cw[v]));
       status = sh.status;
-      out[v] = e.dot(vars.axis[v] == 0 ? sh.perX.force : sh.perY.force);
+      out[v] = e.dot(lift(vars.axis[v] == 0 ? sh.perX.force : sh.perY.force));
     }
     return out;
   }
+  const bool space = isSpatial(k.mechanism());
   for (size_t v = 0; v < out.size(); ++v) {
-    Vec2 dF = Vec2::Zero();
+    Vec3 dF = Vec3::Zero();
     if (vars.dim[v] >= 0 && sens) {
-      dF = shakingForceSensitivity(k, *sens, vars.dim[v]);
+      dF = space ? shakingForceSensitivity3(k, *sens, vars.dim[v])
+                 : lift(shakingForceSensitivity(k, *sens, vars.dim[v]));
     } else if (vars.cw[v] >= 0) {
       const size_t c = static_cast<size_t>(vars.cw[v]);
       const Counterweight& cw = vars.counterweights[c];
       const Vec2 unit = vars.axis[v] == 0 ? Vec2(1, 0) : Vec2(0, 1);
       const Vec2 s = vars.moment(x, c);
-      dF = counterweightForce(k, cw.body, unit);
-      if (s.norm() > 0) dF += s.dot(unit) / (s.norm() * cw.maxRadiusMm) * g;  // d(|s| / R)
+      Vec2 d = counterweightForce(k, cw.body, unit);
+      if (s.norm() > 0) d += s.dot(unit) / (s.norm() * cw.maxRadiusMm) * g;  // d(|s| / R)
+      dF = lift(d);
     }
     out[v] = e.dot(dF);
   }

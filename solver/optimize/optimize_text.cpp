@@ -82,18 +82,20 @@ bool parseTransmission(const Mechanism& m, const std::string& text, OptTarget& t
   return why += "no transmission angle '" + name + "' (the model's: " + known + ")", false;
 }
 
-// shaking:fx<=N (fy, force)
+// shaking:fx<=N (fy, fz on a machine in space, force)
 bool parseShaking(const std::string& text, OptTarget& t, std::string& why) {
-  const std::string usage = "expected shaking:fx<=N (fx, fy or force; N >= 0)";
+  const std::string usage = "expected shaking:fx<=N (fx, fy, fz or force; N >= 0)";
   const size_t le = text.find("<=");
   if (le == std::string::npos) return why += usage, false;
   const std::string what = text.substr(8, le - 8);
   const std::optional<double> n = parseNumber(text.substr(le + 2));
-  if (!n.has_value() || !(n.value() >= 0) || (what != "fx" && what != "fy" && what != "force"))
+  if (!n.has_value() || !(n.value() >= 0) ||
+      (what != "fx" && what != "fy" && what != "fz" && what != "force"))
     return why += usage, false;
   t.kind = OptTarget::Kind::Shaking;
   t.measure = what == "fx"   ? BalanceMeasure::Fx
               : what == "fy" ? BalanceMeasure::Fy
+              : what == "fz" ? BalanceMeasure::Fz
                              : BalanceMeasure::Force;
   t.limitN = n.value();
   return true;

@@ -3,6 +3,8 @@
 
 #include "optimize/variables.h"
 
+#include "linkage/space.h"
+
 namespace linkage::opt {
 
 Vec2 Variables::moment(const std::vector<double>& x, size_t k) const {
@@ -76,6 +78,10 @@ Status mapVariables(const Mechanism& base, const Mechanism& design, const Optimi
         "counterweights and dimensions are varied apart: a dimension redraws the bodies it "
         "moves, and a counterweight's moment turns with its body's drawing (vary the dimensions "
         "first, then the counterweights on the design found)");
+  if (!out.counterweights.empty() && isSpatial(base))
+    return Status::badModel(
+        "counterweights on a machine in space are not varied here (linkage-cli balance places "
+        "them exactly)");
   return Status::success();
 }
 
