@@ -320,6 +320,54 @@ TEST(SensitivityPanel, AMachineInSpaceShowsTheWorldsXYAndZ) {
 // The shaking force (a design with masses: the drop feed): its x, y and the length of its
 // change per unit of each dimension, the library's (tests/test_optimize_shaking.cpp holds it to
 // a slider-crank's closed form) at each pose, the turn's largest computed once per component.
+// On a machine in space the shaking force is the world's, its z the fourth component: the RSSR
+// with masses, the library's derivatives (tests/test_spatial_force_sensitivity.cpp holds them to
+// changed designs).
+TEST(SensitivityPanel, TheShakingForceInSpace) {
+  Mechanism m = test::example("rssr-crank-rocker");
+  m.body(m.bodyNamed("crank")->id)->mass = Mass{0.3, Vec2(10, 3), 60, ""};
+  m.body(m.bodyNamed("rocker")->id)->mass =
+      Mass{0.2, m.point(*m.findPoint("rocker.C"))->pos, 90, ""};
+  m.gravity = Vec2(0, -9.81);
+  QTemporaryDir dir;
+  const QString path = dir.filePath("rssr.linkage.json");
+  ASSERT_TRUE(saveMechanismFile(m, path.toStdString()).ok);
+  Document doc;
+  ASSERT_TRUE(doc.open(path, nullptr));
+  doc.setCrankDeg(70);
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  const int at = panel.pointBox()->findText("shaking force");
+  ASSERT_GE(at, 0);
+  panel.pointBox()->setCurrentIndex(at);
+  Q_EMIT panel.pointBox()->activated(at);
+  settle(panel);
+  ASSERT_EQ(panel.componentBox()->count(), 4);
+  panel.componentBox()->setCurrentIndex(3);  // z
+  Q_EMIT panel.componentBox()->activated(3);
+  settle(panel);
+  Kinematics k = doc.kinematics();
+  k.setAccelerations(true);
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dimensions(k.mechanism()), Sensitivity::Space::World).ok());
+  ASSERT_TRUE(s.at(k).ok());
+  ASSERT_EQ(panel.bars().size(), s.dims().size());
+  double largest = 0;
+  for (const SensitivityPanel::Bar& b : panel.bars())
+    for (size_t d = 0; d < s.dims().size(); ++d)
+      if (s.dims()[d].name == b.dimension) {
+        // (to rounding: the panel's turn moved its own copy of the pose in between)
+        const double want = shakingForceSensitivity3(k, s, static_cast<int>(d)).z();
+        EXPECT_NEAR(b.now, want, 1e-12 * (1 + std::abs(want))) << b.dimension;
+        largest = std::max(largest, std::abs(b.now));
+      }
+  EXPECT_GT(largest, 1e-3);
+  EXPECT_TRUE(panel.summary().startsWith("The frame feels ")) << panel.summary();
+  shot(&panel, "space_shaking_sensitivity");
+}
+
 TEST(SensitivityPanel, TheShakingForce) {
   Document doc;
   ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("drop-feed")), nullptr));

@@ -388,15 +388,20 @@ void SensitivityPanel::transmissionBars(int n) {
 void SensitivityPanel::shakingBars(int which) {
   Kinematics k = doc_->kinematics();
   k.setAccelerations(true);
+  // On a machine in space the world's force, its z the fourth component.
+  const bool space = isSpatial(k.mechanism());
   Sensitivity s;
-  if (Status st = s.prepare(k, dimensions(k.mechanism())); !st.ok()) {
+  if (Status st = s.prepare(k, dimensions(k.mechanism()),
+                            space ? Sensitivity::Space::World : Sensitivity::Space::Refuse);
+      !st.ok()) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
     return;
   }
-  const int w = std::min(which, 2);
-  auto part = [w](const Sensitivity& ss, const Kinematics& kk, int d) {
-    const Vec2 f = shakingForceSensitivity(kk, ss, d);
-    return w == 2 ? f.norm() : f[w];
+  const int w = std::min(which, space ? 3 : 2);
+  auto part = [w, space](const Sensitivity& ss, const Kinematics& kk, int d) {
+    const Vec2 p = space ? Vec2::Zero() : shakingForceSensitivity(kk, ss, d);
+    const Vec3 f = space ? shakingForceSensitivity3(kk, ss, d) : Vec3(p.x(), p.y(), 0);
+    return w == 2 ? f.norm() : f[w == 3 ? 2 : w];
   };
   const bool here = s.at(k).ok();
   const std::vector<double>& peak = turnPeaks({PointId{}, -2, w}, s, k, part);
@@ -413,9 +418,15 @@ void SensitivityPanel::shakingBars(int which) {
          "crank angle, grey the largest over a turn"));
   plot_->replot();
   if (!here || bars_.empty()) return;
-  Vec2 F;
-  double moment = 0;
-  shaking(k, F, moment);
+  Vec3 F, moment;
+  if (space) {
+    shaking(k, F, moment);
+  } else {
+    Vec2 planar;
+    double m = 0;
+    shaking(k, planar, m);
+    F = Vec3(planar.x(), planar.y(), 0);
+  }
   summary_->setText(tr("The frame feels %1 N here (fx %2, fy %3); %4 changes it most (%5 N per "
                        "unit here, up to %6 N over a turn)")
                         .arg(F.norm(), 0, 'g', 4)
