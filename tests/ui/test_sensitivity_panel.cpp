@@ -34,6 +34,17 @@ void settle(SensitivityPanel& panel) {
   while (panel.redrawPending() && t.elapsed() < 10000) QTest::qWait(5);
 }
 
+// `text` chosen in the Output box as a user does (its activation), the redraw waited for; false
+// where the box has no such entry.
+bool choose(SensitivityPanel& panel, const QString& text) {
+  const int at = panel.pointBox()->findText(text);
+  if (at < 0) return false;
+  panel.pointBox()->setCurrentIndex(at);
+  Q_EMIT panel.pointBox()->activated(at);
+  settle(panel);
+  return true;
+}
+
 TEST(SensitivityPanel, TheGroundsDimensionsMoveThePointAsAWhole) {
   Document doc;
   ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("wanzer-inversion-2")), nullptr));
@@ -183,11 +194,7 @@ TEST(SensitivityPanel, AWindowsEnds) {
   panel.resize(900, 400);
   panel.show();
   settle(panel);
-  const int at = panel.pointBox()->findText("window needle: its end");
-  ASSERT_GE(at, 0);
-  panel.pointBox()->setCurrentIndex(at);
-  Q_EMIT panel.pointBox()->activated(at);
-  settle(panel);
+  ASSERT_TRUE(choose(panel, "window needle: its end"));
   const Mechanism& m = doc.design();
   const WindowSensitivity want = windowSensitivity(doc.kinematics(), "needle", dimensions(m));
   ASSERT_TRUE(want.status.ok()) << want.status.message;
@@ -214,11 +221,7 @@ TEST(SensitivityPanel, AWindowInSpace) {
   panel.resize(900, 400);
   panel.show();
   settle(panel);
-  const int at = panel.pointBox()->findText("window low: its start");
-  ASSERT_GE(at, 0);
-  panel.pointBox()->setCurrentIndex(at);
-  Q_EMIT panel.pointBox()->activated(at);
-  settle(panel);
+  ASSERT_TRUE(choose(panel, "window low: its start"));
   const WindowSensitivity want =
       windowSensitivity(doc.kinematics(), "low", dimensions(doc.design()));
   ASSERT_TRUE(want.status.ok()) << want.status.message;
@@ -339,11 +342,7 @@ TEST(SensitivityPanel, TheShakingForceInSpace) {
   panel.resize(900, 400);
   panel.show();
   settle(panel);
-  const int at = panel.pointBox()->findText("shaking force");
-  ASSERT_GE(at, 0);
-  panel.pointBox()->setCurrentIndex(at);
-  Q_EMIT panel.pointBox()->activated(at);
-  settle(panel);
+  ASSERT_TRUE(choose(panel, "shaking force"));
   ASSERT_EQ(panel.componentBox()->count(), 4);
   panel.componentBox()->setCurrentIndex(3);  // z
   Q_EMIT panel.componentBox()->activated(3);
@@ -376,11 +375,8 @@ TEST(SensitivityPanel, TheShakingForce) {
   panel.resize(900, 400);
   panel.show();
   settle(panel);
-  const int at = panel.pointBox()->findText("shaking force");
-  ASSERT_GE(at, 0);  // the pins' reactions after it
-  panel.pointBox()->setCurrentIndex(at);
-  Q_EMIT panel.pointBox()->activated(at);
-  settle(panel);
+  ASSERT_TRUE(choose(panel, "shaking force"));  // the pins' reactions after it
+  const int at = panel.pointBox()->currentIndex();
   EXPECT_TRUE(panel.componentBox()->isEnabled());
   for (int which : {0, 1, 2}) {
     panel.componentBox()->setCurrentIndex(which);
@@ -478,11 +474,7 @@ TEST(SensitivityPanel, WhatCannotBeDifferentiatedYetIsSaid) {
   // A dyad with an arc slot's centre: its transmission angle listed, refused by name.
   ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("curved-guide")), nullptr));
   settle(panel);
-  const int at = panel.pointBox()->findText("transmission angle 0: mu:rod.B");
-  ASSERT_GE(at, 0);
-  panel.pointBox()->setCurrentIndex(at);
-  Q_EMIT panel.pointBox()->activated(at);
-  settle(panel);
+  ASSERT_TRUE(choose(panel, "transmission angle 0: mu:rod.B"));
   EXPECT_TRUE(panel.bars().empty());
   EXPECT_TRUE(panel.summary().startsWith(
       "Not yet: mu:rod.B is a dyad with ground.guide's centre (an arc slot)"))
