@@ -53,7 +53,7 @@ difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.ro
   --clearance N        instead, the derivative of the least distance of the file's clearance N
                        (0 the first of "timing"'s "clearances"; the envelope theorem at the
                        closest approach): CSV dimension,dmin_mm_per_mm; --point not needed.
-                       Refused where the two touch (0 has no derivative) or to a slot
+                       Refused where the two touch (0 has no derivative)
   --window NAME        instead, the derivatives of the ends of the file's timing window NAME (a
                        point's position below or above a level): CSV
                        dimension,interval,dfrom_deg_per_unit,dto_deg_per_unit (degrees of
@@ -62,8 +62,8 @@ difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.ro
                        `linkage-cli transmission`, or its name there, e.g. mu:coupler.B) at each
                        crank angle of the turn: CSV crank_deg,dimension,dmu_deg_per_unit
                        (degrees of the angle per mm, degree or ratio); --point not needed.
-                       A dyad between points only: a rod on a slider or in a slot, and a dyad
-                       with an arc slot, are refused by name
+                       Every kind: a dyad's (with an arc slot's centre too), a rod's on a
+                       slider or in a slot
   --shaking            instead, the derivatives of the shaking force (what the frame feels: the
                        bodies' masses times their accelerations, with gravity and loads, as
                        `dynamics` writes it) at the file's speed at each crank angle: CSV
@@ -266,19 +266,15 @@ int perStep(Kinematics& k, Sensitivity& sens, const Options& o, const std::strin
   return failed.ok() ? kOk : exitFor(failed);
 }
 
-// A dyad's transmission angle's derivatives (linkage/transmission_sensitivity.h), a row a
+// A transmission angle's derivatives (linkage/transmission_sensitivity.h), a row a
 // dimension a step.
 int transmission(Kinematics& k, Sensitivity& sens, const Options& o) {
   const std::vector<TransmissionJoint> js = transmissionJoints(k.mechanism());
   const std::optional<size_t> j = transmissionIndex(js, o.transmission);
   if (!j) return kBadInput;
-  if (Status s = dyadDifferentiable(k.mechanism(), js[*j]); !s.ok()) {
-    error("sensitivity: " + s.message);
-    return exitFor(s);
-  }
   return perStep(k, sens, o, "dmu_deg_per_unit", [&](Kinematics& kk, Sensitivity& ss) {
     std::vector<std::vector<double>> out;
-    for (double d : dyadAngleDerivatives(kk, js[*j], ss)) out.push_back({d});
+    for (double d : transmissionAngleDerivatives(kk, js[*j], ss)) out.push_back({d});
     return out;
   });
 }

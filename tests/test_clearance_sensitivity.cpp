@@ -86,6 +86,33 @@ TEST(ClearanceSensitivity, LengthsTimesTheirDerivativesAddUpToTheDistance) {
   }
 }
 
+// To a slot: the offset slider-crank's crank pin A to its own ground slot, the line through
+// P0 = (e, -50) at angle alpha, which the crank circle does not reach (e > r): the closest is
+// h - r, h = |cross(d, O - P0)| = 50 cos(alpha) + 30 sin(alpha) with O the crank pivot, so
+// d/dr = -1, d/d(O.x) = -1 (towards the slot), d/d(O.y) = 0, d/d(offset) = -1 (its normal is -x),
+// d/d(angle) = (-50 sin(alpha) + 30 cos(alpha)) pi / 180 = -50 pi / 180, d/d(rod) = 0.
+TEST(ClearanceSensitivity, ToASlotByTheDistanceFromItsLine) {
+  test::SliderCrank sc = test::sliderCrank(20, 70, 30, 30);
+  sc.m.slots[0].p0 = Vec2(30, -50);
+  Kinematics k;
+  ASSERT_TRUE(k.load(sc.m).ok());
+  PointId A;
+  for (const Point& p : sc.m.points)
+    if (p.body == sc.crank && p.name == "A") A = p.id;
+  const ClearanceSensitivity s =
+      clearanceSensitivity(k, {A, ClearancePart::of(sc.m.slots[0].id), {}}, dimensions(sc.m));
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  EXPECT_NEAR(s.clearance.closest.distance, 10, 1e-9);
+  EXPECT_NEAR(of(s, "crank.O-A"), -1, 1e-10);
+  EXPECT_NEAR(of(s, "ground.O.x"), -1, 1e-10);
+  EXPECT_NEAR(of(s, "ground.O.y"), 0, 1e-10);
+  EXPECT_NEAR(of(s, "ground.guide.offset"), -1, 1e-10);
+  EXPECT_NEAR(of(s, "ground.guide.angle"), -50 * M_PI / 180, 1e-10);
+  EXPECT_NEAR(of(s, "rod.A-B"), 0, 1e-10);
+  // The whole frame moved by dx (the pivot and the slot, whose normal is -x) changes nothing.
+  EXPECT_NEAR(of(s, "ground.O.x") - of(s, "ground.guide.offset"), 0, 1e-12);
+}
+
 TEST(ClearanceSensitivity, WhatHasNoDerivativeIsSaid) {
   const Case c = withGround(20, 70, 12, 110);
   Kinematics k;
@@ -93,7 +120,8 @@ TEST(ClearanceSensitivity, WhatHasNoDerivativeIsSaid) {
   const ClearanceSensitivity slot = clearanceSensitivity(
       k, {c.sc.A, ClearancePart::of(c.sc.m.slots[0].id), {}}, dimensions(c.sc.m));
   EXPECT_FALSE(slot.status.ok());
-  EXPECT_NE(slot.status.message.find("slot"), std::string::npos);
+  // The crank pin crosses the slot's line: they touch, no derivative.
+  EXPECT_NE(slot.status.message.find("touch"), std::string::npos) << slot.status.message;
 }
 
 }  // namespace

@@ -34,6 +34,7 @@
 #include "linkage/elements.h"
 #include "linkage/guide.h"
 #include "linkage/sensitivity.h"
+#include "linkage/slot_sensitivity.h"
 #include "system/system.h"
 
 namespace linkage {
@@ -51,27 +52,12 @@ struct Moves {  // one dimension's move of the drawing, by id value (Sensitivity
   double depth(PointId p, int cls) const { return space.depthIn(p, kept(p), cls); }
 };
 
-// An arc slot's centre c and radius rho as its three points P move (planar machines: an arc
-// of a machine in space has no dimension): (P - c) . (dP - dc) = rho drho for each.
+// An arc slot's centre c and radius rho as its three points P move (linkage/slot_sensitivity.h;
+// planar machines: an arc of a machine in space has no dimension).
 void arcMove(const Mechanism& m, SlotId id, const Moves& mv, Vec2& dc, double& drho) {
-  dc = Vec2::Zero();
-  drho = 0;
-  for (const Dimension::SlotMove& s : mv.dim.slots) {
-    if (s.slot != id || !s.mid) continue;
-    const Slot& slot = *m.slot(id);
-    const std::optional<Guide> g = guideOf(slot);
-    Eigen::Matrix3d A;
-    Eigen::Vector3d b;
-    const Vec2 p[3] = {slot.p0, *slot.mid, slot.p1}, dp[3] = {s.p0, *s.mid, s.p1};
-    for (int i = 0; i < 3; ++i) {
-      const Vec2 r = p[i] - g->centre;
-      A.row(i) << r.x(), r.y(), g->radius;
-      b[i] = r.dot(dp[i]);
-    }
-    const Eigen::Vector3d x = A.partialPivLu().solve(b);
-    dc = x.head<2>();
-    drho = x[2];
-  }
+  const SlotChange c = slotChange(m, id, mv.dim);
+  dc = c.centre;
+  drho = c.radius;
 }
 
 // The block's point of a slider in an arc slot is compiled as the point at the arc's centre,
@@ -529,6 +515,17 @@ Vec2 Sensitivity::point(const Kinematics& k, PointId p, int dim) const {
   const int c = 3 * loc->body;
   const Rot R = Rot::of(k.q()[c + 2]);
   const Vec2 a = R * loc->s;
+  return Vec2(dq_(c, dim), dq_(c + 1, dim)) + dq_(c + 2, dim) * perp(a) + R * own;
+}
+
+Vec2 Sensitivity::point(const Kinematics& k, BodyId b, const Vec2& at, const Vec2& own,
+                        int dim) const {
+  const System& sys = internal::system(k);
+  const int body = sys.bodyIndex(b);
+  if (body < 0) return own;  // the ground's drawing is the world
+  const int c = 3 * body;
+  const Rot R = Rot::of(k.q()[c + 2]);
+  const Vec2 a = R * (at - sys.frameOrigin[body]);
   return Vec2(dq_(c, dim), dq_(c + 1, dim)) + dq_(c + 2, dim) * perp(a) + R * own;
 }
 

@@ -1,7 +1,10 @@
-// A dyad's transmission angle's exact derivatives (linkage/transmission_sensitivity.h).
+// A transmission angle's exact derivatives (linkage/transmission_sensitivity.h).
 #include "linkage/transmission_sensitivity.h"
 
 #include <cmath>
+
+#include "linkage/guide.h"
+#include "linkage/slot_sensitivity.h"
 
 namespace linkage {
 
@@ -9,41 +12,73 @@ namespace {
 
 constexpr double kDeg = M_PI / 180;
 
+// d(where the anchor is)/d(dimension dim): a point's, or an arc slot's centre's.
+Vec2 anchorChange(const Kinematics& k, const Anchor& a, const Sensitivity& s, int dim) {
+  if (!a.arc) return s.point(k, a.point, dim);
+  const Mechanism& m = k.mechanism();
+  const Slot& slot = *m.slot(a.arc);
+  const Vec2 centre = guideOf(slot)->centre;  // an arc: transmissionJoints made it an anchor
+  return s.point(k, slot.body, centre, slotChange(m, a.arc, s.dims()[dim]).centre, dim);
+}
+
+// A line's turn per unit of the dimension: cross(u, du) / |u|^2.
+double lineTurn(const Vec2& u, const Vec2& du) {
+  return cross(u, du) / u.squaredNorm();
+}
+
+// A dyad's turn from its link's line to the other's, radians, and its change.
+double dyadTurn(const Kinematics& k, const TransmissionJoint& j, const Sensitivity* s, int dim,
+                double* d) {
+  const Vec2 u = j.linkOuter.at(k) - j.linkAt.at(k), w = j.otherOuter.at(k) - j.otherAt.at(k);
+  if (s && d) {
+    auto dp = [&](const Anchor& a) { return anchorChange(k, a, *s, dim); };
+    *d =
+        lineTurn(w, dp(j.otherOuter) - dp(j.otherAt)) - lineTurn(u, dp(j.linkOuter) - dp(j.linkAt));
+  }
+  return std::atan2(cross(u, w), u.dot(w));
+}
+
+// A rod's theta from the slot's line to the rod's, in (-90, 90] degrees as radians, and its
+// change.
+double rodTheta(const Kinematics& k, const TransmissionJoint& j, const Sensitivity* s, int dim,
+                double* d) {
+  const Mechanism& m = k.mechanism();
+  const Slot& slot = *m.slot(j.slot);
+  const Vec2 t = slot.p1 - slot.p0, line = k.bodyTransform(slot.body).R * t;
+  const Vec2 u = j.linkAt.at(k) - j.linkOuter.at(k);
+  if (s && d) {
+    const SlotChange c = slotChange(m, j.slot, s->dims()[dim]);
+    const double slotTurn = s->angle(k, slot.body, dim) + lineTurn(t, c.p1 - c.p0);
+    *d = lineTurn(u, anchorChange(k, j.linkAt, *s, dim) - anchorChange(k, j.linkOuter, *s, dim)) -
+         slotTurn;
+  }
+  double theta = std::atan2(cross(line, u), line.dot(u));
+  if (theta > M_PI / 2) theta -= M_PI;
+  if (theta <= -M_PI / 2) theta += M_PI;
+  return theta;
+}
+
 }  // namespace
 
-Status dyadDifferentiable(const Mechanism& m, const TransmissionJoint& j) {
-  if (j.kind != TransmissionKind::Dyad)
-    return Status::failure(StatusCode::BadModel,
-                           j.label + " is a " + toString(j.kind) +
-                               " angle: its derivatives are not computed yet (a dyad's "
-                               "between points are)");
-  for (const Anchor* a : {&j.linkOuter, &j.linkAt, &j.otherAt, &j.otherOuter})
-    if (a->arc)
-      return Status::failure(StatusCode::BadModel,
-                             j.label + " is a dyad with " + m.slotLabel(a->arc) +
-                                 "'s centre (an arc slot): its derivatives are not computed "
-                                 "yet (a dyad's between points are)");
-  return Status::success();
-}
-
-double dyadAngleSensitivity(const Kinematics& k, const TransmissionJoint& j,
-                            const Sensitivity* sens, int dim, double* d) {
-  const Vec2 u = j.linkOuter.at(k) - j.linkAt.at(k), w = j.otherOuter.at(k) - j.otherAt.at(k);
-  const double turn = std::atan2(cross(u, w), u.dot(w));
-  if (sens && d) {
-    auto dp = [&](const Anchor& a) { return sens->point(k, a.point, dim); };
-    const Vec2 du = dp(j.linkOuter) - dp(j.linkAt), dw = dp(j.otherOuter) - dp(j.otherAt);
-    const double dturn = cross(w, dw) / w.squaredNorm() - cross(u, du) / u.squaredNorm();
-    *d = (turn < 0 ? -dturn : dturn) / kDeg;
+double transmissionAngleSensitivity(const Kinematics& k, const TransmissionJoint& j,
+                                    const Sensitivity* sens, int dim, double* d) {
+  double change = 0;
+  double* dc = sens && d ? &change : nullptr;
+  if (j.kind == TransmissionKind::Dyad) {
+    const double turn = dyadTurn(k, j, sens, dim, dc);
+    if (dc) *d = (turn < 0 ? -change : change) / kDeg;
+    return std::abs(turn) / kDeg;
   }
-  return std::abs(turn) / kDeg;
+  const double theta = rodTheta(k, j, sens, dim, dc);
+  if (dc) *d = (theta < 0 ? change : -change) / kDeg;
+  return 90 - std::abs(theta) / kDeg;
 }
 
-std::vector<double> dyadAngleDerivatives(const Kinematics& k, const TransmissionJoint& j,
-                                         const Sensitivity& s) {
+std::vector<double> transmissionAngleDerivatives(const Kinematics& k, const TransmissionJoint& j,
+                                                 const Sensitivity& s) {
   std::vector<double> out(s.dims().size());
   for (size_t v = 0; v < out.size(); ++v)
-    dyadAngleSensitivity(k, j, &s, static_cast<int>(v), &out[v]);
+    transmissionAngleSensitivity(k, j, &s, static_cast<int>(v), &out[v]);
   return out;
 }
 

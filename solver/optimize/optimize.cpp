@@ -62,14 +62,7 @@ struct Probe {
   Vec3 weightOfDp3 = Vec3::Zero();
 };
 
-// A dyad's angle between C->P1 and C->P2 (degrees, 0 to 180), and its derivative along the
-// dimension v: each line turns by cross(u, du) / |u|^2, the angle by the difference.
-double dyadAngle(const Kinematics& k, const TransmissionJoint& j, const Sensitivity* sens, int v,
-                 double* d) {
-  return dyadAngleSensitivity(k, j, sens, v, d);
-}
-
-// Transmission: the dyad's extremes over the turn against the limits.
+// Transmission: the angle's extremes over the turn against the limits.
 Status transmissionResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t i, Evaluation& e,
                              std::vector<Probe>& probes) {
   const OptTarget& t = spec.targets[i];
@@ -221,7 +214,7 @@ Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, const opt::Vari
       if (dim < 0) continue;  // a counterweight moves no point
       if (t.kind == OptTarget::Kind::Transmission) {
         double d = 0;
-        dyadAngle(walker, joints[t.joint], sens, dim, &d);
+        transmissionAngleSensitivity(walker, joints[t.joint], sens, dim, &d);
         e.gradient[v] += p.angleWeight * d;
       } else if (space) {
         e.gradient[v] += p.weightOfDp3.dot(sens->point3(walker, p.point, dim));

@@ -125,10 +125,6 @@ Status checkTransmission(const Mechanism& m, const OptTarget& t) {
   const std::vector<TransmissionJoint> js = transmissionJoints(m);
   if (t.joint >= js.size()) return Status::badModel("no such transmission angle");
   const TransmissionJoint& j = js[t.joint];
-  if (j.kind != TransmissionKind::Dyad || j.linkOuter.arc || j.linkAt.arc || j.otherAt.arc ||
-      j.otherOuter.arc)
-    return Status::badModel("'" + j.label +
-                            "': only a dyad's angle between points is differentiated yet");
   if (!(t.limitDeg >= 0 && t.limitDeg < 90))
     return Status::badModel("'" + j.label + "': the limit must be from 0 to 90 degrees");
   return Status::success();

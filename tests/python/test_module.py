@@ -280,8 +280,10 @@ def test_optimize_counterweights_and_refusals():
     assert r["counterweights_kg"]["lowershaft"] > 0
     with pytest.raises(ValueError, match="no dimension 'nothing'"):
         m.optimize({"nothing": (0, 1)}, ["shaking:fx<=0"])
-    with pytest.raises(ValueError, match="shaking:fx<=N"):
+    with pytest.raises(ValueError, match="planar machine's shaking force has no fz"):
         m.optimize({"lowershaft.counterweight.x": (0, 1)}, ["shaking:fz<=0"])
+    with pytest.raises(ValueError, match="shaking:fx<=N"):
+        m.optimize({"lowershaft.counterweight.x": (0, 1)}, ["shaking:fw<=0"])
 
 
 def test_a_triangles_side_and_refused_edits():

@@ -350,19 +350,17 @@ void SensitivityPanel::transmissionBars(int n) {
   const TransmissionJoint j = transmissionJoints(m).at(n);
   Kinematics k = doc_->kinematics();
   Sensitivity s;
-  Status st = dyadDifferentiable(m, j);
-  if (st.ok()) st = s.prepare(k, dimensions(k.mechanism()));
-  if (!st.ok()) {
+  if (Status st = s.prepare(k, dimensions(k.mechanism())); !st.ok()) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
     return;
   }
   const bool here = s.at(k).ok();
   const std::vector<double> now =
-      here ? dyadAngleDerivatives(k, j, s) : std::vector<double>(s.dims().size(), 0.0);
+      here ? transmissionAngleDerivatives(k, j, s) : std::vector<double>(s.dims().size(), 0.0);
   const std::vector<double>& peak =
       turnPeaks({PointId{}, -1, n}, s, k, [&j](const Sensitivity& ss, const Kinematics& kk, int d) {
         double v = 0;
-        dyadAngleSensitivity(kk, j, &ss, d, &v);
+        transmissionAngleSensitivity(kk, j, &ss, d, &v);
         return v;
       });
   bars_.clear();
@@ -379,7 +377,7 @@ void SensitivityPanel::transmissionBars(int n) {
   summary_->setText(tr("%1 is %2° here; it changes most with %3 (%4° per unit here, up to %5° "
                        "over a turn)")
                         .arg(QString::fromStdString(j.label))
-                        .arg(dyadAngleSensitivity(k, j, nullptr, 0, nullptr), 0, 'f', 2)
+                        .arg(transmissionAngleSensitivity(k, j, nullptr, 0, nullptr), 0, 'f', 2)
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4)
                         .arg(bars_[0].peak, 0, 'g', 4));

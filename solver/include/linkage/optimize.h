@@ -62,10 +62,10 @@ struct OptTarget {
   Vec2 at = Vec2::Zero();   // the point here (world mm)
   std::optional<double> z;  // and, on a machine in space, at this world z (none: x, y only)
   std::vector<Vec2> path;   // Path: world mm
-  // Transmission: the dyad's angle (transmissionJoints(m)[joint], linkage/transmission.h) kept
-  // within limitDeg to 180 - limitDeg over the turn: residuals max(0, limit - min) and
-  // max(0, max - (180 - limit)), degrees. Dyads whose lines run between points only (not an
-  // arc slot's radius).
+  // Transmission: the angle (transmissionJoints(m)[joint], linkage/transmission.h; a dyad's, a
+  // rod's on a slider or in a slot) kept within limitDeg to 180 - limitDeg over the turn:
+  // residuals max(0, limit - min) and max(0, max - (180 - limit)), degrees (a rod's is at most
+  // 90: only its lower limit binds).
   size_t joint = 0;
   double limitDeg = 0;
   // Shaking: the peak over the turn of |fx|, |fy| or |f| of the shaking force (linkage/

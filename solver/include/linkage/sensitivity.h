@@ -125,6 +125,10 @@ class Sensitivity {
   const std::vector<Dimension>& dims() const { return dims_; }
   // d(position of p)/d(dimension k), mm per unit, at the pose of the last at().
   Vec2 point(const Kinematics& k, PointId p, int dim) const;
+  // d(position)/d(dimension k) of the point of body b drawn at sketch position `at`, which the
+  // dimension moves by `own` in the drawing (per unit): a point of a slot (linkage/
+  // slot_sensitivity.h). A planar model's.
+  Vec2 point(const Kinematics& k, BodyId b, const Vec2& at, const Vec2& own, int dim) const;
   // d(velocity of p)/d(dimension k), mm/s per unit at the driver's speed (from dq'/dp: J q' +
   // Phi_phi = 0 differentiated along dq/dp), and d(acceleration)/d(dimension k), mm/s^2 per unit
   // (from dq''/dp: J q'' = gamma differentiated along dq/dp and dq'/dp; NaN when the Kinematics
