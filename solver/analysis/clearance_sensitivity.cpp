@@ -7,6 +7,7 @@
 
 #include "linkage/guide.h"
 #include "linkage/slot_sensitivity.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -55,6 +56,29 @@ Nearest onSlot(const Kinematics& at, const Sensitivity& s, SlotId id, const Vec2
           }};
 }
 
+// On a machine in space, in the world (findClearance's distance there: to a point or a
+// segment): d(least)/dp = n . (dA - dB), B the nearest point of the segment at its parameter.
+void inSpace(const Kinematics& at, const Sensitivity& s, const ClearanceWatch& watch,
+             ClearanceSensitivity& out) {
+  const ClearancePart& other = watch.other;
+  auto world = [&](PointId p) { return Vec3(at.motionInSpace(p).position); };
+  const Vec3 A = world(watch.point), N = world(other.point);
+  double t = 0;
+  Vec3 B = N;
+  if (other.isSegment()) {
+    const Vec3 d = world(other.end) - N;
+    t = d.squaredNorm() > 0 ? std::clamp((A - N).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    B = N + t * d;
+  }
+  const Vec3 n = (A - B).normalized();
+  for (size_t i = 0; i < out.dims.size(); ++i) {
+    const int d = static_cast<int>(i);
+    Vec3 dB = s.point3(at, other.point, d);
+    if (other.isSegment()) dB = (1 - t) * dB + t * s.point3(at, other.end, d);
+    out.derivative.push_back(n.dot(s.point3(at, watch.point, d) - dB));
+  }
+}
+
 }  // namespace
 
 ClearanceSensitivity clearanceSensitivity(const Kinematics& k, const ClearanceWatch& watch,
@@ -76,9 +100,14 @@ ClearanceSensitivity clearanceSensitivity(const Kinematics& k, const ClearanceWa
   Kinematics at = k;
   Sensitivity s;
   if (!(out.status = at.moveTo(c.closest.crankDeg)).ok()) return out;
-  if (!(out.status = s.prepare(at, std::move(dims))).ok()) return out;
+  const bool space = isSpatial(at.mechanism());
+  if (!(out.status = s.prepare(at, std::move(dims),
+                               space ? Sensitivity::Space::World : Sensitivity::Space::Refuse))
+           .ok())
+    return out;
   if (!(out.status = s.at(at)).ok()) return out;
   out.dims = s.dims();
+  if (space) return inSpace(at, s, watch, out), out;
   const Vec2 A = at.position(watch.point);
   const Nearest B =
       other.isSlot() ? onSlot(at, s, other.slot, A)

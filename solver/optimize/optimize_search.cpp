@@ -162,8 +162,9 @@ Status checkWatched(const Mechanism& m, const OptTarget& t) {
 }
 
 // What a target may be on a machine in space (a stroke, a position with or without z, a timing
-// window's end, a joint's in-plane reaction or a ball rod's tension, the shaking force in the
-// world) and on a planar one (a position without z).
+// window's end, a joint's in-plane reaction or a ball rod's tension, the shaking force and a
+// clearance in the world; not a path or a transmission angle) and on a planar one (a position
+// without z).
 Status checkSpace(bool space, const OptTarget& t) {
   using K = OptTarget::Kind;
   if (!space) {
@@ -175,16 +176,14 @@ Status checkSpace(bool space, const OptTarget& t) {
   }
   if (t.kind == K::Position && !(t.at.allFinite() && std::isfinite(t.z.value_or(0))))
     return Status::badModel("a position target's coordinates must be numbers");
-  if (t.kind == K::Stroke || t.kind == K::Position || t.kind == K::Window || t.kind == K::Force ||
-      t.kind == K::Shaking)
-    return Status::success();
+  if (t.kind != K::Path && t.kind != K::Transmission) return Status::success();
   static const char* names[] = {"stroke",  "position",  "path",   "transmission",
                                 "shaking", "clearance", "window", "force"};
   return Status::badModel(
       std::string("a ") + names[static_cast<int>(t.kind)] +
       " target on a machine in space (planes) is not optimised yet (its "
-      "derivatives in space are not computed): stroke, position, window, force and shaking "
-      "targets are");
+      "derivatives in space are not computed): stroke, position, window, force, shaking and "
+      "clearance targets are");
 }
 
 double uniform(std::mt19937_64& g) {
