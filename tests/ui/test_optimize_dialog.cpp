@@ -202,9 +202,12 @@ TEST(OptimizeDialog, AReactionsPeakLoweredByACounterweight) {
   ASSERT_TRUE(dialog.vary("crank.counterweight.y", -50, 50));
   EXPECT_FALSE(dialog.addTarget(OptTarget::Kind::Force, "pin:nothing.X", "0"));
   ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Force, "pin:ground.O", "0"));
+  // One start: each row's gradient solves the counterweight's share at its angle, slow under the
+  // sanitizers (eight starts took 337 s there).
+  dialog.findChild<QSpinBox*>("optStarts")->setValue(1);
   QSignalSpy done(&dialog, &OptimizeDialog::finished);
   dialog.find();
-  ASSERT_TRUE(done.wait(60000));
+  ASSERT_TRUE(done.wait(300000));
   ASSERT_TRUE(dialog.result() && dialog.result()->status.ok()) << dialog.summary().toStdString();
   const double before = dialog.result()->atBefore.measures.at(0).at(0);
   const double peak = dialog.result()->atAfter.measures.at(0).at(0);
