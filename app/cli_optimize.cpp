@@ -41,6 +41,8 @@ pose on MODEL's assembly branches.
      shaking:fx<=N                   the peak of the shaking force's |fx| (fy, fz in space, or
                                      force: |f|)
                                      over the turn at most N newtons (0: as low as it goes)
+     shaking:moment<=NM              the peak of the shaking moment's |m| about the drawing's
+                                     origin at most NM newton metres (a planar machine's)
      force:JOINT<=N                  the peak over the turn of a joint's reaction |f| (JOINT as
                                      `dynamics` names it: pin:crank.A, slider:block.B) at most
                                      N newtons (over dimensions or counterweights)
@@ -60,6 +62,7 @@ pose on MODEL's assembly branches.
 Output, CSV: quantity,name,before,after,target. A row a variable (variable,DIM); a row a target's
 measure: stroke_mm (body.point), x_mm and y_mm (and z_mm) (body.point@DEG), path_rms_mm and path_max_mm (the
 given points' distances to the curve), shaking_peak_N and shaking_peak_deg (fx, fy or force),
+shaking_peak_Nm and shaking_peak_deg (moment),
 force_peak_N and force_peak_deg (JOINT),
 clearance_least_mm and clearance_least_deg (clearance N), window_deg (NAME.start or NAME.end);
 a row a counterweight added (counterweight_kg,BODY: its mass, at the body's reach); the objective (mm^2, N^2, ...); the starts, those infeasible and
@@ -108,7 +111,7 @@ std::string table(const OptimizeSpec& spec, const std::vector<std::string>& name
       row("transmission_min_deg", 0, ">=" + formatNumber(t.limitDeg));
       row("transmission_max_deg", 1, "<=" + formatNumber(180 - t.limitDeg));
     } else if (t.kind == OptTarget::Kind::Shaking) {
-      row("shaking_peak_N", 0, "<=" + formatNumber(t.limitN));
+      row(t.moment ? "shaking_peak_Nm" : "shaking_peak_N", 0, "<=" + formatNumber(t.limitN));
       row("shaking_peak_deg", 1, "");
     } else if (t.kind == OptTarget::Kind::Force) {
       row("force_peak_N", 0, "<=" + formatNumber(t.limitN));

@@ -67,9 +67,10 @@ difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.ro
   --shaking            instead, the derivatives of the shaking force (what the frame feels: the
                        bodies' masses times their accelerations, with gravity and loads, as
                        `dynamics` writes it) at the file's speed at each crank angle: CSV
-                       crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit (a dimension moves
-                       points, not masses: each centre of mass stays where it is drawn in its
-                       body). A planar machine's
+                       crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit,dm_Nm_per_unit (the
+                       shaking moment's about the drawing's origin; a dimension moves points,
+                       not masses: each centre of mass stays where it is drawn in its body);
+                       on a machine in space the world's dfx, dfy, dfz (no moment yet)
   --force JOINT        instead, the derivatives of a joint's reaction (JOINT as `dynamics` names
                        its columns, e.g. pin:crank.A: on the body of its first point) at the
                        file's speed at each crank angle: CSV crank_deg,dimension and a column a
@@ -293,14 +294,17 @@ int shakingForce(Kinematics& k, Sensitivity& sens, const Options& o) {
                      }
                      return out;
                    });
-  return perStep(k, sens, o, "dfx_N_per_unit,dfy_N_per_unit", [](Kinematics& kk, Sensitivity& ss) {
-    std::vector<std::vector<double>> out;
-    for (size_t d = 0; d < ss.dims().size(); ++d) {
-      const Vec2 f = shakingForceSensitivity(kk, ss, static_cast<int>(d));
-      out.push_back({f.x(), f.y()});
-    }
-    return out;
-  });
+  // A planar machine's moment about the drawing's origin too.
+  return perStep(
+      k, sens, o, "dfx_N_per_unit,dfy_N_per_unit,dm_Nm_per_unit",
+      [](Kinematics& kk, Sensitivity& ss) {
+        std::vector<std::vector<double>> out;
+        for (size_t d = 0; d < ss.dims().size(); ++d) {
+          const Vec2 f = shakingForceSensitivity(kk, ss, static_cast<int>(d));
+          out.push_back({f.x(), f.y(), shakingMomentSensitivity(kk, ss, static_cast<int>(d))});
+        }
+        return out;
+      });
 }
 
 // A joint's reaction's derivatives (linkage/force_sensitivity.h), N (N m) per unit at the file's

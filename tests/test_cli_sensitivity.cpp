@@ -215,7 +215,7 @@ TEST_F(SensitivityCli, TheShakingForcesDerivativesWhenAsked) {
   const test::CliResult res = run("sensitivity drop-feed --shaking --steps 3");
   ASSERT_EQ(res.exit, 0) << res.err;
   const std::vector<std::string> lines = res.lines();
-  EXPECT_EQ(lines.at(0), "crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit");
+  EXPECT_EQ(lines.at(0), "crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit,dm_Nm_per_unit");
   Kinematics k;
   ASSERT_TRUE(k.load(test::example("drop-feed")).ok());
   k.setAccelerations(true);
@@ -230,10 +230,11 @@ TEST_F(SensitivityCli, TheShakingForcesDerivativesWhenAsked) {
     for (size_t d = 0; d < n; ++d) {
       const Vec2 want = shakingForceSensitivity(k, s, static_cast<int>(d));
       const std::vector<std::string> row = split(lines[1 + step * n + d], ',');
-      ASSERT_EQ(row.size(), 4u);
+      ASSERT_EQ(row.size(), 5u);
       EXPECT_EQ(row[1], s.dims()[d].name);
       EXPECT_EQ(parseNumber(row[2]), want.x()) << row[1];
       EXPECT_EQ(parseNumber(row[3]), want.y()) << row[1];
+      EXPECT_EQ(parseNumber(row[4]), shakingMomentSensitivity(k, s, static_cast<int>(d))) << row[1];
       largest = std::max(largest, want.norm());
     }
   }

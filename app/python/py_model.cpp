@@ -278,7 +278,8 @@ std::vector<std::pair<std::string, std::vector<double>>> Model::shakingSensitivi
       out.emplace_back(s.dims()[d].name, std::vector<double>{f.x(), f.y(), f.z()});
     } else {
       const Vec2 f = shakingForceSensitivity(k, s, i);
-      out.emplace_back(s.dims()[d].name, std::vector<double>{f.x(), f.y()});
+      out.emplace_back(s.dims()[d].name,
+                       std::vector<double>{f.x(), f.y(), shakingMomentSensitivity(k, s, i)});
     }
   }
   return out;

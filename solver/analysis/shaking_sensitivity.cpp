@@ -1,7 +1,10 @@
 // The shaking force's derivative with respect to a dimension: see linkage/shaking_sensitivity.h.
 #include "linkage/shaking_sensitivity.h"
 
+#include <limits>
+
 #include "kinematics/kinematics_state.h"
+#include "linkage/dynamics.h"
 #include "linkage/force_sensitivity.h"
 #include "system/system.h"
 
@@ -24,6 +27,17 @@ Vec3 shakingForceSensitivity3(const Kinematics& k, const Sensitivity& s, int dim
     dF += dQ[3 * i] * f.xAxis + dQ[3 * i + 1] * f.yAxis;
   }
   return dF;
+}
+
+double shakingMomentSensitivity(const Kinematics& k, const Sensitivity& s, int dim) {
+  const Eigen::VectorXd Q = generalizedForces(k), dQ = generalizedForcesChange(k, s, dim);
+  if (Q.size() == 0 || dQ.size() != Q.size()) return std::numeric_limits<double>::quiet_NaN();
+  double dM = 0;  // N mm
+  for (int b = 0; 3 * b < Q.size(); ++b) {
+    const Vec2 r = k.q().segment<2>(3 * b), dr = s.dq().block<2, 1>(3 * b, dim);
+    dM += dQ[3 * b + 2] + cross(dr, Q.segment<2>(3 * b)) + cross(r, dQ.segment<2>(3 * b));
+  }
+  return dM / 1000;
 }
 
 }  // namespace linkage

@@ -174,6 +174,10 @@ Status checkSpace(bool space, const OptTarget& t) {
           "planar: give x, y");
     return Status::success();
   }
+  if (t.kind == K::Shaking && t.moment)
+    return Status::badModel(
+        "the shaking moment on a machine in space (planes) is not optimised yet (its derivative "
+        "in space is not computed): its shaking force is");
   if (t.kind == K::Position && !(t.at.allFinite() && std::isfinite(t.z.value_or(0))))
     return Status::badModel("a position target's coordinates must be numbers");
   if (t.kind != K::Path && t.kind != K::Transmission) return Status::success();

@@ -1,8 +1,10 @@
-// The shaking force's peak as a target (linkage/optimize.h): the rows a minimax is met by.
+// The shaking force's (or moment's) peak as a target (linkage/optimize.h): the rows a minimax is
+// met by.
 //
 // With counterweights of static moments s_k added (kg mm, in their bodies' drawings, at their
 // pivots), the frame feels F = F0 + sum_k (1e-3 (omega_k^2 I - alpha_k perp) R(theta_k) s_k +
-// m_k g) (linkage/balance.h): linear in s_k, its gradient exact. A dimension's is F0's
+// m_k g) (linkage/balance.h): linear in s_k, its gradient exact; the moment adds each one's
+// (Shaker::counterweightMoment, smooth but where s_k is 0). A dimension's is F0's (M0's)
 // (linkage/shaking_sensitivity.h). The turn is cut into `steps` intervals; an interval's row is
 // its largest |F| (or component): its ends' values, or a local maximum of the samples refined by
 // Brent's method on the exact motion where it falls inside the interval. The largest row is the
@@ -50,7 +52,8 @@ struct Shaker {
     return kindOf(design.mechanism().joints[t.index]).role == Role::Distance ? Vec2(r.axialN, 0)
                                                                              : r.force;
   }
-  // What the frame feels (or the joint bears), in the world: a planar machine's z is 0.
+  // What the frame feels (or the joint bears), in the world: a planar machine's z is 0. The
+  // shaking moment (OptTarget::moment) as (0, 0, M), N m.
   Vec3 force(const Kinematics& k) const {
     if (joint) {  // the design's reaction and the counterweights' shares (the forces add)
       Vec2 F = part(solver.compute(k).joints[t.index]);
@@ -66,10 +69,33 @@ struct Shaker {
     Vec2 F;
     double moment = 0;
     shaking(k, F, moment);
-    for (size_t c = 0; c < vars.counterweights.size(); ++c)
-      F +=
-          counterweightForce(k, vars.counterweights[c].body, vars.moment(x, c)) + vars.kg(x, c) * g;
-    return Vec3(F.x(), F.y(), 0);
+    for (size_t c = 0; c < vars.counterweights.size(); ++c) {
+      const Vec2 s = vars.moment(x, c);
+      F += counterweightForce(k, vars.counterweights[c].body, s) + vars.kg(x, c) * g;
+      moment += counterweightMoment(k, c, s);
+    }
+    return t.moment ? Vec3(0, 0, moment) : Vec3(F.x(), F.y(), 0);
+  }
+  // Counterweight c's part of the shaking moment (N m) with static moment s: a point mass m at
+  // c = p + r / m (r = R s, p its pivot) bears m g and the inertia force f of counterweightForce
+  // there; c x (f + m g) = p x (f + m g) + r x g + r x f / m, and r x f / m = -1e-3 alpha |r|^2 /
+  // m.
+  double counterweightMoment(const Kinematics& k, size_t c, const Vec2& s) const {
+    const Counterweight& cw = vars.counterweights[c];
+    const Vec2 r = Rot::of(k.bodyAngle(cw.body)) * s, f = counterweightForce(k, cw.body, s);
+    const double m = s.norm() / cw.maxRadiusMm;
+    const double spin = m > 0 ? -1e-3 * k.bodyAlpha(cw.body) * r.squaredNorm() / m : 0.0;
+    return (cross(k.position(cw.pivot), f + m * g) + cross(r, g) + spin) / 1000;
+  }
+  // Its derivative along the unit u of s (in the body's drawing).
+  double counterweightMomentChange(const Kinematics& k, size_t c, const Vec2& s,
+                                   const Vec2& u) const {
+    const Counterweight& cw = vars.counterweights[c];
+    const Vec2 du = Rot::of(k.bodyAngle(cw.body)) * u, df = counterweightForce(k, cw.body, u);
+    const double n = s.norm(), dm = n > 0 ? s.dot(u) / (n * cw.maxRadiusMm) : 0.0;
+    // |r|^2 / m = |s| R: its change R s.u / |s|.
+    const double dspin = -1e-3 * k.bodyAlpha(cw.body) * cw.maxRadiusMm * (n > 0 ? s.dot(u) / n : 0);
+    return (cross(k.position(cw.pivot), df + dm * g) + cross(du, g) + dspin) / 1000;
   }
   double measure(const Vec3& F) const {
     if (t.measure == BalanceMeasure::Fx) return std::abs(F.x());
@@ -114,8 +140,9 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
   for (size_t v = 0; v < out.size(); ++v) {
     Vec3 dF = Vec3::Zero();
     if (vars.dim[v] >= 0 && sens) {
-      dF = space ? shakingForceSensitivity3(k, *sens, vars.dim[v])
-                 : lift(shakingForceSensitivity(k, *sens, vars.dim[v]));
+      dF = space      ? shakingForceSensitivity3(k, *sens, vars.dim[v])
+           : t.moment ? Vec3(0, 0, shakingMomentSensitivity(k, *sens, vars.dim[v]))
+                      : lift(shakingForceSensitivity(k, *sens, vars.dim[v]));
     } else if (vars.cw[v] >= 0) {
       const size_t c = static_cast<size_t>(vars.cw[v]);
       const Counterweight& cw = vars.counterweights[c];
@@ -123,7 +150,7 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
       const Vec2 s = vars.moment(x, c);
       Vec2 d = counterweightForce(k, cw.body, unit);
       if (s.norm() > 0) d += s.dot(unit) / (s.norm() * cw.maxRadiusMm) * g;  // d(|s| / R)
-      dF = lift(d);
+      dF = t.moment ? Vec3(0, 0, counterweightMomentChange(k, c, s, unit)) : lift(d);
     }
     out[v] = e.dot(dF);
   }

@@ -82,17 +82,18 @@ bool parseTransmission(const Mechanism& m, const std::string& text, OptTarget& t
   return why += "no transmission angle '" + name + "' (the model's: " + known + ")", false;
 }
 
-// shaking:fx<=N (fy, fz on a machine in space, force)
+// shaking:fx<=N (fy, fz on a machine in space, force; moment<=N m)
 bool parseShaking(const std::string& text, OptTarget& t, std::string& why) {
-  const std::string usage = "expected shaking:fx<=N (fx, fy, fz or force; N >= 0)";
+  const std::string usage = "expected shaking:fx<=N (fx, fy, fz, force or moment; N (m) >= 0)";
   const size_t le = text.find("<=");
   if (le == std::string::npos) return why += usage, false;
   const std::string what = text.substr(8, le - 8);
   const std::optional<double> n = parseNumber(text.substr(le + 2));
   if (!n.has_value() || !(n.value() >= 0) ||
-      (what != "fx" && what != "fy" && what != "fz" && what != "force"))
+      (what != "fx" && what != "fy" && what != "fz" && what != "force" && what != "moment"))
     return why += usage, false;
   t.kind = OptTarget::Kind::Shaking;
+  t.moment = what == "moment";
   t.measure = what == "fx"   ? BalanceMeasure::Fx
               : what == "fy" ? BalanceMeasure::Fy
               : what == "fz" ? BalanceMeasure::Fz
@@ -101,8 +102,12 @@ bool parseShaking(const std::string& text, OptTarget& t, std::string& why) {
   return true;
 }
 
-std::string shakingName(BalanceMeasure m) {
-  return m == BalanceMeasure::Fx ? "fx" : m == BalanceMeasure::Fy ? "fy" : "force";
+std::string shakingName(const OptTarget& t) {
+  if (t.moment) return "moment";
+  return t.measure == BalanceMeasure::Fx   ? "fx"
+         : t.measure == BalanceMeasure::Fy ? "fy"
+         : t.measure == BalanceMeasure::Fz ? "fz"
+                                           : "force";
 }
 
 // force:KIND:body.point<=N, the joint named as dynamics' columns name it
@@ -224,7 +229,7 @@ bool parseOptTarget(const Mechanism& m, std::string text, OptTarget& t, std::str
 }
 
 std::string optTargetName(const Mechanism& m, const OptTarget& t) {
-  if (t.kind == OptTarget::Kind::Shaking) return shakingName(t.measure);
+  if (t.kind == OptTarget::Kind::Shaking) return shakingName(t);
   if (t.kind == OptTarget::Kind::Clearance) return "clearance " + std::to_string(t.index);
   if (t.kind == OptTarget::Kind::Force)
     return std::string(kindOf(m.joints[t.index]).name) + ":" + m.pointLabel(m.joints[t.index].a);

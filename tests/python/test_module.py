@@ -193,7 +193,7 @@ def test_stroke_shaking_and_force_sensitivities_are_the_command_lines():
     got = linkage.load("rssr-crank-rocker").stroke_sensitivity("rocker.C")
     assert {k: v + 0.0 for k, v in got.items()} == want and want["ball-rod:crank.A.length"] != 0
     out = cli("sensitivity", "drop-feed", "--shaking", "--steps", "6").stdout
-    assert zero_signed(m.shaking_sensitivity(120)) == rows_at(out, 120, 2)
+    assert zero_signed(m.shaking_sensitivity(120)) == rows_at(out, 120, 3)  # (dfx, dfy, dm)
     space = linkage.load("overedge-machine")  # in the world: (dfx, dfy, dfz)
     out = cli("sensitivity", "overedge-machine", "--shaking", "--steps", "6").stdout
     assert zero_signed(space.shaking_sensitivity(60)) == rows_at(out, 60, 3)

@@ -440,6 +440,47 @@ TEST(SensitivityPanel, TheShakingForce) {
   EXPECT_EQ(panel.pointBox()->findText("shaking force") >= 0, masses);
 }
 
+// The shaking moment (a planar machine's, after the reactions): the library's derivatives at two
+// crank angles, the turn's largest computed once; a machine in space has no such entry.
+TEST(SensitivityPanel, TheShakingMoment) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("drop-feed")), nullptr));
+  doc.setCrankDeg(40);
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  ASSERT_TRUE(choose(panel, "shaking moment"));
+  EXPECT_EQ(panel.pointBox()->currentIndex(), panel.pointBox()->count() - 1);
+  EXPECT_FALSE(panel.componentBox()->isEnabled());
+  const int turns = panel.turnComputations();
+  for (double deg : {40.0, 200.0}) {
+    doc.setCrankDeg(deg);
+    settle(panel);
+    Kinematics k = doc.kinematics();
+    k.setAccelerations(true);
+    Sensitivity s;
+    ASSERT_TRUE(s.prepare(k, dimensions(k.mechanism())).ok());
+    ASSERT_TRUE(s.at(k).ok());
+    ASSERT_EQ(panel.bars().size(), s.dims().size());
+    double largest = 0;
+    for (const SensitivityPanel::Bar& b : panel.bars())
+      for (size_t d = 0; d < s.dims().size(); ++d)
+        if (s.dims()[d].name == b.dimension) {
+          EXPECT_EQ(b.now, shakingMomentSensitivity(k, s, static_cast<int>(d))) << b.dimension;
+          EXPECT_GE(b.peak, std::abs(b.now)) << b.dimension;
+          largest = std::max(largest, std::abs(b.now));
+        }
+    EXPECT_GT(largest, 1e-3) << deg;
+    EXPECT_TRUE(panel.summary().startsWith("The frame feels a moment of ")) << panel.summary();
+  }
+  EXPECT_EQ(panel.turnComputations(), turns) << "once for the moment, not again per pose";
+  shot(&panel, "shaking_moment_sensitivity");
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("overedge-machine")), nullptr));
+  settle(panel);
+  EXPECT_LT(panel.pointBox()->findText("shaking moment"), 0);
+}
+
 // A gear's reaction (its tooth force, restated where the teeth meet): the library's derivatives
 // of its y.
 TEST(SensitivityPanel, AGearsReaction) {

@@ -39,7 +39,9 @@ QStringList choices(const Mechanism& m, K kind) {
   if (kind == K::Transmission) {
     for (const TransmissionJoint& j : transmissionJoints(m)) out << QString::fromStdString(j.label);
   } else if (kind == K::Shaking) {
-    out << QStringLiteral("fx") << QStringLiteral("fy") << QStringLiteral("force");
+    // The moment about the drawing's origin is a planar machine's; fz a machine in space's.
+    out << QStringLiteral("fx") << QStringLiteral("fy") << QStringLiteral("force")
+        << (isSpatial(m) ? QStringLiteral("fz") : QStringLiteral("moment"));
   } else if (kind == K::Clearance) {
     for (const ClearanceWatch& w : m.timing.clearances) out << clearanceName(m, w);
   } else if (kind == K::Window) {
@@ -76,7 +78,7 @@ QString valueUsage(K kind) {
     case K::Transmission:
       return QObject::tr("the transmission angle's limit is degrees, 0 up to 90");
     case K::Shaking:
-      return QObject::tr("the shaking force's limit is a number >= 0 (N)");
+      return QObject::tr("the shaking force's limit is a number >= 0 (N; N m for the moment)");
     case K::Clearance:
       return QObject::tr("the clearance's gap is a number >= 0 (mm)");
     case K::Window:
@@ -110,9 +112,11 @@ bool readOther(const Mechanism& m, K kind, int of, bool isNumber, double v, OptT
     }
     case K::Shaking:
       if (!isNumber || !(v >= 0)) return false;
-      t.measure = of == 0   ? BalanceMeasure::Fx
-                  : of == 1 ? BalanceMeasure::Fy
-                            : BalanceMeasure::Force;
+      t.measure = of == 0                   ? BalanceMeasure::Fx
+                  : of == 1                 ? BalanceMeasure::Fy
+                  : of == 3 && isSpatial(m) ? BalanceMeasure::Fz
+                                            : BalanceMeasure::Force;
+      t.moment = of == 3 && !isSpatial(m);
       t.limitN = v;
       return true;
     case K::Clearance:
@@ -345,8 +349,13 @@ std::vector<MeasureRow> measureRows(const Mechanism& m, const OptTarget& t, cons
     case K::Shaking: {
       const QString f = t.measure == BalanceMeasure::Fx   ? QStringLiteral("|fx|")
                         : t.measure == BalanceMeasure::Fy ? QStringLiteral("|fy|")
+                        : t.measure == BalanceMeasure::Fz ? QStringLiteral("|fz|")
                                                           : QStringLiteral("|f|");
-      add(QObject::tr("peak shaking %1 (N)").arg(f), 0, QStringLiteral("<= ") + number(t.limitN));
+      if (t.moment)
+        add(QObject::tr("peak shaking moment |m| (N m)"), 0,
+            QStringLiteral("<= ") + number(t.limitN));
+      else
+        add(QObject::tr("peak shaking %1 (N)").arg(f), 0, QStringLiteral("<= ") + number(t.limitN));
       add(QObject::tr("its crank angle (°)"), 1, QString());
       break;
     }

@@ -141,6 +141,8 @@ void SensitivityPanel::fillPoints() {
                    .arg(QString::fromUtf8(kindOf(m.joints[j]).name),
                         QString::fromStdString(m.pointLabel(m.joints[j].a)));
   }
+  momentAt_ = masses && !isSpatial(m) ? static_cast<int>(watched.size()) : -1;
+  if (momentAt_ >= 0) watched << tr("shaking moment");
   if (ids == points_ && watched == clearances_) return;
   points_ = ids;
   clearances_ = watched;
@@ -174,6 +176,10 @@ void SensitivityPanel::compute() {
     quantity_->setEnabled(false);
     component_->setEnabled(false);
     const int n = at - static_cast<int>(points_.size());
+    if (n == momentAt_) {
+      momentBars();
+      return;
+    }
     if (shakingAt_ >= 0 && n >= shakingAt_) {
       component_->setEnabled(true);
       if (n == shakingAt_)
@@ -403,18 +409,8 @@ void SensitivityPanel::shakingBars(int which) {
   };
   const bool here = s.at(k).ok();
   const std::vector<double>& peak = turnPeaks({PointId{}, -2, w}, s, k, part);
-  bars_.clear();
-  for (size_t d = 0; d < s.dims().size(); ++d) {
-    const double now = here ? part(s, k, static_cast<int>(d)) : 0.0;
-    bars_.push_back({s.dims()[d].name, now, std::max(peak[d], std::abs(now))});
-  }
-  rank();
-  deadHere_ = !here;
-  draw();
-  plot_->xAxis->setLabel(
-      tr("N per unit of the dimension (mm, degree, ratio): blue at this "
-         "crank angle, grey the largest over a turn"));
-  plot_->replot();
+  turnBars(
+      s.dims(), here, [&](int d) { return part(s, k, d); }, peak, tr("N"));
   if (!here || bars_.empty()) return;
   Vec3 F, moment;
   if (space) {
@@ -430,6 +426,34 @@ void SensitivityPanel::shakingBars(int which) {
                         .arg(F.norm(), 0, 'g', 4)
                         .arg(F.x(), 0, 'g', 4)
                         .arg(F.y(), 0, 'g', 4)
+                        .arg(QString::fromStdString(bars_[0].dimension))
+                        .arg(bars_[0].now, 0, 'g', 4)
+                        .arg(bars_[0].peak, 0, 'g', 4));
+}
+
+void SensitivityPanel::momentBars() {
+  Kinematics k = doc_->kinematics();
+  k.setAccelerations(true);
+  Sensitivity s;
+  if (Status st = s.prepare(k, dimensions(k.mechanism())); !st.ok()) {
+    showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
+    return;
+  }
+  auto part = [](const Sensitivity& ss, const Kinematics& kk, int d) {
+    return shakingMomentSensitivity(kk, ss, d);
+  };
+  const bool here = s.at(k).ok();
+  // The shaking force's key (-2) with a component it has not: the reactions' keys are -3 - j.
+  const std::vector<double>& peak = turnPeaks({PointId{}, -2, 9}, s, k, part);
+  turnBars(
+      s.dims(), here, [&](int d) { return part(s, k, d); }, peak, tr("N m"));
+  if (!here || bars_.empty()) return;
+  Vec2 F;
+  double moment = 0;
+  shaking(k, F, moment);
+  summary_->setText(tr("The frame feels a moment of %1 N m here (about the drawing's origin); %2 "
+                       "changes it most (%3 N m per unit here, up to %4 N m over a turn)")
+                        .arg(moment, 0, 'g', 4)
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4)
                         .arg(bars_[0].peak, 0, 'g', 4));
@@ -467,18 +491,8 @@ void SensitivityPanel::reactionBars(size_t j, int which) {
                   return memo->f.status.ok() ? part(memo->f.derivative[d]) : 0.0;
                 });
   const bool ok = here.status.ok();
-  bars_.clear();
-  for (size_t d = 0; d < dims.size(); ++d) {
-    const double now = ok ? part(here.derivative[d]) : 0.0;
-    bars_.push_back({dims[d].name, now, std::max(peak[d], std::abs(now))});
-  }
-  rank();
-  deadHere_ = !ok;
-  draw();
-  plot_->xAxis->setLabel(
-      tr("N per unit of the dimension (mm, degree, ratio): blue at this "
-         "crank angle, grey the largest over a turn"));
-  plot_->replot();
+  turnBars(
+      dims, ok, [&](int d) { return part(here.derivative[d]); }, peak, tr("N"));
   if (!ok || bars_.empty()) return;
   summary_->setText(tr("The %1 bears %2 N here (fx %3, fy %4); %5 changes it most (%6 N per "
                        "unit here, up to %7 N over a turn)")
@@ -489,6 +503,23 @@ void SensitivityPanel::reactionBars(size_t j, int which) {
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4)
                         .arg(bars_[0].peak, 0, 'g', 4));
+}
+
+void SensitivityPanel::turnBars(const std::vector<Dimension>& dims, bool here,
+                                const std::function<double(int)>& now,
+                                const std::vector<double>& peak, const QString& unit) {
+  bars_.clear();
+  for (size_t d = 0; d < dims.size(); ++d) {
+    const double v = here ? now(static_cast<int>(d)) : 0.0;
+    bars_.push_back({dims[d].name, v, std::max(peak[d], std::abs(v))});
+  }
+  rank();
+  deadHere_ = !here;
+  draw();
+  plot_->xAxis->setLabel(tr("%1 per unit of the dimension (mm, degree, ratio): blue at this "
+                            "crank angle, grey the largest over a turn")
+                             .arg(unit));
+  plot_->replot();
 }
 
 void SensitivityPanel::draw() {

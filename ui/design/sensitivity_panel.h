@@ -75,6 +75,8 @@ class SensitivityPanel : public DockPanel {
   // The shaking force's component `which` (x, y, the length of the change;
   // linkage/shaking_sensitivity.h), at the crank angle and the turn's largest.
   void shakingBars(int which);
+  // The shaking moment about the drawing's origin (a planar machine's), likewise.
+  void momentBars();
   // Joint m.joints[j]'s reaction's component `which` (linkage/force_sensitivity.h), likewise.
   void reactionBars(size_t j, int which);
   // The bars of one derivative a dimension, ranked and drawn with the axis's label; false when
@@ -82,6 +84,11 @@ class SensitivityPanel : public DockPanel {
   bool showValues(const std::vector<Dimension>& dims, const std::vector<double>& derivative,
                   const QString& axis);
   void rank();  // the bars, the largest (over a turn) first
+  // Each dimension's bar (its derivative now(d) here, none where the pose has none; its largest
+  // over the turn), ranked and drawn, the axis in `unit` per unit of the dimension.
+  void turnBars(const std::vector<Dimension>& dims, bool here,
+                const std::function<double(int)>& now, const std::vector<double>& peak,
+                const QString& unit);
   // Each dimension's largest |f| over a turn from k's pose (on a copy), of the design and the
   // output `key` (a point, quantity, component; a transmission angle: no point, -1, its number):
   // computed again only when either changed.
@@ -104,6 +111,7 @@ class SensitivityPanel : public DockPanel {
   int transmissionsFrom_ = 0;      // where the transmission angles start
   int shakingAt_ = -1;             // the shaking force's entry (a design with masses), else -1
   std::vector<size_t> reactions_;  // the joints whose reactions follow it (m.joints' indices)
+  int momentAt_ = -1;              // after them the shaking moment's (planar, masses), else -1
   std::vector<Bar> bars_;
   bool deadHere_ = false;
   // The tolerances' band is of a design and an output: computed again only when they change.

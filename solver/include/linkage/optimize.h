@@ -71,7 +71,10 @@ struct OptTarget {
   // Shaking: the peak over the turn of |fx|, |fy| or |f| of the shaking force (linkage/
   // dynamics.h shaking(), with the counterweights varied) at most limitN: residual
   // max(0, peak - limitN), N; limitN 0 minimises the peak. A planar machine's.
+  // With `moment`, the shaking moment's |M| about the drawing's origin (N m, linkage/dynamics.h
+  // shaking()) instead, with the counterweights' moments: a planar machine's.
   BalanceMeasure measure = BalanceMeasure::Force;
+  bool moment = false;
   double limitN = 0;
   // Force: the peak over the turn of joint m.joints[index]'s reaction |f| (linkage/dynamics.h,
   // on the body of its first point) at most limitN, as Shaking's (measure Force). Over

@@ -19,4 +19,11 @@ Vec2 shakingForceSensitivity(const Kinematics& k, const Sensitivity& s, int dim)
 // weights and loads do not change.
 Vec3 shakingForceSensitivity3(const Kinematics& k, const Sensitivity& s, int dim);
 
+// The shaking moment's (linkage/dynamics.h shaking(): about the drawing's origin, N m) per unit
+// of dimension `dim`, at the pose of s's last at(). The frame feels each body's force F_b at its
+// frame origin r_b with the moment M_b about it, so M = sum (M_b + r_b x F_b) and dM = sum (dM_b +
+// dr_b x F_b + r_b x dF_b): dM_b, dF_b the generalized forces' change (with the loads' arms),
+// dr_b the frame's move. A planar machine's (NaN at a singular position).
+double shakingMomentSensitivity(const Kinematics& k, const Sensitivity& s, int dim);
+
 }  // namespace linkage
