@@ -70,8 +70,9 @@ those that found the best (within 1e-9 mm^2 + 1e-6 of it). A design infeasible a
 its before fields empty.
 
 A machine in space (planes, docs/spatial.md): any dimension `sensitivity` lists may vary (depths,
-ground z, ball rods' lengths, planes' origins); stroke and position targets, in the world; the
-other targets are refused by name (their derivatives in space are not computed yet).
+ground z, ball rods' lengths, planes' origins), and counterweights for the shaking force; stroke,
+position, window, clearance, force and shaking targets, in the world; the others are refused by
+name (their derivatives in space are not computed yet).
 
 Exit status: 0 done, 1 the --out file could not be written, 2 bad input (an unknown dimension or
 point, bad bounds or target, no start that assembles and turns fully).

@@ -37,13 +37,7 @@ struct Peak {
   Vec3 F = Vec3::Zero();
 };
 
-// Each counterweight's body in the world: its class frame's axes and its plane's turn into them.
-struct Placing {
-  Lift E = Lift::Zero();
-  Eigen::Matrix2d P = Eigen::Matrix2d::Identity();
-  bool turned = false;  // P is not the identity
-  Vec3 normal = Vec3::UnitZ();
-};
+using Placing = CounterweightPlacing;
 
 class Balancer {
  public:
@@ -98,6 +92,31 @@ Vec2 momentOf(const std::vector<double>& x, int k) {
 
 }  // namespace
 
+CounterweightPlacing placeCounterweight(const Mechanism& m, BodyId b) {
+  const PlaneClasses pc = planeClasses(m);
+  const PlaneInClass& in = pc.of(m.body(b)->plane);
+  const Plane& f = pc.frames[in.cls];
+  CounterweightPlacing p;
+  p.E.col(0) = f.xAxis;
+  p.E.col(1) = f.yAxis;
+  p.normal = f.normal();
+  p.turned = !in.identity;
+  if (p.turned) p.P << in.rot.c, -in.rot.s, in.rot.s, in.rot.c;
+  return p;
+}
+
+Eigen::Matrix<double, 3, 2> counterweightForcePerMoment(const Kinematics& k, BodyId b,
+                                                        const CounterweightPlacing& p) {
+  const double w = k.bodyOmega(b), al = k.bodyAlpha(b);
+  const Rot R = Rot::of(k.bodyAngle(b));
+  Eigen::Matrix2d M;
+  M << w * w, al, -al, w * w;  // omega^2 I - alpha perp
+  Eigen::Matrix2d Rm;
+  Rm << R.c, -R.s, R.s, R.c;
+  const Eigen::Matrix2d A = p.turned ? Eigen::Matrix2d(1e-3 * M * Rm * p.P) : 1e-3 * M * Rm;
+  return p.E * A;
+}
+
 Status counterweightOn(const Mechanism& m, BodyId b, Counterweight& c) {
   const Body* g = m.ground();
   const Body* body = m.body(b);
@@ -148,19 +167,7 @@ bool Balancer::pivots(BalanceResult& r) {
 
 // Each counterweight's body's plane class in the world (a planar machine: the drawing's).
 void Balancer::place() {
-  const Mechanism& m = work_.mechanism();
-  const PlaneClasses pc = planeClasses(m);
-  for (BodyId b : opt_.bodies) {
-    const PlaneInClass& in = pc.of(m.body(b)->plane);
-    const Plane& f = pc.frames[in.cls];
-    Placing p;
-    p.E.col(0) = f.xAxis;
-    p.E.col(1) = f.yAxis;
-    p.normal = f.normal();
-    p.turned = !in.identity;
-    if (p.turned) p.P << in.rot.c, -in.rot.s, in.rot.s, in.rot.c;
-    placing_.push_back(p);
-  }
+  for (BodyId b : opt_.bodies) placing_.push_back(placeCounterweight(work_.mechanism(), b));
 }
 
 bool Balancer::sampleAt(double deg, Sample& s, Status& status) {
@@ -169,18 +176,8 @@ bool Balancer::sampleAt(double deg, Sample& s, Status& status) {
   shaking(work_, s.F0, moment);
   s.deg = deg;
   s.A.clear();
-  for (size_t k = 0; k < opt_.bodies.size(); ++k) {
-    const BodyId b = opt_.bodies[k];
-    const double w = work_.bodyOmega(b), al = work_.bodyAlpha(b);
-    const Rot R = Rot::of(work_.bodyAngle(b));
-    Eigen::Matrix2d M;
-    M << w * w, al, -al, w * w;  // omega^2 I - alpha perp
-    Eigen::Matrix2d Rm;
-    Rm << R.c, -R.s, R.s, R.c;
-    const Placing& p = placing_[k];
-    const Eigen::Matrix2d A = p.turned ? Eigen::Matrix2d(1e-3 * M * Rm * p.P) : 1e-3 * M * Rm;
-    s.A.push_back(p.E * A);
-  }
+  for (size_t k = 0; k < opt_.bodies.size(); ++k)
+    s.A.push_back(counterweightForcePerMoment(work_, opt_.bodies[k], placing_[k]));
   return s.F0.allFinite();
 }
 

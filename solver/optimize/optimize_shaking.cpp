@@ -3,8 +3,9 @@
 //
 // With counterweights of static moments s_k added (kg mm, in their bodies' drawings, at their
 // pivots), the frame feels F = F0 + sum_k (1e-3 (omega_k^2 I - alpha_k perp) R(theta_k) s_k +
-// m_k g) (linkage/balance.h): linear in s_k, its gradient exact; the moment adds each one's
-// (Shaker::counterweightMoment, smooth but where s_k is 0). A dimension's is F0's (M0's)
+// m_k g) (linkage/balance.h; on a machine in space the world's, each counterweight turning in
+// its plane: counterweightForcePerMoment): linear in s_k, its gradient exact; the moment adds each
+// one's (Shaker::counterweightMoment, smooth but where s_k is 0). A dimension's is F0's (M0's)
 // (linkage/shaking_sensitivity.h). The turn is cut into `steps` intervals; an interval's row is
 // its largest |F| (or component): its ends' values, or a local maximum of the samples refined by
 // Brent's method on the exact motion where it falls inside the interval. The largest row is the
@@ -24,21 +25,23 @@ namespace linkage::opt {
 
 namespace {
 
-Vec2 counterweightForce(const Kinematics& k, BodyId b, const Vec2& s) {
-  const Vec2 r = Rot::of(k.bodyAngle(b)) * s;
-  const double w = k.bodyOmega(b);
-  return 1e-3 * (w * w * r - k.bodyAlpha(b) * perp(r));
-}
-
 struct Shaker {
   const Kinematics& design;
   const OptTarget& t;
   const Variables& vars;
   const std::vector<double>& x;
-  Vec2 g = Vec2::Zero();  // N per kg
+  // N per kg: a planar machine's in its drawing (gravity's z along its normal changes no force in
+  // the plane), a machine in space's in the world.
+  Vec3 g = Vec3::Zero();
+  std::vector<CounterweightPlacing> placings;  // by counterweight
   // A joint's reaction (OptTarget::Kind::Force) instead of the shaking force.
   JointId joint;
   mutable ForceSolver solver;
+
+  // Counterweight c's inertia force with static moment s (N, the world's; linkage/balance.h).
+  Vec3 inertia(const Kinematics& k, size_t c, const Vec2& s) const {
+    return counterweightForcePerMoment(k, vars.counterweights[c].body, placings[c]) * s;
+  }
 
   // Counterweight c at x, as optimize's variables make it.
   Counterweight placed(size_t c) const {
@@ -61,20 +64,21 @@ struct Shaker {
         F += counterweightShare(k, joint, placed(c)).share.force;
       return Vec3(F.x(), F.y(), 0);
     }
-    if (isSpatial(k.mechanism())) {  // dimensions only (counterweights are planar)
-      Vec3 F, moment;
-      shaking(k, F, moment);
-      return F;
-    }
-    Vec2 F;
+    Vec3 F = Vec3::Zero(), moment3;
     double moment = 0;
-    shaking(k, F, moment);
+    if (isSpatial(k.mechanism())) {
+      shaking(k, F, moment3);
+    } else {
+      Vec2 planar;
+      shaking(k, planar, moment);
+      F.head<2>() = planar;
+    }
     for (size_t c = 0; c < vars.counterweights.size(); ++c) {
       const Vec2 s = vars.moment(x, c);
-      F += counterweightForce(k, vars.counterweights[c].body, s) + vars.kg(x, c) * g;
-      moment += counterweightMoment(k, c, s);
+      F += inertia(k, c, s) + vars.kg(x, c) * g;
+      if (t.moment) moment += counterweightMoment(k, c, s);
     }
-    return t.moment ? Vec3(0, 0, moment) : Vec3(F.x(), F.y(), 0);
+    return t.moment ? Vec3(0, 0, moment) : F;
   }
   // Counterweight c's part of the shaking moment (N m) with static moment s: a point mass m at
   // c = p + r / m (r = R s, p its pivot) bears m g and the inertia force f of counterweightForce
@@ -82,20 +86,22 @@ struct Shaker {
   // m.
   double counterweightMoment(const Kinematics& k, size_t c, const Vec2& s) const {
     const Counterweight& cw = vars.counterweights[c];
-    const Vec2 r = Rot::of(k.bodyAngle(cw.body)) * s, f = counterweightForce(k, cw.body, s);
+    const Vec2 r = Rot::of(k.bodyAngle(cw.body)) * s, f = inertia(k, c, s).head<2>(),
+               g2 = g.head<2>();
     const double m = s.norm() / cw.maxRadiusMm;
     const double spin = m > 0 ? -1e-3 * k.bodyAlpha(cw.body) * r.squaredNorm() / m : 0.0;
-    return (cross(k.position(cw.pivot), f + m * g) + cross(r, g) + spin) / 1000;
+    return (cross(k.position(cw.pivot), f + m * g2) + cross(r, g2) + spin) / 1000;
   }
   // Its derivative along the unit u of s (in the body's drawing).
   double counterweightMomentChange(const Kinematics& k, size_t c, const Vec2& s,
                                    const Vec2& u) const {
     const Counterweight& cw = vars.counterweights[c];
-    const Vec2 du = Rot::of(k.bodyAngle(cw.body)) * u, df = counterweightForce(k, cw.body, u);
+    const Vec2 du = Rot::of(k.bodyAngle(cw.body)) * u, df = inertia(k, c, u).head<2>(),
+               g2 = g.head<2>();
     const double n = s.norm(), dm = n > 0 ? s.dot(u) / (n * cw.maxRadiusMm) : 0.0;
     // |r|^2 / m = |s| R: its change R s.u / |s|.
     const double dspin = -1e-3 * k.bodyAlpha(cw.body) * cw.maxRadiusMm * (n > 0 ? s.dot(u) / n : 0);
-    return (cross(k.position(cw.pivot), df + dm * g) + cross(du, g) + dspin) / 1000;
+    return (cross(k.position(cw.pivot), df + dm * g2) + cross(du, g2) + dspin) / 1000;
   }
   double measure(const Vec3& F) const {
     if (t.measure == BalanceMeasure::Fx) return std::abs(F.x());
@@ -148,9 +154,9 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
       const Counterweight& cw = vars.counterweights[c];
       const Vec2 unit = vars.axis[v] == 0 ? Vec2(1, 0) : Vec2(0, 1);
       const Vec2 s = vars.moment(x, c);
-      Vec2 d = counterweightForce(k, cw.body, unit);
+      Vec3 d = inertia(k, c, unit);
       if (s.norm() > 0) d += s.dot(unit) / (s.norm() * cw.maxRadiusMm) * g;  // d(|s| / R)
-      dF = t.moment ? Vec3(0, 0, counterweightMomentChange(k, c, s, unit)) : lift(d);
+      dF = t.moment ? Vec3(0, 0, counterweightMomentChange(k, c, s, unit)) : d;
     }
     out[v] = e.dot(dF);
   }
@@ -197,7 +203,11 @@ Status shakingResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t ta
                         const Variables& vars, const std::vector<double>& x, Sensitivity* sens,
                         Evaluation& e) {
   const OptTarget& t = spec.targets[target];
-  Shaker sh{k, t, vars, x, k.mechanism().gravity.value_or(Vec2::Zero())};
+  const Mechanism& m = k.mechanism();
+  const Vec2 gPlane = m.gravity.value_or(Vec2::Zero());
+  Shaker sh{k, t, vars, x, isSpatial(m) ? m.gravityWorld() : Vec3(gPlane.x(), gPlane.y(), 0)};
+  for (const Counterweight& c : vars.counterweights)
+    sh.placings.push_back(placeCounterweight(m, c.body));
   if (t.kind == OptTarget::Kind::Force) {
     sh.joint = k.mechanism().joints.at(t.index).id;
     if (Status s = sh.solver.prepare(k); !s.ok()) return s;

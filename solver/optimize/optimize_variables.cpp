@@ -78,10 +78,14 @@ Status mapVariables(const Mechanism& base, const Mechanism& design, const Optimi
         "counterweights and dimensions are varied apart: a dimension redraws the bodies it "
         "moves, and a counterweight's moment turns with its body's drawing (vary the dimensions "
         "first, then the counterweights on the design found)");
-  if (!out.counterweights.empty() && isSpatial(base))
+  const bool reaction =
+      std::any_of(spec.targets.begin(), spec.targets.end(),
+                  [](const OptTarget& t) { return t.kind == OptTarget::Kind::Force; });
+  if (!out.counterweights.empty() && isSpatial(base) && reaction)
     return Status::badModel(
-        "counterweights on a machine in space are not varied here (linkage-cli balance places "
-        "them exactly)");
+        "a counterweight's share of a reaction on a machine in space is not computed yet: "
+        "counterweights there are varied for the shaking force (or placed exactly by "
+        "linkage-cli balance)");
   return Status::success();
 }
 

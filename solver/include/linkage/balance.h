@@ -78,6 +78,22 @@ Status counterweightOn(const Mechanism& m, BodyId b, Counterweight& c);
 // k is not moved (copies of it are).
 BalanceResult balanceShaking(const Kinematics& k, const BalanceOptions& opt);
 
+// Where a counterweight's body turns in the world: its plane class frame's axes E (3 x 2) and
+// its plane's turn P into that frame (a planar machine's: the drawing's x, y and I).
+struct CounterweightPlacing {
+  Eigen::Matrix<double, 3, 2> E = Eigen::Matrix<double, 3, 2>::Zero();
+  Eigen::Matrix2d P = Eigen::Matrix2d::Identity();
+  bool turned = false;  // P is not the identity
+  Vec3 normal = Vec3::UnitZ();
+};
+CounterweightPlacing placeCounterweight(const Mechanism& m, BodyId b);
+
+// What a counterweight on body b adds to the shaking force in the world per kg mm of its static
+// moment, at k's pose (N per kg mm): 1e-3 E (omega^2 I - alpha perp) R(theta) P, a point mass
+// turning about its fixed pivot with its body (its weight m g is apart).
+Eigen::Matrix<double, 3, 2> counterweightForcePerMoment(const Kinematics& k, BodyId b,
+                                                        const CounterweightPlacing& p);
+
 // The counterweights as masses of their bodies: a point mass kg at pivot + staticMoment / kg,
 // combined with the body's own (and listed in Mass::counterweights).
 void addCounterweights(Mechanism& m, const std::vector<Counterweight>& c);

@@ -14,8 +14,10 @@
 // On a machine in space (planes, docs/spatial.md) every dimension may vary (depths, ground z,
 // ball rods' lengths, planes' origins too: changeDimensions sets them exactly), the gradient is
 // the world's (Sensitivity::Space::World), and the targets are a stroke (along the world's +y,
-// strokeDirection in linkage/stroke_sensitivity.h) and a position (world x, y and, if given, z);
-// the others are refused by name (their derivatives in space are not computed yet).
+// strokeDirection in linkage/stroke_sensitivity.h), a position (world x, y and, if given, z), a
+// window's end, a clearance, a reaction, and the shaking force over dimensions or counterweights
+// (each turning in its plane); the others are refused by name (their derivatives in space are
+// not computed yet).
 #pragma once
 
 #include <cstdint>
