@@ -52,8 +52,8 @@ pose on MODEL's assembly branches.
                                      (window:NAME.end=DEG: closes) at crank angle DEG
   A variable may also be a counterweight added to a body pinned to the ground:
      BODY.counterweight.x, BODY.counterweight.y   its static moment (kg mm) in the body's drawing
-                                     from its pivot (as `balance` places it); not together
-                                     with dimensions
+                                     from its pivot (as `balance` places it); with
+                                     dimensions too, but for a force:JOINT target
   --starts K                  starts (default 16)
   --seed S                    seed of the starts (default 1)
   --steps N                   samples per turn for extremes and nearest points (default 360)

@@ -105,16 +105,42 @@ CounterweightPlacing placeCounterweight(const Mechanism& m, BodyId b) {
   return p;
 }
 
-Eigen::Matrix<double, 3, 2> counterweightForcePerMoment(const Kinematics& k, BodyId b,
-                                                        const CounterweightPlacing& p) {
-  const double w = k.bodyOmega(b), al = k.bodyAlpha(b);
-  const Rot R = Rot::of(k.bodyAngle(b));
+namespace {
+
+// omega^2 I - alpha perp, and R(theta) as a matrix.
+Eigen::Matrix2d spin(double w, double al) {
   Eigen::Matrix2d M;
-  M << w * w, al, -al, w * w;  // omega^2 I - alpha perp
+  M << w * w, al, -al, w * w;
+  return M;
+}
+Eigen::Matrix2d turn(double theta) {
+  const Rot R = Rot::of(theta);
   Eigen::Matrix2d Rm;
   Rm << R.c, -R.s, R.s, R.c;
-  const Eigen::Matrix2d A = p.turned ? Eigen::Matrix2d(1e-3 * M * Rm * p.P) : 1e-3 * M * Rm;
-  return p.E * A;
+  return Rm;
+}
+Eigen::Matrix<double, 3, 2> lifted(const CounterweightPlacing& p, const Eigen::Matrix2d& A) {
+  return p.E * (p.turned ? Eigen::Matrix2d(1e-3 * A * p.P) : Eigen::Matrix2d(1e-3 * A));
+}
+
+}  // namespace
+
+Eigen::Matrix<double, 3, 2> counterweightForcePerMoment(const Kinematics& k, BodyId b,
+                                                        const CounterweightPlacing& p) {
+  return lifted(p, spin(k.bodyOmega(b), k.bodyAlpha(b)) * turn(k.bodyAngle(b)));
+}
+
+Eigen::Matrix<double, 3, 2> counterweightForcePerMomentChange(const Kinematics& k, BodyId b,
+                                                              const CounterweightPlacing& p,
+                                                              double dTheta, double dOmega,
+                                                              double dAlpha) {
+  const double w = k.bodyOmega(b);
+  Eigen::Matrix2d dM;
+  dM << 2 * w * dOmega, dAlpha, -dAlpha, 2 * w * dOmega;
+  Eigen::Matrix2d perp;
+  perp << 0, -1, 1, 0;
+  const Eigen::Matrix2d R = turn(k.bodyAngle(b));
+  return lifted(p, dM * R + spin(w, k.bodyAlpha(b)) * R * perp * dTheta);
 }
 
 Status counterweightOn(const Mechanism& m, BodyId b, Counterweight& c) {

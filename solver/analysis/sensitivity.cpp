@@ -492,6 +492,16 @@ double Sensitivity::angle(const Kinematics& k, BodyId b, int dim) const {
   return i < 0 ? 0.0 : dq_(3 * i + 2, dim);
 }
 
+double Sensitivity::angularVelocity(const Kinematics& k, BodyId b, int dim) const {
+  const int i = internal::system(k).bodyIndex(b);
+  return i < 0 ? 0.0 : k.omega() * dqd_(3 * i + 2, dim);
+}
+
+double Sensitivity::angularAcceleration(const Kinematics& k, BodyId b, int dim) const {
+  const int i = internal::system(k).bodyIndex(b);
+  return i < 0 ? 0.0 : k.omega() * k.omega() * dqdd_(3 * i + 2, dim);
+}
+
 Eigen::VectorXd Sensitivity::jacobianChange(const Kinematics& k, const Eigen::VectorXd& w,
                                             int dim) const {
   const KinematicsState& s = internal::state(k);

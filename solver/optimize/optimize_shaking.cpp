@@ -34,6 +34,9 @@ struct Shaker {
   // the plane), a machine in space's in the world.
   Vec3 g = Vec3::Zero();
   std::vector<CounterweightPlacing> placings;  // by counterweight
+  // By counterweight, by dimension: its body's turn at crank angle 0 (where each design is drawn
+  // again, editAtPose), with counterweights and dimensions varied together.
+  std::vector<std::vector<double>> turn0;
   // A joint's reaction (OptTarget::Kind::Force) instead of the shaking force.
   JointId joint;
   mutable ForceSolver solver;
@@ -103,6 +106,26 @@ struct Shaker {
     const double dspin = -1e-3 * k.bodyAlpha(cw.body) * cw.maxRadiusMm * (n > 0 ? s.dot(u) / n : 0);
     return (cross(k.position(cw.pivot), df + dm * g2) + cross(du, g2) + dspin) / 1000;
   }
+  // Counterweight c's force (with `moment`, its moment as (0, 0, M)) per unit of dimension dim:
+  // its body's turn, spin and spin's rate change. Each design is drawn again at crank angle 0, so
+  // the counterweight, fixed in the drawing, turns with the body's turn from there.
+  Vec3 counterweightChange(const Kinematics& k, const Sensitivity& sens, size_t c, int dim) const {
+    const Counterweight& cw = vars.counterweights[c];
+    const Vec2 s = vars.moment(x, c);
+    const double dTheta = sens.angle(k, cw.body, dim) - turn0[c][dim],
+                 dAlpha = sens.angularAcceleration(k, cw.body, dim);
+    const Vec3 df =
+        counterweightForcePerMomentChange(k, cw.body, placings[c], dTheta,
+                                          sens.angularVelocity(k, cw.body, dim), dAlpha) *
+        s;
+    if (!t.moment) return df;
+    const Vec2 r = Rot::of(k.bodyAngle(cw.body)) * s, g2 = g.head<2>();
+    const double m = s.norm() / cw.maxRadiusMm;
+    const double dM = cross(sens.point(k, cw.pivot, dim), inertia(k, c, s).head<2>() + m * g2) +
+                      cross(k.position(cw.pivot), df.head<2>()) + dTheta * cross(perp(r), g2) -
+                      1e-3 * dAlpha * s.norm() * cw.maxRadiusMm;
+    return Vec3(0, 0, dM / 1000);
+  }
   double measure(const Vec3& F) const {
     if (t.measure == BalanceMeasure::Fx) return std::abs(F.x());
     if (t.measure == BalanceMeasure::Fy) return std::abs(F.y());
@@ -149,6 +172,8 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
       dF = space      ? shakingForceSensitivity3(k, *sens, vars.dim[v])
            : t.moment ? Vec3(0, 0, shakingMomentSensitivity(k, *sens, vars.dim[v]))
                       : lift(shakingForceSensitivity(k, *sens, vars.dim[v]));
+      for (size_t c = 0; c < vars.counterweights.size(); ++c)
+        dF += counterweightChange(k, *sens, c, vars.dim[v]);
     } else if (vars.cw[v] >= 0) {
       const size_t c = static_cast<size_t>(vars.cw[v]);
       const Counterweight& cw = vars.counterweights[c];
@@ -161,6 +186,22 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
     out[v] = e.dot(dF);
   }
   return out;
+}
+
+// Each counterweight's body's turn per unit of each dimension at crank angle 0.
+Status turnsAtZero(const Kinematics& k, const Variables& vars, Sensitivity& sens,
+                   std::vector<std::vector<double>>& out) {
+  out.clear();
+  if (vars.counterweights.empty()) return Status::success();
+  Kinematics zero = k;
+  if (Status s = zero.moveTo(0); !s.ok()) return s;
+  if (Status s = sens.at(zero); !s.ok()) return s;
+  for (const Counterweight& c : vars.counterweights) {
+    out.emplace_back();
+    for (size_t d = 0; d < vars.dims.size(); ++d)
+      out.back().push_back(sens.angle(zero, c.body, static_cast<int>(d)));
+  }
+  return Status::success();
 }
 
 struct RowAt {
@@ -208,6 +249,8 @@ Status shakingResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t ta
   Shaker sh{k, t, vars, x, isSpatial(m) ? m.gravityWorld() : Vec3(gPlane.x(), gPlane.y(), 0)};
   for (const Counterweight& c : vars.counterweights)
     sh.placings.push_back(placeCounterweight(m, c.body));
+  if (sens && !e.gradient.empty() && vars.dimensionCount() > 0)
+    if (Status s = turnsAtZero(k, vars, *sens, sh.turn0); !s.ok()) return s;
   if (t.kind == OptTarget::Kind::Force) {
     sh.joint = k.mechanism().joints.at(t.index).id;
     if (Status s = sh.solver.prepare(k); !s.ok()) return s;

@@ -85,7 +85,7 @@ OptimizeDialog::OptimizeDialog(Document* doc, QWidget* parent) : QDialog(parent)
   auto* close = new QDialogButtonBox(QDialogButtonBox::Close);
   connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
   auto* layout = new QVBoxLayout(this);
-  layout->addWidget(new QLabel(tr("Dimensions or counterweights to vary (not both)")));
+  layout->addWidget(new QLabel(tr("Dimensions and counterweights to vary")));
   layout->addWidget(variables_, 2);
   layout->addWidget(new QLabel(tr("Targets")));
   layout->addWidget(targets_, 1);

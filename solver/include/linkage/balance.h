@@ -93,6 +93,12 @@ CounterweightPlacing placeCounterweight(const Mechanism& m, BodyId b);
 // turning about its fixed pivot with its body (its weight m g is apart).
 Eigen::Matrix<double, 3, 2> counterweightForcePerMoment(const Kinematics& k, BodyId b,
                                                         const CounterweightPlacing& p);
+// Its change where the body's angle, angular velocity and acceleration change by dTheta, dOmega,
+// dAlpha (rad, rad/s, rad/s^2; a dimension's, at the same pose).
+Eigen::Matrix<double, 3, 2> counterweightForcePerMomentChange(const Kinematics& k, BodyId b,
+                                                              const CounterweightPlacing& p,
+                                                              double dTheta, double dOmega,
+                                                              double dAlpha);
 
 // The counterweights as masses of their bodies: a point mass kg at pivot + staticMoment / kg,
 // combined with the body's own (and listed in Mass::counterweights).

@@ -47,9 +47,10 @@ Status setDimensions(Mechanism& m, const std::vector<std::pair<std::string, doub
 // A variable is a dimension (by its name) or a counterweight added to a body pinned to the
 // ground: `BODY.counterweight.x` and `BODY.counterweight.y`, its static moment (kg mm) in the
 // body's drawing from its pivot (linkage/balance.h), 0 as drawn; its mass the least that gives
-// it, at the body's reach R (|s| / R: its weight counts where gravity is on). Counterweights and
-// dimensions are not varied together: a dimension redraws the bodies it moves, and a moment
-// read in a body's drawing would turn with it.
+// it, at the body's reach R (|s| / R: its weight counts where gravity is on). Varied with
+// dimensions, each design is drawn again at crank angle 0 and the moment, fixed in its body's
+// drawing, turns with the body's turn there (its gradient counts it); a reaction over both is
+// refused (a counterweight's share is not differentiated by a dimension yet).
 struct OptVariable {
   std::string name;  // a dimension's or a counterweight's
   double lo = 0, hi = 0;

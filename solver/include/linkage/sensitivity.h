@@ -141,6 +141,10 @@ class Sensitivity {
   Vec2 acceleration(const Kinematics& k, BodyId b, const Vec2& at, int dim) const;
   // d(body b's angle)/d(dimension k), radians per unit (0 for the ground).
   double angle(const Kinematics& k, BodyId b, int dim) const;
+  // d(its angular velocity), rad/s per unit, and d(its angular acceleration), rad/s^2 per unit,
+  // at the driver's speed (Kinematics::bodyOmega, bodyAlpha); 0 for the ground.
+  double angularVelocity(const Kinematics& k, BodyId b, int dim) const;
+  double angularAcceleration(const Kinematics& k, BodyId b, int dim) const;
   // dq'/dp and dq''/dp at the pose of the last at(): one column a dimension (q' = dq/dphi).
   const Eigen::MatrixXd& dqd() const { return dqd_; }
   const Eigen::MatrixXd& dqdd() const { return dqdd_; }
