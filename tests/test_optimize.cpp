@@ -25,12 +25,6 @@ test::FourBar design(double r2 = 20, double r3 = 55, double r4 = 45, double px =
   return fourBar(60, r2, r3, r4, 0, true, px, py);
 }
 
-double valueOf(const Mechanism& m, const std::string& name) {
-  for (const Dimension& d : dimensions(m))
-    if (d.name == name) return d.value;
-  return NAN;
-}
-
 const std::vector<std::string> kLinks = {"crank.O2-A", "coupler.A-B", "coupler.B-P", "coupler.A-P",
                                          "rocker.B-O4"};
 
@@ -61,7 +55,7 @@ void expectEachSetAlone(const Mechanism& base) {
       // A slot turns about its first end, so its offset (from the origin) changes with it, as
       // its derivative says: the one pair that is not independent.
       if (d.name.ends_with(".angle") && e.name.ends_with(".offset")) continue;
-      EXPECT_NEAR(e.value, e.name == d.name ? to : valueOf(base, e.name), 1e-12)
+      EXPECT_NEAR(e.value, e.name == d.name ? to : test::dimensionValue(base, e.name), 1e-12)
           << d.name << " set, " << e.name << " read";
     }
   }
@@ -74,19 +68,19 @@ TEST(Optimize, SetDimensionGivesEachDimensionItsValueAndKeepsTheOthers) {
   Mechanism all = f.m;
   ASSERT_TRUE(
       setDimensions(all, {{"coupler.A-B", 70}, {"coupler.A-P", 40}, {"coupler.B-P", 40}}).ok());
-  EXPECT_NEAR(valueOf(all, "coupler.A-B"), 70, 1e-12);
-  EXPECT_NEAR(valueOf(all, "coupler.A-P"), 40, 1e-12);
-  EXPECT_NEAR(valueOf(all, "coupler.B-P"), 40, 1e-12);
+  EXPECT_NEAR(test::dimensionValue(all, "coupler.A-B"), 70, 1e-12);
+  EXPECT_NEAR(test::dimensionValue(all, "coupler.A-P"), 40, 1e-12);
+  EXPECT_NEAR(test::dimensionValue(all, "coupler.B-P"), 40, 1e-12);
   Mechanism slot = test::sliderCrank(20, 60, 5, 30).m;
   ASSERT_TRUE(setDimensions(slot, {{"ground.guide.offset", 7}, {"ground.guide.angle", 4}}).ok());
-  EXPECT_NEAR(valueOf(slot, "ground.guide.offset"), 7, 1e-12);
-  EXPECT_NEAR(valueOf(slot, "ground.guide.angle"), 4, 1e-12);
+  EXPECT_NEAR(test::dimensionValue(slot, "ground.guide.offset"), 7, 1e-12);
+  EXPECT_NEAR(test::dimensionValue(slot, "ground.guide.angle"), 4, 1e-12);
   for (const Dimension& d : dimensions(f.m)) {
     Mechanism m = f.m;
     const double to = d.value + (d.unit == Dimension::Unit::Deg ? 3.0 : 1.7);
     ASSERT_TRUE(setDimension(m, d.name, to).ok()) << d.name;
     for (const Dimension& e : dimensions(m))
-      EXPECT_NEAR(e.value, e.name == d.name ? to : valueOf(f.m, e.name), 1e-12)
+      EXPECT_NEAR(e.value, e.name == d.name ? to : test::dimensionValue(f.m, e.name), 1e-12)
           << d.name << " set, " << e.name << " read";
   }
   Mechanism m = f.m;
@@ -116,7 +110,7 @@ TEST(Optimize, GradientMatchesCentralDifferences) {
   mu.limitDeg = 75;  // below its smallest angle and above 180 - its largest: both residuals
   spec.targets = {stroke, at, path, mu};
   std::vector<double> x;
-  for (const OptVariable& v : spec.variables) x.push_back(valueOf(f.m, v.name));
+  for (const OptVariable& v : spec.variables) x.push_back(test::dimensionValue(f.m, v.name));
   const Evaluation e = evaluate(base, spec, x);
   ASSERT_TRUE(e.feasible) << e.why;
   ASSERT_LT(e.measures[3][0], 75);
@@ -152,13 +146,13 @@ TEST(Optimize, PathSynthesisFromAWrongBasinReachesTheKnownDesign) {
   EXPECT_GE(r.foundBest, 1);
   EXPECT_LT(r.atAfter.objective, 1e-20);
   for (size_t i = 0; i < kLinks.size(); ++i)
-    EXPECT_NEAR(r.after[i], valueOf(truth.m, kLinks[i]), 1e-6) << kLinks[i];
+    EXPECT_NEAR(r.after[i], test::dimensionValue(truth.m, kLinks[i]), 1e-6) << kLinks[i];
   EXPECT_LT(r.atAfter.measures[0][1], 1e-9);  // largest distance of a given point, mm
   // The design written out closes and, loaded afresh, passes through the points.
   Kinematics again;
   ASSERT_TRUE(again.load(r.design).ok());
   for (size_t i = 0; i < kLinks.size(); ++i)
-    EXPECT_NEAR(valueOf(r.design, kLinks[i]), r.after[i], 1e-9) << kLinks[i];
+    EXPECT_NEAR(test::dimensionValue(r.design, kLinks[i]), r.after[i], 1e-9) << kLinks[i];
   EXPECT_TRUE(std::isfinite(one.atBefore.objective) && std::isfinite(r.atBefore.objective));
 }
 

@@ -18,13 +18,6 @@
 namespace linkage {
 namespace {
 
-double valueOf(const Mechanism& m, const std::string& name) {
-  for (const Dimension& d : dimensions(m))
-    if (d.name == name) return d.value;
-  ADD_FAILURE() << "no dimension " << name;
-  return 0;
-}
-
 OptTarget target(const Mechanism& m, const std::string& text) {
   OptTarget t;
   std::string why;
@@ -38,7 +31,7 @@ void checkGradient(const Mechanism& m, const OptimizeSpec& spec, double offset) 
   Kinematics base;
   ASSERT_TRUE(base.load(m).ok());
   std::vector<double> x;
-  for (const OptVariable& v : spec.variables) x.push_back(valueOf(m, v.name) + offset);
+  for (const OptVariable& v : spec.variables) x.push_back(test::dimensionValue(m, v.name) + offset);
   const Evaluation e = evaluate(base, spec, x);
   ASSERT_TRUE(e.feasible) << e.why;
   ASSERT_GT(e.objective, 1e-3);
@@ -94,7 +87,8 @@ TEST(OptimizeSpace, TheRssrsRockerStrokeIsMetByTheRodsLength) {
   EXPECT_GT(std::abs(r.after[0] - r.before[0]), 0.5);
   const LoadResult written = parseMechanism(serializeMechanism(r.design));
   ASSERT_TRUE(written.mechanism) << written.error;
-  EXPECT_NEAR(valueOf(*written.mechanism, "ball-rod:crank.A.length"), r.after[0], 1e-9);
+  EXPECT_NEAR(test::dimensionValue(*written.mechanism, "ball-rod:crank.A.length"), r.after[0],
+              1e-9);
   Kinematics k;
   ASSERT_TRUE(k.load(*written.mechanism).ok());
   const Limits l = findLimits(
@@ -108,11 +102,12 @@ TEST(OptimizeSpace, TheRssrsRockerStrokeIsMetByTheRodsLength) {
 // distances from H and B could not meet again (C beyond H: |CB| - |CH| is |HB|).
 TEST(OptimizeSpace, ABodysBaseLengthKeepsAPointOnItsLineWhereItIs) {
   Mechanism m = test::example("overedge-machine");
-  const double along = valueOf(m, "needlerock.C.along"), across = valueOf(m, "needlerock.C.across");
+  const double along = test::dimensionValue(m, "needlerock.C.along"),
+               across = test::dimensionValue(m, "needlerock.C.across");
   ASSERT_TRUE(setDimension(m, "needlerock.H-B", 25).ok());
-  EXPECT_NEAR(valueOf(m, "needlerock.H-B"), 25, 1e-12);
-  EXPECT_NEAR(valueOf(m, "needlerock.C.along"), along, 1e-12);
-  EXPECT_NEAR(valueOf(m, "needlerock.C.across"), across, 1e-12);
+  EXPECT_NEAR(test::dimensionValue(m, "needlerock.H-B"), 25, 1e-12);
+  EXPECT_NEAR(test::dimensionValue(m, "needlerock.C.along"), along, 1e-12);
+  EXPECT_NEAR(test::dimensionValue(m, "needlerock.C.across"), across, 1e-12);
   // And the optimiser moves it: the needle's stroke found by H-B alone.
   Kinematics base;
   ASSERT_TRUE(base.load(test::example("overedge-machine")).ok());

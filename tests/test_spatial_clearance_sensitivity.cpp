@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "clearance_checks.h"
 #include "examples.h"
 #include "linkage/clearance_sensitivity.h"
 #include "linkage/cycle_spread.h"
@@ -17,41 +18,12 @@
 namespace linkage {
 namespace {
 
-void expectClosestMovesAsChangedDesignsDo(const Mechanism& m, const ClearanceWatch& w) {
-  Kinematics k;
-  ASSERT_TRUE(k.load(m).ok());
-  const std::vector<Dimension> dims = dimensions(m);
-  const ClearanceSensitivity s = clearanceSensitivity(k, w, dims);
-  ASSERT_TRUE(s.status.ok()) << s.status.message;
-  const double h = 1e-5;
-  double largest = 0;
-  for (size_t d = 0; d < dims.size(); ++d) {
-    if (dims[d].ratioOf) continue;  // the shafts would not come back together after a turn
-    double least[2];
-    for (int side = 0; side < 2; ++side) {
-      Mechanism c = m;
-      std::vector<double> delta(dims.size(), 0.0);
-      delta[d] = side ? h : -h;
-      ASSERT_TRUE(changeDimensions(c, dims, delta).ok()) << dims[d].name;
-      Kinematics kc;
-      ASSERT_TRUE(kc.load(c).ok()) << dims[d].name;
-      const Clearance cl = findClearance(kc, ClearancePart::of(w.point), w.other);
-      ASSERT_TRUE(cl.status.ok()) << dims[d].name;
-      least[side] = cl.closest.distance;
-    }
-    const double want = (least[1] - least[0]) / (2 * h);
-    largest = std::max(largest, std::abs(want));
-    EXPECT_NEAR(s.derivative[d], want, 1e-6 * (1 + std::abs(want))) << dims[d].name;
-  }
-  EXPECT_GT(largest, 0.1);
-}
-
 TEST(SpatialClearanceSensitivity, TheHooksClosestApproachesMoveAsChangedDesignsDo) {
   const Mechanism m = test::example("lockstitch-bevel");
   const PointId K = *m.findPoint("hook.K"), N = *m.findPoint("needlebar.N"),
                 A = *m.findPoint("rod.A"), B = *m.findPoint("rod.B");
-  expectClosestMovesAsChangedDesignsDo(m, {K, ClearancePart::of(N), {}});
-  expectClosestMovesAsChangedDesignsDo(m, {K, ClearancePart::segment(A, B), {}});
+  test::expectClosestMovesAsChangedDesignsDo(m, {K, ClearancePart::of(N), {}}, 1e-5);
+  test::expectClosestMovesAsChangedDesignsDo(m, {K, ClearancePart::segment(A, B), {}}, 1e-5);
 }
 
 // The spread's first order is the derivative times the tolerance, and the samples (tiny

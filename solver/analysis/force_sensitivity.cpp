@@ -227,6 +227,23 @@ struct Setup {
   JointReaction reaction;
   std::vector<int> joints;
   std::vector<RowsReaction> rows;
+
+  // The joint's reaction's change: each involved reaction as its rows make it (at c) and its
+  // change (rowChange of its rows), both restated as the kinds restate them (reactChange).
+  template <class RowChange>
+  JointReaction restated(const Context& c, const Pose& pose, const PoseChange& dpose,
+                         RowChange rowChange) const {
+    const Mechanism& m = k.mechanism();
+    std::vector<JointReaction> all(m.joints.size()), changes(m.joints.size());
+    for (size_t i = 0; i < joints.size(); ++i) {
+      all[joints[i]] = value(c, rows[i]);
+      changes[joints[i]] = rowChange(rows[i]);
+    }
+    for (int j : joints)
+      if (kindOf(m.joints[j]).reactChange)
+        kindOf(m.joints[j]).reactChange(m, j, pose, dpose, all, changes);
+    return changes[ji];
+  }
 };
 
 Status setUp(const Kinematics& k0, JointId joint, Setup& s) {
@@ -265,9 +282,6 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
   if (out.status = setUp(k0, joint, su); !out.status.ok()) return out;
   const Kinematics& k = su.k;
   const Mechanism& m = k.mechanism();
-  const int ji = su.ji;
-  const std::vector<int>& joints = su.joints;
-  const std::vector<RowsReaction>& rows = su.rows;
   out.reaction = su.reaction;
   out.force = out.reaction.force;
   Sensitivity s;
@@ -279,19 +293,12 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
   const Context c = factored(k, s);
   SensitivityPose pose(k, s);
   const PointChange dpose(pose);
-  std::vector<JointReaction> all(m.joints.size()), changes(m.joints.size());
   for (size_t d = 0; d < out.dims.size(); ++d) {
     pose.dim = static_cast<int>(d);
     const Eigen::VectorXd dQ = forcesChangeOf(k, s, pose.dim);
-    for (size_t i = 0; i < joints.size(); ++i) {
-      all[joints[i]] = value(c, rows[i]);
-      changes[joints[i]] = change(c, rows[i], pose.dim, dQ);
-    }
-    for (int j : joints)
-      if (kindOf(m.joints[j]).reactChange)
-        kindOf(m.joints[j]).reactChange(m, j, pose, dpose, all, changes);
-    out.change.push_back(changes[ji]);
-    out.derivative.push_back(changes[ji].force);
+    out.change.push_back(su.restated(
+        c, pose, dpose, [&](const RowsReaction& r) { return change(c, r, pose.dim, dQ); }));
+    out.derivative.push_back(out.change.back().force);
   }
   if (!std::all_of(out.change.begin(), out.change.end(), [](const JointReaction& r) {
         return r.force.allFinite() && std::isfinite(r.coupleNm) && std::isfinite(r.contactN);
@@ -306,11 +313,7 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
   Setup su;
   if (out.status = setUp(k0, joint, su); !out.status.ok()) return out;
   const Kinematics& k = su.k;
-  const Mechanism& m = k.mechanism();
-  const int ji = su.ji;
-  const std::vector<int>& joints = su.joints;
-  const std::vector<RowsReaction>& rows = su.rows;
-  if (isSpatial(m))
+  if (isSpatial(k.mechanism()))
     return out.status = Status::badModel(
                "a counterweight's share of a reaction on a machine in space is not computed"),
            out;
@@ -332,16 +335,11 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
   JointReaction* parts[3] = {&out.share, &out.perX, &out.perY};
   for (int col = 0; col < 3; ++col) {
     Context share{k, none, c.J, {}, dl.col(col)};
-    std::vector<JointReaction> all(m.joints.size()), changes(m.joints.size());
-    for (size_t r = 0; r < joints.size(); ++r) {
-      all[joints[r]] = value(c, rows[r]);
-      changes[joints[r]] = value(share, rows[r]);
-      changes[joints[r]].at = Vec2::Zero();
-    }
-    for (int j : joints)
-      if (kindOf(m.joints[j]).reactChange)
-        kindOf(m.joints[j]).reactChange(m, j, pose, pose, all, changes);
-    *parts[col] = changes[ji];
+    *parts[col] = su.restated(c, pose, pose, [&](const RowsReaction& r) {
+      JointReaction v = value(share, r);
+      v.at = Vec2::Zero();  // a share at a held pose: no point moves
+      return v;
+    });
   }
   return out;
 }

@@ -3,6 +3,10 @@
 
 #include "optimize/variables.h"
 
+#include <cmath>
+#include <optional>
+
+#include "linkage/guide.h"
 #include "linkage/space.h"
 
 namespace linkage::opt {
@@ -52,6 +56,28 @@ Status addCounterweight(const Mechanism& base, const std::string& name, const st
   return Status::success();
 }
 
+// A straight slot's angle varied with its offset: setDimensions turns the slot about its first
+// end and then gives the offset back its value (optimize_apply.cpp), so the design moves as the
+// turn less the offset's change, k = perp(n) . (p0 - from) per radian (n turns with the slot;
+// `from` as dimensions() measures the offset): both ends go back along n by it, the direction
+// the gradient must be of.
+void holdOffset(const Mechanism& design, Dimension& angle) {
+  if (angle.slots.size() != 1 || isSpatial(design)) return;
+  const Slot* slot = design.slot(angle.slots[0].slot);
+  const std::optional<Guide> g = slot ? guideOf(*slot) : std::nullopt;
+  if (!g || g->arc) return;
+  Vec2 from = Vec2::Zero();
+  if (!design.body(slot->body)->ground)
+    for (const Point& q : design.points)
+      if (q.body == slot->body) {
+        from = q.pos;
+        break;
+      }
+  const Vec2 back = perp(g->normal).dot(slot->p0 - from) * (M_PI / 180) * g->normal;
+  angle.slots[0].p0 -= back;
+  angle.slots[0].p1 -= back;
+}
+
 }  // namespace
 
 Status mapVariables(const Mechanism& base, const Mechanism& design, const OptimizeSpec& spec,
@@ -72,6 +98,13 @@ Status mapVariables(const Mechanism& base, const Mechanism& design, const Optimi
     out.cw.push_back(-1);
     out.axis.push_back(0);
     out.dims.push_back(*it);
+  }
+  for (Dimension& d : out.dims) {
+    if (!d.name.ends_with(".angle") || d.slots.empty()) continue;
+    const std::string offset = d.name.substr(0, d.name.size() - 6) + ".offset";
+    if (std::any_of(spec.variables.begin(), spec.variables.end(),
+                    [&](const OptVariable& v) { return v.name == offset; }))
+      holdOffset(design, d);
   }
   const bool reaction =
       std::any_of(spec.targets.begin(), spec.targets.end(),

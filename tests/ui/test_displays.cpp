@@ -614,5 +614,17 @@ TEST(Displays, ALongRedMessageFitsTheCanvasAndIsWholeInItsTooltip) {
   shot(&w, "message-strip-low");
 }
 
+// A result next to others of its quantity (Find Dimensions' table): rounding of 0 is 0, digits
+// down to 1e-9 of the scale and at most 10 of them, no exponent where none is needed.
+TEST(Displays, AResultIsShownToItsScale) {
+  EXPECT_EQ(resultText(5.822746424e-13, 1.579745201), "0");
+  EXPECT_EQ(resultText(-1.5797452011234, 1.5797452011234), "-1.579745201");
+  EXPECT_EQ(resultText(2.3821523734, 20.549712345), "2.38215237");
+  EXPECT_EQ(resultText(0.000123456789, 20.549712345), "0.00012346");
+  EXPECT_EQ(resultText(1.2345e-20, 1.2345e-20), "1.2345e-20");
+  EXPECT_EQ(resultText(0, 0), "0");
+  EXPECT_EQ(resultText(NAN, 1), QStringLiteral("\u2013"));
+}
+
 }  // namespace
 }  // namespace linkage::ui

@@ -6,6 +6,7 @@
 
 #include <QComboBox>
 #include <QFile>
+#include <QFontMetrics>
 #include <QTemporaryDir>
 
 #include <QPushButton>
@@ -192,6 +193,27 @@ TEST(OptimizeDialog, ACounterweightMeetsBalanceShakingInOneUndoStep) {
   EXPECT_EQ(serializeMechanism(doc.design()), before);
 }
 
+// The result's numbers as people read them (document/shown_numbers.h resultText): the
+// counterweight's x that comes out as 5.8e-13 kg mm beside a y of -1.58 is rounding of an exact 0
+// (the pivot's reaction is symmetric in x), shown "0", not an elided "5.822746424e-..."; the y
+// to 10 significant digits, no exponent; every number whole in its column.
+void expectNumbersForPeople(const QTableWidget& table, const std::vector<double>& after) {
+  ASSERT_EQ(table.item(0, 0)->text(), "crank.counterweight.x (kg mm)");
+  ASSERT_EQ(table.item(1, 0)->text(), "crank.counterweight.y (kg mm)");
+  ASSERT_EQ(after.size(), 2u);
+  EXPECT_LE(std::abs(after[0]), 1e-9 * std::abs(after[1]));
+  EXPECT_EQ(table.item(0, 2)->text(), "0");
+  const QString y = table.item(1, 2)->text();
+  EXPECT_FALSE(y.contains('e')) << y.toStdString();
+  EXPECT_EQ(QString(y).remove('-').remove('.').size(), 10) << y.toStdString();
+  EXPECT_NEAR(y.toDouble(), after[1], 1e-9 * std::abs(after[1])) << y.toStdString();
+  const QFontMetrics fm(table.font());
+  for (int r = 0; r < table.rowCount(); ++r)
+    for (int c = 1; c < 4; ++c)
+      EXPECT_LE(fm.horizontalAdvance(table.item(r, c)->text()), table.columnWidth(c))
+          << table.item(r, c)->text().toStdString() << " elided in column " << c;
+}
+
 // A joint's reaction as a target (its peak over the turn), met by a counterweight: the crank
 // pivot of the 22-A slider-crank with masses, the result named as `dynamics` names the joint,
 // applied as one undo step whose design bears the peak reported.
@@ -219,6 +241,7 @@ TEST(OptimizeDialog, AReactionsPeakLoweredByACounterweight) {
   for (int r = 0; r < table->rowCount(); ++r) rows << table->item(r, 0)->text();
   EXPECT_TRUE(rows.contains("peak reaction |f| at pin:ground.O (N)"))
       << rows.join("; ").toStdString();
+  expectNumbersForPeople(*table, dialog.result()->after);
   shot(&dialog, "optimize_dialog_reaction");
   const int steps = doc.undoStack()->count();
   ASSERT_TRUE(dialog.apply());

@@ -18,6 +18,7 @@
 #include "design/optimize_targets.h"
 #include "document/commands.h"
 #include "document/document.h"
+#include "document/shown_numbers.h"
 #include "linkage/balance.h"
 #include "linkage/sensitivity.h"
 
@@ -36,6 +37,12 @@ QTableWidgetItem* fixed(const QString& text) {
 
 QString number(double v) {
   return QString::number(v, 'g', 10);
+}
+
+// "mm" of "crank.O-A (mm)": what a row measures in; the whole label where it names none.
+QString unitInLabel(const QString& what) {
+  const qsizetype open = what.lastIndexOf(QLatin1Char('('));
+  return open >= 0 && what.endsWith(QLatin1Char(')')) ? what.mid(open) : what;
 }
 
 QString unitOf(Dimension::Unit u) {
@@ -69,6 +76,8 @@ OptimizeDialog::OptimizeDialog(Document* doc, QWidget* parent) : QDialog(parent)
   result_table_->setHorizontalHeaderLabels(
       {tr("Quantity"), tr("Before"), tr("After"), tr("Target")});
   result_table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  for (int c = 1; c < 4; ++c)  // the numbers whole, never elided
+    result_table_->horizontalHeader()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
   result_table_->verticalHeader()->setVisible(false);
   summary_ = new QLabel(tr("Tick the dimensions to vary, add a target, and Find"));
   summary_->setObjectName(QStringLiteral("optSummary"));
@@ -306,13 +315,9 @@ void OptimizeDialog::showResult() {
     summary_->setText(QString::fromStdString(r.status.message));
     return;
   }
-  auto add = [this](const QString& what, double before, double after, const QString& target) {
-    const int row = result_table_->rowCount();
-    result_table_->insertRow(row);
-    result_table_->setItem(row, 0, fixed(what));
-    result_table_->setItem(row, 1, fixed(number(before)));
-    result_table_->setItem(row, 2, fixed(number(after)));
-    result_table_->setItem(row, 3, fixed(target));
+  std::vector<MeasureRow> rows;
+  auto add = [&rows](const QString& what, double before, double after, const QString& target) {
+    rows.push_back({what, before, after, target});
   };
   const Mechanism& m = doc_->design();
   std::map<std::string, Dimension::Unit> units;
@@ -336,8 +341,29 @@ void OptimizeDialog::showResult() {
         0, c.kg, QString());
   add(tr("objective (weighted sum of squares)"), r.atBefore.objective, r.atAfter.objective,
       QStringLiteral("0"));
+  showRows(rows);
   summary_->setText(resultSummary());
   apply_->setEnabled(r.atAfter.feasible);
+}
+
+// The rows' numbers for people (document/shown_numbers.h resultText): each next to the largest
+// of its quantity's unit (as its label ends) before and after; the columns as wide as they are.
+void OptimizeDialog::showRows(const std::vector<MeasureRow>& rows) {
+  std::map<QString, double> scale;
+  for (const MeasureRow& row : rows) {
+    double& s = scale[unitInLabel(row.what)];
+    for (double v : {row.before, row.after})
+      if (std::isfinite(v)) s = std::max(s, std::abs(v));
+  }
+  for (const MeasureRow& row : rows) {
+    const double s = scale[unitInLabel(row.what)];
+    const int r = result_table_->rowCount();
+    result_table_->insertRow(r);
+    result_table_->setItem(r, 0, fixed(row.what));
+    result_table_->setItem(r, 1, fixed(resultText(row.before, s)));
+    result_table_->setItem(r, 2, fixed(resultText(row.after, s)));
+    result_table_->setItem(r, 3, fixed(row.target));
+  }
 }
 
 QString OptimizeDialog::summary() const {

@@ -28,6 +28,7 @@ namespace linkage::ui {
 
 class Document;
 class OptimizeTargets;
+struct MeasureRow;
 
 class OptimizeDialog : public QDialog {
   Q_OBJECT
@@ -64,6 +65,7 @@ class OptimizeDialog : public QDialog {
   void addVariableRow(int row, const QString& name, const QString& value, double lo, double hi);
   bool readSpec(OptimizeSpec& spec, QString* why) const;
   void showResult();
+  void showRows(const std::vector<MeasureRow>& rows);
   QString resultSummary() const;
 
   Document* doc_;

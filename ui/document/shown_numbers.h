@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QString>
+#include <algorithm>
 #include <cmath>
 
 #include "linkage/io/numbers.h"
@@ -61,6 +62,22 @@ inline QString shownText(double v) {
     if (parseNumber(s) == v) return QString::fromStdString(s);
   }
   return QString::fromStdString(formatNumber(v, std::max(kShownDigits, whole)));
+}
+
+// A result among others of its quantity (a table's rows in one unit, before and after): 0 when
+// it is rounding next to their largest, `scale` (a counterweight's moment of 1e-14 kg mm beside
+// 1500 is an exact 0, not "5.822746424e-14"); otherwise down to the digit of 1e-9 of the scale,
+// the digits below it being rounding too, and at most kResultDigits significant digits.
+constexpr int kResultDigits = 10;
+inline QString resultText(double v, double scale) {
+  if (!std::isfinite(v)) return QStringLiteral("\u2013");
+  const double rounding = kRoundingFraction * std::abs(scale);
+  if (std::abs(v) <= rounding) return QStringLiteral("0");
+  const double digits =
+      rounding > 0 ? std::floor(std::log10(std::abs(v))) - std::floor(std::log10(rounding)) + 1
+                   : kResultDigits;
+  return QString::fromStdString(
+      formatShown(v, scale, static_cast<int>(std::clamp<double>(digits, 1, kResultDigits))));
 }
 
 }  // namespace linkage::ui
