@@ -91,7 +91,8 @@ in its plane's coordinates, and after all the others each moving point's depth
 (body.P.depth, where written or at a ball rod's end), each ground point's z, each ball rod's
 length (ball-rod:A.P.length) and each plane's origin (planes.NAME.origin.x, .y, .z); a ground
 slot's offset and angle in its block's plane. --stroke is along the world's y, as `limits`
-measures it there; --clearance and --window refuse it.
+measures it there; --clearance (to a point, a segment or a straight slot) and --window are
+in the world, --transmission in the angle's plane.
 
 Not yet: a cam on a machine in space; a cam segment's end angle.
 
