@@ -63,7 +63,8 @@ difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.ro
                        crank angle of the turn: CSV crank_deg,dimension,dmu_deg_per_unit
                        (degrees of the angle per mm, degree or ratio); --point not needed.
                        Every kind: a dyad's (with an arc slot's centre too), a rod's on a
-                       slider or in a slot
+                       slider or in a slot; on a machine in space each in its plane (an arc
+                       slot's refused there)
   --shaking            instead, the derivatives of the shaking force (what the frame feels: the
                        bodies' masses times their accelerations, with gravity and loads, as
                        `dynamics` writes it) at the file's speed at each crank angle: CSV
@@ -90,7 +91,8 @@ in its plane's coordinates, and after all the others each moving point's depth
 (body.P.depth, where written or at a ball rod's end), each ground point's z, each ball rod's
 length (ball-rod:A.P.length) and each plane's origin (planes.NAME.origin.x, .y, .z); a ground
 slot's offset and angle in its block's plane. --stroke is along the world's y, as `limits`
-measures it there; --clearance and --window refuse it.
+measures it there; --clearance (to a point, a segment or a straight slot) and --window are
+in the world, --transmission in the angle's plane.
 
 Not yet: a cam on a machine in space; a cam segment's end angle.
 
@@ -273,6 +275,10 @@ int transmission(Kinematics& k, Sensitivity& sens, const Options& o) {
   const std::vector<TransmissionJoint> js = transmissionJoints(k.mechanism());
   const std::optional<size_t> j = transmissionIndex(js, o.transmission);
   if (!j) return kBadInput;
+  if (std::string why = transmissionSensitivityRefusal(k.mechanism(), js[*j]); !why.empty()) {
+    error("sensitivity: " + why);
+    return kBadInput;
+  }
   return perStep(k, sens, o, "dmu_deg_per_unit", [&](Kinematics& kk, Sensitivity& ss) {
     std::vector<std::vector<double>> out;
     for (double d : transmissionAngleDerivatives(kk, js[*j], ss)) out.push_back({d});
@@ -367,9 +373,9 @@ int sensitivity(Options o) {
     Kinematics k;
     if (int e = prepare(k, *m); e != kOk) return e;
     Sensitivity sens;
-    // A reaction or the shaking force on a machine in space: from the world's sensitivities
-    // (a transmission angle is refused there, by name).
-    const bool world = (!o.force.empty() || o.shaking) && isSpatial(k.mechanism());
+    // On a machine in space from the world's sensitivities (a transmission angle from its plane
+    // class's frame, which they give too).
+    const bool world = isSpatial(k.mechanism());
     if (Status s = sens.prepare(k, dimensions(k.mechanism()),
                                 world ? Sensitivity::Space::World : Sensitivity::Space::Refuse);
         !s.ok()) {

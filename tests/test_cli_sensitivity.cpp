@@ -208,6 +208,37 @@ TEST_F(SensitivityCli, ATransmissionAnglesDerivativesWhenAsked) {
   }
 }
 
+// On a machine in space each angle in its plane (tests/test_spatial_transmission_sensitivity.cpp
+// holds the library to closed forms there): the overedge machine's rod on its ground slot in
+// the inclined rocker plane, every dimension in space among the rows, the library's to the bit.
+TEST_F(SensitivityCli, ATransmissionAnglesDerivativesOnAMachineInSpace) {
+  const Mechanism m = test::example("overedge-machine");
+  const test::CliResult res =
+      run("sensitivity overedge-machine --transmission mu:needlelink.G --steps 2");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dimensions(m), Sensitivity::Space::World).ok());
+  const TransmissionJoint j = transmissionJoints(m).at(0);
+  ASSERT_EQ(j.label, "mu:needlelink.G");
+  const std::vector<std::string> lines = res.lines();
+  const size_t n = s.dims().size();
+  ASSERT_EQ(lines.size(), 1 + 2 * n) << res.out;
+  for (int step = 0; step < 2; ++step) {
+    ASSERT_TRUE(k.moveTo(180.0 * step).ok());
+    ASSERT_TRUE(s.at(k).ok());
+    const std::vector<double> want = transmissionAngleDerivatives(k, j, s);
+    for (size_t d = 0; d < n; ++d) {
+      const std::vector<std::string> row = split(lines[1 + step * n + d], ',');
+      ASSERT_EQ(row.size(), 3u);
+      EXPECT_EQ(row[1], s.dims()[d].name);
+      EXPECT_EQ(parseNumber(row[2]), want[d]) << row[1];
+    }
+  }
+  EXPECT_NE(res.out.find(",planes.rocker.origin.z,"), std::string::npos);
+}
+
 // The shaking force's derivatives (tests/test_optimize_shaking.cpp holds the library to a
 // slider-crank's closed form): the drop feed's rows are the library's to the bit, and moving the
 // machine's frame point by point changes what the frame feels as the sum says.

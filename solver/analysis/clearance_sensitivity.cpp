@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 
+#include "analysis/space_distance.h"
 #include "linkage/guide.h"
 #include "linkage/slot_sensitivity.h"
 #include "linkage/space.h"
@@ -56,24 +57,61 @@ Nearest onSlot(const Kinematics& at, const Sensitivity& s, SlotId id, const Vec2
           }};
 }
 
-// On a machine in space, in the world (findClearance's distance there: to a point or a
-// segment): d(least)/dp = n . (dA - dB), B the nearest point of the segment at its parameter.
+// A straight slot's end e in the world moved by dimension d (per unit): the ground's as the
+// dimension moves it (x, y and z); a moving body's as its body moves in its class's frame, its
+// move in its plane turned into that frame, lifted with its plane's move along the normal (a
+// plane's origin alone moves it so).
+Vec3 slotEndChange(const Kinematics& at, const Sensitivity& s, const Slot& slot, int e, int d) {
+  const Mechanism& m = at.mechanism();
+  const Dimension& dim = s.dims()[d];
+  const SlotChange c = slotChange(m, slot.id, dim);
+  const Vec2 own = e ? c.p1 : c.p0;
+  const Body* body = m.body(slot.body);
+  if (!body || body->ground) {
+    double dz = 0;
+    for (const Dimension::SlotMove& mv : dim.slots)
+      if (mv.slot == slot.id) dz += e ? mv.z1 : mv.z0;
+    return Vec3(own.x(), own.y(), dz);
+  }
+  const PlaneClasses pc = planeClasses(m);
+  const PlaneInClass& in = pc.of(body->plane);
+  const Plane& f = pc.frames[in.cls];
+  const Plane* plane = planeNamed(m, body->plane);
+  const std::string origin = "planes." + (plane ? plane->name : "") + ".origin.";
+  const double depth =
+      plane && dim.name.rfind(origin, 0) == 0 && dim.name.size() == origin.size() + 1
+          ? plane->normal()[dim.name.back() - 'x']
+          : 0.0;
+  const Vec2 v = s.point(at, slot.body, in.toClass(e ? slot.p1 : slot.p0), in.rot * own, d);
+  return v.x() * f.xAxis + v.y() * f.yAxis + depth * f.normal();
+}
+
+// On a machine in space, in the world (findClearance's distance there: to a point, a segment or
+// a straight slot's segment): d(least)/dp = n . (dA - dB), B the nearest point of the segment at
+// its parameter.
 void inSpace(const Kinematics& at, const Sensitivity& s, const ClearanceWatch& watch,
              ClearanceSensitivity& out) {
   const ClearancePart& other = watch.other;
   auto world = [&](PointId p) { return Vec3(at.motionInSpace(p).position); };
-  const Vec3 A = world(watch.point), N = world(other.point);
+  const Slot* slot = other.isSlot() ? at.mechanism().slot(other.slot) : nullptr;
+  SpaceMotion ends[2];
+  if (slot) slotEndsInSpace(at, *slot, ends);
+  const Vec3 A = world(watch.point), N = slot ? ends[0].r : world(other.point);
   double t = 0;
   Vec3 B = N;
-  if (other.isSegment()) {
-    const Vec3 d = world(other.end) - N;
+  if (other.isSegment() || slot) {
+    const Vec3 d = (slot ? ends[1].r : world(other.end)) - N;
     t = d.squaredNorm() > 0 ? std::clamp((A - N).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
     B = N + t * d;
   }
   const Vec3 n = (A - B).normalized();
   for (size_t i = 0; i < out.dims.size(); ++i) {
     const int d = static_cast<int>(i);
-    Vec3 dB = s.point3(at, other.point, d);
+    Vec3 dB;
+    if (slot)
+      dB = (1 - t) * slotEndChange(at, s, *slot, 0, d) + t * slotEndChange(at, s, *slot, 1, d);
+    else
+      dB = s.point3(at, other.point, d);
     if (other.isSegment()) dB = (1 - t) * dB + t * s.point3(at, other.end, d);
     out.derivative.push_back(n.dot(s.point3(at, watch.point, d) - dB));
   }

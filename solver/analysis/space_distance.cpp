@@ -6,6 +6,7 @@
 #include "analysis/space_distance.h"
 
 #include "analysis/slot_frame.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -20,9 +21,10 @@ CycleReading spaceDistance(const Kinematics& k, PointId p, PointId q) {
   return lengthInSpace(Vec3(a.r - b.r), Vec3(a.dr - b.dr), Vec3(a.ddr - b.ddr));
 }
 
-CycleReading spaceDistanceToSegment(const Kinematics& k, PointId p, PointId a, PointId b,
-                                    Vec3* nearest) {
-  const SpaceMotion x = spaceMotion(k, p), A = spaceMotion(k, a), B = spaceMotion(k, b);
+namespace {
+
+CycleReading toSegment(const SpaceMotion& x, const SpaceMotion& A, const SpaceMotion& B,
+                       Vec3* nearest) {
   const Vec3 w = x.r - A.r, w1 = x.dr - A.dr, w2 = x.ddr - A.ddr;
   const Vec3 u = B.r - A.r, u1 = B.dr - A.dr, u2 = B.ddr - A.ddr;
   const double uu = u.squaredNorm(), t = w.dot(u) / uu;
@@ -36,6 +38,43 @@ CycleReading spaceDistanceToSegment(const Kinematics& k, PointId p, PointId a, P
   if (nearest) *nearest = A.r + t * u;
   return lengthInSpace(Vec3(w - t * u), Vec3(w1 - t1 * u - t * u1),
                        Vec3(w2 - t2 * u - 2 * t1 * u1 - t * u2));
+}
+
+}  // namespace
+
+CycleReading spaceDistanceToSegment(const Kinematics& k, PointId p, PointId a, PointId b,
+                                    Vec3* nearest) {
+  return toSegment(spaceMotion(k, p), spaceMotion(k, a), spaceMotion(k, b), nearest);
+}
+
+void slotEndsInSpace(const Kinematics& k, const Slot& s, SpaceMotion ends[2]) {
+  const Mechanism& m = k.mechanism();
+  const Body* body = m.body(s.body);
+  const Vec2 drawn[2] = {s.p0, s.p1};
+  if (!body || body->ground) {
+    for (int e = 0; e < 2; ++e)
+      ends[e] = {Vec3(drawn[e].x(), drawn[e].y(), e < static_cast<int>(s.z.size()) ? s.z[e] : 0.0),
+                 Vec3::Zero(), Vec3::Zero()};
+    return;
+  }
+  // The body's points are held in its plane class's frame: the slot's ends mapped there, moved
+  // with the body, lifted into the world at the plane's depth.
+  const PlaneClasses pc = planeClasses(m);
+  const PlaneInClass& in = pc.of(body->plane);
+  const Plane& f = pc.frames[in.cls];
+  auto lift = [&](const Vec2& v) { return Vec3(v.x() * f.xAxis + v.y() * f.yAxis); };
+  const double rate = secondsPerDegree(k);
+  for (int e = 0; e < 2; ++e) {
+    const Kinematics::PointMotion at = k.motionOf(s.body, in.toClass(drawn[e]));
+    ends[e] = {Vec3(f.origin + lift(at.position) + in.depth * f.normal()), lift(at.velocity) * rate,
+               lift(at.acceleration) * (rate * rate)};
+  }
+}
+
+CycleReading spaceDistanceToSlot(const Kinematics& k, PointId p, const Slot& s, Vec3* nearest) {
+  SpaceMotion ends[2];
+  slotEndsInSpace(k, s, ends);
+  return toSegment(spaceMotion(k, p), ends[0], ends[1], nearest);
 }
 
 }  // namespace linkage

@@ -23,4 +23,13 @@ CycleReading spaceDistance(const Kinematics& k, PointId p, PointId q);
 CycleReading spaceDistanceToSegment(const Kinematics& k, PointId p, PointId a, PointId b,
                                     Vec3* nearest = nullptr);
 
+// A straight slot's ends in the world at k's pose, with their derivatives per degree of crank: a
+// moving body's slot in its body's plane (at the plane's depth), the ground's where it is
+// written (x, y, z; at rest).
+void slotEndsInSpace(const Kinematics& k, const Slot& s, SpaceMotion ends[2]);
+
+// From p to the straight slot s as to the segment between its ends (spaceDistanceToSegment).
+CycleReading spaceDistanceToSlot(const Kinematics& k, PointId p, const Slot& s,
+                                 Vec3* nearest = nullptr);
+
 }  // namespace linkage

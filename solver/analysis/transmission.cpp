@@ -8,6 +8,7 @@
 #include "linkage/elements.h"
 #include "linkage/groups.h"
 #include "linkage/guide.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -81,12 +82,6 @@ Signed signedAngle(const Kinematics& k, const TransmissionJoint& t, const Vec2& 
   return out;
 }
 
-// The slot's direction as drawn (zero for a dyad).
-Vec2 slotDirection(const Mechanism& m, const TransmissionJoint& t) {
-  const Slot* s = t.kind == TransmissionKind::Dyad ? nullptr : m.slot(t.slot);
-  return s ? Vec2(s->p1 - s->p0) : Vec2::Zero();
-}
-
 // The channel of the rod lying along its slot: sin(2 theta), smooth through the fold.
 RootSample along(const Signed& s) {
   return {s.sin2, 2 * s.cos2 * s.perDeg * kDeg};
@@ -97,6 +92,22 @@ double muOf(const TransmissionJoint& t, double theta) {
 }
 
 }  // namespace
+
+int transmissionClass(const Mechanism& m, const TransmissionJoint& t) {
+  if (!isSpatial(m)) return 0;
+  const Body* link = m.body(t.link);
+  return link ? planeClasses(m).of(link->plane).cls : 0;
+}
+
+Vec2 slotLine(const Mechanism& m, const TransmissionJoint& t) {
+  const Slot* s = t.kind == TransmissionKind::Dyad ? nullptr : m.slot(t.slot);
+  if (!s) return Vec2::Zero();
+  // In space the drawn x, y of a ground slot are the world's, and a body's are its plane's:
+  // neither is the class frame the rod's line is read in.
+  if (!isSpatial(m)) return s->p1 - s->p0;
+  const Slot c = inClassFrame(m, planeClasses(m), *s, transmissionClass(m, t));
+  return c.p1 - c.p0;
+}
 
 const char* toString(TransmissionKind k) {
   switch (k) {
@@ -196,14 +207,14 @@ std::vector<TransmissionJoint> transmissionJoints(const Mechanism& m) {
 
 TransmissionReading transmissionAngle(const Kinematics& k, const TransmissionJoint& t) {
   if (!k.valid()) return {NAN, NAN, NAN};
-  const Signed s = signedAngle(k, t, slotDirection(k.mechanism(), t));
+  const Signed s = signedAngle(k, t, slotLine(k.mechanism(), t));
   // mu = |theta| or 90 - |theta|: its rates are theta's, turned by the side theta is on.
   const double side = (s.deg < 0 ? -1 : 1) * (isRod(t) ? -1 : 1);
   return {muOf(t, s.deg), side * s.perDeg, side * s.perDeg2};
 }
 
 TransmissionTrack::TransmissionTrack(const Mechanism& m, const TransmissionJoint& t) : t_(t) {
-  const Vec2 slot = slotDirection(m, t);
+  const Vec2 slot = slotLine(m, t);
   stationary_.f = [t, slot](const Kinematics& k) {
     const Signed r = signedAngle(k, t, slot);
     return RootSample{r.perDeg, r.perDeg2};

@@ -5,6 +5,7 @@
 
 #include "linkage/guide.h"
 #include "linkage/slot_sensitivity.h"
+#include "linkage/space.h"
 
 namespace linkage {
 
@@ -38,17 +39,33 @@ double dyadTurn(const Kinematics& k, const TransmissionJoint& j, const Sensitivi
   return std::atan2(cross(u, w), u.dot(w));
 }
 
+// d(slotLine)/d(dimension d): the slot's ends' move in the frame slotLine reads. In space a
+// ground slot's move is in the world (its ends' x, y and z), seen along the class's normal as
+// the slot is; a body's is in its plane, turned into the class's frame as the slot is.
+Vec2 slotLineChange(const Mechanism& m, const TransmissionJoint& j, const Dimension& d) {
+  const SlotChange c = slotChange(m, j.slot, d);
+  const Body* body = m.body(m.slot(j.slot)->body);
+  if (!isSpatial(m) || !body) return c.p1 - c.p0;
+  if (!body->ground) return planeClasses(m).of(body->plane).rot * Vec2(c.p1 - c.p0);
+  double dz = 0;
+  for (const Dimension::SlotMove& s : d.slots)
+    if (s.slot == j.slot) dz += s.z1 - s.z0;
+  const Plane& f = planeClasses(m).frames[transmissionClass(m, j)];
+  const Vec3 w((c.p1 - c.p0).x(), (c.p1 - c.p0).y(), dz);
+  return Vec2(w.dot(f.xAxis), w.dot(f.yAxis));
+}
+
 // A rod's theta from the slot's line to the rod's, in (-90, 90] degrees as radians, and its
 // change.
 double rodTheta(const Kinematics& k, const TransmissionJoint& j, const Sensitivity* s, int dim,
                 double* d) {
   const Mechanism& m = k.mechanism();
   const Slot& slot = *m.slot(j.slot);
-  const Vec2 t = slot.p1 - slot.p0, line = k.bodyTransform(slot.body).R * t;
+  const Vec2 t = slotLine(m, j), line = k.bodyTransform(slot.body).R * t;
   const Vec2 u = j.linkAt.at(k) - j.linkOuter.at(k);
   if (s && d) {
-    const SlotChange c = slotChange(m, j.slot, s->dims()[dim]);
-    const double slotTurn = s->angle(k, slot.body, dim) + lineTurn(t, c.p1 - c.p0);
+    const double slotTurn =
+        s->angle(k, slot.body, dim) + lineTurn(t, slotLineChange(m, j, s->dims()[dim]));
     *d = lineTurn(u, anchorChange(k, j.linkAt, *s, dim) - anchorChange(k, j.linkOuter, *s, dim)) -
          slotTurn;
   }
@@ -59,6 +76,17 @@ double rodTheta(const Kinematics& k, const TransmissionJoint& j, const Sensitivi
 }
 
 }  // namespace
+
+std::string transmissionSensitivityRefusal(const Mechanism& m, const TransmissionJoint& j) {
+  if (!isSpatial(m)) return "";
+  const Slot* slot = m.slot(j.slot);
+  const bool arc =
+      j.linkOuter.arc || j.linkAt.arc || j.otherAt.arc || j.otherOuter.arc || (slot && slot->arc());
+  if (!arc) return "";
+  return "'" + j.label +
+         "': the transmission angle at an arc slot of a machine in space is not differentiated "
+         "yet (an arc's dimensions are a planar machine's); a straight slot's and a dyad's are";
+}
 
 double transmissionAngleSensitivity(const Kinematics& k, const TransmissionJoint& j,
                                     const Sensitivity* sens, int dim, double* d) {

@@ -30,7 +30,7 @@ class TransmissionTrack {
 
  private:
   TransmissionJoint t_;
-  Vec2 slot_ = Vec2::Zero();  // a rod's slot as drawn, on its body
+  Vec2 slot_ = Vec2::Zero();  // a rod's slot as drawn, on its body (slotLine)
   RootChannel stationary_, along_;
 };
 

@@ -13,6 +13,7 @@
 #include "linkage/sensitivity.h"
 #include "linkage/space.h"
 #include "linkage/transmission.h"
+#include "linkage/transmission_sensitivity.h"
 #include "optimize/variables.h"
 
 namespace linkage {
@@ -127,6 +128,8 @@ Status checkTransmission(const Mechanism& m, const OptTarget& t) {
   const TransmissionJoint& j = js[t.joint];
   if (!(t.limitDeg >= 0 && t.limitDeg < 90))
     return Status::badModel("'" + j.label + "': the limit must be from 0 to 90 degrees");
+  if (std::string why = transmissionSensitivityRefusal(m, j); !why.empty())
+    return Status::badModel(why);
   return Status::success();
 }
 
@@ -163,8 +166,8 @@ Status checkWatched(const Mechanism& m, const OptTarget& t) {
 
 // What a target may be on a machine in space (a stroke, a position with or without z, a timing
 // window's end, a joint's in-plane reaction or a ball rod's tension, the shaking force and a
-// clearance in the world; not a path or a transmission angle) and on a planar one (a position
-// without z).
+// clearance in the world, a transmission angle in its plane; not a path) and on a planar one (a
+// position without z).
 Status checkSpace(bool space, const OptTarget& t) {
   using K = OptTarget::Kind;
   if (!space) {
@@ -180,14 +183,14 @@ Status checkSpace(bool space, const OptTarget& t) {
         "in space is not computed): its shaking force is");
   if (t.kind == K::Position && !(t.at.allFinite() && std::isfinite(t.z.value_or(0))))
     return Status::badModel("a position target's coordinates must be numbers");
-  if (t.kind != K::Path && t.kind != K::Transmission) return Status::success();
+  if (t.kind != K::Path) return Status::success();
   static const char* names[] = {"stroke",  "position",  "path",   "transmission",
                                 "shaking", "clearance", "window", "force"};
   return Status::badModel(
       std::string("a ") + names[static_cast<int>(t.kind)] +
       " target on a machine in space (planes) is not optimised yet (its "
-      "derivatives in space are not computed): stroke, position, window, force, shaking and "
-      "clearance targets are");
+      "derivatives in space are not computed): stroke, position, window, force, shaking, "
+      "clearance and transmission targets are");
 }
 
 double uniform(std::mt19937_64& g) {

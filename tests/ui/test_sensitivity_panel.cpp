@@ -278,6 +278,38 @@ TEST(SensitivityPanel, ATransmissionAngle) {
   shot(&panel, "transmission_sensitivity");
 }
 
+// On a machine in space a transmission angle lies in its plane: the overedge machine's lower
+// gripper (a dyad in the gripper plane), the library's derivatives from the world's
+// sensitivities (tests/test_spatial_transmission_sensitivity.cpp holds them to changed designs),
+// a plane's origin among the bars; not "Not yet".
+TEST(SensitivityPanel, ATransmissionAngleInSpace) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("overedge-machine")), nullptr));
+  doc.setCrankDeg(140);
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  ASSERT_TRUE(choose(panel, "transmission angle 1: mu:lowerlink.M"));
+  EXPECT_TRUE(panel.summary().startsWith("mu:lowerlink.M is ")) << panel.summary();
+  const Mechanism& m = doc.design();
+  const Kinematics& k = doc.kinematics();
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dimensions(m), Sensitivity::Space::World).ok());
+  ASSERT_TRUE(s.at(k).ok());
+  const std::vector<double> want = transmissionAngleDerivatives(k, transmissionJoints(m)[1], s);
+  ASSERT_EQ(panel.bars().size(), want.size());
+  bool origin = false;
+  for (const SensitivityPanel::Bar& b : panel.bars())
+    for (size_t d = 0; d < want.size(); ++d)
+      if (s.dims()[d].name == b.dimension) {
+        EXPECT_EQ(b.now, want[d]) << b.dimension;
+        origin = origin || b.dimension.rfind("planes.", 0) == 0;
+      }
+  EXPECT_TRUE(origin);
+  shot(&panel, "transmission_sensitivity_space");
+}
+
 // A machine in space (the RSSR: a crank in the drawing plane, a rocker in an inclined plane, a
 // ball rod): the dock offers the world's z besides x and y; moving the whole machine along x (the
 // ground's x and the rocker plane's origin's x) moves the rocker point by (1, 0, 0): its x bars

@@ -356,7 +356,11 @@ void SensitivityPanel::transmissionBars(int n) {
   const TransmissionJoint j = transmissionJoints(m).at(n);
   Kinematics k = doc_->kinematics();
   Sensitivity s;
-  if (Status st = s.prepare(k, dimensions(k.mechanism())); !st.ok()) {
+  // In space each angle lies in its plane class's frame, which the world's sensitivities give.
+  const std::string why = transmissionSensitivityRefusal(m, j);
+  if (Status st = why.empty() ? s.prepare(k, dimensions(k.mechanism()), Sensitivity::Space::World)
+                              : Status::badModel(why);
+      !st.ok()) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
     return;
   }

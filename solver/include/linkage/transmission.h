@@ -62,6 +62,14 @@ struct TransmissionJoint {
 // In the order the structure solves the groups (the paper's mu_1, mu_2, mu_3 for its mechanism).
 std::vector<TransmissionJoint> transmissionJoints(const Mechanism& m);
 
+// The plane class (linkage/space.h) a joint's angle lies in: its link's; 0 on a planar machine.
+int transmissionClass(const Mechanism& m, const TransmissionJoint& t);
+// A rod's slot as drawn (p1 - p0) in the frame the rod's angle is read in: the drawing's on a
+// planar machine; on a machine in space its plane class's, as the solver places the slot (a
+// ground slot seen along the class's normal, its ends' z with it; a body's slot turned from its
+// plane into the class's frame). Zero for a dyad.
+Vec2 slotLine(const Mechanism& m, const TransmissionJoint& t);
+
 // The angle at k's pose, in degrees, with its first and second derivatives per degree of crank
 // (NaN where k's velocities or accelerations are not known).
 struct TransmissionReading {

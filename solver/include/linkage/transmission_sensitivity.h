@@ -11,15 +11,24 @@
 // - a rod's mu = 90 - |theta|, theta the angle from the slot's line to the rod's, changes by
 //     d(mu)/dp = -sign(theta) (cross(u, du) / |u|^2 - dbeta/dp - cross(t, dt) / |t|^2),
 //   beta the angle of the slot's body and t = p1 - p0 the slot as drawn, dt its ends' move.
+// On a machine in space each angle lies in its link's plane class (the sensitivities prepared
+// with Sensitivity::Space::World: point() gives a moving point's move in that class's frame);
+// a rod's slot is read there (slotLine in linkage/transmission.h), a ground slot's move with its
+// ends' z seen along the class's normal.
 // Degrees per unit of the dimension (mm, degree or ratio).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "linkage/sensitivity.h"
 #include "linkage/transmission.h"
 
 namespace linkage {
+
+// "" when j's derivatives below are computed on m; else why not, naming the angle: on a machine
+// in space an arc slot's (an arc's centre and radius are a planar machine's dimensions).
+std::string transmissionSensitivityRefusal(const Mechanism& m, const TransmissionJoint& j);
 
 // mu at k's pose, degrees (0 to 180; a rod's 0 to 90), and with sens (its at() done at this
 // pose) and d, d(mu)/d(dimension dim) in degrees per unit.
