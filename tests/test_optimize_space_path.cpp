@@ -5,7 +5,7 @@
 // direction (`stroke:body.point@z=MM`). The objective's gradient against central differences on
 // the RSSR and the overedge machine; a path synthesis in space (the RSSR's rocker point sampled
 // at known dimensions, found again from others, checked on the written design solved afresh); a
-// stroke along z met and measured again on the written design.
+// stroke along z met and measured again on the written design (and a planar one along x).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -216,6 +216,26 @@ TEST(OptimizeSpacePath, AStrokeAlongZIsMetAndMeasuredOnTheWrittenDesign) {
   EXPECT_NEAR(valueOf(*written.mechanism, "crank.O-A"), 8.5, 1e-6);
 }
 
+// A planar machine's stroke along a direction in its plane: the four-bar's coupler point along
+// x met by its crank, the written design's limits along (1, 0) measured again.
+TEST(OptimizeSpacePath, APlanarStrokeAlongXIsMet) {
+  const Mechanism m = test::example("four-bar-crank-rocker");
+  Kinematics base;
+  ASSERT_TRUE(base.load(m).ok());
+  OptimizeSpec spec;
+  spec.variables = {{"crank.O2-A", 10, 30}};
+  spec.targets = {target(m, "stroke:coupler.P@x=40")};
+  spec.starts = 2;
+  const OptimizeResult r = optimize(base, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  Kinematics k;
+  ASSERT_TRUE(k.load(r.design).ok());
+  const Limits l = findLimits(k, LimitMeasure::along(*r.design.findPoint("coupler.P"), Vec2(1, 0)));
+  ASSERT_TRUE(l.status.ok()) << l.status.message;
+  EXPECT_GT(std::abs(r.atBefore.measures[0][0] - 40), 1);
+  EXPECT_NEAR(l.stroke, 40, 1e-9);
+}
+
 // The direction's text: the axes, three numbers, two (z 0); not 0, not a word; named back in
 // the output; a planar machine's stroke out of its plane, a path's z on a planar machine and a
 // file mixing two and three columns said by name.
@@ -226,6 +246,7 @@ TEST(OptimizeSpacePath, DirectionsAndPathFilesReadAndRefused) {
   EXPECT_EQ(parseDirection("1,-2,3"), Vec3(1, -2, 3));
   EXPECT_FALSE(parseDirection("0,0,0"));
   EXPECT_FALSE(parseDirection("up"));
+  EXPECT_FALSE(parseDirection("1e308,1e308,1e308"));
   EXPECT_EQ(optTargetName(m, target(m, "stroke:rocker.C@z=3")), "rocker.C@z");
   EXPECT_EQ(optTargetName(m, target(m, "stroke:rocker.C@1,-2,3=3")), "rocker.C@1,-2,3");
   EXPECT_EQ(optTargetName(m, target(m, "stroke:rocker.C=3")), "rocker.C");

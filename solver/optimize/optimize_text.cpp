@@ -174,7 +174,8 @@ std::optional<Vec3> parseDirection(const std::string& text) {
   const std::optional<std::vector<double>> d = parseCoordinates(text);
   if (!d) return std::nullopt;
   const Vec3 v((*d)[0], (*d)[1], d->size() == 3 ? (*d)[2] : 0.0);
-  if (!v.allFinite() || v.isZero()) return std::nullopt;
+  // A length that overflows would normalise to nothing.
+  if (!std::isfinite(v.norm()) || v.isZero()) return std::nullopt;
   return v;
 }
 
