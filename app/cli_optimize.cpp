@@ -31,11 +31,15 @@ pose on MODEL's assembly branches.
   --target TARGET             (repeatable), each optionally followed by *WEIGHT (default 1):
      stroke:body.point=MM            the point's stroke (extremes over the turn along its default
                                      direction: its ground slot's, else y; in space the world's y)
+     stroke:body.point@DIR=MM        along DIR instead: x, y, z or DX,DY[,DZ] (z and DZ a machine
+                                     in space's, in the world)
      position:body.point@DEG=X,Y[,Z] the point at crank angle DEG (Z: a machine in space's world
                                      z; without it x and y only)
      path:body.point=FILE.csv        the point's path through the points of FILE (x,y a line, an
-                                     optional header): each one's distance to the nearest point of
-                                     the curve over the turn; lines starting with # are comments
+                                     optional header; in space x,y,z in the world, or x,y: the
+                                     world's x and y only): each one's distance to the nearest
+                                     point of the curve over the turn; lines starting with # are
+                                     comments
      transmission:mu:body.point>=DEG a dyad's transmission angle (as `transmission` names it)
                                      within DEG to 180 - DEG over the turn
      shaking:fx<=N                   the peak of the shaking force's |fx| (fy, fz in space, or
@@ -70,9 +74,9 @@ those that found the best (within 1e-9 mm^2 + 1e-6 of it). A design infeasible a
 its before fields empty.
 
 A machine in space (planes, docs/spatial.md): any dimension `sensitivity` lists may vary (depths,
-ground z, ball rods' lengths, planes' origins), and counterweights for the shaking force; stroke,
-position, window, clearance, force and shaking targets, in the world; the others are refused by
-name (their derivatives in space are not computed yet).
+ground z, ball rods' lengths, planes' origins), and counterweights for the shaking force; the
+targets are in the world (a transmission angle in its plane); the shaking moment and a
+counterweight's share of a reaction are refused by name (not computed in space yet).
 
 Exit status: 0 done, 1 the --out file could not be written, 2 bad input (an unknown dimension or
 point, bad bounds or target, no start that assembles and turns fully).

@@ -9,6 +9,7 @@
 #include "linkage/elements.h"
 #include "linkage/force_sensitivity.h"
 #include "linkage/io/numbers.h"
+#include "linkage/optimize_text.h"
 #include "linkage/sensitivity.h"
 #include "linkage/shaking_sensitivity.h"
 #include "linkage/space.h"
@@ -23,7 +24,8 @@ namespace {
 
 const char* kHelp =
     R"(usage: linkage-cli sensitivity MODEL --point body.point [--steps N] [--velocity]
-                                   [--acceleration] | --point body.point --stroke |
+                                   [--acceleration] | --point body.point --stroke
+                                   [--direction DIR] |
                                    --clearance N | --window NAME | --transmission N |
                                    --shaking | --force JOINT
 
@@ -50,6 +52,8 @@ difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.ro
                        else y; on a machine in space the world's y; limit positions to 1e-9 degree, the envelope theorem: each
                        extreme moves by the point's own derivative there): CSV
                        dimension,dstroke_mm_per_mm, a row a dimension
+  --direction DIR      with --stroke: along DIR instead, x, y, z or DX,DY[,DZ] (any length, not
+                       0; z and DZ a machine in space's, in the world)
   --clearance N        instead, the derivative of the least distance of the file's clearance N
                        (0 the first of "timing"'s "clearances"; the envelope theorem at the
                        closest approach): CSV dimension,dmin_mm_per_mm; --point not needed.
@@ -91,8 +95,8 @@ in its plane's coordinates, and after all the others each moving point's depth
 (body.P.depth, where written or at a ball rod's end), each ground point's z, each ball rod's
 length (ball-rod:A.P.length) and each plane's origin (planes.NAME.origin.x, .y, .z); a ground
 slot's offset and angle in its block's plane. --stroke is along the world's y, as `limits`
-measures it there; --clearance (to a point, a segment or a straight slot) and --window are
-in the world, --transmission in the angle's plane.
+measures it there, or along --direction in the world (z too); --clearance (to a point, a
+segment or a straight slot) and --window are in the world, --transmission in the angle's plane.
 
 Not yet: a cam on a machine in space; a cam segment's end angle.
 
@@ -107,6 +111,7 @@ struct Options {
   bool space = false;  // the model is spatial: x, y, z in the world
   int clearance = -1;
   std::string window, transmission, force;
+  std::string direction;  // --stroke's, as the optimiser's stroke target reads it
 };
 
 // Appends ",x,y" (one string appended at a time: no temporaries to concatenate).
@@ -162,10 +167,23 @@ void writeByDimension(const char* column, const std::vector<Dimension>& dims,
 }
 
 // The stroke's derivatives (linkage/stroke_sensitivity.h), along the point's default direction
-// (in space the world's +y).
-int stroke(const Kinematics& k, PointId p) {
-  const StrokeSensitivity s =
-      strokeSensitivity(k, p, strokeDirection(k.mechanism(), p), dimensions(k.mechanism()));
+// (in space the world's +y) or the one given.
+int stroke(const Kinematics& k, PointId p, const std::string& along) {
+  Vec3 direction = strokeDirection(k.mechanism(), p);
+  if (!along.empty()) {
+    const std::optional<Vec3> d = parseDirection(along);
+    if (!d) {
+      error("sensitivity: --direction " + along + ": expected x, y, z or DX,DY[,DZ] (not 0)");
+      return kBadInput;
+    }
+    if (d->z() != 0 && !isSpatial(k.mechanism())) {
+      error("sensitivity: --direction " + along +
+            ": out of the plane, and this machine is planar (give DX,DY)");
+      return kBadInput;
+    }
+    direction = d->normalized();
+  }
+  const StrokeSensitivity s = strokeSensitivity(k, p, direction, dimensions(k.mechanism()));
   if (!s.status.ok()) {
     error("sensitivity: " + s.status.message);
     return exitFor(s.status);
@@ -365,6 +383,10 @@ std::string header(const Options& o) {
 }
 
 int sensitivity(Options o) {
+  if (!o.direction.empty() && !o.stroke) {
+    error("sensitivity: --direction goes with --stroke");
+    return kBadInput;
+  }
   std::optional<Mechanism> m = openDrivenModel(o.model);
   if (!m) return kBadInput;
   if (o.clearance >= 0) return clearance(*m, o.clearance);
@@ -403,7 +425,7 @@ int sensitivity(Options o) {
     error("sensitivity: " + s.message);
     return exitFor(s);
   }
-  if (o.stroke) return stroke(k, p);
+  if (o.stroke) return stroke(k, p, o.direction);
   o.space = isSpatial(k.mechanism());
   std::string out = header(o);
   Status failed;
@@ -437,6 +459,7 @@ Command sensitivityCommand(Parser& parser) {
   addFlag(c, "--velocity", o->velocity);
   addFlag(c, "--acceleration", o->acceleration);
   addFlag(c, "--stroke", o->stroke);
+  addText(c, "--direction", o->direction);
   addWhole(c, "--clearance", o->clearance, 0, 1'000'000);
   addText(c, "--window", o->window);
   addText(c, "--transmission", o->transmission);

@@ -12,6 +12,7 @@
 #include "cli_harness.h"
 #include "linkage/io/model_file.h"
 #include "linkage/io/numbers.h"
+#include "linkage/optimize.h"
 
 namespace linkage {
 namespace {
@@ -93,6 +94,40 @@ TEST_F(OptimizeCli, MachinesInSpaceMeetStrokeAndPositionTargets) {
                        "computed yet"),
             std::string::npos)
       << r.err;
+}
+
+// A machine in space's path (x,y,z a line) and a stroke along z: the RSSR's rocker point at
+// 8 crank angles with its arm 30.5 mm (set apart) met from the drawn 28.5 by the arm alone, the
+// path_rms_mm row below 1e-6 mm; the z stroke's row named by its direction.
+TEST_F(OptimizeCli, AMachineInSpacesPathAndAStrokeAlongZ) {
+  Mechanism m =
+      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/rssr-crank-rocker.linkage.json")
+          .mechanism.value();
+  ASSERT_TRUE(setDimension(m, "rocker.H-C", 30.5).ok());
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  std::ostringstream csv;
+  csv.precision(17);
+  csv << "x,y,z\n";
+  for (int i = 0; i < 8; ++i) {
+    ASSERT_TRUE(k.moveTo(45.0 * i).ok());
+    const Vec3 p = k.motionInSpace(*m.findPoint("rocker.C")).position;
+    csv << p.x() << "," << p.y() << "," << p.z() << "\n";
+  }
+  const std::string file = writeFile("rocker.csv", csv.str());
+  test::CliResult r =
+      run("optimize rssr-crank-rocker --vary rocker.H-C=25:35 --target 'path:rocker.C=" + file +
+          "' --target stroke:rocker.C@z=3 --starts 2");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  auto t = rows(r);
+  EXPECT_GT(*parseNumber(t["path_rms_mm,rocker.C"][0]), 0.5);
+  EXPECT_TRUE(t.count("stroke_mm,rocker.C@z")) << r.out;
+  r = run("optimize rssr-crank-rocker --vary rocker.H-C=25:35 --target 'path:rocker.C=" + file +
+          "' --starts 2");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  t = rows(r);
+  EXPECT_LT(*parseNumber(t["path_rms_mm,rocker.C"][1]), 1e-6);
+  EXPECT_NEAR(*parseNumber(t["variable,rocker.H-C"][1]), 30.5, 1e-6);
 }
 
 TEST_F(OptimizeCli, BadDimensionOrTargetIsNamedWithExit2) {

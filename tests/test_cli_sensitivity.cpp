@@ -420,6 +420,51 @@ TEST_F(SensitivityCli, AMachineInSpacesStrokeIsAlongTheWorldsY) {
       << res.err;
 }
 
+// --stroke along --direction: the RSSR's rocker point along z and along a direction with every
+// component, the library's strokeSensitivity along that unit direction to the last bit (checked
+// against the closed form in tests/test_stroke_sensitivity_space.cpp); refused without --stroke,
+// for a zero or a word, and out of a planar machine's plane.
+TEST_F(SensitivityCli, AStrokeAlongAGivenDirection) {
+  const Mechanism m =
+      loadMechanismFile(std::string(LINKAGE_EXAMPLES_DIR) + "/rssr-crank-rocker.linkage.json")
+          .mechanism.value();
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  for (const auto& [text, u] : {std::pair<std::string, Vec3>{"z", Vec3(0, 0, 1)},
+                                {"0.3,-0.5,0.8", Vec3(0.3, -0.5, 0.8).normalized()}}) {
+    const test::CliResult res =
+        run("sensitivity rssr-crank-rocker --point rocker.C --stroke --direction " + text);
+    ASSERT_EQ(res.exit, 0) << res.err;
+    const StrokeSensitivity s = strokeSensitivity(k, *m.findPoint("rocker.C"), u, dimensions(m));
+    ASSERT_TRUE(s.status.ok()) << s.status.message;
+    const std::vector<std::string> lines = res.lines();
+    ASSERT_EQ(lines.size(), 1 + s.dims.size()) << res.out;
+    double largest = 0;
+    for (size_t d = 0; d < s.dims.size(); ++d) {
+      const std::vector<std::string> row = split(lines[1 + d], ',');
+      ASSERT_EQ(row.size(), 2u);
+      EXPECT_EQ(row[0], s.dims[d].name);
+      EXPECT_EQ(parseNumber(row[1]), s.derivative[d]) << row[0];
+      largest = std::max(largest, std::abs(s.derivative[d]));
+    }
+    EXPECT_GT(largest, 1e-3);
+    EXPECT_NE(res.err.find("stroke " + formatNumber(s.limits.stroke) + " mm"), std::string::npos)
+        << res.err;
+  }
+  const std::string model = "sensitivity rssr-crank-rocker --point rocker.C ";
+  for (const auto& [args, said] : {std::pair<std::string, std::string>{
+                                       model + "--direction z", "--direction goes with --stroke"},
+                                   {model + "--stroke --direction 0,0,0", "expected x, y, z"},
+                                   {model + "--stroke --direction up", "expected x, y, z"},
+                                   {"sensitivity four-bar-crank-rocker --point coupler.P --stroke "
+                                    "--direction 0,1,1",
+                                    "out of the plane"}}) {
+    const test::CliResult res = run(args);
+    EXPECT_EQ(res.exit, 2) << args;
+    EXPECT_NE(res.err.find(said), std::string::npos) << res.err;
+  }
+}
+
 // A machine in space: the point's world x, y, z (and their rates') derivatives, the library's
 // point3(), velocity3() and acceleration3() to the last bit, its rods and planes among the
 // dimensions.

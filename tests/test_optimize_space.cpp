@@ -4,7 +4,7 @@
 // RSSR, the overedge machine's transmission angles; the RSSR's rocker stroke met by its rod's
 // length and the lower gripper's transmission angle lifted above a limit, each checked by
 // solving the written design again; the targets whose derivatives in space are not there refused
-// by name.
+// by name (paths and strokes along other directions: tests/test_optimize_space_path.cpp).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -170,20 +170,22 @@ TEST(OptimizeSpace, ABodysBaseLengthKeepsAPointOnItsLineWhereItIs) {
   EXPECT_NEAR(r.atAfter.measures[0][0], 21, 1e-9);
 }
 
-// In space a path is not a target yet; a z is a machine in space's.
+// In space the shaking moment is no target yet; a z is a machine in space's (a path's:
+// tests/test_optimize_space_path.cpp).
 TEST(OptimizeSpace, TargetsWithoutDerivativesInSpaceAreRefusedByName) {
   const Mechanism m = test::example("overedge-machine");
   Kinematics base;
   ASSERT_TRUE(base.load(m).ok());
   OptimizeSpec spec;
   spec.variables = {{"main.O-A1", 5, 15}};
-  OptTarget path = target(m, "stroke:needlearm.N=3");
-  path.kind = OptTarget::Kind::Path;
-  path.path = {Vec2(0, 0)};
-  spec.targets = {path};
+  OptTarget moment;
+  moment.kind = OptTarget::Kind::Shaking;
+  moment.moment = true;
+  spec.targets = {moment};
   const OptimizeResult refused = optimize(base, spec);
   EXPECT_EQ(refused.status.code, StatusCode::BadModel);
-  EXPECT_NE(refused.status.message.find("a path target on a machine in space"), std::string::npos)
+  EXPECT_NE(refused.status.message.find("the shaking moment on a machine in space"),
+            std::string::npos)
       << refused.status.message;
   const Mechanism planar = test::example("drop-feed");
   Kinematics flat;

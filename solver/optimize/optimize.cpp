@@ -81,21 +81,40 @@ Status transmissionResiduals(const Kinematics& k, const OptimizeSpec& spec, size
   return Status::success();
 }
 
+// A path's given point Q against the point's place P at kk's pose: P - Q and P's first and
+// second rates per degree of crank. On a machine in space in the world, z left out where the path
+// gives none (pathZ empty: as a position without z).
+struct PathGap {
+  Vec3 d, v, a;
+};
+PathGap pathGap(const Kinematics& kk, const OptTarget& t, size_t i, bool space) {
+  const double rate = kDeg / kk.omega();
+  if (!space) {
+    const Kinematics::PointMotion m = kk.motion(t.point);
+    const Vec2 d = m.position - t.path[i];
+    return {Vec3(d.x(), d.y(), 0), Vec3(m.velocity.x(), m.velocity.y(), 0) * rate,
+            Vec3(m.acceleration.x(), m.acceleration.y(), 0) * rate * rate};
+  }
+  const Kinematics::PointMotion3 m = kk.motionInSpace(t.point);
+  const Vec3 mask(1, 1, t.pathZ.empty() ? 0 : 1);
+  const Vec3 q(t.path[i].x(), t.path[i].y(), t.pathZ.empty() ? 0 : t.pathZ[i]);
+  return {(m.position - q).cwiseProduct(mask), m.velocity.cwiseProduct(mask) * rate,
+          m.acceleration.cwiseProduct(mask) * rate * rate};
+}
+
 // A path's given points: each one's nearest point of the curve over the turn, the local minima
 // of |P - Q|^2 found as roots of (P - Q) . P' (exact rates, narrowed to 1e-9 degree).
 Status nearestPoints(const Kinematics& k, const OptTarget& t, int steps, std::vector<double>& deg) {
   std::vector<RootChannel> channels(t.path.size());
   std::vector<RootChannel*> ptrs;
+  const bool space = isSpatial(k.mechanism());
   for (size_t i = 0; i < t.path.size(); ++i) {
-    const Vec2 q = t.path[i];
-    channels[i].f = [q, p = t.point](const Kinematics& kk) {
-      const double rate = kDeg / kk.omega();
-      const Kinematics::PointMotion m = kk.motion(p);
-      const Vec2 d = m.position - q, v = m.velocity * rate, a = m.acceleration * rate * rate;
-      return RootSample{d.dot(v), v.squaredNorm() + d.dot(a)};
+    channels[i].f = [&t, i, space](const Kinematics& kk) {
+      const PathGap g = pathGap(kk, t, i, space);
+      return RootSample{g.d.dot(g.v), g.v.squaredNorm() + g.d.dot(g.a)};
     };
-    channels[i].value = [q, p = t.point](const Kinematics& kk) {
-      return (kk.position(p) - q).squaredNorm();
+    channels[i].value = [&t, i, space](const Kinematics& kk) {
+      return pathGap(kk, t, i, space).d.squaredNorm();
     };
     ptrs.push_back(&channels[i]);
   }
@@ -199,11 +218,14 @@ Status walkProbes(const Kinematics& k, const OptimizeSpec& spec, const opt::Vari
       e.measures[p.target] = {at.x(), at.y()};
       p.weightOfDp = 2 * t.weight * r;
     } else if (t.kind == OptTarget::Kind::Path) {
-      const Vec2 r = at - t.path[p.index];
+      const Vec3 r = pathGap(walker, t, p.index, space).d;
       e.objective += t.weight * r.squaredNorm();
       sumSq[p.target] += r.squaredNorm();
       largest[p.target] = std::max(largest[p.target], r.norm());
-      p.weightOfDp = 2 * t.weight * r;
+      if (space)
+        p.weightOfDp3 = 2 * t.weight * r;
+      else
+        p.weightOfDp = 2 * t.weight * Vec2(r.head<2>());
     }
     if (!sens || vars.dims.empty() ||
         (p.angleWeight == 0 && p.weightOfDp.isZero() && p.weightOfDp3.isZero()))
@@ -249,7 +271,9 @@ Evaluation evaluate(const Kinematics& base, const OptimizeSpec& spec, const std:
   if (!solveDesign(base, spec, x, k, e.why)) return e;
   std::vector<Vec3> dirs;
   for (const OptTarget& t : spec.targets)
-    dirs.push_back(t.point ? strokeDirection(base.mechanism(), t.point) : Vec3(0, 1, 0));
+    dirs.push_back(t.direction ? Vec3(t.direction->normalized())
+                   : t.point   ? strokeDirection(base.mechanism(), t.point)
+                               : Vec3(0, 1, 0));
   // Every design turns fully: a target read at one angle does not make a locking design good.
   LimitOptions lo;
   lo.steps = std::max(4, spec.steps / 8);

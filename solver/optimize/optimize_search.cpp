@@ -164,17 +164,27 @@ Status checkWatched(const Mechanism& m, const OptTarget& t) {
   return Status::success();
 }
 
-// What a target may be on a machine in space (a stroke, a position with or without z, a timing
-// window's end, a joint's in-plane reaction or a ball rod's tension, the shaking force and a
-// clearance in the world, a transmission angle in its plane; not a path) and on a planar one (a
-// position without z).
+// What a target may be on a machine in space (a stroke along any direction, a position and a
+// path with or without z, a timing window's end, a joint's in-plane reaction or a ball rod's
+// tension, the shaking force and a clearance in the world, a transmission angle in its plane;
+// not the shaking moment) and on a planar one (a position or a path without z, a stroke in the
+// plane).
 Status checkSpace(bool space, const OptTarget& t) {
   using K = OptTarget::Kind;
+  if (t.kind == K::Path && !t.pathZ.empty() && t.pathZ.size() != t.path.size())
+    return Status::badModel("a path target's points have z for some and not for others");
   if (!space) {
     if (t.kind == K::Position && t.z)
       return Status::badModel(
           "a position's z is of a machine in space (planes); this one is "
           "planar: give x, y");
+    if (t.kind == K::Path && !t.pathZ.empty())
+      return Status::badModel(
+          "a path's z is of a machine in space (planes); this one is planar: give x,y a line");
+    if (t.kind == K::Stroke && t.direction && t.direction->z() != 0)
+      return Status::badModel(
+          "a stroke's direction out of the plane is of a machine in space (planes); this one is "
+          "planar: give DX,DY");
     return Status::success();
   }
   if (t.kind == K::Shaking && t.moment)
@@ -183,14 +193,7 @@ Status checkSpace(bool space, const OptTarget& t) {
         "in space is not computed): its shaking force is");
   if (t.kind == K::Position && !(t.at.allFinite() && std::isfinite(t.z.value_or(0))))
     return Status::badModel("a position target's coordinates must be numbers");
-  if (t.kind != K::Path) return Status::success();
-  static const char* names[] = {"stroke",  "position",  "path",   "transmission",
-                                "shaking", "clearance", "window", "force"};
-  return Status::badModel(
-      std::string("a ") + names[static_cast<int>(t.kind)] +
-      " target on a machine in space (planes) is not optimised yet (its "
-      "derivatives in space are not computed): stroke, position, window, force, shaking, "
-      "clearance and transmission targets are");
+  return Status::success();
 }
 
 double uniform(std::mt19937_64& g) {

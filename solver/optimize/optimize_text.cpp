@@ -12,14 +12,6 @@ namespace linkage {
 
 namespace {
 
-std::optional<Vec2> parsePair(const std::string& s) {
-  const size_t c = s.find(',');
-  if (c == std::string::npos) return std::nullopt;
-  auto x = parseNumber(s.substr(0, c)), y = parseNumber(s.substr(c + 1));
-  if (!x || !y) return std::nullopt;
-  return Vec2(*x, *y);
-}
-
 // X,Y or X,Y,Z: the position target's point; nullopt else.
 std::optional<std::vector<double>> parseCoordinates(const std::string& s) {
   std::vector<double> out;
@@ -34,8 +26,9 @@ std::optional<std::vector<double>> parseCoordinates(const std::string& s) {
   return out;
 }
 
-// FILE.csv: x,y a line; a first line that is not two numbers is a header.
-bool readPath(const std::string& file, std::vector<Vec2>& out, std::string& why) {
+// FILE.csv: x,y or x,y,z a line (every line alike); a first line that is not numbers is a
+// header.
+bool readPath(const std::string& file, OptTarget& t, std::string& why) {
   std::ifstream in(file);
   if (!in) {
     why = file + ": cannot be read";
@@ -43,21 +36,27 @@ bool readPath(const std::string& file, std::vector<Vec2>& out, std::string& why)
   }
   std::string line;
   bool first = true;  // the first line that is not a comment may be a header
+  size_t columns = 0;
   for (int n = 1; std::getline(in, line); ++n) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;  // comments (a source cited, as four-bar-rs does)
-    std::optional<Vec2> p = parsePair(line);
+    const std::optional<std::vector<double>> p = parseCoordinates(line);
     const bool header = !p && first;
     first = false;
     if (header) continue;
-    if (!p) {
-      why = file + ":" + std::to_string(n) + ": not two numbers x,y";
+    if (!p || (columns != 0 && p->size() != columns)) {
+      why = file + ":" + std::to_string(n) + ": not " +
+            (columns == 3   ? "three numbers x,y,z as the lines before"
+             : columns == 2 ? "two numbers x,y as the lines before"
+                            : "two numbers x,y (or three x,y,z on a machine in space)");
       return false;
     }
-    out.push_back(*p);
+    columns = p->size();
+    t.path.push_back(Vec2((*p)[0], (*p)[1]));
+    if (columns == 3) t.pathZ.push_back((*p)[2]);
   }
-  if (out.empty()) why = file + ": no points";
-  return !out.empty();
+  if (t.path.empty()) why = file + ": no points";
+  return !t.path.empty();
 }
 
 // transmission:[mu:]body.point>=DEG, the joint named as `transmission` names it.
@@ -168,6 +167,25 @@ bool parseWindow(const std::string& text, OptTarget& t, std::string& why) {
 
 }  // namespace
 
+std::optional<Vec3> parseDirection(const std::string& text) {
+  if (text == "x") return Vec3::UnitX();
+  if (text == "y") return Vec3::UnitY();
+  if (text == "z") return Vec3::UnitZ();
+  const std::optional<std::vector<double>> d = parseCoordinates(text);
+  if (!d) return std::nullopt;
+  const Vec3 v((*d)[0], (*d)[1], d->size() == 3 ? (*d)[2] : 0.0);
+  // A length that overflows would normalise to nothing.
+  if (!std::isfinite(v.norm()) || v.isZero()) return std::nullopt;
+  return v;
+}
+
+std::string directionName(const Vec3& d) {
+  if (d == Vec3::UnitX()) return "x";
+  if (d == Vec3::UnitY()) return "y";
+  if (d == Vec3::UnitZ()) return "z";
+  return formatNumber(d.x()) + "," + formatNumber(d.y()) + "," + formatNumber(d.z());
+}
+
 bool parseOptVary(const std::string& text, OptVariable& v) {
   const size_t eq = text.rfind('='), colon = text.rfind(':');
   if (eq == std::string::npos || colon == std::string::npos || colon < eq) return false;
@@ -213,10 +231,16 @@ bool parseOptTarget(const Mechanism& m, std::string text, OptTarget& t, std::str
     if (!mm || !(*mm >= 0)) return why += "the stroke must be a number >= 0", false;
     t.kind = OptTarget::Kind::Stroke;
     t.stroke = *mm;
+    if (const size_t at = point.find('@'); at != std::string::npos) {
+      t.direction = parseDirection(point.substr(at + 1));
+      if (!t.direction)
+        return why += "expected stroke:body.point@DIR=MM, DIR x, y, z or DX,DY[,DZ] (not 0)", false;
+      point = point.substr(0, at);
+    }
   } else if (kind == "path") {
     t.kind = OptTarget::Kind::Path;
     std::string fileWhy;
-    if (!readPath(value, t.path, fileWhy)) return why += fileWhy, false;
+    if (!readPath(value, t, fileWhy)) return why += fileWhy, false;
   } else {
     return why += "unknown kind '" + kind +
                   "' (stroke, position, path, transmission, shaking, force, clearance, window)",
@@ -236,6 +260,8 @@ std::string optTargetName(const Mechanism& m, const OptTarget& t) {
   if (t.kind == OptTarget::Kind::Window) return t.window + (t.windowEnd ? ".end" : ".start");
   std::string name = m.pointLabel(t.point);
   if (t.kind == OptTarget::Kind::Position) name.append("@").append(formatNumber(t.crankDeg));
+  if (t.kind == OptTarget::Kind::Stroke && t.direction)
+    name.append("@").append(directionName(*t.direction));
   if (t.kind == OptTarget::Kind::Transmission) name.insert(0, "mu:");
   return name;
 }

@@ -423,6 +423,51 @@ TEST(OptimizeDialog, APathFromACsvFileIsMet) {
             "rms distance of the path's 3 points to needlebar.B's curve (mm)");
 }
 
+// A machine in space's path from a CSV file of world x,y,z (the solver's reading of the file):
+// the RSSR's rocker point at 8 crank angles with its arm 30.5 mm (set apart), met from the drawn
+// 28.5 by the arm alone, applied, and the document's point on each given point at its angle.
+TEST(OptimizeDialog, AMachineInSpacesPathFromACsvFileIsMet) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("rssr-crank-rocker")), nullptr));
+  Mechanism truth = doc.design();
+  ASSERT_TRUE(setDimension(truth, "rocker.H-C", 30.5).ok());
+  Kinematics k;
+  ASSERT_TRUE(k.load(truth).ok());
+  const PointId C = *truth.findPoint("rocker.C");
+  std::vector<Vec3> points;
+  QByteArray text = "x,y,z\n";
+  for (int i = 0; i < 8; ++i) {
+    ASSERT_TRUE(k.moveTo(45.0 * i).ok());
+    points.push_back(k.motionInSpace(C).position);
+    for (int c = 0; c < 3; ++c)
+      text += QByteArray::number(points.back()[c], 'g', 17) + (c < 2 ? "," : "\n");
+  }
+  QTemporaryDir dir;
+  QFile csv(dir.filePath("rocker.csv"));
+  ASSERT_TRUE(csv.open(QIODevice::WriteOnly));
+  csv.write(text);
+  csv.close();
+  OptimizeDialog dialog(&doc);
+  dialog.findChild<QSpinBox*>("optStarts")->setValue(2);
+  ASSERT_TRUE(dialog.vary("rocker.H-C", 25, 35));
+  ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Path, "rocker.C", csv.fileName()));
+  QSignalSpy done(&dialog, &OptimizeDialog::finished);
+  dialog.find();
+  ASSERT_TRUE(dialog.busy()) << dialog.summary().toStdString();
+  ASSERT_TRUE(done.wait(60000));
+  ASSERT_TRUE(dialog.result() && dialog.result()->status.ok()) << dialog.summary().toStdString();
+  EXPECT_GT(dialog.result()->atBefore.measures.at(0).at(0), 0.5);
+  EXPECT_LT(dialog.result()->atAfter.measures.at(0).at(1), 1e-6);
+  ASSERT_TRUE(dialog.apply());
+  ASSERT_TRUE(doc.solved());
+  Kinematics applied = doc.kinematics();
+  for (int i = 0; i < 8; ++i) {
+    ASSERT_TRUE(applied.moveTo(45.0 * i).ok());
+    const Vec3 at = applied.motionInSpace(*doc.design().findPoint("rocker.C")).position;
+    EXPECT_LT((at - points[i]).norm(), 1e-5) << 45 * i;
+  }
+}
+
 // A clearance by its parts as the file names them, a transmission angle by the dyad's name as
 // `linkage-cli transmission` gives it: offered, read, and their measures shown with units (the
 // least clearance equal to the library's over the turn).

@@ -138,7 +138,8 @@ QLayout* OptimizeDialog::buildTargetButtons() {
   auto* addPath = new QPushButton(tr("&Path Points..."));
   addPath->setObjectName(QStringLiteral("optAddPath"));
   addPath->setStatusTip(
-      tr("A path target: points x,y (mm) a line from a CSV file, the first "
+      tr("A path target: points x,y (mm; x,y,z in the world on a machine in space) a line from "
+         "a CSV file, the first "
          "output point's curve to pass near them"));
   auto* removeTarget = new QPushButton(tr("&Remove Target"));
   connect(addTarget, &QPushButton::clicked, this, [this] {

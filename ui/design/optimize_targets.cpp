@@ -74,7 +74,9 @@ QString valueUsage(K kind) {
           "the position is two numbers x, y (mm) at a crank angle (on a machine "
           "in space x, y or x, y, z in the world)");
     case K::Path:
-      return QObject::tr("the path is a CSV file of points x,y (mm)");
+      return QObject::tr(
+          "the path is a CSV file of points x,y (mm; on a machine in space x,y or x,y,z in the "
+          "world)");
     case K::Transmission:
       return QObject::tr("the transmission angle's limit is degrees, 0 up to 90");
     case K::Shaking:
@@ -276,6 +278,7 @@ bool OptimizeTargets::readRow(int r, OptTarget& t, QString* why) const {
       if (!parseOptTarget(m, text, read, fault))
         return fail(QString::fromStdString(fault.substr(("--target " + text + ": ").size())));
       t.path = std::move(read.path);
+      t.pathZ = std::move(read.pathZ);
       return true;
     }
     default:

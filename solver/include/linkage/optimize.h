@@ -14,10 +14,11 @@
 // On a machine in space (planes, docs/spatial.md) every dimension may vary (depths, ground z,
 // ball rods' lengths, planes' origins too: changeDimensions sets them exactly), the gradient is
 // the world's (Sensitivity::Space::World), and the targets are a stroke (along the world's +y,
-// strokeDirection in linkage/stroke_sensitivity.h), a position (world x, y and, if given, z), a
-// window's end, a clearance, a reaction, and the shaking force over dimensions or counterweights
-// (each turning in its plane); the others are refused by name (their derivatives in space are
-// not computed yet).
+// strokeDirection in linkage/stroke_sensitivity.h, or a direction given), a position and a path
+// (world x, y and, if given, z), a window's end, a clearance, a reaction, a transmission angle
+// (in its plane) and the shaking force over dimensions or counterweights (each turning in its
+// plane); the shaking moment and a counterweight's share of a reaction are refused by name
+// (their derivatives in space are not computed yet).
 #pragma once
 
 #include <cstdint>
@@ -93,6 +94,12 @@ struct OptTarget {
   std::string window;
   bool windowEnd = false;
   double weight = 1;
+  // Stroke: along this direction in the world instead (any length; a planar machine's z 0):
+  // `@x`, `@z`, `@DX,DY,DZ` in the target's text (linkage/optimize_text.h).
+  std::optional<Vec3> direction;
+  // Path: on a machine in space, each given point's world z (a file of x,y,z lines); empty: the
+  // distances are in the world's x, y only (as a position without z).
+  std::vector<double> pathZ;
 };
 
 // What a target measures, for people: Stroke {stroke}, Position {x, y} ({x, y, z} with a z), Path
