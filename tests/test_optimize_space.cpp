@@ -80,8 +80,7 @@ TEST(OptimizeSpace, TheRssrsGradientMatchesCentralDifferences) {
 // ground slot's offset and angle, a ground point's z and planes' origins.
 TEST(OptimizeSpace, TheOveredgeMachinesTransmissionGradientMatchesCentralDifferences) {
   const Mechanism m = test::example("overedge-machine");
-  // The slot's angle and offset apart: set together, the offset is held at its value where the
-  // turn (about the slot's first end) moves it, which no single dimension's derivative is.
+  // The slot's angle and offset apart here (together: AGroundSlotsAngleWithItsOffsetHeld).
   for (const char* slot : {"ground.u.angle", "ground.u.offset"}) {
     OptimizeSpec spec;
     for (const char* v : {"lowerlink.Q-M", "lower.K-M", "upper.E.depth", "ball-rod:main.D.length",
@@ -93,6 +92,19 @@ TEST(OptimizeSpace, TheOveredgeMachinesTransmissionGradientMatchesCentralDiffere
                     target(m, "transmission:mu:feedrod.G6>=75*0.5")};
     checkGradient(m, spec, 0.05);
   }
+}
+
+// The needle's ground slot's angle and offset varied together: each design turns the slot about
+// its first end in its block's plane and gives the offset back its value (setDimensions), so the
+// angle's gradient is the turn less that offset's change.
+TEST(OptimizeSpace, AGroundSlotsAngleWithItsOffsetHeld) {
+  const Mechanism m = test::example("overedge-machine");
+  OptimizeSpec spec;
+  for (const char* v : {"ground.u.angle", "ground.u.offset", "needlerock.H-B"})
+    spec.variables.push_back({v, -1e3, 1e3});
+  spec.targets = {target(m, "transmission:mu:needlelink.G>=88"),
+                  target(m, "position:needlearm.N@40=10,20,30*0.5")};
+  checkGradient(m, spec, 0.05);
 }
 
 // The lower gripper's transmission angle lifted from 57 to at least 62 degrees by its two

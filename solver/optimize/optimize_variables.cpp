@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "analysis/sensitivity_space.h"
 #include "linkage/guide.h"
 #include "linkage/space.h"
 
@@ -61,8 +62,30 @@ Status addCounterweight(const Mechanism& base, const std::string& name, const st
 // turn less the offset's change, k = perp(n) . (p0 - from) per radian (n turns with the slot;
 // `from` as dimensions() measures the offset): both ends go back along n by it, the direction
 // the gradient must be of.
+// On a machine in space a ground slot turns about its first end w0 in its block's plane (normal
+// n; analysis/dimension_change_space.cpp), and its offset across . w0 (across = n x t, t along
+// the slot) changes by -(t . w0) per radian as across turns to -t: both ends go along across by
+// (t . w0) per radian to give it back.
+void holdOffsetInSpace(const Mechanism& design, Dimension& angle) {
+  const Slot* slot = design.slot(angle.slots[0].slot);
+  if (!slot || slot->arc() || !design.body(slot->body)->ground) return;
+  const PlaneClasses pc = planeClasses(design);
+  const int cls = internal::groundSlotClass(design, pc, *slot);
+  if (cls < 0) return;
+  const Vec3 w0(slot->p0.x(), slot->p0.y(), slot->z.size() > 0 ? slot->z[0] : 0.0);
+  const Vec3 w1(slot->p1.x(), slot->p1.y(), slot->z.size() > 1 ? slot->z[1] : 0.0);
+  const Vec3 n = pc.frames[cls].normal(), t = (w1 - w0).normalized(), across = n.cross(t);
+  const Vec3 back = t.dot(w0) * (M_PI / 180) * across;
+  Dimension::SlotMove& move = angle.slots[0];
+  move.p0 += back.head<2>();
+  move.p1 += back.head<2>();
+  move.z0 += back.z();
+  move.z1 += back.z();
+}
+
 void holdOffset(const Mechanism& design, Dimension& angle) {
-  if (angle.slots.size() != 1 || isSpatial(design)) return;
+  if (angle.slots.size() != 1) return;
+  if (isSpatial(design)) return holdOffsetInSpace(design, angle);
   const Slot* slot = design.slot(angle.slots[0].slot);
   const std::optional<Guide> g = slot ? guideOf(*slot) : std::nullopt;
   if (!g || g->arc) return;
