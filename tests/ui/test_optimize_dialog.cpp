@@ -122,6 +122,41 @@ TEST(OptimizeDialog, AMachineInSpaceTakesStrokeAndPositionTargets) {
   shot(&at, "optimize_dialog_space");
 }
 
+// A stroke along a direction given after @ (the command line's stroke:P@DIR=MM): the RSSR's
+// rocker point's travel along z met by the crank's length, measured again along z on the design
+// applied; a direction that is none said with the row.
+TEST(OptimizeDialog, AStrokeAlongAGivenDirection) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("rssr-crank-rocker")), nullptr));
+  const PointId C = *doc.design().findPoint("rocker.C");
+  const double now =
+      findLimits(doc.kinematics(), LimitMeasure::alongInSpace(C, Vec3(0, 0, 1))).stroke;
+  OptimizeDialog dialog(&doc);
+  ASSERT_TRUE(dialog.vary("crank.O-A", 5, 9));
+  ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Stroke, "rocker.C", "1 @ w"));
+  dialog.find();
+  EXPECT_TRUE(dialog.summary().contains("target 1 (stroke): the stroke is a number >= 0 (mm)"))
+      << dialog.summary().toStdString();
+  dialog.findChild<QTableWidget*>("optTargets")->removeRow(0);
+  const double want = 0.9 * now;
+  ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Stroke, "rocker.C",
+                               QString::number(want, 'g', 17) + " @ z"));
+  QSignalSpy done(&dialog, &OptimizeDialog::finished);
+  dialog.find();
+  ASSERT_TRUE(done.wait(60000));
+  ASSERT_TRUE(dialog.result() && dialog.result()->status.ok()) << dialog.summary();
+  EXPECT_NEAR(dialog.result()->atAfter.measures.at(0).at(0), want, 1e-9);
+  auto* table = dialog.findChild<QTableWidget*>("optResult");
+  QStringList rows;
+  for (int r = 0; r < table->rowCount(); ++r) rows << table->item(r, 0)->text();
+  EXPECT_TRUE(rows.contains("stroke of rocker.C along z (mm)")) << rows.join("; ").toStdString();
+  shot(&dialog, "optimize_dialog_stroke_along_z");
+  ASSERT_TRUE(dialog.apply());
+  ASSERT_TRUE(doc.solved());
+  EXPECT_NEAR(findLimits(doc.kinematics(), LimitMeasure::alongInSpace(C, Vec3(0, 0, 1))).stroke,
+              want, 1e-9);
+}
+
 TEST(OptimizeDialog, WhatIsNotASearchIsSaid) {
   Document doc;
   ASSERT_TRUE(

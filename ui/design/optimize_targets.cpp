@@ -68,7 +68,9 @@ bool readNumber(const QTableWidgetItem* i, double& out) {
 QString valueUsage(K kind) {
   switch (kind) {
     case K::Stroke:
-      return QObject::tr("the stroke is a number >= 0 (mm)");
+      return QObject::tr(
+          "the stroke is a number >= 0 (mm), along the point's own direction (its ground "
+          "slot's, else y) or along one given after @: x, y, z or DX, DY[, DZ] (\"30 @ z\")");
     case K::Position:
       return QObject::tr(
           "the position is two numbers x, y (mm) at a crank angle (on a machine "
@@ -252,10 +254,17 @@ bool OptimizeTargets::readRow(int r, OptTarget& t, QString* why) const {
     t.point = *p;
   }
   switch (kind) {
-    case K::Stroke:
-      if (!isNumber || !(v >= 0)) return fail(valueUsage(kind));
-      t.stroke = v;
+    case K::Stroke: {
+      // MM, or MM @ DIR as the command line's stroke:P@DIR=MM reads its direction.
+      const qsizetype at = value.indexOf(QLatin1Char('@'));
+      bool ok = false;
+      t.stroke = (at < 0 ? value : value.left(at)).trimmed().toDouble(&ok);
+      if (at >= 0)
+        t.direction = parseDirection(value.mid(at + 1).remove(QLatin1Char(' ')).toStdString());
+      if (!ok || !(t.stroke >= 0) || !std::isfinite(t.stroke) || (at >= 0 && !t.direction))
+        return fail(valueUsage(kind));
       return true;
+    }
     case K::Position: {
       const QStringList xy = value.split(QLatin1Char(','));
       bool okX = false, okY = false, okZ = true;
@@ -325,7 +334,12 @@ std::vector<MeasureRow> measureRows(const Mechanism& m, const OptTarget& t, cons
   const QString p = t.point ? QString::fromStdString(m.pointLabel(t.point)) : QString();
   switch (t.kind) {
     case K::Stroke:
-      add(QObject::tr("stroke of %1 (mm)").arg(p), 0, number(t.stroke));
+      if (t.direction)
+        add(QObject::tr("stroke of %1 along %2 (mm)")
+                .arg(p, QString::fromStdString(directionName(*t.direction))),
+            0, number(t.stroke));
+      else
+        add(QObject::tr("stroke of %1 (mm)").arg(p), 0, number(t.stroke));
       break;
     case K::Position:
       for (size_t c = 0; c < 2; ++c)
