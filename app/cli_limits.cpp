@@ -14,7 +14,7 @@ namespace linkage::cli {
 namespace {
 
 const char* kHelp =
-    R"(usage: linkage-cli limits MODEL --point body.point [--direction DX,DY] [--steps N]
+    R"(usage: linkage-cli limits MODEL --point body.point [--direction DX,DY[,DZ]] [--steps N]
        linkage-cli limits MODEL --body NAME [--steps N]
        linkage-cli limits MODEL --output OUTPUT [--steps N]
 
@@ -25,13 +25,14 @@ largest value minus the smallest. Every local extreme is listed (a dwell shows a
 
   --point B.P       the point; its position along the direction, in mm
   --direction DX,DY the direction (any length; default: the ground slot the point runs in,
-                    pointing up, or right when horizontal; else +y)
+                    pointing up, or right when horizontal; else +y); DX,DY,DZ on a machine
+                    in space
   --body NAME       instead of a point: the body's angle from the drawing, in degrees (ccw)
   --output OUTPUT   instead: any output a timing window takes (docs/timing.md), such as
                     body.point:y, body.point:distance:body.point, and on a machine in space
                     body.point:z or body.point:DX,DY,DZ (world)
-On a machine in space a point's position is the world's: --direction DX,DY is (DX, DY, 0) in
-the world, +y by default.
+On a machine in space a point's position is the world's: --direction DX,DY,DZ (DX,DY is
+(DX, DY, 0)) in the world, +y by default.
   --steps N         sampling intervals that bracket the roots (default 360)
 
 Output, CSV: event,crank_deg,value; one row "min" or "max" per local extreme in crank order
@@ -43,7 +44,7 @@ Exit status: 0 success, 2 bad input (options, file, a point the driver does not 
 
 struct Options {
   std::string model, point, body, output;
-  std::optional<Vec2> direction;
+  std::optional<Vec3> direction;
   int steps = 360;
 };
 
@@ -54,7 +55,7 @@ CLI::App* addOptions(Parser& parser, Options& o) {
   addText(c, "--point", o.point);
   addText(c, "--body", o.body);
   addText(c, "--output", o.output);
-  addPair(c, "--direction", o.direction, PairRule::NonZero);
+  addDirection(c, "--direction", o.direction);
   addWhole(c, "--steps", o.steps, 4, 1'000'000);
   return &c;
 }
@@ -84,8 +85,12 @@ std::optional<LimitMeasure> measure(const Mechanism& m, const Options& o) {
     if (!ids) return std::nullopt;
     const PointId p = ids->front();
     // In space a slot's direction is in its plane, not the world's: +y there by default.
-    const Vec2 fallback = isSpatial(m) ? Vec2(0, 1) : defaultDirection(m, p);
-    return LimitMeasure::along(p, o.direction.value_or(fallback));
+    if (o.direction && o.direction->z() != 0 && !isSpatial(m)) {
+      error("--direction: a DZ is of a machine in space (planes); this one is planar: give DX,DY");
+      return std::nullopt;
+    }
+    if (o.direction) return LimitMeasure::alongInSpace(p, *o.direction);
+    return LimitMeasure::along(p, isSpatial(m) ? Vec2(0, 1) : defaultDirection(m, p));
   }
   const Body* b = m.bodyNamed(o.body);
   if (!b) {

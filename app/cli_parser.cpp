@@ -197,6 +197,10 @@ CLI::Option* addPair(CLI::App& c, const std::string& name, std::optional<Vec2>& 
   return addChecked(c, name, check, [&to](auto& v) { to = readPair(v); });
 }
 
+CLI::Option* addDirection(CLI::App& c, const std::string& name, std::optional<Vec3>& to) {
+  return addChecked(c, name, direction(), [&to](auto& v) { to = readDirection(v); });
+}
+
 CLI::Option* addFigureFile(CLI::App& c, const std::string& name, std::string& to) {
   return c.add_option_function<std::string>(name, [name, &to](const std::string& v) {
     const std::string ext = std::filesystem::path(v).extension().string();

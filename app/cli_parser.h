@@ -82,6 +82,8 @@ CLI::Option* addWhole(CLI::App& c, const std::string& name, long long& to, long 
 CLI::Option* addWholeList(CLI::App& c, const std::string& name, std::vector<long long>& to);
 CLI::Option* addPair(CLI::App& c, const std::string& name, std::optional<Vec2>& to,
                      PairRule rule = PairRule::Any);
+// A direction "DX,DY" or "DX,DY,DZ" (DZ 0 where not given), not all 0.
+CLI::Option* addDirection(CLI::App& c, const std::string& name, std::optional<Vec3>& to);
 // A figure's file name, which must end in .png, .pdf or .svg.
 CLI::Option* addFigureFile(CLI::App& c, const std::string& name, std::string& to);
 // A picture size "WxH" in pixels.

@@ -134,6 +134,31 @@ CLI::Validator numberPair(bool nonZero) {
       "X,Y");
 }
 
+std::optional<Vec3> readDirection(const std::string& text) {
+  const size_t last = text.rfind(',');
+  const size_t first = text.find(',');
+  if (first == last) {
+    const std::optional<Vec2> p = readPair(text);
+    return p ? std::optional<Vec3>(Vec3(p->x(), p->y(), 0)) : std::nullopt;
+  }
+  const std::optional<Vec2> p = readPair(text.substr(0, last));
+  const std::optional<double> z = parseNumber(text.substr(last + 1));
+  return p && z ? std::optional<Vec3>(Vec3(p->x(), p->y(), *z)) : std::nullopt;
+}
+
+CLI::Validator direction() {
+  return check(
+      [](const std::string& v) -> std::string {
+        const size_t last = v.rfind(',');
+        const bool three = last != std::string::npos && v.find(',') != last;
+        if (std::string p = pairProblem(three ? v.substr(0, last) : v); !p.empty()) return p;
+        if (three && !parseNumber(v.substr(last + 1)))
+          return quoted(v.substr(last + 1)) + " is not a number";
+        return readDirection(v)->isZero(0) ? (three ? "must not be 0,0,0" : "must not be 0,0") : "";
+      },
+      "DX,DY[,DZ]");
+}
+
 CLI::Validator increasingPair() {
   return check(
       [](const std::string& v) -> std::string {

@@ -29,6 +29,8 @@ CLI::Validator wholeIn(long long lo, long long hi);
 CLI::Validator wholeList();
 // Two numbers "X,Y"; with nonZero, not 0,0.
 CLI::Validator numberPair(bool nonZero = false);
+// A direction "DX,DY" or "DX,DY,DZ", not all 0.
+CLI::Validator direction();
 // Two numbers "LO,HI" with LO below HI.
 CLI::Validator increasingPair();
 // One of the words in `allowed`.
@@ -40,6 +42,7 @@ CLI::Validator pixelSize();
 std::optional<long long> readWhole(const std::string& text);
 std::optional<std::vector<long long>> readWholeList(const std::string& text);
 std::optional<Vec2> readPair(const std::string& text);
+std::optional<Vec3> readDirection(const std::string& text);  // DZ 0 where not given
 std::optional<std::pair<int, int>> readSize(const std::string& text);
 
 }  // namespace linkage::cli

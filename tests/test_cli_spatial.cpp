@@ -218,6 +218,23 @@ TEST_F(SpatialCli, LimitsOfAWorldCoordinate) {
   const CliResult bad = run("limits lockstitch-bevel --output vshaft.M:w");
   EXPECT_EQ(bad.exit, 2);
   EXPECT_EQ(bad.err.substr(0, 46), "linkage-cli: --output vshaft.M:w: \"w\" after \"v");
+  // --direction with a DZ: the same extremes as the output along it (any length); a DZ on a
+  // planar machine, or a direction of zeros, refused.
+  const CliResult along = run("limits lockstitch-bevel --point vshaft.M --direction 0,0,-3");
+  ASSERT_EQ(along.exit, 0) << along.err;
+  EXPECT_EQ(along.lines().back(), "stroke,,24");
+  const CliResult same = run("limits lockstitch-bevel --output vshaft.M:0,0,-1");
+  ASSERT_EQ(same.exit, 0) << same.err;
+  EXPECT_EQ(along.out, same.out);
+  const CliResult planar = run("limits four-bar-crank-rocker --point coupler.P --direction 0,1,1");
+  EXPECT_EQ(planar.exit, 2);
+  EXPECT_NE(planar.err.find("a DZ is of a machine in space"), std::string::npos) << planar.err;
+  const CliResult zeros = run("limits lockstitch-bevel --point vshaft.M --direction 0,0,0");
+  EXPECT_EQ(zeros.exit, 2);
+  EXPECT_NE(zeros.err.find("must not be 0,0,0"), std::string::npos) << zeros.err;
+  const CliResult word = run("limits lockstitch-bevel --point vshaft.M --direction 0,0,up");
+  EXPECT_EQ(word.exit, 2);
+  EXPECT_NE(word.err.find("\"up\" is not a number"), std::string::npos) << word.err;
 }
 
 }  // namespace
