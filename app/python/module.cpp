@@ -145,9 +145,9 @@ py::dict sensitivity(const Model& m, const std::string& point, double crankDeg,
   return out;
 }
 
-py::dict strokeSensitivity(const Model& m, const std::string& point) {
+py::dict strokeSensitivity(const Model& m, const std::string& point, const std::string& direction) {
   py::dict out;
-  for (const auto& [name, d] : m.strokeSensitivity(point)) out[py::str(name)] = d;
+  for (const auto& [name, d] : m.strokeSensitivity(point, direction)) out[py::str(name)] = d;
   return out;
 }
 
@@ -229,7 +229,7 @@ PYBIND11_MODULE(linkage, mod) {
       .def("forces", &forces, py::arg("crank_deg"), py::arg("rpm") = 0.0)
       .def("sensitivity", &sensitivity, py::arg("point"), py::arg("crank_deg"),
            py::arg("quantity") = "position", py::arg("rpm") = 0.0)
-      .def("stroke_sensitivity", &strokeSensitivity, py::arg("point"))
+      .def("stroke_sensitivity", &strokeSensitivity, py::arg("point"), py::arg("direction") = "")
       .def("shaking_sensitivity", &shakingSensitivity, py::arg("crank_deg"), py::arg("rpm") = 0.0)
       .def("force_sensitivity", &forceSensitivity, py::arg("joint"), py::arg("crank_deg"),
            py::arg("rpm") = 0.0)

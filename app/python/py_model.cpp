@@ -9,6 +9,7 @@
 #include "linkage/io/model_file.h"
 #include "linkage/io/model_lookup.h"
 #include "linkage/limits.h"
+#include "linkage/optimize_text.h"
 #include "linkage/sensitivity.h"
 #include "linkage/shaking_sensitivity.h"
 #include "linkage/space.h"
@@ -251,10 +252,19 @@ std::vector<std::pair<std::string, Vec3>> Model::sensitivity(const std::string& 
 }
 
 std::vector<std::pair<std::string, double>> Model::strokeSensitivity(
-    const std::string& point) const {
+    const std::string& point, const std::string& direction) const {
   const PointId p = pointNamed(point);
-  const StrokeSensitivity s = linkage::strokeSensitivity(base_, p, strokeDirection(design_, p),
-                                                         linkage::dimensions(design_));
+  Vec3 along = strokeDirection(design_, p);
+  if (!direction.empty()) {  // as `sensitivity --direction` reads it
+    const std::optional<Vec3> d = parseDirection(direction);
+    if (!d) throw BadInput("direction '" + direction + "': expected x, y, z or DX,DY[,DZ] (not 0)");
+    if (d->z() != 0 && !isSpatial(design_))
+      throw BadInput("direction '" + direction +
+                     "': out of the plane, and this machine is planar (give DX,DY)");
+    along = d->normalized();
+  }
+  const StrokeSensitivity s =
+      linkage::strokeSensitivity(base_, p, along, linkage::dimensions(design_));
   raise(s.status);
   std::vector<std::pair<std::string, double>> out;
   for (size_t d = 0; d < s.dims.size(); ++d) out.emplace_back(s.dims[d].name, s.derivative[d]);

@@ -78,7 +78,9 @@ class Model {
   std::vector<std::pair<std::string, Vec3>> sensitivity(const std::string& point, double crankDeg,
                                                         int quantity, double rpm) const;
   // d(stroke)/d(dimension) (linkage/stroke_sensitivity.h): along the point's default direction.
-  std::vector<std::pair<std::string, double>> strokeSensitivity(const std::string& point) const;
+  // Along the point's default direction, or `direction` (x, y, z or DX,DY[,DZ]).
+  std::vector<std::pair<std::string, double>> strokeSensitivity(
+      const std::string& point, const std::string& direction = "") const;
   // d(shaking force)/d(dimension) at the crank angle and rpm (linkage/shaking_sensitivity.h):
   // (dfx, dfy), on a machine in space the world's (dfx, dfy, dfz).
   std::vector<std::pair<std::string, std::vector<double>>> shakingSensitivity(double crankDeg,

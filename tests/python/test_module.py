@@ -192,6 +192,14 @@ def test_stroke_shaking_and_force_sensitivities_are_the_command_lines():
     want = {r[0]: float(r[1]) for r in list(csv.reader(io.StringIO(out)))[1:]}
     got = linkage.load("rssr-crank-rocker").stroke_sensitivity("rocker.C")
     assert {k: v + 0.0 for k, v in got.items()} == want and want["ball-rod:crank.A.length"] != 0
+    # Along a direction given, as --direction gives it; one out of a planar machine's plane refused.
+    out = cli("sensitivity", "rssr-crank-rocker", "--point", "rocker.C", "--stroke",
+              "--direction", "1,0,2").stdout
+    want = {r[0]: float(r[1]) for r in list(csv.reader(io.StringIO(out)))[1:]}
+    got = linkage.load("rssr-crank-rocker").stroke_sensitivity("rocker.C", direction="1,0,2")
+    assert {k: v + 0.0 for k, v in got.items()} == want and want["crank.O-A"] != 0
+    with pytest.raises(ValueError, match="out of the plane"):
+        m.stroke_sensitivity("feedbar.D", direction="z")
     out = cli("sensitivity", "drop-feed", "--shaking", "--steps", "6").stdout
     assert zero_signed(m.shaking_sensitivity(120)) == rows_at(out, 120, 3)  # (dfx, dfy, dm)
     space = linkage.load("overedge-machine")  # in the world: (dfx, dfy, dfz)
