@@ -320,6 +320,10 @@ QStringList OptimizeTargets::probeLines() const {
       const QPoint c = kinds->mapToGlobal(kinds->rect().center());
       out << QStringLiteral("at optimize target %1 kind: %2 %3").arg(r + 1).arg(c.x()).arg(c.y());
     }
+    if (what && !what->visibleRegion().isEmpty()) {
+      const QPoint c = what->mapToGlobal(what->rect().center());
+      out << QStringLiteral("at optimize target %1 of: %2 %3").arg(r + 1).arg(c.x()).arg(c.y());
+    }
   }
   return out;
 }
