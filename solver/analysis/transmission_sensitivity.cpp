@@ -50,7 +50,7 @@ Vec2 slotLineChange(const Mechanism& m, const TransmissionJoint& j, const Dimens
   double dz = 0;
   for (const Dimension::SlotMove& s : d.slots)
     if (s.slot == j.slot) dz += s.z1 - s.z0;
-  const Plane& f = planeClasses(m).frames[transmissionClass(m, j)];
+  const Plane f = planeClasses(m).frames[transmissionClass(m, j)];  // a copy: the classes go
   const Vec3 w((c.p1 - c.p0).x(), (c.p1 - c.p0).y(), dz);
   return Vec2(w.dot(f.xAxis), w.dot(f.yAxis));
 }
