@@ -116,6 +116,72 @@ TEST(SpatialForceSensitivity, TheShakingForceInTheWorldMovesAsChangedDesignsDo) 
   EXPECT_GT(largest, 0.01);
 }
 
+// The world's shaking moment's derivative (linkage/shaking_sensitivity.h) against the changed
+// designs' (every dimension, central differences, 1e-6 of the moment's size) at several angles.
+void expectMomentMovesAsChangedDesignsDo(const Mechanism& m) {
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  k.setAccelerations(true);
+  const std::vector<Dimension> dims = dimensions(m);
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dims, Sensitivity::Space::World).ok());
+  const double h = 1e-5;
+  double largest = 0;
+  for (size_t d = 0; d < dims.size(); ++d) {
+    Kinematics kc[2];
+    for (int side = 0; side < 2; ++side) {
+      Mechanism c = m;
+      std::vector<double> delta(dims.size(), 0.0);
+      delta[d] = side ? h : -h;
+      ASSERT_TRUE(changeDimensions(c, dims, delta).ok()) << dims[d].name;
+      ASSERT_TRUE(kc[side].load(c).ok()) << dims[d].name;
+      kc[side].setAccelerations(true);
+    }
+    for (int deg = 15; deg < 360; deg += 45) {
+      ASSERT_TRUE(k.moveTo(deg).ok() && s.at(k).ok());
+      Vec3 F, M0, M[2];
+      shaking(k, F, M0);
+      for (int side = 0; side < 2; ++side) {
+        ASSERT_TRUE(kc[side].moveTo(deg).ok());
+        shaking(kc[side], F, M[side]);
+      }
+      const Vec3 want = (M[1] - M[0]) / (2 * h);
+      const Vec3 got = shakingMomentSensitivity3(k, s, static_cast<int>(d));
+      largest = std::max(largest, want.norm());
+      EXPECT_LT((got - want).norm(), 1e-6 * (1 + M0.norm() + want.norm()))
+          << dims[d].name << " at " << deg << ": " << got.transpose() << " against "
+          << want.transpose();
+    }
+  }
+  EXPECT_GT(largest, 1e-4);
+}
+
+TEST(SpatialForceSensitivity, TheShakingMomentInTheWorldMovesAsChangedDesignsDo) {
+  expectMomentMovesAsChangedDesignsDo(loadedRssr());
+}
+
+// On a planar machine the world's moment is the drawing's about z and the weights' tilt where
+// gravity has a z: its derivative too.
+TEST(SpatialForceSensitivity, APlanarShakingMomentInTheWorldMovesAsChangedDesignsDo) {
+  Mechanism m = test::example("four-bar-crank-rocker");
+  for (const Point& p : m.points)
+    if (Body* b = m.body(p.body); !b->ground && !b->mass)
+      b->mass = Mass{0.2, p.pos + Vec2(3, -2), 50, ""};
+  m.gravity = Vec2(0, -9.81);
+  m.gravityZ = -4.0;
+  expectMomentMovesAsChangedDesignsDo(m);
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  k.setAccelerations(true);
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dimensions(m), Sensitivity::Space::World).ok());
+  ASSERT_TRUE(k.moveTo(70).ok() && s.at(k).ok());
+  for (size_t d = 0; d < s.dims().size(); ++d)
+    EXPECT_NEAR(shakingMomentSensitivity3(k, s, static_cast<int>(d)).z(),
+                shakingMomentSensitivity(k, s, static_cast<int>(d)), 1e-12)
+        << s.dims()[d].name;
+}
+
 // A search over a depth, the rod's length and a plane's origin for the target `text`, and the
 // design's values of those (where the gradient is checked).
 OptimizeSpec spaceSpec(const Mechanism& m, const char* text, std::vector<double>& x) {
