@@ -75,7 +75,8 @@ difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.ro
                        crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit,dm_Nm_per_unit (the
                        shaking moment's about the drawing's origin; a dimension moves points,
                        not masses: each centre of mass stays where it is drawn in its body);
-                       on a machine in space the world's dfx, dfy, dfz (no moment yet)
+                       on a machine in space the world's dfx, dfy, dfz and its moment's (about
+                       the world's origin) dmx, dmy, dmz_Nm_per_unit
   --force JOINT        instead, the derivatives of a joint's reaction (JOINT as `dynamics` names
                        its columns, e.g. pin:crank.A: on the body of its first point) at the
                        file's speed at each crank angle: CSV crank_deg,dimension and a column a
@@ -308,13 +309,16 @@ int transmission(Kinematics& k, Sensitivity& sens, const Options& o) {
 // speed, a row a dimension a step.
 int shakingForce(Kinematics& k, Sensitivity& sens, const Options& o) {
   k.setAccelerations(true);
-  if (isSpatial(k.mechanism()))  // in the world, with its z
-    return perStep(k, sens, o, "dfx_N_per_unit,dfy_N_per_unit,dfz_N_per_unit",
+  if (isSpatial(k.mechanism()))  // in the world, with its z, and the world's moment
+    return perStep(k, sens, o,
+                   "dfx_N_per_unit,dfy_N_per_unit,dfz_N_per_unit,dmx_Nm_per_unit,dmy_Nm_per_unit,"
+                   "dmz_Nm_per_unit",
                    [](Kinematics& kk, Sensitivity& ss) {
                      std::vector<std::vector<double>> out;
                      for (size_t d = 0; d < ss.dims().size(); ++d) {
                        const Vec3 f = shakingForceSensitivity3(kk, ss, static_cast<int>(d));
-                       out.push_back({f.x(), f.y(), f.z()});
+                       const Vec3 m = shakingMomentSensitivity3(kk, ss, static_cast<int>(d));
+                       out.push_back({f.x(), f.y(), f.z(), m.x(), m.y(), m.z()});
                      }
                      return out;
                    });

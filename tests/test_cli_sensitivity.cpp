@@ -270,11 +270,31 @@ TEST_F(SensitivityCli, TheShakingForcesDerivativesWhenAsked) {
     }
   }
   EXPECT_GT(largest, 0.1);  // the drop feed's dimensions do move its shaking force
-  // A machine in space: in the world, with its z (tests/test_spatial_force_sensitivity.cpp).
-  const test::CliResult space = run("sensitivity overedge-machine --shaking --steps 2");
+  // A machine in space: in the world, with its z, and the world's moment: the library's
+  // (tests/test_spatial_force_sensitivity.cpp holds it to the changed designs).
+  const test::CliResult space = run("sensitivity rssr-crank-rocker --shaking --steps 2");
   ASSERT_EQ(space.exit, 0) << space.err;
-  EXPECT_EQ(space.lines().at(0),
-            "crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit,dfz_N_per_unit");
+  const std::vector<std::string> sl = space.lines();
+  EXPECT_EQ(sl.at(0),
+            "crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit,dfz_N_per_unit,dmx_Nm_per_unit,"
+            "dmy_Nm_per_unit,dmz_Nm_per_unit");
+  Kinematics ks;
+  ASSERT_TRUE(ks.load(test::example("rssr-crank-rocker")).ok());
+  ks.setAccelerations(true);
+  Sensitivity ss;
+  ASSERT_TRUE(ss.prepare(ks, dimensions(ks.mechanism()), Sensitivity::Space::World).ok());
+  const size_t ns = ss.dims().size();
+  ASSERT_EQ(sl.size(), 1 + 2 * ns) << space.out;
+  for (int step = 0; step < 2; ++step) {
+    ASSERT_TRUE(ks.moveTo(*parseNumber(split(sl[1 + step * ns], ',')[0])).ok() && ss.at(ks).ok());
+    for (size_t d = 0; d < ns; ++d) {
+      const std::vector<std::string> row = split(sl[1 + step * ns + d], ',');
+      ASSERT_EQ(row.size(), 8u);
+      const Vec3 m = shakingMomentSensitivity3(ks, ss, static_cast<int>(d));
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(*parseNumber(row[5 + c]), m[c], 1e-9 * (1 + m.norm())) << row[1];
+    }
+  }
 }
 
 // A pin's reaction's derivatives (tests/test_force_sensitivity.cpp holds the library to a

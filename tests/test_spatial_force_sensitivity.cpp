@@ -116,6 +116,72 @@ TEST(SpatialForceSensitivity, TheShakingForceInTheWorldMovesAsChangedDesignsDo) 
   EXPECT_GT(largest, 0.01);
 }
 
+// The world's shaking moment's derivative (linkage/shaking_sensitivity.h) against the changed
+// designs' (every dimension, central differences, 1e-6 of the moment's size) at several angles.
+void expectMomentMovesAsChangedDesignsDo(const Mechanism& m) {
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  k.setAccelerations(true);
+  const std::vector<Dimension> dims = dimensions(m);
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dims, Sensitivity::Space::World).ok());
+  const double h = 1e-5;
+  double largest = 0;
+  for (size_t d = 0; d < dims.size(); ++d) {
+    Kinematics kc[2];
+    for (int side = 0; side < 2; ++side) {
+      Mechanism c = m;
+      std::vector<double> delta(dims.size(), 0.0);
+      delta[d] = side ? h : -h;
+      ASSERT_TRUE(changeDimensions(c, dims, delta).ok()) << dims[d].name;
+      ASSERT_TRUE(kc[side].load(c).ok()) << dims[d].name;
+      kc[side].setAccelerations(true);
+    }
+    for (int deg = 15; deg < 360; deg += 45) {
+      ASSERT_TRUE(k.moveTo(deg).ok() && s.at(k).ok());
+      Vec3 F, M0, M[2];
+      shaking(k, F, M0);
+      for (int side = 0; side < 2; ++side) {
+        ASSERT_TRUE(kc[side].moveTo(deg).ok());
+        shaking(kc[side], F, M[side]);
+      }
+      const Vec3 want = (M[1] - M[0]) / (2 * h);
+      const Vec3 got = shakingMomentSensitivity3(k, s, static_cast<int>(d));
+      largest = std::max(largest, want.norm());
+      EXPECT_LT((got - want).norm(), 1e-6 * (1 + M0.norm() + want.norm()))
+          << dims[d].name << " at " << deg << ": " << got.transpose() << " against "
+          << want.transpose();
+    }
+  }
+  EXPECT_GT(largest, 1e-4);
+}
+
+TEST(SpatialForceSensitivity, TheShakingMomentInTheWorldMovesAsChangedDesignsDo) {
+  expectMomentMovesAsChangedDesignsDo(loadedRssr());
+}
+
+// On a planar machine the world's moment is the drawing's about z and the weights' tilt where
+// gravity has a z: its derivative too.
+TEST(SpatialForceSensitivity, APlanarShakingMomentInTheWorldMovesAsChangedDesignsDo) {
+  Mechanism m = test::example("four-bar-crank-rocker");
+  for (const Point& p : m.points)
+    if (Body* b = m.body(p.body); !b->ground && !b->mass)
+      b->mass = Mass{0.2, p.pos + Vec2(3, -2), 50, ""};
+  m.gravity = Vec2(0, -9.81);
+  m.gravityZ = -4.0;
+  expectMomentMovesAsChangedDesignsDo(m);
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  k.setAccelerations(true);
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dimensions(m), Sensitivity::Space::World).ok());
+  ASSERT_TRUE(k.moveTo(70).ok() && s.at(k).ok());
+  for (size_t d = 0; d < s.dims().size(); ++d)
+    EXPECT_NEAR(shakingMomentSensitivity3(k, s, static_cast<int>(d)).z(),
+                shakingMomentSensitivity(k, s, static_cast<int>(d)), 1e-12)
+        << s.dims()[d].name;
+}
+
 // A search over a depth, the rod's length and a plane's origin for the target `text`, and the
 // design's values of those (where the gradient is checked).
 OptimizeSpec spaceSpec(const Mechanism& m, const char* text, std::vector<double>& x) {
@@ -195,6 +261,38 @@ TEST(SpatialForceSensitivity, TheShakingForceAsATarget) {
     shaking(after, F, M);
     EXPECT_NEAR(F.norm(), peak, 1e-9 * peak);
   }
+}
+
+// The shaking moment's peak in the world (|M|, the world's 3-vector about its origin) as an
+// optimize target: the gradient over the machine's dimensions in space against central
+// differences, and a limit met by the rod's length, the written design feeling the peak reported.
+TEST(SpatialForceSensitivity, TheShakingMomentAsATarget) {
+  Kinematics base;
+  ASSERT_TRUE(base.load(loadedRssr()).ok());
+  std::vector<double> x;
+  OptimizeSpec spec = spaceSpec(base.mechanism(), "shaking:moment<=0", x);
+  ASSERT_EQ(x.size(), 3u);
+  const Evaluation e = evaluate(base, spec, x);
+  ASSERT_TRUE(e.feasible) << e.why;
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double fd = test::centralDifference(base, spec, x, i, 1e-6);
+    EXPECT_GT(std::abs(fd), 1e-6) << spec.variables[i].name;
+    EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
+  }
+  spec.targets[0].limitN = 0.97 * e.measures[0][0];
+  spec.variables = {{"ball-rod:crank.A.length", 70, 90}};
+  spec.starts = 3;
+  const OptimizeResult r = optimize(base, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  const double peak = r.atAfter.measures[0][0];
+  EXPECT_LE(peak, spec.targets[0].limitN * (1 + 1e-9));
+  Kinematics after;
+  ASSERT_TRUE(after.load(r.design).ok());
+  after.setAccelerations(true);
+  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  Vec3 F, M;
+  shaking(after, F, M);
+  EXPECT_NEAR(M.norm(), peak, 1e-9 * peak);
 }
 
 // Counterweights on the RSSR's crank and rocker (in two planes, gravity across both) varied by

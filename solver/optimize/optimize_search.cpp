@@ -166,8 +166,8 @@ Status checkWatched(const Mechanism& m, const OptTarget& t) {
 
 // What a target may be on a machine in space (a stroke along any direction, a position and a
 // path with or without z, a timing window's end, a joint's in-plane reaction or a ball rod's
-// tension, the shaking force and a clearance in the world, a transmission angle in its plane;
-// not the shaking moment) and on a planar one (a position or a path without z, a stroke in the
+// tension, the shaking force and moment and a clearance in the world, a transmission angle in its
+// plane) and on a planar one (a position or a path without z, a stroke in the
 // plane).
 Status checkSpace(bool space, const OptTarget& t) {
   using K = OptTarget::Kind;
@@ -187,10 +187,6 @@ Status checkSpace(bool space, const OptTarget& t) {
           "planar: give DX,DY");
     return Status::success();
   }
-  if (t.kind == K::Shaking && t.moment)
-    return Status::badModel(
-        "the shaking moment on a machine in space (planes) is not optimised yet (its derivative "
-        "in space is not computed): its shaking force is");
   if (t.kind == K::Position && !(t.at.allFinite() && std::isfinite(t.z.value_or(0))))
     return Status::badModel("a position target's coordinates must be numbers");
   return Status::success();
@@ -224,6 +220,10 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
   }
   for (const OptTarget& t : spec.targets) {
     if (Status s = checkSpace(space, t); !s.ok()) return s;
+    if (space && t.kind == OptTarget::Kind::Shaking && t.moment && !vars.counterweights.empty())
+      return Status::badModel(
+          "counterweights against the shaking moment on a machine in space (planes) are not "
+          "optimised yet: the moment's target is, over dimensions");
     if (Status s = checkWatched(base.mechanism(), t); !s.ok()) return s;
     const bool named = t.kind == OptTarget::Kind::Shaking || t.kind == OptTarget::Kind::Force ||
                        t.kind == OptTarget::Kind::Clearance || t.kind == OptTarget::Kind::Window;

@@ -59,7 +59,8 @@ struct Shaker {
                                                                              : r.force;
   }
   // What the frame feels (or the joint bears), in the world: a planar machine's z is 0. The
-  // shaking moment (OptTarget::moment) as (0, 0, M), N m.
+  // shaking moment (OptTarget::moment) as (0, 0, M), N m; a machine in space's as the world's
+  // 3-vector (no counterweights: shakingResiduals refuses them).
   Vec3 force(const Kinematics& k) const {
     if (joint) {  // the design's reaction and the counterweights' shares (the forces add)
       Vec2 F = part(solver.compute(k).joints[t.index]);
@@ -81,6 +82,7 @@ struct Shaker {
       F += inertia(k, c, s) + vars.kg(x, c) * g;
       if (t.moment) moment += counterweightMoment(k, c, s);
     }
+    if (t.moment && isSpatial(k.mechanism())) return moment3;
     return t.moment ? Vec3(0, 0, moment) : F;
   }
   // Counterweight c's part of the shaking moment (N m) with static moment s: a point mass m at
@@ -169,9 +171,10 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
   for (size_t v = 0; v < out.size(); ++v) {
     Vec3 dF = Vec3::Zero();
     if (vars.dim[v] >= 0 && sens) {
-      dF = space      ? shakingForceSensitivity3(k, *sens, vars.dim[v])
-           : t.moment ? Vec3(0, 0, shakingMomentSensitivity(k, *sens, vars.dim[v]))
-                      : lift(shakingForceSensitivity(k, *sens, vars.dim[v]));
+      dF = space && t.moment ? shakingMomentSensitivity3(k, *sens, vars.dim[v])
+           : space           ? shakingForceSensitivity3(k, *sens, vars.dim[v])
+           : t.moment        ? Vec3(0, 0, shakingMomentSensitivity(k, *sens, vars.dim[v]))
+                             : lift(shakingForceSensitivity(k, *sens, vars.dim[v]));
       for (size_t c = 0; c < vars.counterweights.size(); ++c)
         dF += counterweightChange(k, *sens, c, vars.dim[v]);
     } else if (vars.cw[v] >= 0) {
@@ -246,6 +249,11 @@ Status shakingResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t ta
   const OptTarget& t = spec.targets[target];
   const Mechanism& m = k.mechanism();
   const Vec2 gPlane = m.gravity.value_or(Vec2::Zero());
+  if (t.kind == OptTarget::Kind::Shaking && t.moment && isSpatial(m) &&
+      !vars.counterweights.empty())
+    return Status::badModel(
+        "counterweights against the shaking moment on a machine in space (planes) are not "
+        "optimised yet: the moment's target is, over dimensions");
   Shaker sh{k, t, vars, x, isSpatial(m) ? m.gravityWorld() : Vec3(gPlane.x(), gPlane.y(), 0)};
   for (const Counterweight& c : vars.counterweights)
     sh.placings.push_back(placeCounterweight(m, c.body));

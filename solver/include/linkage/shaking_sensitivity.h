@@ -26,4 +26,11 @@ Vec3 shakingForceSensitivity3(const Kinematics& k, const Sensitivity& s, int dim
 // dr_b the frame's move. A planar machine's (NaN at a singular position).
 double shakingMomentSensitivity(const Kinematics& k, const Sensitivity& s, int dim);
 
+// The same in the world (linkage/dynamics.h shaking(k, Vec3&, Vec3&): about the world's origin,
+// N m), any machine (in space, s prepared with Space::World): each body's force and moment about
+// its frame origin at its depth, and its weight's part along its plane's normal at its centre of
+// mass, as the origin, the depth, the centre and the forces move. On a planar machine (0, 0,
+// shakingMomentSensitivity) and the weights' tilt where gravity has a z. NaN where singular.
+Vec3 shakingMomentSensitivity3(const Kinematics& k, const Sensitivity& s, int dim);
+
 }  // namespace linkage
