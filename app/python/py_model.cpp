@@ -284,8 +284,9 @@ std::vector<std::pair<std::string, std::vector<double>>> Model::shakingSensitivi
   for (size_t d = 0; d < s.dims().size(); ++d) {
     const int i = static_cast<int>(d);
     if (space) {
-      const Vec3 f = shakingForceSensitivity3(k, s, i);
-      out.emplace_back(s.dims()[d].name, std::vector<double>{f.x(), f.y(), f.z()});
+      const Vec3 f = shakingForceSensitivity3(k, s, i), m = shakingMomentSensitivity3(k, s, i);
+      out.emplace_back(s.dims()[d].name,
+                       std::vector<double>{f.x(), f.y(), f.z(), m.x(), m.y(), m.z()});
     } else {
       const Vec2 f = shakingForceSensitivity(k, s, i);
       out.emplace_back(s.dims()[d].name,

@@ -202,9 +202,9 @@ def test_stroke_shaking_and_force_sensitivities_are_the_command_lines():
         m.stroke_sensitivity("feedbar.D", direction="z")
     out = cli("sensitivity", "drop-feed", "--shaking", "--steps", "6").stdout
     assert zero_signed(m.shaking_sensitivity(120)) == rows_at(out, 120, 3)  # (dfx, dfy, dm)
-    space = linkage.load("overedge-machine")  # in the world: (dfx, dfy, dfz)
+    space = linkage.load("overedge-machine")  # in the world: (dfx, dfy, dfz, dmx, dmy, dmz)
     out = cli("sensitivity", "overedge-machine", "--shaking", "--steps", "6").stdout
-    assert zero_signed(space.shaking_sensitivity(60)) == rows_at(out, 60, 3)
+    assert zero_signed(space.shaking_sensitivity(60)) == rows_at(out, 60, 6)
     out = cli("sensitivity", "drop-feed", "--force", "pin:ground.L", "--steps", "6").stdout
     assert zero_signed(m.force_sensitivity("pin:ground.L", 240)) == rows_at(out, 240, 2)
     with pytest.raises(ValueError, match="no joint 'pin:x.Y'"):
