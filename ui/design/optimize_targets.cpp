@@ -39,9 +39,10 @@ QStringList choices(const Mechanism& m, K kind) {
   if (kind == K::Transmission) {
     for (const TransmissionJoint& j : transmissionJoints(m)) out << QString::fromStdString(j.label);
   } else if (kind == K::Shaking) {
-    // The moment about the drawing's origin is a planar machine's; fz a machine in space's.
-    out << QStringLiteral("fx") << QStringLiteral("fy") << QStringLiteral("force")
-        << (isSpatial(m) ? QStringLiteral("fz") : QStringLiteral("moment"));
+    // fz a machine in space's (its moment |M| then about the world's origin).
+    out << QStringLiteral("fx") << QStringLiteral("fy") << QStringLiteral("force");
+    if (isSpatial(m)) out << QStringLiteral("fz");
+    out << QStringLiteral("moment");
   } else if (kind == K::Clearance) {
     for (const ClearanceWatch& w : m.timing.clearances) out << clearanceName(m, w);
   } else if (kind == K::Window) {
@@ -120,7 +121,7 @@ bool readOther(const Mechanism& m, K kind, int of, bool isNumber, double v, OptT
                   : of == 1                 ? BalanceMeasure::Fy
                   : of == 3 && isSpatial(m) ? BalanceMeasure::Fz
                                             : BalanceMeasure::Force;
-      t.moment = of == 3 && !isSpatial(m);
+      t.moment = of == (isSpatial(m) ? 4 : 3);
       t.limitN = v;
       return true;
     case K::Clearance:
