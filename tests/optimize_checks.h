@@ -2,7 +2,11 @@
 // exact gradient of linkage/optimize.h is checked against).
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -25,6 +29,27 @@ inline double dimensionValue(const Mechanism& m, const std::string& name) {
   for (const Dimension& d : dimensions(m))
     if (d.name == name) return d.value;
   return NAN;
+}
+
+// The spec's gradient at m as drawn (moved by `offset` on every variable) against central
+// differences of the objective, every variable.
+inline void checkGradient(const Mechanism& m, const OptimizeSpec& spec, double offset) {
+  Kinematics base;
+  ASSERT_TRUE(base.load(m).ok());
+  std::vector<double> x;
+  for (const OptVariable& v : spec.variables) x.push_back(dimensionValue(m, v.name) + offset);
+  const Evaluation e = evaluate(base, spec, x);
+  ASSERT_TRUE(e.feasible) << e.why;
+  ASSERT_GT(e.objective, 1e-3);
+  double largest = 0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double fd = centralDifference(base, spec, x, i, 1e-5);
+    EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
+    largest = std::max(largest, std::abs(fd));
+    std::printf("  %-26s gradient %.10g  central difference %.10g\n",
+                spec.variables[i].name.c_str(), e.gradient[i], fd);
+  }
+  EXPECT_GT(largest, 1e-2);
 }
 
 }  // namespace linkage::test

@@ -28,27 +28,6 @@ OptTarget target(const Mechanism& m, const std::string& text) {
   return t;
 }
 
-// The spec's gradient at the design as drawn (moved by `offset` on every variable) against
-// central differences of the objective, every variable.
-void checkGradient(const Mechanism& m, const OptimizeSpec& spec, double offset) {
-  Kinematics base;
-  ASSERT_TRUE(base.load(m).ok());
-  std::vector<double> x;
-  for (const OptVariable& v : spec.variables) x.push_back(test::dimensionValue(m, v.name) + offset);
-  const Evaluation e = evaluate(base, spec, x);
-  ASSERT_TRUE(e.feasible) << e.why;
-  ASSERT_GT(e.objective, 1e-3);
-  double largest = 0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    const double fd = test::centralDifference(base, spec, x, i, 1e-5);
-    EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
-    largest = std::max(largest, std::abs(fd));
-    std::printf("  %-26s gradient %.10g  central difference %.10g\n",
-                spec.variables[i].name.c_str(), e.gradient[i], fd);
-  }
-  EXPECT_GT(largest, 1e-2);
-}
-
 // The overedge machine's needle: its stroke (along the world's y) and its world x, y, z at a
 // crank angle, and the looper's x, y there; over link lengths, a depth, a ball rod's length, a
 // ground point's z and a plane's origin.
@@ -62,7 +41,7 @@ TEST(OptimizeSpace, TheOveredgeMachinesGradientMatchesCentralDifferences) {
                   target(m, "position:needlearm.N@40=10,20,30*0.5"),
                   target(m, "position:needlerock.B@200=0,0")};
   ASSERT_TRUE(spec.targets[1].z.has_value());
-  checkGradient(m, spec, 0.05);
+  test::checkGradient(m, spec, 0.05);
 }
 
 TEST(OptimizeSpace, TheRssrsGradientMatchesCentralDifferences) {
@@ -72,7 +51,7 @@ TEST(OptimizeSpace, TheRssrsGradientMatchesCentralDifferences) {
                         "ball-rod:crank.A.length", "planes.rocker.origin.z"})
     spec.variables.push_back({v, -1e3, 1e3});
   spec.targets = {target(m, "stroke:rocker.C=1"), target(m, "position:rocker.C@100=1,-20,70")};
-  checkGradient(m, spec, 0.1);
+  test::checkGradient(m, spec, 0.1);
 }
 
 // The overedge machine's transmission angles (two dyads in two planes, the needle's rod on its
@@ -90,7 +69,7 @@ TEST(OptimizeSpace, TheOveredgeMachinesTransmissionGradientMatchesCentralDiffere
     spec.targets = {target(m, "transmission:mu:lowerlink.M>=62"),
                     target(m, "transmission:mu:needlelink.G>=88"),
                     target(m, "transmission:mu:feedrod.G6>=75*0.5")};
-    checkGradient(m, spec, 0.05);
+    test::checkGradient(m, spec, 0.05);
   }
 }
 
@@ -104,7 +83,7 @@ TEST(OptimizeSpace, AGroundSlotsAngleWithItsOffsetHeld) {
     spec.variables.push_back({v, -1e3, 1e3});
   spec.targets = {target(m, "transmission:mu:needlelink.G>=88"),
                   target(m, "position:needlearm.N@40=10,20,30*0.5")};
-  checkGradient(m, spec, 0.05);
+  test::checkGradient(m, spec, 0.05);
 }
 
 // The lower gripper's transmission angle lifted from 57 to at least 62 degrees by its two

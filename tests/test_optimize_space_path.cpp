@@ -23,13 +23,6 @@
 namespace linkage {
 namespace {
 
-double valueOf(const Mechanism& m, const std::string& name) {
-  for (const Dimension& d : dimensions(m))
-    if (d.name == name) return d.value;
-  ADD_FAILURE() << "no dimension " << name;
-  return 0;
-}
-
 OptTarget target(const Mechanism& m, const std::string& text) {
   OptTarget t;
   std::string why;
@@ -72,27 +65,6 @@ std::vector<double> turn(int n) {
   return degs;
 }
 
-// The spec's gradient at the design as drawn (moved by `offset` on every variable) against
-// central differences of the objective, every variable.
-void checkGradient(const Mechanism& m, const OptimizeSpec& spec, double offset) {
-  Kinematics base;
-  ASSERT_TRUE(base.load(m).ok());
-  std::vector<double> x;
-  for (const OptVariable& v : spec.variables) x.push_back(valueOf(m, v.name) + offset);
-  const Evaluation e = evaluate(base, spec, x);
-  ASSERT_TRUE(e.feasible) << e.why;
-  ASSERT_GT(e.objective, 1e-3);
-  double largest = 0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    const double fd = test::centralDifference(base, spec, x, i, 1e-5);
-    EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (1 + std::abs(fd))) << spec.variables[i].name;
-    largest = std::max(largest, std::abs(fd));
-    std::printf("  %-26s gradient %.10g  central difference %.10g\n",
-                spec.variables[i].name.c_str(), e.gradient[i], fd);
-  }
-  EXPECT_GT(largest, 1e-2);
-}
-
 // The RSSR's rocker point: a path in the world (x,y,z) and one in x, y only, each a little off
 // the curve, and strokes along z and along a direction with every component; over link lengths,
 // depths, the rod, a ground z and a plane's origin.
@@ -110,7 +82,7 @@ TEST(OptimizeSpacePath, TheRssrsPathAndStrokeGradientsMatchCentralDifferences) {
   ASSERT_EQ(spec.targets[0].pathZ.size(), 6u);
   ASSERT_TRUE(spec.targets[1].pathZ.empty());
   ASSERT_EQ(spec.targets[2].direction, Vec3(0, 0, 1));
-  checkGradient(m, spec, 0.1);
+  test::checkGradient(m, spec, 0.1);
 }
 
 // The overedge machine's needle (a path in the world) and its looper (in x, y), the needle's
@@ -127,7 +99,7 @@ TEST(OptimizeSpacePath, TheOveredgeMachinesPathGradientMatchesCentralDifferences
       target(m, "path:needlearm.N=" + pathFile("needle3.csv", needle, Vec3(0.2, 0.3, -0.3), true)),
       target(m, "path:needlerock.B=" + pathFile("rock2.csv", rock, Vec3(0.2, -0.2, 0), false)),
       target(m, "stroke:needlearm.N@x=1")};
-  checkGradient(m, spec, 0.05);
+  test::checkGradient(m, spec, 0.05);
 }
 
 // The RSSR's rocker point sampled at 8 crank angles at known dimensions (its arm and the rocker's
@@ -139,9 +111,9 @@ TEST(OptimizeSpacePath, ThePathsPointsInTheWorldAreMetFromOtherDimensions) {
   const std::vector<double> degs = turn(8);
   const std::vector<Vec3> points = worldPath(truth, "rocker.C", degs);
   const std::vector<std::pair<std::string, double>> known = {
-      {"rocker.H-C", valueOf(truth, "rocker.H-C")},
-      {"ground.H.y", valueOf(truth, "ground.H.y")},
-      {"ground.H.z", valueOf(truth, "ground.H.z")}};
+      {"rocker.H-C", test::dimensionValue(truth, "rocker.H-C")},
+      {"ground.H.y", test::dimensionValue(truth, "ground.H.y")},
+      {"ground.H.z", test::dimensionValue(truth, "ground.H.z")}};
   Mechanism start = truth;
   const Status moved = setDimensions(start, {{"rocker.H-C", known[0].second + 2},
                                              {"ground.H.y", known[1].second - 1.5},
@@ -179,7 +151,7 @@ TEST(OptimizeSpacePath, ATwoColumnPathInSpaceIsTheWorldsXAndY) {
   spec.variables = {{"rocker.H-C", 20, 40}};
   spec.targets = {target(m, "path:rocker.C=" + pathFile("xy.csv", on, Vec3(0, 0, 5), false)),
                   target(m, "path:rocker.C=" + pathFile("xyz.csv", on, Vec3(0, 0, 5), true))};
-  const Evaluation e = evaluate(base, spec, {valueOf(m, "rocker.H-C")});
+  const Evaluation e = evaluate(base, spec, {test::dimensionValue(m, "rocker.H-C")});
   ASSERT_TRUE(e.feasible) << e.why;
   EXPECT_LT(e.measures[0][1], 1e-9);
   EXPECT_GT(e.measures[1][0], 1);
@@ -213,7 +185,7 @@ TEST(OptimizeSpacePath, AStrokeAlongZIsMetAndMeasuredOnTheWrittenDesign) {
   const LoadResult written = parseMechanism(serializeMechanism(r.design));
   ASSERT_TRUE(written.mechanism) << written.error;
   EXPECT_NEAR(strokeZ(*written.mechanism), wanted, 1e-9);
-  EXPECT_NEAR(valueOf(*written.mechanism, "crank.O-A"), 8.5, 1e-6);
+  EXPECT_NEAR(test::dimensionValue(*written.mechanism, "crank.O-A"), 8.5, 1e-6);
 }
 
 // A planar machine's stroke along a direction in its plane: the four-bar's coupler point along

@@ -56,11 +56,10 @@ Vec3 shakingMomentSensitivity3(const Kinematics& k, const Sensitivity& s, int di
     Vec3 dM(0, 0, shakingMomentSensitivity(k, s, dim));
     const double gz = m.gravityZ.value_or(0);
     for (const Body& b : m.bodies)
-      if (!b.ground && b.mass && gz != 0)
-        dM += Vec3(s.point(k, b.id, b.mass->com, Vec2::Zero(), dim).x(),
-                   s.point(k, b.id, b.mass->com, Vec2::Zero(), dim).y(), 0)
-                  .cross(Vec3(0, 0, b.mass->kg * gz)) /
-              1000;
+      if (!b.ground && b.mass && gz != 0) {
+        const Vec2 dc = s.point(k, b.id, b.mass->com, Vec2::Zero(), dim);
+        dM += Vec3(dc.x(), dc.y(), 0).cross(Vec3(0, 0, b.mass->kg * gz)) / 1000;
+      }
     return dM;
   }
   const int n = sys.nBodies;
