@@ -67,8 +67,7 @@ difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.ro
                        crank angle of the turn: CSV crank_deg,dimension,dmu_deg_per_unit
                        (degrees of the angle per mm, degree or ratio); --point not needed.
                        Every kind: a dyad's (with an arc slot's centre too), a rod's on a
-                       slider or in a slot; on a machine in space each in its plane (an arc
-                       slot's refused there)
+                       slider or in a slot; on a machine in space each in its plane
   --shaking            instead, the derivatives of the shaking force (what the frame feels: the
                        bodies' masses times their accelerations, with gravity and loads, as
                        `dynamics` writes it) at the file's speed at each crank angle: CSV
@@ -294,10 +293,6 @@ int transmission(Kinematics& k, Sensitivity& sens, const Options& o) {
   const std::vector<TransmissionJoint> js = transmissionJoints(k.mechanism());
   const std::optional<size_t> j = transmissionIndex(js, o.transmission);
   if (!j) return kBadInput;
-  if (std::string why = transmissionSensitivityRefusal(k.mechanism(), js[*j]); !why.empty()) {
-    error("sensitivity: " + why);
-    return kBadInput;
-  }
   return perStep(k, sens, o, "dmu_deg_per_unit", [&](Kinematics& kk, Sensitivity& ss) {
     std::vector<std::vector<double>> out;
     for (double d : transmissionAngleDerivatives(kk, js[*j], ss)) out.push_back({d});

@@ -28,4 +28,15 @@ inline Mechanism exampleWithWindow(const std::string& name, const std::string& w
   return m;
 }
 
+// The RSSR crank-rocker with masses on its crank and rocker and gravity along -y: what the tests
+// of forces, balancing and their derivatives on a machine in space share.
+inline Mechanism rssrWithMasses() {
+  Mechanism m = example("rssr-crank-rocker");
+  m.body(m.bodyNamed("crank")->id)->mass = Mass{0.3, Vec2(10, 3), 60, ""};
+  m.body(m.bodyNamed("rocker")->id)->mass =
+      Mass{0.2, m.point(*m.findPoint("rocker.C"))->pos, 90, ""};
+  m.gravity = Vec2(0, -9.81);
+  return m;
+}
+
 }  // namespace linkage::test

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "changed_design.h"
 #include "linkage/dimension_change.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_sensitivity.h"
@@ -19,13 +20,7 @@ inline void expectReactionsMoveAsChangedDesignsDo(const Mechanism& m, int stepDe
   const double h = 1e-5;
   for (size_t d = 0; d < dims.size(); ++d) {
     Kinematics kc[2];
-    for (int side = 0; side < 2; ++side) {
-      Mechanism changed = m;
-      std::vector<double> delta(dims.size(), 0.0);
-      delta[d] = side ? h : -h;
-      ASSERT_TRUE(changeDimensions(changed, dims, delta).ok()) << dims[d].name;
-      ASSERT_TRUE(kc[side].load(changed).ok()) << dims[d].name;
-    }
+    ASSERT_TRUE(loadChangedPair(m, dims, d, h, kc)) << dims[d].name;
     for (int deg = 10; deg < 360; deg += stepDeg) {
       ASSERT_TRUE(k.moveTo(deg).ok() && kc[0].moveTo(deg).ok() && kc[1].moveTo(deg).ok());
       const Forces f[2] = {computeForces(kc[0]), computeForces(kc[1])};

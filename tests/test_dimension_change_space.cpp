@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "changed_design.h"
 #include "examples.h"
 #include "linkage/dimension_change.h"
 #include "linkage/io/model_file.h"
@@ -21,15 +22,6 @@ namespace {
 
 bool spaceOwn(const Dimension& d) {
   return !d.depths.empty() || d.lengthOf || d.name.starts_with("ground.u.");
-}
-
-Mechanism changed(const Mechanism& m, const std::vector<Dimension>& dims, size_t k, double by) {
-  std::vector<double> delta(dims.size(), 0.0);
-  delta[k] = by;
-  Mechanism out = m;
-  const Status s = changeDimensions(out, dims, delta);
-  EXPECT_TRUE(s.ok()) << dims[k].name << ": " << s.message;
-  return out;
 }
 
 Vec3 at(const Kinematics& k, const char* point) {
@@ -60,8 +52,8 @@ TEST(DimensionChangeSpace, SmallChangesMoveThePointsAsTheWorldDerivativeSays) {
       if (!spaceOwn(dims[d])) continue;
       const double h = 1e-6 * std::max(10.0, std::abs(dims[d].value));
       Kinematics plus, minus;
-      ASSERT_TRUE(plus.load(changed(m, dims, d, h)).ok()) << dims[d].name;
-      ASSERT_TRUE(minus.load(changed(m, dims, d, -h)).ok()) << dims[d].name;
+      ASSERT_TRUE(plus.load(test::changedDesign(m, dims, d, h)).ok()) << dims[d].name;
+      ASSERT_TRUE(minus.load(test::changedDesign(m, dims, d, -h)).ok()) << dims[d].name;
       double moved = 0;
       for (double deg : {0.0, 70.0, 160.0, 250.0}) {
         ASSERT_TRUE(k.moveTo(deg).ok() && s.at(k).ok());
@@ -120,7 +112,7 @@ void sameMotion(const Mechanism& a, const Mechanism& b, const std::string& what)
 Mechanism changedBy(const Mechanism& m, const std::string& name, double by) {
   const std::vector<Dimension> dims = dimensions(m);
   for (size_t k = 0; k < dims.size(); ++k)
-    if (dims[k].name == name) return changed(m, dims, k, by);
+    if (dims[k].name == name) return test::changedDesign(m, dims, k, by);
   ADD_FAILURE() << "no dimension " << name;
   return m;
 }

@@ -28,11 +28,7 @@ Mechanism fourBar() {
 
 // The RSSR with masses on its crank and rocker and gravity across both planes.
 Mechanism rssr() {
-  Mechanism m = test::example("rssr-crank-rocker");
-  m.body(m.bodyNamed("crank")->id)->mass = Mass{0.3, Vec2(10, 3), 60, ""};
-  m.body(m.bodyNamed("rocker")->id)->mass =
-      Mass{0.2, m.point(*m.findPoint("rocker.C"))->pos, 90, ""};
-  m.gravity = Vec2(0, -9.81);
+  Mechanism m = test::rssrWithMasses();
   m.gravityZ = -3.0;
   return m;
 }

@@ -97,21 +97,37 @@ TEST(SpatialClearance, PointToPointInSpaceHasTheClosedFormsMinima) {
   EXPECT_NEAR(clearanceAt(k, ClearancePart::of(K), ClearancePart::of(N)), f(0), 1e-9);
 }
 
-// A straight slot is measured in space (tests/test_spatial_clearance_sensitivity.cpp); an arc is
-// refused, naming it: a guard of the ground's, an arc in the drawing plane that no joint uses.
-TEST(SpatialClearance, AnArcSlotInSpaceIsRefusedNamingIt) {
+// An arc slot is measured in space as in the plane: a guard of the ground's, an arc through
+// (40, -150), (60, -200), (40, -250) in the hook's plane that no joint uses: centre C = (-12.5,
+// -200), radius 72.5, spanning 43.6 degrees either side of +x. K, on its circle of 25 about (20,
+// -200), is always inside the arc's circle and within its span near +x; the least distance is
+// 72.5 - |K - C| there, 15 mm at K = (45, -200) (sin 2 phi = -1), else the nearer end's.
+TEST(SpatialClearance, AnArcSlotInSpaceHasTheClosedFormsMinima) {
   Mechanism m = test::example("lockstitch-bevel");
   const SlotId guard = m.addSlot(m.ground()->id, "guard", Vec2(40, -150), Vec2(40, -250));
   m.slot(guard)->mid = Vec2(60, -200);
   Kinematics k;
   const Status loaded = k.load(m);
   ASSERT_TRUE(loaded.ok()) << loaded.message;
-  const Clearance c =
-      findClearance(k, ClearancePart::of(*m.findPoint("hook.K")), ClearancePart::of(guard));
-  EXPECT_FALSE(c.status.ok());
-  EXPECT_EQ(c.status.message,
-            "the clearance to the slot ground.guard of a machine in space is not measured yet (an "
-            "arc slot; a straight one is): give a segment between two points of its body");
+  const PointId K = *m.findPoint("hook.K");
+  const Clearance c = findClearance(k, ClearancePart::of(K), ClearancePart::of(guard));
+  ASSERT_TRUE(c.status.ok()) << c.status.message;
+  const Vec3 C(-12.5, -200, 0), e0(40, -150, 0), e1(40, -250, 0);
+  const double span = std::atan2(50, 52.5);
+  auto f = [&](double phi) {
+    const Vec3 r = hookK(phi) - C;
+    if (std::abs(std::atan2(r.y(), r.x())) < span) return 72.5 - r.norm();
+    return std::min((hookK(phi) - e0).norm(), (hookK(phi) - e1).norm());
+  };
+  EXPECT_NEAR(c.closest.distance, 15, 1e-9);
+  EXPECT_LT((c.closestOther3 - Vec3(60, -200, 0)).norm(), 1e-6);
+  const std::vector<double> expected = minimaOf(f);
+  ASSERT_GE(expected.size(), 2u);  // 15 mm twice a turn (the hook turns twice)
+  ASSERT_EQ(c.minima.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(c.minima[i].crankDeg, expected[i], 1e-6) << i;
+    EXPECT_NEAR(c.minima[i].distance, f(expected[i] * kDeg), 1e-9) << i;
+  }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 
+#include "changed_design.h"
 #include "examples.h"
 #include "linkage/balance.h"
 #include "linkage/dimension_change.h"
@@ -43,14 +44,9 @@ TEST(SpatialForceSensitivity, TheRssrsReactionsMoveAsChangedDesignsDo) {
   const double h = 1e-5;
   std::vector<Kinematics> changed(2 * dims.size());
   for (size_t d = 0; d < dims.size(); ++d)
-    for (int side = 0; side < 2; ++side) {
-      Mechanism c = m;
-      std::vector<double> delta(dims.size(), 0.0);
-      delta[d] = side ? h : -h;
-      const Status s = changeDimensions(c, dims, delta);
-      ASSERT_TRUE(s.ok()) << dims[d].name << ": " << s.message;
-      ASSERT_TRUE(changed[2 * d + side].load(c).ok()) << dims[d].name;
-    }
+    for (int side = 0; side < 2; ++side)
+      ASSERT_TRUE(changed[2 * d + side].load(test::changedDesign(m, dims, d, side ? h : -h)).ok())
+          << dims[d].name;
   double largest = 0;
   for (int deg = 15; deg < 360; deg += 45) {
     ASSERT_TRUE(k.moveTo(deg).ok());
@@ -92,14 +88,8 @@ TEST(SpatialForceSensitivity, TheShakingForceInTheWorldMovesAsChangedDesignsDo) 
   double largest = 0;
   for (size_t d = 0; d < dims.size(); ++d) {
     Kinematics kc[2];
-    for (int side = 0; side < 2; ++side) {
-      Mechanism c = m;
-      std::vector<double> delta(dims.size(), 0.0);
-      delta[d] = side ? h : -h;
-      ASSERT_TRUE(changeDimensions(c, dims, delta).ok()) << dims[d].name;
-      ASSERT_TRUE(kc[side].load(c).ok()) << dims[d].name;
-      kc[side].setAccelerations(true);
-    }
+    ASSERT_TRUE(test::loadChangedPair(m, dims, d, h, kc)) << dims[d].name;
+    for (Kinematics& c : kc) c.setAccelerations(true);
     for (int deg = 15; deg < 360; deg += 45) {
       ASSERT_TRUE(k.moveTo(deg).ok() && s.at(k).ok());
       Vec3 F[2], M;
@@ -129,14 +119,8 @@ void expectMomentMovesAsChangedDesignsDo(const Mechanism& m) {
   double largest = 0;
   for (size_t d = 0; d < dims.size(); ++d) {
     Kinematics kc[2];
-    for (int side = 0; side < 2; ++side) {
-      Mechanism c = m;
-      std::vector<double> delta(dims.size(), 0.0);
-      delta[d] = side ? h : -h;
-      ASSERT_TRUE(changeDimensions(c, dims, delta).ok()) << dims[d].name;
-      ASSERT_TRUE(kc[side].load(c).ok()) << dims[d].name;
-      kc[side].setAccelerations(true);
-    }
+    ASSERT_TRUE(test::loadChangedPair(m, dims, d, h, kc)) << dims[d].name;
+    for (Kinematics& c : kc) c.setAccelerations(true);
     for (int deg = 15; deg < 360; deg += 45) {
       ASSERT_TRUE(k.moveTo(deg).ok() && s.at(k).ok());
       Vec3 F, M0, M[2];

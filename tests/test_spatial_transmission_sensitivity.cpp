@@ -13,6 +13,7 @@
 #include <cmath>
 #include <map>
 
+#include "changed_design.h"
 #include "complex_step.h"
 #include "examples.h"
 #include "linkage/dimension_change.h"
@@ -242,13 +243,8 @@ TEST(SpatialTransmissionSensitivity, TheOveredgeMachinesAnglesMoveAsChangedDesig
     for (const TransmissionJoint& j : js) got.push_back(transmissionAngleDerivatives(k, j, s));
     for (size_t d = 0; d < dims.size(); ++d) {
       std::vector<double> side[2];
-      for (int i = 0; i < 2; ++i) {
-        Mechanism c = m;
-        std::vector<double> delta(dims.size(), 0.0);
-        delta[d] = i ? h : -h;
-        ASSERT_TRUE(changeDimensions(c, dims, delta).ok()) << dims[d].name;
-        side[i] = angles(c, js, deg);
-      }
+      for (int i = 0; i < 2; ++i)
+        side[i] = angles(test::changedDesign(m, dims, d, i ? h : -h), js, deg);
       for (size_t j = 0; j < js.size(); ++j) {
         const double want = (side[1][j] - side[0][j]) / (2 * h);
         EXPECT_NEAR(got[j][d], want, 1e-6 * (1 + std::abs(want)))

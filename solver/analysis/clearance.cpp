@@ -68,19 +68,14 @@ std::optional<Guide> curveOf(const Mechanism& m, const ClearancePart& b, BodyId&
 }
 
 // In space the distance in the world alone: the point and the part need not share a plane, so
-// a part's line is nothing the point crosses. A straight slot is the segment between its ends in
-// its body's plane; an arc is not measured there yet.
-Quantities spaceQuantities(const Mechanism& m, const ClearancePart& a, const ClearancePart& b,
-                           Status& why) {
+// a part's line is nothing the point crosses. A slot is its curve between its ends in its body's
+// plane (the ground's where its points are written).
+Quantities spaceQuantities(const Mechanism& m, const ClearancePart& a, const ClearancePart& b) {
   const PointId p = a.point;
   if (b.isSlot()) {
     const Slot& slot = *m.slot(b.slot);
-    if (slot.arc()) {
-      why = Status::badModel("the clearance to " + m.partDescription(b) +
-                             " of a machine in space is not measured yet (an arc slot; a "
-                             "straight one is): give a segment between two points of its body");
-      return {};
-    }
+    if (slot.arc())
+      return {[p, slot](const Kinematics& at) { return spaceDistanceToArc(at, p, slot); }, {}, {}};
     return {[p, slot](const Kinematics& at) { return spaceDistanceToSlot(at, p, slot); }, {}, {}};
   }
   if (b.isPoint())
@@ -97,7 +92,7 @@ Quantities quantitiesOf(const Kinematics& k, const ClearancePart& a, const Clear
                         Status& why) {
   if (why = check(k, a, b); !why.ok()) return {};
   const Mechanism& m = k.mechanism();
-  if (isSpatial(m)) return spaceQuantities(m, a, b, why);
+  if (isSpatial(m)) return spaceQuantities(m, a, b);
   const PointId p = a.point;
   if (b.isPoint()) {
     const PointId q = b.point;
@@ -138,27 +133,19 @@ void placeClosestInSpace(const Kinematics& at, const ClearancePart& a, const Cle
     out.closestOther = at.position(b.point);
     return;
   }
-  Vec3 A, u;
-  Vec2 p0, p1;
-  if (b.isSlot()) {
-    // Its ends as the slot's body carries them (the ground's as written).
+  if (b.isSlot()) {  // as the slot's body carries it, in its class's frame
     const Slot& slot = *at.mechanism().slot(b.slot);
-    SpaceMotion ends[2];
-    slotEndsInSpace(at, slot, ends);
-    spaceDistanceToSlot(at, a.point, slot, &out.closestOther3);
-    A = ends[0].r;
-    u = ends[1].r - A;
-    const Body* body = at.mechanism().body(slot.body);
-    const PlaneInClass in = body ? planeClasses(at.mechanism()).of(body->plane) : PlaneInClass{};
-    p0 = at.toWorld(slot.body, in.toClass(slot.p0));
-    p1 = at.toWorld(slot.body, in.toClass(slot.p1));
-  } else {
-    spaceDistanceToSegment(at, a.point, b.point, b.end, &out.closestOther3);
-    A = at.motionInSpace(b.point).position;
-    u = at.motionInSpace(b.end).position - A;
-    p0 = at.position(b.point);
-    p1 = at.position(b.end);
+    if (slot.arc())
+      spaceDistanceToArc(at, a.point, slot, &out.closestOther3);
+    else
+      spaceDistanceToSlot(at, a.point, slot, &out.closestOther3);
+    out.closestOther = intoSlotClass(at.mechanism(), slot, out.closestOther3);
+    out.closestPart = slotCurveInClass(at, slot, 48);
+    return;
   }
+  spaceDistanceToSegment(at, a.point, b.point, b.end, &out.closestOther3);
+  const Vec3 A = at.motionInSpace(b.point).position, u = at.motionInSpace(b.end).position - A;
+  const Vec2 p0 = at.position(b.point), p1 = at.position(b.end);
   const double t = std::clamp((out.closestOther3 - A).dot(u) / u.squaredNorm(), 0.0, 1.0);
   out.closestOther = p0 + t * (p1 - p0);
   out.closestPart = {p0, p1};

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <functional>
 
+#include "analysis/sensitivity_space.h"
 #include "analysis/space_distance.h"
+#include "kinematics/kinematics_state.h"
 #include "linkage/guide.h"
 #include "linkage/slot_sensitivity.h"
 #include "linkage/space.h"
@@ -57,6 +59,16 @@ Nearest onSlot(const Kinematics& at, const Sensitivity& s, SlotId id, const Vec2
           }};
 }
 
+// The move along its class's normal of a plane whose origin dimension `dim` is (its component
+// of the world axis), else 0: a moving body's slot goes with its plane.
+double planeDepthChange(const Mechanism& m, const Body& body, const Dimension& dim) {
+  const Plane* plane = planeNamed(m, body.plane);
+  const std::string origin = "planes." + (plane ? plane->name : "") + ".origin.";
+  return plane && dim.name.rfind(origin, 0) == 0 && dim.name.size() == origin.size() + 1
+             ? plane->normal()[dim.name.back() - 'x']
+             : 0.0;
+}
+
 // A straight slot's end e in the world moved by dimension d (per unit): the ground's as the
 // dimension moves it (x, y and z); a moving body's as its body moves in its class's frame, its
 // move in its plane turned into that frame, lifted with its plane's move along the normal (a
@@ -76,44 +88,82 @@ Vec3 slotEndChange(const Kinematics& at, const Sensitivity& s, const Slot& slot,
   const PlaneClasses pc = planeClasses(m);
   const PlaneInClass& in = pc.of(body->plane);
   const Plane& f = pc.frames[in.cls];
-  const Plane* plane = planeNamed(m, body->plane);
-  const std::string origin = "planes." + (plane ? plane->name : "") + ".origin.";
-  const double depth =
-      plane && dim.name.rfind(origin, 0) == 0 && dim.name.size() == origin.size() + 1
-          ? plane->normal()[dim.name.back() - 'x']
-          : 0.0;
   const Vec2 v = s.point(at, slot.body, in.toClass(e ? slot.p1 : slot.p0), in.rot * own, d);
-  return v.x() * f.xAxis + v.y() * f.yAxis + depth * f.normal();
+  return v.x() * f.xAxis + v.y() * f.yAxis + planeDepthChange(m, *body, dim) * f.normal();
+}
+
+// The point B of an arc slot nearest the watched point (world), inside its span, moved by
+// dimension d: B stays on its radius in the slot's drawing, which the arc's centre and radius
+// move (in its class's frame; the ground's arc along the normal as its points move, the same
+// for each of them under its own dimensions), and goes where the body takes it.
+Vec3 arcPointChange(const Kinematics& at, const Sensitivity& s, const Slot& slot, const Vec3& B,
+                    int d) {
+  const Mechanism& m = at.mechanism();
+  const Dimension& dim = s.dims()[d];
+  const internal::SpaceMoves space(m, internal::system(at));
+  const int cls = space.slotClass(slot);
+  const Plane& f = internal::system(at).frames[cls];
+  const Guide g = *guideOf(space.slot(slot, cls));
+  const Vec2 drawn = at.toSketch(slot.body, intoSlotClass(m, slot, B));
+  Vec2 dc;
+  double drho;
+  space.arcMove(slot, dim, cls, dc, drho);
+  const Vec2 own = dc + drho * (drawn - g.centre) / g.radius;
+  const Body* body = m.body(slot.body);
+  if (body && !body->ground) {
+    const Vec2 v = s.point(at, slot.body, drawn, own, d);
+    return v.x() * f.xAxis + v.y() * f.yAxis + planeDepthChange(m, *body, dim) * f.normal();
+  }
+  double along = 0;
+  for (const Dimension::SlotMove& mv : dim.slots)
+    if (mv.slot == slot.id)
+      along +=
+          f.normal().dot(
+              Vec3(mv.p0.x(), mv.p0.y(), mv.z0) + Vec3(mv.p1.x(), mv.p1.y(), mv.z1) +
+              Vec3(mv.mid.value_or(Vec2::Zero()).x(), mv.mid.value_or(Vec2::Zero()).y(), mv.zm)) /
+          3;
+  return own.x() * f.xAxis + own.y() * f.yAxis + along * f.normal();
 }
 
 // On a machine in space, in the world (findClearance's distance there: to a point, a segment or
-// a straight slot's segment): d(least)/dp = n . (dA - dB), B the nearest point of the segment at
-// its parameter.
+// a slot's curve): d(least)/dp = n . (dA - dB), B the nearest point of the part held at its
+// place on it (a segment's or a straight slot's parameter; an arc's end or radius).
 void inSpace(const Kinematics& at, const Sensitivity& s, const ClearanceWatch& watch,
              ClearanceSensitivity& out) {
   const ClearancePart& other = watch.other;
   auto world = [&](PointId p) { return Vec3(at.motionInSpace(p).position); };
   const Slot* slot = other.isSlot() ? at.mechanism().slot(other.slot) : nullptr;
-  SpaceMotion ends[2];
-  if (slot) slotEndsInSpace(at, *slot, ends);
-  const Vec3 A = world(watch.point), N = slot ? ends[0].r : world(other.point);
-  double t = 0;
-  Vec3 B = N;
-  if (other.isSegment() || slot) {
-    const Vec3 d = (slot ? ends[1].r : world(other.end)) - N;
-    t = d.squaredNorm() > 0 ? std::clamp((A - N).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-    B = N + t * d;
+  const Vec3 A = world(watch.point);
+  Vec3 B;
+  std::function<Vec3(int)> dB;
+  if (slot && slot->arc()) {
+    int end = -1;
+    spaceDistanceToArc(at, watch.point, *slot, &B, &end);
+    dB = [&, end, B](int d) {
+      return end >= 0 ? slotEndChange(at, s, *slot, end, d) : arcPointChange(at, s, *slot, B, d);
+    };
+  } else {
+    SpaceMotion ends[2];
+    if (slot) slotEndsInSpace(at, *slot, ends);
+    const Vec3 N = slot ? ends[0].r : world(other.point);
+    double t = 0;
+    B = N;
+    if (other.isSegment() || slot) {
+      const Vec3 e = (slot ? ends[1].r : world(other.end)) - N;
+      t = e.squaredNorm() > 0 ? std::clamp((A - N).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
+      B = N + t * e;
+    }
+    dB = [&, t](int d) -> Vec3 {
+      if (slot)
+        return (1 - t) * slotEndChange(at, s, *slot, 0, d) + t * slotEndChange(at, s, *slot, 1, d);
+      const Vec3 n0 = s.point3(at, other.point, d);
+      return other.isSegment() ? Vec3((1 - t) * n0 + t * s.point3(at, other.end, d)) : n0;
+    };
   }
   const Vec3 n = (A - B).normalized();
   for (size_t i = 0; i < out.dims.size(); ++i) {
     const int d = static_cast<int>(i);
-    Vec3 dB;
-    if (slot)
-      dB = (1 - t) * slotEndChange(at, s, *slot, 0, d) + t * slotEndChange(at, s, *slot, 1, d);
-    else
-      dB = s.point3(at, other.point, d);
-    if (other.isSegment()) dB = (1 - t) * dB + t * s.point3(at, other.end, d);
-    out.derivative.push_back(n.dot(s.point3(at, watch.point, d) - dB));
+    out.derivative.push_back(n.dot(s.point3(at, watch.point, d) - dB(d)));
   }
 }
 

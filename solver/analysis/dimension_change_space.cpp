@@ -52,19 +52,54 @@ Status moveGroundSlot(Mechanism& m, Slot& s, double turnDeg, double offset) {
   return Status::success();
 }
 
+// A ground arc's centre moved in the world and its radius changed about it, in its plane.
+Status moveGroundArc(Mechanism& m, Slot& s, const Vec3& shift, double dr) {
+  std::vector<Vec3> w = slotInWorld(s);
+  Vec3 c;
+  double r;
+  if (!circleThrough(w[0], w[1], w[2], c, r)) return Status::success();
+  if (!(r + dr > 0))
+    return Status::badModel(m.slotLabel(s.id) + ".radius: an arc's radius must stay above 0");
+  for (Vec3& p : w) p = c + shift + (r + dr) / r * (p - c);
+  s.p0 = w[0].head<2>();
+  s.mid = w[1].head<2>();
+  s.p1 = w[2].head<2>();
+  if (!s.z.empty() || w[0].z() != 0 || w[1].z() != 0 || w[2].z() != 0)
+    s.z = {w[0].z(), w[1].z(), w[2].z()};
+  return Status::success();
+}
+
+// The ground slots' own dimensions changed: a straight one's angle and offset, an arc's centre
+// and radius.
+Status moveGroundSlots(Mechanism& m, const std::vector<Dimension>& dims,
+                       const std::vector<double>& delta) {
+  for (Slot& s : m.slots) {
+    const std::string pre = m.slotLabel(s.id) + ".";
+    double turn = 0, offset = 0, radius = 0;
+    Vec3 shift = Vec3::Zero();
+    for (size_t k = 0; k < dims.size(); ++k) {
+      if (delta[k] == 0 || !isGroundSlot(m, dims[k]) || dims[k].slots[0].slot != s.id) continue;
+      const std::string what = dims[k].name.substr(pre.size());
+      if (what.starts_with("centre."))
+        shift[what.back() - 'x'] += delta[k];
+      else
+        (what == "angle" ? turn : what == "radius" ? radius : offset) += delta[k];
+    }
+    if (s.arc() && (radius != 0 || !shift.isZero(0))) {
+      if (Status st = moveGroundArc(m, s, shift, radius); !st.ok()) return st;
+    } else if (turn != 0 || offset != 0) {
+      moveGroundSlot(m, s, turn, offset);
+    }
+  }
+  return Status::success();
+}
+
 }  // namespace
 
 Status changeInSpace(Mechanism& m, const std::vector<Dimension>& dims,
                      const std::vector<double>& delta) {
   if (!isSpatial(m)) return Status::success();  // none of these dimensions: the planar path
-  for (Slot& s : m.slots) {
-    const std::string pre = m.slotLabel(s.id) + ".";
-    double turn = 0, offset = 0;
-    for (size_t k = 0; k < dims.size(); ++k)
-      if (delta[k] != 0 && isGroundSlot(m, dims[k]) && dims[k].slots[0].slot == s.id)
-        (dims[k].name == pre + "angle" ? turn : offset) += delta[k];
-    if (turn != 0 || offset != 0) moveGroundSlot(m, s, turn, offset);
-  }
+  if (Status st = moveGroundSlots(m, dims, delta); !st.ok()) return st;
   for (size_t k = 0; k < dims.size(); ++k) {
     if (delta[k] == 0 || dims[k].depths.empty()) continue;
     if (isPlaneOrigin(dims[k])) {

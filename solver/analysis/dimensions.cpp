@@ -116,10 +116,12 @@ void arcDimensions(const Mechanism& m, const Slot& s, const Guide& g, const Vec2
 }
 
 void slotDimensions(const Mechanism& m, const Slot& s, std::vector<Dimension>& out) {
-  const std::optional<Guide> g = guideOf(s);
-  if (!g || (s.arc() && isSpatial(m))) return;
-  // In space the ground's slot is in the plane of its block, which its offset and angle keep.
+  // In space the ground's slot is in the plane of its block, which its offset and angle keep
+  // (an arc: its centre in the world and its radius); a moving body's is in its plane's
+  // coordinates, as a planar machine's.
   if (m.body(s.body)->ground && isSpatial(m)) return internal::groundSlotInSpace(m, s, out);
+  const std::optional<Guide> g = guideOf(s);
+  if (!g) return;
   const std::string pre = m.slotLabel(s.id) + ".";
   // Measured from the body's first point (the ground's: the drawing's origin), so that the
   // body's lengths and its slot's offset scale together.

@@ -79,7 +79,8 @@ void planeOrigins(const Mechanism& m, std::vector<Dimension>& out) {
             d.depths.push_back({p.id, along});
           }
         for (const Slot& s : m.slots)
-          if (s.body == b.id) d.slots.push_back({s.id, in, in});
+          if (s.body == b.id)
+            d.slots.push_back({s.id, in, in, 0, 0, s.mid ? std::optional(in) : std::nullopt});
       }
       out.push_back(d);
     }
@@ -94,10 +95,32 @@ bool hasSpaceDimensions(const Mechanism& m) {
   return false;
 }
 
+// A ground arc's centre in the world and its radius: each moves its three points, the centre
+// along a world axis, the radius away from the centre in the arc's own plane.
+void groundArcInSpace(const Mechanism& m, const Slot& s, std::vector<Dimension>& out) {
+  Vec3 c;
+  double radius;
+  const std::vector<Vec3> w = slotInWorld(s);
+  if (!circleThrough(w[0], w[1], w[2], c, radius)) return;
+  const std::string pre = m.slotLabel(s.id) + ".";
+  static const char* const kAxis[] = {"centre.x", "centre.y", "centre.z"};
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 e = Vec3::Unit(k);
+    Dimension d = named(pre + kAxis[k], c[k]);
+    d.slots.push_back({s.id, e.head<2>(), e.head<2>(), e.z(), e.z(), e.head<2>(), e.z()});
+    out.push_back(d);
+  }
+  Dimension r = named(pre + "radius", radius);
+  const Vec3 r0 = (w[0] - c) / radius, rm = (w[1] - c) / radius, r1 = (w[2] - c) / radius;
+  r.slots.push_back({s.id, r0.head<2>(), r1.head<2>(), r0.z(), r1.z(), rm.head<2>(), rm.z()});
+  out.push_back(r);
+}
+
 void groundSlotInSpace(const Mechanism& m, const Slot& s, std::vector<Dimension>& out) {
   const PlaneClasses pc = planeClasses(m);
   const int cls = groundSlotClass(m, pc, s);
-  if (cls < 0 || s.arc()) return;
+  if (cls < 0) return;
+  if (s.arc()) return groundArcInSpace(m, s, out);
   const Vec3 w0(s.p0.x(), s.p0.y(), s.z.size() > 0 ? s.z[0] : 0.0);
   const Vec3 w1(s.p1.x(), s.p1.y(), s.z.size() > 1 ? s.z[1] : 0.0);
   const Plane& f = pc.frames[cls];

@@ -13,8 +13,8 @@ namespace linkage::internal {
 // Whether the mechanism has dimensions only a machine in space has (a plane, a third number, a
 // ball rod).
 bool hasSpaceDimensions(const Mechanism& m);
-// A straight ground slot's offset and angle in the plane of the block running in it (none when
-// no joint runs in it).
+// A straight ground slot's offset and angle in the plane of the block running in it, an arc's
+// centre (world x, y, z) and radius (none when no joint runs in it).
 void groundSlotInSpace(const Mechanism& m, const Slot& s, std::vector<Dimension>& out);
 // Appends the depths, the ground's z, the rods' lengths and the planes' origins.
 void spaceDimensions(const Mechanism& m, std::vector<Dimension>& out);

@@ -34,7 +34,6 @@
 #include "linkage/elements.h"
 #include "linkage/guide.h"
 #include "linkage/sensitivity.h"
-#include "linkage/slot_sensitivity.h"
 #include "system/system.h"
 
 namespace linkage {
@@ -51,14 +50,6 @@ struct Moves {  // one dimension's move of the drawing, by id value (Sensitivity
   Vec2 at(PointId p, int cls) const { return space.inClass(p, kept(p), cls); }
   double depth(PointId p, int cls) const { return space.depthIn(p, kept(p), cls); }
 };
-
-// An arc slot's centre c and radius rho as its three points P move (linkage/slot_sensitivity.h;
-// planar machines: an arc of a machine in space has no dimension).
-void arcMove(const Mechanism& m, SlotId id, const Moves& mv, Vec2& dc, double& drho) {
-  const SlotChange c = slotChange(m, id, mv.dim);
-  dc = c.centre;
-  drho = c.radius;
-}
 
 // The block's point of a slider in an arc slot is compiled as the point at the arc's centre,
 // C' = p - rho (p - c) / |p - c|: its move for a move dp of p and dc, drho of the arc.
@@ -106,7 +97,7 @@ RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& m
   switch (r.kind) {
     case Primitive::Coincident:
       if (role == Role::Prismatic) {  // a block in an arc: its point at the centre, the centre
-        arcMove(m, j.slot, mv, out.s[1], out.rho);
+        mv.space.arcMove(*m.slot(j.slot), mv.dim, cls, out.s[1], out.rho);
         out.s[0] = arcBlockMove(m, j, mv, cls, out.s[1], out.rho);
       } else {
         out.s[0] = mv.at(j.a, cls);
@@ -119,7 +110,7 @@ RowMove rowMove(const Mechanism& m, const Joint& j, const Row& r, const Moves& m
       break;
     case Primitive::OnCircle:  // a pin in an arc: the centre and the radius
       out.s[0] = mv.at(j.a, cls);
-      arcMove(m, j.slot, mv, out.s[1], out.rho);
+      mv.space.arcMove(*m.slot(j.slot), mv.dim, cls, out.s[1], out.rho);
       break;
     case Primitive::Distance3:  // each end in its own class (elements/ball_rod.cpp)
       for (int e = 0; e < 2; ++e) {

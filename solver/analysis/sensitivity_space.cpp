@@ -1,6 +1,11 @@
 // A dimension's move in the rows' class frames (analysis/sensitivity_space.h).
 #include "analysis/sensitivity_space.h"
 
+#include <algorithm>
+
+#include "linkage/guide.h"
+#include "linkage/slot_sensitivity.h"
+
 namespace linkage::internal {
 
 SpaceMoves::SpaceMoves(const Mechanism& m, const System& sys)
@@ -50,6 +55,43 @@ void SpaceMoves::slotMove(const Slot& s, const Dimension::SlotMove& mv, int cls,
   if (at.identity) return;
   d0 = at.rot * mv.p0;
   d1 = at.rot * mv.p1;
+}
+
+Vec2 SpaceMoves::midMove(const Slot& s, const Dimension::SlotMove& mv, int cls) const {
+  const Vec2 d = mv.mid.value_or(Vec2::Zero());
+  if (!spatial_) return d;
+  const Body* b = m_.body(s.body);
+  if (ground(b)) {
+    const Plane& f = sys_.frames[cls];
+    const Vec3 w(d.x(), d.y(), mv.zm);
+    return Vec2(w.dot(f.xAxis), w.dot(f.yAxis));
+  }
+  const PlaneInClass& at = pc_.of(b->plane);
+  return at.identity ? d : Vec2(at.rot * d);
+}
+
+void SpaceMoves::arcMove(const Slot& drawn, const Dimension& d, int cls, Vec2& dc,
+                         double& drho) const {
+  dc = Vec2::Zero();
+  drho = 0;
+  const Slot s = slot(drawn, cls);
+  const std::optional<Guide> g = guideOf(s);
+  for (const Dimension::SlotMove& sm : d.slots) {
+    if (sm.slot != drawn.id || !g || !g->arc) continue;
+    Vec2 dp[3], c;
+    double rho;
+    slotMove(drawn, sm, cls, dp[0], dp[2]);
+    dp[1] = midMove(drawn, sm, cls);
+    arcChange(*g, {s.p0, *s.mid, s.p1}, dp, c, rho);
+    dc += c;
+    drho += rho;
+  }
+}
+
+int SpaceMoves::slotClass(const Slot& s) const {
+  if (!spatial_) return 0;
+  const Body* b = m_.body(s.body);
+  return ground(b) ? std::max(0, groundSlotClass(m_, pc_, s)) : pc_.of(b->plane).cls;
 }
 
 Vec2 SpaceMoves::drawn(const Point& p, int cls) const {

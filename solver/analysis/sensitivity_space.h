@@ -25,6 +25,14 @@ class SpaceMoves {
   // A slot (and its ends' moves) as class `cls`'s frame sees it.
   Slot slot(const Slot& s, int cls) const;
   void slotMove(const Slot& s, const Dimension::SlotMove& mv, int cls, Vec2& d0, Vec2& d1) const;
+  // An arc's point on the way: its move, as slotMove's ends (zero where the move has none).
+  Vec2 midMove(const Slot& s, const Dimension::SlotMove& mv, int cls) const;
+  // An arc slot's centre's move and its radius's for the dimension, in class `cls`'s frame
+  // (linkage/slot_sensitivity.h, arcChange).
+  void arcMove(const Slot& s, const Dimension& d, int cls, Vec2& dc, double& drho) const;
+  // The class a slot is seen in: its body's plane's, the ground's its block's (groundSlotClass;
+  // 0 where none runs in it).
+  int slotClass(const Slot& s) const;
   // A point's drawn position in class `cls`'s frame.
   Vec2 drawn(const Point& p, int cls) const;
   // The class a planar row is written in: its first moving body's (0 with none).

@@ -5,7 +5,11 @@
 // differentiated (u.u is constant), r' = w' - t' u - t u', r'' = w'' - t'' u - 2 t' u' - t u''.
 #include "analysis/space_distance.h"
 
+#include <algorithm>
+
+#include "analysis/sensitivity_space.h"
 #include "analysis/slot_frame.h"
+#include "linkage/guide.h"
 #include "linkage/space.h"
 
 namespace linkage {
@@ -75,6 +79,80 @@ CycleReading spaceDistanceToSlot(const Kinematics& k, PointId p, const Slot& s, 
   SpaceMotion ends[2];
   slotEndsInSpace(k, s, ends);
   return toSegment(spaceMotion(k, p), ends[0], ends[1], nearest);
+}
+
+namespace {
+
+// A slot's plane in the world and its curve as its class's frame draws it.
+struct SlotPlace {
+  Plane f;           // the class's frame
+  double depth = 0;  // the arc's plane along f's normal
+  std::optional<Guide> g;
+};
+
+SlotPlace slotPlace(const Mechanism& m, const Slot& s) {
+  const PlaneClasses pc = planeClasses(m);
+  const Body* body = m.body(s.body);
+  const bool ground = !body || body->ground;
+  const int cls =
+      ground ? std::max(0, internal::groundSlotClass(m, pc, s)) : pc.of(body->plane).cls;
+  SlotPlace a{pc.frames[cls], 0,
+              soundSlot(s) ? guideOf(inClassFrame(m, pc, s, cls)) : std::nullopt};
+  a.depth = ground ? a.f.normal().dot(slotInWorld(s)[0] - a.f.origin) : pc.of(body->plane).depth;
+  return a;
+}
+
+}  // namespace
+
+CycleReading spaceDistanceToArc(const Kinematics& k, PointId p, const Slot& s, Vec3* nearest,
+                                int* end) {
+  const SlotPlace a = slotPlace(k.mechanism(), s);
+  if (!a.g || !a.g->arc) return {NAN, NAN, NAN};
+  const Vec3 n = a.f.normal();
+  const double rate = secondsPerDegree(k);
+  auto lift = [&](const Vec2& v) { return Vec3(v.x() * a.f.xAxis + v.y() * a.f.yAxis); };
+  auto inWorld = [&](const Vec2& drawn) {  // a point of the slot's body, drawn in the class frame
+    const Kinematics::PointMotion at = k.motionOf(s.body, drawn);
+    return SpaceMotion{a.f.origin + lift(at.position) + a.depth * n, lift(at.velocity) * rate,
+                       lift(at.acceleration) * (rate * rate)};
+  };
+  const SpaceMotion x = spaceMotion(k, p), c = inWorld(a.g->centre);
+  const Vec3 w = x.r - c.r, w1 = x.dr - c.dr, w2 = x.ddr - c.ddr;
+  // The body turns about n: n holds, and so h's rates are n's components of w's.
+  const double h = n.dot(w), h1 = n.dot(w1), h2 = n.dot(w2);
+  const Vec3 v = w - h * n, v1 = w1 - h1 * n, v2 = w2 - h2 * n;
+  const double rho = v.norm();
+  const Vec3 rel = x.r - a.f.origin;
+  const double along = a.g->along(k.toSketch(s.body, Vec2(rel.dot(a.f.xAxis), rel.dot(a.f.yAxis))));
+  if (end) *end = -1;
+  if (along <= 0 || along >= a.g->length() || !(rho > 0)) {  // on the axis: every point alike
+    const int e = along <= 0 ? 0 : 1;
+    const SpaceMotion at = inWorld(e ? a.g->p1 : a.g->p0);
+    if (nearest) *nearest = at.r;
+    if (end) *end = e;
+    return lengthInSpace(Vec3(x.r - at.r), Vec3(x.dr - at.dr), Vec3(x.ddr - at.ddr));
+  }
+  const double rho1 = v.dot(v1) / rho;
+  const double rho2 = (v1.squaredNorm() + v.dot(v2)) / rho - rho1 * rho1 / rho;
+  if (nearest) *nearest = c.r + a.g->radius / rho * v;
+  return lengthInSpace(Vec3(h, rho - a.g->radius, 0), Vec3(h1, rho1, 0), Vec3(h2, rho2, 0));
+}
+
+std::vector<Vec2> slotCurveInClass(const Kinematics& k, const Slot& s, int pieces) {
+  const SlotPlace a = slotPlace(k.mechanism(), s);
+  if (!a.g) return {};
+  if (!a.g->arc) pieces = 1;
+  std::vector<Vec2> out;
+  for (int i = 0; i <= pieces; ++i)
+    out.push_back(k.toWorld(s.body, i == 0        ? a.g->p0
+                                    : i == pieces ? a.g->p1
+                                                  : a.g->at(a.g->length() * i / pieces)));
+  return out;
+}
+
+Vec2 intoSlotClass(const Mechanism& m, const Slot& s, const Vec3& w) {
+  const SlotPlace a = slotPlace(m, s);
+  return Vec2((w - a.f.origin).dot(a.f.xAxis), (w - a.f.origin).dot(a.f.yAxis));
 }
 
 }  // namespace linkage

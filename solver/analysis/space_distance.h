@@ -32,4 +32,17 @@ void slotEndsInSpace(const Kinematics& k, const Slot& s, SpaceMotion ends[2]);
 CycleReading spaceDistanceToSlot(const Kinematics& k, PointId p, const Slot& s,
                                  Vec3* nearest = nullptr);
 
+// From p to the arc slot s: in its plane (its body's, at the plane's depth; the ground's where
+// its points are written) the nearest point of the arc is on p's radius when p's foot in the
+// plane is within the arc's span, so the distance is |(h, rho - R)|, h p's height off the plane
+// and rho its foot's distance from the centre; beyond the span the nearer end's.
+// `end`, when given: the end nearest is at (0: p0, 1: p1), -1 a point within the span.
+CycleReading spaceDistanceToArc(const Kinematics& k, PointId p, const Slot& s,
+                                Vec3* nearest = nullptr, int* end = nullptr);
+
+// A slot at k's pose in its class's frame, as the canvas draws it: its two ends, or an arc in
+// `pieces` pieces; and a world point of its plane in that frame.
+std::vector<Vec2> slotCurveInClass(const Kinematics& k, const Slot& s, int pieces);
+Vec2 intoSlotClass(const Mechanism& m, const Slot& s, const Vec3& w);
+
 }  // namespace linkage

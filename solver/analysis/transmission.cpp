@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/sensitivity_space.h"
 #include "analysis/transmission_track.h"
 #include "linkage/elements.h"
 #include "linkage/groups.h"
@@ -123,24 +124,35 @@ const char* toString(TransmissionKind k) {
 
 namespace {
 
-// The arc guide of a slot joint (a slider or a pin in a slot on an arc), if it is one.
-std::optional<Guide> arcOf(const Mechanism& m, JointId joint) {
+// Whether a slot joint (a slider or a pin in a slot) runs on an arc.
+bool onArc(const Mechanism& m, JointId joint) {
   const Joint* j = m.joint(joint);
-  if (!j || !kindOf(*j).reads(FieldType::Slot)) return std::nullopt;
+  if (!j || !kindOf(*j).reads(FieldType::Slot)) return false;
   const Slot* s = m.slot(j->slot);
-  std::optional<Guide> g = s ? guideOf(*s) : std::nullopt;
-  return g && g->arc ? g : std::nullopt;
+  return s && s->arc() && soundSlot(*s);
 }
 
-// Where an anchor is as drawn, and on which body (NaN where it names nothing).
+// Where an anchor is as drawn, and on which body (NaN where it names nothing); an arc's in the
+// frame its rows are written in (in space its class's, where Kinematics places its bodies).
 std::pair<BodyId, Vec2> anchored(const Mechanism& m, const Anchor& a) {
   const Point* p = m.point(a.point);
   const Slot* s = m.slot(a.arc);
-  const std::optional<Guide> g = s ? guideOf(*s) : std::nullopt;
-  if (!g) return {p ? p->body : BodyId{}, p ? p->pos : Vec2(NAN, NAN)};
+  if (!s || !s->arc()) return {p ? p->body : BodyId{}, p ? p->pos : Vec2(NAN, NAN)};
+  Slot seen = *s;
+  Vec2 at = p ? p->pos : Vec2::Zero();
+  if (isSpatial(m)) {
+    const PlaneClasses pc = planeClasses(m);
+    const Body* b = m.body(s->body);
+    const int cls =
+        b && !b->ground ? pc.of(b->plane).cls : std::max(0, internal::groundSlotClass(m, pc, *s));
+    seen = inClassFrame(m, pc, *s, cls);
+    if (p) at = inClassFrame(m, pc, *p, cls);
+  }
+  const std::optional<Guide> g = guideOf(seen);
+  if (!g) return {p ? p->body : BodyId{}, Vec2(NAN, NAN)};
   if (!p) return {s->body, g->centre};
-  const Vec2 d = p->pos - g->centre;
-  return {p->body, Vec2(p->pos - g->radius * d.normalized())};
+  const Vec2 d = at - g->centre;
+  return {p->body, Vec2(at - g->radius * d.normalized())};
 }
 
 Vec2 sketchOf(const Mechanism& m, const Anchor& a) {
@@ -159,7 +171,7 @@ bool fromGroup(const Mechanism& m, const AssurGroup& g, TransmissionJoint& t) {
     t.kind = TransmissionKind::Dyad;
     t.other = g.bodies[1];
     t.otherAt = {pointOn(m, t.joint, t.other), {}};
-    if (arcOf(m, g.joints[2])) {
+    if (onArc(m, g.joints[2])) {
       // A block in a curved guide: its line to the arc's centre, as the slider compiles it.
       t.slot = m.joint(g.joints[2])->slot;
       t.otherOuter = {m.joint(g.joints[2])->a, t.slot};
@@ -171,7 +183,7 @@ bool fromGroup(const Mechanism& m, const AssurGroup& g, TransmissionJoint& t) {
   const Joint* slide = m.joint(g.kind == K::RRP ? g.joints[2] : g.joints[1]);
   t.slot = slide->slot;
   t.other = m.slot(t.slot)->body;
-  if (const std::optional<Guide> arc = g.kind == K::RP ? arcOf(m, slide->id) : std::nullopt) {
+  if (g.kind == K::RP && onArc(m, slide->id)) {
     // A pin in an arc slot: the radius from the pin to the centre, as the four-bar's rocker.
     t.kind = TransmissionKind::Dyad;
     t.otherAt = t.linkAt;

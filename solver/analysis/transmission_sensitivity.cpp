@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "analysis/sensitivity_space.h"
+#include "kinematics/kinematics_state.h"
 #include "linkage/guide.h"
 #include "linkage/slot_sensitivity.h"
 #include "linkage/space.h"
@@ -13,13 +15,19 @@ namespace {
 
 constexpr double kDeg = M_PI / 180;
 
-// d(where the anchor is)/d(dimension dim): a point's, or an arc slot's centre's.
+// d(where the anchor is)/d(dimension dim): a point's, or an arc slot's centre's (in space in
+// the frame of its class, as the solve holds it).
 Vec2 anchorChange(const Kinematics& k, const Anchor& a, const Sensitivity& s, int dim) {
   if (!a.arc) return s.point(k, a.point, dim);
-  const Mechanism& m = k.mechanism();
-  const Slot& slot = *m.slot(a.arc);
-  const Vec2 centre = guideOf(slot)->centre;  // an arc: transmissionJoints made it an anchor
-  return s.point(k, slot.body, centre, slotChange(m, a.arc, s.dims()[dim]).centre, dim);
+  const Slot& slot = *k.mechanism().slot(a.arc);
+  const internal::SpaceMoves space(k.mechanism(), internal::system(k));
+  const int cls = space.slotClass(slot);
+  // An arc: transmissionJoints made it an anchor.
+  const Vec2 centre = guideOf(space.slot(slot, cls))->centre;
+  Vec2 dc;
+  double drho;
+  space.arcMove(slot, s.dims()[dim], cls, dc, drho);
+  return s.point(k, slot.body, centre, dc, dim);
 }
 
 // A line's turn per unit of the dimension: cross(u, du) / |u|^2.
@@ -76,17 +84,6 @@ double rodTheta(const Kinematics& k, const TransmissionJoint& j, const Sensitivi
 }
 
 }  // namespace
-
-std::string transmissionSensitivityRefusal(const Mechanism& m, const TransmissionJoint& j) {
-  if (!isSpatial(m)) return "";
-  const Slot* slot = m.slot(j.slot);
-  const bool arc =
-      j.linkOuter.arc || j.linkAt.arc || j.otherAt.arc || j.otherOuter.arc || (slot && slot->arc());
-  if (!arc) return "";
-  return "'" + j.label +
-         "': the transmission angle at an arc slot of a machine in space is not differentiated "
-         "yet (an arc's dimensions are a planar machine's); a straight slot's and a dyad's are";
-}
 
 double transmissionAngleSensitivity(const Kinematics& k, const TransmissionJoint& j,
                                     const Sensitivity* sens, int dim, double* d) {

@@ -136,6 +136,36 @@ SlotId addBodyArcSlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& mid
   return m.addArcSlot(body, newSlotName(m, body), p0, mid, p1);
 }
 
+bool bendSlot(Mechanism& m, SlotId id, std::string* why) {
+  Slot* s = m.slot(id);
+  if (!s || s->arc()) return s != nullptr;
+  Slot bent = *s;
+  bent.mid = (s->p0 + s->p1) / 2 + perp(s->p1 - s->p0) / 4;  // in the drawing: n = z
+  if (s->z.size() == 2) {
+    const std::vector<Vec3> w = slotInWorld(*s);
+    Vec3 n = Vec3::UnitZ();
+    for (const Joint& j : m.joints)
+      if (const Point* a = j.slot == id ? m.point(j.a) : nullptr) {
+        const PlaneClasses pc = planeClasses(m);
+        n = pc.frames[jointClass(m, pc, *a, *s)].normal();
+        break;
+      }
+    const Vec3 mid = (w[0] + w[1]) / 2 + n.cross(w[1] - w[0]) / 4;
+    bent.mid = mid.head<2>();
+    bent.z = {w[0].z(), mid.z(), w[1].z()};
+  }
+  if (!soundSlot(bent, why)) return false;
+  *s = bent;
+  return true;
+}
+
+void straightenSlot(Mechanism& m, SlotId id) {
+  Slot* s = m.slot(id);
+  if (!s || !s->arc()) return;
+  if (s->z.size() == 3) s->z.erase(s->z.begin() + 1);
+  s->mid.reset();
+}
+
 namespace {
 
 // The point of `body` where a pin joins it to `carrier`, or none.

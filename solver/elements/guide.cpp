@@ -55,6 +55,31 @@ std::optional<Guide> guideOf(const Slot& s, std::string* why) {
   return g;
 }
 
+bool soundSlot(const Slot& s, std::string* why) {
+  const size_t n = s.arc() ? 3 : 2;
+  if (s.z.size() != n) return guideOf(s, why).has_value();
+  const Vec3 w0(s.p0.x(), s.p0.y(), s.z[0]), w1(s.p1.x(), s.p1.y(), s.z[n - 1]);
+  const Vec3 u = w1 - w0;
+  const double scale = std::max(w0.cwiseAbs().maxCoeff(), w1.cwiseAbs().maxCoeff());
+  if (!s.mid) {
+    const bool sound = u.norm() > 1e-12 * scale && u.norm() > 0;
+    if (!sound && why) *why = "zero-length slot";
+    return sound;
+  }
+  // The arc drawn in its own plane, p0 at the origin and p1 along x, at the same distances: its
+  // tests (points that coincide, on one line) are guideOf's.
+  const Vec3 wm = Vec3(s.mid->x(), s.mid->y(), s.z[1]) - w0;
+  const Vec3 e = u.norm() > 0 ? Vec3(u.normalized()) : Vec3::UnitX();
+  const double along = e.dot(wm);
+  Slot flat = s;
+  flat.z.clear();
+  flat.p0 = Vec2::Zero();
+  flat.p1 = Vec2(u.norm(), 0);
+  flat.mid = Vec2(along, (wm - along * e).norm());
+  if (wm.isZero(0)) flat.mid = flat.p0;
+  return guideOf(flat, why).has_value();
+}
+
 double Guide::length() const {
   return arc ? radius * std::abs(sweep) : (p1 - p0).norm();
 }

@@ -212,16 +212,17 @@ class Reader {
                  describe(s));
     Slot slot{{}, body, name, *p[0], *p[n - 1], std::nullopt, {}};
     if (n == 3) slot.mid = *p[1];
-    std::string why;
-    if (!guideOf(slot, &why)) refuse(spath, why);
-    names.slots[name] = slot.mid ? m_.addArcSlot(body, name, slot.p0, *slot.mid, slot.p1)
-                                 : m_.addSlot(body, name, slot.p0, slot.p1);
     // The ground's ends in the world: all with z or none (a slot half in the drawing plane is
     // more likely a slip than meant).
     const int withZ = (z[0] ? 1 : 0) + (z[1] ? 1 : 0) + (z[2] ? 1 : 0);
     if (withZ > 0 && withZ != static_cast<int>(n))
       refuse(spath, "give every end three numbers [x, y, z] or every end two");
-    for (size_t k = 0; k < n && withZ > 0; ++k) m_.slots.back().z.push_back(*z[k]);
+    for (size_t k = 0; k < n && withZ > 0; ++k) slot.z.push_back(*z[k]);
+    std::string why;
+    if (!soundSlot(slot, &why)) refuse(spath, why);
+    names.slots[name] = slot.mid ? m_.addArcSlot(body, name, slot.p0, *slot.mid, slot.p1)
+                                 : m_.addSlot(body, name, slot.p0, slot.p1);
+    m_.slots.back().z = slot.z;
   }
 
   // "body.name" to the body and the name after the dot.

@@ -152,6 +152,23 @@ PlaneClasses planeClasses(const Mechanism& m) {
   return c;
 }
 
+std::vector<Vec3> slotInWorld(const Slot& s) {
+  std::vector<Vec3> w{{s.p0.x(), s.p0.y(), 0}};
+  if (s.mid) w.emplace_back(s.mid->x(), s.mid->y(), 0);
+  w.emplace_back(s.p1.x(), s.p1.y(), 0);
+  for (size_t k = 0; k < w.size() && k < s.z.size(); ++k) w[k].z() = s.z[k];
+  return w;
+}
+
+bool circleThrough(const Vec3& a, const Vec3& b, const Vec3& c, Vec3& centre, double& radius) {
+  // Relative to c: centre = c + ((|u|^2 v - |v|^2 u) x (u x v)) / (2 |u x v|^2).
+  const Vec3 u = a - c, v = b - c, n = u.cross(v);
+  if (!(n.norm() > 1e-12 * u.norm() * v.norm())) return false;
+  centre = c + (u.squaredNorm() * v - v.squaredNorm() * u).cross(n) / (2 * n.squaredNorm());
+  radius = (a - centre).norm();
+  return std::isfinite(radius);
+}
+
 Vec2 inClassFrame(const Mechanism& m, const PlaneClasses& pc, const Point& p, int cls) {
   const Body* b = m.body(p.body);
   if (b && !b->ground) return pc.of(b->plane).toClass(p.pos);

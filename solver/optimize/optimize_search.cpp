@@ -128,8 +128,6 @@ Status checkTransmission(const Mechanism& m, const OptTarget& t) {
   const TransmissionJoint& j = js[t.joint];
   if (!(t.limitDeg >= 0 && t.limitDeg < 90))
     return Status::badModel("'" + j.label + "': the limit must be from 0 to 90 degrees");
-  if (std::string why = transmissionSensitivityRefusal(m, j); !why.empty())
-    return Status::badModel(why);
   return Status::success();
 }
 

@@ -177,7 +177,7 @@ class Compiler : public Frames {
     for (const Slot& s : m_.slots) {
       if (!knownBody(s.body)) return fail("slot \"" + s.name + "\" belongs to no body");
       std::string why;
-      if (!guideOf(s, &why)) return fail("slot " + m_.slotLabel(s.id) + ": " + why);
+      if (!soundSlot(s, &why)) return fail("slot " + m_.slotLabel(s.id) + ": " + why);
       const Slot& c = spatial_ && sys_.bodyIndex(s.body) >= 0 ? *inClass(s) : s;
       add(s.body, c.p0);
       add(s.body, c.p1);

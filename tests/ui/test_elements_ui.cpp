@@ -8,9 +8,11 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QFile>
 #include <QImage>
 #include <QLineEdit>
 #include <QMenu>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 
@@ -194,6 +196,68 @@ TEST(ElementsUi, SlotToolDrawsAnArcAndThePanelTypesItsRadius) {
   ASSERT_TRUE(shape);
   shape->activated(1);
   EXPECT_TRUE(doc->design().slots[0].arc());
+}
+
+// A ground arc written in the world in a plane square to the drawing (its x, y alone are three
+// points on a line): selected, the panel offers its points but no circle in x, y (there is none
+// to type), and its shape made straight and an arc again keeps a z for each point, the machine
+// solved throughout; a bend off a chord along z, which would have no bulge, is refused.
+TEST(ElementsUi, AGroundArcSquareToTheDrawingInThePanel) {
+  const std::string text = R"({"format": "linkage", "version": 1, "name": "arc on edge",
+  "planes": {"side": {"origin": [0, 0, 0], "x_axis": [0, 0, -1], "y_axis": [0, 1, 0]}},
+  "bodies": [
+    {"name": "ground", "ground": true, "points": {"O": [0, 0]},
+     "slots": {"g": [[0, -20, 0], [0, -35, 5], [0, -50, 0]], "z": [[0, -60, 0], [0, -60, 9]]}},
+    {"name": "crank", "plane": "side", "points": {"O": [0, 0], "A": [0, 10]}},
+    {"name": "rod", "plane": "side", "points": {"A": [0, 10], "B": [0, -30]}},
+    {"name": "block", "plane": "side", "points": {"B": [0, -30]}}],
+  "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"},
+    {"type": "pin", "a": "crank.A", "b": "rod.A"},
+    {"type": "pin", "a": "rod.B", "b": "block.B"},
+    {"type": "slider", "a": "block.B", "slot": "ground.g"}],
+  "driver": {"joint": 0, "rpm": 60, "direction": "ccw"}})";
+  QTemporaryDir dir;
+  const QString path = dir.filePath("edge.linkage.json");
+  {
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(QByteArray::fromStdString(text));
+  }
+  MainWindow w;
+  w.resize(1300, 900);
+  ASSERT_TRUE(w.document()->open(path, nullptr));
+  w.show();
+  QApplication::processEvents();
+  Document* doc = w.document();
+  ASSERT_TRUE(doc->solved()) << doc->solveStatus().message;
+  const SlotId g = doc->design().slots[0].id, z = doc->design().slots[1].id;
+  w.tools().selection()->clear();
+  w.tools().selection()->add(g);
+  QApplication::processEvents();
+  EXPECT_NE(w.properties().panel()->field("xm [mm]"), nullptr);
+  EXPECT_EQ(w.properties().panel()->field("Radius [mm]"), nullptr);
+  auto* shape = qobject_cast<QComboBox*>(w.properties().panel()->field("Shape"));
+  ASSERT_TRUE(shape);
+  shape->activated(0);
+  EXPECT_FALSE(doc->design().slot(g)->arc());
+  EXPECT_EQ(doc->design().slot(g)->z.size(), 2u);
+  EXPECT_TRUE(doc->solved()) << doc->solveStatus().message;
+  shape = qobject_cast<QComboBox*>(w.properties().panel()->field("Shape"));
+  ASSERT_TRUE(shape);
+  shape->activated(1);
+  EXPECT_TRUE(doc->design().slot(g)->arc());
+  EXPECT_EQ(doc->design().slot(g)->z.size(), 3u);
+  EXPECT_TRUE(doc->solved()) << doc->solveStatus().message;
+  // The slot along z: its chord has no x, y to bend off.
+  w.tools().selection()->clear();
+  w.tools().selection()->add(z);
+  QApplication::processEvents();
+  const std::string kept = serializeMechanism(doc->design());
+  shape = qobject_cast<QComboBox*>(w.properties().panel()->field("Shape"));
+  ASSERT_TRUE(shape);
+  shape->activated(1);
+  EXPECT_EQ(serializeMechanism(doc->design()), kept);
+  shot(&w, "ground_arc_on_edge_panel");
 }
 
 // The gear-four-bar example at a known zoom: the pinion on ground.I (-45, 0), pitch radius 15,

@@ -329,11 +329,7 @@ TEST(OptimizeDialog, TheShakingMomentLoweredByACounterweight) {
 // crank and rocker, gravity across both planes) balanced for the peak of |f| in the world,
 // applied as one undo step whose design feels the peak reported.
 TEST(OptimizeDialog, ACounterweightOnAMachineInSpace) {
-  Mechanism m = test::example("rssr-crank-rocker");
-  m.body(m.bodyNamed("crank")->id)->mass = Mass{0.3, Vec2(10, 3), 60, ""};
-  m.body(m.bodyNamed("rocker")->id)->mass =
-      Mass{0.2, m.point(*m.findPoint("rocker.C"))->pos, 90, ""};
-  m.gravity = Vec2(0, -9.81);
+  Mechanism m = test::rssrWithMasses();
   QTemporaryDir dir;
   const QString path = dir.filePath("rssr.linkage.json");
   ASSERT_TRUE(saveMechanismFile(m, path.toStdString()).ok);
@@ -368,11 +364,7 @@ TEST(OptimizeDialog, ACounterweightOnAMachineInSpace) {
 // On a machine in space the shaking moment is |M| about the world's origin: offered after fz,
 // lowered by the rod's length, the row named as on a planar machine.
 TEST(OptimizeDialog, TheShakingMomentOnAMachineInSpace) {
-  Mechanism m = test::example("rssr-crank-rocker");
-  m.body(m.bodyNamed("crank")->id)->mass = Mass{0.3, Vec2(10, 3), 60, ""};
-  m.body(m.bodyNamed("rocker")->id)->mass =
-      Mass{0.2, m.point(*m.findPoint("rocker.C"))->pos, 90, ""};
-  m.gravity = Vec2(0, -9.81);
+  Mechanism m = test::rssrWithMasses();
   QTemporaryDir dir;
   const QString path = dir.filePath("rssr.linkage.json");
   ASSERT_TRUE(saveMechanismFile(m, path.toStdString()).ok);

@@ -45,8 +45,9 @@ void addName(Form& form, SlotId id) {
       });
 }
 
-// Straight or arc: an arc is bent through a point off the middle of the chord (a quarter of its
-// length out), a straight slot keeps the arc's ends.
+// Straight or arc (bendSlot, straightenSlot): an arc is bent through a point off the middle of
+// the chord (a quarter of its length out, in the slot's plane), a straight slot keeps the arc's
+// ends.
 void addShape(Form& form, SlotId id) {
   Document* doc = form.document();
   form.addChoice(
@@ -56,14 +57,15 @@ void addShape(Form& form, SlotId id) {
         QString why;
         form.change(
             Form::tr("Slot shape"),
-            [&](Mechanism& m, QString*) {
-              Slot& s = *m.slot(id);
+            [&](Mechanism& m, QString* why) {
               if (i == 0) {
-                s.mid.reset();
-              } else if (!s.mid) {
-                s.mid = (s.p0 + s.p1) / 2 + perp(s.p1 - s.p0) / 4;
+                straightenSlot(m, id);
+                return true;
               }
-              return true;
+              std::string problem;
+              if (bendSlot(m, id, &problem)) return true;
+              if (why) *why = QString::fromStdString(problem);
+              return false;
             },
             &why);
       });
@@ -77,7 +79,7 @@ bool setSlot(Form& form, SlotId id, const Vec2& p0, const std::optional<Vec2>& m
   probe.p1 = p1;
   probe.mid = mid;
   std::string problem;
-  if (!guideOf(probe, &problem)) {
+  if (!soundSlot(probe, &problem)) {
     *why = QString::fromStdString(problem);
     return false;
   }
@@ -173,7 +175,9 @@ void fill(Form& form, const FormTarget& t) {
   addShape(form, t.slot);
   if (m.slot(t.slot)->arc()) {
     addArcPoints(form, t.slot);
-    addArcCircle(form, t.slot);
+    // Its circle in x, y: none for the ground's arc seen edge on (in a plane square to the
+    // drawing, its points written in the world).
+    if (guideOf(*m.slot(t.slot))) addArcCircle(form, t.slot);
   } else {
     addEnds(form, t.slot);
   }

@@ -56,6 +56,13 @@ JointId addCoupling(Mechanism& m, BodyId a, BodyId b, double ratio, std::string*
 std::vector<BodyId> pivotsOf(const Mechanism& m, BodyId body);
 // An arc slot from p0 through mid to p1 on a body; none when the three points are on a line.
 SlotId addBodyArcSlot(Mechanism& m, BodyId body, const Vec2& p0, const Vec2& mid, const Vec2& p1);
+// A straight slot bent into an arc through a point a quarter of its length off its middle, in
+// the plane it lies in (the ground's written in the world: its block's plane, the first joint
+// running in it); refused with `why` when that leaves no bend (a chord along the plane's
+// normal). And an arc made straight between its ends. Each keeps a z for every point written
+// with one.
+bool bendSlot(Mechanism& m, SlotId id, std::string* why = nullptr);
+void straightenSlot(Mechanism& m, SlotId id);
 // Makes a pin the driver (its ground side, if it has one, becomes `a`, so the body turns
 // relative to the frame); keeps the rpm and direction of a previous driver.
 bool setDriver(Mechanism& m, JointId pin, std::string* why = nullptr);

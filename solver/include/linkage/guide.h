@@ -45,6 +45,11 @@ struct Guide {
 // three points on one line (or so nearly that the radius exceeds 1e12 mm).
 std::optional<Guide> guideOf(const Slot& s, std::string* why = nullptr);
 
+// Whether a slot has a curve where it lies, with `why` when not: the ground's ends written with
+// z (a machine in space) in the world, so that a slot along z or an arc in a plane square to the
+// drawing is sound though its x, y alone are not; any other slot as guideOf reads it.
+bool soundSlot(const Slot& s, std::string* why = nullptr);
+
 // The circle through three points: false when they are on one line.
 bool circleThrough(const Vec2& a, const Vec2& b, const Vec2& c, Vec2& centre, double& radius);
 

@@ -69,6 +69,7 @@ struct Dimension {
     Vec2 p0 = Vec2::Zero(), p1 = Vec2::Zero();  // d(its ends) per unit
     double z0 = 0, z1 = 0;                      // d(the ground's ends' z) per unit, in space
     std::optional<Vec2> mid = std::nullopt;     // an arc's: d(its point on the way) per unit
+    double zm = 0;                              // d(the ground's arc's z on the way), in space
   };
   std::vector<SlotMove> slots;
   JointId ratioOf;  // a gear whose ratio it is

@@ -6,6 +6,7 @@
 // plus that move in the drawing (Sensitivity::point for a point of a body drawn at a place).
 #pragma once
 
+#include "linkage/guide.h"
 #include "linkage/sensitivity.h"
 
 namespace linkage {
@@ -18,5 +19,10 @@ struct SlotChange {
 };
 
 SlotChange slotChange(const Mechanism& m, SlotId s, const Dimension& d);
+
+// An arc's centre's and radius's moves for moves dp of its three points p (start, on the way,
+// end), g the arc through them: what slotChange solves for each of a dimension's moves, in
+// whatever frame p, dp and g share (a class frame on a machine in space).
+void arcChange(const Guide& g, const Vec2 (&p)[3], const Vec2 (&dp)[3], Vec2& dc, double& drho);
 
 }  // namespace linkage

@@ -37,6 +37,11 @@ bool parallel(const Plane& a, const Plane& b);
 // A drawn point in the world (mm): a moving body's in its plane at its depth; the ground's at
 // (x, y, z), z 0 when not written.
 Vec3 worldOf(const Mechanism& m, const Point& p);
+// A ground slot's points in the world: p0, (an arc's mid,) p1 at their z (0 where written
+// [x, y]).
+std::vector<Vec3> slotInWorld(const Slot& s);
+// The circle through three points in space: false when they are on one line.
+bool circleThrough(const Vec3& a, const Vec3& b, const Vec3& c, Vec3& centre, double& radius);
 
 // Why the planes are not as the file format requires, "" when they are: axes not unit or not
 // perpendicular, "drawing" redefined, two of one name, a body on an unknown plane; named as the

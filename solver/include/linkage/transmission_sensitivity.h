@@ -26,10 +26,6 @@
 
 namespace linkage {
 
-// "" when j's derivatives below are computed on m; else why not, naming the angle: on a machine
-// in space an arc slot's (an arc's centre and radius are a planar machine's dimensions).
-std::string transmissionSensitivityRefusal(const Mechanism& m, const TransmissionJoint& j);
-
 // mu at k's pose, degrees (0 to 180; a rod's 0 to 90), and with sens (its at() done at this
 // pose) and d, d(mu)/d(dimension dim) in degrees per unit.
 double transmissionAngleSensitivity(const Kinematics& k, const TransmissionJoint& j,
