@@ -352,6 +352,14 @@ TEST(SensitivityPanel, AMachineInSpaceShowsTheWorldsXYAndZ) {
   EXPECT_EQ(panel.componentBox()->currentIndex(), 1);
 }
 
+// The RSSR with masses, in a file of its own.
+void openRssrWithMasses(Document& doc, QTemporaryDir& dir) {
+  Mechanism m = test::rssrWithMasses();
+  const QString path = dir.filePath("rssr.linkage.json");
+  ASSERT_TRUE(saveMechanismFile(m, path.toStdString()).ok);
+  ASSERT_TRUE(doc.open(path, nullptr));
+}
+
 // The shaking force (a design with masses: the drop feed): its x, y and the length of its
 // change per unit of each dimension, the library's (tests/test_optimize_shaking.cpp holds it to
 // a slider-crank's closed form) at each pose, the turn's largest computed once per component.
@@ -359,16 +367,9 @@ TEST(SensitivityPanel, AMachineInSpaceShowsTheWorldsXYAndZ) {
 // with masses, the library's derivatives (tests/test_spatial_force_sensitivity.cpp holds them to
 // changed designs).
 TEST(SensitivityPanel, TheShakingForceInSpace) {
-  Mechanism m = test::example("rssr-crank-rocker");
-  m.body(m.bodyNamed("crank")->id)->mass = Mass{0.3, Vec2(10, 3), 60, ""};
-  m.body(m.bodyNamed("rocker")->id)->mass =
-      Mass{0.2, m.point(*m.findPoint("rocker.C"))->pos, 90, ""};
-  m.gravity = Vec2(0, -9.81);
-  QTemporaryDir dir;
-  const QString path = dir.filePath("rssr.linkage.json");
-  ASSERT_TRUE(saveMechanismFile(m, path.toStdString()).ok);
   Document doc;
-  ASSERT_TRUE(doc.open(path, nullptr));
+  QTemporaryDir dir;
+  openRssrWithMasses(doc, dir);
   doc.setCrankDeg(70);
   SensitivityPanel panel(&doc);
   panel.resize(900, 400);
@@ -472,8 +473,8 @@ TEST(SensitivityPanel, TheShakingForce) {
   EXPECT_EQ(panel.pointBox()->findText("shaking force") >= 0, masses);
 }
 
-// The shaking moment (a planar machine's, after the reactions): the library's derivatives at two
-// crank angles, the turn's largest computed once; a machine in space has no such entry.
+// The shaking moment (after the reactions): the library's derivatives at two crank angles, the
+// turn's largest computed once; a machine without masses has no such entry.
 TEST(SensitivityPanel, TheShakingMoment) {
   Document doc;
   ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("drop-feed")), nullptr));
@@ -510,7 +511,83 @@ TEST(SensitivityPanel, TheShakingMoment) {
   shot(&panel, "shaking_moment_sensitivity");
   ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("overedge-machine")), nullptr));
   settle(panel);
-  EXPECT_LT(panel.pointBox()->findText("shaking moment"), 0);
+  EXPECT_LT(panel.pointBox()->findText("shaking moment"), 0);  // no masses
+}
+
+// On a machine in space the shaking moment is the world's (about its origin): each component
+// the component box chooses is the library's, and the length of the change is |dM|.
+TEST(SensitivityPanel, TheShakingMomentOnAMachineInSpace) {
+  Document doc;
+  QTemporaryDir dir;
+  openRssrWithMasses(doc, dir);
+  doc.setCrankDeg(70);
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  ASSERT_TRUE(choose(panel, "shaking moment"));
+  EXPECT_TRUE(panel.componentBox()->isEnabled());
+  Kinematics k = doc.kinematics();
+  k.setAccelerations(true);
+  Sensitivity s;
+  ASSERT_TRUE(s.prepare(k, dimensions(k.mechanism()), Sensitivity::Space::World).ok());
+  ASSERT_TRUE(s.at(k).ok());
+  ASSERT_EQ(panel.componentBox()->count(), 4);  // x, y, the length of the change, z
+  for (int which : {0, 1, 2, 3}) {
+    panel.componentBox()->setCurrentIndex(which);
+    Q_EMIT panel.componentBox()->activated(which);
+    settle(panel);
+    ASSERT_EQ(panel.bars().size(), s.dims().size());
+    double largest = 0;
+    for (const SensitivityPanel::Bar& b : panel.bars())
+      for (size_t d = 0; d < s.dims().size(); ++d)
+        if (s.dims()[d].name == b.dimension) {
+          // (to rounding: the panel's turn moved its own copy of the pose in between)
+          const Vec3 dm = shakingMomentSensitivity3(k, s, static_cast<int>(d));
+          const double want = which == 2 ? dm.norm() : dm[which == 3 ? 2 : which];
+          EXPECT_NEAR(b.now, want, 1e-12 * (1 + std::abs(want))) << b.dimension;
+          largest = std::max(largest, std::abs(b.now));
+        }
+    EXPECT_GT(largest, 1e-3) << which;
+  }
+  EXPECT_TRUE(panel.summary().startsWith("The frame feels a moment of ")) << panel.summary();
+  EXPECT_TRUE(panel.summary().contains("about the world's origin")) << panel.summary();
+  shot(&panel, "shaking_moment_sensitivity_space");
+}
+
+// A stroke on a machine in space along the world's axis the component box chooses (the length
+// of a change: y, as the command line's default): the library's derivatives along it.
+TEST(SensitivityPanel, AStrokeInSpaceAlongTheAxisChosen) {
+  Document doc;
+  ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("rssr-crank-rocker")), nullptr));
+  SensitivityPanel panel(&doc);
+  panel.resize(900, 400);
+  panel.show();
+  settle(panel);
+  ASSERT_TRUE(choose(panel, "rocker.C"));
+  panel.quantityBox()->setCurrentIndex(3);
+  Q_EMIT panel.quantityBox()->activated(3);
+  settle(panel);
+  EXPECT_TRUE(panel.componentBox()->isEnabled());
+  const Mechanism& m = doc.design();
+  const PointId C = *m.findPoint("rocker.C");
+  for (int which : {3, 0, 2}) {
+    panel.componentBox()->setCurrentIndex(which);
+    Q_EMIT panel.componentBox()->activated(which);
+    settle(panel);
+    const Vec3 along = which == 3 ? Vec3::UnitZ() : which == 0 ? Vec3::UnitX() : Vec3::UnitY();
+    const StrokeSensitivity want = strokeSensitivity(doc.kinematics(), C, along, dimensions(m));
+    ASSERT_TRUE(want.status.ok()) << want.status.message;
+    ASSERT_EQ(panel.bars().size(), want.dims.size());
+    for (const SensitivityPanel::Bar& b : panel.bars())
+      for (size_t d = 0; d < want.dims.size(); ++d)
+        if (want.dims[d].name == b.dimension) EXPECT_EQ(b.now, want.derivative[d]) << b.dimension;
+    const QString head = which == 2   ? "The stroke ("
+                         : which == 3 ? "The stroke along z ("
+                                      : "The stroke along x (";
+    EXPECT_TRUE(panel.summary().startsWith(head)) << panel.summary().toStdString();
+  }
+  shot(&panel, "stroke_sensitivity_space");
 }
 
 // A gear's reaction (its tooth force, restated where the teeth meet): the library's derivatives

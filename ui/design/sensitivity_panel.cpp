@@ -141,7 +141,7 @@ void SensitivityPanel::fillPoints() {
                    .arg(QString::fromUtf8(kindOf(m.joints[j]).name),
                         QString::fromStdString(m.pointLabel(m.joints[j].a)));
   }
-  momentAt_ = masses && !isSpatial(m) ? static_cast<int>(watched.size()) : -1;
+  momentAt_ = masses ? static_cast<int>(watched.size()) : -1;
   if (momentAt_ >= 0) watched << tr("shaking moment");
   if (ids == points_ && watched == clearances_) return;
   points_ = ids;
@@ -202,14 +202,15 @@ void SensitivityPanel::compute() {
   offerZ(isSpatial(k.mechanism()));
   const int quantity = quantity_->currentIndex(), which = component_->currentIndex();
   Sensitivity s;
-  // The world's x, y, z (a machine in space's too); a stroke in space is along the world's y.
+  // The world's x, y, z (a machine in space's too).
   if (Status st = s.prepare(k, dimensions(k.mechanism()), Sensitivity::Space::World); !st.ok()) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
     return;
   }
-  component_->setEnabled(quantity != kStroke);  // a stroke is along its slot, else y
+  // A planar stroke is along its slot, else y; in space along the world's axis chosen.
+  component_->setEnabled(quantity != kStroke || isSpatial(k.mechanism()));
   if (quantity == kStroke) {
-    strokeBars(k, p);
+    strokeBars(k, p, which);
     return;
   }
   const size_t n = s.dims().size();
@@ -288,9 +289,12 @@ void SensitivityPanel::rank() {
                    [](const Bar& a, const Bar& b) { return a.peak > b.peak; });
 }
 
-void SensitivityPanel::strokeBars(const Kinematics& k, PointId p) {
-  const StrokeSensitivity s =
-      strokeSensitivity(k, p, strokeDirection(k.mechanism(), p), dimensions(k.mechanism()));
+void SensitivityPanel::strokeBars(const Kinematics& k, PointId p, int which) {
+  // In space along x, y or z (the length of a change has no direction: y, as the command line).
+  const bool axis = isSpatial(k.mechanism()) && which != kLength;
+  const Vec3 along =
+      axis ? Vec3(Vec3::Unit(which == kZ ? 2 : which)) : strokeDirection(k.mechanism(), p);
+  const StrokeSensitivity s = strokeSensitivity(k, p, along, dimensions(k.mechanism()));
   if (!s.status.ok()) {
     showNothing(QString::fromStdString(s.status.message));
     return;
@@ -298,13 +302,19 @@ void SensitivityPanel::strokeBars(const Kinematics& k, PointId p) {
   if (!showValues(s.dims, s.derivative,
                   tr("change of the stroke per unit of the dimension (mm, degree, ratio)")))
     return;
-  summary_->setText(tr("The stroke (%1 mm, between crank %2° and %3°) changes most with %4 "
+  const QString direction = axis ? tr(" along %1")
+                                       .arg(which == kZ ? QStringLiteral("z")
+                                            : which     ? QStringLiteral("y")
+                                                        : QStringLiteral("x"))
+                                 : QString();
+  summary_->setText(tr("The stroke%6 (%1 mm, between crank %2° and %3°) changes most with %4 "
                        "(%5 per unit)")
                         .arg(s.limits.stroke, 0, 'f', 4)
                         .arg(s.limits.minDeg, 0, 'f', 1)
                         .arg(s.limits.maxDeg, 0, 'f', 1)
                         .arg(QString::fromStdString(bars_[0].dimension))
-                        .arg(bars_[0].now, 0, 'g', 4));
+                        .arg(bars_[0].now, 0, 'g', 4)
+                        .arg(direction));
 }
 
 void SensitivityPanel::clearanceBars(int n) {
@@ -357,10 +367,7 @@ void SensitivityPanel::transmissionBars(int n) {
   Kinematics k = doc_->kinematics();
   Sensitivity s;
   // In space each angle lies in its plane class's frame, which the world's sensitivities give.
-  const std::string why = transmissionSensitivityRefusal(m, j);
-  if (Status st = why.empty() ? s.prepare(k, dimensions(k.mechanism()), Sensitivity::Space::World)
-                              : Status::badModel(why);
-      !st.ok()) {
+  if (Status st = s.prepare(k, dimensions(k.mechanism()), Sensitivity::Space::World); !st.ok()) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
     return;
   }
@@ -438,26 +445,46 @@ void SensitivityPanel::shakingBars(int which) {
 void SensitivityPanel::momentBars() {
   Kinematics k = doc_->kinematics();
   k.setAccelerations(true);
+  // In space the moment is the world's: its x, y, z or the length of its change.
+  const bool space = isSpatial(k.mechanism());
+  offerZ(space);
+  component_->setEnabled(space);
+  const int which = space ? component_->currentIndex() : kZ;
   Sensitivity s;
-  if (Status st = s.prepare(k, dimensions(k.mechanism())); !st.ok()) {
+  if (Status st = s.prepare(k, dimensions(k.mechanism()),
+                            space ? Sensitivity::Space::World : Sensitivity::Space::Refuse);
+      !st.ok()) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
     return;
   }
-  auto part = [](const Sensitivity& ss, const Kinematics& kk, int d) {
-    return shakingMomentSensitivity(kk, ss, d);
+  // A planar machine's moment is about z (shakingMomentSensitivity3's (0, 0, dM) there).
+  auto part = [which](const Sensitivity& ss, const Kinematics& kk, int d) {
+    const Vec3 m = shakingMomentSensitivity3(kk, ss, d);
+    return which == kLength ? m.norm() : m[which == kZ ? 2 : which];
   };
   const bool here = s.at(k).ok();
-  // The shaking force's key (-2) with a component it has not: the reactions' keys are -3 - j.
-  const std::vector<double>& peak = turnPeaks({PointId{}, -2, 9}, s, k, part);
+  // The shaking force's key (-2) with components it has not (9 on): the reactions' are -3 - j.
+  const std::vector<double>& peak = turnPeaks({PointId{}, -2, 9 + which}, s, k, part);
   turnBars(
       s.dims(), here, [&](int d) { return part(s, k, d); }, peak, tr("N m"));
   if (!here || bars_.empty()) return;
-  Vec2 F;
-  double moment = 0;
-  shaking(k, F, moment);
-  summary_->setText(tr("The frame feels a moment of %1 N m here (about the drawing's origin); %2 "
-                       "changes it most (%3 N m per unit here, up to %4 N m over a turn)")
-                        .arg(moment, 0, 'g', 4)
+  Vec3 F, moment;
+  if (space) {
+    shaking(k, F, moment);
+  } else {
+    Vec2 planar;
+    shaking(k, planar, moment.z());
+  }
+  const QString about =
+      space ? tr("%1 N m here (about the world's origin; mx %2, my %3, mz %4)")
+                  .arg(moment.norm(), 0, 'g', 4)
+                  .arg(moment.x(), 0, 'g', 4)
+                  .arg(moment.y(), 0, 'g', 4)
+                  .arg(moment.z(), 0, 'g', 4)
+            : tr("%1 N m here (about the drawing's origin)").arg(moment.z(), 0, 'g', 4);
+  summary_->setText(tr("The frame feels a moment of %1; %2 changes it most (%3 N m per unit "
+                       "here, up to %4 N m over a turn)")
+                        .arg(about)
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4)
                         .arg(bars_[0].peak, 0, 'g', 4));

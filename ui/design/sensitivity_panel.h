@@ -64,7 +64,7 @@ class SensitivityPanel : public DockPanel {
   void draw();
   void showNothing(const QString& why);
   // The stroke's derivatives (the envelope theorem at its limit positions) as the bars.
-  void strokeBars(const Kinematics& k, PointId p);
+  void strokeBars(const Kinematics& k, PointId p, int which);
   // The least distance of the file's clearance n (linkage/clearance_sensitivity.h).
   void clearanceBars(int n);
   // A window's first interval's start or end (linkage/window_sensitivity.h): end n of the list.
@@ -75,7 +75,8 @@ class SensitivityPanel : public DockPanel {
   // The shaking force's component `which` (x, y, the length of the change;
   // linkage/shaking_sensitivity.h), at the crank angle and the turn's largest.
   void shakingBars(int which);
-  // The shaking moment about the drawing's origin (a planar machine's), likewise.
+  // The shaking moment (about the drawing's origin; in space the world's, the component box's
+  // component), likewise.
   void momentBars();
   // Joint m.joints[j]'s reaction's component `which` (linkage/force_sensitivity.h), likewise.
   void reactionBars(size_t j, int which);
