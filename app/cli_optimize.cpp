@@ -74,9 +74,10 @@ those that found the best (within 1e-9 mm^2 + 1e-6 of it). A design infeasible a
 its before fields empty.
 
 A machine in space (planes, docs/spatial.md): any dimension `sensitivity` lists may vary (depths,
-ground z, ball rods' lengths, planes' origins), and counterweights for the shaking force; the
-targets are in the world (a transmission angle in its plane); the shaking moment and a
-counterweight's share of a reaction are refused by name (not computed in space yet).
+ground z, ball rods' lengths, planes' origins), and counterweights; the
+targets are in the world (a transmission angle in its plane), a reaction in its plane (a ball
+rod's tension) with the counterweights' shares; counterweights against the shaking moment are
+refused by name (not computed in space yet).
 
 Exit status: 0 done, 1 the --out file could not be written, 2 bad input (an unknown dimension or
 point, bad bounds or target, no start that assembles and turns fully).

@@ -192,16 +192,29 @@ std::vector<int> involved(const Mechanism& m, int ji) {
 
 // A counterweight's generalized forces on its body (system index i), N and N mm: columns of a
 // mass, a static moment and the |s|^2 / m of its moment of inertia about the pivot, which act
-// linearly (put's three numbers).
+// linearly (put's three numbers). On a machine in space in the body's class frame, as the
+// solve holds it: its moment turned from its plane into that frame, gravity's part in it.
 struct CounterweightForces {
   const Kinematics& k;
   const Counterweight& cw;
   int i;
   Eigen::MatrixXd& Q;
+  Vec2 g = Vec2::Zero();  // m/s^2, in the class frame
+  Rot toClass;            // the body's plane into its class frame
+  CounterweightForces(const Kinematics& kin, const Counterweight& c, int index, Eigen::MatrixXd& q)
+      : k(kin), cw(c), i(index), Q(q) {
+    const Mechanism& m = k.mechanism();
+    g = m.gravity.value_or(Vec2::Zero());
+    if (!isSpatial(m)) return;
+    const System& sys = internal::state(k).sys;
+    const Plane& f = sys.frames[sys.classOf[i]];
+    g = Vec2(m.gravityWorld().dot(f.xAxis), m.gravityWorld().dot(f.yAxis));
+    toClass = planeClasses(m).of(m.body(cw.body)->plane).rot;
+  }
   void put(int col, double kg, const Vec2& moment, double spin) const {
     const Rot R = Rot::of(k.bodyAngle(cw.body));
     const double w = k.bodyOmega(cw.body), alpha = k.bodyAlpha(cw.body);
-    const Vec2 g = k.mechanism().gravity.value_or(Vec2::Zero()), Rs = R * moment;
+    const Vec2 Rs = R * (toClass * moment);
     const Vec2 arm = k.position(cw.pivot) - Vec2(k.q().segment<2>(3 * i));
     const Vec2 F = kg * g + 1e-3 * (w * w * Rs - alpha * perp(Rs));  // its weight and inertia
     Q.block<2, 1>(3 * i, col) = F;
@@ -313,15 +326,11 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
   Setup su;
   if (out.status = setUp(k0, joint, su); !out.status.ok()) return out;
   const Kinematics& k = su.k;
-  if (isSpatial(k.mechanism()))
-    return out.status = Status::badModel(
-               "a counterweight's share of a reaction on a machine in space is not computed"),
-           out;
   const KinematicsState& st = internal::state(k);
   const int i = st.sys.bodyIndex(cw.body);
   if (i < 0) return out.status = Status::badModel("a counterweight on no moving body"), out;
   Eigen::MatrixXd dQ = Eigen::MatrixXd::Zero(st.sys.nCoords(), 3);
-  const CounterweightForces put{k, cw, i, dQ};
+  const CounterweightForces put(k, cw, i, dQ);
   const Vec2 s = cw.staticMoment;
   const double norm = s.norm(), R = cw.maxRadiusMm;
   put.put(0, cw.kg, s, cw.kg > 0 ? s.squaredNorm() / cw.kg : 0.0);

@@ -65,7 +65,7 @@ struct Shaker {
     if (joint) {  // the design's reaction and the counterweights' shares (the forces add)
       Vec2 F = part(solver.compute(k).joints[t.index]);
       for (size_t c = 0; c < vars.counterweights.size(); ++c)
-        F += counterweightShare(k, joint, placed(c)).share.force;
+        F += part(counterweightShare(k, joint, placed(c)).share);
       return Vec3(F.x(), F.y(), 0);
     }
     Vec3 F = Vec3::Zero(), moment3;
@@ -163,7 +163,7 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
     for (size_t v = 0; v < out.size() && status.ok(); ++v) {
       const CounterweightShare sh = counterweightShare(k, joint, placed(vars.cw[v]));
       status = sh.status;
-      out[v] = e.dot(lift(vars.axis[v] == 0 ? sh.perX.force : sh.perY.force));
+      out[v] = e.dot(lift(part(vars.axis[v] == 0 ? sh.perX : sh.perY)));
     }
     return out;
   }

@@ -137,11 +137,6 @@ Status mapVariables(const Mechanism& base, const Mechanism& design, const Optimi
         "a reaction over counterweights and dimensions together is not differentiated yet (a "
         "counterweight's share changing with a dimension): vary the dimensions first, then the "
         "counterweights on the design found");
-  if (!out.counterweights.empty() && isSpatial(base) && reaction)
-    return Status::badModel(
-        "a counterweight's share of a reaction on a machine in space is not computed yet: "
-        "counterweights there are varied for the shaking force (or placed exactly by "
-        "linkage-cli balance)");
   return Status::success();
 }
 

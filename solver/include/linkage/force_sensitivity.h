@@ -54,10 +54,12 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k, JointId joint,
 // the share's derivatives with respect to the static moment's x and y, its mass the least that
 // gives the moment at the body's reach (|s| / R, as optimize's counterweight variables take it).
 // The reactions are linear in the forces (J^T lambda = Q with the pose held), so a mass adds
-// J^-T of its weight and inertia: m g - m a at its place, a point mass's. A planar machine's.
+// J^-T of its weight and inertia: m g - m a at its place, a point mass's. On a machine in space
+// in the body's class frame (gravity's part in it): the in-plane force, couple and a ball rod's
+// tension; a bearing's out-of-plane parts (normal force, tilts) are not in the share.
 struct CounterweightShare {
   Status status;
-  JointReaction share;       // force, couple and contact only (`at` is the joint's)
+  JointReaction share;       // force, couple, contact and axial only (`at` is the joint's)
   JointReaction perX, perY;  // d(share)/d(static moment's x and y), per kg mm
 };
 

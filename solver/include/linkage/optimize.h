@@ -17,8 +17,8 @@
 // strokeDirection in linkage/stroke_sensitivity.h, or a direction given), a position and a path
 // (world x, y and, if given, z), a window's end, a clearance, a reaction, a transmission angle
 // (in its plane) and the shaking force over dimensions or counterweights (each turning in its
-// plane); the shaking moment and a counterweight's share of a reaction are refused by name
-// (their derivatives in space are not computed yet).
+// plane); counterweights against the shaking moment are refused by name (not computed in space
+// yet).
 #pragma once
 
 #include <cstdint>

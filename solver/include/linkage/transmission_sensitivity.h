@@ -14,7 +14,8 @@
 // On a machine in space each angle lies in its link's plane class (the sensitivities prepared
 // with Sensitivity::Space::World: point() gives a moving point's move in that class's frame);
 // a rod's slot is read there (slotLine in linkage/transmission.h), a ground slot's move with its
-// ends' z seen along the class's normal.
+// ends' z seen along the class's normal, and an arc's centre and its move in that frame too
+// (SpaceMoves::arcMove: from its three points' moves there).
 // Degrees per unit of the dimension (mm, degree or ratio).
 #pragma once
 
