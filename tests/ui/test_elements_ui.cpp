@@ -199,9 +199,10 @@ TEST(ElementsUi, SlotToolDrawsAnArcAndThePanelTypesItsRadius) {
 }
 
 // A ground arc written in the world in a plane square to the drawing (its x, y alone are three
-// points on a line): selected, the panel offers its points but no circle in x, y (there is none
-// to type), and its shape made straight and an arc again keeps a z for each point, the machine
-// solved throughout; a bend off a chord along z, which would have no bulge, is refused.
+// points on a line): selected, the panel offers its points and their z but no circle in x, y
+// (there is none to type), and its shape made straight and an arc again keeps a z for each
+// point, the machine solved throughout; a bend off a chord along z, which would have no bulge,
+// is refused.
 TEST(ElementsUi, AGroundArcSquareToTheDrawingInThePanel) {
   const std::string text = R"({"format": "linkage", "version": 1, "name": "arc on edge",
   "planes": {"side": {"origin": [0, 0, 0], "x_axis": [0, 0, -1], "y_axis": [0, 1, 0]}},
@@ -236,6 +237,10 @@ TEST(ElementsUi, AGroundArcSquareToTheDrawingInThePanel) {
   QApplication::processEvents();
   EXPECT_NE(w.properties().panel()->field("xm [mm]"), nullptr);
   EXPECT_EQ(w.properties().panel()->field("Radius [mm]"), nullptr);
+  // Its points' z typed: the middle's moved along the plane (x = 0), solved again.
+  type(w, "zm [mm]", "8");
+  EXPECT_EQ(doc->design().slot(g)->z, (std::vector<double>{0, 8, 0}));
+  EXPECT_TRUE(doc->solved()) << doc->solveStatus().message;
   auto* shape = qobject_cast<QComboBox*>(w.properties().panel()->field("Shape"));
   ASSERT_TRUE(shape);
   shape->activated(0);

@@ -19,10 +19,10 @@ bool takes(const Mechanism& m, const FormTarget& t) {
   return t.slot && m.contains(t.slot);
 }
 
-// An arc has other rows than a straight slot.
+// An arc has other rows than a straight slot, a slot written in the world a z for each point.
 QString shape(const Mechanism& m, const FormTarget& t) {
   const Slot* sl = m.slot(t.slot);
-  return QStringLiteral("%1%2").arg(sl->id.value).arg(sl->arc() ? " arc" : "");
+  return QStringLiteral("%1%2 %3").arg(sl->id.value).arg(sl->arc() ? " arc" : "").arg(sl->z.size());
 }
 
 void addName(Form& form, SlotId id) {
@@ -71,13 +71,8 @@ void addShape(Form& form, SlotId id) {
       });
 }
 
-// Sets the slot's points (mid only for an arc) as one edit, refused when they make no curve.
-bool setSlot(Form& form, SlotId id, const Vec2& p0, const std::optional<Vec2>& mid, const Vec2& p1,
-             QString* why) {
-  Slot probe = *form.document()->design().slot(id);
-  probe.p0 = p0;
-  probe.p1 = p1;
-  probe.mid = mid;
+// The slot as `probe` has it, as one edit, refused when it makes no curve.
+bool applySlot(Form& form, SlotId id, const Slot& probe, QString* why) {
   std::string problem;
   if (!soundSlot(probe, &problem)) {
     *why = QString::fromStdString(problem);
@@ -90,6 +85,38 @@ bool setSlot(Form& form, SlotId id, const Vec2& p0, const std::optional<Vec2>& m
         return true;
       },
       why);
+}
+
+// Sets the slot's points (mid only for an arc), its z kept.
+bool setSlot(Form& form, SlotId id, const Vec2& p0, const std::optional<Vec2>& mid, const Vec2& p1,
+             QString* why) {
+  Slot probe = *form.document()->design().slot(id);
+  probe.p0 = p0;
+  probe.p1 = p1;
+  probe.mid = mid;
+  return applySlot(form, id, probe, why);
+}
+
+// The ground's slot written in the world: each point's z (in the order p0, (mid,) p1).
+void addDepths(Form& form, SlotId id) {
+  Document* doc = form.document();
+  const size_t n = doc->design().slot(id)->z.size();
+  for (size_t k = 0; k < n; ++k)
+    form.addNumber(
+        QString::fromLatin1(k == 0       ? "z0"
+                            : k + 1 == n ? "z1"
+                                         : "zm"),
+        [doc, id, k] {
+          const std::vector<double>& z = doc->design().slot(id)->z;
+          return k < z.size() ? z[k] : NAN;
+        },
+        [&form, doc, id, k](double v, QString* why) {
+          Slot probe = *doc->design().slot(id);
+          if (k >= probe.z.size()) return false;
+          probe.z[k] = v;
+          return applySlot(form, id, probe, why);
+        },
+        Form::tr("mm"));
 }
 
 void addEnds(Form& form, SlotId id) {
@@ -175,12 +202,13 @@ void fill(Form& form, const FormTarget& t) {
   addShape(form, t.slot);
   if (m.slot(t.slot)->arc()) {
     addArcPoints(form, t.slot);
-    // Its circle in x, y: none for the ground's arc seen edge on (in a plane square to the
-    // drawing, its points written in the world).
-    if (guideOf(*m.slot(t.slot))) addArcCircle(form, t.slot);
+    // Its circle in x, y: none for the ground's arc written in the world (in a plane of its
+    // own, whose circle its x, y do not show).
+    if (m.slot(t.slot)->z.empty()) addArcCircle(form, t.slot);
   } else {
     addEnds(form, t.slot);
   }
+  addDepths(form, t.slot);
 }
 
 }  // namespace
