@@ -12,10 +12,12 @@
 #include <tuple>
 
 #include "complex_step.h"
+#include "examples.h"
 #include "linkage/balance.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_sensitivity.h"
 #include "mechanisms.h"
+#include "reaction_checks.h"
 
 namespace linkage {
 namespace {
@@ -258,6 +260,23 @@ TEST_P(ForceSensitivity, ACounterweightsShareIsTheMassWrittenIn) {
     }
   }
   EXPECT_GT(largest, 1.0);  // the counterweight moves the reactions by newtons
+}
+
+// The share's derivatives by every dimension (the counterweight fixed in its body's drawing)
+// against the share on the changed designs: on the drop feed's feed rocker (a driven crank's
+// share is its own weight and spin whatever the dimensions), with gravity and without.
+TEST(ForceSensitivityShare, ACounterweightsShareMovesAsChangedDesignsDo) {
+  for (double gy : {-9.81, 0.0}) {
+    Mechanism m = test::example("drop-feed");
+    m.gravity = Vec2(0, gy);
+    Counterweight cw;
+    ASSERT_TRUE(counterweightOn(m, m.bodyNamed("feedrock")->id, cw).ok());
+    cw.staticMoment = Vec2(1.5, -2);
+    cw.kg = cw.staticMoment.norm() / cw.maxRadiusMm;
+    double largest = 0;
+    test::expectShareMovesAsChangedDesignsDo(m, cw, largest);
+    EXPECT_GT(largest, 1e-2) << gy;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Gravity, ForceSensitivity, ::testing::Values(0.0, -9.81));

@@ -306,10 +306,6 @@ TEST(OptimizeShaking, RefusesWhatItCannotVary) {
     EXPECT_FALSE(r.status.ok());
     EXPECT_NE(r.status.message.find(words), std::string::npos) << r.status.message;
   };
-  OptimizeSpec mixed = counterweightSpec({"lowershaft"}, BalanceMeasure::Fx);
-  mixed.variables.push_back({dimensions(k.mechanism()).front().name, 1, 100});
-  mixed.targets[0].kind = OptTarget::Kind::Force;  // a reaction's share is not differentiated
-  refused(mixed, "a reaction over counterweights and dimensions together");
   OptimizeSpec twice = counterweightSpec({"lowershaft"}, BalanceMeasure::Fx);
   twice.variables.push_back(twice.variables.front());
   refused(twice, "given twice");

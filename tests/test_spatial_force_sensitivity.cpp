@@ -17,7 +17,9 @@
 #include "linkage/optimize.h"
 #include "linkage/optimize_text.h"
 #include "linkage/shaking_sensitivity.h"
+#include "linkage/space.h"
 #include "optimize_checks.h"
+#include "reaction_checks.h"
 
 namespace linkage {
 namespace {
@@ -318,31 +320,32 @@ TEST(SpatialForceSensitivity, CounterweightsInSpaceAgainstBalance) {
   EXPECT_NEAR(F.norm(), peak, 1e-9 * peak);
 }
 
-// The loaded RSSR with its crank drawn in a plane turned 35 degrees in the drawing's class (the
+// The loaded RSSR with one body drawn in a plane turned 35 degrees in its own plane's class (the
 // same machine): a counterweight's moment on it is turned into the class frame.
-Mechanism turnedCrank() {
+Mechanism turned(const char* name) {
   Mechanism m = loadedRssr();
+  Body* body = m.body(m.bodyNamed(name)->id);
+  const Plane own = planeNamed(m, body->plane) ? *planeNamed(m, body->plane) : drawingPlane();
   const double a = 35 * M_PI / 180;
   const Rot back = Rot::of(-a);
-  Plane turned;
+  Plane turned = own;
   turned.name = "turned";
-  turned.xAxis = Vec3(std::cos(a), std::sin(a), 0);
-  turned.yAxis = Vec3(-std::sin(a), std::cos(a), 0);
+  turned.xAxis = std::cos(a) * own.xAxis + std::sin(a) * own.yAxis;
+  turned.yAxis = -std::sin(a) * own.xAxis + std::cos(a) * own.yAxis;
   m.planes->push_back(turned);
-  Body* crank = m.body(m.bodyNamed("crank")->id);
-  crank->plane = "turned";
+  body->plane = "turned";
   for (Point& q : m.points)
-    if (q.body == crank->id) q.pos = back * q.pos;
-  crank->mass->com = back * crank->mass->com;
+    if (q.body == body->id) q.pos = back * q.pos;
+  body->mass->com = back * body->mass->com;
   return m;
 }
 
 // A counterweight's share of every joint's reaction on a machine in space (the in-plane force,
 // the couple, the ball rod's tension) is the design with the counterweight written in as a mass
 // of its body, solved by the dynamics again: on the RSSR's crank and its rocker (in the inclined
-// plane, gravity across both), and on the crank drawn in a plane turned in its class.
+// plane, gravity across both), and on each drawn in a plane turned in its class.
 TEST(SpatialForceSensitivity, ACounterweightsShareIsTheMassWrittenIn) {
-  for (const Mechanism& m : {loadedRssr(), turnedCrank()})
+  for (const Mechanism& m : {loadedRssr(), turned("crank"), turned("rocker")})
     for (const char* body : {"crank", "rocker"}) {
       Counterweight cw;
       ASSERT_TRUE(counterweightOn(m, m.bodyNamed(body)->id, cw).ok()) << body;
@@ -372,6 +375,22 @@ TEST(SpatialForceSensitivity, ACounterweightsShareIsTheMassWrittenIn) {
       }
       EXPECT_GT(largest, 1e-3) << body;
     }
+}
+
+// The share's derivatives by every dimension on a machine in space (the planes' origins aside:
+// they carry masses), against the share on the changed designs: on the RSSR's rocker, as drawn
+// and in a plane turned in its class (the driven crank's share is its own weight and spin
+// whatever the dimensions).
+TEST(SpatialForceSensitivity, ACounterweightsShareMovesAsChangedDesignsDo) {
+  for (const Mechanism& m : {loadedRssr(), turned("rocker")}) {
+    Counterweight cw;
+    ASSERT_TRUE(counterweightOn(m, m.bodyNamed("rocker")->id, cw).ok());
+    cw.staticMoment = Vec2(1.5, -2);
+    cw.kg = cw.staticMoment.norm() / cw.maxRadiusMm;
+    double largest = 0;
+    test::expectShareMovesAsChangedDesignsDo(m, cw, largest, 90);
+    EXPECT_GT(largest, 1e-3);
+  }
 }
 
 // A reaction over counterweights on a machine in space (their shares added to the design's

@@ -220,6 +220,27 @@ struct CounterweightForces {
     Q.block<2, 1>(3 * i, col) = F;
     Q(3 * i + 2, col) = cross(arm, F) + cross(Rs, g) - 1e-3 * alpha * spin;
   }
+  // The same forces' change along dimension dim (its mass, moment and spin held): the body
+  // turned by dTheta, its spin and spin's rate changed, the pivot's arm from the body's frame
+  // origin moved.
+  //   dF = 1e-3 (2 w dw Rs + w^2 dRs - dalpha perp(Rs) - alpha perp(dRs)), dRs = dTheta perp(Rs)
+  //   dM = darm x F + arm x dF + dRs x g - 1e-3 dalpha spin
+  Eigen::VectorXd change(const Sensitivity& s, int dim, double dTheta, double kg,
+                         const Vec2& moment, double spin) const {
+    const Rot R = Rot::of(k.bodyAngle(cw.body));
+    const double w = k.bodyOmega(cw.body), alpha = k.bodyAlpha(cw.body);
+    const double dw = s.angularVelocity(k, cw.body, dim),
+                 da = s.angularAcceleration(k, cw.body, dim);
+    const Vec2 Rs = R * (toClass * moment), dRs = dTheta * perp(Rs);
+    const Vec2 arm = k.position(cw.pivot) - Vec2(k.q().segment<2>(3 * i));
+    const Vec2 dArm = s.point(k, cw.pivot, dim) - Vec2(s.dq().block<2, 1>(3 * i, dim));
+    const Vec2 F = kg * g + 1e-3 * (w * w * Rs - alpha * perp(Rs));
+    const Vec2 dF = 1e-3 * (2 * w * dw * Rs + w * w * dRs - da * perp(Rs) - alpha * perp(dRs));
+    Eigen::VectorXd dQ = Eigen::VectorXd::Zero(Q.rows());
+    dQ.segment<2>(3 * i) = dF;
+    dQ[3 * i + 2] = cross(dArm, F) + cross(arm, dF) + cross(dRs, g) - 1e-3 * da * spin;
+    return dQ;
+  }
 };
 
 // Positions at k's pose, and no move: a share of the forces at a held pose, for reactChange().
@@ -278,6 +299,13 @@ Status setUp(const Kinematics& k0, JointId joint, Setup& s) {
   return Status::success();
 }
 
+// setUp, and the counterweight's body's index in the system.
+Status shareSetUp(const Kinematics& k0, JointId joint, const Counterweight& cw, Setup& su, int& i) {
+  if (Status s = setUp(k0, joint, su); !s.ok()) return s;
+  i = internal::state(su.k).sys.bodyIndex(cw.body);
+  return i < 0 ? Status::badModel("a counterweight on no moving body") : Status::success();
+}
+
 // The forces' Jacobian at k's pose, factored, and the multipliers.
 Context factored(const Kinematics& k, const Sensitivity& s) {
   Context c{k, s, forcesJacobian(k), {}, {}};
@@ -324,11 +352,10 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
                                       const Counterweight& cw) {
   CounterweightShare out;
   Setup su;
-  if (out.status = setUp(k0, joint, su); !out.status.ok()) return out;
+  int i = -1;
+  if (out.status = shareSetUp(k0, joint, cw, su, i); !out.status.ok()) return out;
   const Kinematics& k = su.k;
   const KinematicsState& st = internal::state(k);
-  const int i = st.sys.bodyIndex(cw.body);
-  if (i < 0) return out.status = Status::badModel("a counterweight on no moving body"), out;
   Eigen::MatrixXd dQ = Eigen::MatrixXd::Zero(st.sys.nCoords(), 3);
   const CounterweightForces put(k, cw, i, dQ);
   const Vec2 s = cw.staticMoment;
@@ -355,6 +382,42 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
 
 Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Sensitivity& s, int dim) {
   return forcesChangeOf(k, s, dim);
+}
+
+CounterweightShareChange counterweightShareChange(const Kinematics& k0, JointId joint,
+                                                  const Counterweight& cw,
+                                                  std::vector<Dimension> dims,
+                                                  const std::vector<double>& turn0) {
+  CounterweightShareChange out;
+  Setup su;
+  int i = -1;
+  if (out.status = shareSetUp(k0, joint, cw, su, i); !out.status.ok()) return out;
+  const Kinematics& k = su.k;
+  const KinematicsState& st = internal::state(k);
+  Sensitivity s;
+  const Sensitivity::Space world =
+      isSpatial(k.mechanism()) ? Sensitivity::Space::World : Sensitivity::Space::Refuse;
+  if (out.status = s.prepare(k, std::move(dims), world); !out.status.ok()) return out;
+  if (out.status = s.at(k); !out.status.ok()) return out;
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(st.sys.nCoords(), 1);
+  const CounterweightForces put(k, cw, i, Q);
+  const double spin = cw.kg > 0 ? cw.staticMoment.squaredNorm() / cw.kg : 0.0;
+  put.put(0, cw.kg, cw.staticMoment, spin);
+  // The share's multipliers in the Context's place of the design's: change() then gives the
+  // share's change, its rows' turn and its forces' change together.
+  Context c{k, s, forcesJacobian(k), {}, {}};
+  c.lu.compute(c.J);
+  c.lambda = c.lu.transpose().solve(Q.col(0));
+  SensitivityPose pose(k, s);
+  const PointChange dpose(pose);
+  for (size_t d = 0; d < s.dims().size(); ++d) {
+    pose.dim = static_cast<int>(d);
+    const double dTheta = s.angle(k, cw.body, pose.dim) - (d < turn0.size() ? turn0[d] : 0.0);
+    const Eigen::VectorXd dQ = put.change(s, pose.dim, dTheta, cw.kg, cw.staticMoment, spin);
+    out.change.push_back(su.restated(
+        c, pose, dpose, [&](const RowsReaction& r) { return change(c, r, pose.dim, dQ); }));
+  }
+  return out;
 }
 
 }  // namespace linkage

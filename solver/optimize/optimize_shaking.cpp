@@ -144,7 +144,39 @@ struct Shaker {
     return F.norm() > 0 ? Vec3(F / F.norm()) : Vec3::Zero();
   }
   std::vector<double> gradient(const Kinematics& k, const Sensitivity* sens, Status& status) const;
+  std::vector<double> reactionGradient(const Kinematics& k, const Vec3& e, Status& status) const;
 };
+
+// A reaction's: a dimension moves the design's reaction and each counterweight's share (fixed
+// in its body's drawing at crank 0, turn0), a counterweight's moment its own share.
+std::vector<double> Shaker::reactionGradient(const Kinematics& k, const Vec3& e,
+                                             Status& status) const {
+  auto lift = [](const Vec2& v) { return Vec3(v.x(), v.y(), 0); };
+  std::vector<double> out(vars.dim.size(), 0.0);
+  JointForceSensitivity f;
+  std::vector<CounterweightShareChange> shares;
+  if (vars.dimensionCount() > 0) {
+    f = jointForceSensitivity(k, joint, vars.dims);
+    status = f.status;
+    for (size_t c = 0; c < vars.counterweights.size() && status.ok(); ++c) {
+      shares.push_back(counterweightShareChange(
+          k, joint, placed(c), vars.dims, c < turn0.size() ? turn0[c] : std::vector<double>()));
+      status = shares.back().status;
+    }
+  }
+  for (size_t v = 0; v < out.size() && status.ok(); ++v) {
+    if (vars.dim[v] >= 0) {
+      Vec2 d = part(f.change[vars.dim[v]]);
+      for (const CounterweightShareChange& s : shares) d += part(s.change[vars.dim[v]]);
+      out[v] = e.dot(lift(d));
+      continue;
+    }
+    const CounterweightShare sh = counterweightShare(k, joint, placed(vars.cw[v]));
+    status = sh.status;
+    out[v] = e.dot(lift(part(vars.axis[v] == 0 ? sh.perX : sh.perY)));
+  }
+  return out;
+}
 
 // d measure / d variable at k's pose (sens at k's pose when there are dimensions).
 std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sens,
@@ -152,21 +184,7 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
   const Vec3 F = force(k), e = along(F);
   auto lift = [](const Vec2& v) { return Vec3(v.x(), v.y(), 0); };
   std::vector<double> out(vars.dim.size(), 0.0);
-  if (joint && vars.counterweights.empty()) {
-    const JointForceSensitivity f = jointForceSensitivity(k, joint, vars.dims);
-    status = f.status;
-    for (size_t v = 0; v < out.size() && status.ok(); ++v)
-      if (vars.dim[v] >= 0) out[v] = e.dot(lift(part(f.change[vars.dim[v]])));
-    return out;
-  }
-  if (joint) {  // counterweights only (they are not varied with dimensions)
-    for (size_t v = 0; v < out.size() && status.ok(); ++v) {
-      const CounterweightShare sh = counterweightShare(k, joint, placed(vars.cw[v]));
-      status = sh.status;
-      out[v] = e.dot(lift(part(vars.axis[v] == 0 ? sh.perX : sh.perY)));
-    }
-    return out;
-  }
+  if (joint) return reactionGradient(k, e, status);
   const bool space = isSpatial(k.mechanism());
   for (size_t v = 0; v < out.size(); ++v) {
     Vec3 dF = Vec3::Zero();

@@ -129,14 +129,6 @@ Status mapVariables(const Mechanism& base, const Mechanism& design, const Optimi
                     [&](const OptVariable& v) { return v.name == offset; }))
       holdOffset(design, d);
   }
-  const bool reaction =
-      std::any_of(spec.targets.begin(), spec.targets.end(),
-                  [](const OptTarget& t) { return t.kind == OptTarget::Kind::Force; });
-  if (!out.dims.empty() && !out.counterweights.empty() && reaction)
-    return Status::badModel(
-        "a reaction over counterweights and dimensions together is not differentiated yet (a "
-        "counterweight's share changing with a dimension): vary the dimensions first, then the "
-        "counterweights on the design found");
   return Status::success();
 }
 

@@ -395,20 +395,15 @@ TEST(OptimizeDialog, TheShakingMomentOnAMachineInSpace) {
   EXPECT_NEAR(M.norm(), peak, 1e-9 * peak);
 }
 
-// The dialog refuses a reaction over counterweights and dimensions in one search, as the solver
-// does, with its message; a target's value that is not its kind's is said with the row.
-TEST(OptimizeDialog, AMixOrAValueNotItsKindsIsSaid) {
+// A target's value that is not its kind's is said with the row; a component a planar machine's
+// shaking force has not is not offered.
+TEST(OptimizeDialog, AValueNotItsKindsIsSaid) {
   Document doc;
   ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("drop-feed")), nullptr));
   OptimizeDialog dialog(&doc);
   ASSERT_TRUE(dialog.vary("lowershaft.counterweight.x", -50, 50));
   ASSERT_TRUE(dialog.vary(dimensions(doc.design()).front().name, 1, 100));
   ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Force, "pin:ground.L", "0"));
-  QSignalSpy done(&dialog, &OptimizeDialog::finished);
-  dialog.find();
-  ASSERT_TRUE(done.wait(300000));
-  EXPECT_TRUE(dialog.summary().contains("a reaction over counterweights and dimensions together"))
-      << dialog.summary().toStdString();
   EXPECT_FALSE(dialog.addTarget(OptTarget::Kind::Shaking, "fz", "0"));  // no such component
   ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Shaking, "force", "-1"));
   dialog.find();

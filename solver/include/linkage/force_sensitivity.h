@@ -65,4 +65,19 @@ struct CounterweightShare {
 
 CounterweightShare counterweightShare(const Kinematics& k, JointId joint, const Counterweight& cw);
 
+// The share's derivatives with respect to dims (per unit), the counterweight's mass, moment and
+// spin held, fixed in its body's drawing (its place from the pivot, which a dimension may move)
+// and turning with the body: its forces' change with the body's turn, spin and spin's rate and
+// the pivot's arm, and the reactions' own change with the pose (J^-T (dQ - dJ^T lambda), as
+// jointForceSensitivity's). turn0[d]: a turn of the body per unit of dimension d taken off (the
+// optimiser draws each design again at crank 0, where the counterweight is placed), else 0.
+struct CounterweightShareChange {
+  Status status;
+  std::vector<JointReaction> change;  // by dimension: force, couple, contact and axial
+};
+CounterweightShareChange counterweightShareChange(const Kinematics& k, JointId joint,
+                                                  const Counterweight& cw,
+                                                  std::vector<Dimension> dims,
+                                                  const std::vector<double>& turn0 = {});
+
 }  // namespace linkage
