@@ -274,6 +274,15 @@ TEST(SpatialForceSensitivity, TheShakingMomentAsATarget) {
   limitMetByTheRod(base, spec, e.measures[0][0]);
 }
 
+// The crank's and the rocker's counterweights as variables (x, y each, -60 to 60 kg mm).
+OptimizeSpec bothCounterweights() {
+  OptimizeSpec spec;
+  for (const char* body : {"crank", "rocker"})
+    for (const char* axis : {".counterweight.x", ".counterweight.y"})
+      spec.variables.push_back({std::string(body) + axis, -60, 60});
+  return spec;
+}
+
 // Counterweights on the RSSR's crank and rocker (in two planes, gravity across both) varied by
 // optimize for the peak of |F| in the world: the gradient against central differences, the
 // optimum against balance's certified one (a convex programme, linkage/balance.h), and the
@@ -281,10 +290,7 @@ TEST(SpatialForceSensitivity, TheShakingMomentAsATarget) {
 TEST(SpatialForceSensitivity, CounterweightsInSpaceAgainstBalance) {
   Kinematics base;
   ASSERT_TRUE(base.load(loadedRssr()).ok());
-  OptimizeSpec spec;
-  for (const char* body : {"crank", "rocker"})
-    for (const char* axis : {".counterweight.x", ".counterweight.y"})
-      spec.variables.push_back({std::string(body) + axis, -60, 60});
+  OptimizeSpec spec = bothCounterweights();
   OptTarget t;
   t.kind = OptTarget::Kind::Shaking;
   spec.targets = {t};
@@ -400,10 +406,7 @@ TEST(SpatialForceSensitivity, ACounterweightsShareMovesAsChangedDesignsDo) {
 TEST(SpatialForceSensitivity, AReactionOverCounterweights) {
   Kinematics base;
   ASSERT_TRUE(base.load(loadedRssr()).ok());
-  OptimizeSpec spec;
-  for (const char* body : {"crank", "rocker"})
-    for (const char* axis : {".counterweight.x", ".counterweight.y"})
-      spec.variables.push_back({std::string(body) + axis, -60, 60});
+  OptimizeSpec spec = bothCounterweights();
   const std::vector<double> x{3, -2, 1.5, 4};
   for (const char* text : {"force:pin:ground.O<=0", "force:ball-rod:crank.A<=0"}) {
     std::string why;

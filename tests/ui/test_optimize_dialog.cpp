@@ -325,6 +325,16 @@ TEST(OptimizeDialog, TheShakingMomentLoweredByACounterweight) {
   EXPECT_NEAR(std::abs(M), peak, 1e-9 * peak);
 }
 
+// The applied design's shaking force and moment in the world at crank angle deg (solved again).
+bool appliedShaking(const Document& doc, double deg, Vec3& F, Vec3& M) {
+  Kinematics after;
+  if (!after.load(doc.design()).ok()) return false;
+  after.setAccelerations(true);
+  if (!after.moveTo(deg).ok()) return false;
+  shaking(after, F, M);
+  return true;
+}
+
 // On a machine in space a counterweight turns in its body's plane: the RSSR's crank (masses on
 // crank and rocker, gravity across both planes) balanced for the peak of |f| in the world,
 // applied as one undo step whose design feels the peak reported.
@@ -352,12 +362,8 @@ TEST(OptimizeDialog, ACounterweightOnAMachineInSpace) {
   const int steps = doc.undoStack()->count();
   ASSERT_TRUE(dialog.apply());
   EXPECT_EQ(doc.undoStack()->count(), steps + 1);
-  Kinematics after;
-  ASSERT_TRUE(after.load(doc.design()).ok());
-  after.setAccelerations(true);
-  ASSERT_TRUE(after.moveTo(peakDeg).ok());
   Vec3 F, M;
-  shaking(after, F, M);
+  ASSERT_TRUE(appliedShaking(doc, peakDeg, F, M));
   EXPECT_NEAR(F.norm(), peak, 1e-9 * peak);
 }
 
@@ -386,12 +392,8 @@ TEST(OptimizeDialog, TheShakingMomentOnAMachineInSpace) {
   for (int r = 0; r < table->rowCount(); ++r) rows << table->item(r, 0)->text();
   EXPECT_TRUE(rows.contains("peak shaking moment |m| (N m)")) << rows.join("; ").toStdString();
   ASSERT_TRUE(dialog.apply());
-  Kinematics after;
-  ASSERT_TRUE(after.load(doc.design()).ok());
-  after.setAccelerations(true);
-  ASSERT_TRUE(after.moveTo(peakDeg).ok());
   Vec3 F, M;
-  shaking(after, F, M);
+  ASSERT_TRUE(appliedShaking(doc, peakDeg, F, M));
   EXPECT_NEAR(M.norm(), peak, 1e-9 * peak);
 }
 
