@@ -46,7 +46,8 @@ pose on MODEL's assembly branches.
                                      force: |f|)
                                      over the turn at most N newtons (0: as low as it goes)
      shaking:moment<=NM              the peak of the shaking moment's |m| about the drawing's
-                                     origin at most NM newton metres (a planar machine's)
+                                     origin (in space the world's m about its origin) at most NM
+                                     newton metres (over dimensions or counterweights)
      force:JOINT<=N                  the peak over the turn of a joint's reaction |f| (JOINT as
                                      `dynamics` names it: pin:crank.A, slider:block.B) at most
                                      N newtons (over dimensions or counterweights)
@@ -76,8 +77,8 @@ its before fields empty.
 A machine in space (planes, docs/spatial.md): any dimension `sensitivity` lists may vary (depths,
 ground z, ball rods' lengths, planes' origins), and counterweights; the
 targets are in the world (a transmission angle in its plane), a reaction in its plane (a ball
-rod's tension) with the counterweights' shares; counterweights against the shaking moment are
-refused by name (not computed in space yet).
+rod's tension) with the counterweights' shares, and the shaking force and moment in the world
+over counterweights too.
 
 Exit status: 0 done, 1 the --out file could not be written, 2 bad input (an unknown dimension or
 point, bad bounds or target, no start that assembles and turns fully).

@@ -52,4 +52,20 @@ inline void checkGradient(const Mechanism& m, const OptimizeSpec& spec, double o
   EXPECT_GT(largest, 1e-2);
 }
 
+// The objective's gradient at x against central differences (h 1e-5), every variable moving it,
+// to 1e-6 of the difference and the objective.
+inline void expectGradientAt(const Kinematics& k, const OptimizeSpec& spec,
+                             const std::vector<double>& x) {
+  const Evaluation e = evaluate(k, spec, x);
+  ASSERT_TRUE(e.feasible) << e.why;
+  ASSERT_GT(e.objective, 0);
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double fd = centralDifference(k, spec, x, i, 1e-5);
+    std::printf("  d objective / d %-24s %.9g (central differences %.9g)\n",
+                spec.variables[i].name.c_str(), e.gradient[i], fd);
+    EXPECT_GT(std::abs(fd), 1e-6 * e.objective) << spec.variables[i].name;
+    EXPECT_NEAR(e.gradient[i], fd, 1e-6 * (std::abs(fd) + e.objective)) << spec.variables[i].name;
+  }
+}
+
 }  // namespace linkage::test

@@ -161,25 +161,8 @@ TEST(OptimizeSpace, ABodysBaseLengthKeepsAPointOnItsLineWhereItIs) {
   EXPECT_NEAR(r.atAfter.measures[0][0], 21, 1e-9);
 }
 
-// In space counterweights against the shaking moment are no search yet (the moment over
-// dimensions is: tests/test_spatial_force_sensitivity.cpp); a z is a machine in space's (a
-// path's: tests/test_optimize_space_path.cpp).
-TEST(OptimizeSpace, TargetsWithoutDerivativesInSpaceAreRefusedByName) {
-  const Mechanism m = test::example("overedge-machine");
-  Kinematics base;
-  ASSERT_TRUE(base.load(m).ok());
-  OptimizeSpec spec;
-  spec.variables = {{"main.counterweight.x", -50, 50}};
-  OptTarget moment;
-  moment.kind = OptTarget::Kind::Shaking;
-  moment.moment = true;
-  spec.targets = {moment};
-  const OptimizeResult refused = optimize(base, spec);
-  EXPECT_EQ(refused.status.code, StatusCode::BadModel);
-  EXPECT_NE(refused.status.message.find(
-                "counterweights against the shaking moment on a machine in space"),
-            std::string::npos)
-      << refused.status.message;
+// A position's z is a machine in space's (a path's: tests/test_optimize_space_path.cpp).
+TEST(OptimizeSpace, APlanarMachinesZIsRefusedByName) {
   const Mechanism planar = test::example("drop-feed");
   Kinematics flat;
   ASSERT_TRUE(flat.load(planar).ok());

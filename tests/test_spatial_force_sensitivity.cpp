@@ -18,25 +18,17 @@
 #include "linkage/optimize_text.h"
 #include "linkage/shaking_sensitivity.h"
 #include "linkage/space.h"
+#include "loaded_rssr.h"
 #include "optimize_checks.h"
 #include "reaction_checks.h"
 
 namespace linkage {
 namespace {
 
-// The RSSR with masses on its crank and rocker and gravity across both planes.
-Mechanism loadedRssr() {
-  Mechanism m = test::example("rssr-crank-rocker");
-  Body* crank = m.body(m.bodyNamed("crank")->id);
-  Body* rocker = m.body(m.bodyNamed("rocker")->id);
-  const Vec2 c0 = m.point(*m.findPoint("crank.A"))->pos,
-             r0 = m.point(*m.findPoint("rocker.C"))->pos;
-  crank->mass = Mass{0.3, 0.5 * c0 + Vec2(2, -1), 60, ""};
-  rocker->mass = Mass{0.2, 0.6 * r0 + Vec2(-3, 2), 90, ""};
-  m.gravity = Vec2(0, -9.81);
-  m.gravityZ = -3.0;
-  return m;
-}
+using test::bothCounterweights;
+using test::loadedRssr;
+using test::spaceSpec;
+using test::turned;
 
 TEST(SpatialForceSensitivity, TheRssrsReactionsMoveAsChangedDesignsDo) {
   const Mechanism m = loadedRssr();
@@ -168,24 +160,6 @@ TEST(SpatialForceSensitivity, APlanarShakingMomentInTheWorldMovesAsChangedDesign
         << s.dims()[d].name;
 }
 
-// A search over a depth, the rod's length and a plane's origin for the target `text`, and the
-// design's values of those (where the gradient is checked).
-OptimizeSpec spaceSpec(const Mechanism& m, const char* text, std::vector<double>& x) {
-  OptimizeSpec spec;
-  spec.variables = {{"crank.A.depth", -20, 20},
-                    {"ball-rod:crank.A.length", 70, 90},
-                    {"planes.rocker.origin.x", 30, 60}};
-  std::string why;
-  OptTarget t;
-  EXPECT_TRUE(parseOptTarget(m, text, t, why)) << why;
-  spec.targets = {t};
-  x.clear();
-  for (const OptVariable& v : spec.variables)
-    for (const Dimension& d : dimensions(m))
-      if (d.name == v.name) x.push_back(d.value);
-  return spec;
-}
-
 // The rod's tension as an optimize target (its peak over the turn): the objective's gradient
 // over the machine's own dimensions in space against central differences, and a limit met, the
 // written design bearing the peak reported.
@@ -274,15 +248,6 @@ TEST(SpatialForceSensitivity, TheShakingMomentAsATarget) {
   limitMetByTheRod(base, spec, e.measures[0][0]);
 }
 
-// The crank's and the rocker's counterweights as variables (x, y each, -60 to 60 kg mm).
-OptimizeSpec bothCounterweights() {
-  OptimizeSpec spec;
-  for (const char* body : {"crank", "rocker"})
-    for (const char* axis : {".counterweight.x", ".counterweight.y"})
-      spec.variables.push_back({std::string(body) + axis, -60, 60});
-  return spec;
-}
-
 // Counterweights on the RSSR's crank and rocker (in two planes, gravity across both) varied by
 // optimize for the peak of |F| in the world: the gradient against central differences, the
 // optimum against balance's certified one (a convex programme, linkage/balance.h), and the
@@ -324,26 +289,6 @@ TEST(SpatialForceSensitivity, CounterweightsInSpaceAgainstBalance) {
   Vec3 F, M;
   shaking(after, F, M);
   EXPECT_NEAR(F.norm(), peak, 1e-9 * peak);
-}
-
-// The loaded RSSR with one body drawn in a plane turned 35 degrees in its own plane's class (the
-// same machine): a counterweight's moment on it is turned into the class frame.
-Mechanism turned(const char* name) {
-  Mechanism m = loadedRssr();
-  Body* body = m.body(m.bodyNamed(name)->id);
-  const Plane own = planeNamed(m, body->plane) ? *planeNamed(m, body->plane) : drawingPlane();
-  const double a = 35 * M_PI / 180;
-  const Rot back = Rot::of(-a);
-  Plane turned = own;
-  turned.name = "turned";
-  turned.xAxis = std::cos(a) * own.xAxis + std::sin(a) * own.yAxis;
-  turned.yAxis = -std::sin(a) * own.xAxis + std::cos(a) * own.yAxis;
-  m.planes->push_back(turned);
-  body->plane = "turned";
-  for (Point& q : m.points)
-    if (q.body == body->id) q.pos = back * q.pos;
-  body->mass->com = back * body->mass->com;
-  return m;
 }
 
 // A counterweight's share of every joint's reaction on a machine in space (the in-plane force,

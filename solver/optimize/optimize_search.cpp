@@ -218,10 +218,6 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
   }
   for (const OptTarget& t : spec.targets) {
     if (Status s = checkSpace(space, t); !s.ok()) return s;
-    if (space && t.kind == OptTarget::Kind::Shaking && t.moment && !vars.counterweights.empty())
-      return Status::badModel(
-          "counterweights against the shaking moment on a machine in space (planes) are not "
-          "optimised yet: the moment's target is, over dimensions");
     if (Status s = checkWatched(base.mechanism(), t); !s.ok()) return s;
     const bool named = t.kind == OptTarget::Kind::Shaking || t.kind == OptTarget::Kind::Force ||
                        t.kind == OptTarget::Kind::Clearance || t.kind == OptTarget::Kind::Window;

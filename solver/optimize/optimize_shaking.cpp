@@ -5,7 +5,8 @@
 // pivots), the frame feels F = F0 + sum_k (1e-3 (omega_k^2 I - alpha_k perp) R(theta_k) s_k +
 // m_k g) (linkage/balance.h; on a machine in space the world's, each counterweight turning in
 // its plane: counterweightForcePerMoment): linear in s_k, its gradient exact; the moment adds each
-// one's (Shaker::counterweightMoment, smooth but where s_k is 0). A dimension's is F0's (M0's)
+// one's (Shaker::counterweightMoment, the world's 3-vector in space; smooth but where s_k
+// is 0). A dimension's is F0's (M0's)
 // (linkage/shaking_sensitivity.h). The turn is cut into `steps` intervals; an interval's row is
 // its largest |F| (or component): its ends' values, or a local maximum of the samples refined by
 // Brent's method on the exact motion where it falls inside the interval. The largest row is the
@@ -25,6 +26,31 @@ namespace linkage::opt {
 
 namespace {
 
+// A body's mass acts at its points' mean depth along its plane's normal (SpaceForces), so a
+// counterweight written in as its mass is that far from its pivot's depth: `depth` a point's
+// depth (or its change).
+template <class Depth>
+double depthFromPivot(const Mechanism& m, const Counterweight& cw, Depth depth) {
+  double sum = 0;
+  int n = 0;
+  for (const Point& p : m.points)
+    if (p.body == cw.body) {
+      sum += depth(p);
+      ++n;
+    }
+  return isSpatial(m) && n > 0 ? sum / n - depth(*m.point(cw.pivot)) : 0.0;
+}
+double depthFromPivotOf(const Mechanism& m, const Counterweight& cw) {
+  return depthFromPivot(m, cw, [](const Point& p) { return p.third.value_or(0.0); });
+}
+double depthFromPivotChange(const Mechanism& m, const Counterweight& cw, const Dimension& d) {
+  return depthFromPivot(m, cw, [&](const Point& p) {
+    for (const auto& [id, change] : d.depths)
+      if (id == p.id) return change;
+    return 0.0;
+  });
+}
+
 struct Shaker {
   const Kinematics& design;
   const OptTarget& t;
@@ -34,6 +60,7 @@ struct Shaker {
   // the plane), a machine in space's in the world.
   Vec3 g = Vec3::Zero();
   std::vector<CounterweightPlacing> placings;  // by counterweight
+  std::vector<double> depthFromPivot;          // by counterweight (mm; 0 on a planar machine)
   // By counterweight, by dimension: its body's turn at crank angle 0 (where each design is drawn
   // again, editAtPose), with counterweights and dimensions varied together.
   std::vector<std::vector<double>> turn0;
@@ -59,8 +86,8 @@ struct Shaker {
                                                                              : r.force;
   }
   // What the frame feels (or the joint bears), in the world: a planar machine's z is 0. The
-  // shaking moment (OptTarget::moment) as (0, 0, M), N m; a machine in space's as the world's
-  // 3-vector (no counterweights: shakingResiduals refuses them).
+  // shaking moment (OptTarget::moment) as the world's 3-vector, N m (a planar machine's (0, 0,
+  // M)).
   Vec3 force(const Kinematics& k) const {
     if (joint) {  // the design's reaction and the counterweights' shares (the forces add)
       Vec2 F = part(solver.compute(k).joints[t.index]);
@@ -68,49 +95,56 @@ struct Shaker {
         F += part(counterweightShare(k, joint, placed(c)).share);
       return Vec3(F.x(), F.y(), 0);
     }
-    Vec3 F = Vec3::Zero(), moment3;
-    double moment = 0;
+    Vec3 F = Vec3::Zero(), M = Vec3::Zero();
     if (isSpatial(k.mechanism())) {
-      shaking(k, F, moment3);
+      shaking(k, F, M);
     } else {
       Vec2 planar;
-      shaking(k, planar, moment);
+      shaking(k, planar, M.z());
       F.head<2>() = planar;
     }
     for (size_t c = 0; c < vars.counterweights.size(); ++c) {
       const Vec2 s = vars.moment(x, c);
       F += inertia(k, c, s) + vars.kg(x, c) * g;
-      if (t.moment) moment += counterweightMoment(k, c, s);
+      if (t.moment) M += counterweightMoment(k, c, s);
     }
-    if (t.moment && isSpatial(k.mechanism())) return moment3;
-    return t.moment ? Vec3(0, 0, moment) : F;
+    return t.moment ? M : F;
   }
-  // Counterweight c's part of the shaking moment (N m) with static moment s: a point mass m at
-  // c = p + r / m (r = R s, p its pivot) bears m g and the inertia force f of counterweightForce
-  // there; c x (f + m g) = p x (f + m g) + r x g + r x f / m, and r x f / m = -1e-3 alpha |r|^2 /
-  // m.
-  double counterweightMoment(const Kinematics& k, size_t c, const Vec2& s) const {
-    const Counterweight& cw = vars.counterweights[c];
-    const Vec2 r = Rot::of(k.bodyAngle(cw.body)) * s, f = inertia(k, c, s).head<2>(),
-               g2 = g.head<2>();
-    const double m = s.norm() / cw.maxRadiusMm;
-    const double spin = m > 0 ? -1e-3 * k.bodyAlpha(cw.body) * r.squaredNorm() / m : 0.0;
-    return (cross(k.position(cw.pivot), f + m * g2) + cross(r, g2) + spin) / 1000;
+  // Counterweight c's pivot in the world at its body's depth (where the counterweight written in
+  // as the body's mass acts), and the arm r = E R(theta) P s of static moment s (kg mm, in the
+  // world).
+  Vec3 pivot(const Kinematics& k, size_t c) const {
+    return k.motionInSpace(vars.counterweights[c].pivot).position +
+           depthFromPivot[c] * placings[c].normal;
+  }
+  Vec3 arm(const Kinematics& k, size_t c, const Vec2& s) const {
+    const CounterweightPlacing& p = placings[c];
+    return p.E * Vec2(Rot::of(k.bodyAngle(vars.counterweights[c].body)) * Vec2(p.P * s));
+  }
+  // Counterweight c's part of the shaking moment (N m, the world's) with static moment s: a point
+  // mass m at c = p + r / m bears m g and the inertia force f of counterweightForcePerMoment
+  // there; c x (f + m g) = p x (f + m g) + r x g + r x f / m (r x f / m is -1e-3 alpha |s| R
+  // along the plane's normal: 0 with s).
+  Vec3 counterweightMoment(const Kinematics& k, size_t c, const Vec2& s) const {
+    const Vec3 p = pivot(k, c), r = arm(k, c, s), f = inertia(k, c, s);
+    const double m = s.norm() / vars.counterweights[c].maxRadiusMm;
+    const Vec3 spin = m > 0 ? Vec3(r.cross(f) / m) : Vec3::Zero();
+    return (p.cross(f + m * g) + r.cross(g) + spin) / 1000;
   }
   // Its derivative along the unit u of s (in the body's drawing).
-  double counterweightMomentChange(const Kinematics& k, size_t c, const Vec2& s,
-                                   const Vec2& u) const {
-    const Counterweight& cw = vars.counterweights[c];
-    const Vec2 du = Rot::of(k.bodyAngle(cw.body)) * u, df = inertia(k, c, u).head<2>(),
-               g2 = g.head<2>();
-    const double n = s.norm(), dm = n > 0 ? s.dot(u) / (n * cw.maxRadiusMm) : 0.0;
-    // |r|^2 / m = |s| R: its change R s.u / |s|.
-    const double dspin = -1e-3 * k.bodyAlpha(cw.body) * cw.maxRadiusMm * (n > 0 ? s.dot(u) / n : 0);
-    return (cross(k.position(cw.pivot), df + dm * g2) + cross(du, g2) + dspin) / 1000;
+  Vec3 counterweightMomentChange(const Kinematics& k, size_t c, const Vec2& s,
+                                 const Vec2& u) const {
+    const Vec3 p = pivot(k, c), r = arm(k, c, s), f = inertia(k, c, s), dr = arm(k, c, u),
+               df = inertia(k, c, u);
+    const double R = vars.counterweights[c].maxRadiusMm, n = s.norm(), m = n / R;
+    const double dm = n > 0 ? s.dot(u) / (n * R) : 0.0;
+    const Vec3 dspin =
+        m > 0 ? Vec3((dr.cross(f) + r.cross(df)) / m - r.cross(f) * dm / (m * m)) : Vec3::Zero();
+    return (p.cross(df + dm * g) + dr.cross(g) + dspin) / 1000;
   }
-  // Counterweight c's force (with `moment`, its moment as (0, 0, M)) per unit of dimension dim:
-  // its body's turn, spin and spin's rate change. Each design is drawn again at crank angle 0, so
-  // the counterweight, fixed in the drawing, turns with the body's turn from there.
+  // Counterweight c's force (with `moment`, its moment) per unit of dimension dim: its body's
+  // turn, spin and spin's rate change, its pivot moves. Each design is drawn again at crank angle
+  // 0, so the counterweight, fixed in the drawing, turns with the body's turn from there.
   Vec3 counterweightChange(const Kinematics& k, const Sensitivity& sens, size_t c, int dim) const {
     const Counterweight& cw = vars.counterweights[c];
     const Vec2 s = vars.moment(x, c);
@@ -121,12 +155,13 @@ struct Shaker {
                                           sens.angularVelocity(k, cw.body, dim), dAlpha) *
         s;
     if (!t.moment) return df;
-    const Vec2 r = Rot::of(k.bodyAngle(cw.body)) * s, g2 = g.head<2>();
+    const Vec3 n = placings[c].normal, p = pivot(k, c), r = arm(k, c, s), f = inertia(k, c, s);
+    const Vec3 dp = sens.point3(k, cw.pivot, dim) +
+                    depthFromPivotChange(k.mechanism(), cw, sens.dims()[dim]) * n;
+    const Vec3 dr = dTheta * n.cross(r);  // the arm turns with its body in its plane
     const double m = s.norm() / cw.maxRadiusMm;
-    const double dM = cross(sens.point(k, cw.pivot, dim), inertia(k, c, s).head<2>() + m * g2) +
-                      cross(k.position(cw.pivot), df.head<2>()) + dTheta * cross(perp(r), g2) -
-                      1e-3 * dAlpha * s.norm() * cw.maxRadiusMm;
-    return Vec3(0, 0, dM / 1000);
+    const Vec3 dspin = m > 0 ? Vec3((dr.cross(f) + r.cross(df)) / m) : Vec3::Zero();
+    return (dp.cross(f + m * g) + p.cross(df) + dr.cross(g) + dspin) / 1000;
   }
   double measure(const Vec3& F) const {
     if (t.measure == BalanceMeasure::Fx) return std::abs(F.x());
@@ -202,7 +237,7 @@ std::vector<double> Shaker::gradient(const Kinematics& k, const Sensitivity* sen
       const Vec2 s = vars.moment(x, c);
       Vec3 d = inertia(k, c, unit);
       if (s.norm() > 0) d += s.dot(unit) / (s.norm() * cw.maxRadiusMm) * g;  // d(|s| / R)
-      dF = t.moment ? Vec3(0, 0, counterweightMomentChange(k, c, s, unit)) : d;
+      dF = t.moment ? counterweightMomentChange(k, c, s, unit) : d;
     }
     out[v] = e.dot(dF);
   }
@@ -267,14 +302,11 @@ Status shakingResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t ta
   const OptTarget& t = spec.targets[target];
   const Mechanism& m = k.mechanism();
   const Vec2 gPlane = m.gravity.value_or(Vec2::Zero());
-  if (t.kind == OptTarget::Kind::Shaking && t.moment && isSpatial(m) &&
-      !vars.counterweights.empty())
-    return Status::badModel(
-        "counterweights against the shaking moment on a machine in space (planes) are not "
-        "optimised yet: the moment's target is, over dimensions");
   Shaker sh{k, t, vars, x, isSpatial(m) ? m.gravityWorld() : Vec3(gPlane.x(), gPlane.y(), 0)};
-  for (const Counterweight& c : vars.counterweights)
+  for (const Counterweight& c : vars.counterweights) {
     sh.placings.push_back(placeCounterweight(m, c.body));
+    sh.depthFromPivot.push_back(depthFromPivotOf(m, c));
+  }
   if (sens && !e.gradient.empty() && vars.dimensionCount() > 0)
     if (Status s = turnsAtZero(k, vars, *sens, sh.turn0); !s.ok()) return s;
   if (t.kind == OptTarget::Kind::Force) {

@@ -16,9 +16,8 @@
 // the world's (Sensitivity::Space::World), and the targets are a stroke (along the world's +y,
 // strokeDirection in linkage/stroke_sensitivity.h, or a direction given), a position and a path
 // (world x, y and, if given, z), a window's end, a clearance, a reaction, a transmission angle
-// (in its plane) and the shaking force over dimensions or counterweights (each turning in its
-// plane); counterweights against the shaking moment are refused by name (not computed in space
-// yet).
+// (in its plane) and the shaking force or moment over dimensions or counterweights (each turning
+// in its plane).
 #pragma once
 
 #include <cstdint>
