@@ -12,6 +12,7 @@
 #include <QImage>
 #include <QLineEdit>
 #include <QMenu>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -260,8 +261,17 @@ TEST(ElementsUi, AGroundArcSquareToTheDrawingInThePanel) {
   const std::string kept = serializeMechanism(doc->design());
   shape = qobject_cast<QComboBox*>(w.properties().panel()->field("Shape"));
   ASSERT_TRUE(shape);
+  // Refused: the design kept, the reason said, and the box back at what the slot is.
+  QSignalSpy said(w.properties().panel(), &PropertiesPanel::message);
+  shape->setCurrentIndex(1);
   shape->activated(1);
   EXPECT_EQ(serializeMechanism(doc->design()), kept);
+  ASSERT_EQ(said.size(), 1);
+  EXPECT_TRUE(said[0][0].toString().startsWith("The slot is not bent: "))
+      << said[0][0].toString().toStdString();
+  EXPECT_GT(said[0][0].toString().size(), 24);
+  EXPECT_TRUE(said[0][1].toBool());
+  EXPECT_EQ(shape->currentIndex(), 0);
   shot(&w, "ground_arc_on_edge_panel");
 }
 

@@ -437,5 +437,73 @@ TEST(View3dScene, APlaneParallelToTheDrawingIsLiftedThroughItsClassFrame) {
   }
 }
 
+// Slots in 3D: a ground arc written in the world in a plane square to the drawing, and a ground
+// slot along z, drawn where the file puts them (the arc's path on the circle through its three
+// points, from its first through its middle to its last); the Wanzer's slotted disk's slots on
+// the disk where the solver has it. Looked at: view3d-ground-arc.png.
+TEST(View3dScene, SlotsAreDrawnWhereTheFileAndTheSolverPutThem) {
+  const std::string text = R"({"format": "linkage", "version": 1, "name": "arc on edge",
+  "planes": {"side": {"origin": [0, 0, 0], "x_axis": [0, 0, -1], "y_axis": [0, 1, 0]}},
+  "bodies": [
+    {"name": "ground", "ground": true, "points": {"O": [0, 0]},
+     "slots": {"g": [[0, -20, 0], [0, -35, 5], [0, -50, 0]], "z": [[0, -60, 0], [0, -60, 9]]}},
+    {"name": "crank", "plane": "side", "points": {"O": [0, 0], "A": [0, 10]}},
+    {"name": "rod", "plane": "side", "points": {"A": [0, 10], "B": [0, -30]}},
+    {"name": "block", "plane": "side", "points": {"B": [0, -30]}}],
+  "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"},
+    {"type": "pin", "a": "crank.A", "b": "rod.A"},
+    {"type": "pin", "a": "rod.B", "b": "block.B"},
+    {"type": "slider", "a": "block.B", "slot": "ground.g"}],
+  "driver": {"joint": 0, "rpm": 60, "direction": "ccw"}})";
+  const LoadResult loaded = parseMechanism(text);
+  ASSERT_TRUE(loaded.mechanism) << loaded.error;
+  Document d;
+  d.setContents(*loaded.mechanism, "");
+  ASSERT_TRUE(d.solved()) << d.solveStatus().message;
+  View3dWidget v;
+  v.resize(640, 480);
+  v.setDocument(&d);
+  const Scene3d s = v.scene();
+  ASSERT_EQ(s.grooves.size(), 2u);
+  // The arc through (0, -20, 0), (0, -35, 5), (0, -50, 0): centre (0, -35, -20), radius 25.
+  const Scene3d::Groove& arc = s.grooves[0];
+  EXPECT_TRUE(arc.ground);
+  const Vec3 c(0, -35, -20);
+  ASSERT_GE(arc.path.size(), 3u);
+  EXPECT_LT((arc.path.front() - Vec3(0, -20, 0)).norm(), 1e-9);
+  EXPECT_LT((arc.path.back() - Vec3(0, -50, 0)).norm(), 1e-9);
+  double nearMid = INFINITY;
+  for (size_t i = 0; i < arc.path.size(); ++i) {
+    EXPECT_NEAR((arc.path[i] - c).norm(), 25.0, 1e-9) << i;
+    EXPECT_NEAR(arc.path[i].x(), 0, 1e-12) << i;
+    if (i > 0) EXPECT_LE((arc.path[i] - arc.path[i - 1]).norm(), 25.0 * 5 * M_PI / 180 + 1e-9);
+    nearMid = std::min(nearMid, (arc.path[i] - Vec3(0, -35, 5)).norm());
+  }
+  EXPECT_LT(nearMid, 25.0 * 2.5 * M_PI / 180);
+  const Scene3d::Groove& along = s.grooves[1];
+  ASSERT_EQ(along.path.size(), 2u);
+  EXPECT_LT((along.path[0] - Vec3(0, -60, 0)).norm(), 1e-12);
+  EXPECT_LT((along.path[1] - Vec3(0, -60, 9)).norm(), 1e-12);
+  v.showView(Projection::View::Isometric);
+  shot(&v, "view3d-ground-arc");
+  // A moving body's slots: their ends where the solver has them now.
+  Document wanzer;
+  wanzer.setContents(*loadMechanismFile(*resolveModel("wanzer-inversion-2")).mechanism, "");
+  ASSERT_TRUE(wanzer.setCrankDeg(40).ok());
+  View3dWidget w3;
+  w3.setDocument(&wanzer);
+  const Scene3d ws = w3.scene();
+  const Mechanism& m = wanzer.design();
+  ASSERT_EQ(ws.grooves.size(), m.slots.size());
+  for (size_t i = 0; i < m.slots.size(); ++i) {
+    const Slot& sl = m.slots[i];
+    if (m.body(sl.body)->ground) continue;
+    const Vec2 a = wanzer.kinematics().toWorld(sl.body, sl.p0),
+               b = wanzer.kinematics().toWorld(sl.body, sl.p1);
+    EXPECT_LT((ws.grooves[i].path.front() - Vec3(a.x(), a.y(), 0)).norm(), 1e-9) << sl.name;
+    EXPECT_LT((ws.grooves[i].path.back() - Vec3(b.x(), b.y(), 0)).norm(), 1e-9) << sl.name;
+  }
+}
+
 }  // namespace
 }  // namespace linkage::ui

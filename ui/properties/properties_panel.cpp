@@ -181,7 +181,15 @@ void PropertiesPanel::addChoice(const QString& label, const QStringList& items,
                      QSignalBlocker b(box);
                      box->setCurrentIndex(current());
                    }});
-  connect(box, &QComboBox::activated, this, std::move(chosen));
+  // The box shows what the document holds after the choice: a refused one is taken back (the
+  // edit may have rebuilt the form, the box with it).
+  const QPointer<QComboBox> held(box);
+  connect(box, &QComboBox::activated, this, [held, current, chosen = std::move(chosen)](int i) {
+    chosen(i);
+    if (!held) return;
+    QSignalBlocker b(held);
+    held->setCurrentIndex(current());
+  });
 }
 
 std::function<int()> PropertiesPanel::addSelector(const QString& label, const QStringList& items) {

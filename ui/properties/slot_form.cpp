@@ -55,19 +55,20 @@ void addShape(Form& form, SlotId id) {
       [doc, id] { return doc->design().slot(id)->arc() ? 1 : 0; },
       [&form, id](int i) {
         QString why;
-        form.change(
-            Form::tr("Slot shape"),
-            [&](Mechanism& m, QString* why) {
-              if (i == 0) {
-                straightenSlot(m, id);
-                return true;
-              }
-              std::string problem;
-              if (bendSlot(m, id, &problem)) return true;
-              if (why) *why = QString::fromStdString(problem);
-              return false;
-            },
-            &why);
+        if (!form.change(
+                Form::tr("Slot shape"),
+                [&](Mechanism& m, QString* why) {
+                  if (i == 0) {
+                    straightenSlot(m, id);
+                    return true;
+                  }
+                  std::string problem;
+                  if (bendSlot(m, id, &problem)) return true;
+                  if (why) *why = QString::fromStdString(problem);
+                  return false;
+                },
+                &why))
+          form.warn(Form::tr("The slot is not bent: %1").arg(why));
       });
 }
 

@@ -69,6 +69,46 @@ Scene3d::Plate plateOf(const Mechanism& m, const Body& b, const WorldPose& at) {
   return plate;
 }
 
+// A slot's curve through its points in order (two for a straight one): an arc through three,
+// from the first through the middle to the last, sampled every 5 degrees or less.
+std::vector<Vec3> slotPath(const std::vector<Vec3>& q) {
+  Vec3 c;
+  double r = 0;
+  if (q.size() < 3 || !circleThrough(q[0], q[1], q[2], c, r)) return {q.front(), q.back()};
+  // Turning about n the arc meets its points in order: n from its two chords.
+  const Vec3 n = (q[1] - q[0]).cross(q[2] - q[1]).normalized(), u = (q[0] - c) / r, v = n.cross(u),
+             e = q[2] - c;
+  double end = std::atan2(e.dot(v), e.dot(u));
+  if (end <= 0) end += 2 * M_PI;
+  const int steps = std::max(2, static_cast<int>(std::ceil(end / (5 * M_PI / 180))));
+  std::vector<Vec3> out;
+  for (int i = 0; i <= steps; ++i) {
+    const double t = end * i / steps;
+    out.push_back(c + r * (std::cos(t) * u + std::sin(t) * v));
+  }
+  return out;
+}
+
+// Every slot's groove: the ground's in the world as written, a moving body's sampled in its
+// drawing and carried to where the body is.
+void addGrooves(const Mechanism& m, Scene3d& s, const WorldPose& at) {
+  for (const Slot& sl : m.slots) {
+    const Body* b = m.body(sl.body);
+    if (!b) continue;
+    Scene3d::Groove g{sl.id, b->id, b->number.value_or(0), b->ground, {}};
+    if (b->ground) {
+      g.path = slotPath(slotInWorld(sl));
+    } else {
+      std::vector<Vec3> drawn{{sl.p0.x(), sl.p0.y(), 0}};
+      if (sl.mid) drawn.emplace_back(sl.mid->x(), sl.mid->y(), 0);
+      drawn.emplace_back(sl.p1.x(), sl.p1.y(), 0);
+      for (const Vec3& q : slotPath(drawn)) g.path.push_back(at.body(b->id, q.head<2>()));
+    }
+    if (std::all_of(g.path.begin(), g.path.end(), [](const Vec3& v) { return v.allFinite(); }))
+      s.grooves.push_back(std::move(g));
+  }
+}
+
 void grow(Scene3d& s, const Vec3& p, bool& first) {
   s.lo = first ? p : Vec3(s.lo.cwiseMin(p));
   s.hi = first ? p : Vec3(s.hi.cwiseMax(p));
@@ -98,6 +138,7 @@ std::vector<Vec3> Scene3d::extent() const {
   std::vector<Vec3> out;
   for (const Mark& m : points) out.push_back(m.at);
   for (const Plate& p : plates) out.insert(out.end(), p.outline.begin(), p.outline.end());
+  for (const Groove& g : grooves) out.insert(out.end(), g.path.begin(), g.path.end());
   const double reach = 0.15 * std::max((hi - lo).norm(), 1.0);
   for (const Axis& a : axes) {
     out.push_back(a.at + reach * a.direction);
@@ -123,8 +164,11 @@ Scene3d describeScene3d(const Mechanism& m, const WorldPose& at) {
     const Vec3 a = at.point(j.a), b = at.point(j.b);
     if (a.allFinite() && b.allFinite()) s.rods.push_back({j.id, a, b});
   }
+  addGrooves(m, s, at);
   for (const Scene3d::Plate& p : s.plates)
     for (const Vec3& v : p.outline) grow(s, v, first);
+  for (const Scene3d::Groove& g : s.grooves)
+    for (const Vec3& v : g.path) grow(s, v, first);
   addAxes(m, s, at);
   return s;
 }

@@ -1,7 +1,8 @@
 // What the 3D view draws of a mechanism at a pose, in world millimetres: each moving body as a
 // plate in its plane (the convex hull of its points there, a bar for two, a dot for one), studs
-// to the points at a depth along its plane's normal, the ball rods, the ground's points and the
-// shaft axes through the ground's pivots. Geometry only: the widget projects and paints it.
+// to the points at a depth along its plane's normal, the ball rods, the slots, the ground's
+// points and the shaft axes through the ground's pivots. Geometry only: the widget projects and
+// paints it.
 #pragma once
 
 #include <functional>
@@ -32,6 +33,15 @@ struct Scene3d {
     JointId joint;
     Vec3 a = Vec3::Zero(), b = Vec3::Zero();
   };
+  // A slot: the groove its block or pin runs in, as a path in the world (an arc sampled every 5
+  // degrees or less), on its body at the pose (the ground's where the file writes it, z too).
+  struct Groove {
+    SlotId slot;
+    BodyId body;
+    int number = 0;  // its body's colour
+    bool ground = false;
+    std::vector<Vec3> path;
+  };
   // A shaft: a ground pivot and the normal of the plane of what turns on it.
   struct Axis {
     Vec3 at = Vec3::Zero(), direction = Vec3::UnitZ();
@@ -39,6 +49,7 @@ struct Scene3d {
   std::vector<Plate> plates;  // file order
   std::vector<Mark> points;
   std::vector<Rod> rods;
+  std::vector<Groove> grooves;  // file order
   std::vector<Axis> axes;
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  // the extent of all of it
   bool empty() const { return points.empty(); }

@@ -27,7 +27,7 @@ QPen pen(const QColor& c, double width, Qt::PenStyle style = Qt::SolidLine) {
 // What to paint, with its depth: the painter's algorithm paints in ascending depth.
 struct Entry {
   double depth;
-  enum class Kind { Plate, Rod, Axis, Point } kind;
+  enum class Kind { Plate, Rod, Axis, Point, Groove } kind;
   size_t index;
 };
 
@@ -63,6 +63,9 @@ class ScenePainter {
         case Entry::Kind::Point:
           paintPoint(s_.points[e.index]);
           break;
+        case Entry::Kind::Groove:
+          paintGroove(s_.grooves[e.index], look_.style.ink);
+          break;
       }
     paintTriad();
   }
@@ -91,6 +94,14 @@ class ScenePainter {
                      Entry::Kind::Rod, i});
     for (size_t i = 0; i < s_.axes.size(); ++i)
       out.push_back({proj_.depth(s_.axes[i].at) - lift, Entry::Kind::Axis, i});
+    // A ground slot as near as the ground's points: what runs in it is drawn over it.
+    for (size_t i = 0; i < s_.grooves.size(); ++i) {
+      const auto& path = s_.grooves[i].path;
+      if (!s_.grooves[i].ground || path.empty()) continue;
+      double d = 0;
+      for (const Vec3& v : path) d += proj_.depth(v);
+      out.push_back({d / path.size() + lift, Entry::Kind::Groove, i});
+    }
     for (size_t i = 0; i < s_.points.size(); ++i)
       if (s_.points[i].ground)
         out.push_back({proj_.depth(s_.points[i].at) + 2 * lift, Entry::Kind::Point, i});
@@ -127,8 +138,21 @@ class ScenePainter {
       p_.setBrush(fill);
       p_.drawPolygon(poly);
     }
+    for (const Scene3d::Groove& g : s_.grooves)
+      if (g.body == pl.body) paintGroove(g, edge);
     for (const Scene3d::Mark& m : s_.points)
       if (m.body == pl.body) paintPoint(m);
+  }
+
+  // A slot as the canvas draws one: its rim in `rim`, the paper showing through along it.
+  void paintGroove(const Scene3d::Groove& g, const QColor& rim) {
+    QPolygonF line;
+    for (const Vec3& v : g.path) line << proj_.toScreen(v);
+    p_.setBrush(Qt::NoBrush);
+    p_.setPen(pen(rim, 8));
+    p_.drawPolyline(line);
+    p_.setPen(pen(look_.style.paper, 5));
+    p_.drawPolyline(line);
   }
 
   void paintRod(const Scene3d::Rod& r) {
