@@ -60,9 +60,6 @@ inline void expectShareMovesAsChangedDesignsDo(const Mechanism& m, const Counter
     // A 1:1 belt's ratio has no derivative: which pulley keeps its drawn size switches there
     // (elements/gear.cpp), and the tooth force's line with it.
     if (dims[d].ratioOf && dims[d].value == 1) continue;
-    // A plane's origin (it carries its bodies' masses): the share's couple at a pin in that
-    // plane does not follow the written-in mass's (its force does); not settled yet.
-    if (dims[d].carriesMasses) continue;
     Kinematics kc[2], kh[2];
     ASSERT_TRUE(loadChangedPair(m, dims, d, h, kc)) << dims[d].name;
     ASSERT_TRUE(loadChangedPair(heavier, dims, d, h, kh)) << dims[d].name;

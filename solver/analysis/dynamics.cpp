@@ -118,6 +118,20 @@ void ForceSolver::Impl::joints(const KinematicsState& s) {
     jointA.push_back(*sys.point(j.a));
     if (kindOf(j).react) restated.push_back(static_cast<int>(jointA.size()) - 1);
   }
+  // On a machine in space a ground point a is read where the joint's rows hold it: in the class
+  // frame of the body it holds, not at its drawing's x, y (a pin's couple about it is then 0).
+  if (isSpatial(s.mech)) {
+    const PlaneClasses pc = planeClasses(s.mech);
+    std::vector<char> placed(jointA.size(), 0);
+    for (const Row& row : sys.cons) {
+      if (row.joint < 0 || placed[row.joint] || jointA[row.joint].body >= 0) continue;
+      const int other = row.body[0] >= 0 ? row.body[0] : row.body[1];
+      if (other < 0) continue;
+      placed[row.joint] = 1;
+      jointA[row.joint].s =
+          inClassFrame(s.mech, pc, *s.mech.point(s.mech.joints[row.joint].a), sys.classOf[other]);
+    }
+  }
   reacting.clear();
   coupling.clear();
   for (size_t i = 0; i < sys.cons.size(); ++i) {

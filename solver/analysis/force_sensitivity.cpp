@@ -56,6 +56,18 @@ struct RowsReaction {
   int body = -1;                      // the moving body it is read on
   double flip = 1;                    // -1: that body is the other side (a is on the ground)
   PointId a;
+  // On a machine in space, a on the ground: the class frame the rows hold it in (the body's) and
+  // its place there (as linkage/dynamics.h reads it), else -1.
+  int groundClass = -1;
+  Vec2 groundAt = Vec2::Zero();
+  Vec2 place(const Kinematics& k) const { return groundClass >= 0 ? groundAt : k.position(a); }
+  // Its move along dim: a ground point's world move seen in that frame.
+  Vec2 move(const Kinematics& k, const Sensitivity& s, int dim) const {
+    if (groundClass < 0) return s.point(k, a, dim);
+    const Plane& f = internal::state(k).sys.frames[groundClass];
+    const Vec3 w = s.point3(k, a, dim);
+    return Vec2(w.dot(f.xAxis), w.dot(f.yAxis));
+  }
 };
 
 std::string rowsOf(const KinematicsState& st, int ji, RowsReaction& out) {
@@ -78,6 +90,11 @@ std::string rowsOf(const KinematicsState& st, int ji, RowsReaction& out) {
     if (r.bodies() > 2) return "a on the ground with rows on three bodies";
     out.flip = -1;
     out.body = r.body[0] >= 0 ? r.body[0] : r.body[1];
+  }
+  const Point* a = st.mech.point(out.a);
+  if (isSpatial(st.mech) && out.body >= 0 && sys.point(out.a)->body < 0) {
+    out.groundClass = sys.classOf[out.body];
+    out.groundAt = inClassFrame(st.mech, planeClasses(st.mech), *a, out.groundClass);
   }
   return "";
 }
@@ -102,7 +119,7 @@ Eigen::Vector3d generalized(const Eigen::MatrixXd& J, const RowsReaction& r,
 JointReaction value(const Context& c, const RowsReaction& r) {
   JointReaction out;
   const Eigen::Vector3d G = generalized(c.J, r, c.lambda);
-  out.at = c.k.position(r.a);
+  out.at = r.place(c.k);
   if (r.body >= 0) {
     const Vec2 origin = c.k.q().segment<2>(3 * r.body), F = G.head<2>();
     out.force = r.flip * F;
@@ -123,7 +140,7 @@ JointReaction change(const Context& c, const RowsReaction& r, int dim, const Eig
     dl.push_back(w.dot(dQ) - c.lambda.dot(forcesJacobianChange(c.k, c.s, w, dim)));
   }
   JointReaction out;
-  out.at = c.s.point(c.k, r.a, dim);
+  out.at = r.move(c.k, c.s, dim);
   for (size_t e = 0; e < r.rows.size(); ++e) {
     for (int row : r.cams)
       if (r.rows[e] == row) out.contactN = -dl[e];
@@ -140,7 +157,7 @@ JointReaction change(const Context& c, const RowsReaction& r, int dim, const Eig
   for (size_t e = 0; e < r.rows.size(); ++e)
     dG -= dl[e] * c.J.block<1, 3>(r.rows[e], 3 * r.body).transpose();
   const Eigen::Vector3d G = generalized(c.J, r, c.lambda);
-  const Vec2 at = c.k.position(r.a), origin = c.k.q().segment<2>(3 * r.body), F = G.head<2>();
+  const Vec2 at = r.place(c.k), origin = c.k.q().segment<2>(3 * r.body), F = G.head<2>();
   const Vec2 dOrigin = c.s.dq().block<2, 1>(3 * r.body, dim), dF = dG.head<2>();
   out.force = r.flip * dF;
   out.coupleNm = r.flip * (dG[2] - cross(out.at - dOrigin, F) - cross(at - origin, dF)) / 1000;
