@@ -225,6 +225,49 @@ TEST(SpatialForces, APinCarriesNoCoupleAndIsReadWhereItsPointsMeet) {
   }
 }
 
+// A bearing with no point on its body: an oscillating block's coupler in a plane tilted 30
+// degrees about x, guided by a ground pin P in its slot (its one joint with the ground), its
+// weight's part along the plane's normal the only load out of the plane. The pin bears that
+// force and its moment about P (where the rows hold P in the plane), by hand:
+//   fn = m g.n,  tilt = ((c - P)_y, -(c - P)_x) m g.n / 1000,  c the centre of mass in the plane.
+// Before, the moment was taken about the coupler's frame origin.
+TEST(SpatialForces, ABearingOnAGroundPinInTheBodysSlotIsAtThePin) {
+  const std::string text = R"({"format": "linkage", "version": 1, "name": "oscillating block",
+  "planes": {"tilt": {"origin": [0, 0, 0], "x_axis": [1, 0, 0],
+                      "y_axis": [0, 0.8660254037844387, 0.5]}},
+  "bodies": [
+    {"name": "ground", "ground": true, "points": {"O": [0, 0], "P": [60, 0]}},
+    {"name": "crank", "plane": "tilt", "points": {"O": [0, 0], "A": [20, 0]}},
+    {"name": "coupler", "plane": "tilt", "points": {"A": [20, 0]},
+     "slots": {"s": [[30, 0], [120, 0]]},
+     "mass": {"kg": 0.5, "com": [70, 5], "j_kg_mm2": 100}}],
+  "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"},
+    {"type": "pin", "a": "crank.A", "b": "coupler.A"},
+    {"type": "pin-in-slot", "a": "ground.P", "slot": "coupler.s"}],
+  "driver": {"joint": 0, "rpm": 120, "direction": "ccw"},
+  "gravity": [0, -9.81, -3]})";
+  const LoadResult loaded = parseMechanism(text);
+  ASSERT_TRUE(loaded.mechanism) << loaded.error;
+  const Mechanism& m = *loaded.mechanism;
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  k.setAccelerations(true);
+  const Vec3 n = Vec3(1, 0, 0).cross(Vec3(0, 0.8660254037844387, 0.5));
+  const double Fz = 0.5 * Vec3(0, -9.81, -3).dot(n);
+  const BodyId coupler = m.bodyNamed("coupler")->id;
+  for (double deg = 0; deg < 360; deg += 40) {
+    ASSERT_TRUE(k.moveTo(deg).ok());
+    const Forces f = computeForces(k);
+    ASSERT_TRUE(f.status.ok()) << f.status.message;
+    const JointReaction& r = f.joints[2];
+    const Vec2 c = k.motionOf(coupler, Vec2(70, 5)).position, P(60, 0);
+    EXPECT_NEAR(r.normalN, Fz, 1e-12);
+    EXPECT_NEAR(r.tiltNm.x(), (c - P).y() * Fz / 1000, 1e-12) << deg;
+    EXPECT_NEAR(r.tiltNm.y(), -(c - P).x() * Fz / 1000, 1e-12) << deg;
+    EXPECT_LT((r.at - P).norm(), 1e-12) << deg;
+  }
+}
+
 // The RSSR with its crank drawn in a plane parallel to the drawing but turned 30 degrees about z
 // (the crank's class is the drawing's: its centre of mass and loads are turned into it).
 Mechanism turnedCrank(Mechanism m) {

@@ -120,11 +120,14 @@ void ForceSolver::Impl::joints(const KinematicsState& s) {
   }
   // On a machine in space a ground point a is read where the joint's rows hold it: in the class
   // frame of the body it holds, not at its drawing's x, y (a pin's couple about it is then 0).
+  // A ball rod's ground end is in no plane: its drawing's x, y.
   if (isSpatial(s.mech)) {
     const PlaneClasses pc = planeClasses(s.mech);
     std::vector<char> placed(jointA.size(), 0);
     for (const Row& row : sys.cons) {
-      if (row.joint < 0 || placed[row.joint] || jointA[row.joint].body >= 0) continue;
+      if (row.joint < 0 || placed[row.joint] || jointA[row.joint].body >= 0 ||
+          row.kind == Primitive::Distance3)
+        continue;
       const int other = row.body[0] >= 0 ? row.body[0] : row.body[1];
       if (other < 0) continue;
       placed[row.joint] = 1;

@@ -56,8 +56,8 @@ struct RowsReaction {
   int body = -1;                      // the moving body it is read on
   double flip = 1;                    // -1: that body is the other side (a is on the ground)
   PointId a;
-  // On a machine in space, a on the ground: the class frame the rows hold it in (the body's) and
-  // its place there (as linkage/dynamics.h reads it), else -1.
+  // On a machine in space, a on the ground (not a ball rod's end): the class frame the rows hold
+  // it in (the body's) and its place there (as linkage/dynamics.h reads it), else -1.
   int groundClass = -1;
   Vec2 groundAt = Vec2::Zero();
   Vec2 place(const Kinematics& k) const { return groundClass >= 0 ? groundAt : k.position(a); }
@@ -92,7 +92,7 @@ std::string rowsOf(const KinematicsState& st, int ji, RowsReaction& out) {
     out.body = r.body[0] >= 0 ? r.body[0] : r.body[1];
   }
   const Point* a = st.mech.point(out.a);
-  if (isSpatial(st.mech) && out.body >= 0 && sys.point(out.a)->body < 0) {
+  if (isSpatial(st.mech) && out.body >= 0 && out.rods.empty() && sys.point(out.a)->body < 0) {
     out.groundClass = sys.classOf[out.body];
     out.groundAt = inClassFrame(st.mech, planeClasses(st.mech), *a, out.groundClass);
   }

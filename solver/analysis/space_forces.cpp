@@ -81,12 +81,18 @@ void SpaceForces::prepare(const Mechanism& m, const System& sys,
     if (hi[k] - lo[k] > 1e-9 * sys.size) loaded[k] = 1;
   }
   bearing_.assign(n, -1);
+  groundAt_.assign(n, Vec2::Zero());
   for (int k = 0; k < n; ++k) {
     if (mass[k] && mass[k]->kg > 0 && gravityOut_[k] != 0) loaded[k] = 1;
     if (grounded[k].size() == 1)
       bearing_[k] = *grounded[k].begin();
     else if (loaded[k])
       unsupported_.push_back(sys.bodyIds[k]);
+    if (bearing_[k] < 0) continue;
+    const Joint& j = m.joints[bearing_[k]];
+    for (PointId id : {j.a, j.b})
+      if (const Point* p = id ? m.point(id) : nullptr; p && sys.bodyIndex(p->body) < 0)
+        groundAt_[k] = inClassFrame(m, pc, *p, sys.classOf[k]);
   }
 }
 
@@ -129,7 +135,7 @@ void SpaceForces::reactions(const Mechanism& m, const System& sys,
     const Point* p = m.point(j.a);
     if (sys.bodyIndex(p->body) != k && j.b) p = m.point(j.b);
     const PointLocation* at = sys.point(p->id);
-    B[k] = at && at->body == k ? Vec2(views[k + 1].r + views[k + 1].R * at->s) : views[k + 1].r;
+    B[k] = at && at->body == k ? Vec2(views[k + 1].r + views[k + 1].R * at->s) : groundAt_[k];
     dB[k] = depthOn(m, sys, j, k, placing_[k].depth);
   }
   // A force (class frame: x, y, along the normal) on body k at P and depth d.

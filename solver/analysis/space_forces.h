@@ -71,6 +71,9 @@ class SpaceForces {
   std::vector<double> gravityOut_;     // by body, along the class normal
   std::vector<double> depth_;          // by body: where its mass and loads act, along the normal
   std::vector<int> bearing_;           // by body: its one joint with the ground, or -1
+  // By body: its bearing's ground point in its class frame, where the bearing has no point on
+  // the body (a ground pin in the body's slot).
+  std::vector<Vec2> groundAt_;
   std::vector<BodyId> unsupported_;
 };
 

@@ -42,6 +42,8 @@ void type(QLineEdit* field, const QString& text) {
 }
 
 QPushButton* buttonNamed(MainWindow& w, const QString& text) {
+  // A rebuilt form's old rows are deleted at the event loop's next turn: gone first.
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
   for (QPushButton* b : w.properties().panel()->findChildren<QPushButton*>())
     if (b->text() == text) return b;
   return nullptr;

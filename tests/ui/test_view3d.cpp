@@ -446,7 +446,9 @@ TEST(View3dScene, SlotsAreDrawnWhereTheFileAndTheSolverPutThem) {
   "planes": {"side": {"origin": [0, 0, 0], "x_axis": [0, 0, -1], "y_axis": [0, 1, 0]}},
   "bodies": [
     {"name": "ground", "ground": true, "points": {"O": [0, 0]},
-     "slots": {"g": [[0, -20, 0], [0, -35, 5], [0, -50, 0]], "z": [[0, -60, 0], [0, -60, 9]]}},
+     "slots": {"g": [[0, -20, 0], [0, -35, 5], [0, -50, 0]], "z": [[0, -60, 0], [0, -60, 9]],
+               "w": [[10, -70, 0], [10, -87.07106781186548, 7.0710678118654755],
+                     [10, -80, -10]]}},
     {"name": "crank", "plane": "side", "points": {"O": [0, 0], "A": [0, 10]}},
     {"name": "rod", "plane": "side", "points": {"A": [0, 10], "B": [0, -30]}},
     {"name": "block", "plane": "side", "points": {"B": [0, -30]}}],
@@ -464,7 +466,7 @@ TEST(View3dScene, SlotsAreDrawnWhereTheFileAndTheSolverPutThem) {
   v.resize(640, 480);
   v.setDocument(&d);
   const Scene3d s = v.scene();
-  ASSERT_EQ(s.grooves.size(), 2u);
+  ASSERT_EQ(s.grooves.size(), 3u);
   // The arc through (0, -20, 0), (0, -35, 5), (0, -50, 0): centre (0, -35, -20), radius 25.
   const Scene3d::Groove& arc = s.grooves[0];
   EXPECT_TRUE(arc.ground);
@@ -484,6 +486,20 @@ TEST(View3dScene, SlotsAreDrawnWhereTheFileAndTheSolverPutThem) {
   ASSERT_EQ(along.path.size(), 2u);
   EXPECT_LT((along.path[0] - Vec3(0, -60, 0)).norm(), 1e-12);
   EXPECT_LT((along.path[1] - Vec3(0, -60, 9)).norm(), 1e-12);
+  // Three quarters of a turn about (10, -80, 0), radius 10, in the plane x = 10: from its first
+  // point the long way round through its middle (not the quarter between its ends), every 5
+  // degrees or less.
+  const Scene3d::Groove& wide = s.grooves[2];
+  const Vec3 cw(10, -80, 0);
+  EXPECT_GE(wide.path.size(), 55u);
+  EXPECT_LT((wide.path.front() - Vec3(10, -70, 0)).norm(), 1e-9);
+  EXPECT_LT((wide.path.back() - Vec3(10, -80, -10)).norm(), 1e-9);
+  double opposite = INFINITY;
+  for (const Vec3& q : wide.path) {
+    EXPECT_NEAR((q - cw).norm(), 10, 1e-9);
+    opposite = std::min(opposite, (q - Vec3(10, -90, 0)).norm());
+  }
+  EXPECT_LT(opposite, 10 * 2.5 * M_PI / 180);
   v.showView(Projection::View::Isometric);
   shot(&v, "view3d-ground-arc");
   // A moving body's slots: their ends where the solver has them now.

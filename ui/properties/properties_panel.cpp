@@ -91,7 +91,23 @@ QString PropertiesPanel::title() const {
 }
 
 void PropertiesPanel::clearRows() {
-  while (form_->rowCount() > 0) form_->removeRow(0);
+  // The rows' widgets go at the event loop's next turn, not now: the edit that rebuilds the form
+  // may come from a row's own signal (a choice that changes the form's shape), and Qt reads its
+  // sender again after the slot returns (QComboBox emits textActivated after activated). Until
+  // then they say nothing: hiding one moves the focus, and a field left would commit to what
+  // its row read (a load removed).
+  while (form_->rowCount() > 0) {
+    const QFormLayout::TakeRowResult row = form_->takeRow(0);
+    for (QLayoutItem* item : {row.labelItem, row.fieldItem}) {
+      if (!item) continue;
+      if (QWidget* w = item->widget()) {
+        w->blockSignals(true);
+        w->hide();
+        w->deleteLater();
+      }
+      delete item;
+    }
+  }
   rows_.clear();
 }
 
