@@ -34,6 +34,7 @@ PlaneView::PlaneView(const Mechanism& m, const std::string& plane) {
   const PlaneClasses classes = planeClasses(m);
   view_ = classes.of(planeNamed(m, plane) ? plane : std::string());
   plane_ = planeNamed(m, plane) ? *planeNamed(m, plane) : drawingPlane();
+  frame_ = classes.frames[view_.cls];
   std::uint32_t maxBody = 0, maxPoint = 0;
   for (const Body& b : m.bodies) maxBody = std::max(maxBody, b.id.value);
   for (const Point& p : m.points) maxPoint = std::max(maxPoint, p.id.value);
@@ -65,6 +66,12 @@ PlaneView::PlaneView(const Mechanism& m, const std::string& plane) {
     if (s.mid) s.mid = view_.fromClass(*s.mid);
   }
   if (lo.allFinite() && hi.allFinite()) size_ = std::max(1.0, (hi - lo).norm());
+}
+
+Vec2 PlaneView::worldInView(const Vec3& w) const {
+  if (identity_) return w.head<2>();
+  const Vec3 d = w - frame_.origin;
+  return view_.fromClass(Vec2(d.dot(frame_.xAxis), d.dot(frame_.yAxis)));
 }
 
 const PlaneInClass& PlaneView::placingOf(BodyId b) const {

@@ -169,6 +169,26 @@ bool circleThrough(const Vec3& a, const Vec3& b, const Vec3& c, Vec3& centre, do
   return std::isfinite(radius);
 }
 
+std::vector<Vec3> slotCurveInWorld(const Slot& s) {
+  const std::vector<Vec3> q = slotInWorld(s);
+  Vec3 c;
+  double r = 0;
+  if (q.size() < 3 || !circleThrough(q[0], q[1], q[2], c, r)) return {q.front(), q.back()};
+  // Turning about n the arc meets its points in order: n from its two chords.
+  const Vec3 n = (q[1] - q[0]).cross(q[2] - q[1]).normalized(), u = (q[0] - c) / r, v = n.cross(u),
+             e = q[2] - c;
+  double end = std::atan2(e.dot(v), e.dot(u));
+  if (end <= 0) end += 2 * M_PI;
+  const int steps = std::max(2, static_cast<int>(std::ceil(end / (5 * M_PI / 180))));
+  std::vector<Vec3> out;
+  for (int i = 0; i < steps; ++i) {
+    const double t = end * i / steps;
+    out.push_back(c + r * (std::cos(t) * u + std::sin(t) * v));
+  }
+  out.push_back(q[2]);
+  return out;
+}
+
 Vec2 inClassFrame(const Mechanism& m, const PlaneClasses& pc, const Point& p, int cls) {
   const Body* b = m.body(p.body);
   if (b && !b->ground) return pc.of(b->plane).toClass(p.pos);

@@ -10,12 +10,15 @@
 
 #include <QComboBox>
 #include <QDockWidget>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <cmath>
 
+#include "canvas/body_item.h"
 #include "canvas/canvas_scene.h"
 #include "document/document.h"
 #include "drawing.h"
@@ -437,12 +440,11 @@ TEST(View3dScene, APlaneParallelToTheDrawingIsLiftedThroughItsClassFrame) {
   }
 }
 
-// Slots in 3D: a ground arc written in the world in a plane square to the drawing, and a ground
-// slot along z, drawn where the file puts them (the arc's path on the circle through its three
-// points, from its first through its middle to its last); the Wanzer's slotted disk's slots on
-// the disk where the solver has it. Looked at: view3d-ground-arc.png.
-TEST(View3dScene, SlotsAreDrawnWhereTheFileAndTheSolverPutThem) {
-  const std::string text = R"({"format": "linkage", "version": 1, "name": "arc on edge",
+// Ground slots written in the world in planes square to the drawing: an arc g a slider's block
+// runs in (in the side plane x = 0), a slot z along z, and an arc w of three quarters of a turn
+// about (10, -80, 0), radius 10, in the plane x = 10.
+std::string edgeOnText() {
+  return R"({"format": "linkage", "version": 1, "name": "arc on edge",
   "planes": {"side": {"origin": [0, 0, 0], "x_axis": [0, 0, -1], "y_axis": [0, 1, 0]}},
   "bodies": [
     {"name": "ground", "ground": true, "points": {"O": [0, 0]},
@@ -457,6 +459,14 @@ TEST(View3dScene, SlotsAreDrawnWhereTheFileAndTheSolverPutThem) {
     {"type": "pin", "a": "rod.B", "b": "block.B"},
     {"type": "slider", "a": "block.B", "slot": "ground.g"}],
   "driver": {"joint": 0, "rpm": 60, "direction": "ccw"}})";
+}
+
+// Slots in 3D: a ground arc written in the world in a plane square to the drawing, and a ground
+// slot along z, drawn where the file puts them (the arc's path on the circle through its three
+// points, from its first through its middle to its last); the Wanzer's slotted disk's slots on
+// the disk where the solver has it. Looked at: view3d-ground-arc.png.
+TEST(View3dScene, SlotsAreDrawnWhereTheFileAndTheSolverPutThem) {
+  const std::string text = edgeOnText();
   const LoadResult loaded = parseMechanism(text);
   ASSERT_TRUE(loaded.mechanism) << loaded.error;
   Document d;
@@ -519,6 +529,48 @@ TEST(View3dScene, SlotsAreDrawnWhereTheFileAndTheSolverPutThem) {
     EXPECT_LT((ws.grooves[i].path.front() - Vec3(a.x(), a.y(), 0)).norm(), 1e-9) << sl.name;
     EXPECT_LT((ws.grooves[i].path.back() - Vec3(b.x(), b.y(), 0)).norm(), 1e-9) << sl.name;
   }
+}
+
+// On the drawing plane the ground arcs square to it are the segments they cover (their curves
+// seen along its normal): g from y -50 to -20 at x 0, and w from -90 to -70 at x 10 (its ends
+// are at -70 and -80; it turns through -90 on the way); the slot along z, seen end on, is not
+// drawn. Looked at: edge-on-arcs.png.
+TEST(PlaneChooser, AGroundArcSeenEdgeOnIsTheSegmentItCovers) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("edge.linkage.json");
+  {
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(QByteArray::fromStdString(edgeOnText()));
+  }
+  MainWindow w;
+  w.resize(1200, 800);
+  ASSERT_TRUE(w.document()->open(path, nullptr));
+  w.show();
+  QApplication::processEvents();
+  const Mechanism& m = w.document()->design();
+  const BodyItem* ground = w.scene()->bodyItem(m.ground()->id);
+  ASSERT_TRUE(ground);
+  const BodyGeometry& g = ground->geometry();
+  auto guide = [&](const char* name) -> const Guide* {
+    for (size_t i = 0; i < g.slotIds.size(); ++i)
+      if (m.slot(g.slotIds[i])->name == name) return &g.slots[i];
+    return nullptr;
+  };
+  auto expectSpan = [](const Guide* s, double x, double lo, double hi, const char* name) {
+    ASSERT_TRUE(s) << name;
+    EXPECT_FALSE(s->arc) << name;
+    EXPECT_NEAR(s->p0.x(), x, 1e-9) << name;
+    EXPECT_NEAR(s->p1.x(), x, 1e-9) << name;
+    EXPECT_NEAR(std::min(s->p0.y(), s->p1.y()), lo, 1e-9) << name;
+    EXPECT_NEAR(std::max(s->p0.y(), s->p1.y()), hi, 1e-9) << name;
+  };
+  expectSpan(guide("g"), 0, -50, -20, "g");
+  expectSpan(guide("w"), 10, -90, -70, "w");
+  EXPECT_EQ(guide("z"), nullptr);
+  w.canvas()->setZoom(5);
+  w.canvas()->centerOn(5, -55);
+  shot(&w, "edge-on-arcs");
 }
 
 }  // namespace

@@ -15,16 +15,40 @@ namespace {
 // Z order, bottom to top.
 constexpr double kTraceZ = -10, kGroundZ = -5, kBodyZ = 0, kDriverZ = 35, kOutputZ = 40;
 
-BodyGeometry geometryOf(const Mechanism& m, const Drawing::Body& b) {
+// A ground slot that the view sees edge on (an arc in a plane square to the chosen one: its
+// points there on one line): the segment it covers, its curve's samples seen along the normal;
+// none when it is seen end on.
+std::optional<Guide> edgeOn(const Slot& s, const PlaneView& view) {
+  std::vector<Vec2> seen;
+  for (const Vec3& w : slotCurveInWorld(s)) seen.push_back(view.worldInView(w));
+  // On a line: the farthest from any one is an end, the farthest from that the other.
+  auto farthest = [&](const Vec2& from) {
+    return *std::max_element(seen.begin(), seen.end(), [&](const Vec2& a, const Vec2& b) {
+      return (a - from).squaredNorm() < (b - from).squaredNorm();
+    });
+  };
+  Slot line = s;
+  line.mid.reset();
+  line.p0 = farthest(seen.front());
+  line.p1 = farthest(line.p0);
+  return guideOf(line);
+}
+
+// The body's shapes as the view sees them (`seen`: view.seen() of the mechanism `m`).
+BodyGeometry geometryOf(const Mechanism& m, const PlaneView& view, const Drawing::Body& b) {
+  const Mechanism& seen = view.seen(m);
   BodyGeometry g;
   g.body = b;
-  for (const Slot& s : m.slots)
-    if (s.body == b.id)
-      if (const std::optional<Guide> guide = guideOf(s)) {
-        g.slots.push_back(*guide);
-        g.slotIds.push_back(s.id);
-      }
-  for (const Point& p : m.points)
+  for (const Slot& s : seen.slots) {
+    if (s.body != b.id) continue;
+    std::optional<Guide> guide = guideOf(s);
+    if (!guide && b.shape == Drawing::Shape::Ground && !view.mapsNothing())
+      guide = edgeOn(*m.slot(s.id), view);
+    if (!guide) continue;
+    g.slots.push_back(*guide);
+    g.slotIds.push_back(s.id);
+  }
+  for (const Point& p : seen.points)
     if (p.body == b.id) g.points.push_back(p.pos);
   return g;
 }
@@ -178,7 +202,7 @@ void CanvasScene::rebuild() {
   std::map<BodyId, int> number;
   for (const Drawing::Body& b : drawing_.bodies) {
     number[b.id] = b.number;
-    auto* item = new BodyItem(&ctx_, geometryOf(view_.seen(m), b));
+    auto* item = new BodyItem(&ctx_, geometryOf(m, view_, b));
     item->setZValue(b.shape == Drawing::Shape::Ground ? kGroundZ : kBodyZ + bodies_.size() * 0.01);
     addItem(item);
     bodies_.push_back(item);

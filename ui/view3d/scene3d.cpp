@@ -69,26 +69,6 @@ Scene3d::Plate plateOf(const Mechanism& m, const Body& b, const WorldPose& at) {
   return plate;
 }
 
-// A slot's curve through its points in order (two for a straight one): an arc through three,
-// from the first through the middle to the last, sampled every 5 degrees or less.
-std::vector<Vec3> slotPath(const std::vector<Vec3>& q) {
-  Vec3 c;
-  double r = 0;
-  if (q.size() < 3 || !circleThrough(q[0], q[1], q[2], c, r)) return {q.front(), q.back()};
-  // Turning about n the arc meets its points in order: n from its two chords.
-  const Vec3 n = (q[1] - q[0]).cross(q[2] - q[1]).normalized(), u = (q[0] - c) / r, v = n.cross(u),
-             e = q[2] - c;
-  double end = std::atan2(e.dot(v), e.dot(u));
-  if (end <= 0) end += 2 * M_PI;
-  const int steps = std::max(2, static_cast<int>(std::ceil(end / (5 * M_PI / 180))));
-  std::vector<Vec3> out;
-  for (int i = 0; i <= steps; ++i) {
-    const double t = end * i / steps;
-    out.push_back(c + r * (std::cos(t) * u + std::sin(t) * v));
-  }
-  return out;
-}
-
 // Every slot's groove: the ground's in the world as written, a moving body's sampled in its
 // drawing and carried to where the body is.
 void addGrooves(const Mechanism& m, Scene3d& s, const WorldPose& at) {
@@ -97,12 +77,11 @@ void addGrooves(const Mechanism& m, Scene3d& s, const WorldPose& at) {
     if (!b) continue;
     Scene3d::Groove g{sl.id, b->id, b->number.value_or(0), b->ground, {}};
     if (b->ground) {
-      g.path = slotPath(slotInWorld(sl));
+      g.path = slotCurveInWorld(sl);
     } else {
-      std::vector<Vec3> drawn{{sl.p0.x(), sl.p0.y(), 0}};
-      if (sl.mid) drawn.emplace_back(sl.mid->x(), sl.mid->y(), 0);
-      drawn.emplace_back(sl.p1.x(), sl.p1.y(), 0);
-      for (const Vec3& q : slotPath(drawn)) g.path.push_back(at.body(b->id, q.head<2>()));
+      Slot drawn = sl;  // in the body's sketch
+      drawn.z.clear();
+      for (const Vec3& q : slotCurveInWorld(drawn)) g.path.push_back(at.body(b->id, q.head<2>()));
     }
     if (std::all_of(g.path.begin(), g.path.end(), [](const Vec3& v) { return v.allFinite(); }))
       s.grooves.push_back(std::move(g));

@@ -61,6 +61,8 @@ class PlaneView {
     return view_.identity ? d : Vec2(view_.rot.inverse() * d);
   }
 
+  // A point of the world seen along the chosen plane's normal, as the ground's are.
+  Vec2 worldInView(const Vec3& w) const;
   // A ground point's distance from the chosen plane along its normal (mm); 0 for the others.
   double groundDepth(PointId p) const;
   // A ground point moved to `at` of the view, its distance from the plane kept: its numbers as
@@ -79,6 +81,7 @@ class PlaneView {
   bool identity_ = true;
   PlaneInClass view_;
   Plane plane_;
+  Plane frame_;                        // the chosen plane's class's
   std::vector<PlaneInClass> placing_;  // by BodyId value (the ground's: the view's)
   std::vector<double> groundDepth_;    // by PointId value
   Mechanism seen_;

@@ -42,6 +42,10 @@ Vec3 worldOf(const Mechanism& m, const Point& p);
 std::vector<Vec3> slotInWorld(const Slot& s);
 // The circle through three points in space: false when they are on one line.
 bool circleThrough(const Vec3& a, const Vec3& b, const Vec3& c, Vec3& centre, double& radius);
+// A slot's curve through slotInWorld's points in order, for drawing: its two ends, or an arc's
+// points from the first through the middle to the last every 5 degrees or less (its ends
+// exact). A moving body's slot: in its sketch's x, y at z 0.
+std::vector<Vec3> slotCurveInWorld(const Slot& s);
 
 // Why the planes are not as the file format requires, "" when they are: axes not unit or not
 // perpendicular, "drawing" redefined, two of one name, a body on an unknown plane; named as the
