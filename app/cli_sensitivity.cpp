@@ -83,8 +83,11 @@ difference, as the Cam dock types it), base and roller (cam:F.R.base, cam:F.R.ro
                        dfx_N_per_unit,dfy_N_per_unit; a slider's also dm_Nm_per_unit; a cam's
                        also dcontact_N_per_unit; a gear's or belt's the tooth force or the pull
                        where its kind restates it, its pivots' pins with it); from J^T lambda = Q
-                       differentiated exactly. A planar machine's; redundant joints refused by
-                       name
+                       differentiated exactly. On a machine in space in its plane class's frame
+                       (a ball rod's daxial_N_per_unit), and a joint in a plane also what it
+                       bears out of the plane, dfn_N_per_unit,dmx_Nm_per_unit,dmy_Nm_per_unit
+                       (a body's bearing: its normal force and tilts). Redundant joints refused
+                       by name
 Output, CSV: crank_deg,dimension,dx_mm_per_mm,dy_mm_per_mm; one row a dimension a step, 17
 significant digits. A singular position (a dead point of the output, where the derivatives are
 unbounded) writes no rows and says so on standard error.
@@ -352,8 +355,9 @@ int jointForce(Kinematics& k, Sensitivity& sens, const Options& o) {
   }
   const ElementKind& kind = kindOf(*joint);
   const bool coupling = kind.role == Role::Coupling;
+  const std::vector<const char*> columns = differentiatedColumns(m, kind);
   std::string header;
-  for (const char* c : kind.reactionColumns)
+  for (const char* c : columns)
     header += (header.empty() ? "d" : ",d") + std::string(c) + "_per_unit";
   const JointId id = joint->id;
   return perStep(k, sens, o, header, [&](Kinematics& kk, Sensitivity& ss) {
@@ -361,8 +365,7 @@ int jointForce(Kinematics& k, Sensitivity& sens, const Options& o) {
     std::vector<std::vector<double>> out;
     for (const JointReaction& d : f.change) {
       out.emplace_back();
-      for (const char* c : kind.reactionColumns)
-        out.back().push_back(reactionValue(d, c, coupling));
+      for (const char* c : columns) out.back().push_back(reactionValue(d, c, coupling));
     }
     return out;
   });

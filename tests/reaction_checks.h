@@ -41,6 +41,52 @@ inline void expectReactionsMoveAsChangedDesignsDo(const Mechanism& m, int stepDe
   }
 }
 
+// Every bearing's out-of-plane reaction on a machine in space (its normal force and tilts about
+// its class's x and y axes, linkage/dynamics.h) differentiated by every dimension against the
+// changed designs' (central differences of the whole solve), to 1e-6 of its size (N, N mm),
+// every stepDeg degrees of crank from 15. `largest`: the largest derivative met.
+inline void expectOutOfPlaneMovesAsChangedDesignsDo(const Mechanism& m, double& largest,
+                                                    int stepDeg = 45) {
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  k.setAccelerations(true);
+  const std::vector<Dimension> dims = dimensions(m);
+  const double h = 1e-5;
+  std::vector<Kinematics> changed(2 * dims.size());
+  for (size_t d = 0; d < dims.size(); ++d) {
+    for (int side = 0; side < 2; ++side) {
+      Kinematics& kc = changed[2 * d + side];
+      ASSERT_TRUE(kc.load(changedDesign(m, dims, d, side ? h : -h)).ok()) << dims[d].name;
+      kc.setAccelerations(true);
+    }
+  }
+  auto parts = [](const JointReaction& r) {
+    return Eigen::Vector3d(r.normalN, 1000 * r.tiltNm.x(), 1000 * r.tiltNm.y());
+  };
+  for (int deg = 15; deg < 360; deg += stepDeg) {
+    ASSERT_TRUE(k.moveTo(deg).ok());
+    std::vector<Forces> f(changed.size());
+    for (size_t c = 0; c < changed.size(); ++c) {
+      ASSERT_TRUE(changed[c].moveTo(deg).ok()) << dims[c / 2].name;
+      f[c] = computeForces(changed[c]);
+    }
+    for (size_t j = 0; j < m.joints.size(); ++j) {
+      const JointForceSensitivity s = jointForceSensitivity(k, m.joints[j].id, dims);
+      ASSERT_TRUE(s.status.ok()) << s.status.message;
+      const double size = 1 + parts(s.reaction).norm();
+      for (size_t d = 0; d < dims.size(); ++d) {
+        const Eigen::Vector3d want =
+            (parts(f[2 * d + 1].joints[j]) - parts(f[2 * d].joints[j])) / (2 * h);
+        const Eigen::Vector3d got = parts(s.change[d]);
+        largest = std::max(largest, want.norm());
+        EXPECT_LT((got - want).norm(), 1e-6 * size)
+            << dims[d].name << " joint " << j << " at " << deg << ": " << got.transpose()
+            << " against " << want.transpose();
+      }
+    }
+  }
+}
+
 // A counterweight's share of every joint's reaction differentiated by every dimension
 // (counterweightShareChange: the counterweight fixed in its body's drawing) against the changed
 // designs with the counterweight written in less those without (the share is what its mass adds

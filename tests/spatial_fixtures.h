@@ -7,9 +7,12 @@
 // rod 45) along y in the plane x = 0, its points N 131 mm and T 96 mm below the block B.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "linkage/model.h"
 
@@ -25,6 +28,53 @@ inline std::string vec(const Vec3& v) {
 }
 inline std::string vec2(const Vec2& v) {
   return "[" + num(v.x()) + ", " + num(v.y()) + "]";
+}
+
+// Masses on every moving body (a point at each centre of mass, for its motion in the world), the
+// file's gravity, a force in one body's plane and a torque on another.
+inline Mechanism withMasses(Mechanism m, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.2, 1.0), off(-5, 5);
+  std::vector<BodyId> moving;
+  for (const Body& b : m.bodies)
+    if (!b.ground) moving.push_back(b.id);
+  for (BodyId id : moving) {
+    Vec2 c = Vec2::Zero();
+    int n = 0;
+    for (const Point& p : m.points)
+      if (p.body == id) c += p.pos, ++n;
+    c = c / std::max(n, 1) + Vec2(off(rng), off(rng));
+    m.body(id)->mass = Mass{u(rng), c, 100 * u(rng), ""};
+    m.addPoint(id, "G_com", c);
+  }
+  m.gravity = Vec2(3, -9.81);
+  const Body& last = *m.body(moving.back());
+  const Point* p = nullptr;
+  for (const Point& q : m.points)
+    if (q.body == last.id && q.name != "G_com") p = &q;
+  m.addLoad(Load{p->id, {}, Vec2(3, -7), 0, 40.0, 200.0, ""});
+  m.addLoad(Load{{}, moving.front(), Vec2::Zero(), 0.05, std::nullopt, std::nullopt, ""});
+  return m;
+}
+
+// An oscillating block's coupler in a plane tilted 30 degrees about x, guided by a ground pin P
+// (60, 0) in its slot (its one joint with the ground, a bearing with no point on its body), with
+// a mass of 0.5 kg at (70, 5) in its plane, under gravity (0, -9.81, -3).
+inline std::string tiltedOscillatingBlock() {
+  return R"({"format": "linkage", "version": 1, "name": "oscillating block",
+  "planes": {"tilt": {"origin": [0, 0, 0], "x_axis": [1, 0, 0],
+                      "y_axis": [0, 0.8660254037844387, 0.5]}},
+  "bodies": [
+    {"name": "ground", "ground": true, "points": {"O": [0, 0], "P": [60, 0]}},
+    {"name": "crank", "plane": "tilt", "points": {"O": [0, 0], "A": [20, 0]}},
+    {"name": "coupler", "plane": "tilt", "points": {"A": [20, 0]},
+     "slots": {"s": [[30, 0], [120, 0]]},
+     "mass": {"kg": 0.5, "com": [70, 5], "j_kg_mm2": 100}}],
+  "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"},
+    {"type": "pin", "a": "crank.A", "b": "coupler.A"},
+    {"type": "pin-in-slot", "a": "ground.P", "slot": "coupler.s"}],
+  "driver": {"joint": 0, "rpm": 120, "direction": "ccw"},
+  "gravity": [0, -9.81, -3]})";
 }
 
 namespace rssr {

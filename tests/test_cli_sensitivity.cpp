@@ -3,6 +3,7 @@
 #ifdef LINKAGE_CLI
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -19,6 +20,7 @@
 #include "linkage/tables/force_table.h"
 #include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
+#include "loaded_rssr.h"
 #include "mechanisms.h"
 
 namespace linkage {
@@ -394,6 +396,41 @@ TEST_F(SensitivityCli, EveryKindsReactionDerivativesInItsColumns) {
       }
     }
   }
+}
+
+// On a machine in space a bearing's derivatives include what it bears out of its plane (tests/
+// test_spatial_force_sensitivity.cpp holds the library to the changed designs): the loaded
+// RSSR's crank pin, the library's to the bit.
+TEST_F(SensitivityCli, ABearingsOutOfPlaneDerivativesInSpace) {
+  const Mechanism m = test::loadedRssr();
+  const test::CliResult res = run("sensitivity " + save(m) + " --force pin:ground.O --steps 3");
+  ASSERT_EQ(res.exit, 0) << res.err;
+  const std::vector<std::string> lines = res.lines();
+  EXPECT_EQ(lines.at(0),
+            "crank_deg,dimension,dfx_N_per_unit,dfy_N_per_unit,dfn_N_per_unit,dmx_Nm_per_unit,"
+            "dmy_Nm_per_unit");
+  Kinematics k;
+  ASSERT_TRUE(k.load(m).ok());
+  const std::vector<Dimension> dims = dimensions(m);
+  ASSERT_EQ(lines.size(), 1 + 3 * dims.size()) << res.out;
+  const char* const columns[] = {"fx_N", "fy_N", "fn_N", "mx_Nm", "my_Nm"};
+  double largest = 0;
+  for (int step = 0; step < 3; ++step) {
+    ASSERT_TRUE(k.moveTo(120.0 * step).ok());
+    const JointForceSensitivity f = jointForceSensitivity(k, m.joints[0].id, dims);
+    ASSERT_TRUE(f.status.ok()) << f.status.message;
+    for (size_t d = 0; d < dims.size(); ++d) {
+      const std::vector<std::string> row = split(lines[1 + step * dims.size() + d], ',');
+      ASSERT_EQ(row.size(), 7u);
+      EXPECT_EQ(row[1], dims[d].name);
+      for (size_t col = 0; col < 5; ++col)
+        EXPECT_EQ(parseNumber(row[2 + col]), reactionValue(f.change[d], columns[col], false))
+            << row[1] << " " << columns[col];
+      largest =
+          std::max({largest, std::abs(f.change[d].normalN), std::abs(f.change[d].tiltNm.x())});
+    }
+  }
+  EXPECT_GT(largest, 1e-3);
 }
 
 TEST_F(SensitivityCli, BadInputIsNamed) {

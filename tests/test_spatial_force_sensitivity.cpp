@@ -14,6 +14,7 @@
 #include "linkage/dimension_change.h"
 #include "linkage/dynamics.h"
 #include "linkage/force_sensitivity.h"
+#include "linkage/io/model_file.h"
 #include "linkage/optimize.h"
 #include "linkage/optimize_text.h"
 #include "linkage/shaking_sensitivity.h"
@@ -21,6 +22,7 @@
 #include "loaded_rssr.h"
 #include "optimize_checks.h"
 #include "reaction_checks.h"
+#include "spatial_fixtures.h"
 
 namespace linkage {
 namespace {
@@ -66,6 +68,40 @@ TEST(SpatialForceSensitivity, TheRssrsReactionsMoveAsChangedDesignsDo) {
       }
     }
   }
+  EXPECT_GT(largest, 0.01);
+}
+
+// Each bearing's load out of its plane (its normal force and tilts): the crank's and the
+// rocker's pins take their bodies' weights across the planes and the rod's pull at its balls'
+// depths; as drawn, and with either body in a plane turned in its class.
+TEST(SpatialForceSensitivity, TheBearingsOutOfPlaneReactionsMoveAsChangedDesignsDo) {
+  for (const Mechanism& m : {loadedRssr(), turned("crank"), turned("rocker")}) {
+    double largest = 0;
+    test::expectOutOfPlaneMovesAsChangedDesignsDo(m, largest);
+    EXPECT_GT(largest, 1.0);
+  }
+}
+
+// The overedge machine with masses, gravity across its planes and loads (spatial_fixtures.h):
+// its bearings carry the other joints' in-plane forces at those joints' depths too, so every
+// multiplier's change moves them; and the lockstitch machine's.
+TEST(SpatialForceSensitivity, TheMachinesBearingsOutOfPlaneMoveAsChangedDesignsDo) {
+  for (const char* name : {"overedge-machine", "lockstitch-bevel"}) {
+    Mechanism m = test::withMasses(test::example(name), 7);
+    m.gravityZ = -4.0;
+    double largest = 0;
+    test::expectOutOfPlaneMovesAsChangedDesignsDo(m, largest, 70);
+    EXPECT_GT(largest, 1.0) << name;
+  }
+}
+
+// A bearing with no point on its body (a ground pin in the coupler's slot): it holds the body at
+// its plane's depth, which a plane's origin moves.
+TEST(SpatialForceSensitivity, ABearingInTheBodysSlotMovesAsChangedDesignsDo) {
+  const LoadResult loaded = parseMechanism(test::tiltedOscillatingBlock());
+  ASSERT_TRUE(loaded.mechanism) << loaded.error;
+  double largest = 0;
+  test::expectOutOfPlaneMovesAsChangedDesignsDo(*loaded.mechanism, largest, 40);
   EXPECT_GT(largest, 0.01);
 }
 

@@ -101,33 +101,6 @@ TEST(SpatialForces, TheRssrRodForceIsTheRockersEquationOfMotion) {
               peak, rel, worst);
 }
 
-// Masses on every moving body (a point at each centre of mass, for its motion in the world), the
-// file's gravity, a force in one body's plane and a torque on another.
-Mechanism withMasses(Mechanism m, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0.2, 1.0), off(-5, 5);
-  std::vector<BodyId> moving;
-  for (const Body& b : m.bodies)
-    if (!b.ground) moving.push_back(b.id);
-  for (BodyId id : moving) {
-    Vec2 c = Vec2::Zero();
-    int n = 0;
-    for (const Point& p : m.points)
-      if (p.body == id) c += p.pos, ++n;
-    c = c / std::max(n, 1) + Vec2(off(rng), off(rng));
-    m.body(id)->mass = Mass{u(rng), c, 100 * u(rng), ""};
-    m.addPoint(id, "G_com", c);
-  }
-  m.gravity = Vec2(3, -9.81);
-  const Body& last = *m.body(moving.back());
-  const Point* p = nullptr;
-  for (const Point& q : m.points)
-    if (q.body == last.id && q.name != "G_com") p = &q;
-  m.addLoad(Load{p->id, {}, Vec2(3, -7), 0, 40.0, 200.0, ""});
-  m.addLoad(Load{{}, moving.front(), Vec2::Zero(), 0.05, std::nullopt, std::nullopt, ""});
-  return m;
-}
-
 // d(kinetic energy)/dt less the power of gravity and of the loads (W), from the bodies' motion
 // in the world: what the driver must put in.
 double powerNeeded(const Kinematics& k) {
@@ -160,7 +133,7 @@ double powerNeeded(const Kinematics& k) {
 TEST(SpatialForces, PowerBalanceHoldsOnTheSpatialExamples) {
   for (const char* name : {"rssr-crank-rocker", "overedge-machine", "lockstitch-bevel"}) {
     for (bool closedForm : {true, false}) {
-      const Mechanism m = withMasses(test::example(name), 11);
+      const Mechanism m = test::withMasses(test::example(name), 11);
       KinematicsOptions opt;
       opt.closedForm = closedForm;
       Kinematics k(opt);
@@ -198,7 +171,7 @@ TEST(SpatialForces, PowerBalanceHoldsOnTheSpatialExamples) {
 // shaft.
 TEST(SpatialForces, APinCarriesNoCoupleAndIsReadWhereItsPointsMeet) {
   for (const char* name : {"rssr-crank-rocker", "overedge-machine", "lockstitch-bevel"}) {
-    const Mechanism m = withMasses(test::example(name), 5);
+    const Mechanism m = test::withMasses(test::example(name), 5);
     Kinematics k;
     ASSERT_TRUE(k.load(m).ok()) << name;
     k.setAccelerations(true);
@@ -232,20 +205,7 @@ TEST(SpatialForces, APinCarriesNoCoupleAndIsReadWhereItsPointsMeet) {
 //   fn = m g.n,  tilt = ((c - P)_y, -(c - P)_x) m g.n / 1000,  c the centre of mass in the plane.
 // Before, the moment was taken about the coupler's frame origin.
 TEST(SpatialForces, ABearingOnAGroundPinInTheBodysSlotIsAtThePin) {
-  const std::string text = R"({"format": "linkage", "version": 1, "name": "oscillating block",
-  "planes": {"tilt": {"origin": [0, 0, 0], "x_axis": [1, 0, 0],
-                      "y_axis": [0, 0.8660254037844387, 0.5]}},
-  "bodies": [
-    {"name": "ground", "ground": true, "points": {"O": [0, 0], "P": [60, 0]}},
-    {"name": "crank", "plane": "tilt", "points": {"O": [0, 0], "A": [20, 0]}},
-    {"name": "coupler", "plane": "tilt", "points": {"A": [20, 0]},
-     "slots": {"s": [[30, 0], [120, 0]]},
-     "mass": {"kg": 0.5, "com": [70, 5], "j_kg_mm2": 100}}],
-  "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"},
-    {"type": "pin", "a": "crank.A", "b": "coupler.A"},
-    {"type": "pin-in-slot", "a": "ground.P", "slot": "coupler.s"}],
-  "driver": {"joint": 0, "rpm": 120, "direction": "ccw"},
-  "gravity": [0, -9.81, -3]})";
+  const std::string text = test::tiltedOscillatingBlock();
   const LoadResult loaded = parseMechanism(text);
   ASSERT_TRUE(loaded.mechanism) << loaded.error;
   const Mechanism& m = *loaded.mechanism;
@@ -282,7 +242,7 @@ Mechanism turnedCrank(Mechanism m) {
 }
 
 TEST(SpatialForces, PowerBalanceHoldsWithABodyInATurnedParallelPlane) {
-  Mechanism m = withMasses(turnedCrank(test::example("rssr-crank-rocker")), 5);
+  Mechanism m = test::withMasses(turnedCrank(test::example("rssr-crank-rocker")), 5);
   m.addLoad(Load{*m.findPoint("crank.A"), {}, Vec2(5, 2), 0, std::nullopt, std::nullopt, ""});
   Kinematics k;
   ASSERT_TRUE(k.load(m).ok());
@@ -309,7 +269,7 @@ TEST(SpatialForces, TheShakingForceAndMomentInSpaceAreWhatTheBearingsPutOnTheGro
   // rocker's take out of their planes.
   for (const auto& [turned, gz] :
        {std::pair{false, 0.0}, {true, 0.0}, {false, -6.5}, {true, -6.5}}) {
-    Mechanism m = withMasses(test::example("rssr-crank-rocker"), 3);
+    Mechanism m = test::withMasses(test::example("rssr-crank-rocker"), 3);
     if (turned) m = turnedCrank(m);
     if (gz != 0) m.gravityZ = gz;
     Kinematics k;
@@ -350,7 +310,7 @@ TEST(SpatialForces, TheShakingForceAndMomentInSpaceAreWhatTheBearingsPutOnTheGro
 // normal is z, gravity lies in it, and its joints are at one depth. Bodies held to the ground by
 // one joint are not named.
 TEST(SpatialForces, BodiesWithALoadOutOfTheirPlaneAndNoBearingAreNamed) {
-  const Mechanism m = withMasses(test::example("overedge-machine"), 2);
+  const Mechanism m = test::withMasses(test::example("overedge-machine"), 2);
   Kinematics k;
   ASSERT_TRUE(k.load(m).ok());
   ForceSolver f;
@@ -444,7 +404,7 @@ TEST(SpatialForces, GravityInThreeComponentsOnACrankInAnInclinedPlane) {
 // (the in-plane part of each body's plane loads its equations; the rest its bearing).
 TEST(SpatialForces, PowerAndFrameBalanceHoldWithGravityInThreeComponents) {
   for (const char* name : {"rssr-crank-rocker", "overedge-machine", "lockstitch-bevel"}) {
-    Mechanism m = withMasses(test::example(name), 17);
+    Mechanism m = test::withMasses(test::example(name), 17);
     m.gravityZ = -6.5;
     Kinematics k;
     ASSERT_TRUE(k.load(m).ok()) << name;
@@ -475,7 +435,7 @@ TEST(SpatialForces, PowerAndFrameBalanceHoldWithGravityInThreeComponents) {
 // its tension along the rod; a bevel pair has its couple and no force.
 TEST(SpatialForces, TheForceSamplesOfAMachineInSpaceAreInTheWorld) {
   Kinematics k;
-  ASSERT_TRUE(k.load(withMasses(turnedCrank(test::example("rssr-crank-rocker")), 1)).ok());
+  ASSERT_TRUE(k.load(test::withMasses(turnedCrank(test::example("rssr-crank-rocker")), 1)).ok());
   const ForceSamples s = sampleForces(k, 36);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   ASSERT_TRUE(s.complete && s.inSpace);
@@ -504,7 +464,7 @@ TEST(SpatialForces, TheForceSamplesOfAMachineInSpaceAreInTheWorld) {
   EXPECT_LT(frame, 1e-9 * peak);
   EXPECT_LT(rod, 1e-9 * peak);
   // The lockstitch machine's bevel pairs (joints 5 and 7): the couple, no tooth force.
-  ASSERT_TRUE(k.load(withMasses(test::example("lockstitch-bevel"), 2)).ok());
+  ASSERT_TRUE(k.load(test::withMasses(test::example("lockstitch-bevel"), 2)).ok());
   const ForceSamples b = sampleForces(k, 8);
   ASSERT_TRUE(b.complete) << b.status.message;
   for (int j : {5, 7})

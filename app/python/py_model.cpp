@@ -309,7 +309,7 @@ std::vector<std::pair<std::string, std::vector<double>>> Model::forceSensitivity
   std::vector<std::pair<std::string, std::vector<double>>> out;
   for (size_t d = 0; d < f.dims.size(); ++d) {
     std::vector<double> v;
-    for (const char* c : kind.reactionColumns)
+    for (const char* c : differentiatedColumns(design_, kind))
       v.push_back(reactionValue(f.change[d], c, kind.role == Role::Coupling));
     out.emplace_back(f.dims[d].name, std::move(v));
   }

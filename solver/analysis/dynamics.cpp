@@ -82,17 +82,11 @@ void ForceSolver::ImplDeleter::operator()(Impl* p) const {
 
 void ForceSolver::Impl::bodies(const KinematicsState& s) {
   const System& sys = s.sys;
-  // In space a body's centre of mass and loads are in its plane: into its class's frame.
+  // In space a body's loads are in its plane: into its class's frame.
   const bool spatial = isSpatial(s.mech);
   const PlaneClasses pc = spatial ? planeClasses(s.mech) : PlaneClasses{};
   auto placing = [&](BodyId b) { return pc.of(s.mech.body(b)->plane); };
-  mass.assign(sys.nBodies, std::nullopt);
-  for (const Body& b : s.mech.bodies) {
-    const int k = sys.bodyIndex(b.id);
-    if (k < 0 || !b.mass) continue;
-    const Vec2 com = spatial ? placing(b.id).toClass(b.mass->com) : b.mass->com;
-    mass[k] = BodyMass{b.mass->kg, b.mass->jKgMm2, Vec2(com - sys.frameOrigin[k])};
-  }
+  mass = SpaceForces::masses(s.mech, sys);
   loads.clear();
   for (const Load& l : s.mech.loads) {
     if (l.point) {

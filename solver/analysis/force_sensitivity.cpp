@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 
+#include "analysis/bearing_change.h"
 #include "analysis/forces_jacobian.h"
 #include "kinematics/kinematics_state.h"
 #include "linkage/dynamics.h"
@@ -105,7 +106,8 @@ struct Context {
   const Sensitivity& s;
   Eigen::MatrixXd J;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
-  Eigen::VectorXd lambda;
+  Eigen::VectorXd lambda, Q;
+  internal::Balance balance() const { return {J, lu, lambda, Q}; }
 };
 
 Eigen::Vector3d generalized(const Eigen::MatrixXd& J, const RowsReaction& r,
@@ -325,9 +327,9 @@ Status shareSetUp(const Kinematics& k0, JointId joint, const Counterweight& cw, 
 
 // The forces' Jacobian at k's pose, factored, and the multipliers.
 Context factored(const Kinematics& k, const Sensitivity& s) {
-  Context c{k, s, forcesJacobian(k), {}, {}};
+  Context c{k, s, forcesJacobian(k), {}, {}, generalizedForces(k)};
   c.lu.compute(c.J);
-  c.lambda = c.lu.transpose().solve(generalizedForces(k));
+  c.lambda = c.lu.transpose().solve(c.Q);
   return c;
 }
 
@@ -351,15 +353,21 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
   const Context c = factored(k, s);
   SensitivityPose pose(k, s);
   const PointChange dpose(pose);
+  // On a machine in space a body's bearing takes its load out of the plane as well.
+  const internal::BearingChange bearing(k, su.ji);
   for (size_t d = 0; d < out.dims.size(); ++d) {
     pose.dim = static_cast<int>(d);
     const Eigen::VectorXd dQ = forcesChangeOf(k, s, pose.dim);
     out.change.push_back(su.restated(
         c, pose, dpose, [&](const RowsReaction& r) { return change(c, r, pose.dim, dQ); }));
+    if (bearing.bears())
+      bearing.change(k, s, c.balance(), internal::balanceChange(k, s, c.balance(), pose.dim, dQ),
+                     out.change.back());
     out.derivative.push_back(out.change.back().force);
   }
   if (!std::all_of(out.change.begin(), out.change.end(), [](const JointReaction& r) {
-        return r.force.allFinite() && std::isfinite(r.coupleNm) && std::isfinite(r.contactN);
+        return r.force.allFinite() && std::isfinite(r.coupleNm) && std::isfinite(r.contactN) &&
+               std::isfinite(r.normalN) && r.tiltNm.allFinite();
       }))
     out.status = Status::failure(StatusCode::Singular, "the reaction's derivatives are unbounded");
   return out;
@@ -387,7 +395,7 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
   const HeldPose pose(k);
   JointReaction* parts[3] = {&out.share, &out.perX, &out.perY};
   for (int col = 0; col < 3; ++col) {
-    Context share{k, none, c.J, {}, dl.col(col)};
+    Context share{k, none, c.J, {}, dl.col(col), dQ.col(col)};
     *parts[col] = su.restated(c, pose, pose, [&](const RowsReaction& r) {
       JointReaction v = value(share, r);
       v.at = Vec2::Zero();  // a share at a held pose: no point moves
@@ -422,7 +430,7 @@ CounterweightShareChange counterweightShareChange(const Kinematics& k0, JointId 
   put.put(0, cw.kg, cw.staticMoment, spin);
   // The share's multipliers in the Context's place of the design's: change() then gives the
   // share's change, its rows' turn and its forces' change together.
-  Context c{k, s, forcesJacobian(k), {}, {}};
+  Context c{k, s, forcesJacobian(k), {}, {}, Q.col(0)};
   c.lu.compute(c.J);
   c.lambda = c.lu.transpose().solve(Q.col(0));
   SensitivityPose pose(k, s);

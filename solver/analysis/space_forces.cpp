@@ -15,18 +15,41 @@ Vec3 lift(const Plane& f, const Vec2& v) {
   return distance3::lift(f, v);
 }
 
-// Where joint j's point on body k is along its class's normal: its a or b point's depth, else
-// the body's plane's.
-double depthOn(const Mechanism& m, const System& sys, const Joint& j, int k, double plane) {
+}  // namespace
+
+std::vector<std::optional<SpaceForces::BodyMass>> SpaceForces::masses(const Mechanism& m,
+                                                                      const System& sys) {
+  const bool spatial = isSpatial(m);
+  const PlaneClasses pc = spatial ? planeClasses(m) : PlaneClasses{};
+  std::vector<std::optional<BodyMass>> out(sys.nBodies);
+  for (const Body& b : m.bodies) {
+    const int k = sys.bodyIndex(b.id);
+    if (k < 0 || !b.mass) continue;
+    const Vec2 com = spatial ? pc.of(b.plane).toClass(b.mass->com) : b.mass->com;
+    out[k] = BodyMass{b.mass->kg, b.mass->jKgMm2, Vec2(com - sys.frameOrigin[k])};
+  }
+  return out;
+}
+
+double SpaceForces::depthOn(const Mechanism& m, const System& sys, const Joint& j, int k) const {
   for (PointId p : {j.a, j.b}) {
     const Point* pt = p ? m.point(p) : nullptr;
     if (pt && sys.bodyIndex(pt->body) == k && p.value < sys.pointDepth.size())
       return sys.pointDepth[p.value];
   }
-  return plane;
+  return placing_[k].depth;
 }
 
-}  // namespace
+void SpaceForces::bearingPlace(const Mechanism& m, const System& sys,
+                               const std::vector<BodyView>& views, int k, Vec2& at,
+                               double& depth) const {
+  const Joint& j = m.joints[bearing_[k]];
+  const Point* p = m.point(j.a);
+  if (sys.bodyIndex(p->body) != k && j.b) p = m.point(j.b);
+  const PointLocation* on = sys.point(p->id);
+  at = on && on->body == k ? Vec2(views[k + 1].r + views[k + 1].R * on->s) : groundAt_[k];
+  depth = depthOn(m, sys, j, k);
+}
 
 void SpaceForces::prepare(const Mechanism& m, const System& sys,
                           const std::vector<std::optional<BodyMass>>& mass, const Vec3& g) {
@@ -129,15 +152,8 @@ void SpaceForces::reactions(const Mechanism& m, const System& sys,
   std::vector<Vec2> B(n, Vec2::Zero());
   std::vector<double> dB(n, 0);
   std::vector<Vec3> W(n, Vec3::Zero());
-  for (int k = 0; k < n; ++k) {
-    if (bearing_[k] < 0) continue;
-    const Joint& j = m.joints[bearing_[k]];
-    const Point* p = m.point(j.a);
-    if (sys.bodyIndex(p->body) != k && j.b) p = m.point(j.b);
-    const PointLocation* at = sys.point(p->id);
-    B[k] = at && at->body == k ? Vec2(views[k + 1].r + views[k + 1].R * at->s) : groundAt_[k];
-    dB[k] = depthOn(m, sys, j, k, placing_[k].depth);
-  }
+  for (int k = 0; k < n; ++k)
+    if (bearing_[k] >= 0) bearingPlace(m, sys, views, k, B[k], dB[k]);
   // A force (class frame: x, y, along the normal) on body k at P and depth d.
   auto add = [&](int k, const Vec3& F, const Vec2& P, double d) {
     if (k < 0 || bearing_[k] < 0) return;
@@ -178,7 +194,7 @@ void SpaceForces::reactions(const Mechanism& m, const System& sys,
       const int k = r.body[i];
       if (k < 0 || bearing_[k] == r.joint) continue;  // the bearing takes the rest
       const Vec2 F = i == 0 ? Vec2(-u) : u;
-      add(k, Vec3(F.x(), F.y(), 0), f.P, depthOn(m, sys, j, k, placing_[k].depth));
+      add(k, Vec3(F.x(), F.y(), 0), f.P, depthOn(m, sys, j, k));
     }
   }
   for (int k = 0; k < n; ++k) {

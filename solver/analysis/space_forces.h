@@ -48,9 +48,23 @@ class SpaceForces {
   void prepare(const Mechanism& m, const System& sys,
                const std::vector<std::optional<BodyMass>>& mass, const Vec3& gravity);
   bool on() const { return on_; }
+  // Each body's mass as the forces take it (by system body index; none where the file gives
+  // none): its centre of mass in its class frame's axes from its frame origin.
+  static std::vector<std::optional<BodyMass>> masses(const Mechanism& m, const System& sys);
   const PlaneInClass& placing(int body) const { return placing_[body]; }
   Vec2 gravityIn(int body) const { return gravityIn_[body]; }
   const std::vector<BodyId>& unsupported() const { return unsupported_; }
+
+  // What reactions() reads of body k (analysis/bearing_change.h differentiates it): its bearing
+  // (a joint index, -1: none); where the bearing holds it (class frame) and at what depth along
+  // the class normal; the depth its mass and loads act at; gravity along the normal (m/s^2);
+  // the depth joint j's force on it acts at (its point's there, else its plane's).
+  int bearing(int k) const { return bearing_[k]; }
+  void bearingPlace(const Mechanism& m, const System& sys, const std::vector<BodyView>& views,
+                    int k, Vec2& at, double& depth) const;
+  double depth(int k) const { return depth_[k]; }
+  double gravityOut(int k) const { return gravityOut_[k]; }
+  double depthOn(const Mechanism& m, const System& sys, const Joint& j, int k) const;
 
   // The shaking force and moment in the world (N, N m about the world's origin), from Q (3 a
   // body: force, moment about its frame origin, in its class frame) and the bodies' normal

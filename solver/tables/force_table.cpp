@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <span>
 
 #include "linkage/io/numbers.h"
 #include "linkage/space.h"
@@ -15,13 +16,24 @@ namespace {
 constexpr const char* kOutOfPlane[] = {"fn_N", "mx_Nm", "my_Nm"};
 constexpr const char* kTransmitted[] = {"m_Nm"};
 
-std::span<const char* const> spaceColumns(const ElementKind& kind) {
-  if (kind.role == Role::Coupling) return kTransmitted;
-  if (kind.role == Role::Distance) return {};
+std::span<const char* const> outOfPlaneColumns(const ElementKind& kind) {
+  if (kind.role == Role::Coupling || kind.role == Role::Distance) return {};
   return kOutOfPlane;
 }
 
+std::span<const char* const> spaceColumns(const ElementKind& kind) {
+  if (kind.role == Role::Coupling) return kTransmitted;
+  return outOfPlaneColumns(kind);
+}
+
 }  // namespace
+
+std::vector<const char*> differentiatedColumns(const Mechanism& m, const ElementKind& kind) {
+  std::vector<const char*> out(kind.reactionColumns.begin(), kind.reactionColumns.end());
+  if (isSpatial(m))
+    for (const char* c : outOfPlaneColumns(kind)) out.push_back(c);
+  return out;
+}
 
 // A column's value by its name: planar columns are the force, its couple and a rod's pull.
 double reactionValue(const JointReaction& x, const char* column, bool coupling) {

@@ -217,6 +217,23 @@ def test_stroke_shaking_and_force_sensitivities_are_the_command_lines():
     assert zero_signed(s.force_sensitivity("slider:needlebar.B", 180)) == rows_at(out, 180, 3)
 
 
+def test_a_bearings_out_of_plane_derivatives_are_the_command_lines(tmp_path):
+    # The RSSR with masses on its crank and rocker and gravity across both planes: the crank's
+    # pin bears (dfx, dfy) in its plane and (dfn, dmx, dmy) out of it, as --force writes them.
+    with open(linkage.load("rssr-crank-rocker").path) as f:
+        doc = json.load(f)
+    for body, kg, com in (("crank", 0.3, [5, 1]), ("rocker", 0.2, [-15, 8])):
+        next(b for b in doc["bodies"] if b["name"] == body)["mass"] = {
+            "kg": kg, "com": com, "j_kg_mm2": 60}
+    doc["gravity"] = [0, -9.81, -3]
+    path = tmp_path / "loaded.linkage.json"
+    path.write_text(json.dumps(doc))
+    out = cli("sensitivity", str(path), "--force", "pin:ground.O", "--steps", "4").stdout
+    got = zero_signed(linkage.load(str(path)).force_sensitivity("pin:ground.O", 90))
+    assert got == rows_at(out, 90, 5)
+    assert any(abs(v[2]) > 1e-6 and abs(v[3]) > 1e-6 for v in got.values())
+
+
 def test_points_bodies_dimensions():
     m = linkage.load("four-bar-crank-rocker")
     assert m.bodies == ["ground", "crank", "coupler", "rocker"]

@@ -21,6 +21,11 @@ std::string forceTableRow(const Mechanism& m, const Forces& f, double tS, double
 // as the table writes it; a coupling's m_Nm is the couple it transmits.
 double reactionValue(const JointReaction& x, const char* column, bool coupling);
 
+// The columns of a joint of this kind whose derivatives linkage/force_sensitivity.h gives: its
+// kind's, and on a machine in space what it bears out of its plane (fn_N, mx_Nm, my_Nm; not a
+// coupling's transmitted couple).
+std::vector<const char*> differentiatedColumns(const Mechanism& m, const ElementKind& kind);
+
 // undetermined() as forceTableRow() takes it.
 std::vector<char> undeterminedJoints(const Mechanism& m, const std::vector<JointId>& joints);
 
