@@ -50,7 +50,10 @@ pose on MODEL's assembly branches.
                                      newton metres (over dimensions or counterweights)
      force:JOINT<=N                  the peak over the turn of a joint's reaction |f| (JOINT as
                                      `dynamics` names it: pin:crank.A, slider:block.B) at most
-                                     N newtons (over dimensions or counterweights)
+                                     N newtons (over dimensions or counterweights); in space a
+                                     body's bearing's load out of its plane, over dimensions:
+                                     force:JOINT:fn<=N its normal force |fn|, force:JOINT:tilt<=NM
+                                     its tilts' |(mx, my)| (newton metres)
      clearance:N>=GAP                the file's watched clearance N (from 0) at least GAP mm at
                                      its closest approach
      window:NAME.start=DEG           the first interval of the file's timing window NAME opens
@@ -68,7 +71,7 @@ Output, CSV: quantity,name,before,after,target. A row a variable (variable,DIM);
 measure: stroke_mm (body.point), x_mm and y_mm (and z_mm) (body.point@DEG), path_rms_mm and path_max_mm (the
 given points' distances to the curve), shaking_peak_N and shaking_peak_deg (fx, fy or force),
 shaking_peak_Nm and shaking_peak_deg (moment),
-force_peak_N and force_peak_deg (JOINT),
+force_peak_N and force_peak_deg (JOINT, JOINT:fn; force_peak_Nm with JOINT:tilt),
 clearance_least_mm and clearance_least_deg (clearance N), window_deg (NAME.start or NAME.end);
 a row a counterweight added (counterweight_kg,BODY: its mass, at the body's reach); the objective (mm^2, N^2, ...); the starts, those infeasible and
 those that found the best (within 1e-9 mm^2 + 1e-6 of it). A design infeasible as drawn leaves
@@ -121,7 +124,8 @@ std::string table(const OptimizeSpec& spec, const std::vector<std::string>& name
       row(t.moment ? "shaking_peak_Nm" : "shaking_peak_N", 0, "<=" + formatNumber(t.limitN));
       row("shaking_peak_deg", 1, "");
     } else if (t.kind == OptTarget::Kind::Force) {
-      row("force_peak_N", 0, "<=" + formatNumber(t.limitN));
+      const bool tilt = t.reaction == OptTarget::Reaction::Tilt;
+      row(tilt ? "force_peak_Nm" : "force_peak_N", 0, "<=" + formatNumber(t.limitN));
       row("force_peak_deg", 1, "");
     } else if (t.kind == OptTarget::Kind::Clearance) {
       row("clearance_least_mm", 0, ">=" + formatNumber(t.gapMm));

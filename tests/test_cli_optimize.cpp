@@ -100,6 +100,15 @@ TEST_F(OptimizeCli, MachinesInSpaceMeetStrokeAndPositionTargets) {
   r = run(vary + "--target 'force:pin:ground.O<=" + std::to_string(0.9 * before) + "'");
   ASSERT_EQ(r.exit, 0) << r.err;
   EXPECT_LE(*parseNumber(rows(r)["force_peak_N,pin:ground.O"][1]), 0.9 * before * (1 + 1e-9));
+  // The rocker bearing's tilts out of its plane (N m) over the rod's length and its ball's depth.
+  const std::string rod =
+      "optimize '" + loaded + "' --vary ball-rod:crank.A.length=70:90 --vary crank.A.depth=-20:20 ";
+  r = run(rod + "--target 'force:pin:ground.H:tilt<=1e9' --starts 2");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const double tilt = *parseNumber(rows(r)["force_peak_Nm,pin:ground.H:tilt"][0]);
+  r = run(rod + "--target 'force:pin:ground.H:tilt<=" + formatNumber(0.97 * tilt) + "' --starts 2");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  EXPECT_LE(*parseNumber(rows(r)["force_peak_Nm,pin:ground.H:tilt"][1]), 0.97 * tilt * (1 + 1e-9));
 }
 
 // A machine in space's path (x,y,z a line) and a stroke along z: the RSSR's rocker point at

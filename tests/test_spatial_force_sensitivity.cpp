@@ -225,6 +225,72 @@ TEST(SpatialForceSensitivity, TheRodsTensionAsATarget) {
   EXPECT_NEAR(std::abs(computeForces(after).joints[2].axialN), peak, 1e-9 * peak);
 }
 
+// A bearing's load out of its plane as an optimize target (its normal force's or its tilts' peak
+// over the turn): the objective's gradient over a depth, the rod's length and a plane's origin
+// against central differences, for either pin; a limit on the rocker pin's tilts met, the
+// written design bearing the peak reported.
+TEST(SpatialForceSensitivity, ABearingsLoadOutOfItsPlaneAsATarget) {
+  Kinematics base;
+  ASSERT_TRUE(base.load(loadedRssr()).ok());
+  for (const char* text : {"force:pin:ground.O:fn<=0", "force:pin:ground.O:tilt<=0",
+                           "force:pin:ground.H:fn<=0", "force:pin:ground.H:tilt<=0"}) {
+    std::vector<double> x;
+    const OptimizeSpec spec = spaceSpec(base.mechanism(), text, x);
+    const std::string name(text);
+    EXPECT_EQ(optTargetName(base.mechanism(), spec.targets[0]), name.substr(6, name.find('<') - 6));
+    // Off the drawing's mirror symmetry about the crank's plane's x = 0 (the rocker's plane at
+    // x = 0): there each peak is one of two mirrored maxima of equal height, a corner.
+    x[2] += 7;
+    std::printf("%s\n", text);
+    test::expectGradientAt(base, spec, x);
+  }
+  std::vector<double> x;
+  OptimizeSpec spec = spaceSpec(base.mechanism(), "force:pin:ground.H:tilt<=0", x);
+  const Evaluation e = evaluate(base, spec, x);
+  ASSERT_TRUE(e.feasible) << e.why;
+  const double before = e.measures[0][0];
+  spec.targets[0].limitN = 0.95 * before;
+  spec.variables.pop_back();  // the design's own plane stays inside the bounds
+  spec.starts = 3;
+  const OptimizeResult r = optimize(base, spec);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  const double peak = r.atAfter.measures[0][0];
+  std::printf("the rocker pin's tilts' peak %.6g N m -> %.6g N m\n", before, peak);
+  EXPECT_LE(peak, 0.95 * before * (1 + 1e-9));
+  Kinematics after;
+  ASSERT_TRUE(after.load(r.design).ok());
+  after.setAccelerations(true);
+  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  EXPECT_NEAR(computeForces(after).joints[1].tiltNm.norm(), peak, 1e-9 * peak);
+}
+
+// What a bearing's load out of its plane cannot be a target of, named: a planar machine, a joint
+// that is no body's bearing, a search over counterweights.
+TEST(SpatialForceSensitivity, OutOfPlaneTargetsRefusedAreNamed) {
+  struct Case {
+    Mechanism m;
+    const char *target, *variable, *why;
+  };
+  const Case cases[] = {
+      {test::example("drop-feed"), "force:pin:ground.L:fn<=1", "ground.L.x", "this one is planar"},
+      {loadedRssr(), "force:ball-rod:crank.A:tilt<=1", "crank.A.depth", "is no body's one joint"},
+      {loadedRssr(), "force:pin:ground.O:fn<=1", "crank.counterweight.x",
+       "a counterweight's share of a bearing's load"}};
+  for (const Case& c : cases) {
+    Kinematics base;
+    ASSERT_TRUE(base.load(c.m).ok());
+    OptimizeSpec spec;
+    spec.variables = {{c.variable, -50, 50}};
+    OptTarget t;
+    std::string why;
+    ASSERT_TRUE(parseOptTarget(c.m, c.target, t, why)) << why;
+    spec.targets = {t};
+    const OptimizeResult r = optimize(base, spec);
+    EXPECT_FALSE(r.status.ok()) << c.target;
+    EXPECT_NE(r.status.message.find(c.why), std::string::npos) << r.status.message;
+  }
+}
+
 // A shaking target's limit at 0.97 of its peak met by the rod's length alone, and the written
 // design feeling the peak reported where it was found (|F|, or |M| for the moment).
 void limitMetByTheRod(const Kinematics& base, OptimizeSpec spec, double peakBefore) {

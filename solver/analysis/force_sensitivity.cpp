@@ -335,6 +335,11 @@ Context factored(const Kinematics& k, const Sensitivity& s) {
 
 }  // namespace
 
+bool bearsOutOfPlane(const Kinematics& k, JointId joint) {
+  const int ji = k.valid() ? k.mechanism().jointIndex(joint) : -1;
+  return ji >= 0 && internal::BearingChange(k, ji).bears();
+}
+
 JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
                                             std::vector<Dimension> dims) {
   JointForceSensitivity out;

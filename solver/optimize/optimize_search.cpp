@@ -9,7 +9,9 @@
 
 #include "linkage/edits.h"
 #include "linkage/elements.h"
+#include "linkage/force_sensitivity.h"
 #include "linkage/optimize.h"
+#include "linkage/optimize_text.h"
 #include "linkage/sensitivity.h"
 #include "linkage/space.h"
 #include "linkage/transmission.h"
@@ -190,6 +192,28 @@ Status checkSpace(bool space, const OptTarget& t) {
   return Status::success();
 }
 
+// A force target out of a joint's plane: a bearing's on a machine in space, over dimensions (a
+// counterweight's share of it is not differentiated).
+Status checkOutOfPlane(const Kinematics& base, const OptTarget& t, const opt::Variables& vars) {
+  if (t.kind != OptTarget::Kind::Force || t.reaction == OptTarget::Reaction::InPlane)
+    return Status::success();
+  const Mechanism& m = base.mechanism();
+  const std::string name = optTargetName(m, t);
+  if (!isSpatial(m))
+    return Status::badModel("'" + name +
+                            "': what a joint bears out of its plane is a machine in space's "
+                            "(planes); this one is planar");
+  if (!bearsOutOfPlane(base, m.joints[t.index].id))
+    return Status::badModel("'" + name +
+                            "': the joint is no body's one joint with the ground (its bearing), "
+                            "so it bears nothing out of its plane");
+  if (!vars.counterweights.empty())
+    return Status::badModel("'" + name +
+                            "': a counterweight's share of a bearing's load out of its plane is "
+                            "not differentiated yet; vary dimensions");
+  return Status::success();
+}
+
 double uniform(std::mt19937_64& g) {
   return static_cast<double>(g() >> 11) * 0x1.0p-53;
 }
@@ -229,6 +253,7 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
       return Status::badModel("a path target has no points");
     if (t.kind == OptTarget::Kind::Transmission)
       if (Status s = checkTransmission(base.mechanism(), t); !s.ok()) return s;
+    if (Status s = checkOutOfPlane(base, t, vars); !s.ok()) return s;
   }
   return Status::success();
 }

@@ -80,8 +80,11 @@ struct Shaker {
     cw.kg = vars.kg(x, c);
     return cw;
   }
-  // A joint's force as the target reads it: a ball rod's (a machine in space) is its tension.
+  // A joint's force as the target reads it: a ball rod's (a machine in space) is its tension; a
+  // bearing's load out of its plane its normal force or its tilts.
   Vec2 part(const JointReaction& r) const {
+    if (t.reaction == OptTarget::Reaction::Normal) return Vec2(r.normalN, 0);
+    if (t.reaction == OptTarget::Reaction::Tilt) return r.tiltNm;
     return kindOf(design.mechanism().joints[t.index]).role == Role::Distance ? Vec2(r.axialN, 0)
                                                                              : r.force;
   }

@@ -2,6 +2,7 @@
 #include "linkage/optimize_text.h"
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 
 #include "linkage/elements.h"
@@ -109,14 +110,30 @@ std::string shakingName(const OptTarget& t) {
                                            : "force";
 }
 
-// force:KIND:body.point<=N, the joint named as dynamics' columns name it
+// The part of a reaction a force target names after its joint: none, :fn or :tilt.
+constexpr struct {
+  const char* suffix;
+  OptTarget::Reaction part;
+} kReactionParts[] = {{":fn", OptTarget::Reaction::Normal}, {":tilt", OptTarget::Reaction::Tilt}};
+
+// force:KIND:body.point<=N (:fn<=N, :tilt<=NM), the joint named as dynamics' columns name it
 bool parseForce(const Mechanism& m, const std::string& text, OptTarget& t, std::string& why) {
   const size_t le = text.find("<=");
   const std::optional<double> n =
       le == std::string::npos ? std::nullopt : parseNumber(text.substr(le + 2));
   if (!n.has_value() || !(n.value() >= 0))
-    return why += "expected force:JOINT<=N (JOINT as dynamics names it, pin:crank.A)", false;
-  const std::string name = text.substr(6, le - 6);
+    return why +=
+           "expected force:JOINT<=N (JOINT as dynamics names it, pin:crank.A; "
+           "force:JOINT:fn<=N, force:JOINT:tilt<=NM out of its plane)",
+           false;
+  std::string name = text.substr(6, le - 6);
+  t.reaction = OptTarget::Reaction::InPlane;
+  for (const auto& [suffix, part] : kReactionParts)
+    if (const size_t at = name.rfind(suffix);
+        at != std::string::npos && at + std::strlen(suffix) == name.size()) {
+      t.reaction = part;
+      name.resize(at);
+    }
   std::string known;
   for (size_t j = 0; j < m.joints.size(); ++j) {
     const std::string label =
@@ -255,8 +272,13 @@ bool parseOptTarget(const Mechanism& m, std::string text, OptTarget& t, std::str
 std::string optTargetName(const Mechanism& m, const OptTarget& t) {
   if (t.kind == OptTarget::Kind::Shaking) return shakingName(t);
   if (t.kind == OptTarget::Kind::Clearance) return "clearance " + std::to_string(t.index);
-  if (t.kind == OptTarget::Kind::Force)
-    return std::string(kindOf(m.joints[t.index]).name) + ":" + m.pointLabel(m.joints[t.index].a);
+  if (t.kind == OptTarget::Kind::Force) {
+    std::string name =
+        std::string(kindOf(m.joints[t.index]).name) + ":" + m.pointLabel(m.joints[t.index].a);
+    for (const auto& [suffix, part] : kReactionParts)
+      if (t.reaction == part) name += suffix;
+    return name;
+  }
   if (t.kind == OptTarget::Kind::Window) return t.window + (t.windowEnd ? ".end" : ".start");
   std::string name = m.pointLabel(t.point);
   if (t.kind == OptTarget::Kind::Position) name.append("@").append(formatNumber(t.crankDeg));

@@ -249,6 +249,21 @@ void expectNumbersForPeople(const QTableWidget& table, const std::vector<double>
           << table.item(r, c)->text().toStdString() << " elided in column " << c;
 }
 
+// Find run with `starts` starts, waited for; its result's quantities, as the table names them.
+void findWith(OptimizeDialog& dialog, int starts) {
+  dialog.findChild<QSpinBox*>("optStarts")->setValue(starts);
+  QSignalSpy done(&dialog, &OptimizeDialog::finished);
+  dialog.find();
+  ASSERT_TRUE(done.wait(300000));
+  ASSERT_TRUE(dialog.result() && dialog.result()->status.ok()) << dialog.summary().toStdString();
+}
+QStringList resultQuantities(const OptimizeDialog& dialog) {
+  auto* table = dialog.findChild<QTableWidget*>("optResult");
+  QStringList rows;
+  for (int r = 0; r < table->rowCount(); ++r) rows << table->item(r, 0)->text();
+  return rows;
+}
+
 // A joint's reaction as a target (its peak over the turn), met by a counterweight: the crank
 // pivot of the 22-A slider-crank with masses, the result named as `dynamics` names the joint,
 // applied as one undo step whose design bears the peak reported.
@@ -262,21 +277,15 @@ TEST(OptimizeDialog, AReactionsPeakLoweredByACounterweight) {
   ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Force, "pin:ground.O", "0"));
   // One start: each row's gradient solves the counterweight's share at its angle, slow under the
   // sanitizers (eight starts took 337 s there).
-  dialog.findChild<QSpinBox*>("optStarts")->setValue(1);
-  QSignalSpy done(&dialog, &OptimizeDialog::finished);
-  dialog.find();
-  ASSERT_TRUE(done.wait(300000));
-  ASSERT_TRUE(dialog.result() && dialog.result()->status.ok()) << dialog.summary().toStdString();
+  findWith(dialog, 1);
   const double before = dialog.result()->atBefore.measures.at(0).at(0);
   const double peak = dialog.result()->atAfter.measures.at(0).at(0);
   const double peakDeg = dialog.result()->atAfter.measures.at(0).at(1);
   EXPECT_LT(peak, 0.6 * before);
-  auto* table = dialog.findChild<QTableWidget*>("optResult");
-  QStringList rows;
-  for (int r = 0; r < table->rowCount(); ++r) rows << table->item(r, 0)->text();
+  const QStringList rows = resultQuantities(dialog);
   EXPECT_TRUE(rows.contains("peak reaction |f| at pin:ground.O (N)"))
       << rows.join("; ").toStdString();
-  expectNumbersForPeople(*table, dialog.result()->after);
+  expectNumbersForPeople(*dialog.findChild<QTableWidget*>("optResult"), dialog.result()->after);
   shot(&dialog, "optimize_dialog_reaction");
   const int steps = doc.undoStack()->count();
   ASSERT_TRUE(dialog.apply());
@@ -285,6 +294,38 @@ TEST(OptimizeDialog, AReactionsPeakLoweredByACounterweight) {
   ASSERT_TRUE(after.load(doc.design()).ok());
   ASSERT_TRUE(after.moveTo(peakDeg).ok());
   EXPECT_NEAR(computeForces(after).joints[0].force.norm(), peak, 1e-9 * peak);
+}
+
+// A bearing's load out of its plane as a target on a machine in space: the RSSR's rocker pin's
+// tilts (N m) lowered by the rod's length and its crank ball's depth, the row named as
+// `linkage-cli optimize` names it; a ball rod offers no such entry; applied as one undo step
+// whose design bears the peak reported.
+TEST(OptimizeDialog, ABearingsTiltsOutOfItsPlaneLowered) {
+  Document doc;
+  QTemporaryDir dir;
+  const QString path = dir.filePath("rssr.linkage.json");
+  ASSERT_TRUE(saveMechanismFile(test::rssrWithMasses(), path.toStdString()).ok);
+  ASSERT_TRUE(doc.open(path, nullptr));
+  OptimizeDialog dialog(&doc);
+  ASSERT_TRUE(dialog.vary("ball-rod:crank.A.length", 70, 90));
+  ASSERT_TRUE(dialog.vary("crank.A.depth", -20, 20));
+  EXPECT_FALSE(dialog.addTarget(OptTarget::Kind::Force, "ball-rod:crank.A:fn", "0"));
+  ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Force, "pin:ground.H:tilt", "0"));
+  findWith(dialog, 2);
+  const double before = dialog.result()->atBefore.measures.at(0).at(0);
+  const double peak = dialog.result()->atAfter.measures.at(0).at(0);
+  const double peakDeg = dialog.result()->atAfter.measures.at(0).at(1);
+  EXPECT_LT(peak, 0.97 * before);
+  const QStringList rows = resultQuantities(dialog);
+  EXPECT_TRUE(rows.contains("peak tilts |(mx, my)| at pin:ground.H:tilt (N m)"))
+      << rows.join("; ").toStdString();
+  shot(&dialog, "optimize_dialog_tilts");
+  ASSERT_TRUE(dialog.apply());
+  Kinematics after;
+  ASSERT_TRUE(after.load(doc.design()).ok());
+  after.setAccelerations(true);
+  ASSERT_TRUE(after.moveTo(peakDeg).ok());
+  EXPECT_NEAR(computeForces(after).joints[1].tiltNm.norm(), peak, 1e-9 * peak);
 }
 
 // The shaking moment's peak as a target (a planar machine's, about the drawing's origin), met by

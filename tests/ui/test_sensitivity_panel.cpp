@@ -8,6 +8,7 @@
 #include <QComboBox>
 #include <QTemporaryDir>
 #include <QTest>
+#include <memory>
 
 #include "design/sensitivity_panel.h"
 #include "document/document.h"
@@ -32,6 +33,13 @@ void settle(SensitivityPanel& panel) {
   QElapsedTimer t;
   t.start();
   while (panel.redrawPending() && t.elapsed() < 10000) QTest::qWait(5);
+}
+
+// Component `which` chosen in its box as a user does, the redraw waited for.
+void pick(SensitivityPanel& panel, int which) {
+  panel.componentBox()->setCurrentIndex(which);
+  Q_EMIT panel.componentBox()->activated(which);
+  settle(panel);
 }
 
 // `text` chosen in the Output box as a user does (its activation), the redraw waited for; false
@@ -111,9 +119,7 @@ TEST(SensitivityPanel, AFourBarsPointMovesWithItsGround) {
   panel.show();
   settle(panel);
   for (int component : {0, 1}) {
-    panel.componentBox()->setCurrentIndex(component);
-    Q_EMIT panel.componentBox()->activated(component);
-    settle(panel);
+    pick(panel, component);
     ASSERT_FALSE(panel.bars().empty());
     double x = 0, y = 0;
     for (const SensitivityPanel::Bar& b : panel.bars()) {
@@ -333,14 +339,10 @@ TEST(SensitivityPanel, AMachineInSpaceShowsTheWorldsXYAndZ) {
         sum += b.now;
     return sum;
   };
-  panel.componentBox()->setCurrentIndex(0);
-  Q_EMIT panel.componentBox()->activated(0);
-  settle(panel);
+  pick(panel, 0);
   ASSERT_FALSE(panel.bars().empty());
   EXPECT_NEAR(sumAlongX(), 1, 1e-12);
-  panel.componentBox()->setCurrentIndex(3);
-  Q_EMIT panel.componentBox()->activated(3);
-  settle(panel);
+  pick(panel, 3);
   EXPECT_NEAR(sumAlongX(), 0, 1e-12);
   bool rod = false;
   for (const SensitivityPanel::Bar& b : panel.bars())
@@ -352,13 +354,23 @@ TEST(SensitivityPanel, AMachineInSpaceShowsTheWorldsXYAndZ) {
   EXPECT_EQ(panel.componentBox()->currentIndex(), 1);
 }
 
-// The RSSR with masses, in a file of its own.
-void openRssrWithMasses(Document& doc, QTemporaryDir& dir) {
-  Mechanism m = test::rssrWithMasses();
-  const QString path = dir.filePath("rssr.linkage.json");
-  ASSERT_TRUE(saveMechanismFile(m, path.toStdString()).ok);
-  ASSERT_TRUE(doc.open(path, nullptr));
-}
+// The RSSR with masses in a file of its own at crank angle 70, the dock shown on it.
+class RssrDock : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const QString path = dir_.filePath("rssr.linkage.json");
+    ASSERT_TRUE(saveMechanismFile(test::rssrWithMasses(), path.toStdString()).ok);
+    ASSERT_TRUE(doc.open(path, nullptr));
+    doc.setCrankDeg(70);
+    panel_ = std::make_unique<SensitivityPanel>(&doc);
+    panel_->resize(900, 400);
+    panel_->show();
+    settle(*panel_);
+  }
+  QTemporaryDir dir_;
+  Document doc;
+  std::unique_ptr<SensitivityPanel> panel_;
+};
 
 // The shaking force (a design with masses: the drop feed): its x, y and the length of its
 // change per unit of each dimension, the library's (tests/test_optimize_shaking.cpp holds it to
@@ -366,20 +378,11 @@ void openRssrWithMasses(Document& doc, QTemporaryDir& dir) {
 // On a machine in space the shaking force is the world's, its z the fourth component: the RSSR
 // with masses, the library's derivatives (tests/test_spatial_force_sensitivity.cpp holds them to
 // changed designs).
-TEST(SensitivityPanel, TheShakingForceInSpace) {
-  Document doc;
-  QTemporaryDir dir;
-  openRssrWithMasses(doc, dir);
-  doc.setCrankDeg(70);
-  SensitivityPanel panel(&doc);
-  panel.resize(900, 400);
-  panel.show();
-  settle(panel);
+TEST_F(RssrDock, TheShakingForceInSpace) {
+  SensitivityPanel& panel = *panel_;
   ASSERT_TRUE(choose(panel, "shaking force"));
   ASSERT_EQ(panel.componentBox()->count(), 4);
-  panel.componentBox()->setCurrentIndex(3);  // z
-  Q_EMIT panel.componentBox()->activated(3);
-  settle(panel);
+  pick(panel, 3);  // z
   Kinematics k = doc.kinematics();
   k.setAccelerations(true);
   Sensitivity s;
@@ -400,6 +403,32 @@ TEST(SensitivityPanel, TheShakingForceInSpace) {
   shot(&panel, "space_shaking_sensitivity");
 }
 
+// A bearing's reaction on a machine in space: in its plane class's frame (x, y), and its z the
+// normal force the rocker's pin takes out of the plane; the library's derivatives.
+TEST_F(RssrDock, ABearingsReactionInSpace) {
+  SensitivityPanel& panel = *panel_;
+  ASSERT_TRUE(choose(panel, "reaction at pin:ground.H"));
+  ASSERT_EQ(panel.componentBox()->count(), 4);
+  const JointForceSensitivity f =
+      jointForceSensitivity(doc.kinematics(), doc.design().joints[1].id, dimensions(doc.design()));
+  ASSERT_TRUE(f.status.ok()) << f.status.message;
+  for (int which : {0, 3}) {  // x, then z
+    pick(panel, which);
+    ASSERT_EQ(panel.bars().size(), f.dims.size());
+    double largest = 0;
+    for (const SensitivityPanel::Bar& b : panel.bars())
+      for (size_t d = 0; d < f.dims.size(); ++d)
+        if (f.dims[d].name == b.dimension) {
+          EXPECT_EQ(b.now, which == 3 ? f.change[d].normalN : f.change[d].force.x()) << b.dimension;
+          largest = std::max(largest, std::abs(b.now));
+        }
+    EXPECT_GT(largest, 1e-4) << which;
+  }
+  EXPECT_TRUE(panel.summary().startsWith("The pin bears ")) << panel.summary();
+  EXPECT_TRUE(panel.summary().contains("out of its plane")) << panel.summary();
+  shot(&panel, "space_bearing_sensitivity");
+}
+
 TEST(SensitivityPanel, TheShakingForce) {
   Document doc;
   ASSERT_TRUE(doc.open(QString::fromStdString(*resolveModel("drop-feed")), nullptr));
@@ -412,9 +441,7 @@ TEST(SensitivityPanel, TheShakingForce) {
   const int at = panel.pointBox()->currentIndex();
   EXPECT_TRUE(panel.componentBox()->isEnabled());
   for (int which : {0, 1, 2}) {
-    panel.componentBox()->setCurrentIndex(which);
-    Q_EMIT panel.componentBox()->activated(which);
-    settle(panel);
+    pick(panel, which);
     const int turns = panel.turnComputations();
     for (double deg : {40.0, 200.0}) {
       doc.setCrankDeg(deg);
@@ -445,9 +472,7 @@ TEST(SensitivityPanel, TheShakingForce) {
   ASSERT_EQ(pin, at + 2);  // pin:ground.M first
   panel.pointBox()->setCurrentIndex(pin);
   Q_EMIT panel.pointBox()->activated(pin);
-  panel.componentBox()->setCurrentIndex(1);
-  Q_EMIT panel.componentBox()->activated(1);
-  settle(panel);
+  pick(panel, 1);
   const int turns = panel.turnComputations();
   for (double deg : {40.0, 200.0}) {
     doc.setCrankDeg(deg);
@@ -516,15 +541,8 @@ TEST(SensitivityPanel, TheShakingMoment) {
 
 // On a machine in space the shaking moment is the world's (about its origin): each component
 // the component box chooses is the library's, and the length of the change is |dM|.
-TEST(SensitivityPanel, TheShakingMomentOnAMachineInSpace) {
-  Document doc;
-  QTemporaryDir dir;
-  openRssrWithMasses(doc, dir);
-  doc.setCrankDeg(70);
-  SensitivityPanel panel(&doc);
-  panel.resize(900, 400);
-  panel.show();
-  settle(panel);
+TEST_F(RssrDock, TheShakingMomentOnAMachineInSpace) {
+  SensitivityPanel& panel = *panel_;
   ASSERT_TRUE(choose(panel, "shaking moment"));
   EXPECT_TRUE(panel.componentBox()->isEnabled());
   Kinematics k = doc.kinematics();
@@ -534,9 +552,7 @@ TEST(SensitivityPanel, TheShakingMomentOnAMachineInSpace) {
   ASSERT_TRUE(s.at(k).ok());
   ASSERT_EQ(panel.componentBox()->count(), 4);  // x, y, the length of the change, z
   for (int which : {0, 1, 2, 3}) {
-    panel.componentBox()->setCurrentIndex(which);
-    Q_EMIT panel.componentBox()->activated(which);
-    settle(panel);
+    pick(panel, which);
     ASSERT_EQ(panel.bars().size(), s.dims().size());
     double largest = 0;
     for (const SensitivityPanel::Bar& b : panel.bars())
@@ -572,9 +588,7 @@ TEST(SensitivityPanel, AStrokeInSpaceAlongTheAxisChosen) {
   const Mechanism& m = doc.design();
   const PointId C = *m.findPoint("rocker.C");
   for (int which : {3, 0, 2}) {
-    panel.componentBox()->setCurrentIndex(which);
-    Q_EMIT panel.componentBox()->activated(which);
-    settle(panel);
+    pick(panel, which);
     const Vec3 along = which == 3 ? Vec3::UnitZ() : which == 0 ? Vec3::UnitX() : Vec3::UnitY();
     const StrokeSensitivity want = strokeSensitivity(doc.kinematics(), C, along, dimensions(m));
     ASSERT_TRUE(want.status.ok()) << want.status.message;
@@ -601,9 +615,7 @@ TEST(SensitivityPanel, AGearsReaction) {
   panel.show();
   settle(panel);
   ASSERT_TRUE(choose(panel, "reaction at gear:armshaft.M"));
-  panel.componentBox()->setCurrentIndex(1);
-  Q_EMIT panel.componentBox()->activated(1);
-  settle(panel);
+  pick(panel, 1);
   const Mechanism& m = doc.design();
   size_t g = 0;
   while (g < m.joints.size() && std::string(kindOf(m.joints[g]).name) != "gear") ++g;

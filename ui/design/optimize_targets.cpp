@@ -9,6 +9,7 @@
 #include "linkage/optimize_text.h"
 #include "linkage/space.h"
 #include "linkage/stroke_sensitivity.h"
+#include "linkage/tables/force_table.h"
 #include "linkage/transmission.h"
 
 namespace linkage::ui {
@@ -32,6 +33,33 @@ QString number(double v) {
   return QString::number(v, 'g', 10);
 }
 
+// A reaction target's choices: each joint's force, and on a machine in space each joint in a
+// plane's load out of it (its normal force :fn, its tilts :tilt: a bearing's, the solver says
+// which), named as linkage-cli optimize names them.
+struct ReactionChoice {
+  size_t joint;
+  OptTarget::Reaction part;
+};
+std::vector<ReactionChoice> reactionChoices(const Mechanism& m) {
+  std::vector<ReactionChoice> out;
+  for (size_t j = 0; j < m.joints.size(); ++j) out.push_back({j, OptTarget::Reaction::InPlane});
+  if (!isSpatial(m)) return out;
+  for (size_t j = 0; j < m.joints.size(); ++j)
+    if (differentiatedColumns(m, linkage::kindOf(m.joints[j])).size() >
+        linkage::kindOf(m.joints[j]).reactionColumns.size())
+      for (OptTarget::Reaction part : {OptTarget::Reaction::Normal, OptTarget::Reaction::Tilt})
+        out.push_back({j, part});
+  return out;
+}
+
+QString reactionName(const Mechanism& m, size_t joint, OptTarget::Reaction part) {
+  OptTarget t;
+  t.kind = K::Force;
+  t.index = joint;
+  t.reaction = part;
+  return QString::fromStdString(optTargetName(m, t));
+}
+
 // What a target of this kind can be of, as the list shows it (index i is the i-th dyad,
 // clearance, or window end: start, end of the first window, then the second's ...).
 QStringList choices(const Mechanism& m, K kind) {
@@ -49,9 +77,7 @@ QStringList choices(const Mechanism& m, K kind) {
     for (const TimingWindow& w : m.timing.windows)
       out << QString::fromStdString(w.name + ".start") << QString::fromStdString(w.name + ".end");
   } else if (kind == K::Force) {  // each joint, as linkage-cli dynamics names its columns
-    for (const Joint& j : m.joints)
-      out << QString::fromUtf8(linkage::kindOf(j).name) + QLatin1Char(':') +
-                 QString::fromStdString(m.pointLabel(j.a));
+    for (const ReactionChoice& c : reactionChoices(m)) out << reactionName(m, c.joint, c.part);
   } else {
     for (const Point& p : m.points)
       if (!m.body(p.body)->ground) out << QString::fromStdString(m.pointLabel(p.id));
@@ -89,7 +115,7 @@ QString valueUsage(K kind) {
     case K::Window:
       return QObject::tr("the window's end is a crank angle (degrees)");
     case K::Force:
-      return QObject::tr("the reaction's limit is a number >= 0 (N)");
+      return QObject::tr("the reaction's limit is a number >= 0 (N; N m for the tilts)");
   }
   return {};
 }
@@ -135,12 +161,15 @@ bool readOther(const Mechanism& m, K kind, int of, bool isNumber, double v, OptT
       t.windowEnd = of % 2 == 1;
       t.crankDeg = v;
       return true;
-    case K::Force:
+    case K::Force: {
       if (!isNumber || !(v >= 0)) return false;
-      t.index = static_cast<size_t>(of);
+      const ReactionChoice c = reactionChoices(m).at(static_cast<size_t>(of));
+      t.index = c.joint;
+      t.reaction = c.part;
       t.measure = BalanceMeasure::Force;
       t.limitN = v;
       return true;
+    }
     default:
       return false;
   }
@@ -329,6 +358,21 @@ QStringList OptimizeTargets::probeLines() const {
   return out;
 }
 
+namespace {
+
+// A reaction target's peak as the result names it, with its unit.
+QString reactionPeak(const Mechanism& m, const OptTarget& t) {
+  const QString j =
+      t.index < m.joints.size() ? reactionName(m, t.index, t.reaction) : QString::number(t.index);
+  const QString what =
+      t.reaction == OptTarget::Reaction::Normal ? QObject::tr("peak normal force |fn| at %1 (N)")
+      : t.reaction == OptTarget::Reaction::Tilt ? QObject::tr("peak tilts |(mx, my)| at %1 (N m)")
+                                                : QObject::tr("peak reaction |f| at %1 (N)");
+  return what.arg(j);
+}
+
+}  // namespace
+
 std::vector<MeasureRow> measureRows(const Mechanism& m, const OptTarget& t, const Measure& before,
                                     const Measure& after) {
   auto at = [](const Measure& v, size_t i) { return i < v.size() ? v[i] : NAN; };
@@ -395,17 +439,10 @@ std::vector<MeasureRow> measureRows(const Mechanism& m, const OptTarget& t, cons
               .arg(QString::fromStdString(t.window), t.windowEnd ? "end" : "start"),
           0, number(t.crankDeg));
       break;
-    case K::Force: {
-      const QString j = t.index < m.joints.size()
-                            ? QString::fromUtf8(linkage::kindOf(m.joints[t.index]).name) +
-                                  QLatin1Char(':') +
-                                  QString::fromStdString(m.pointLabel(m.joints[t.index].a))
-                            : QString::number(t.index);
-      add(QObject::tr("peak reaction |f| at %1 (N)").arg(j), 0,
-          QStringLiteral("<= ") + number(t.limitN));
+    case K::Force:
+      add(reactionPeak(m, t), 0, QStringLiteral("<= ") + number(t.limitN));
       add(QObject::tr("its crank angle (°)"), 1, QString());
       break;
-    }
   }
   return rows;
 }

@@ -175,6 +175,7 @@ void SensitivityPanel::compute() {
   if (at >= static_cast<int>(points_.size())) {
     quantity_->setEnabled(false);
     component_->setEnabled(false);
+    offerZ(isSpatial(doc_->design()));
     const int n = at - static_cast<int>(points_.size());
     if (n == momentAt_) {
       momentBars();
@@ -501,8 +502,11 @@ void SensitivityPanel::reactionBars(size_t j, int which) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(here.status.message)));
     return;
   }
-  const int w = std::min(which, 2);
-  auto part = [w](const Vec2& f) { return w == 2 ? f.norm() : f[w]; };
+  // In space in the joint's plane class's frame; its z the normal force its bearing takes.
+  const bool space = isSpatial(m);
+  auto part = [which](const JointReaction& c) {
+    return which == kZ ? c.normalN : which == kLength ? c.force.norm() : c.force[which];
+  };
   // The turn's largest: all the dimensions' derivatives at once at each angle, read one by one.
   struct Memo {
     double deg = NAN;
@@ -510,27 +514,32 @@ void SensitivityPanel::reactionBars(size_t j, int which) {
   };
   auto memo = std::make_shared<Memo>();
   Sensitivity s;
-  if (Status st = s.prepare(k, dims); !st.ok()) {
+  if (Status st =
+          s.prepare(k, dims, space ? Sensitivity::Space::World : Sensitivity::Space::Refuse);
+      !st.ok()) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(st.message)));
     return;
   }
   const std::vector<double>& peak =
-      turnPeaks({PointId{}, -3 - static_cast<int>(j), w}, s, k,
+      turnPeaks({PointId{}, -3 - static_cast<int>(j), which}, s, k,
                 [&, memo](const Sensitivity&, const Kinematics& kk, int d) {
                   if (memo->deg != kk.crankDeg()) memo->f = jointForceSensitivity(kk, id, dims);
                   memo->deg = kk.crankDeg();
-                  return memo->f.status.ok() ? part(memo->f.derivative[d]) : 0.0;
+                  return memo->f.status.ok() ? part(memo->f.change[d]) : 0.0;
                 });
   const bool ok = here.status.ok();
   turnBars(
-      dims, ok, [&](int d) { return part(here.derivative[d]); }, peak, tr("N"));
+      dims, ok, [&](int d) { return part(here.change[d]); }, peak, tr("N"));
   if (!ok || bars_.empty()) return;
-  summary_->setText(tr("The %1 bears %2 N here (fx %3, fy %4); %5 changes it most (%6 N per "
-                       "unit here, up to %7 N over a turn)")
+  const QString normal =
+      space ? tr(", fn %1 out of its plane").arg(here.reaction.normalN, 0, 'g', 4) : QString();
+  summary_->setText(tr("The %1 bears %2 N here (fx %3, fy %4%5); %6 changes it most (%7 N per "
+                       "unit here, up to %8 N over a turn)")
                         .arg(QString::fromUtf8(kindOf(m.joints.at(j)).name))
                         .arg(here.force.norm(), 0, 'g', 4)
                         .arg(here.force.x(), 0, 'g', 4)
                         .arg(here.force.y(), 0, 'g', 4)
+                        .arg(normal)
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4)
                         .arg(bars_[0].peak, 0, 'g', 4));

@@ -14,9 +14,10 @@
 // gear's, restated as a tooth force at its pitch point (a belt's as a run's pull) that its
 // pivots' pins carry, is differentiated through its kind's reactChange() (forward-mode, the same
 // formula: elements/gear.cpp). On a machine in space the in-plane reaction in its plane class's
-// frame and a ball rod's tension (axialN), from the world's sensitivities; not the out-of-plane
-// parts (normalN, tiltNm). Redundant joints (their shares are not determined) are refused by
-// name.
+// frame and a ball rod's tension (axialN), from the world's sensitivities, and a bearing's load out
+// of its plane (normalN, tiltNm: analysis/bearing_change.h, the multipliers' whole change
+// J^-T (dQ - dJ^T lambda) moving every other joint's force on the body). Redundant joints (their
+// shares are not determined) are refused by name.
 #pragma once
 
 #include <vector>
@@ -43,6 +44,10 @@ struct JointForceSensitivity {
 // generalizedForcesChange with the sensitivities' motion; a plane's origin carries its bodies'
 // masses): N and N mm per unit, in the plane classes' frames.
 Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Sensitivity& s, int dim);
+
+// Whether `joint` is a body's bearing on a machine in space (its one joint with the ground): it
+// then takes the body's load out of its plane (linkage/dynamics.h normalN, tiltNm).
+bool bearsOutOfPlane(const Kinematics& k, JointId joint);
 
 // At k's pose and speed, for `joint` (any kind: its reaction's parts as its dynamics columns
 // name them, linkage/tables/force_table.h reactionValue).

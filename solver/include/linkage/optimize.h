@@ -81,7 +81,11 @@ struct OptTarget {
   double limitN = 0;
   // Force: the peak over the turn of joint m.joints[index]'s reaction |f| (linkage/dynamics.h,
   // on the body of its first point) at most limitN, as Shaking's (measure Force). Over
-  // dimensions or counterweights (their shares: linkage/force_sensitivity.h).
+  // dimensions or counterweights (their shares: linkage/force_sensitivity.h). On a machine in
+  // space a body's bearing's load out of its plane instead (`reaction`): |fn| (N) or the tilts'
+  // |(mx, my)| (limitN in N m), over dimensions.
+  enum class Reaction { InPlane, Normal, Tilt };
+  Reaction reaction = Reaction::InPlane;
   // Clearance: the file's watched clearance `index` (its timing's, counted from 0) at least
   // gapMm at its closest approach over the turn: residual max(0, gapMm - least), mm.
   size_t index = 0;
