@@ -51,7 +51,7 @@ pose on MODEL's assembly branches.
      force:JOINT<=N                  the peak over the turn of a joint's reaction |f| (JOINT as
                                      `dynamics` names it: pin:crank.A, slider:block.B) at most
                                      N newtons (over dimensions or counterweights); in space a
-                                     body's bearing's load out of its plane, over dimensions:
+                                     body's bearing's load out of its plane, as well:
                                      force:JOINT:fn<=N its normal force |fn|, force:JOINT:tilt<=NM
                                      its tilts' |(mx, my)| (newton metres)
      clearance:N>=GAP                the file's watched clearance N (from 0) at least GAP mm at

@@ -91,7 +91,8 @@ inline void expectOutOfPlaneMovesAsChangedDesignsDo(const Mechanism& m, double& 
 // (counterweightShareChange: the counterweight fixed in its body's drawing) against the changed
 // designs with the counterweight written in less those without (the share is what its mass adds
 // to the reactions; a changed drawing carries a body's masses along): central differences of
-// the whole solve, to 1e-6 of the reaction's size, every stepDeg degrees of crank from 10.
+// the whole solve, to 1e-6 of the reaction's size (in space its bearing's load out of the plane
+// with it), every stepDeg degrees of crank from 10.
 // `largest`: the largest derivative met.
 inline void expectShareMovesAsChangedDesignsDo(const Mechanism& m, const Counterweight& cw,
                                                double& largest, int stepDeg = 50) {
@@ -122,16 +123,19 @@ inline void expectShareMovesAsChangedDesignsDo(const Mechanism& m, const Counter
       for (size_t j = 0; j < m.joints.size(); ++j) {
         const CounterweightShareChange s = counterweightShareChange(k, m.joints[j].id, cw, dims);
         ASSERT_TRUE(s.status.ok()) << s.status.message;
-        auto share = [&](int side) {
-          const JointReaction &w = fh[side].joints[j], &wo = f[side].joints[j];
-          return Eigen::Vector4d(w.force.x() - wo.force.x(), w.force.y() - wo.force.y(),
-                                 1000 * (w.coupleNm - wo.coupleNm), w.axialN - wo.axialN);
+        // Its force, couple (N mm), tension and, in space, its bearing's load out of the plane.
+        using Parts = Eigen::Matrix<double, 7, 1>;
+        auto parts = [](const JointReaction& r) {
+          return (Parts() << r.force.x(), r.force.y(), 1000 * r.coupleNm, r.axialN, r.normalN,
+                  1000 * r.tiltNm.x(), 1000 * r.tiltNm.y())
+              .finished();
         };
-        const Eigen::Vector4d want = (share(1) - share(0)) / (2 * h);
-        const JointReaction& c = s.change[d];
-        const Eigen::Vector4d got(c.force.x(), c.force.y(), 1000 * c.coupleNm, c.axialN);
-        const JointReaction& r = fh[1].joints[j];
-        const double size = 1 + r.force.norm() + 1000 * std::abs(r.coupleNm) + std::abs(r.axialN);
+        auto share = [&](int side) {
+          return Parts(parts(fh[side].joints[j]) - parts(f[side].joints[j]));
+        };
+        const Parts want = (share(1) - share(0)) / (2 * h);
+        const Parts got = parts(s.change[d]);
+        const double size = 1 + parts(fh[1].joints[j]).cwiseAbs().sum();
         EXPECT_LT((got - want).norm(), 1e-6 * size)
             << dims[d].name << " joint " << j << " at " << deg << ": " << got.transpose()
             << " against " << want.transpose();

@@ -43,6 +43,12 @@ struct BearingChange::Load {
     W += Vec3(F.z(), M.x(), M.y());
     dW += Vec3(dF.z(), dM.x(), dM.y());
   }
+  // A weight's part g along the normal, kg g, whose first moment about the bearing in the plane
+  // is `arm` (kg mm; it acts at kg^-1 arm from there): rel x (0, 0, kg g) = g (arm_y, -arm_x).
+  void addWeight(double kg, double g, const Vec2& arm, const Vec2& dArm) {
+    W += Vec3(kg * g, g * arm.y(), -g * arm.x());
+    dW += Vec3(0, g * dArm.y(), -g * dArm.x());
+  }
 };
 
 // One dimension's moves, seen in the body's class frame (x, y, along the normal).
@@ -103,16 +109,44 @@ void BearingChange::change(const Kinematics& k, const Sensitivity& s, const Bala
                            const BalanceChange& c, JointReaction& out) const {
   if (!bears()) return;
   const Moves mv(k, s, c.dim, body_);
-  Load w;
-  load(k, b, &c, &mv, w);
-  out.normalN = sign_ * w.dW.x();
-  out.tiltNm = sign_ * Vec2(w.dW.y(), w.dW.z()) / 1000;
+  // The body's mass, fixed in its frame (a plane's origin carrying it: mv.com).
+  BodyWeight w;
+  if (const std::optional<SpaceForces::BodyMass>& mass = mass_[body_]) {
+    const Vec2 g = Rot::of(k.q()[3 * body_ + 2]) * mass->c;
+    w = {mass->kg, mass->kg * g, mass->kg * (s.dq()(3 * body_ + 2, c.dim) * perp(g) + mv.com)};
+  }
+  Load load;
+  this->load(k, b, &c, &mv, w, load);
+  put(load.dW, out);
 }
 
-// The body's own forces (Q at its depth, its weight's normal part at its centre of mass), then
-// the rows'.
+void BearingChange::share(const Kinematics& k, const Balance& b, int body, const BodyWeight& w,
+                          JointReaction& out) const {
+  if (!bears()) return;
+  Load load;
+  this->load(k, b, nullptr, nullptr, body == body_ ? w : BodyWeight{}, load);
+  put(load.W, out);
+}
+
+void BearingChange::shareChange(const Kinematics& k, const Sensitivity& s, const Balance& b,
+                                const BalanceChange& c, int body, const BodyWeight& w,
+                                JointReaction& out) const {
+  if (!bears()) return;
+  const Moves mv(k, s, c.dim, body_);
+  Load load;
+  this->load(k, b, &c, &mv, body == body_ ? w : BodyWeight{}, load);
+  put(load.dW, out);
+}
+
+void BearingChange::put(const Vec3& W, JointReaction& out) const {
+  out.normalN = sign_ * W.x();
+  out.tiltNm = sign_ * Vec2(W.y(), W.z()) / 1000;
+}
+
+// The body's own forces (Q at its depth, a weight's normal part: w, the body's or a share's),
+// then the rows'.
 void BearingChange::load(const Kinematics& k, const Balance& b, const BalanceChange* c,
-                         const Moves* mv, Load& out) const {
+                         const Moves* mv, const BodyWeight& w, Load& out) const {
   const KinematicsState& st = state(k);
   const Mechanism& m = st.mech;
   const int i = body_;
@@ -131,15 +165,10 @@ void BearingChange::load(const Kinematics& k, const Balance& b, const BalanceCha
   const double dDepth = mv ? mv->depth - dAt.z() : 0;
   const Vec3 rel(0, 0, space_.depth(i) - dB), drel(0, 0, dDepth);
   out.add(flat(b.Q.segment<2>(3 * i)), c ? flat(c->dQ.segment<2>(3 * i)) : Vec3::Zero(), rel, drel);
-  if (mass_[i]) {
-    const BodyView& v = views[i + 1];
-    const Vec2 g = v.R * mass_[i]->c;
-    Vec2 dP = Vec2::Zero();
-    if (mv)
-      dP = Vec2(mv->s.dq().block<2, 1>(3 * i, c->dim)) + mv->s.dq()(3 * i + 2, c->dim) * perp(g) +
-           mv->com;
-    out.add(Vec3(0, 0, mass_[i]->kg * space_.gravityOut(i)), Vec3::Zero(),
-            flat(v.r + g - B, rel.z()), flat(dP - dAt.head<2>(), dDepth));
+  if (w.kg != 0 || w.moment != Vec2::Zero()) {
+    const Vec2 dr = mv ? Vec2(mv->s.dq().block<2, 1>(3 * i, c->dim)) : Vec2::Zero();
+    out.addWeight(w.kg, space_.gravityOut(i), w.kg * (views[i + 1].r - B) + w.moment,
+                  w.kg * (dr - dAt.head<2>()) + w.dMoment);
   }
   rowLoads(k, views, b, c, mv, Vec3(B.x(), B.y(), dB), dAt, out);
 }

@@ -46,6 +46,13 @@ struct BalanceChange {
 BalanceChange balanceChange(const Kinematics& k, const Sensitivity& s, const Balance& b, int dim,
                             const Eigen::VectorXd& dQ);
 
+// A weight on a body as the load reads it: its mass (kg) and its first moment about the body's
+// frame origin (kg mm, the class frame's axes), and that moment's change along a dimension.
+struct BodyWeight {
+  double kg = 0;
+  Vec2 moment = Vec2::Zero(), dMoment = Vec2::Zero();
+};
+
 class BearingChange {
  public:
   // Joint ji, if on a machine in space it is a body's bearing (else bears() is false).
@@ -55,12 +62,20 @@ class BearingChange {
   // dimension into out's.
   void change(const Kinematics& k, const Sensitivity& s, const Balance& b, const BalanceChange& c,
               JointReaction& out) const;
+  // A share of it at a held pose (a counterweight's, linkage/force_sensitivity.h): what the
+  // forces b.Q alone, balanced by b.lambda, and a weight w on body `body` put on the bearing;
+  // and that share's change along c's dimension (w.dMoment the weight's).
+  void share(const Kinematics& k, const Balance& b, int body, const BodyWeight& w,
+             JointReaction& out) const;
+  void shareChange(const Kinematics& k, const Sensitivity& s, const Balance& b,
+                   const BalanceChange& c, int body, const BodyWeight& w, JointReaction& out) const;
 
  private:
   struct Moves;
   struct Load;
   void load(const Kinematics& k, const Balance& b, const BalanceChange* c, const Moves* mv,
-            Load& out) const;
+            const BodyWeight& w, Load& out) const;
+  void put(const Vec3& W, JointReaction& out) const;
   void rowLoads(const Kinematics& k, const std::vector<BodyView>& views, const Balance& b,
                 const BalanceChange* c, const Moves* mv, const Vec3& at, const Vec3& dAt,
                 Load& out) const;

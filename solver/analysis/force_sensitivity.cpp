@@ -239,6 +239,21 @@ struct CounterweightForces {
     Q.block<2, 1>(3 * i, col) = F;
     Q(3 * i + 2, col) = cross(arm, F) + cross(Rs, g) - 1e-3 * alpha * spin;
   }
+  // Its weight as a bearing's load out of the plane reads it (analysis/bearing_change.h): its
+  // mass and first moment about the body's frame origin, kg (pivot - r) + R s; the moment's
+  // change with the body turned by dTheta and the pivot moved along dim.
+  internal::BodyWeight weight(double kg, const Vec2& moment) const {
+    const Vec2 Rs = Rot::of(k.bodyAngle(cw.body)) * (toClass * moment);
+    return {kg, kg * (k.position(cw.pivot) - Vec2(k.q().segment<2>(3 * i))) + Rs, Vec2::Zero()};
+  }
+  internal::BodyWeight weightChange(const Sensitivity& s, int dim, double dTheta, double kg,
+                                    const Vec2& moment) const {
+    internal::BodyWeight w = weight(kg, moment);
+    const Vec2 Rs = w.moment - kg * (k.position(cw.pivot) - Vec2(k.q().segment<2>(3 * i)));
+    w.dMoment =
+        kg * (s.point(k, cw.pivot, dim) - Vec2(s.dq().block<2, 1>(3 * i, dim))) + dTheta * perp(Rs);
+    return w;
+  }
   // The same forces' change along dimension dim (its mass, moment and spin held): the body
   // turned by dTheta, its spin and spin's rate changed, the pivot's arm from the body's frame
   // origin moved.
@@ -390,14 +405,19 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
   const CounterweightForces put(k, cw, i, dQ);
   const Vec2 s = cw.staticMoment;
   const double norm = s.norm(), R = cw.maxRadiusMm;
+  // Each column's mass and static moment: the counterweight's, then per kg mm of s's x and y.
+  double kg[3] = {cw.kg, 0, 0};
+  Vec2 moment[3] = {s, Vec2::UnitX(), Vec2::UnitY()};
   put.put(0, cw.kg, s, cw.kg > 0 ? s.squaredNorm() / cw.kg : 0.0);
-  for (int e = 0; e < 2; ++e)  // the mass |s| / R, so the spin |s| R
-    put.put(1 + e, norm > 0 ? s[e] / (norm * R) : 0.0, Vec2::Unit(e),
-            norm > 0 ? R * s[e] / norm : 0.0);
+  for (int e = 0; e < 2; ++e) {  // the mass |s| / R, so the spin |s| R
+    kg[1 + e] = norm > 0 ? s[e] / (norm * R) : 0.0;
+    put.put(1 + e, kg[1 + e], moment[1 + e], norm > 0 ? R * s[e] / norm : 0.0);
+  }
   const Sensitivity none;
   const Context c = factored(k, none);
   const Eigen::MatrixXd dl = c.lu.transpose().solve(dQ);
   const HeldPose pose(k);
+  const internal::BearingChange bearing(k, su.ji);  // its load out of the plane, in space
   JointReaction* parts[3] = {&out.share, &out.perX, &out.perY};
   for (int col = 0; col < 3; ++col) {
     Context share{k, none, c.J, {}, dl.col(col), dQ.col(col)};
@@ -406,6 +426,7 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
       v.at = Vec2::Zero();  // a share at a held pose: no point moves
       return v;
     });
+    bearing.share(k, share.balance(), i, put.weight(kg[col], moment[col]), *parts[col]);
   }
   return out;
 }
@@ -440,12 +461,17 @@ CounterweightShareChange counterweightShareChange(const Kinematics& k0, JointId 
   c.lambda = c.lu.transpose().solve(Q.col(0));
   SensitivityPose pose(k, s);
   const PointChange dpose(pose);
+  const internal::BearingChange bearing(k, su.ji);  // its load out of the plane, in space
   for (size_t d = 0; d < s.dims().size(); ++d) {
     pose.dim = static_cast<int>(d);
     const double dTheta = s.angle(k, cw.body, pose.dim) - (d < turn0.size() ? turn0[d] : 0.0);
     const Eigen::VectorXd dQ = put.change(s, pose.dim, dTheta, cw.kg, cw.staticMoment, spin);
     out.change.push_back(su.restated(
         c, pose, dpose, [&](const RowsReaction& r) { return change(c, r, pose.dim, dQ); }));
+    if (bearing.bears())
+      bearing.shareChange(
+          k, s, c.balance(), internal::balanceChange(k, s, c.balance(), pose.dim, dQ), i,
+          put.weightChange(s, pose.dim, dTheta, cw.kg, cw.staticMoment), out.change.back());
   }
   return out;
 }

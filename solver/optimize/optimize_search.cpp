@@ -192,9 +192,8 @@ Status checkSpace(bool space, const OptTarget& t) {
   return Status::success();
 }
 
-// A force target out of a joint's plane: a bearing's on a machine in space, over dimensions (a
-// counterweight's share of it is not differentiated).
-Status checkOutOfPlane(const Kinematics& base, const OptTarget& t, const opt::Variables& vars) {
+// A force target out of a joint's plane: a bearing's on a machine in space.
+Status checkOutOfPlane(const Kinematics& base, const OptTarget& t) {
   if (t.kind != OptTarget::Kind::Force || t.reaction == OptTarget::Reaction::InPlane)
     return Status::success();
   const Mechanism& m = base.mechanism();
@@ -207,10 +206,6 @@ Status checkOutOfPlane(const Kinematics& base, const OptTarget& t, const opt::Va
     return Status::badModel("'" + name +
                             "': the joint is no body's one joint with the ground (its bearing), "
                             "so it bears nothing out of its plane");
-  if (!vars.counterweights.empty())
-    return Status::badModel("'" + name +
-                            "': a counterweight's share of a bearing's load out of its plane is "
-                            "not differentiated yet; vary dimensions");
   return Status::success();
 }
 
@@ -253,7 +248,7 @@ Status checkSpec(const Kinematics& base, const OptimizeSpec& spec, std::vector<d
       return Status::badModel("a path target has no points");
     if (t.kind == OptTarget::Kind::Transmission)
       if (Status s = checkTransmission(base.mechanism(), t); !s.ok()) return s;
-    if (Status s = checkOutOfPlane(base, t, vars); !s.ok()) return s;
+    if (Status s = checkOutOfPlane(base, t); !s.ok()) return s;
   }
   return Status::success();
 }

@@ -61,7 +61,9 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k, JointId joint,
 // The reactions are linear in the forces (J^T lambda = Q with the pose held), so a mass adds
 // J^-T of its weight and inertia: m g - m a at its place, a point mass's. On a machine in space
 // in the body's class frame (gravity's part in it): the in-plane force, couple and a ball rod's
-// tension; a bearing's out-of-plane parts (normal force, tilts) are not in the share.
+// tension, and a bearing's load out of its plane (normal force, tilts: the share's multipliers'
+// forces on its body at their depths, and the counterweight's weight along the normal where it
+// is on that body, its first moment kg (pivot - r) + R s).
 struct CounterweightShare {
   Status status;
   JointReaction share;       // force, couple, contact and axial only (`at` is the joint's)
