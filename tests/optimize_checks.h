@@ -68,4 +68,16 @@ inline void expectGradientAt(const Kinematics& k, const OptimizeSpec& spec,
   }
 }
 
+// The result's design written in, at the crank angle where its first target's peak was found,
+// with its accelerations: what the written design bears or feels there is what was reported.
+inline ::testing::AssertionResult atThePeak(const OptimizeResult& r, Kinematics& after) {
+  if (!after.load(r.design).ok()) return ::testing::AssertionFailure() << "the design loads not";
+  after.setAccelerations(true);
+  if (r.atAfter.measures.empty() || r.atAfter.measures[0].size() < 2)
+    return ::testing::AssertionFailure() << "no peak's angle";
+  const Status s = after.moveTo(r.atAfter.measures[0][1]);
+  if (!s.ok()) return ::testing::AssertionFailure() << s.message;
+  return ::testing::AssertionSuccess();
+}
+
 }  // namespace linkage::test

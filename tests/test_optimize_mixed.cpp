@@ -62,9 +62,7 @@ void check(const Mechanism& m, const OptimizeSpec& spec, const std::vector<doubl
               r.foundBest, r.starts);
   EXPECT_LT(peak, r.atBefore.measures[0][0]);
   Kinematics after;
-  ASSERT_TRUE(after.load(r.design).ok());
-  after.setAccelerations(true);
-  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  ASSERT_TRUE(test::atThePeak(r, after));
   Vec3 F, M;
   shaking(after, F, M);
   EXPECT_NEAR(spec.targets[0].moment ? std::abs(M.z()) : F.norm(), peak, 1e-9 * peak);
@@ -114,9 +112,7 @@ void checkReaction(const Mechanism& m, OptimizeSpec spec, size_t joint, std::vec
   const double peak = r.atAfter.measures[0][0];
   EXPECT_LT(peak, r.atBefore.measures[0][0]);
   Kinematics after;
-  ASSERT_TRUE(after.load(r.design).ok());
-  after.setAccelerations(true);
-  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  ASSERT_TRUE(test::atThePeak(r, after));
   EXPECT_NEAR(partOf(computeForces(after).joints[joint], part), peak, 1e-9 * peak);
 }
 

@@ -123,9 +123,7 @@ TEST(OptimizeSpaceMoment, CounterweightsBringThePeakUnderALimit) {
               spec.targets[0].limitN, r.foundBest, r.starts);
   EXPECT_LE(peak, spec.targets[0].limitN * (1 + 1e-9));
   Kinematics after;
-  ASSERT_TRUE(after.load(r.design).ok());
-  after.setAccelerations(true);
-  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  ASSERT_TRUE(test::atThePeak(r, after));
   Vec3 F, M;
   shaking(after, F, M);
   EXPECT_NEAR(M.norm(), peak, 1e-9 * peak);

@@ -220,8 +220,7 @@ TEST(SpatialForceSensitivity, TheRodsTensionAsATarget) {
   const double peak = r.atAfter.measures[0][0];
   EXPECT_LE(peak, 0.95 * before * (1 + 1e-9));
   Kinematics after;
-  ASSERT_TRUE(after.load(r.design).ok());
-  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  ASSERT_TRUE(test::atThePeak(r, after));
   EXPECT_NEAR(std::abs(computeForces(after).joints[2].axialN), peak, 1e-9 * peak);
 }
 
@@ -258,9 +257,7 @@ TEST(SpatialForceSensitivity, ABearingsLoadOutOfItsPlaneAsATarget) {
   std::printf("the rocker pin's tilts' peak %.6g N m -> %.6g N m\n", before, peak);
   EXPECT_LE(peak, 0.95 * before * (1 + 1e-9));
   Kinematics after;
-  ASSERT_TRUE(after.load(r.design).ok());
-  after.setAccelerations(true);
-  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  ASSERT_TRUE(test::atThePeak(r, after));
   EXPECT_NEAR(computeForces(after).joints[1].tiltNm.norm(), peak, 1e-9 * peak);
 }
 
@@ -306,9 +303,7 @@ void limitMetByTheRod(const Kinematics& base, OptimizeSpec spec, double peakBefo
   const double peak = r.atAfter.measures[0][0];
   EXPECT_LE(peak, spec.targets[0].limitN * (1 + 1e-9));
   Kinematics after;
-  ASSERT_TRUE(after.load(r.design).ok());
-  after.setAccelerations(true);
-  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  ASSERT_TRUE(test::atThePeak(r, after));
   Vec3 F, M;
   shaking(after, F, M);
   EXPECT_NEAR(spec.targets[0].moment ? M.norm() : F.norm(), peak, 1e-9 * peak);
@@ -389,9 +384,7 @@ TEST(SpatialForceSensitivity, CounterweightsInSpaceAgainstBalance) {
   EXPECT_NEAR(peak, exact.peakAfter, 1e-6 * exact.peakAfter);
   ASSERT_EQ(r.counterweights.size(), 2u);
   Kinematics after;
-  ASSERT_TRUE(after.load(r.design).ok());
-  after.setAccelerations(true);
-  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  ASSERT_TRUE(test::atThePeak(r, after));
   Vec3 F, M;
   shaking(after, F, M);
   EXPECT_NEAR(F.norm(), peak, 1e-9 * peak);
@@ -493,9 +486,7 @@ TEST(SpatialForceSensitivity, AReactionOverCounterweights) {
   const double peak = r.atAfter.measures[0][0];
   EXPECT_LE(peak, 0.9 * before * (1 + 1e-9));
   Kinematics after;
-  ASSERT_TRUE(after.load(r.design).ok());
-  after.setAccelerations(true);
-  ASSERT_TRUE(after.moveTo(r.atAfter.measures[0][1]).ok());
+  ASSERT_TRUE(test::atThePeak(r, after));
   EXPECT_NEAR(computeForces(after).joints[0].force.norm(), peak, 1e-9 * peak);
 }
 

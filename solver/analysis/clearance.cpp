@@ -102,6 +102,7 @@ Quantities quantitiesOf(const Kinematics& k, const ClearancePart& a, const Clear
               return lengthOf(u.position - v.position, (u.velocity - v.velocity) * rate,
                               (u.acceleration - v.acceleration) * (rate * rate));
             },
+            {},
             {}};
   }
   std::string bad;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "analysis/bearing_change.h"
@@ -393,14 +394,50 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
   return out;
 }
 
-CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
-                                      const Counterweight& cw) {
-  CounterweightShare out;
+struct CounterweightShares::Impl {
   Setup su;
-  int i = -1;
-  if (out.status = shareSetUp(k0, joint, cw, su, i); !out.status.ok()) return out;
-  const Kinematics& k = su.k;
+  std::optional<internal::BearingChange> bearing;  // its load out of the plane, in space
+  // The forces' Jacobian, its factors and the design's multipliers at the last pose asked for
+  // (a search asks for each counterweight and each of its variables at one pose).
+  struct Factored {
+    Eigen::VectorXd q;
+    double omega = NAN;
+    Eigen::MatrixXd J;
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    Eigen::VectorXd lambda, Q;
+  };
+  mutable Factored last;
+  Context factoredAt(const Kinematics& k, const Sensitivity& none) const {
+    if (last.omega != k.omega() || last.q.size() != k.q().size() || last.q != k.q()) {
+      const Context c = factored(k, none);
+      last = {k.q(), k.omega(), c.J, c.lu, c.lambda, c.Q};
+    }
+    return Context{k, none, last.J, last.lu, last.lambda, last.Q};
+  }
+};
+
+CounterweightShares::CounterweightShares() = default;
+CounterweightShares::~CounterweightShares() = default;
+
+Status CounterweightShares::prepare(const Kinematics& k, JointId joint) {
+  d_ = std::make_unique<Impl>();
+  if (Status s = setUp(k, joint, d_->su); !s.ok()) {
+    d_.reset();
+    return s;
+  }
+  d_->bearing.emplace(d_->su.k, d_->su.ji);
+  return Status::success();
+}
+
+CounterweightShare CounterweightShares::at(const Kinematics& k0, const Counterweight& cw) const {
+  CounterweightShare out;
+  if (!d_) return out.status = Status::badModel("the shares are not prepared"), out;
+  std::optional<Kinematics> copy;  // the inertia forces need the accelerations
+  if (!k0.accelerations()) copy.emplace(k0).setAccelerations(true);
+  const Kinematics& k = copy ? *copy : k0;
   const KinematicsState& st = internal::state(k);
+  const int i = st.sys.bodyIndex(cw.body);
+  if (i < 0) return out.status = Status::badModel("a counterweight on no moving body"), out;
   Eigen::MatrixXd dQ = Eigen::MatrixXd::Zero(st.sys.nCoords(), 3);
   const CounterweightForces put(k, cw, i, dQ);
   const Vec2 s = cw.staticMoment;
@@ -414,21 +451,31 @@ CounterweightShare counterweightShare(const Kinematics& k0, JointId joint,
     put.put(1 + e, kg[1 + e], moment[1 + e], norm > 0 ? R * s[e] / norm : 0.0);
   }
   const Sensitivity none;
-  const Context c = factored(k, none);
+  const Context c = d_->factoredAt(k, none);
   const Eigen::MatrixXd dl = c.lu.transpose().solve(dQ);
   const HeldPose pose(k);
-  const internal::BearingChange bearing(k, su.ji);  // its load out of the plane, in space
   JointReaction* parts[3] = {&out.share, &out.perX, &out.perY};
   for (int col = 0; col < 3; ++col) {
     Context share{k, none, c.J, {}, dl.col(col), dQ.col(col)};
-    *parts[col] = su.restated(c, pose, pose, [&](const RowsReaction& r) {
+    *parts[col] = d_->su.restated(c, pose, pose, [&](const RowsReaction& r) {
       JointReaction v = value(share, r);
       v.at = Vec2::Zero();  // a share at a held pose: no point moves
       return v;
     });
-    bearing.share(k, share.balance(), i, put.weight(kg[col], moment[col]), *parts[col]);
+    d_->bearing->share(k, share.balance(), i, put.weight(kg[col], moment[col]), *parts[col]);
   }
   return out;
+}
+
+CounterweightShare counterweightShare(const Kinematics& k, JointId joint,
+                                      const Counterweight& cw) {
+  CounterweightShares shares;
+  if (Status s = shares.prepare(k, joint); !s.ok()) {
+    CounterweightShare out;
+    out.status = s;
+    return out;
+  }
+  return shares.at(k, cw);
 }
 
 Eigen::VectorXd generalizedForcesChange(const Kinematics& k, const Sensitivity& s, int dim) {

@@ -64,9 +64,11 @@ struct Shaker {
   // By counterweight, by dimension: its body's turn at crank angle 0 (where each design is drawn
   // again, editAtPose), with counterweights and dimensions varied together.
   std::vector<std::vector<double>> turn0;
-  // A joint's reaction (OptTarget::Kind::Force) instead of the shaking force.
+  // A joint's reaction (OptTarget::Kind::Force) instead of the shaking force, and the
+  // counterweights' shares of it (prepared once for the design).
   JointId joint;
   mutable ForceSolver solver;
+  CounterweightShares shares;
 
   // Counterweight c's inertia force with static moment s (N, the world's; linkage/balance.h).
   Vec3 inertia(const Kinematics& k, size_t c, const Vec2& s) const {
@@ -95,7 +97,7 @@ struct Shaker {
     if (joint) {  // the design's reaction and the counterweights' shares (the forces add)
       Vec2 F = part(solver.compute(k).joints[t.index]);
       for (size_t c = 0; c < vars.counterweights.size(); ++c)
-        F += part(counterweightShare(k, joint, placed(c)).share);
+        F += part(shares.at(k, placed(c)).share);
       return Vec3(F.x(), F.y(), 0);
     }
     Vec3 F = Vec3::Zero(), M = Vec3::Zero();
@@ -192,24 +194,24 @@ std::vector<double> Shaker::reactionGradient(const Kinematics& k, const Vec3& e,
   auto lift = [](const Vec2& v) { return Vec3(v.x(), v.y(), 0); };
   std::vector<double> out(vars.dim.size(), 0.0);
   JointForceSensitivity f;
-  std::vector<CounterweightShareChange> shares;
+  std::vector<CounterweightShareChange> moved;
   if (vars.dimensionCount() > 0) {
     f = jointForceSensitivity(k, joint, vars.dims);
     status = f.status;
     for (size_t c = 0; c < vars.counterweights.size() && status.ok(); ++c) {
-      shares.push_back(counterweightShareChange(
+      moved.push_back(counterweightShareChange(
           k, joint, placed(c), vars.dims, c < turn0.size() ? turn0[c] : std::vector<double>()));
-      status = shares.back().status;
+      status = moved.back().status;
     }
   }
   for (size_t v = 0; v < out.size() && status.ok(); ++v) {
     if (vars.dim[v] >= 0) {
       Vec2 d = part(f.change[vars.dim[v]]);
-      for (const CounterweightShareChange& s : shares) d += part(s.change[vars.dim[v]]);
+      for (const CounterweightShareChange& s : moved) d += part(s.change[vars.dim[v]]);
       out[v] = e.dot(lift(d));
       continue;
     }
-    const CounterweightShare sh = counterweightShare(k, joint, placed(vars.cw[v]));
+    const CounterweightShare sh = shares.at(k, placed(vars.cw[v]));
     status = sh.status;
     out[v] = e.dot(lift(part(vars.axis[v] == 0 ? sh.perX : sh.perY)));
   }
@@ -305,7 +307,8 @@ Status shakingResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t ta
   const OptTarget& t = spec.targets[target];
   const Mechanism& m = k.mechanism();
   const Vec2 gPlane = m.gravity.value_or(Vec2::Zero());
-  Shaker sh{k, t, vars, x, isSpatial(m) ? m.gravityWorld() : Vec3(gPlane.x(), gPlane.y(), 0)};
+  const Vec3 g = isSpatial(m) ? m.gravityWorld() : Vec3(gPlane.x(), gPlane.y(), 0);
+  Shaker sh{k, t, vars, x, g, {}, {}, {}, {}, {}, {}};
   for (const Counterweight& c : vars.counterweights) {
     sh.placings.push_back(placeCounterweight(m, c.body));
     sh.depthFromPivot.push_back(depthFromPivotOf(m, c));
@@ -315,6 +318,8 @@ Status shakingResiduals(const Kinematics& k, const OptimizeSpec& spec, size_t ta
   if (t.kind == OptTarget::Kind::Force) {
     sh.joint = k.mechanism().joints.at(t.index).id;
     if (Status s = sh.solver.prepare(k); !s.ok()) return s;
+    if (!vars.counterweights.empty())
+      if (Status s = sh.shares.prepare(k, sh.joint); !s.ok()) return s;
   }
   std::vector<RowAt> rows;
   if (Status s = intervalMaxima(sh, spec.steps, rows); !s.ok()) return s;

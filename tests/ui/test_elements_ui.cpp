@@ -4,6 +4,7 @@
 // whose centre and radius are typed in the panel; each is one undo step; the canvas draws them.
 #include <gtest/gtest.h>
 
+#include "edge_on.h"
 #include "ui_test.h"
 
 #include <QApplication>
@@ -205,26 +206,8 @@ TEST(ElementsUi, SlotToolDrawsAnArcAndThePanelTypesItsRadius) {
 // point, the machine solved throughout; a bend off a chord along z, which would have no bulge,
 // is refused.
 TEST(ElementsUi, AGroundArcSquareToTheDrawingInThePanel) {
-  const std::string text = R"({"format": "linkage", "version": 1, "name": "arc on edge",
-  "planes": {"side": {"origin": [0, 0, 0], "x_axis": [0, 0, -1], "y_axis": [0, 1, 0]}},
-  "bodies": [
-    {"name": "ground", "ground": true, "points": {"O": [0, 0]},
-     "slots": {"g": [[0, -20, 0], [0, -35, 5], [0, -50, 0]], "z": [[0, -60, 0], [0, -60, 9]]}},
-    {"name": "crank", "plane": "side", "points": {"O": [0, 0], "A": [0, 10]}},
-    {"name": "rod", "plane": "side", "points": {"A": [0, 10], "B": [0, -30]}},
-    {"name": "block", "plane": "side", "points": {"B": [0, -30]}}],
-  "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"},
-    {"type": "pin", "a": "crank.A", "b": "rod.A"},
-    {"type": "pin", "a": "rod.B", "b": "block.B"},
-    {"type": "slider", "a": "block.B", "slot": "ground.g"}],
-  "driver": {"joint": 0, "rpm": 60, "direction": "ccw"}})";
   QTemporaryDir dir;
-  const QString path = dir.filePath("edge.linkage.json");
-  {
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(QByteArray::fromStdString(text));
-  }
+  const QString path = writeEdgeOn(dir);
   MainWindow w;
   w.resize(1300, 900);
   ASSERT_TRUE(w.document()->open(path, nullptr));

@@ -6,6 +6,7 @@
 // undo step; a planar machine has no chooser and is drawn too.
 #include <gtest/gtest.h>
 
+#include "edge_on.h"
 #include "ui_test.h"
 
 #include <QComboBox>
@@ -440,27 +441,6 @@ TEST(View3dScene, APlaneParallelToTheDrawingIsLiftedThroughItsClassFrame) {
   }
 }
 
-// Ground slots written in the world in planes square to the drawing: an arc g a slider's block
-// runs in (in the side plane x = 0), a slot z along z, and an arc w of three quarters of a turn
-// about (10, -80, 0), radius 10, in the plane x = 10.
-std::string edgeOnText() {
-  return R"({"format": "linkage", "version": 1, "name": "arc on edge",
-  "planes": {"side": {"origin": [0, 0, 0], "x_axis": [0, 0, -1], "y_axis": [0, 1, 0]}},
-  "bodies": [
-    {"name": "ground", "ground": true, "points": {"O": [0, 0]},
-     "slots": {"g": [[0, -20, 0], [0, -35, 5], [0, -50, 0]], "z": [[0, -60, 0], [0, -60, 9]],
-               "w": [[10, -70, 0], [10, -87.07106781186548, 7.0710678118654755],
-                     [10, -80, -10]]}},
-    {"name": "crank", "plane": "side", "points": {"O": [0, 0], "A": [0, 10]}},
-    {"name": "rod", "plane": "side", "points": {"A": [0, 10], "B": [0, -30]}},
-    {"name": "block", "plane": "side", "points": {"B": [0, -30]}}],
-  "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"},
-    {"type": "pin", "a": "crank.A", "b": "rod.A"},
-    {"type": "pin", "a": "rod.B", "b": "block.B"},
-    {"type": "slider", "a": "block.B", "slot": "ground.g"}],
-  "driver": {"joint": 0, "rpm": 60, "direction": "ccw"}})";
-}
-
 // Slots in 3D: a ground arc written in the world in a plane square to the drawing, and a ground
 // slot along z, drawn where the file puts them (the arc's path on the circle through its three
 // points, from its first through its middle to its last); the Wanzer's slotted disk's slots on
@@ -537,12 +517,7 @@ TEST(View3dScene, SlotsAreDrawnWhereTheFileAndTheSolverPutThem) {
 // drawn. Looked at: edge-on-arcs.png.
 TEST(PlaneChooser, AGroundArcSeenEdgeOnIsTheSegmentItCovers) {
   QTemporaryDir dir;
-  const QString path = dir.filePath("edge.linkage.json");
-  {
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(QByteArray::fromStdString(edgeOnText()));
-  }
+  const QString path = writeEdgeOn(dir);
   MainWindow w;
   w.resize(1200, 800);
   ASSERT_TRUE(w.document()->open(path, nullptr));

@@ -35,7 +35,7 @@ void Toolbox::pointMenu(QMenu& menu, const Point& point, const Vec2& at) {
     menu.addAction(tr("Add a &Load Here"), this, [this, id, label] {
       // 10 N downwards to start with: its numbers are edited in the Properties.
       editWith(tr("Add a load at %1").arg(label), [&](Mechanism& n, std::string&) {
-        n.addLoad(Load{id, {}, Vec2(0, -10), 0, std::nullopt, std::nullopt, ""});
+        n.addLoad(Load{id, {}, Vec2(0, -10), 0, std::nullopt, std::nullopt, "", {}});
         return true;
       });
       ctx_.selection->clear();
@@ -68,7 +68,7 @@ void Toolbox::bodyMenu(QMenu& menu, const Body& body, const Vec2& at) {
     if (k->bodyMenu) k->bodyMenu(*this, menu, id);
   menu.addAction(tr("Add a &Torque"), this, [this, id, name] {
     editWith(tr("Add a torque on %1").arg(name), [&](Mechanism& n, std::string&) {
-      n.addLoad(Load{{}, id, Vec2::Zero(), 0.1, std::nullopt, std::nullopt, ""});
+      n.addLoad(Load{{}, id, Vec2::Zero(), 0.1, std::nullopt, std::nullopt, "", {}});
       return true;
     });
     ctx_.selection->clear();

@@ -20,6 +20,7 @@
 // shares are not determined) are refused by name.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "linkage/balance.h"
@@ -71,6 +72,21 @@ struct CounterweightShare {
 };
 
 CounterweightShare counterweightShare(const Kinematics& k, JointId joint, const Counterweight& cw);
+
+// counterweightShare at many poses of one design (a search's turn): the joint's rows, the
+// reactions that make it and what is refused worked out once by prepare(); at() then solves the
+// share at k's pose (k holding the design prepare() saw).
+class CounterweightShares {
+ public:
+  CounterweightShares();
+  ~CounterweightShares();
+  Status prepare(const Kinematics& k, JointId joint);
+  CounterweightShare at(const Kinematics& k, const Counterweight& cw) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> d_;
+};
 
 // The share's derivatives with respect to dims (per unit), the counterweight's mass, moment and
 // spin held, fixed in its body's drawing (its place from the pivot, which a dimension may move)
