@@ -425,8 +425,21 @@ TEST_F(RssrDock, ABearingsReactionInSpace) {
     EXPECT_GT(largest, 1e-4) << which;
   }
   EXPECT_TRUE(panel.summary().startsWith("The pin bears ")) << panel.summary();
-  EXPECT_TRUE(panel.summary().contains("out of its plane")) << panel.summary();
+  EXPECT_TRUE(panel.summary().contains("out of the plane")) << panel.summary();
   shot(&panel, "space_bearing_sensitivity");
+  // A ball rod's reaction is its tension: one number, no component to choose.
+  ASSERT_TRUE(choose(panel, "reaction at ball-rod:crank.A"));
+  EXPECT_FALSE(panel.componentBox()->isEnabled());
+  const JointForceSensitivity rod =
+      jointForceSensitivity(doc.kinematics(), doc.design().joints[2].id, dimensions(doc.design()));
+  ASSERT_TRUE(rod.status.ok()) << rod.status.message;
+  ASSERT_EQ(panel.bars().size(), rod.dims.size());
+  for (const SensitivityPanel::Bar& b : panel.bars())
+    for (size_t d = 0; d < rod.dims.size(); ++d)
+      if (rod.dims[d].name == b.dimension) EXPECT_EQ(b.now, rod.change[d].axialN) << b.dimension;
+  EXPECT_TRUE(panel.summary().startsWith(
+      QString("The ball-rod pulls with %1 N (its tension)").arg(rod.reaction.axialN, 0, 'g', 4)))
+      << panel.summary();
 }
 
 TEST(SensitivityPanel, TheShakingForce) {

@@ -546,6 +546,14 @@ TEST(PlaneChooser, AGroundArcSeenEdgeOnIsTheSegmentItCovers) {
   w.canvas()->setZoom(5);
   w.canvas()->centerOn(5, -55);
   shot(&w, "edge-on-arcs");
+  // Picked where it is drawn (for its Properties), but no point snaps onto it: its points are
+  // off the plane shown.
+  const double px = 0.2;  // mm a pixel
+  const Pick onArc = pickAt(*w.scene(), Vec2(0.3, -40), px);
+  ASSERT_TRUE(onArc.slot);
+  EXPECT_EQ(m.slot(onArc.slot)->name, "g");
+  EXPECT_NE(snapAt(*w.scene(), onArc, Vec2(0.3, -40), px, 0).kind, Snap::Kind::Slot);
+  EXPECT_FALSE(pickAt(*w.scene(), Vec2(0.3, -10), px).slot);  // past its end
 }
 
 }  // namespace

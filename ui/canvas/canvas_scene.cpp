@@ -157,6 +157,16 @@ BodyItem* CanvasScene::bodyItem(BodyId id) const {
   return nullptr;
 }
 
+std::optional<Guide> CanvasScene::drawnSlot(SlotId id) const {
+  const Slot* slot = shownMechanism().slot(id);
+  const BodyItem* b = slot ? bodyItem(slot->body) : nullptr;
+  if (!b) return std::nullopt;
+  const BodyGeometry& g = b->geometry();
+  for (size_t i = 0; i < g.slotIds.size() && i < g.slots.size(); ++i)
+    if (g.slotIds[i] == id) return g.slots[i];
+  return std::nullopt;
+}
+
 QRectF CanvasScene::mechanismRect() const {
   if (drawing_.bodies.empty()) return QRectF();
   QRectF r(toQt(drawing_.min), toQt(drawing_.max));

@@ -62,6 +62,9 @@ class CanvasScene : public QGraphicsScene {
   CentresItem* centresItem() const { return centres_; }
   ChainItem* chainItem() const { return chain_; }
   BodyItem* bodyItem(BodyId id) const;
+  // A slot as it is drawn, in its body's frame: its guide in the plane shown (a ground arc seen
+  // edge on: the segment it covers); none where it is not drawn.
+  std::optional<Guide> drawnSlot(SlotId id) const;
 
   // The machine's mechanisms as drawn (names, colours, visibility): a hidden one's bodies,
   // joints, outputs, traces and centres are not drawn; a coloured one's bodies are in its colour.

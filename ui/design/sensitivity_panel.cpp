@@ -502,10 +502,15 @@ void SensitivityPanel::reactionBars(size_t j, int which) {
     showNothing(tr("Not yet: %1").arg(QString::fromStdString(here.status.message)));
     return;
   }
-  // In space in the joint's plane class's frame; its z the normal force its bearing takes.
-  const bool space = isSpatial(m);
-  auto part = [which](const JointReaction& c) {
-    return which == kZ ? c.normalN : which == kLength ? c.force.norm() : c.force[which];
+  // In space in the joint's plane class's frame; its z the normal force its bearing takes. A
+  // ball rod's reaction is its tension, one number.
+  const bool space = isSpatial(m), rod = kindOf(m.joints.at(j)).role == Role::Distance;
+  component_->setEnabled(!rod);
+  auto part = [which, rod](const JointReaction& c) {
+    return rod                ? c.axialN
+           : which == kZ      ? c.normalN
+           : which == kLength ? c.force.norm()
+                              : c.force[which];
   };
   // The turn's largest: all the dimensions' derivatives at once at each angle, read one by one.
   struct Memo {
@@ -531,18 +536,35 @@ void SensitivityPanel::reactionBars(size_t j, int which) {
   turnBars(
       dims, ok, [&](int d) { return part(here.change[d]); }, peak, tr("N"));
   if (!ok || bars_.empty()) return;
-  const QString normal =
-      space ? tr(", fn %1 out of its plane").arg(here.reaction.normalN, 0, 'g', 4) : QString();
-  summary_->setText(tr("The %1 bears %2 N here (fx %3, fy %4%5); %6 changes it most (%7 N per "
-                       "unit here, up to %8 N over a turn)")
-                        .arg(QString::fromUtf8(kindOf(m.joints.at(j)).name))
-                        .arg(here.force.norm(), 0, 'g', 4)
-                        .arg(here.force.x(), 0, 'g', 4)
-                        .arg(here.force.y(), 0, 'g', 4)
-                        .arg(normal)
+  summary_->setText(reactionSummary(k, m.joints.at(j), here.reaction, rod) +
+                    tr("; %1 changes it most (%2 N per unit here, up to %3 N over a turn)")
                         .arg(QString::fromStdString(bars_[0].dimension))
                         .arg(bars_[0].now, 0, 'g', 4)
                         .arg(bars_[0].peak, 0, 'g', 4));
+}
+
+QString SensitivityPanel::reactionSummary(const Kinematics& k, const Joint& joint,
+                                          const JointReaction& r, bool rod) const {
+  const QString kind = QString::fromUtf8(kindOf(joint).name);
+  if (rod) return tr("The %1 pulls with %2 N (its tension)").arg(kind).arg(r.axialN, 0, 'g', 4);
+  // Rounding of an exact 0 (a part under 1e-12 of the force) shown as 0.
+  const double size = r.force.norm() + std::abs(r.normalN);
+  auto shown = [size](double v) { return std::abs(v) < 1e-12 * size ? 0.0 : v; };
+  if (!isSpatial(k.mechanism()))
+    return tr("The %1 bears %2 N here (fx %3, fy %4)")
+        .arg(kind)
+        .arg(r.force.norm(), 0, 'g', 4)
+        .arg(shown(r.force.x()), 0, 'g', 4)
+        .arg(shown(r.force.y()), 0, 'g', 4);
+  const QString out = bearsOutOfPlane(k, joint.id)
+                          ? tr(", and fn %1 N out of the plane").arg(shown(r.normalN), 0, 'g', 4)
+                          : QString();
+  return tr("The %1 bears %2 N in its plane here (fx %3, fy %4)%5")
+      .arg(kind)
+      .arg(r.force.norm(), 0, 'g', 4)
+      .arg(shown(r.force.x()), 0, 'g', 4)
+      .arg(shown(r.force.y()), 0, 'g', 4)
+      .arg(out);
 }
 
 void SensitivityPanel::turnBars(const std::vector<Dimension>& dims, bool here,

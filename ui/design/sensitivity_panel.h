@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "docks/dock_panel.h"
+#include "linkage/elements.h"
 #include "linkage/kinematics.h"
 #include "linkage/model.h"
 #include "linkage/sensitivity.h"
@@ -80,6 +81,9 @@ class SensitivityPanel : public DockPanel {
   void momentBars();
   // Joint m.joints[j]'s reaction's component `which` (linkage/force_sensitivity.h), likewise.
   void reactionBars(size_t j, int which);
+  // What the joint bears here, for the line under the chart.
+  QString reactionSummary(const Kinematics& k, const Joint& joint, const JointReaction& r,
+                          bool rod) const;
   // The bars of one derivative a dimension, ranked and drawn with the axis's label; false when
   // there are none.
   bool showValues(const std::vector<Dimension>& dims, const std::vector<double>& derivative,

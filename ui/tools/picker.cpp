@@ -57,9 +57,10 @@ Pick pickAt(const CanvasScene& s, const Vec2& world, double px) {
   // Slots within their channel (half its width and a little).
   const double reach = (CanvasStyle::channelWidth / 2 + 3) * px;
   double bestSlot = reach;
-  // The ground's slots where the shown plane sees them (linkage/plane_view.h).
+  // The slots as drawn in the shown plane (linkage/plane_view.h; a ground arc seen edge on: the
+  // segment it covers).
   for (const Slot& sl : s.planeView().seen(m).slots) {
-    const std::optional<Guide> g = guideOf(sl);
+    const std::optional<Guide> g = s.drawnSlot(sl.id);
     if (!g || s.bodyHidden(sl.body)) continue;
     const double d = g->distance(s.poseOf(sl.body).inverse(world));
     if (d < bestSlot) {
@@ -112,8 +113,10 @@ Snap snapAt(const CanvasScene& s, const Pick& pick, const Vec2& world, double px
     snap.label = QString::fromStdString(m.pointLabel(pick.point));
     return snap;
   }
-  if (pick.slot) {
-    const Slot* sl = s.planeView().seen(m).slot(pick.slot);
+  // Onto a slot's line where the plane shown holds it (not a ground arc seen edge on: its
+  // points are off that plane).
+  const Slot* sl = pick.slot ? s.planeView().seen(m).slot(pick.slot) : nullptr;
+  if (sl && guideOf(*sl)) {
     const Transform T = s.poseOf(sl->body);
     snap.kind = Snap::Kind::Slot;
     snap.at = T * guideOf(*sl)->project(T.inverse(world));
