@@ -77,6 +77,29 @@ inline std::string tiltedOscillatingBlock() {
   "gravity": [0, -9.81, -3]})";
 }
 
+// A slotted lever in a plane tilted 30 degrees about x: the crank's pin A (at depth 3) runs in a
+// slot of the rocker, which turns on the ground pin H (its point at depth 6, another at -4), with
+// masses on both under gravity (0, -9.81, -3). The rocker's bearing carries the pin in the slot's
+// force, whose joint has no point on the rocker (it acts at the rocker's plane's depth) and whose
+// row turns with the slot.
+inline std::string slottedLever() {
+  return R"({"format": "linkage", "version": 1, "name": "slotted lever",
+  "planes": {"tilt": {"origin": [0, 0, 0], "x_axis": [1, 0, 0],
+                      "y_axis": [0, 0.8660254037844387, 0.5]}},
+  "bodies": [
+    {"name": "ground", "ground": true, "points": {"O": [0, 0], "H": [60, 0]}},
+    {"name": "crank", "plane": "tilt", "points": {"O": [0, 0], "A": [20, 0, 3]},
+     "mass": {"kg": 0.3, "com": [10, 2], "j_kg_mm2": 50}},
+    {"name": "rocker", "plane": "tilt", "points": {"H": [60, 0, 6], "E": [30, 10, -4]},
+     "slots": {"s": [[50, 0], [-30, 0]]},
+     "mass": {"kg": 0.5, "com": [30, 5], "j_kg_mm2": 100}}],
+  "joints": [{"type": "pin", "a": "ground.O", "b": "crank.O"},
+    {"type": "pin", "a": "ground.H", "b": "rocker.H"},
+    {"type": "pin-in-slot", "a": "crank.A", "slot": "rocker.s"}],
+  "driver": {"joint": 0, "rpm": 300, "direction": "ccw"},
+  "gravity": [0, -9.81, -3]})";
+}
+
 namespace rssr {
 constexpr double kR = 7.5, kDepth = 5, kW = 28.5, kRho = 23 * M_PI / 180;
 constexpr double kPhi0 = 30 * M_PI / 180, kPsi0 = 160 * M_PI / 180;

@@ -95,14 +95,18 @@ TEST(SpatialForceSensitivity, TheMachinesBearingsOutOfPlaneMoveAsChangedDesignsD
   }
 }
 
-// A bearing with no point on its body (a ground pin in the coupler's slot): it holds the body at
-// its plane's depth, which a plane's origin moves.
-TEST(SpatialForceSensitivity, ABearingInTheBodysSlotMovesAsChangedDesignsDo) {
-  const LoadResult loaded = parseMechanism(test::tiltedOscillatingBlock());
-  ASSERT_TRUE(loaded.mechanism) << loaded.error;
-  double largest = 0;
-  test::expectOutOfPlaneMovesAsChangedDesignsDo(*loaded.mechanism, largest, 40);
-  EXPECT_GT(largest, 0.01);
+// Slots at a bearing (spatial_fixtures.h): the oscillating block's bearing has no point on its
+// body (a ground pin in the coupler's slot) and holds it at its plane's depth, which a plane's
+// origin moves; the slotted lever's bearing carries a pin in the rocker's slot, whose force turns
+// with the slot (its dJ) and acts at that plane's depth.
+TEST(SpatialForceSensitivity, BearingsAndSlotsMoveAsChangedDesignsDo) {
+  for (const std::string& text : {test::tiltedOscillatingBlock(), test::slottedLever()}) {
+    const LoadResult loaded = parseMechanism(text);
+    ASSERT_TRUE(loaded.mechanism) << loaded.error;
+    double largest = 0;
+    test::expectOutOfPlaneMovesAsChangedDesignsDo(*loaded.mechanism, largest, 30);
+    EXPECT_GT(largest, 0.01) << loaded.mechanism->name;
+  }
 }
 
 // The shaking force in the world (linkage/shaking_sensitivity.h) against the changed designs'.
@@ -290,6 +294,8 @@ TEST(SpatialForceSensitivity, OutOfPlaneTargetsRefusedAreNamed) {
   EXPECT_FALSE(parseOptTarget(loadedRssr(), "force:pin:ground.O:fz<=1", t, why));
   EXPECT_NE(why.find("no joint 'pin:ground.O:fz' (the model's: pin:ground.O,"), std::string::npos)
       << why;
+  EXPECT_FALSE(parseOptTarget(loadedRssr(), "force:pin:ground.H:tilt:fn<=1", t, why));  // one part
+  EXPECT_NE(why.find("no joint 'pin:ground.H:tilt'"), std::string::npos) << why;
 }
 
 // A shaking target's limit at 0.97 of its peak met by the rod's length alone, and the written
@@ -432,6 +438,34 @@ TEST(SpatialForceSensitivity, ACounterweightsShareIsTheMassWrittenIn) {
       EXPECT_GT(largest, 1e-3) << body;
       EXPECT_GT(tilted, 1e-3) << body;
     }
+}
+
+// Shares prepared once for a design answer as the one-off does at every pose, with accelerations
+// or without; another design (the same pose, a depth changed) is refused, not answered stale.
+TEST(SpatialForceSensitivity, SharesPreparedOnceAreTheOneOffs) {
+  const Mechanism m = loadedRssr();
+  Mechanism deeper = m;
+  deeper.point(*deeper.findPoint("crank.A"))->third = 12.0;
+  Counterweight cw;
+  ASSERT_TRUE(counterweightOn(m, m.bodyNamed("rocker")->id, cw).ok());
+  cw.staticMoment = Vec2(3, -2);
+  cw.kg = 0.1;
+  Kinematics k, other;
+  ASSERT_TRUE(k.load(m).ok() && other.load(deeper).ok());
+  CounterweightShares shares;
+  ASSERT_TRUE(shares.prepare(k, m.joints[1].id).ok());
+  for (int deg : {0, 130, 130, 250}) {
+    ASSERT_TRUE(k.moveTo(deg).ok());
+    k.setAccelerations(deg == 250);
+    const CounterweightShare a = shares.at(k, cw), b = counterweightShare(k, m.joints[1].id, cw);
+    ASSERT_TRUE(a.status.ok() && b.status.ok()) << a.status.message << b.status.message;
+    EXPECT_EQ(a.share.force, b.share.force) << deg;
+    EXPECT_EQ(a.share.tiltNm, b.share.tiltNm) << deg;
+    EXPECT_EQ(a.perY.normalN, b.perY.normalN) << deg;
+  }
+  const CounterweightShare stale = shares.at(other, cw);
+  EXPECT_FALSE(stale.status.ok());
+  EXPECT_NE(stale.status.message.find("another design"), std::string::npos);
 }
 
 // The share's derivatives by every dimension on a machine in space, against the share on the

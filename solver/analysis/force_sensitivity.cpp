@@ -5,6 +5,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -395,6 +396,7 @@ JointForceSensitivity jointForceSensitivity(const Kinematics& k0, JointId joint,
 }
 
 struct CounterweightShares::Impl {
+  std::uint64_t revision = 0;  // of the design prepared for
   Setup su;
   std::optional<internal::BearingChange> bearing;  // its load out of the plane, in space
   // The forces' Jacobian, its factors and the design's multipliers at the last pose asked for
@@ -426,12 +428,15 @@ Status CounterweightShares::prepare(const Kinematics& k, JointId joint) {
     return s;
   }
   d_->bearing.emplace(d_->su.k, d_->su.ji);
+  d_->revision = k.revision();
   return Status::success();
 }
 
 CounterweightShare CounterweightShares::at(const Kinematics& k0, const Counterweight& cw) const {
   CounterweightShare out;
   if (!d_) return out.status = Status::badModel("the shares are not prepared"), out;
+  if (k0.revision() != d_->revision)
+    return out.status = Status::badModel("the shares were prepared for another design"), out;
   std::optional<Kinematics> copy;  // the inertia forces need the accelerations
   if (!k0.accelerations()) copy.emplace(k0).setAccelerations(true);
   const Kinematics& k = copy ? *copy : k0;
@@ -453,6 +458,10 @@ CounterweightShare CounterweightShares::at(const Kinematics& k0, const Counterwe
   const Sensitivity none;
   const Context c = d_->factoredAt(k, none);
   const Eigen::MatrixXd dl = c.lu.transpose().solve(dQ);
+  if (!dl.allFinite())
+    return out.status = Status::failure(StatusCode::Singular,
+                                        "a singular position: the shares are unbounded"),
+           out;
   const HeldPose pose(k);
   JointReaction* parts[3] = {&out.share, &out.perX, &out.perY};
   for (int col = 0; col < 3; ++col) {
@@ -467,8 +476,7 @@ CounterweightShare CounterweightShares::at(const Kinematics& k0, const Counterwe
   return out;
 }
 
-CounterweightShare counterweightShare(const Kinematics& k, JointId joint,
-                                      const Counterweight& cw) {
+CounterweightShare counterweightShare(const Kinematics& k, JointId joint, const Counterweight& cw) {
   CounterweightShares shares;
   if (Status s = shares.prepare(k, joint); !s.ok()) {
     CounterweightShare out;

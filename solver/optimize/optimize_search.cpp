@@ -165,10 +165,10 @@ Status checkWatched(const Mechanism& m, const OptTarget& t) {
 }
 
 // What a target may be on a machine in space (a stroke along any direction, a position and a
-// path with or without z, a timing window's end, a joint's in-plane reaction or a ball rod's
-// tension, the shaking force and moment and a clearance in the world, a transmission angle in its
-// plane) and on a planar one (a position or a path without z, a stroke in the
-// plane).
+// path with or without z, a timing window's end, a joint's in-plane reaction, a bearing's load
+// out of its plane or a ball rod's tension, the shaking force and moment and a clearance in the
+// world, a transmission angle in its plane) and on a planar one (a position or a path without z, a
+// stroke in the plane).
 Status checkSpace(bool space, const OptTarget& t) {
   using K = OptTarget::Kind;
   if (t.kind == K::Path && !t.pathZ.empty() && t.pathZ.size() != t.path.size())

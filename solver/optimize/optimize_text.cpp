@@ -133,6 +133,7 @@ bool parseForce(const Mechanism& m, const std::string& text, OptTarget& t, std::
         at != std::string::npos && at + std::strlen(suffix) == name.size()) {
       t.reaction = part;
       name.resize(at);
+      break;
     }
   std::string known;
   for (size_t j = 0; j < m.joints.size(); ++j) {

@@ -208,6 +208,7 @@ TEST(ElementsUi, SlotToolDrawsAnArcAndThePanelTypesItsRadius) {
 TEST(ElementsUi, AGroundArcSquareToTheDrawingInThePanel) {
   QTemporaryDir dir;
   const QString path = writeEdgeOn(dir);
+  ASSERT_FALSE(path.isEmpty());
   MainWindow w;
   w.resize(1300, 900);
   ASSERT_TRUE(w.document()->open(path, nullptr));

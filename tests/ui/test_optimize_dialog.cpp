@@ -310,6 +310,13 @@ TEST(OptimizeDialog, ABearingsTiltsOutOfItsPlaneLowered) {
   ASSERT_TRUE(dialog.vary("ball-rod:crank.A.length", 70, 90));
   ASSERT_TRUE(dialog.vary("crank.A.depth", -20, 20));
   EXPECT_FALSE(dialog.addTarget(OptTarget::Kind::Force, "ball-rod:crank.A:fn", "0"));
+  {  // Only a body's bearing is offered: the overedge machine's needle link's pin is none.
+    Document overedge;
+    ASSERT_TRUE(overedge.open(QString::fromStdString(*resolveModel("overedge-machine")), nullptr));
+    OptimizeDialog other(&overedge);
+    EXPECT_FALSE(other.addTarget(OptTarget::Kind::Force, "pin:needlerock.C:fn", "0"));
+    EXPECT_TRUE(other.addTarget(OptTarget::Kind::Force, "pin:ground.H:tilt", "0"));
+  }
   ASSERT_TRUE(dialog.addTarget(OptTarget::Kind::Force, "pin:ground.H:tilt", "0"));
   findWith(dialog, 2);
   const double before = dialog.result()->atBefore.measures.at(0).at(0);

@@ -23,6 +23,7 @@
 #include "linkage/timing.h"
 #include "linkage/transmission_sensitivity.h"
 #include "linkage/window_sensitivity.h"
+#include "spatial_fixtures.h"
 #include "ui_test.h"
 
 namespace linkage::ui {
@@ -427,6 +428,23 @@ TEST_F(RssrDock, ABearingsReactionInSpace) {
   EXPECT_TRUE(panel.summary().startsWith("The pin bears ")) << panel.summary();
   EXPECT_TRUE(panel.summary().contains("out of the plane")) << panel.summary();
   shot(&panel, "space_bearing_sensitivity");
+  // A pin between two moving bodies bears nothing out of the plane: no z offered (the overedge
+  // machine with masses).
+  {
+    const QString path = dir_.filePath("overedge.linkage.json");
+    ASSERT_TRUE(saveMechanismFile(test::withMasses(test::example("overedge-machine"), 7),
+                                  path.toStdString())
+                    .ok);
+    Document overedge;
+    ASSERT_TRUE(overedge.open(path, nullptr));
+    SensitivityPanel other(&overedge);
+    other.show();
+    settle(other);
+    ASSERT_TRUE(choose(other, "reaction at pin:needlerock.C"));
+    EXPECT_EQ(other.componentBox()->count(), 3);
+    ASSERT_TRUE(choose(other, "reaction at pin:ground.H"));
+    EXPECT_EQ(other.componentBox()->count(), 4);
+  }
   // A ball rod's reaction is its tension: one number, no component to choose.
   ASSERT_TRUE(choose(panel, "reaction at ball-rod:crank.A"));
   EXPECT_FALSE(panel.componentBox()->isEnabled());
@@ -438,7 +456,7 @@ TEST_F(RssrDock, ABearingsReactionInSpace) {
     for (size_t d = 0; d < rod.dims.size(); ++d)
       if (rod.dims[d].name == b.dimension) EXPECT_EQ(b.now, rod.change[d].axialN) << b.dimension;
   EXPECT_TRUE(panel.summary().startsWith(
-      QString("The ball-rod pulls with %1 N (its tension)").arg(rod.reaction.axialN, 0, 'g', 4)))
+      QString("The ball-rod's tension is %1 N").arg(rod.reaction.axialN, 0, 'g', 4)))
       << panel.summary();
 }
 

@@ -518,6 +518,7 @@ TEST(View3dScene, SlotsAreDrawnWhereTheFileAndTheSolverPutThem) {
 TEST(PlaneChooser, AGroundArcSeenEdgeOnIsTheSegmentItCovers) {
   QTemporaryDir dir;
   const QString path = writeEdgeOn(dir);
+  ASSERT_FALSE(path.isEmpty());
   MainWindow w;
   w.resize(1200, 800);
   ASSERT_TRUE(w.document()->open(path, nullptr));

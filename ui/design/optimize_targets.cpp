@@ -5,11 +5,11 @@
 #include <cmath>
 
 #include "document/document.h"
+#include "linkage/force_sensitivity.h"
 #include "linkage/limits.h"
 #include "linkage/optimize_text.h"
 #include "linkage/space.h"
 #include "linkage/stroke_sensitivity.h"
-#include "linkage/tables/force_table.h"
 #include "linkage/transmission.h"
 
 namespace linkage::ui {
@@ -35,18 +35,17 @@ QString number(double v) {
 
 // A reaction target's choices: each joint's force, and on a machine in space each joint in a
 // plane's load out of it (its normal force :fn, its tilts :tilt: a bearing's, the solver says
-// which), named as linkage-cli optimize names them.
+// which: a body's bearing, as k solves the design), named as linkage-cli optimize names them.
 struct ReactionChoice {
   size_t joint;
   OptTarget::Reaction part;
 };
-std::vector<ReactionChoice> reactionChoices(const Mechanism& m) {
+std::vector<ReactionChoice> reactionChoices(const Mechanism& m, const Kinematics& k) {
   std::vector<ReactionChoice> out;
   for (size_t j = 0; j < m.joints.size(); ++j) out.push_back({j, OptTarget::Reaction::InPlane});
   if (!isSpatial(m)) return out;
   for (size_t j = 0; j < m.joints.size(); ++j)
-    if (differentiatedColumns(m, linkage::kindOf(m.joints[j])).size() >
-        linkage::kindOf(m.joints[j]).reactionColumns.size())
+    if (bearsOutOfPlane(k, m.joints[j].id))
       for (OptTarget::Reaction part : {OptTarget::Reaction::Normal, OptTarget::Reaction::Tilt})
         out.push_back({j, part});
   return out;
@@ -62,7 +61,7 @@ QString reactionName(const Mechanism& m, size_t joint, OptTarget::Reaction part)
 
 // What a target of this kind can be of, as the list shows it (index i is the i-th dyad,
 // clearance, or window end: start, end of the first window, then the second's ...).
-QStringList choices(const Mechanism& m, K kind) {
+QStringList choices(const Mechanism& m, K kind, const Kinematics& k) {
   QStringList out;
   if (kind == K::Transmission) {
     for (const TransmissionJoint& j : transmissionJoints(m)) out << QString::fromStdString(j.label);
@@ -77,7 +76,7 @@ QStringList choices(const Mechanism& m, K kind) {
     for (const TimingWindow& w : m.timing.windows)
       out << QString::fromStdString(w.name + ".start") << QString::fromStdString(w.name + ".end");
   } else if (kind == K::Force) {  // each joint, as linkage-cli dynamics names its columns
-    for (const ReactionChoice& c : reactionChoices(m)) out << reactionName(m, c.joint, c.part);
+    for (const ReactionChoice& c : reactionChoices(m, k)) out << reactionName(m, c.joint, c.part);
   } else {
     for (const Point& p : m.points)
       if (!m.body(p.body)->ground) out << QString::fromStdString(m.pointLabel(p.id));
@@ -131,7 +130,8 @@ void showCrank(QTableWidgetItem* cell, K kind, const QString& deg) {
 
 // The kinds that name something of the design by its index in their list (choices()) and take
 // one number: false when the number is not the kind's.
-bool readOther(const Mechanism& m, K kind, int of, bool isNumber, double v, OptTarget& t) {
+bool readOther(const Mechanism& m, const Kinematics& k, K kind, int of, bool isNumber, double v,
+               OptTarget& t) {
   switch (kind) {
     case K::Transmission: {
       if (!isNumber || !(v >= 0 && v < 90)) return false;
@@ -162,8 +162,9 @@ bool readOther(const Mechanism& m, K kind, int of, bool isNumber, double v, OptT
       t.crankDeg = v;
       return true;
     case K::Force: {
-      if (!isNumber || !(v >= 0)) return false;
-      const ReactionChoice c = reactionChoices(m).at(static_cast<size_t>(of));
+      const std::vector<ReactionChoice> all = reactionChoices(m, k);
+      if (!isNumber || !(v >= 0) || of < 0 || static_cast<size_t>(of) >= all.size()) return false;
+      const ReactionChoice c = all[static_cast<size_t>(of)];
       t.index = c.joint;
       t.reaction = c.part;
       t.measure = BalanceMeasure::Force;
@@ -192,7 +193,7 @@ OptTarget::Kind OptimizeTargets::kindOf(int row) const {
 
 bool OptimizeTargets::addRow(OptTarget::Kind kind, const QString& of, const QString& value,
                              double crankDeg, double weight) {
-  const QStringList list = choices(doc_->design(), kind);
+  const QStringList list = choices(doc_->design(), kind, doc_->kinematics());
   if (!of.isEmpty() && !list.contains(of)) return false;
   const int r = rowCount();
   insertRow(r);
@@ -244,7 +245,7 @@ void OptimizeTargets::setKind(int row, OptTarget::Kind kind) {
   kinds->setCurrentIndex(static_cast<int>(kind));
   const QString was = what->currentText();
   what->clear();
-  what->addItems(choices(doc_->design(), kind));
+  what->addItems(choices(doc_->design(), kind, doc_->kinematics()));
   if (what->findText(was) >= 0) what->setCurrentText(was);
   item(row, Value)->setText(defaultValue(kind, what->currentText()));
   item(row, Value)->setToolTip(valueUsage(kind));
@@ -256,7 +257,7 @@ void OptimizeTargets::refreshChoices() {
     if (auto* what = qobject_cast<QComboBox*>(cellWidget(r, Of))) {
       const QString was = what->currentText();
       what->clear();
-      what->addItems(choices(doc_->design(), kindOf(r)));
+      what->addItems(choices(doc_->design(), kindOf(r), doc_->kinematics()));
       if (what->findText(was) >= 0) what->setCurrentText(was);
     }
 }
@@ -321,7 +322,8 @@ bool OptimizeTargets::readRow(int r, OptTarget& t, QString* why) const {
       return true;
     }
     default:
-      if (!readOther(m, kind, of, isNumber, v, t)) return fail(valueUsage(kind));
+      if (!readOther(m, doc_->kinematics(), kind, of, isNumber, v, t))
+        return fail(valueUsage(kind));
       return true;
   }
   return fail(tr("unknown kind"));

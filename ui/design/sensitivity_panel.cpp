@@ -506,6 +506,8 @@ void SensitivityPanel::reactionBars(size_t j, int which) {
   // ball rod's reaction is its tension, one number.
   const bool space = isSpatial(m), rod = kindOf(m.joints.at(j)).role == Role::Distance;
   component_->setEnabled(!rod);
+  offerZ(space && !rod && bearsOutOfPlane(k, id));  // z: what only a bearing takes
+  which = component_->currentIndex();
   auto part = [which, rod](const JointReaction& c) {
     return rod                ? c.axialN
            : which == kZ      ? c.normalN
@@ -546,7 +548,7 @@ void SensitivityPanel::reactionBars(size_t j, int which) {
 QString SensitivityPanel::reactionSummary(const Kinematics& k, const Joint& joint,
                                           const JointReaction& r, bool rod) const {
   const QString kind = QString::fromUtf8(kindOf(joint).name);
-  if (rod) return tr("The %1 pulls with %2 N (its tension)").arg(kind).arg(r.axialN, 0, 'g', 4);
+  if (rod) return tr("The %1's tension is %2 N").arg(kind).arg(r.axialN, 0, 'g', 4);
   // Rounding of an exact 0 (a part under 1e-12 of the force) shown as 0.
   const double size = r.force.norm() + std::abs(r.normalN);
   auto shown = [size](double v) { return std::abs(v) < 1e-12 * size ? 0.0 : v; };

@@ -75,7 +75,8 @@ CounterweightShare counterweightShare(const Kinematics& k, JointId joint, const 
 
 // counterweightShare at many poses of one design (a search's turn): the joint's rows, the
 // reactions that make it and what is refused worked out once by prepare(); at() then solves the
-// share at k's pose (k holding the design prepare() saw).
+// share at k's pose (k holding the design prepare() saw, or a copy: another revision is refused;
+// Singular where the share is unbounded).
 class CounterweightShares {
  public:
   CounterweightShares();

@@ -83,7 +83,7 @@ struct OptTarget {
   // on the body of its first point) at most limitN, as Shaking's (measure Force). Over
   // dimensions or counterweights (their shares: linkage/force_sensitivity.h). On a machine in
   // space a body's bearing's load out of its plane instead (`reaction`): |fn| (N) or the tilts'
-  // |(mx, my)| (limitN in N m), over dimensions.
+  // |(mx, my)| (limitN in N m), as well over dimensions or counterweights.
   enum class Reaction { InPlane, Normal, Tilt };
   Reaction reaction = Reaction::InPlane;
   // Clearance: the file's watched clearance `index` (its timing's, counted from 0) at least
